@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: MIT
+// Least-squares approximation with fixed end points (thesis 5.3.3; The NURBS
+// Book 9.4.1): a B-spline of chosen degree and number of control points that
+// passes through the first and last data point and minimises the sum of
+// squared distances at the data parameters.
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include "hula/core/vec.hpp"
+#include "hula/nurbs/interpolate.hpp"
+#include "hula/nurbs/nurbs_curve.hpp"
+
+namespace hula::nurbs {
+
+/// Options of approximate.
+struct ApproximationOptions {
+  /// Number of control points n + 1; degree + 1 ≤ n + 1 ≤ number of points. Required (0 is invalid).
+  std::size_t control_points = 0;
+  /// Degree p ≥ 1. Default 3.
+  int degree = 3;
+  /// Data parameters rule. Default ChordLength.
+  Parameterisation parameterisation = Parameterisation::ChordLength;
+  /// 2 for a planar curve, else 3. Default 3.
+  int dimension = 3;
+  /// @throws hula::Error(Errc::InvalidOption) naming the field
+  void validate() const;
+};
+
+/// Result of approximate.
+struct ApproximationResult {
+  NurbsCurve curve;
+  /// Data parameters used (in [0, 1]).
+  std::vector<double> parameters;
+  /// max_i |C(t_i) - Q_i| in model units.
+  double max_deviation = 0.0;
+  /// Index of the point where max_deviation occurs.
+  std::size_t max_deviation_index = 0;
+};
+
+/// Least-squares fit with fixed end points.
+/// @throws hula::Error(Errc::InvalidOption) if options are invalid or control_points > number of points
+/// @throws hula::Error(Errc::TooFewPoints / NonFiniteInput / CoincidentPoints) as parameterise
+[[nodiscard]] ApproximationResult approximate(std::span<const Vec3> points, const ApproximationOptions& options);
+
+}  // namespace hula::nurbs
