@@ -38,6 +38,11 @@ function(hula_add_test name)
   if(NOT ARG_LABELS)
     set(ARG_LABELS unit)
   endif()
+  list(LENGTH ARG_LABELS label_count)
+  if(label_count GREATER 1)
+    # gtest_discover_tests flattens lists: one label per test binary.
+    message(FATAL_ERROR "hula_add_test(${name}): give one label per test binary, got '${ARG_LABELS}'")
+  endif()
   gtest_discover_tests(test_${name}
     DISCOVERY_MODE PRE_TEST
     WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
