@@ -12,6 +12,7 @@
 #include <cmath>
 #include <mutex>
 #include <string>
+#include <utility>
 
 #include "hula/core/error.hpp"
 #include "hula/nurbs/basis.hpp"
@@ -27,6 +28,9 @@ struct SpanCache {
   std::vector<double> mid;       // S span midpoints
   std::vector<double> inv_half;  // S values 2 / (b[s+1] - b[s])
   std::vector<double> coef;
+  // True when no derivative of a non-rational curve can overflow inside the
+  // domain (bounded at build time), so the evaluators skip the finiteness probe.
+  bool derivatives_bounded = false;
 };
 
 std::string where_t(const char* name, double t) { return std::string(name) + " = " + format_number(t); }
@@ -106,63 +110,57 @@ void validate_points(const std::vector<Vec3>& points, const std::vector<double>&
   }
 }
 
-// All derivatives d[k] = f^(k)(x) / k!, k = 0..K, of f(x) = Σ_j a_j x^j (j = 0..p),
-// for C components of stride 4: repeated synthetic division (Horner).
-template <int C>
-inline void taylor_at(const double* a, int p, double x, int K, double* d) {
-  for (int k = 0; k <= K; ++k)
-    for (int c = 0; c < C; ++c) d[k * 4 + c] = 0.0;
-  for (int c = 0; c < C; ++c) d[c] = a[p * 4 + c];
-  for (int j = p - 1; j >= 0; --j) {
-    const int kmax = std::min(K, p - j);
-    for (int k = kmax; k >= 1; --k)
-      for (int c = 0; c < C; ++c) d[k * 4 + c] = d[k * 4 + c] * x + d[(k - 1) * 4 + c];
-    for (int c = 0; c < C; ++c) d[c] = d[c] * x + a[j * 4 + c];
-  }
-}
-
-// Evaluates order 0..order of a cached span at local x; scale = inv_half.
-inline void eval_span(const double* a, int p, bool rational, double x, double scale, int order, Vec3* out) {
-  const int K = std::min(order, p);
-  std::array<double, (kCachedDegreeLimit + 1) * 4> d;
-  if (!rational) {
-    if (K == 0) {
-      // Position only: plain Horner.
-      double X = a[p * 4], Y = a[p * 4 + 1], Z = a[p * 4 + 2];
-      for (int j = p - 1; j >= 0; --j) {
-        X = X * x + a[j * 4];
-        Y = Y * x + a[j * 4 + 1];
-        Z = Z * x + a[j * 4 + 2];
-      }
-      out[0] = {X, Y, Z};
+// Derivatives 0..order at local x of a cached span with compile-time degree P
+// (R: rational). d[k] = f^(k)(x) / k! by repeated synthetic division (Horner),
+// then f^(k)(t) = k! scale^k d[k] with scale = 1 / half, then eq. 4.8 for R.
+template <int P, bool R>
+inline void eval_span(const double* a, double x, double scale, int order, Vec3* out) {
+  constexpr int C = R ? 4 : 3;
+  if (order == 0) {
+    double acc[C];
+    for (int c = 0; c < C; ++c) acc[c] = a[P * 4 + c];
+    for (int j = P - 1; j >= 0; --j)
+      for (int c = 0; c < C; ++c) acc[c] = acc[c] * x + a[j * 4 + c];
+    if constexpr (R) {
+      const double inv = 1.0 / acc[3];
+      out[0] = {acc[0] * inv, acc[1] * inv, acc[2] * inv};
     } else {
-      taylor_at<3>(a, p, x, K, d.data());
-      double f = 1.0;  // k! * scale^k
-      for (int k = 0; k <= K; ++k) {
-        if (k > 0) f *= k * scale;
-        out[k] = {d[k * 4] * f, d[k * 4 + 1] * f, d[k * 4 + 2] * f};
-      }
+      out[0] = {acc[0], acc[1], acc[2]};
     }
-    for (int k = K + 1; k <= order; ++k) out[k] = {};
     return;
   }
-  taylor_at<4>(a, p, x, K, d.data());
-  // Scale to derivatives in t: A^(k) = k! scale^k d_k.
-  double f = 1.0;
-  for (int k = 0; k <= K; ++k) {
-    if (k > 0) f *= k * scale;
-    for (int c = 0; c < 4; ++c) d[k * 4 + c] *= f;
+  // All four lanes even when not rational: pairs of doubles vectorise, three do not.
+  double d[P + 1][4];
+  for (int k = 1; k <= P; ++k)
+    for (int c = 0; c < 4; ++c) d[k][c] = 0.0;
+  for (int c = 0; c < 4; ++c) d[0][c] = a[P * 4 + c];
+  for (int j = P - 1; j >= 0; --j) {
+    for (int k = P - j; k >= 1; --k)
+      for (int c = 0; c < 4; ++c) d[k][c] = d[k][c] * x + d[k - 1][c];
+    for (int c = 0; c < 4; ++c) d[0][c] = d[0][c] * x + a[j * 4 + c];
   }
-  const double w = d[3];
-  out[0] = Vec3{d[0], d[1], d[2]} / w;
-  for (int k = 1; k <= order; ++k) {
-    Vec3 v = k <= K ? Vec3{d[k * 4], d[k * 4 + 1], d[k * 4 + 2]} : Vec3{};
-    double binom = 1.0;
-    for (int i = 1; i <= std::min(k, K); ++i) {
-      binom = binom * (k - i + 1) / i;
-      v -= (binom * d[i * 4 + 3]) * out[k - i];
+  const int K = order < P ? order : P;
+  double f = 1.0;
+  for (int k = 1; k <= K; ++k) {
+    f *= k * scale;
+    for (int c = 0; c < 4; ++c) d[k][c] *= f;
+  }
+  if constexpr (!R) {
+    for (int k = 0; k <= K; ++k) out[k] = {d[k][0], d[k][1], d[k][2]};
+    for (int k = K + 1; k <= order; ++k) out[k] = {};
+  } else {
+    const double inv_w = 1.0 / d[0][3];
+    out[0] = Vec3{d[0][0], d[0][1], d[0][2]} * inv_w;
+    for (int k = 1; k <= order; ++k) {
+      Vec3 v = k <= K ? Vec3{d[k][0], d[k][1], d[k][2]} : Vec3{};
+      double binom = 1.0;
+      const int imax = k < K ? k : K;
+      for (int i = 1; i <= imax; ++i) {
+        binom = binom * (k - i + 1) / i;
+        v -= (binom * d[i][3]) * out[k - i];
+      }
+      out[k] = v * inv_w;
     }
-    out[k] = v / w;
   }
 }
 
@@ -227,6 +225,51 @@ void check_finite_result(const Vec3* out, int order, double t) {
                   {.field = "t"});
 }
 
+// The evaluation loop for one compile-time degree: hinted span search (O(1)
+// for sorted parameters), domain policy, one eval_span per parameter.
+template <int P, bool R>
+void eval_batch(const SpanCache& c, std::span<const double> ts, int order, Vec3* out, Interval dom,
+                const EvalOptions& options, bool batch_names) {
+  const auto stride = static_cast<std::size_t>(order) + 1;
+  constexpr std::size_t block = (P + 1) * 4;
+  const bool strict = options.domain == Domain::Strict;
+  std::size_t s = 0;
+  // (v - v) is 0 for finite v and NaN otherwise: one cheap probe for the
+  // whole batch instead of a branch per value; the slow pass names the culprit.
+  double probe = 0.0;
+  // Positions inside the domain are convex combinations of the control points: never overflow.
+  bool check = order > 0 && (R || !c.derivatives_bounded);
+  for (std::size_t i = 0; i < ts.size(); ++i) {
+    double u = ts[i];
+    if (!(strict && u >= dom.start && u <= dom.end)) {
+      u = resolve_parameter(u, dom, options.domain, "t", i, batch_names);
+      check = check || !dom.contains(u);  // extrapolation leaves the bounded region
+    }
+    s = locate_hinted(c.breaks, u, options.side, s);
+    const double x = (u - c.mid[s]) * c.inv_half[s];
+    Vec3* o = out + i * stride;
+    eval_span<P, R>(c.coef.data() + s * block, x, c.inv_half[s], order, o);
+    if (check)
+      for (std::size_t k = 0; k < stride; ++k) probe += (o[k].x - o[k].x) + (o[k].y - o[k].y) + (o[k].z - o[k].z);
+  }
+  if (probe != 0.0) {
+    for (std::size_t i = 0; i < ts.size(); ++i) check_finite_result(out + i * stride, order, ts[i]);
+  }
+}
+
+using BatchKernel = void (*)(const SpanCache&, std::span<const double>, int, Vec3*, Interval, const EvalOptions&, bool);
+
+template <bool R, int... Ps>
+constexpr std::array<BatchKernel, sizeof...(Ps)> make_kernels(std::integer_sequence<int, Ps...>) {
+  return {&eval_batch<Ps + 1, R>...};
+}
+constexpr auto kKernels = make_kernels<false>(std::make_integer_sequence<int, kCachedDegreeLimit>{});
+constexpr auto kRationalKernels = make_kernels<true>(std::make_integer_sequence<int, kCachedDegreeLimit>{});
+
+inline BatchKernel kernel_for(int degree, bool rational) {
+  const auto i = static_cast<std::size_t>(degree - 1);
+  return rational ? kRationalKernels[i] : kKernels[i];
+}
 }  // namespace
 
 void NurbsCurve::Data::build_cache() const {
@@ -254,7 +297,9 @@ void NurbsCurve::Data::build_cache() const {
       if (k > 0) f *= half / static_cast<double>(k);
       double acc[4] = {0, 0, 0, 0};
       for (std::size_t j = 0; j <= P; ++j) {
-        const double N = ders[k * (P + 1) + j];
+        // Scale N^(k) ~ half^-k back to O(1) before touching the points, so
+        // tiny spans with huge coordinates cannot overflow in between.
+        const double N = ders[k * (P + 1) + j] * f;
         const std::size_t idx = i - P + j;
         const double w = rational() ? weights[idx] : 1.0;
         acc[0] += N * w * points[idx].x;
@@ -262,11 +307,27 @@ void NurbsCurve::Data::build_cache() const {
         acc[2] += N * w * points[idx].z;
         acc[3] += N * w;
       }
-      for (std::size_t c = 0; c < 4; ++c) cache.coef[(s * (P + 1) + k) * 4 + c] = acc[c] * f;
+      for (std::size_t c = 0; c < 4; ++c) cache.coef[(s * (P + 1) + k) * 4 + c] = acc[c];
     }
     ++s;
   }
   HULA_ASSERT(s == S, "span count mismatch between knots and breakpoints");
+  // Bound |C^(k)(t)| ≤ k! scale^k Σ_{j≥k} binom(j, k) |c_j| for |x| ≤ 1 (non-rational only).
+  cache.derivatives_bounded = !rational();
+  for (std::size_t sp = 0; sp < S && cache.derivatives_bounded; ++sp) {
+    double scale_k = 1.0;
+    for (std::size_t k = 0; k <= P; ++k) {
+      if (k > 0) scale_k *= static_cast<double>(k) * cache.inv_half[sp];
+      double bound = 0.0;
+      double binom = 1.0;  // binom(j, k) for j = k, k+1, ...
+      for (std::size_t j = k; j <= P; ++j) {
+        if (j > k) binom = binom * static_cast<double>(j) / static_cast<double>(j - k);
+        const double* cj = &cache.coef[(sp * (P + 1) + j) * 4];
+        bound += binom * std::fmax(std::fabs(cj[0]), std::fmax(std::fabs(cj[1]), std::fabs(cj[2])));
+      }
+      if (!(bound * scale_k < 1e300)) cache.derivatives_bounded = false;
+    }
+  }
 }
 
 void NurbsCurve::Data::eval_direct(double t, int order, Side side, Vec3* out, BasisWorkspace& work) const {
@@ -364,19 +425,21 @@ void NurbsCurve::derivatives(double t, int order, std::span<Vec3> out, const Eva
   if (order < 0)
     throw Error(Errc::InvalidArgument, "derivative order = " + std::to_string(order) + " must be >= 0",
                 {.field = "order"});
-  HULA_ASSERT(out.size() >= static_cast<std::size_t>(order) + 1, "derivative output too small");
+  if (out.size() < static_cast<std::size_t>(order) + 1)
+    throw Error(Errc::InvalidArgument,
+                "output holds " + std::to_string(out.size()) + " vectors but order " + std::to_string(order) +
+                    " needs " + std::to_string(order + 1),
+                {.field = "out"});
   const Data& d = *data_;
-  const double u = resolve_parameter(t, domain(), options.domain, "t", 0, false);
   const int p = d.degree();
   const SpanCache& c = d.span_cache();
   if (p > kCachedDegreeLimit) {
+    const double u = resolve_parameter(t, domain(), options.domain, "t", 0, false);
     BasisWorkspace work;
     d.eval_direct(u, order, options.side, out.data(), work);
   } else {
-    const std::size_t s = locate(c.breaks, u, options.side);
-    const double x = (u - c.mid[s]) * c.inv_half[s];
-    eval_span(c.coef.data() + s * static_cast<std::size_t>(p + 1) * 4, p, d.rational(), x, c.inv_half[s], order,
-              out.data());
+    kernel_for(p, d.rational())(c, std::span<const double>(&t, 1), order, out.data(), domain(), options, false);
+    return;
   }
   check_finite_result(out.data(), order, t);
 }
@@ -408,22 +471,10 @@ void NurbsCurve::derivatives(std::span<const double> ts, int order, std::span<Ve
       d.eval_direct(u, order, options.side, out.data() + i * stride, work);
     }
   } else {
-    const bool rational = d.rational();
-    const auto block = static_cast<std::size_t>(p + 1) * 4;
-    std::size_t s = 0;
-    const bool strict_inside = options.domain == Domain::Strict;
-    for (std::size_t i = 0; i < ts.size(); ++i) {
-      double u = ts[i];
-      if (!(strict_inside && u >= dom.start && u <= dom.end))
-        u = resolve_parameter(u, dom, options.domain, "t", i, true);
-      s = locate_hinted(c.breaks, u, options.side, s);
-      const double x = (u - c.mid[s]) * c.inv_half[s];
-      eval_span(c.coef.data() + s * block, p, rational, x, c.inv_half[s], order, out.data() + i * stride);
-    }
+    kernel_for(p, d.rational())(c, ts, order, out.data(), dom, options, true);
+    return;
   }
-  if (order > 0) {
-    for (std::size_t i = 0; i < ts.size(); ++i) check_finite_result(out.data() + i * stride, order, ts[i]);
-  }
+  for (std::size_t i = 0; i < ts.size(); ++i) check_finite_result(out.data() + i * stride, order, ts[i]);
 }
 
 bool operator==(const NurbsCurve& a, const NurbsCurve& b) {
