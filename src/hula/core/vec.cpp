@@ -9,6 +9,9 @@ namespace hula {
 
 double norm(const Vec3& a) {
   const double m = max_abs(a);
+  // Squares of components in [1e-150, 1e150] neither overflow nor lose
+  // precision to underflow: the plain formula is exact enough and cheaper.
+  if (m > 1e-150 && m < 1e150) return std::sqrt(dot(a, a));
   if (m == 0.0 || !std::isfinite(m)) return m;
   const Vec3 b = a / m;
   return m * std::sqrt(dot(b, b));

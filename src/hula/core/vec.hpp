@@ -84,9 +84,10 @@ struct Box3 {
   Vec3 min{HUGE_VAL, HUGE_VAL, HUGE_VAL};
   Vec3 max{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
 
+  /// Grows the box to contain p (p must be finite).
   void add(const Vec3& p) {
-    min = {std::fmin(min.x, p.x), std::fmin(min.y, p.y), std::fmin(min.z, p.z)};
-    max = {std::fmax(max.x, p.x), std::fmax(max.y, p.y), std::fmax(max.z, p.z)};
+    min = {p.x < min.x ? p.x : min.x, p.y < min.y ? p.y : min.y, p.z < min.z ? p.z : min.z};
+    max = {p.x > max.x ? p.x : max.x, p.y > max.y ? p.y : max.y, p.z > max.z ? p.z : max.z};
   }
   [[nodiscard]] bool empty() const { return min.x > max.x || min.y > max.y || min.z > max.z; }
   /// Length of the diagonal (overflow-safe): the model size used by relative tolerances.

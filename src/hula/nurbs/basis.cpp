@@ -11,23 +11,46 @@
 
 namespace hula::nurbs {
 
+namespace {
+// A2.2 with the degree known at compile time (unrolled, no scratch zeroing);
+// P = 0 selects the run-time degree version.
+template <int P>
+inline void basis_functions_impl(const double* U, int p_runtime, std::size_t span, double t, double* out) {
+  const int p = P > 0 ? P : p_runtime;
+  double left[(P > 0 ? P : kMaxDegree) + 1];
+  double right[(P > 0 ? P : kMaxDegree) + 1];
+  out[0] = 1.0;
+  for (int j = 1; j <= p; ++j) {
+    left[j] = t - U[span + 1 - static_cast<std::size_t>(j)];
+    right[j] = U[span + static_cast<std::size_t>(j)] - t;
+    double saved = 0.0;
+    for (int r = 0; r < j; ++r) {
+      const double temp = out[r] / (right[r + 1] + left[j - r]);
+      out[r] = saved + right[r + 1] * temp;
+      saved = left[j - r] * temp;
+    }
+    out[j] = saved;
+  }
+}
+}  // namespace
+
 void basis_functions(const KnotVector& knots, std::size_t span, double t, std::span<double> out) {
   const int p = knots.degree();
   HULA_ASSERT(out.size() >= static_cast<std::size_t>(p) + 1, "basis output too small");
-  std::array<double, kMaxDegree + 1> left{}, right{};
-  const std::span<const double> U = knots.values();
-  out[0] = 1.0;
-  for (int j = 1; j <= p; ++j) {
-    left[static_cast<std::size_t>(j)] = t - U[span + 1 - static_cast<std::size_t>(j)];
-    right[static_cast<std::size_t>(j)] = U[span + static_cast<std::size_t>(j)] - t;
-    double saved = 0.0;
-    for (int r = 0; r < j; ++r) {
-      const auto ur = static_cast<std::size_t>(r);
-      const double temp = out[ur] / (right[ur + 1] + left[static_cast<std::size_t>(j - r)]);
-      out[ur] = saved + right[ur + 1] * temp;
-      saved = left[static_cast<std::size_t>(j - r)] * temp;
-    }
-    out[static_cast<std::size_t>(j)] = saved;
+  const double* U = knots.values().data();
+  switch (p) {
+    case 1:
+      return basis_functions_impl<1>(U, p, span, t, out.data());
+    case 2:
+      return basis_functions_impl<2>(U, p, span, t, out.data());
+    case 3:
+      return basis_functions_impl<3>(U, p, span, t, out.data());
+    case 4:
+      return basis_functions_impl<4>(U, p, span, t, out.data());
+    case 5:
+      return basis_functions_impl<5>(U, p, span, t, out.data());
+    default:
+      return basis_functions_impl<0>(U, p, span, t, out.data());
   }
 }
 

@@ -17,7 +17,9 @@
 // P_{N+1} = Q_{N-1} are known) as one banded system: row 0 the start
 // condition, rows 1 … N-2 the interpolation conditions C(t_i) = Q_i, row N-1
 // the end condition. Interpolation rows are tridiagonal; a not-a-knot row
-// reaches three columns further, so the band is kl = ku = 3 and the solve O(N).
+// reaches three columns further. The end rows are reduced to tridiagonal form
+// and the system solved by the Thomas algorithm in O(N), with the pivoting
+// band solver (kl = ku = 3) as the fallback.
 //
 // Hermite curves are built by blossoming (polar forms): the control point
 // P_j of a spline is its blossom at (U_{j+1}, …, U_{j+p}), which any polynomial
@@ -203,6 +205,98 @@ EndRow resolve_end(const EndCondition& ec, bool at_start, bool both_not_a_knot, 
   throw InternalError("unknown end condition kind");
 }
 
+// The cubic system in compact storage for N ≥ 4: interpolation rows 1 … N-2
+// are tridiagonal (three cubic basis functions are non-zero at a simple
+// knot), a[i], b[i], c[i] at columns i-1, i, i+1; only the two end rows reach
+// further (a not-a-knot row spans four unknowns): first[j] is column j,
+// last[j] is column N-4+j. The right-hand side is overwritten by the solution.
+struct CubicSystem {
+  std::size_t n;
+  std::vector<double> a, b, c;
+  double* rhs;  // 3 × n values, row-major (the caller's storage: the control points)
+  std::array<double, 4> first{}, last{};
+  CubicSystem(std::size_t size, double* rhs_storage)
+      : n(size), a(size, 0.0), b(size, 0.0), c(size, 0.0), rhs(rhs_storage) {
+    std::fill(rhs, rhs + 3 * size, 0.0);
+  }
+  void add(std::size_t i, std::size_t j, double v) {
+    if (i == 0) {
+      first[j] += v;
+    } else if (i + 1 == n) {
+      last[j + 4 - n] += v;
+    } else {
+      HULA_ASSERT(j + 1 >= i && j <= i + 1, "interpolation row outside the tridiagonal band");
+      (j + 1 == i ? a[i] : (j == i ? b[i] : c[i])) += v;
+    }
+  }
+};
+
+// Removes column `col` from an end row (coefficients `row`, column of row[0]
+// is `base`) with tridiagonal row k, which holds columns k-1 … k+1.
+inline void eliminate_with(CubicSystem& s, std::array<double, 4>& row, std::size_t base, std::size_t k, std::size_t col,
+                           std::size_t rhs_row) {
+  const double v = row[col - base];
+  if (v == 0.0) return;
+  const double pivot = col + 1 == k ? s.a[k] : (col == k ? s.b[k] : s.c[k]);
+  const double f = v / pivot;
+  row[k - 1 - base] -= f * s.a[k];
+  row[k - base] -= f * s.b[k];
+  row[k + 1 - base] -= f * s.c[k];
+  row[col - base] = 0.0;
+  for (std::size_t d = 0; d < 3; ++d) s.rhs[rhs_row * 3 + d] -= f * s.rhs[k * 3 + d];
+}
+
+// Solves in place (solution in s.rhs). Each end row is reduced to two
+// entries with its two tridiagonal neighbours, then the Thomas algorithm runs
+// without pivoting: the collocation matrix is totally positive (de Boor), so
+// this is stable, and a pivot below 1e-13 of its row scale returns false so
+// the caller can use the pivoting band solver instead.
+bool solve_cubic_system(CubicSystem& s) {
+  const std::size_t N = s.n;
+  constexpr double kPivot = 1e-13;
+  double scale0 = 0.0, scale_last = 0.0;
+  for (std::size_t j = 0; j < 4; ++j) scale0 = std::max(scale0, std::fabs(s.first[j]));
+  for (std::size_t j = 0; j < 4; ++j) scale_last = std::max(scale_last, std::fabs(s.last[j]));
+  // Start row: clear column 3 with row 2, then column 2 with row 1 (N ≥ 4 keeps them interior).
+  eliminate_with(s, s.first, 0, 2, 3, 0);
+  eliminate_with(s, s.first, 0, 1, 2, 0);
+  // End row: clear column N-4 with row N-3, then column N-3 with row N-2.
+  eliminate_with(s, s.last, N - 4, N - 3, N - 4, N - 1);
+  eliminate_with(s, s.last, N - 4, N - 2, N - 3, N - 1);
+  s.b[0] = s.first[0];
+  s.c[0] = s.first[1];
+  s.a[N - 1] = s.last[2];
+  s.b[N - 1] = s.last[3];
+  s.c[N - 1] = 0.0;
+  // Thomas forward sweep; b and rhs become the eliminated diagonal and right-hand side.
+  double* d = s.rhs;
+  // b[i] is replaced by its reciprocal once it is known: one division per row.
+  if (!(std::fabs(s.b[0]) > kPivot * scale0)) return false;
+  s.b[0] = 1.0 / s.b[0];
+  for (std::size_t i = 1; i < N; ++i) {
+    const double row_scale =
+        i + 1 == N ? scale_last : std::max({std::fabs(s.a[i]), std::fabs(s.b[i]), std::fabs(s.c[i])});
+    const double m = s.a[i] * s.b[i - 1];
+    const double pivot = s.b[i] - m * s.c[i - 1];
+    if (!(std::fabs(pivot) > kPivot * row_scale)) return false;
+    s.b[i] = 1.0 / pivot;
+    for (std::size_t k = 0; k < 3; ++k) d[i * 3 + k] -= m * d[(i - 1) * 3 + k];
+  }
+  for (std::size_t k = 0; k < 3; ++k) d[(N - 1) * 3 + k] *= s.b[N - 1];
+  for (std::size_t i = N - 1; i-- > 0;)
+    for (std::size_t k = 0; k < 3; ++k) d[i * 3 + k] = (d[i * 3 + k] - s.c[i] * d[(i + 1) * 3 + k]) * s.b[i];
+  return true;
+}
+
+// Adapts BandedMatrix (kl = ku = 3) to the assembly interface of CubicSystem.
+struct BandSystem {
+  BandedMatrix matrix;
+  std::vector<double> storage;
+  double* rhs;
+  explicit BandSystem(std::size_t n) : matrix(n, 3, 3), storage(3 * n, 0.0), rhs(storage.data()) {}
+  void add(std::size_t i, std::size_t j, double v) { matrix.at(i, j) += v; }
+};
+
 NurbsCurve make_curve(KnotVector knots, std::vector<Vec3> control_points, int dimension) {
   if (dimension == 2)
     for (Vec3& p : control_points) p.z = 0.0;
@@ -309,7 +403,7 @@ NurbsCurve interpolate_cubic(std::span<const Vec3> points, const InterpolationOp
   U.insert(U.end(), 3, 0.0);
   U.insert(U.end(), t.begin(), t.end());
   U.insert(U.end(), 3, 1.0);
-  const KnotVector kv(std::move(U), kCubic);
+  KnotVector kv(std::move(U), kCubic);
 
   const bool both_nak =
       options.start.kind == EndCondition::Kind::NotAKnot && options.end.kind == EndCondition::Kind::NotAKnot;
@@ -317,77 +411,92 @@ NurbsCurve interpolate_cubic(std::span<const Vec3> points, const InterpolationOp
   const EndRow end = resolve_end(options.end, false, both_nak, points, t);
 
   // Unknown column j holds P_{j+1}; P_0 = Q_0 and P_{N+1} = Q_{N-1} go to the right-hand side.
-  BandedMatrix A(N, 3, 3);
-  std::vector<double> rhs(3 * N, 0.0);
   const Vec3 P0 = points.front();
   const Vec3 Pn = points.back();
-  const std::size_t last_ctrl = N + 1;
-  auto add = [&](std::size_t row, std::size_t ctrl, double a) {
-    if (a == 0.0) return;
-    const Vec3* known = ctrl == 0 ? &P0 : (ctrl == last_ctrl ? &Pn : nullptr);
-    if (known != nullptr) {
-      for (std::size_t c = 0; c < 3; ++c) rhs[row * 3 + c] -= a * (*known)[c];
-    } else {
-      A.at(row, ctrl - 1) += a;
-    }
-  };
-  auto set_rhs = [&](std::size_t row, const Vec3& v) {
-    for (std::size_t c = 0; c < 3; ++c) rhs[row * 3 + c] += v[c];
-  };
-
-  BasisWorkspace work;
-  // End row: `span` is the end span, `inner` the not-a-knot knot's index in U.
-  auto end_row = [&](std::size_t row, const EndRow& er, double at, std::size_t span, std::size_t left_span) {
-    switch (er.kind) {
-      case EndRow::Kind::FirstDerivative:
-      case EndRow::Kind::SecondDerivativeZero: {
-        const int k = er.kind == EndRow::Kind::FirstDerivative ? 1 : 2;
-        const auto d = basis_derivatives(kv, span, at, k, work);
-        for (std::size_t j = 0; j <= kCubic; ++j) add(row, span - kCubic + j, d[static_cast<std::size_t>(k) * 4 + j]);
-        if (k == 1) set_rhs(row, er.derivative);
-        break;
+  // Assembles the N rows into any system with add(row, column, value) and rhs.
+  auto assemble = [&](auto& A) {
+    double* rhs = A.rhs;
+    const std::size_t last_ctrl = N + 1;
+    auto add = [&](std::size_t row, std::size_t ctrl, double a) {
+      if (a == 0.0) return;
+      const Vec3* known = ctrl == 0 ? &P0 : (ctrl == last_ctrl ? &Pn : nullptr);
+      if (known != nullptr) {
+        for (std::size_t c = 0; c < 3; ++c) rhs[row * 3 + c] -= a * (*known)[c];
+      } else {
+        A.add(row, ctrl - 1, a);
       }
-      case EndRow::Kind::ThirdDerivativeJump: {
-        // C'''(u⁻) - C'''(u⁺) = 0 at u = U[left_span + 1]; pieces on spans left_span and left_span + 1.
-        const double u = kv[left_span + 1];
-        std::array<double, 4> left{};
-        const auto dl = basis_derivatives(kv, left_span, u, 3, work);
-        for (std::size_t j = 0; j <= kCubic; ++j) left[j] = dl[12 + j];
-        for (std::size_t j = 0; j <= kCubic; ++j) add(row, left_span - kCubic + j, left[j]);
-        const auto dr = basis_derivatives(kv, left_span + 1, u, 3, work);
-        for (std::size_t j = 0; j <= kCubic; ++j) add(row, left_span + 1 - kCubic + j, -dr[12 + j]);
-        break;
-      }
-    }
-  };
-  // Start: span 3 = [0, t_1); the not-a-knot knot t_1 = U[4] joins spans 3 and 4.
-  end_row(0, start, 0.0, kCubic, kCubic);
-  // Interpolation rows: C(t_i) = Q_i, span i + 3 where N_{i+3}(t_i) = 0.
-  std::array<double, kCubic + 1> b{};
-  for (std::size_t i = 1; i + 1 < N; ++i) {
-    const std::size_t span = i + kCubic;
-    basis_functions(kv, span, t[i], b);
-    for (std::size_t j = 0; j <= kCubic; ++j) add(i, span - kCubic + j, b[j]);
-    set_rhs(i, points[i]);
-  }
-  // End: span N + 1 = [t_{N-2}, 1]; the not-a-knot knot t_{N-2} = U[N + 1] joins spans N and N + 1.
-  end_row(N - 1, end, 1.0, N + 1, N);
+    };
+    auto set_rhs = [&](std::size_t row, const Vec3& v) {
+      for (std::size_t c = 0; c < 3; ++c) rhs[row * 3 + c] += v[c];
+    };
 
-  if (!A.solve(rhs, 3))
-    throw Error(Errc::NumericalFailure,
-                "the cubic interpolation system for " + std::to_string(N) +
-                    " points is singular to working precision (check the end conditions and parameters)",
-                {.field = "points"});
+    BasisWorkspace work;
+    // End row: `span` is the end span, `inner` the not-a-knot knot's index in U.
+    auto end_row = [&](std::size_t row, const EndRow& er, double at, std::size_t span, std::size_t left_span) {
+      switch (er.kind) {
+        case EndRow::Kind::FirstDerivative:
+        case EndRow::Kind::SecondDerivativeZero: {
+          const int k = er.kind == EndRow::Kind::FirstDerivative ? 1 : 2;
+          const auto d = basis_derivatives(kv, span, at, k, work);
+          for (std::size_t j = 0; j <= kCubic; ++j) add(row, span - kCubic + j, d[static_cast<std::size_t>(k) * 4 + j]);
+          if (k == 1) set_rhs(row, er.derivative);
+          break;
+        }
+        case EndRow::Kind::ThirdDerivativeJump: {
+          // C'''(u⁻) - C'''(u⁺) = 0 at u = U[left_span + 1]; pieces on spans left_span and left_span + 1.
+          const double u = kv[left_span + 1];
+          std::array<double, 4> left{};
+          const auto dl = basis_derivatives(kv, left_span, u, 3, work);
+          for (std::size_t j = 0; j <= kCubic; ++j) left[j] = dl[12 + j];
+          for (std::size_t j = 0; j <= kCubic; ++j) add(row, left_span - kCubic + j, left[j]);
+          const auto dr = basis_derivatives(kv, left_span + 1, u, 3, work);
+          for (std::size_t j = 0; j <= kCubic; ++j) add(row, left_span + 1 - kCubic + j, -dr[12 + j]);
+          break;
+        }
+      }
+    };
+    // Start: span 3 = [0, t_1); the not-a-knot knot t_1 = U[4] joins spans 3 and 4.
+    end_row(0, start, 0.0, kCubic, kCubic);
+    // Interpolation rows: C(t_i) = Q_i, span i + 3 where N_{i+3}(t_i) = 0.
+    std::array<double, kCubic + 1> b{};
+    for (std::size_t i = 1; i + 1 < N; ++i) {
+      const std::size_t span = i + kCubic;
+      basis_functions(kv, span, t[i], b);
+      for (std::size_t j = 0; j <= kCubic; ++j) add(i, span - kCubic + j, b[j]);
+      set_rhs(i, points[i]);
+    }
+    // End: span N + 1 = [t_{N-2}, 1]; the not-a-knot knot t_{N-2} = U[N + 1] joins spans N and N + 1.
+    end_row(N - 1, end, 1.0, N + 1, N);
+  };
+  // The unknowns P_1 … P_N are solved in place inside the control point array.
+  static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 must be three packed doubles");
   std::vector<Vec3> P(N + 2);
+  double* unknowns = &P[1].x;
+  bool solved = false;
+  if (N >= 4) {
+    CubicSystem fast(N, unknowns);
+    assemble(fast);
+    solved = solve_cubic_system(fast);
+  }
+  if (!solved) {
+    // Small N, or a pivot too small for elimination without interchanges.
+    BandSystem band(N);
+    assemble(band);
+    if (!band.matrix.solve(band.storage, 3))
+      throw Error(Errc::NumericalFailure,
+                  "the cubic interpolation system for " + std::to_string(N) +
+                      " points is singular to working precision (check the end conditions and parameters)",
+                  {.field = "points"});
+    std::copy(band.storage.begin(), band.storage.end(), unknowns);
+  }
   P[0] = P0;
-  for (std::size_t j = 0; j < N; ++j) P[j + 1] = {rhs[3 * j], rhs[3 * j + 1], rhs[3 * j + 2]};
   P[N + 1] = Pn;
   for (std::size_t j = 0; j < P.size(); ++j)
     if (!is_finite(P[j]))
       throw Error(Errc::NumericalFailure,
                   "control point " + std::to_string(j) + " of the interpolant overflowed (scale of the data too large)",
                   {.field = "points"});
-  return make_curve(kv, std::move(P), options.dimension);
+  return make_curve(std::move(kv), std::move(P), options.dimension);
 }
 
 NurbsCurve interpolate_lagrange(std::span<const Vec3> points, std::span<const double> parameters, int dimension) {
