@@ -7,12 +7,29 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cmath>
+#include <cstdlib>
+#include <new>
 #include <numbers>
 #include <vector>
 
 #include "hula/testing/expect_error.hpp"
+
+// Counting allocator for the allocation-free checks (STYLE.md: hot loops are
+// checked with a counting allocator, not with timing).
+namespace {
+std::atomic<long> g_allocations{0};
+}  // namespace
+
+void* operator new(std::size_t size) {
+  g_allocations.fetch_add(1, std::memory_order_relaxed);
+  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace hula::nurbs {
 namespace {
@@ -100,6 +117,27 @@ TEST(ArcLength, ErrorsNameTheInput) {
   HULA_EXPECT_ERROR(arc_length(huge), Errc::NumericalFailure, "overflow");
   EXPECT_EQ(parameter_at_length(c, 0.0), 0.0);
   EXPECT_EQ(parameter_at_length(c, arc_length(c)), 1.0);
+}
+
+// checks: the integration loop does not allocate per evaluation: a 1e-6 and a 1e-14 run (many more
+// speed evaluations) make the same number of allocations (counting allocator).
+TEST(ArcLength, IntegrationLoopIsAllocationFree) {
+  const NurbsCurve c(3, {0, 0, 0, 0, 0.2, 0.7, 1, 1, 1, 1},
+                     {{0, 0, 0}, {1, 3, 0}, {4, -2, 1}, {5, 1, 0}, {7, 7, 2}, {8, 0, 0}});
+  (void)arc_length(c);  // builds the evaluation cache
+  const auto count = [&](double tolerance) {
+    const long before = g_allocations.load();
+    (void)arc_length(c, {.tolerance = tolerance});
+    return g_allocations.load() - before;
+  };
+  EXPECT_GT(count(1e-6), 0);  // the counter is live
+  EXPECT_EQ(count(1e-6), count(1e-14));
+  const auto count_inverse = [&](double s) {
+    const long before = g_allocations.load();
+    (void)parameter_at_length(c, s);
+    return g_allocations.load() - before;
+  };
+  EXPECT_EQ(count_inverse(1.0), count_inverse(7.0));
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Bézier curves: de Casteljau, Bernstein form and NurbsCurve::evaluate agree
-// (three independent evaluators), subdivision halves reproduce the curve,
-// and documented errors.
+// Bézier curves: hand-computed de Casteljau (polynomial and rational) and
+// documented errors. Evaluator agreement and subdivision on random curves:
+// bezier_property_test.cpp.
 #include "hula/nurbs/bezier.hpp"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Tight bounding box: circle (also rotated, extrema inside spans) and a
-// parabola against closed forms; containment in control_box and of dense
-// samples on random curves (property).
+// parabola against closed forms. Random-curve containment:
+// bounding_box_property_test.cpp.
 #include "hula/nurbs/bounding_box.hpp"
 
 #include <gtest/gtest.h>

@@ -1,18 +1,35 @@
 // SPDX-License-Identifier: MIT
-// Closest point: points on random curves return themselves, points around a
-// circle project radially (closed form), the result is never worse than dense
-// sampling (property), far points, and errors.
+// Closest point: points around a circle project radially (closed form), far
+// and out-of-plane points, allocation-free Newton, errors. Random-curve
+// properties: closest_point_property_test.cpp.
 #include "hula/nurbs/closest_point.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <cstdlib>
+#include <new>
 #include <numbers>
 #include <vector>
 
 #include "hula/testing/curve_generators.hpp"
 #include "hula/testing/expect_error.hpp"
+
+// Counting allocator for the allocation-free checks (STYLE.md: hot loops are
+// checked with a counting allocator, not with timing).
+namespace {
+std::atomic<long> g_allocations{0};
+}  // namespace
+
+void* operator new(std::size_t size) {
+  g_allocations.fetch_add(1, std::memory_order_relaxed);
+  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace hula::nurbs {
 namespace {
@@ -61,6 +78,19 @@ TEST(ClosestPoint, ErrorsNameTheInput) {
   HULA_EXPECT_ERROR(closest_point(c, {0, 0, 0}, {.max_iterations = 0}), Errc::InvalidOption,
                     "options.max_iterations = 0");
   HULA_EXPECT_ERROR(closest_point(c, {0, 0, 0}, {.tolerance = {.resabs = -1.0}}), Errc::InvalidOption, "resabs");
+}
+
+// checks: Newton iterations do not allocate: 1 and 50 iterations per start make the same number
+// of allocations (counting allocator).
+TEST(ClosestPoint, NewtonLoopIsAllocationFree) {
+  const NurbsCurve c = circle(2.0);
+  (void)closest_point(c, {1, 1, 0});  // builds the evaluation cache
+  const auto count = [&](int iterations) {
+    const long before = g_allocations.load();
+    (void)closest_point(c, {3, 1, 0.5}, {.max_iterations = iterations});
+    return g_allocations.load() - before;
+  };
+  EXPECT_EQ(count(1), count(50));
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Degree elevation: a line and a circle by hand / closed form, and shape
-// invariance on seeded random curves elevated once and twice (property).
+// Degree elevation: a line and a circle by hand / closed form, and errors.
+// Shape invariance on random curves: elevate_property_test.cpp.
 #include "hula/nurbs/elevate.hpp"
 
 #include <gtest/gtest.h>

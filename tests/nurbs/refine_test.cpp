@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Knot insertion, refinement and Bézier decomposition: The NURBS Book ex. 5.1
-// by hand, shape invariance on seeded random curves (property), and errors.
+// by hand, and errors. Shape invariance on random curves: refine_property_test.cpp.
 #include "hula/nurbs/refine.hpp"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Reparameterisation, reversal and split: same point set on random curves
-// (property), derivatives by the chain rule, C' sign flip, and errors.
+// Reparameterisation, reversal and split: documented errors. Same point set,
+// chain rule and C' sign flip on random curves: reparam_property_test.cpp.
 #include "hula/nurbs/reparam.hpp"
 
 #include <gtest/gtest.h>
