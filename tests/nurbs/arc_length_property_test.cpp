@@ -22,14 +22,17 @@ RC_GTEST_PROP(ArcLengthProperty, LengthIsInvariant, ()) {
   const NurbsCurve c = testing::arbitrary_curve();
   const double L = arc_length(c);
   RC_ASSERT(L > 0.0);
+  // The transformed curves match C to 1e-12 × model size pointwise, so their
+  // lengths may differ by a multiple of that as well as by the quadrature tolerance.
+  const double tol = 1e-11 * (L + c.model_size());
   const Interval d = c.domain();
   const double t = d.start + d.length() * *rc::gen::inRange(1, 100) / 100.0;
   const SplitResult s = split(c, t);
-  RC_ASSERT(std::fabs(arc_length(s.before) + arc_length(s.after) - L) <= 1e-11 * L);
-  RC_ASSERT(std::fabs(arc_length(c, d.start, t) + arc_length(c, t, d.end) - L) <= 1e-11 * L);
-  RC_ASSERT(std::fabs(arc_length(reverse(c)) - L) <= 1e-11 * L);
-  RC_ASSERT(std::fabs(arc_length(reparameterise(c, {-3.0, 40.0})) - L) <= 1e-11 * L);
-  RC_ASSERT(std::fabs(arc_length(elevate_degree(c, 1)) - L) <= 1e-11 * L);
+  RC_ASSERT(std::fabs(arc_length(s.before) + arc_length(s.after) - L) <= tol);
+  RC_ASSERT(std::fabs(arc_length(c, d.start, t) + arc_length(c, t, d.end) - L) <= tol);
+  RC_ASSERT(std::fabs(arc_length(reverse(c)) - L) <= tol);
+  RC_ASSERT(std::fabs(arc_length(reparameterise(c, {-3.0, 40.0})) - L) <= tol);
+  RC_ASSERT(std::fabs(arc_length(elevate_degree(c, 1)) - L) <= tol);
 }
 
 // checks: arc_length(t0, parameter_at_length(s)) = s to 1e-10 × L on random curves.

@@ -174,6 +174,22 @@ ClosestPointResult closest_point(const NurbsCurve& curve, const Vec3& point, con
   for (std::size_t i = 1; i + 1 < ts.size(); ++i)
     if (dist[i] <= dist[i - 1] && dist[i] <= dist[i + 1] && ts[i - 1] < ts[i + 1])
       search.newton(ts[i], ts[i - 1], ts[i + 1]);
+  // Narrow features (a hairpin passing near P between two samples) can hide
+  // a minimum from both tests above. On a sample interval of width h inside
+  // span s the distance is at least (d_i + d_{i+1} - M_s h) / 2, where M_s
+  // bounds the speed |C'| on the span (twice the largest sampled speed); every
+  // interval whose bound is below the best distance so far gets a Newton
+  // start from its left end.
+  for (std::size_t s = 0; s < spans; ++s) {
+    double max_speed = 0.0;
+    for (std::size_t j = 0; j <= per_span; ++j) max_speed = std::fmax(max_speed, norm(ders[2 * (s * stride + j) + 1]));
+    const double M = 2.0 * max_speed;
+    for (std::size_t j = 0; j < per_span; ++j) {
+      const std::size_t i = s * stride + j;
+      const double bound = 0.5 * (dist[i] + dist[i + 1] - M * (ts[i + 1] - ts[i]));
+      if (bound < search.best.result.distance) search.newton(ts[i], ts[i], ts[i + 1]);
+    }
+  }
   return search.best.result;
 }
 

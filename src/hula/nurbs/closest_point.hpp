@@ -4,8 +4,10 @@
 // that grows with the degree, Newton's method on f(t) = C'(t)·(C(t) - P),
 // safeguarded by bisection, is run in every sample interval where f changes
 // sign from - to + (each holds a local minimum of the distance) and around
-// every sample that is a local minimum of the distance; iterates stay in the
-// domain, and the best result is compared with both ends.
+// every sample that is a local minimum of the distance, and in every sample
+// interval whose speed-based lower bound on the distance is below the best so
+// far (narrow hairpins); iterates stay in the domain, and the best result is
+// compared with both ends.
 #pragma once
 
 #include "hula/core/tolerance.hpp"
