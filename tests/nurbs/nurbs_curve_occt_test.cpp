@@ -22,7 +22,7 @@
 
 #include "hula/core/rng.hpp"
 #include "hula/nurbs/nurbs_curve.hpp"
-#include "hula/testing/random_curves.hpp"
+#include "hula/testing/curve_generators.hpp"
 
 namespace hula::nurbs {
 namespace {
@@ -94,13 +94,21 @@ void compare_curve(const NurbsCurve& c, Rng& rng, int curve_index,
 // checks: C, C', C'', C''' equal Geom_BSplineCurve::D3 to 1e-12 relative on 200 random non-rational curves.
 TEST(NurbsCurveOcct, NonRationalMatchesD3) {
   Rng rng(101);
-  for (int i = 0; i < 200; ++i) compare_curve(testing::random_curve(rng, {.max_degree = 7}), rng, i);
+  for (int i = 0; i < 200; ++i) {
+    const int p = 1 + static_cast<int>(rng.below(7));
+    compare_curve(testing::random_curve(rng, {.degree = p, .clamped = (i % 4 != 0), .extra_points = i % 9}), rng, i);
+  }
 }
 
 // checks: rational derivatives (quotient rule) equal Geom_BSplineCurve::D3 to 1e-12 relative.
 TEST(NurbsCurveOcct, RationalMatchesD3) {
   Rng rng(202);
-  for (int i = 0; i < 200; ++i) compare_curve(testing::random_curve(rng, {.max_degree = 7, .rational = true}), rng, i);
+  for (int i = 0; i < 200; ++i) {
+    const int p = 1 + static_cast<int>(rng.below(7));
+    compare_curve(
+        testing::random_curve(rng, {.degree = p, .rational = true, .clamped = (i % 4 != 0), .extra_points = i % 9}),
+        rng, i);
+  }
 }
 
 // checks: high degrees (direct de Boor path, degree > kCachedDegreeLimit): position equals
@@ -112,7 +120,8 @@ TEST(NurbsCurveOcct, HighDegreeMatchesValueAndD3) {
   Rng rng(303);
   for (int i = 0; i < 20; ++i)
     compare_curve(
-        testing::random_curve(rng, {.min_degree = 10, .max_degree = 14, .max_points = 24, .rational = (i % 2 == 1)}),
+        testing::random_curve(
+            rng, {.degree = 10 + static_cast<int>(rng.below(5)), .rational = (i % 2 == 1), .extra_points = 8}),
         rng, i, {1e-12, 1e-9, 1e-9, 1e-9}, true);
 }
 
@@ -120,25 +129,33 @@ TEST(NurbsCurveOcct, HighDegreeMatchesValueAndD3) {
 TEST(NurbsCurveOcct, OneSidedLimitsMatchLocalD3) {
   Rng rng(404);
   for (int i = 0; i < 50; ++i) {
-    const NurbsCurve c =
-        testing::random_curve(rng, {.min_degree = 2, .max_degree = 5, .min_points = 8, .rational = (i % 2 == 0)});
+    const NurbsCurve c = testing::random_curve(
+        rng, {.degree = 2 + static_cast<int>(rng.below(4)), .rational = (i % 2 == 0), .extra_points = 6});
     Handle(Geom_BSplineCurve) occ = to_occt(c);
+    struct Sample {
+      double u;
+      std::array<Vec3, 4> ours, theirs;
+    };
+    std::vector<Sample> samples;
     for (int k = 2; k < occ->NbKnots(); ++k) {
       const double u = occ->Knot(k);
       gp_Pnt p;
       gp_Vec a1, a2, a3;
       const auto left = c.derivatives(u, 3, {.side = Side::Left});
       occ->LocalD3(u, k - 1, k, p, a1, a2, a3);
-      const std::array<Vec3, 4> L = {v3(p), v3(a1), v3(a2), v3(a3)};
+      samples.push_back({u, {left[0], left[1], left[2], left[3]}, {v3(p), v3(a1), v3(a2), v3(a3)}});
       const auto right = c.derivatives(u, 3, {.side = Side::Right});
       occ->LocalD3(u, k, k + 1, p, a1, a2, a3);
-      const std::array<Vec3, 4> R = {v3(p), v3(a1), v3(a2), v3(a3)};
-      for (std::size_t o = 0; o < 4; ++o) {
-        const double s = std::max({1.0, norm(L[o]), norm(R[o])});
-        EXPECT_LE(distance(left[o], L[o]), 1e-11 * s) << "curve " << i << " knot " << u << " order " << o;
-        EXPECT_LE(distance(right[o], R[o]), 1e-11 * s) << "curve " << i << " knot " << u << " order " << o;
-      }
+      samples.push_back({u, {right[0], right[1], right[2], right[3]}, {v3(p), v3(a1), v3(a2), v3(a3)}});
     }
+    // Same rule as compare_curve: per-order scale over all samples of the curve.
+    std::array<double, 4> scale{};
+    for (const auto& smp : samples)
+      for (std::size_t o = 0; o < 4; ++o) scale[o] = std::max(scale[o], norm(smp.theirs[o]));
+    for (std::size_t j = 0; j < samples.size(); ++j)
+      for (std::size_t o = 0; o < 4; ++o)
+        EXPECT_LE(distance(samples[j].ours[o], samples[j].theirs[o]), 1e-12 * scale[o])
+            << "curve " << i << " knot " << samples[j].u << (j % 2 == 0 ? " left" : " right") << " order " << o;
   }
 }
 
@@ -146,7 +163,8 @@ TEST(NurbsCurveOcct, OneSidedLimitsMatchLocalD3) {
 TEST(NurbsCurveOcct, BatchEqualsSinglePoint) {
   Rng rng(505);
   for (int i = 0; i < 30; ++i) {
-    const NurbsCurve c = testing::random_curve(rng, {.rational = (i % 2 == 0)});
+    const NurbsCurve c =
+        testing::random_curve(rng, {.degree = 1 + static_cast<int>(rng.below(5)), .rational = (i % 2 == 0)});
     std::vector<double> ts;
     for (int j = 0; j < 100; ++j) ts.push_back(rng.uniform(c.domain().start, c.domain().end));
     if (i % 3 == 0) std::sort(ts.begin(), ts.end());

@@ -272,6 +272,15 @@ inline BatchKernel kernel_for(int degree, bool rational) {
 }
 }  // namespace
 
+namespace {
+// Scratch of the direct (high-degree) evaluator: one per thread, so it is
+// allocation-free once warm and safe under concurrent const use.
+BasisWorkspace& direct_workspace() {
+  thread_local BasisWorkspace work;
+  return work;
+}
+}  // namespace
+
 void NurbsCurve::Data::build_cache() const {
   const int p = degree();
   const auto P = static_cast<std::size_t>(p);
@@ -435,7 +444,7 @@ void NurbsCurve::derivatives(double t, int order, std::span<Vec3> out, const Eva
   const SpanCache& c = d.span_cache();
   if (p > kCachedDegreeLimit) {
     const double u = resolve_parameter(t, domain(), options.domain, "t", 0, false);
-    BasisWorkspace work;
+    BasisWorkspace& work = direct_workspace();
     d.eval_direct(u, order, options.side, out.data(), work);
   } else {
     kernel_for(p, d.rational())(c, std::span<const double>(&t, 1), order, out.data(), domain(), options, false);
@@ -465,7 +474,7 @@ void NurbsCurve::derivatives(std::span<const double> ts, int order, std::span<Ve
   const int p = d.degree();
   const SpanCache& c = d.span_cache();
   if (p > kCachedDegreeLimit) {
-    BasisWorkspace work;
+    BasisWorkspace& work = direct_workspace();
     for (std::size_t i = 0; i < ts.size(); ++i) {
       const double u = resolve_parameter(ts[i], dom, options.domain, "t", i, true);
       d.eval_direct(u, order, options.side, out.data() + i * stride, work);
