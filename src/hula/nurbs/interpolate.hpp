@@ -53,7 +53,7 @@ struct InterpolationOptions {
   /// Given data parameters (one per point, strictly increasing, finite). They
   /// are mapped affinely to [0, 1]. This is also the thesis's "interpolate
   /// knots" (10.2.1): the knots at the data points. Empty: use `parameterisation`.
-  std::vector<double> parameters;
+  std::vector<double> parameters{};
   /// Start and end conditions. Default natural at both ends.
   EndCondition start = EndCondition::natural();
   EndCondition end = EndCondition::natural();

@@ -1,0 +1,134 @@
+// SPDX-License-Identifier: MIT
+// Least-squares curve approximation with fixed end points (thesis 5.3.3;
+// The NURBS Book, Piegl & Tiller 2nd ed., 9.4.1, eq. 9.63-9.69).
+//
+// Notation (The NURBS Book 9.4.1): Q_0 … Q_m data points, t_k their
+// parameters, p degree, P_0 … P_n control points with P_0 = Q_0 and
+// P_n = Q_m, N_{i,p} the basis functions on knots U. Interior knots by
+// averaging (eq. 9.69): d = (m + 1) / (n - p + 1), and for j = 1 … n - p,
+// i = floor(j d), α = j d - i, U_{p+j} = (1 - α) t_{i-1} + α t_i.
+// The unknowns P_1 … P_{n-1} solve the normal equations (NᵀN) P = R with
+//   R_k = Q_k - N_{0,p}(t_k) Q_0 - N_{n,p}(t_k) Q_m,  R_i = Σ_{k=1}^{m-1} N_{i,p}(t_k) R_k,
+// NᵀN symmetric positive definite with bandwidth p (every t_k touches p + 1
+// consecutive basis functions), solved with hula::BandedMatrix in O(m p²).
+#include "hula/nurbs/approximate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "hula/core/banded.hpp"
+#include "hula/core/error.hpp"
+#include "hula/nurbs/basis.hpp"
+
+namespace hula::nurbs {
+
+void ApproximationOptions::validate() const {
+  if (degree < 1 || degree > kMaxDegree)
+    throw Error(Errc::InvalidOption,
+                "degree = " + std::to_string(degree) + " must be in [1, " + std::to_string(kMaxDegree) + "]",
+                {.field = "degree"});
+  if (control_points < static_cast<std::size_t>(degree) + 1)
+    throw Error(Errc::InvalidOption,
+                "control_points = " + std::to_string(control_points) +
+                    " must be at least degree + 1 = " + std::to_string(degree + 1),
+                {.field = "control_points"});
+  if (dimension != 2 && dimension != 3)
+    throw Error(Errc::InvalidOption, "dimension = " + std::to_string(dimension) + " must be 2 or 3",
+                {.field = "dimension"});
+  switch (parameterisation) {
+    case Parameterisation::Uniform:
+    case Parameterisation::ChordLength:
+    case Parameterisation::Centripetal:
+      break;
+    default:
+      throw Error(Errc::InvalidOption,
+                  "parameterisation = " + std::to_string(static_cast<int>(parameterisation)) +
+                      " is not a Parameterisation value",
+                  {.field = "parameterisation"});
+  }
+}
+
+ApproximationResult approximate(std::span<const Vec3> points, const ApproximationOptions& options) {
+  options.validate();
+  if (points.size() < 2)
+    throw Error(Errc::TooFewPoints, "approximate needs at least 2 points, got " + std::to_string(points.size()),
+                {.field = "points"});
+  if (options.control_points > points.size())
+    throw Error(Errc::InvalidOption,
+                "control_points = " + std::to_string(options.control_points) + " exceeds the number of points " +
+                    std::to_string(points.size()),
+                {.field = "control_points"});
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (options.dimension == 2 && std::isfinite(points[i].z) && points[i].z != 0.0)
+      throw Error(Errc::InvalidArgument,
+                  "points[" + std::to_string(i) + "] has z = " + format_number(points[i].z) +
+                      " but dimension = 2 (z must be 0)",
+                  {.field = "points", .index = i, .component = 2});
+
+  std::vector<double> t = parameterise(points, options.parameterisation);
+  const std::size_t m = points.size() - 1;
+  const std::size_t n = options.control_points - 1;
+  const auto p = static_cast<std::size_t>(options.degree);
+
+  std::vector<double> U(p + 1, 0.0);
+  const double d = static_cast<double>(m + 1) / static_cast<double>(n - p + 1);
+  for (std::size_t j = 1; j + p <= n; ++j) {
+    const double jd = static_cast<double>(j) * d;
+    const auto i = static_cast<std::size_t>(std::floor(jd));
+    const double alpha = jd - static_cast<double>(i);
+    U.push_back((1.0 - alpha) * t[i - 1] + alpha * t[i]);
+  }
+  U.insert(U.end(), p + 1, 1.0);
+  const KnotVector kv(std::move(U), options.degree);
+
+  std::vector<Vec3> P(n + 1);
+  P.front() = points.front();
+  P.back() = points.back();
+  if (n >= 2) {
+    const std::size_t unknowns = n - 1;
+    BandedMatrix A(unknowns, p, p);
+    std::vector<double> rhs(3 * unknowns, 0.0);
+    std::vector<double> b(p + 1);
+    for (std::size_t k = 1; k < m; ++k) {
+      const std::size_t span = kv.find_span(t[k]);
+      basis_functions(kv, span, t[k], b);
+      const std::size_t first = span - p;  // b[j] = N_{first + j, p}(t_k)
+      Vec3 R = points[k];
+      if (first == 0) R -= b[0] * points.front();
+      if (first + p == n) R -= b[p] * points.back();
+      for (std::size_t a = 0; a <= p; ++a) {
+        const std::size_t ia = first + a;
+        if (ia == 0 || ia == n || b[a] == 0.0) continue;
+        for (std::size_t c = 0; c < 3; ++c) rhs[(ia - 1) * 3 + c] += b[a] * R[c];
+        for (std::size_t e = 0; e <= p; ++e) {
+          const std::size_t ie = first + e;
+          if (ie == 0 || ie == n) continue;
+          A.at(ia - 1, ie - 1) += b[a] * b[e];
+        }
+      }
+    }
+    if (!A.solve(rhs, 3))
+      throw Error(Errc::NumericalFailure,
+                  "the least-squares normal equations are singular (" + std::to_string(options.control_points) +
+                      " control points for " + std::to_string(points.size()) + " points)",
+                  {.field = "control_points"});
+    for (std::size_t i = 1; i < n; ++i) P[i] = {rhs[3 * (i - 1)], rhs[3 * (i - 1) + 1], rhs[3 * (i - 1) + 2]};
+  }
+  if (options.dimension == 2)
+    for (Vec3& q : P) q.z = 0.0;
+  ApproximationResult result{.curve = NurbsCurve(kv, std::move(P), {}, options.dimension), .parameters = std::move(t)};
+
+  std::vector<Vec3> on_curve(points.size());
+  result.curve.evaluate(result.parameters, on_curve);
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const double e = distance(on_curve[k], points[k]);
+    if (e > result.max_deviation) {
+      result.max_deviation = e;
+      result.max_deviation_index = k;
+    }
+  }
+  return result;
+}
+
+}  // namespace hula::nurbs

@@ -1,0 +1,492 @@
+// SPDX-License-Identifier: MIT
+// Curves through data points: parameterisation, the global C2 cubic spline,
+// Lagrange (Bézier) interpolation and piecewise Hermite curves.
+//
+// References:
+//   thesis 5.3.1 (Lagrange), 5.3.2 (Hermite), 7.1.2 and eq. 29 (chord length),
+//     7.5.1/7.5.2 (interpolation through points, tangents), 10.2.1, 10.2.5;
+//   The NURBS Book (Piegl & Tiller, 2nd ed.) 9.2.1-9.2.2 (global interpolation,
+//     end derivatives), A2.2/A2.3 (basis functions and derivatives);
+//   E. T. Y. Lee, "Choosing nodes in parametric curve interpolation", CAD 21(6), 1989 (centripetal);
+//   C. de Boor, "A Practical Guide to Splines", ch. IV (Bessel and not-a-knot ends);
+//   Open CASCADE GeomAPI_Interpolate::PerformNonPeriodic / BuildTangents (the Occt end condition).
+//
+// Notation: Q_i = data points (i = 0 … N-1), t_i = data parameters in [0, 1],
+// P_j = control points (j = 0 … N+1), U = knots {0,0,0,0, t_1 … t_{N-2}, 1,1,1,1}.
+// The cubic spline is solved for the unknowns P_1 … P_N (P_0 = Q_0 and
+// P_{N+1} = Q_{N-1} are known) as one banded system: row 0 the start
+// condition, rows 1 … N-2 the interpolation conditions C(t_i) = Q_i, row N-1
+// the end condition. Interpolation rows are tridiagonal; a not-a-knot row
+// reaches three columns further, so the band is kl = ku = 3 and the solve O(N).
+//
+// Hermite curves are built by blossoming (polar forms): the control point
+// P_j of a spline is its blossom at (U_{j+1}, …, U_{j+p}), which any polynomial
+// piece gives where the spline is smooth enough; the Bézier points of a
+// Hermite segment follow from its end derivatives.
+#include "hula/nurbs/interpolate.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+
+#include "hula/core/banded.hpp"
+#include "hula/core/error.hpp"
+#include "hula/nurbs/basis.hpp"
+
+namespace hula::nurbs {
+
+namespace {
+
+constexpr int kCubic = 3;
+constexpr int kQuintic = 5;
+
+std::string indexed(const char* field, std::size_t i) { return std::string(field) + "[" + std::to_string(i) + "]"; }
+
+void check_dimension_argument(int dimension) {
+  if (dimension != 2 && dimension != 3)
+    throw Error(Errc::InvalidArgument, "dimension = " + std::to_string(dimension) + " must be 2 or 3",
+                {.field = "dimension"});
+}
+
+// Rejects non-finite coordinates (naming point and coordinate) and, for
+// dimension 2, a non-zero z (naming the point).
+void check_vectors(std::span<const Vec3> v, int dimension, const char* field) {
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    for (std::size_t c = 0; c < 3; ++c) {
+      if (!std::isfinite(v[i][c]))
+        throw Error(Errc::NonFiniteInput,
+                    indexed(field, i) + "[" + std::to_string(c) + "] = " + format_number(v[i][c]) + " is not finite",
+                    {.field = field, .index = i, .component = c});
+    }
+    if (dimension == 2 && v[i].z != 0.0)
+      throw Error(Errc::InvalidArgument,
+                  indexed(field, i) + " has z = " + format_number(v[i].z) + " but dimension = 2 (z must be 0)",
+                  {.field = field, .index = i, .component = 2});
+  }
+}
+
+void check_count(std::size_t n, std::size_t needed, const char* what) {
+  if (n < needed)
+    throw Error(Errc::TooFewPoints,
+                std::string(what) + " needs at least " + std::to_string(needed) + " points, got " + std::to_string(n),
+                {.field = "points"});
+}
+
+void check_same_count(std::size_t got, std::size_t points, const char* field) {
+  if (got != points)
+    throw Error(Errc::InvalidArgument,
+                std::string(field) + " has " + std::to_string(got) + " values but there are " + std::to_string(points) +
+                    " points (one per point required)",
+                {.field = field});
+}
+
+// Given parameters: finite, strictly increasing, mapped affinely to [0, 1].
+std::vector<double> map_given_parameters(std::span<const double> u, std::size_t points) {
+  check_same_count(u.size(), points, "parameters");
+  for (std::size_t i = 0; i < u.size(); ++i) {
+    if (!std::isfinite(u[i]))
+      throw Error(Errc::NonFiniteInput, indexed("parameters", i) + " = " + format_number(u[i]) + " is not finite",
+                  {.field = "parameters", .index = i});
+    if (i > 0 && !(u[i] > u[i - 1]))
+      throw Error(Errc::InvalidArgument,
+                  indexed("parameters", i) + " = " + format_number(u[i]) + " is not greater than " +
+                      indexed("parameters", i - 1) + " = " + format_number(u[i - 1]) +
+                      " (parameters must be strictly increasing)",
+                  {.field = "parameters", .index = i});
+  }
+  const std::size_t last = u.size() - 1;
+  // Halve before subtracting when the range overflows (|u| near DBL_MAX).
+  const bool halve = !std::isfinite(u[last] - u[0]);
+  const double a = halve ? 0.5 * u[0] : u[0];
+  const double range = halve ? 0.5 * u[last] - a : u[last] - a;
+  std::vector<double> t(u.size());
+  t[0] = 0.0;
+  for (std::size_t i = 1; i < last; ++i) t[i] = ((halve ? 0.5 * u[i] : u[i]) - a) / range;
+  t[last] = 1.0;
+  for (std::size_t i = 1; i <= last; ++i)
+    if (!(t[i] > t[i - 1]))
+      throw Error(Errc::InvalidArgument,
+                  indexed("parameters", i) + " = " + format_number(u[i]) + " and " + indexed("parameters", i - 1) +
+                      " = " + format_number(u[i - 1]) + " coincide after mapping to [0, 1]",
+                  {.field = "parameters", .index = i});
+  return t;
+}
+
+// Data parameters from the given values, or from the rule.
+std::vector<double> data_parameters(std::span<const Vec3> points, std::span<const double> given, Parameterisation rule,
+                                    const Tolerance& tolerance) {
+  if (!given.empty()) return map_given_parameters(given, points.size());
+  return parameterise(points, rule, tolerance);
+}
+
+// Derivative at node t[at] of the Lagrange polynomial through (t[j], q[j]),
+// j = 0 … count-1 (distinct nodes). Written with the differences q_j - q_at
+// (Σ_j l_j' = 0), so a far-away origin costs no accuracy:
+//   L'(t_a) = Σ_{j≠a} (q_j - q_a) Π_{m≠j,a} (t_a - t_m) / Π_{m≠j} (t_j - t_m).
+Vec3 lagrange_derivative_at_node(const Vec3* q, const double* t, std::size_t count, std::size_t at) {
+  Vec3 d{};
+  for (std::size_t j = 0; j < count; ++j) {
+    if (j == at) continue;
+    double num = 1.0;
+    double den = 1.0;
+    for (std::size_t m = 0; m < count; ++m) {
+      if (m == j) continue;
+      den *= t[j] - t[m];
+      if (m != at) num *= t[at] - t[m];
+    }
+    d += (num / den) * (q[j] - q[at]);
+  }
+  return d;
+}
+
+// Dense Gaussian elimination with partial pivoting, A (n × n, row-major) X = B (n × 3).
+bool dense_solve(std::vector<double>& A, std::vector<Vec3>& B, std::size_t n) {
+  for (std::size_t k = 0; k < n; ++k) {
+    std::size_t piv = k;
+    for (std::size_t i = k + 1; i < n; ++i)
+      if (std::fabs(A[i * n + k]) > std::fabs(A[piv * n + k])) piv = i;
+    if (!(std::fabs(A[piv * n + k]) > 0.0)) return false;
+    if (piv != k) {
+      for (std::size_t j = 0; j < n; ++j) std::swap(A[k * n + j], A[piv * n + j]);
+      std::swap(B[k], B[piv]);
+    }
+    for (std::size_t i = k + 1; i < n; ++i) {
+      const double f = A[i * n + k] / A[k * n + k];
+      if (f == 0.0) continue;
+      for (std::size_t j = k; j < n; ++j) A[i * n + j] -= f * A[k * n + j];
+      B[i] -= f * B[k];
+    }
+  }
+  for (std::size_t k = n; k-- > 0;) {
+    Vec3 s = B[k];
+    for (std::size_t j = k + 1; j < n; ++j) s -= A[k * n + j] * B[j];
+    B[k] = s / A[k * n + k];
+  }
+  return true;
+}
+
+// Resolved end condition: what the row of the banded system imposes.
+struct EndRow {
+  enum class Kind { SecondDerivativeZero, FirstDerivative, ThirdDerivativeJump };
+  Kind kind;
+  Vec3 derivative{};
+};
+
+// Turns an EndCondition into a row kind, falling back for small N (documented
+// in interpolate.hpp and docs): Bessel uses the Lagrange polynomial of degree
+// min(2, N-1) through the end points, Occt of degree min(3, N-1); not-a-knot
+// with N = 2 (no interior knot) becomes Bessel (the chord), and with N = 3 at
+// both ends (a single interior knot) both ends become Bessel (the parabola).
+EndRow resolve_end(const EndCondition& ec, bool at_start, bool both_not_a_knot, std::span<const Vec3> q,
+                   const std::vector<double>& t) {
+  const std::size_t N = q.size();
+  auto lagrange_end = [&](std::size_t degree) {
+    const std::size_t count = std::min(degree, N - 1) + 1;
+    const std::size_t first = at_start ? 0 : N - count;
+    const std::size_t at = at_start ? 0 : count - 1;
+    return EndRow{EndRow::Kind::FirstDerivative, lagrange_derivative_at_node(&q[first], &t[first], count, at)};
+  };
+  switch (ec.kind) {
+    case EndCondition::Kind::Natural:
+      return {EndRow::Kind::SecondDerivativeZero, {}};
+    case EndCondition::Kind::Clamped:
+      return {EndRow::Kind::FirstDerivative, ec.derivative};
+    case EndCondition::Kind::Bessel:
+      return lagrange_end(2);
+    case EndCondition::Kind::Occt:
+      return lagrange_end(3);
+    case EndCondition::Kind::NotAKnot:
+      if (N == 2 || (N == 3 && both_not_a_knot)) return lagrange_end(2);
+      return {EndRow::Kind::ThirdDerivativeJump, {}};
+  }
+  throw InternalError("unknown end condition kind");
+}
+
+NurbsCurve make_curve(KnotVector knots, std::vector<Vec3> control_points, int dimension) {
+  if (dimension == 2)
+    for (Vec3& p : control_points) p.z = 0.0;
+  return NurbsCurve(std::move(knots), std::move(control_points), {}, dimension);
+}
+
+}  // namespace
+
+void InterpolationOptions::validate() const {
+  if (dimension != 2 && dimension != 3)
+    throw Error(Errc::InvalidOption, "dimension = " + std::to_string(dimension) + " must be 2 or 3",
+                {.field = "dimension"});
+  switch (parameterisation) {
+    case Parameterisation::Uniform:
+    case Parameterisation::ChordLength:
+    case Parameterisation::Centripetal:
+      break;
+    default:
+      throw Error(Errc::InvalidOption,
+                  "parameterisation = " + std::to_string(static_cast<int>(parameterisation)) +
+                      " is not a Parameterisation value",
+                  {.field = "parameterisation"});
+  }
+  tolerance.validate();
+  const std::array<std::pair<const EndCondition*, const char*>, 2> ends{{{&start, "start"}, {&end, "end"}}};
+  for (const auto& [ec, name] : ends) {
+    const auto k = static_cast<int>(ec->kind);
+    if (k < 0 || k > static_cast<int>(EndCondition::Kind::Occt))
+      throw Error(Errc::InvalidOption,
+                  std::string(name) + ".kind = " + std::to_string(k) + " is not an EndCondition::Kind value",
+                  {.field = std::string(name) + ".kind"});
+    if (ec->kind != EndCondition::Kind::Clamped) continue;
+    for (std::size_t c = 0; c < 3; ++c)
+      if (!std::isfinite(ec->derivative[c]))
+        throw Error(Errc::InvalidOption,
+                    std::string(name) + ".derivative[" + std::to_string(c) + "] = " + format_number(ec->derivative[c]) +
+                        " is not finite",
+                    {.field = std::string(name) + ".derivative", .component = c});
+    if (dimension == 2 && ec->derivative.z != 0.0)
+      throw Error(Errc::InvalidOption,
+                  std::string(name) + ".derivative has z = " + format_number(ec->derivative.z) +
+                      " but dimension = 2 (z must be 0)",
+                  {.field = std::string(name) + ".derivative", .component = 2});
+  }
+}
+
+std::vector<double> cumulative_chord_lengths(std::span<const Vec3> points) {
+  check_vectors(points, 3, "points");
+  std::vector<double> L(points.size(), 0.0);
+  for (std::size_t i = 1; i < points.size(); ++i) L[i] = L[i - 1] + distance(points[i - 1], points[i]);
+  return L;
+}
+
+std::vector<double> parameterise(std::span<const Vec3> points, Parameterisation rule, const Tolerance& tolerance) {
+  tolerance.validate();
+  check_count(points.size(), 2, "parameterise");
+  check_vectors(points, 3, "points");
+  const std::size_t N = points.size();
+  std::vector<double> t(N, 0.0);
+  if (rule == Parameterisation::Uniform) {
+    for (std::size_t i = 1; i + 1 < N; ++i) t[i] = static_cast<double>(i) / static_cast<double>(N - 1);
+    t[N - 1] = 1.0;
+    return t;
+  }
+  if (rule != Parameterisation::ChordLength && rule != Parameterisation::Centripetal)
+    throw Error(Errc::InvalidArgument,
+                "parameterisation = " + std::to_string(static_cast<int>(rule)) + " is not a Parameterisation value",
+                {.field = "parameterisation"});
+  Box3 box;
+  for (const Vec3& p : points) box.add(p);
+  const double resolution = resolution_for_size(tolerance, box.diagonal());
+  for (std::size_t i = 1; i < N; ++i) {
+    const double d = distance(points[i - 1], points[i]);
+    if (!(d > resolution))
+      throw Error(Errc::CoincidentPoints,
+                  indexed("points", i - 1) + " and " + indexed("points", i) + " coincide (distance " +
+                      format_number(d) + " <= resolution " + format_number(resolution) + ")",
+                  {.field = "points", .index = i});
+    t[i] = t[i - 1] + (rule == Parameterisation::ChordLength ? d : std::sqrt(d));
+  }
+  const double total = t[N - 1];
+  for (std::size_t i = 1; i + 1 < N; ++i) t[i] /= total;
+  t[N - 1] = 1.0;
+  for (std::size_t i = 1; i < N; ++i)
+    if (!(t[i] > t[i - 1]))
+      throw Error(Errc::CoincidentPoints,
+                  indexed("points", i - 1) + " and " + indexed("points", i) +
+                      " are too close to get distinct parameters relative to the total length",
+                  {.field = "points", .index = i});
+  return t;
+}
+
+NurbsCurve interpolate_cubic(std::span<const Vec3> points, const InterpolationOptions& options) {
+  options.validate();
+  check_count(points.size(), 2, "interpolate_cubic");
+  check_vectors(points, options.dimension, "points");
+  const std::size_t N = points.size();
+  const std::vector<double> t =
+      data_parameters(points, options.parameters, options.parameterisation, options.tolerance);
+
+  // U = {0,0,0,0, t_1 … t_{N-2}, 1,1,1,1}: U[i + 3] = t_i.
+  std::vector<double> U;
+  U.reserve(N + 6);
+  U.insert(U.end(), 3, 0.0);
+  U.insert(U.end(), t.begin(), t.end());
+  U.insert(U.end(), 3, 1.0);
+  const KnotVector kv(std::move(U), kCubic);
+
+  const bool both_nak =
+      options.start.kind == EndCondition::Kind::NotAKnot && options.end.kind == EndCondition::Kind::NotAKnot;
+  const EndRow start = resolve_end(options.start, true, both_nak, points, t);
+  const EndRow end = resolve_end(options.end, false, both_nak, points, t);
+
+  // Unknown column j holds P_{j+1}; P_0 = Q_0 and P_{N+1} = Q_{N-1} go to the right-hand side.
+  BandedMatrix A(N, 3, 3);
+  std::vector<double> rhs(3 * N, 0.0);
+  const Vec3 P0 = points.front();
+  const Vec3 Pn = points.back();
+  const std::size_t last_ctrl = N + 1;
+  auto add = [&](std::size_t row, std::size_t ctrl, double a) {
+    if (a == 0.0) return;
+    const Vec3* known = ctrl == 0 ? &P0 : (ctrl == last_ctrl ? &Pn : nullptr);
+    if (known != nullptr) {
+      for (std::size_t c = 0; c < 3; ++c) rhs[row * 3 + c] -= a * (*known)[c];
+    } else {
+      A.at(row, ctrl - 1) += a;
+    }
+  };
+  auto set_rhs = [&](std::size_t row, const Vec3& v) {
+    for (std::size_t c = 0; c < 3; ++c) rhs[row * 3 + c] += v[c];
+  };
+
+  BasisWorkspace work;
+  // End row: `span` is the end span, `inner` the not-a-knot knot's index in U.
+  auto end_row = [&](std::size_t row, const EndRow& er, double at, std::size_t span, std::size_t left_span) {
+    switch (er.kind) {
+      case EndRow::Kind::FirstDerivative:
+      case EndRow::Kind::SecondDerivativeZero: {
+        const int k = er.kind == EndRow::Kind::FirstDerivative ? 1 : 2;
+        const auto d = basis_derivatives(kv, span, at, k, work);
+        for (std::size_t j = 0; j <= kCubic; ++j) add(row, span - kCubic + j, d[static_cast<std::size_t>(k) * 4 + j]);
+        if (k == 1) set_rhs(row, er.derivative);
+        break;
+      }
+      case EndRow::Kind::ThirdDerivativeJump: {
+        // C'''(u⁻) - C'''(u⁺) = 0 at u = U[left_span + 1]; pieces on spans left_span and left_span + 1.
+        const double u = kv[left_span + 1];
+        std::array<double, 4> left{};
+        const auto dl = basis_derivatives(kv, left_span, u, 3, work);
+        for (std::size_t j = 0; j <= kCubic; ++j) left[j] = dl[12 + j];
+        for (std::size_t j = 0; j <= kCubic; ++j) add(row, left_span - kCubic + j, left[j]);
+        const auto dr = basis_derivatives(kv, left_span + 1, u, 3, work);
+        for (std::size_t j = 0; j <= kCubic; ++j) add(row, left_span + 1 - kCubic + j, -dr[12 + j]);
+        break;
+      }
+    }
+  };
+  // Start: span 3 = [0, t_1); the not-a-knot knot t_1 = U[4] joins spans 3 and 4.
+  end_row(0, start, 0.0, kCubic, kCubic);
+  // Interpolation rows: C(t_i) = Q_i, span i + 3 where N_{i+3}(t_i) = 0.
+  std::array<double, kCubic + 1> b{};
+  for (std::size_t i = 1; i + 1 < N; ++i) {
+    const std::size_t span = i + kCubic;
+    basis_functions(kv, span, t[i], b);
+    for (std::size_t j = 0; j <= kCubic; ++j) add(i, span - kCubic + j, b[j]);
+    set_rhs(i, points[i]);
+  }
+  // End: span N + 1 = [t_{N-2}, 1]; the not-a-knot knot t_{N-2} = U[N + 1] joins spans N and N + 1.
+  end_row(N - 1, end, 1.0, N + 1, N);
+
+  if (!A.solve(rhs, 3))
+    throw Error(Errc::NumericalFailure,
+                "the cubic interpolation system for " + std::to_string(N) +
+                    " points is singular to working precision (check the end conditions and parameters)",
+                {.field = "points"});
+  std::vector<Vec3> P(N + 2);
+  P[0] = P0;
+  for (std::size_t j = 0; j < N; ++j) P[j + 1] = {rhs[3 * j], rhs[3 * j + 1], rhs[3 * j + 2]};
+  P[N + 1] = Pn;
+  for (std::size_t j = 0; j < P.size(); ++j)
+    if (!is_finite(P[j]))
+      throw Error(Errc::NumericalFailure,
+                  "control point " + std::to_string(j) + " of the interpolant overflowed (scale of the data too large)",
+                  {.field = "points"});
+  return make_curve(kv, std::move(P), options.dimension);
+}
+
+NurbsCurve interpolate_lagrange(std::span<const Vec3> points, std::span<const double> parameters, int dimension) {
+  check_dimension_argument(dimension);
+  check_count(points.size(), 2, "interpolate_lagrange");
+  const std::size_t N = points.size();
+  if (N - 1 > static_cast<std::size_t>(kMaxDegree))
+    throw Error(Errc::InvalidDegree,
+                std::to_string(N) + " points need degree " + std::to_string(N - 1) +
+                    " > kMaxDegree = " + std::to_string(kMaxDegree),
+                {.field = "points"});
+  check_vectors(points, dimension, "points");
+  const std::vector<double> t = data_parameters(points, parameters, Parameterisation::Uniform, Tolerance{});
+  // Bernstein collocation: Σ_j B_{j,n}(t_i) P_j = Q_i; rows 0 and n are unit rows (t = 0, 1).
+  const int n = static_cast<int>(N) - 1;
+  std::vector<double> A(N * N);
+  for (std::size_t i = 0; i < N; ++i) bernstein_all(n, t[i], std::span<double>(A).subspan(i * N, N));
+  std::vector<Vec3> P(points.begin(), points.end());
+  if (!dense_solve(A, P, N))
+    throw Error(Errc::NumericalFailure, "the Lagrange collocation system is singular", {.field = "parameters"});
+  P.front() = points.front();
+  P.back() = points.back();
+  std::vector<double> U(N, 0.0);
+  U.insert(U.end(), N, 1.0);
+  return make_curve(KnotVector(std::move(U), n), std::move(P), dimension);
+}
+
+NurbsCurve hermite_cubic(std::span<const Vec3> points, std::span<const Vec3> derivatives,
+                         std::span<const double> parameters, int dimension) {
+  check_dimension_argument(dimension);
+  check_count(points.size(), 2, "hermite_cubic");
+  check_vectors(points, dimension, "points");
+  check_same_count(derivatives.size(), points.size(), "derivatives");
+  check_vectors(derivatives, dimension, "derivatives");
+  const std::size_t N = points.size();
+  const std::vector<double> t = data_parameters(points, parameters, Parameterisation::ChordLength, Tolerance{});
+  // U = {0^4, t_1^2, …, t_{N-2}^2, 1^4}; control points by blossoming:
+  //   segment i (h = t_{i+1} - t_i) has Bézier points Q_i, Q_i + h/3 D_i, Q_{i+1} - h/3 D_{i+1}, Q_{i+1};
+  //   P = Q_0, then the two inner Bézier points of every segment, then Q_{N-1} (2N points).
+  std::vector<double> U(4, 0.0);
+  std::vector<Vec3> P;
+  P.reserve(2 * N);
+  P.push_back(points[0]);
+  for (std::size_t i = 0; i + 1 < N; ++i) {
+    const double h = t[i + 1] - t[i];
+    P.push_back(points[i] + (h / 3.0) * derivatives[i]);
+    P.push_back(points[i + 1] - (h / 3.0) * derivatives[i + 1]);
+    if (i + 2 < N) U.insert(U.end(), 2, t[i + 1]);
+  }
+  P.push_back(points[N - 1]);
+  U.insert(U.end(), 4, 1.0);
+  return make_curve(KnotVector(std::move(U), kCubic), std::move(P), dimension);
+}
+
+NurbsCurve hermite_quintic(std::span<const Vec3> points, std::span<const Vec3> derivatives,
+                           std::span<const Vec3> second_derivatives, std::span<const double> parameters,
+                           int dimension) {
+  check_dimension_argument(dimension);
+  check_count(points.size(), 2, "hermite_quintic");
+  check_vectors(points, dimension, "points");
+  check_same_count(derivatives.size(), points.size(), "derivatives");
+  check_vectors(derivatives, dimension, "derivatives");
+  check_same_count(second_derivatives.size(), points.size(), "second_derivatives");
+  check_vectors(second_derivatives, dimension, "second_derivatives");
+  const std::size_t N = points.size();
+  const std::vector<double> t = data_parameters(points, parameters, Parameterisation::ChordLength, Tolerance{});
+  // Quintic Bézier points of segment i (h = t_{i+1} - t_i), from C', C'' at both ends:
+  //   B0 = Q_i, B1 = Q_i + h/5 D_i, B2 = Q_i + 2h/5 D_i + h²/20 S_i,
+  //   B3 = Q_{i+1} - 2h/5 D_{i+1} + h²/20 S_{i+1}, B4 = Q_{i+1} - h/5 D_{i+1}, B5 = Q_{i+1}.
+  // U = {0^6, t_1^3, …, t_{N-2}^3, 1^6}. Blossoms: P = B0, B1, B2, B3 of segment 0; for each
+  // interior t_i the mixed point f_i(t_{i-1}, t_i³, t_{i+1}) = B1 - (h_{i-1}/h_i)(B2 - B1) of
+  // segment i, then B2, B3 of segment i; finally B4, B5 of the last segment (3N points).
+  auto bezier = [&](std::size_t i) {
+    const double h = t[i + 1] - t[i];
+    const double h2 = h * h / 20.0;
+    return std::array<Vec3, 6>{points[i],
+                               points[i] + (h / 5.0) * derivatives[i],
+                               points[i] + (2.0 * h / 5.0) * derivatives[i] + h2 * second_derivatives[i],
+                               points[i + 1] - (2.0 * h / 5.0) * derivatives[i + 1] + h2 * second_derivatives[i + 1],
+                               points[i + 1] - (h / 5.0) * derivatives[i + 1],
+                               points[i + 1]};
+  };
+  std::vector<double> U(6, 0.0);
+  std::vector<Vec3> P;
+  P.reserve(3 * N);
+  std::array<Vec3, 6> B = bezier(0);
+  P.insert(P.end(), B.begin(), B.begin() + 4);
+  for (std::size_t i = 1; i + 1 < N; ++i) {
+    B = bezier(i);
+    const double ratio = (t[i] - t[i - 1]) / (t[i + 1] - t[i]);
+    P.push_back(B[1] - ratio * (B[2] - B[1]));
+    P.push_back(B[2]);
+    P.push_back(B[3]);
+    U.insert(U.end(), 3, t[i]);
+  }
+  P.push_back(B[4]);
+  P.push_back(B[5]);
+  U.insert(U.end(), 6, 1.0);
+  return make_curve(KnotVector(std::move(U), kQuintic), std::move(P), dimension);
+}
+
+}  // namespace hula::nurbs
