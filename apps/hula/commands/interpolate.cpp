@@ -30,7 +30,7 @@ int run_interpolate(const InterpolateArgs& a) {
   if (!a.knots.empty()) in.parameters = parse_number_list(a.knots, "knots");
   in.start = parse_end_condition(a.start, "start");
   in.end = parse_end_condition(a.end, "end");
-  const nurbs::NurbsCurve curve = io::resolve(in);
+  const nurbs::NurbsCurve curve = io::resolve(in, "knots");
   if (a.keep_inputs)
     io::write_interpolated_file(a.output, in);
   else

@@ -163,10 +163,11 @@ CurveFile read_interpolated(const Json& doc) {
                         "; they mean the same thing: give one of them, or both equal",
                     {.field = "knots", .index = i});
   }
-  in.parameters = jp ? std::move(parameters) : std::move(knots);
+  const bool from_knots = jk && !jp;
+  in.parameters = from_knots ? std::move(knots) : std::move(parameters);
   if (const Json* s = detail::optional_member(doc, "start")) in.start = end_condition_from_json(*s, "start");
   if (const Json* e = detail::optional_member(doc, "end")) in.end = end_condition_from_json(*e, "end");
-  nurbs::NurbsCurve curve = resolve(in);
+  nurbs::NurbsCurve curve = resolve(in, from_knots ? "knots" : "parameters");
   return CurveFile{std::move(curve), CurveKind::Interpolated, std::move(in)};
 }
 
@@ -202,8 +203,20 @@ nurbs::InterpolationOptions InterpolationInputs::options() const {
   return o;
 }
 
-nurbs::NurbsCurve resolve(const InterpolationInputs& inputs) {
-  return nurbs::interpolate_cubic(inputs.points, inputs.options());
+nurbs::NurbsCurve resolve(const InterpolationInputs& inputs, std::string_view parameters_field) {
+  try {
+    return nurbs::interpolate_cubic(inputs.points, inputs.options());
+  } catch (const Error& e) {
+    if (e.where().field != "parameters" || parameters_field == "parameters") throw;
+    // Rename the member in the message and location so it names what the user wrote.
+    std::string message = e.message();
+    const std::string from = "parameters", to(parameters_field);
+    for (std::size_t at = message.find(from); at != std::string::npos; at = message.find(from, at + to.size()))
+      message.replace(at, from.size(), to);
+    ErrorWhere where = e.where();
+    where.field = to;
+    throw Error(e.code(), message, where);
+  }
 }
 
 CurveFile curve_from_json(const Json& document) {

@@ -64,9 +64,14 @@ struct InterpolationInputs {
 };
 
 /// Resolves interpolation inputs to the NURBS curve (interpolate_cubic).
+/// @param inputs the points, parameters and end conditions
+/// @param parameters_field the name under which the given parameters reached
+///   the user ("parameters", or "knots" when they came from a "knots" member or
+///   a --knots option): errors about them are reported under this name
 /// @throws hula::Error from interpolate_cubic (TooFewPoints, CoincidentPoints,
 ///   InvalidArgument for bad parameters, NonFiniteInput, ...)
-[[nodiscard]] nurbs::NurbsCurve resolve(const InterpolationInputs& inputs);
+[[nodiscard]] nurbs::NurbsCurve resolve(const InterpolationInputs& inputs,
+                                        std::string_view parameters_field = "parameters");
 
 /// A curve file after reading: the resolved curve and what the file held.
 struct CurveFile {
