@@ -1,0 +1,215 @@
+// SPDX-License-Identifier: MIT
+// Arc length by adaptive Gauss–Kronrod quadrature (the 7/15-point pair of
+// QUADPACK's qk15; Piessens et al. 1983) on every non-empty knot span, where
+// the speed |C'(t)| is smooth (analytic except where C' vanishes), and its
+// inverse by Newton's method on s(t) - s with a bisection safeguard.
+//
+// Error control: on [x0, x1] of width h the estimate |K15 - G7| must be at
+// most tolerance × L0 × h / (b - a), L0 being a first estimate of the length
+// on the requested interval, so the accepted pieces add up to at most
+// tolerance × L0. An estimate within 50 ulps of the piece's magnitude is
+// accepted as rounding noise. Bisection stops at kMaxDepth levels or after
+// kMaxEvaluations speed evaluations with Errc::NumericalFailure.
+#include "hula/nurbs/arc_length.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "hula/core/error.hpp"
+
+namespace hula::nurbs {
+
+namespace {
+
+// Kronrod nodes (non-negative half, decreasing); the odd indices are the Gauss 7-point nodes.
+constexpr std::array<double, 8> kXgk = {
+    0.991455371120812639206854697526329, 0.949107912342758524526189684047851, 0.864864423359769072789712788640926,
+    0.741531185599394439863864773280788, 0.586087235467691130294144845693013, 0.405845151377397166906606412076961,
+    0.207784955007898467600689403773245, 0.000000000000000000000000000000000};
+constexpr std::array<double, 8> kWgk = {
+    0.022935322010529224963732008058970, 0.063092092629978553290700663189204, 0.104790010322250183839876322541518,
+    0.140653259715525918745189590510238, 0.169004726639267902826583426598550, 0.190350578064785409913256402421014,
+    0.204432940075298892414161999234649, 0.209482141084727828012999174891714};
+// Gauss weights for the nodes kXgk[1], kXgk[3], kXgk[5], kXgk[7].
+constexpr std::array<double, 4> kWg = {0.129484966168869693270611432679082, 0.279705391489276667901467771423780,
+                                       0.381830050505118944950369775488975, 0.417959183673469387755102040816327};
+
+constexpr int kMaxDepth = 48;
+constexpr long kMaxEvaluations = 2'000'000;
+
+struct GkResult {
+  double kronrod;
+  double error;  // |K15 - G7|
+};
+
+// Integrates |C'| with adaptive bisection; allocation-free (recursion on the stack).
+class SpeedIntegrator {
+ public:
+  SpeedIntegrator(const NurbsCurve& curve, double tolerance)
+      : curve_(curve), tolerance_(tolerance), breaks_(curve.knots().breakpoints()) {}
+
+  double speed(double t) {
+    ++evaluations_;
+    std::array<Vec3, 2> d;
+    curve_.derivatives(t, 1, d);
+    return norm(d[1]);
+  }
+
+  GkResult gk15(double x0, double x1) {
+    const double c = 0.5 * (x0 + x1);
+    const double h = 0.5 * (x1 - x0);
+    const double fc = speed(c);
+    double k = fc * kWgk[7];
+    double g = fc * kWg[3];
+    for (std::size_t j = 0; j < 7; ++j) {
+      const double dx = h * kXgk[j];
+      const double f = speed(c - dx) + speed(c + dx);
+      k += kWgk[j] * f;
+      if (j % 2 == 1) g += kWg[j / 2] * f;
+    }
+    return {k * h, std::fabs((k - g) * h)};
+  }
+
+  // Adaptive integral over [x0, x1] with per-unit-width error budget `density`.
+  double adapt(double x0, double x1, const GkResult& est, double density, int depth) {
+    const double width = x1 - x0;
+    const double noise = 50.0 * std::numeric_limits<double>::epsilon() * std::fabs(est.kronrod);
+    if (est.error <= std::max(density * width, noise)) return est.kronrod;
+    const double mid = 0.5 * (x0 + x1);
+    if (depth >= kMaxDepth || evaluations_ > kMaxEvaluations || !(mid > x0 && mid < x1)) fail(x0, x1);
+    const GkResult left = gk15(x0, mid);
+    const GkResult right = gk15(mid, x1);
+    return adapt(x0, mid, left, density, depth + 1) + adapt(mid, x1, right, density, depth + 1);
+  }
+
+  // Length over [a, b] (inside the domain), integrating span by span.
+  double integrate(double a, double b) {
+    if (!(a < b)) return 0.0;
+    // First pass: one GK15 per span piece gives L0 for the error budget.
+    double l0 = 0.0;
+    pieces_.clear();
+    for (std::size_t s = 0; s + 1 < breaks_.size(); ++s) {
+      const double x0 = std::max(a, breaks_[s]);
+      const double x1 = std::min(b, breaks_[s + 1]);
+      if (!(x0 < x1)) continue;
+      pieces_.push_back({x0, x1, gk15(x0, x1)});
+      l0 += pieces_.back().est.kronrod;
+    }
+    const double density = tolerance_ * l0 / (b - a);
+    double total = 0.0;
+    for (const Piece& piece : pieces_) total += adapt(piece.x0, piece.x1, piece.est, density, 0);
+    return total;
+  }
+
+ private:
+  [[noreturn]] void fail(double x0, double x1) const {
+    throw Error(Errc::NumericalFailure,
+                "arc length: tolerance = " + format_number(tolerance_) + " not met on [" + format_number(x0) + ", " +
+                    format_number(x1) + "] within the recursion budget (" + std::to_string(evaluations_) +
+                    " evaluations)",
+                {.field = "tolerance"});
+  }
+
+  struct Piece {
+    double x0, x1;
+    GkResult est;
+  };
+  const NurbsCurve& curve_;
+  double tolerance_;
+  long evaluations_ = 0;
+  std::vector<double> breaks_;
+  std::vector<Piece> pieces_;
+};
+
+void check_parameter(const char* name, double t, const Interval& d) {
+  if (!std::isfinite(t))
+    throw Error(Errc::NonFiniteInput, std::string(name) + " = " + format_number(t) + " is not finite",
+                {.field = name});
+  if (t < d.start || t > d.end)
+    throw Error(Errc::OutOfDomain,
+                std::string(name) + " = " + format_number(t) + " is outside the curve domain [" +
+                    format_number(d.start) + ", " + format_number(d.end) + "]",
+                {.field = name});
+}
+
+}  // namespace
+
+void ArcLengthOptions::validate() const {
+  if (!(tolerance >= 1e-15 && tolerance <= 1e-2))
+    throw Error(Errc::InvalidOption, "options.tolerance = " + format_number(tolerance) + " must be in [1e-15, 1e-2]",
+                {.field = "tolerance"});
+}
+
+double arc_length(const NurbsCurve& curve, double a, double b, const ArcLengthOptions& options) {
+  options.validate();
+  const Interval d = curve.domain();
+  check_parameter("a", a, d);
+  check_parameter("b", b, d);
+  if (a > b)
+    throw Error(Errc::InvalidArgument, "a = " + format_number(a) + " is greater than b = " + format_number(b),
+                {.field = "a"});
+  SpeedIntegrator integrator(curve, options.tolerance);
+  return integrator.integrate(a, b);
+}
+
+double arc_length(const NurbsCurve& curve, const ArcLengthOptions& options) {
+  const Interval d = curve.domain();
+  return arc_length(curve, d.start, d.end, options);
+}
+
+double parameter_at_length(const NurbsCurve& curve, double s, const ArcLengthOptions& options) {
+  options.validate();
+  if (!std::isfinite(s))
+    throw Error(Errc::NonFiniteInput, "s = " + format_number(s) + " is not finite", {.field = "s"});
+  if (s < 0.0)
+    throw Error(Errc::OutOfDomain, "s = " + format_number(s) + " is negative; arc length runs from 0",
+                {.field = "s"});
+  SpeedIntegrator integrator(curve, options.tolerance);
+  const Interval d = curve.domain();
+  const std::vector<double> breaks = curve.knots().breakpoints();
+  // Cumulative length at each breakpoint brackets s in one span.
+  std::vector<double> cumulative(breaks.size(), 0.0);
+  for (std::size_t i = 1; i < breaks.size(); ++i)
+    cumulative[i] = cumulative[i - 1] + integrator.integrate(breaks[i - 1], breaks[i]);
+  const double total = cumulative.back();
+  if (s > total * (1.0 + options.tolerance))
+    throw Error(Errc::OutOfDomain,
+                "s = " + format_number(s) + " exceeds the curve length " + format_number(total) + " (tolerance " +
+                    format_number(options.tolerance) + ")",
+                {.field = "s"});
+  if (s >= total) return d.end;
+  if (s == 0.0) return d.start;
+  const auto it = std::upper_bound(cumulative.begin(), cumulative.end(), s);
+  const auto span = static_cast<std::size_t>(std::max<std::ptrdiff_t>(1, it - cumulative.begin())) - 1;
+  double lo = breaks[span];
+  double hi = breaks[std::min(span + 1, breaks.size() - 1)];
+  const double base = cumulative[span];
+  const double target = s - base;
+  const double span_length = cumulative[span + 1] - base;
+  if (!(span_length > 0.0)) return lo;
+  // Initial guess: linear in the span's length.
+  double t = lo + (hi - lo) * std::clamp(target / span_length, 0.0, 1.0);
+  const double goal = options.tolerance * std::max(total, std::numeric_limits<double>::min());
+  for (int iter = 0; iter < 100; ++iter) {
+    const double f = integrator.integrate(breaks[span], t) - target;
+    if (std::fabs(f) <= goal) return t;
+    if (f > 0.0)
+      hi = t;
+    else
+      lo = t;
+    const double speed = integrator.speed(t);
+    double next = speed > 0.0 ? t - f / speed : 0.5 * (lo + hi);
+    // Safeguard: Newton must stay strictly inside the bracket, else bisect.
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    if (next == t || !(hi > lo)) return t;
+    t = next;
+  }
+  throw Error(Errc::NumericalFailure, "parameter_at_length: no convergence for s = " + format_number(s),
+              {.field = "s"});
+}
+
+}  // namespace hula::nurbs
