@@ -8,7 +8,9 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 
+#include "hula/core/error.hpp"
 #include "hula/core/rng.hpp"
 #include "hula/io/json_curve.hpp"
 

@@ -75,6 +75,7 @@ TEST(PointsFileErrors, JsonErrorsNamePath) {
   HULA_EXPECT_ERROR(parse_points("[[0, 0], [1, 1, 1]]"), Errc::ParseError, "points[1] has 3 components");
   HULA_EXPECT_ERROR(parse_points("[[0, 0], 5]"), Errc::ParseError, "points[1] = 5 must be an array of 2 or 3");
   HULA_EXPECT_ERROR(parse_points("[[0, 0],"), Errc::ParseError, "not valid JSON at line 1");
+  HULA_EXPECT_ERROR(parse_points("[[0, 1e999]]"), Errc::NonFiniteInput, "1e999");
 }
 
 }  // namespace

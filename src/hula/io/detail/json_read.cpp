@@ -64,6 +64,13 @@ Json parse_json_text(std::string_view text, std::string_view what) {
                 std::string(what) + " is not valid JSON at line " + std::to_string(line) + ", column " +
                     std::to_string(column) + ": " + reason,
                 {.line = line, .column = column});
+  } catch (const Json::out_of_range& e) {
+    // nlohmann refuses literals that overflow a double (e.g. 1e999) before any path is known.
+    std::string reason = e.what();
+    if (const auto bracket = reason.find("] "); bracket != std::string::npos) reason = reason.substr(bracket + 2);
+    throw Error(Errc::NonFiniteInput, std::string(what) + " holds a number that is not a finite double: " + reason);
+  } catch (const Json::exception& e) {
+    throw Error(Errc::ParseError, std::string(what) + " cannot be read as JSON: " + e.what());
   }
 }
 
@@ -75,7 +82,7 @@ void type_error(const Json& value, const JsonPath& path, std::string_view expect
 double get_number(const Json& value, const JsonPath& path) {
   if (!value.is_number()) type_error(value, path, "a number");
   const double v = value.get<double>();
-  // JSON has no NaN or infinity, but a literal such as 1e999 overflows to infinity.
+  // JSON has no NaN or infinity and the parser rejects overflowing literals; kept for documents built in code.
   if (!std::isfinite(v))
     throw Error(Errc::NonFiniteInput, path.text + " = " + describe(value) + " is not a finite double", path.where);
   return v;

@@ -35,7 +35,8 @@ struct JsonPath {
 /// A short printable rendering of a JSON value for messages (at most ~60 characters).
 [[nodiscard]] std::string describe(const Json& value);
 
-/// Parses JSON text; syntax errors become Errc::ParseError with line and column.
+/// Parses JSON text; syntax errors become Errc::ParseError with line and column, a
+/// number literal that overflows a double (1e999) Errc::NonFiniteInput.
 /// @param what the kind of document for the message ("curve file")
 [[nodiscard]] Json parse_json_text(std::string_view text, std::string_view what);
 
