@@ -96,6 +96,9 @@ TEST(IoGolden, FormatSamples) {
   EXPECT_EQ(b.kind, CurveKind::Bezier);
   EXPECT_NEAR(b.curve.evaluate(0.5).x, 1.0, 1e-15);
   EXPECT_NEAR(b.curve.evaluate(0.5).y, 1.0, 1e-15);
+  // The parabola (2t, 4t(1 - t)) has length ∫₀² √(1 + u²) du = √5 + asinh(2) / 2.
+  const double parabola = std::sqrt(5.0) + std::asinh(2.0) / 2.0;
+  EXPECT_NEAR(nurbs::arc_length(b.curve), parabola, 1e-12 * parabola);
 
   const CurveFile s = read_curve_file(data("interpolated_thesis.json"));
   EXPECT_EQ(s.kind, CurveKind::Interpolated);

@@ -127,6 +127,7 @@ Planarity planarity(const nurbs::NurbsCurve& curve) {
   for (std::size_t c = 1; c < 3; ++c)
     if (std::fabs(n[c]) > std::fabs(n[k])) k = c;
   if (n[k] < 0) n = -n;
+  n += Vec3{0.0, 0.0, 0.0};  // turns -0.0 components into +0.0 for clean output
   out.max_deviation = deviation;
   out.planar = deviation <= out.tolerance;
   if (out.planar) out.normal = n;
@@ -198,6 +199,15 @@ Json analyse(const nurbs::NurbsCurve& curve) {
   tangents["start"] = vec_to_json(d0, dim);
   tangents["end"] = vec_to_json(d1, dim);
   o["end_derivatives"] = std::move(tangents);
+  // Unit tangents where |C'| is above rounding noise relative to the derivative's scale; null otherwise.
+  const auto unit = [&](const Vec3& d) {
+    const double scale = curve.model_size() / dom.length();
+    return norm(d) > 1e-12 * scale ? vec_to_json(normalized(d), dim) : Json(nullptr);
+  };
+  Json units = Json::object();
+  units["start"] = unit(d0);
+  units["end"] = unit(d1);
+  o["end_tangents"] = std::move(units);
   o["planarity"] = planarity_to_json(planarity(curve));
   return o;
 }

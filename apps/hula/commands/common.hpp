@@ -75,8 +75,10 @@ struct Planarity {
 [[nodiscard]] Json max_curvature_estimate(const nurbs::NurbsCurve& curve, int samples = 1000);
 
 /// The standard analysis of a curve printed by info and demo: degree, knots,
-/// control points, weights, domain, rational, dimension, length, end
-/// tangents, planarity.
+/// control points, weights, domain, rational, dimension, length (arc_length,
+/// relative tolerance 1e-12), end derivatives C'(t0), C'(t1) and unit end
+/// tangents (null where |C'| vanishes), planarity.
+/// @throws hula::Error(Errc::NumericalFailure) if the arc length does not converge
 [[nodiscard]] Json analyse(const nurbs::NurbsCurve& curve);
 
 /// A registered subcommand and the function that runs it after parsing

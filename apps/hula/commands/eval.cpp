@@ -52,8 +52,9 @@ Command add_eval(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("eval", "Evaluate a curve file: position and derivatives at parameters");
   sub->add_option("curve", args->curve, "Curve file (JSON)")->required();
   sub->add_option("--at", args->at, "Parameters t0,t1,... inside the domain")->required();
-  sub->add_option("--derivatives", args->derivatives, "Highest derivative order N >= 0 (default 0: position only)")
-      ->check(CLI::NonNegativeNumber);
+  sub->add_option("--derivatives", args->derivatives,
+                  "Highest derivative order N in [0, 1000] (default 0: position only)")
+      ->check(CLI::Range(0, 1000));
   sub->add_option("--side", args->side, "One-sided limit at knots: left | right (default right)")
       ->check(CLI::IsMember({"left", "right"}));
   auto* ex = sub->add_flag("--extrapolate", args->extrapolate, "Continue the end pieces outside the domain");
