@@ -43,7 +43,7 @@ TEST(PointsFile, CsvWithCommentsAndBlanks) {
   ASSERT_EQ(s.points.size(), 4u);
   EXPECT_EQ(s.points[1], (Vec3{40, 25, 0}));
   EXPECT_EQ(s.points[3], (Vec3{120, 0, 0}));
-  const PointSet t = parse_points("0,0\n1.5e1,2\n");
+  const PointSet t = parse_points("0,0\n1.5e1,+2\n");
   EXPECT_EQ(t.dimension, 2);
   EXPECT_EQ(t.points[1], (Vec3{15, 2, 0}));
 }

@@ -106,6 +106,8 @@ struct CurveFile {
 ///   2 and 3 components (names the index), an END or parameterisation name is
 ///   unknown, or "parameters" and "knots" are both given and differ
 /// @throws hula::Error(Errc::NonFiniteInput) if a number literal overflows a double
+/// @throws hula::Error(Errc::TooFewPoints / InvalidDegree) if a "bezier" file has fewer
+///   than 2 or more than kMaxDegree + 1 control points
 /// @throws hula::Error from the kernel (InvalidKnots, InvalidDegree, InvalidWeight, ...)
 ///   with its own field / index (e.g. field "knots", the index of the decreasing knot)
 [[nodiscard]] CurveFile curve_from_json(const Json& document);

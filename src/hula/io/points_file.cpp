@@ -65,12 +65,14 @@ PointSet parse_points_csv(std::string_view text) {
       const std::string at = "line " + std::to_string(line_no) + ", column " + std::to_string(b + 1);
       if (count == 3)
         throw Error(Errc::ParseError, at + ": more than 3 numbers on a line (a point is x, y or x, y, z)", where);
+      // from_chars takes no leading '+'; accept it as spreadsheets write it.
+      const std::string_view digits = field.size() > 1 && field[0] == '+' ? field.substr(1) : field;
       double v = 0.0;
-      const auto [ptr, ec] = std::from_chars(field.data(), field.data() + field.size(), v);
+      const auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
       if (field.empty()) throw Error(Errc::ParseError, at + ": empty field where a number is expected", where);
       if (ec == std::errc::result_out_of_range)
         throw Error(Errc::NonFiniteInput, at + ": " + quoted(field) + " is outside the range of a double", where);
-      if (ec != std::errc() || ptr != field.data() + field.size())
+      if (ec != std::errc() || ptr != digits.data() + digits.size())
         throw Error(Errc::ParseError, at + ": " + quoted(field) + " is not a number", where);
       if (!std::isfinite(v))
         throw Error(Errc::NonFiniteInput, at + ": " + quoted(field) + " is not a finite number", where);

@@ -3,7 +3,8 @@
 // formats, told apart by the first non-blank character ('[' means JSON):
 //
 //   JSON: an array of [x, y, z] or [x, y] arrays, e.g. [[0, 0], [40, 25], [80, -25]]
-//   CSV:  one point per line, 2 or 3 comma-separated numbers; spaces and tabs
+//   CSV:  one point per line, 2 or 3 comma-separated numbers (decimal or
+//         exponent notation, optional leading '+'; nan/inf refused); spaces and tabs
 //         around a number are ignored; blank lines and lines whose first
 //         non-blank character is '#' are skipped; CRLF line ends are accepted.
 //
