@@ -500,6 +500,29 @@ TEST(HermiteQuintic, MeetsPointsAndTwoDerivatives) {
   }
 }
 
+// checks: Lagrange and Hermite curves at 1e-200 and 1e200 scale are finite and pass through the points
+// (relative to the scale), derivatives scaling with the data.
+TEST(Hermite, ExtremeScales) {
+  const auto base = random_points(6, 606, 1.0);
+  const auto dbase = random_points(6, 607, 2.0);
+  const auto t = parameterise(base, Parameterisation::ChordLength);
+  for (double s : {1e-200, 1e200}) {
+    std::vector<Vec3> pts = base, der = dbase;
+    for (auto& p : pts) p *= s;
+    for (auto& d : der) d *= s;
+    const NurbsCurve h3 = hermite_cubic(pts, der);
+    const NurbsCurve h5 = hermite_quintic(pts, der, der);
+    const NurbsCurve lg = interpolate_lagrange(pts);
+    const auto tu = parameterise(pts, Parameterisation::Uniform);
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      EXPECT_LE(distance(h3.evaluate(t[i]), pts[i]), kRel * s * size_of(base)) << s;
+      EXPECT_LE(distance(h5.evaluate(t[i]), pts[i]), kRel * s * size_of(base)) << s;
+      EXPECT_LE(distance(lg.evaluate(tu[i]), pts[i]), kRel * s * size_of(base)) << s;
+      EXPECT_LE(distance(h3.derivatives(t[i], 1)[1], der[i]), 1e-11 * s * 2) << s;
+    }
+  }
+}
+
 // checks: Hermite errors: derivative count mismatch, non-finite derivative (index and coordinate), planar z.
 TEST(Hermite, ErrorsNameTheInput) {
   const auto pts = thesis_points();

@@ -11,6 +11,8 @@
 //   R_k = Q_k - N_{0,p}(t_k) Q_0 - N_{n,p}(t_k) Q_m,  R_i = Σ_{k=1}^{m-1} N_{i,p}(t_k) R_k,
 // NᵀN symmetric positive definite with bandwidth p (every t_k touches p + 1
 // consecutive basis functions), solved with hula::BandedMatrix in O(m p²).
+// When n = m (as many control points as points) the fit is an interpolation
+// and the knots are those of eq. 9.8 (averaging), see approximate().
 #include "hula/nurbs/approximate.hpp"
 
 #include <algorithm>
@@ -72,12 +74,24 @@ ApproximationResult approximate(std::span<const Vec3> points, const Approximatio
   const auto p = static_cast<std::size_t>(options.degree);
 
   std::vector<double> U(p + 1, 0.0);
-  const double d = static_cast<double>(m + 1) / static_cast<double>(n - p + 1);
-  for (std::size_t j = 1; j + p <= n; ++j) {
-    const double jd = static_cast<double>(j) * d;
-    const auto i = static_cast<std::size_t>(std::floor(jd));
-    const double alpha = jd - static_cast<double>(i);
-    U.push_back((1.0 - alpha) * t[i - 1] + alpha * t[i]);
+  if (n == m) {
+    // As many control points as points: an interpolation. Eq. 9.69 degenerates
+    // here (d is barely above 1, so a knot falls within a small fraction of a
+    // spacing of a data parameter and N is nearly singular); use the averaging
+    // of eq. 9.8, U_{j+p} = (1/p) Σ_{i=j}^{j+p-1} t_i, the interpolation knots.
+    for (std::size_t j = 1; j + p <= n; ++j) {
+      double sum = 0.0;
+      for (std::size_t i = j; i < j + p; ++i) sum += t[i];
+      U.push_back(sum / static_cast<double>(p));
+    }
+  } else {
+    const double d = static_cast<double>(m + 1) / static_cast<double>(n - p + 1);
+    for (std::size_t j = 1; j + p <= n; ++j) {
+      const double jd = static_cast<double>(j) * d;
+      const auto i = static_cast<std::size_t>(std::floor(jd));
+      const double alpha = jd - static_cast<double>(i);
+      U.push_back((1.0 - alpha) * t[i - 1] + alpha * t[i]);
+    }
   }
   U.insert(U.end(), p + 1, 1.0);
   const KnotVector kv(std::move(U), options.degree);

@@ -41,6 +41,14 @@ struct ApproximationResult {
 };
 
 /// Least-squares fit with fixed end points.
+/// Interior knots by averaging (The NURBS Book eq. 9.69); when control_points
+/// equals the number of points the fit is an interpolation and the knots are
+/// those of eq. 9.8 (eq. 9.69 is nearly singular there).
+/// @param points data points Q_0 … Q_m (m ≥ 1), finite
+/// @param options degree, number of control points, parameterisation, dimension
+/// @returns the curve (P_0 = Q_0, P_n = Q_m exactly), the data parameters and the maximum deviation
+/// @throws hula::Error(Errc::InvalidArgument) if dimension is 2 and a point has z ≠ 0 (names the index)
+/// @throws hula::Error(Errc::NumericalFailure) if the normal equations are singular to working precision
 /// @throws hula::Error(Errc::InvalidOption) if options are invalid or control_points > number of points
 /// @throws hula::Error(Errc::TooFewPoints / NonFiniteInput / CoincidentPoints) as parameterise
 [[nodiscard]] ApproximationResult approximate(std::span<const Vec3> points, const ApproximationOptions& options);

@@ -35,6 +35,14 @@ struct EndCondition {
     NotAKnot,  ///< C''' continuous at the second (last but one) data parameter
     Occt,      ///< C'(end) from the cubic through the 4 end points (Open CASCADE GeomAPI_Interpolate)
   };
+  // Small N (documented fallbacks, never an error): Bessel uses the Lagrange
+  // polynomial of degree min(2, N - 1) through the end points and Occt of
+  // degree min(3, N - 1), so with N = 2 both give the chord (the straight
+  // segment C(t) = Q0 + t (Q1 - Q0)) and Occt with N = 3 gives the parabola —
+  // exactly the degree-1 and degree-2 curves GeomAPI_Interpolate returns
+  // without tangents. NotAKnot with N = 2 (no interior knot) falls back to
+  // Bessel; with N = 3 at both ends (one interior knot for two conditions)
+  // both ends fall back to Bessel, which gives the parabola.
   Kind kind = Kind::Natural;
   /// dC/dt at the end for Kind::Clamped; ignored otherwise.
   Vec3 derivative{};
@@ -63,17 +71,27 @@ struct InterpolationOptions {
   /// model size, see resolution_for_size).
   Tolerance tolerance{};
 
+  /// Checks the options before any work.
   /// @throws hula::Error(Errc::InvalidOption) naming the bad field
-  /// (non-finite clamped derivative, dimension not 2/3, bad tolerance).
+  /// (non-finite clamped derivative, e.g. "start.derivative[1] = nan"; a clamped
+  /// derivative with z ≠ 0 when dimension = 2; dimension not 2/3; an unknown
+  /// enum value; bad tolerance).
   void validate() const;
 };
 
 /// Cumulative chord lengths L_0 = 0, L_i = Σ_{j<i} |P_{j+1} - P_j| (overflow-safe).
 /// The thesis's example (0,0,0), (40,25,0), (80,-25,0), (120,0,0) gives 0, 47.17, 111.20, 158.37.
+/// @param points any number of points (none gives an empty result)
+/// @returns one length per point, in model units
 /// @throws hula::Error(Errc::NonFiniteInput) naming the point and coordinate
 [[nodiscard]] std::vector<double> cumulative_chord_lengths(std::span<const Vec3> points);
 
 /// Data parameters in [0, 1] (first 0, last 1, strictly increasing).
+/// @param points N ≥ 2 finite points
+/// @param rule Uniform (i / (N - 1)), ChordLength (eq. 29) or Centripetal
+/// @param tolerance consecutive points whose distance is ≤
+///   resolution_for_size(tolerance, diagonal of the points' box) coincide
+/// @returns N parameters
 /// @throws hula::Error(Errc::TooFewPoints) if fewer than 2 points
 /// @throws hula::Error(Errc::NonFiniteInput) naming the point and coordinate
 /// @throws hula::Error(Errc::CoincidentPoints) naming the index pair when consecutive
@@ -85,6 +103,14 @@ struct InterpolationOptions {
 /// N = 2 gives the straight segment (or the cubic meeting clamped ends); N = 3
 /// with not-a-knot gives the parabola. The result is a clamped cubic NURBS on
 /// [0, 1] with simple interior knots at the data parameters.
+/// Method: knots {0,0,0,0, t_1 … t_{N-2}, 1,1,1,1}, N + 2 control points,
+/// P_1 … P_N from one banded system (start row, C(t_i) = Q_i rows, end row);
+/// not-a-knot is imposed as a C''' jump row, so t_1 and t_{N-2} stay knots.
+/// The Occt end reproduces GeomAPI_Interpolate without tangents (see EndCondition).
+/// @param points N ≥ 2 data points
+/// @param options parameters or rule, end conditions, dimension, tolerance
+/// @returns the interpolant, C(t_i) = Q_i
+/// @throws hula::Error(Errc::NumericalFailure) if the system is singular to working precision
 /// @throws hula::Error(Errc::TooFewPoints) if N < 2
 /// @throws hula::Error(Errc::NonFiniteInput) naming the point, parameter or end derivative
 /// @throws hula::Error(Errc::CoincidentPoints) as parameterise
@@ -97,6 +123,11 @@ struct InterpolationOptions {
 /// N ≥ 2 points, as a Bézier curve on [0, 1]. `parameters` as in
 /// InterpolationOptions (empty: uniform, the thesis's evenly spaced values).
 /// Ill-conditioned for large N (thesis 5.3.1); accepted up to kMaxDegree + 1 points.
+/// Control points by solving the Bernstein collocation system (dense, partial pivoting).
+/// @param points N finite points (z = 0 when dimension = 2)
+/// @param parameters empty or N strictly increasing finite values
+/// @param dimension 2 or 3 (else InvalidArgument)
+/// @returns a Bézier curve of degree N - 1 with C(t_i) = Q_i
 /// @throws as interpolate_cubic, and hula::Error(Errc::TooFewPoints / InvalidDegree)
 [[nodiscard]] NurbsCurve interpolate_lagrange(std::span<const Vec3> points, std::span<const double> parameters = {},
                                               int dimension = 3);
@@ -104,12 +135,25 @@ struct InterpolationOptions {
 /// Piecewise cubic Hermite (thesis 5.3.2, 7.5.2): C1 through points with the
 /// given first derivatives dC/dt (t ∈ [0, 1]); double interior knots.
 /// `parameters` empty: chord length.
+/// Segment i has Bézier points Q_i, Q_i + h/3 D_i, Q_{i+1} - h/3 D_{i+1}, Q_{i+1}
+/// (h = t_{i+1} - t_i); the B-spline keeps the inner ones as control points.
+/// @param points N ≥ 2 points; @param derivatives N vectors dC/dt
+/// @param parameters empty or N strictly increasing values (mapped to [0, 1];
+///   the derivatives are with respect to the mapped t)
+/// @param dimension 2 or 3
+/// @returns a cubic with knots {0^4, t_1^2 … t_{N-2}^2, 1^4} (2N control points)
 /// @throws as interpolate_cubic, and InvalidArgument if tangent count ≠ point count
+///   (NonFiniteInput / InvalidArgument name "derivatives[i]" for bad vectors)
 [[nodiscard]] NurbsCurve hermite_cubic(std::span<const Vec3> points, std::span<const Vec3> derivatives,
                                        std::span<const double> parameters = {}, int dimension = 3);
 
 /// Piecewise quintic Hermite: C2 through points with given first and second
 /// derivatives (dC/dt, d²C/dt², t ∈ [0, 1]); triple interior knots.
+/// Built from each segment's quintic Bézier points by blossoming.
+/// @param points N ≥ 2 points; @param derivatives, second_derivatives N vectors each
+/// @param parameters as hermite_cubic; @param dimension 2 or 3
+/// @returns a quintic with knots {0^6, t_1^3 … t_{N-2}^3, 1^6} (3N control points)
+/// @throws as hermite_cubic, naming "second_derivatives" for the second-derivative array
 [[nodiscard]] NurbsCurve hermite_quintic(std::span<const Vec3> points, std::span<const Vec3> derivatives,
                                          std::span<const Vec3> second_derivatives,
                                          std::span<const double> parameters = {}, int dimension = 3);
