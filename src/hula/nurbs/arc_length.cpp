@@ -26,14 +26,14 @@ namespace hula::nurbs {
 namespace {
 
 // Kronrod nodes (non-negative half, decreasing); the odd indices are the Gauss 7-point nodes.
-constexpr std::array<double, 8> kXgk = {
-    0.991455371120812639206854697526329, 0.949107912342758524526189684047851, 0.864864423359769072789712788640926,
-    0.741531185599394439863864773280788, 0.586087235467691130294144845693013, 0.405845151377397166906606412076961,
-    0.207784955007898467600689403773245, 0.000000000000000000000000000000000};
-constexpr std::array<double, 8> kWgk = {
-    0.022935322010529224963732008058970, 0.063092092629978553290700663189204, 0.104790010322250183839876322541518,
-    0.140653259715525918745189590510238, 0.169004726639267902826583426598550, 0.190350578064785409913256402421014,
-    0.204432940075298892414161999234649, 0.209482141084727828012999174891714};
+constexpr std::array<double, 8> kXgk = {0.991455371120812639206854697526329, 0.949107912342758524526189684047851,
+                                        0.864864423359769072789712788640926, 0.741531185599394439863864773280788,
+                                        0.586087235467691130294144845693013, 0.405845151377397166906606412076961,
+                                        0.207784955007898467600689403773245, 0.000000000000000000000000000000000};
+constexpr std::array<double, 8> kWgk = {0.022935322010529224963732008058970, 0.063092092629978553290700663189204,
+                                        0.104790010322250183839876322541518, 0.140653259715525918745189590510238,
+                                        0.169004726639267902826583426598550, 0.190350578064785409913256402421014,
+                                        0.204432940075298892414161999234649, 0.209482141084727828012999174891714};
 // Gauss weights for the nodes kXgk[1], kXgk[3], kXgk[5], kXgk[7].
 constexpr std::array<double, 4> kWg = {0.129484966168869693270611432679082, 0.279705391489276667901467771423780,
                                        0.381830050505118944950369775488975, 0.417959183673469387755102040816327};
@@ -127,8 +127,7 @@ class SpeedIntegrator {
 
 void check_parameter(const char* name, double t, const Interval& d) {
   if (!std::isfinite(t))
-    throw Error(Errc::NonFiniteInput, std::string(name) + " = " + format_number(t) + " is not finite",
-                {.field = name});
+    throw Error(Errc::NonFiniteInput, std::string(name) + " = " + format_number(t) + " is not finite", {.field = name});
   if (t < d.start || t > d.end)
     throw Error(Errc::OutOfDomain,
                 std::string(name) + " = " + format_number(t) + " is outside the curve domain [" +
@@ -166,8 +165,7 @@ double parameter_at_length(const NurbsCurve& curve, double s, const ArcLengthOpt
   if (!std::isfinite(s))
     throw Error(Errc::NonFiniteInput, "s = " + format_number(s) + " is not finite", {.field = "s"});
   if (s < 0.0)
-    throw Error(Errc::OutOfDomain, "s = " + format_number(s) + " is negative; arc length runs from 0",
-                {.field = "s"});
+    throw Error(Errc::OutOfDomain, "s = " + format_number(s) + " is negative; arc length runs from 0", {.field = "s"});
   SpeedIntegrator integrator(curve, options.tolerance);
   const Interval d = curve.domain();
   const std::vector<double> breaks = curve.knots().breakpoints();

@@ -32,19 +32,19 @@ void check_points(std::span<const Vec3> points) {
 void check_inputs(std::span<const Vec3> points, std::span<const double> weights, double t) {
   check_points(points);
   if (!weights.empty() && weights.size() != points.size())
-    throw Error(Errc::InvalidWeight,
-                std::to_string(weights.size()) + " weights given for " + std::to_string(points.size()) +
-                    " control points",
-                {.field = "weights"});
+    throw Error(
+        Errc::InvalidWeight,
+        std::to_string(weights.size()) + " weights given for " + std::to_string(points.size()) + " control points",
+        {.field = "weights"});
   for (std::size_t i = 0; i < weights.size(); ++i)
     if (!(std::isfinite(weights[i]) && weights[i] > 0.0))
       throw Error(Errc::InvalidWeight,
                   "weights[" + std::to_string(i) + "] = " + format_number(weights[i]) + " must be finite and > 0",
                   {.field = "weights", .index = i});
-  if (!std::isfinite(t)) throw Error(Errc::NonFiniteInput, "t = " + format_number(t) + " is not finite", {.field = "t"});
+  if (!std::isfinite(t))
+    throw Error(Errc::NonFiniteInput, "t = " + format_number(t) + " is not finite", {.field = "t"});
   if (t < 0.0 || t > 1.0)
-    throw Error(Errc::OutOfDomain, "t = " + format_number(t) + " is outside the Bézier domain [0, 1]",
-                {.field = "t"});
+    throw Error(Errc::OutOfDomain, "t = " + format_number(t) + " is outside the Bézier domain [0, 1]", {.field = "t"});
 }
 
 }  // namespace

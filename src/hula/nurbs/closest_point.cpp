@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,11 @@ namespace hula::nurbs {
 
 namespace {
 
+struct Candidate {
+  ClosestPointResult result;
+  bool converged = false;  // met a Newton convergence test (eqs. 6.4–6.5)
+};
+
 struct Search {
   const NurbsCurve& curve;
   const Vec3& target;
@@ -32,38 +38,61 @@ struct Search {
   double eps0;
   double eps1;
   double eps2;
+  double noise;  // rounding level of a computed distance
   int max_iterations;
-  ClosestPointResult best;
+  Candidate best;
 
-  void consider(double t, const Vec3& c, double dist) {
-    if (dist < best.distance) best = {t, c, dist};
+  // Near a minimum the distance is flat (it changes by O(δ²) for a foot moved
+  // by δ), so distances within rounding noise cannot rank candidates; a
+  // converged Newton foot then wins over a sample or an unconverged iterate.
+  void consider(const Candidate& c) {
+    const double d = c.result.distance;
+    const double b = best.result.distance;
+    if (d < b - noise || (d <= b + noise && c.converged && !best.converged)) best = c;
   }
 
-  // Newton from t0; allocation-free.
-  void newton(double t0) {
+  // Safeguarded Newton from t0 inside the bracket [lo, hi] (a sample
+  // interval where f changes sign); allocation-free. f = C'·D is < 0 where the distance falls and
+  // > 0 where it rises, so its sign shrinks the bracket; a Newton step that
+  // leaves the bracket or has f' ≤ 0 (C''·D can dominate |C'|² on strongly
+  // rational pieces) is replaced by bisection. Offers its final iterate
+  // (converged) or, after max_iterations, its best iterate (not converged).
+  void newton(double t0, double lo, double hi) {
     double t = t0;
     std::array<Vec3, 3> d;
+    Candidate local{{t0, curve.evaluate(t0), HUGE_VAL}, false};
+    bool newton_step = false;
     for (int it = 0; it < max_iterations; ++it) {
-      curve.derivatives(t, 2, d);
+      // The bracket lies in one span: at its upper end take that span's (left) derivative.
+      curve.derivatives(t, 2, d, {.side = t >= hi ? Side::Left : Side::Right});
       const Vec3 D = d[0] - target;
       const double dist = norm(D);
-      consider(t, d[0], dist);
-      if (dist <= eps0) return;  // eq. 6.4, first test
+      if (dist < local.result.distance) local.result = {t, d[0], dist};
+      if (dist <= eps0) return consider({{t, d[0], dist}, true});  // eq. 6.4, first test
       const double speed = norm(d[1]);
-      if (!(speed > 0.0)) return;  // C' = 0: stationary parameter, no Newton direction
       const double scale = max_abs(D);
       const Vec3 Ds = D / scale;
       const double f = dot(d[1], Ds);
-      if (std::fabs(f) <= eps2 * speed * norm(Ds)) return;  // eq. 6.4, zero cosine
+      if (speed > 0.0 && std::fabs(f) <= eps2 * speed * norm(Ds))
+        return consider({{t, d[0], dist}, true});  // eq. 6.4, zero cosine
+      if (f > 0.0)
+        hi = t;
+      else if (f < 0.0)
+        lo = t;
       const double df = dot(d[2], Ds) + speed * (speed / scale);
-      if (!(df > 0.0) || !std::isfinite(df)) return;  // not moving towards a minimum
-      const double next = std::clamp(t - f / df, domain.start, domain.end);
-      if (std::fabs(next - t) * speed <= eps1) {  // eq. 6.5
-        if (next != t) consider(next, curve.evaluate(next), distance(curve.evaluate(next), target));
-        return;
+      double next = df > 0.0 && std::isfinite(df) ? t - f / df : std::numeric_limits<double>::quiet_NaN();
+      const bool inside = next >= lo && next <= hi;
+      if (!inside) next = f > 0.0 ? 0.5 * (lo + t) : 0.5 * (t + hi);
+      // eq. 6.5 after a Newton step (the new point's error is O(step²)); a
+      // collapsed bracket ends bisection.
+      if ((inside && newton_step && std::fabs(next - t) * speed <= eps1) || !(hi > lo) || next == t) {
+        const Vec3 c = curve.evaluate(next);
+        return consider({{next, c, distance(c, target)}, true});
       }
+      newton_step = inside;
       t = next;
     }
+    consider(local);
   }
 };
 
@@ -93,34 +122,75 @@ ClosestPointResult closest_point(const NurbsCurve& curve, const Vec3& point, con
   const auto per_span = static_cast<std::size_t>(options.samples_per_span > 0 ? options.samples_per_span : 4 * (p + 1));
   const std::vector<double> breaks = curve.knots().breakpoints();
 
-  // Samples: per_span intervals on every span, plus the domain end.
-  std::vector<double> ts;
-  ts.reserve((breaks.size() - 1) * per_span + 1);
-  for (std::size_t s = 0; s + 1 < breaks.size(); ++s)
+  // Samples: per_span + 1 on every span, both ends included, with the
+  // derivative of that span (Side::Left at its end): at a C0 knot the sign of f
+  // must be read on each side separately. Breakpoints thus appear twice.
+  const std::size_t spans = breaks.size() - 1;
+  const std::size_t stride = per_span + 1;
+  std::vector<double> ts(spans * stride);
+  std::vector<Vec3> ders(2 * ts.size());
+  for (std::size_t s = 0; s < spans; ++s) {
+    double* t = ts.data() + s * stride;
     for (std::size_t j = 0; j < per_span; ++j)
-      ts.push_back(breaks[s] + (breaks[s + 1] - breaks[s]) * static_cast<double>(j) / static_cast<double>(per_span));
-  ts.push_back(dom.end);
+      t[j] = breaks[s] + (breaks[s + 1] - breaks[s]) * static_cast<double>(j) / static_cast<double>(per_span);
+    t[per_span] = breaks[s + 1];
+    curve.derivatives(std::span<const double>(t, per_span), 1,
+                      std::span<Vec3>(ders.data() + 2 * s * stride, 2 * per_span));
+    curve.derivatives(t[per_span], 1, std::span<Vec3>(ders.data() + 2 * (s * stride + per_span), 2),
+                      {.side = Side::Left});
+  }
+  // Distance and the sign of f = C'·(C - P), which goes from - to + across
+  // every local minimum of the distance.
   std::vector<Vec3> pts(ts.size());
-  curve.evaluate(ts, pts);
-  std::vector<double> dist(ts.size());
-  for (std::size_t i = 0; i < ts.size(); ++i) dist[i] = distance(pts[i], point);
+  std::vector<double> dist(ts.size()), fs(ts.size());
+  for (std::size_t i = 0; i < ts.size(); ++i) {
+    pts[i] = ders[2 * i];
+    const Vec3 D = pts[i] - point;
+    dist[i] = norm(D);
+    const double scale = max_abs(D);
+    fs[i] = scale > 0.0 ? dot(ders[2 * i + 1], D / scale) : 0.0;
+  }
 
+  const double size = curve.model_size();
+  const double magnitude = std::fmax(max_abs(point), curve.control_box().extent());
   Search search{curve,
                 point,
                 dom,
-                kRelativeResolution * curve.model_size(),
-                resolution_for_size(options.tolerance, curve.model_size()),
+                kRelativeResolution * size,
+                resolution_for_size(options.tolerance, size),
                 options.tolerance.angular,
+                16.0 * std::numeric_limits<double>::epsilon() * magnitude,
                 options.max_iterations,
-                {dom.start, pts.front(), dist.front()}};
-  for (std::size_t i = 0; i < ts.size(); ++i) search.consider(ts[i], pts[i], dist[i]);
-  // Newton from every sampled local minimum of the distance.
-  for (std::size_t i = 0; i < ts.size(); ++i) {
-    const bool left_ok = i == 0 || dist[i] <= dist[i - 1];
-    const bool right_ok = i + 1 == ts.size() || dist[i] <= dist[i + 1];
-    if (left_ok && right_ok) search.newton(ts[i]);
+                {{dom.start, pts.front(), dist.front()}, false}};
+  for (std::size_t i = 0; i < ts.size(); ++i) search.consider({{ts[i], pts[i], dist[i]}, false});
+  // Newton in every sample interval where f changes sign from - to + (a
+  // local minimum of the distance inside it), from the nearer end; and from
+  // every sample that is a local minimum of the distance, between its
+  // neighbours (this catches a minimum and a maximum inside one interval,
+  // where f has the same sign at both ends).
+  for (std::size_t i = 0; i + 1 < ts.size(); ++i)
+    if (ts[i] < ts[i + 1] && fs[i] < 0.0 && fs[i + 1] > 0.0)
+      search.newton(dist[i] <= dist[i + 1] ? ts[i] : ts[i + 1], ts[i], ts[i + 1]);
+  for (std::size_t i = 1; i + 1 < ts.size(); ++i)
+    if (dist[i] <= dist[i - 1] && dist[i] <= dist[i + 1] && ts[i - 1] < ts[i + 1])
+      search.newton(ts[i], ts[i - 1], ts[i + 1]);
+  // Narrow features (a hairpin passing near P between two samples) can hide
+  // a minimum from both tests above. On a sample interval of width h inside
+  // span s the distance is at least (d_i + d_{i+1} - M_s h) / 2, where M_s
+  // bounds the speed |C'| on the span (twice the largest sampled speed); every
+  // interval whose bound is below the best distance so far gets a Newton
+  // start from its left end.
+  for (std::size_t s = 0; s < spans; ++s) {
+    double max_speed = 0.0;
+    for (std::size_t j = 0; j <= per_span; ++j) max_speed = std::fmax(max_speed, norm(ders[2 * (s * stride + j) + 1]));
+    const double M = 2.0 * max_speed;
+    for (std::size_t j = 0; j < per_span; ++j) {
+      const std::size_t i = s * stride + j;
+      const double bound = 0.5 * (dist[i] + dist[i + 1] - M * (ts[i + 1] - ts[i]));
+      if (bound < search.best.result.distance) search.newton(ts[i], ts[i], ts[i + 1]);
+    }
   }
-  return search.best;
+  return search.best.result;
 }
 
 }  // namespace hula::nurbs

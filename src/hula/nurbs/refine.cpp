@@ -24,8 +24,7 @@ namespace {
 
 // Shared parameter checks for one knot value (field "u" or "knots[i]").
 void check_knot_value(double u, const Interval& d, const std::string& name, ErrorWhere where) {
-  if (!std::isfinite(u))
-    throw Error(Errc::NonFiniteInput, name + " = " + format_number(u) + " is not finite", where);
+  if (!std::isfinite(u)) throw Error(Errc::NonFiniteInput, name + " = " + format_number(u) + " is not finite", where);
   if (u < d.start || u > d.end)
     throw Error(Errc::OutOfDomain,
                 name + " = " + format_number(u) + " is outside the curve domain [" + format_number(d.start) + ", " +
@@ -109,8 +108,8 @@ NurbsCurve refine_knots(const NurbsCurve& curve, std::span<const double> X) {
   for (std::size_t j = 0; j < X.size();) {
     std::size_t e = j;
     while (e < X.size() && X[e] == X[j]) ++e;
-    check_multiplicity(X[j], kv.multiplicity(X[j]), static_cast<int>(e - j), p,
-                       "knots[" + std::to_string(j) + "]", {.field = "knots", .index = j});
+    check_multiplicity(X[j], kv.multiplicity(X[j]), static_cast<int>(e - j), p, "knots[" + std::to_string(j) + "]",
+                       {.field = "knots", .index = j});
     j = e;
   }
   if (X.empty()) return curve;

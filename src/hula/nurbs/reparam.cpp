@@ -72,9 +72,8 @@ SplitResult split(const NurbsCurve& curve, double t) {
     wl.assign(W.begin(), W.begin() + sf);
     wr.assign(W.begin() + sf - 1, W.end());
   }
-  return SplitResult{
-      NurbsCurve(p, std::move(left), {Q.begin(), Q.begin() + sf}, std::move(wl), curve.dimension()),
-      NurbsCurve(p, std::move(right), {Q.begin() + sf - 1, Q.end()}, std::move(wr), curve.dimension())};
+  return SplitResult{NurbsCurve(p, std::move(left), {Q.begin(), Q.begin() + sf}, std::move(wl), curve.dimension()),
+                     NurbsCurve(p, std::move(right), {Q.begin() + sf - 1, Q.end()}, std::move(wr), curve.dimension())};
 }
 
 }  // namespace hula::nurbs

@@ -21,8 +21,8 @@ using Hpoint = std::array<double, 4>;
 /// The curve with knots U and homogeneous points Pw; weights are kept only
 /// when `rational`. Throws hula::Error(Errc::NumericalFailure) if a weight came
 /// out ≤ 0 or non-finite (a computation broke down), naming `operation`.
-[[nodiscard]] NurbsCurve from_homogeneous(KnotVector knots, const std::vector<Hpoint>& Pw, bool rational,
-                                          int dimension, const char* operation);
+[[nodiscard]] NurbsCurve from_homogeneous(KnotVector knots, const std::vector<Hpoint>& Pw, bool rational, int dimension,
+                                          const char* operation);
 
 /// a * x + b * y, component-wise.
 [[nodiscard]] inline Hpoint combine(double a, const Hpoint& x, double b, const Hpoint& y) {
