@@ -15,32 +15,12 @@
 #include <numbers>
 #include <vector>
 
+#include "hula/testing/counting_allocator.hpp"
+#include "hula/testing/curve_generators.hpp"
 #include "hula/testing/expect_error.hpp"
-
-// Counting allocator for the allocation-free checks (STYLE.md: hot loops are
-// checked with a counting allocator, not with timing).
-namespace {
-std::atomic<long> g_allocations{0};
-}  // namespace
-
-void* operator new(std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace hula::nurbs {
 namespace {
-
-NurbsCurve circle(double R) {
-  const double w = std::sqrt(0.5);
-  return NurbsCurve(
-      2, {0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1},
-      {{R, 0, 0}, {R, R, 0}, {0, R, 0}, {-R, R, 0}, {-R, 0, 0}, {-R, -R, 0}, {0, -R, 0}, {R, -R, 0}, {R, 0, 0}},
-      {1, w, 1, w, 1, w, 1, w, 1}, 2);
-}
 
 const std::vector<Vec3> kBezier = {{0, 0, 0}, {1, 3, 0}, {4, -2, 0}, {5, 1, 0}};
 
@@ -65,7 +45,7 @@ TEST(ArcLength, StraightLine) {
 // checks: the four-arc rational quadratic circle has length 2πR and its first eighth πR/4 (closed form).
 TEST(ArcLength, RationalCircle) {
   for (double R : {1.0, 7.5, 1e-100, 1e100}) {
-    const NurbsCurve c = circle(R);
+    const NurbsCurve c = testing::rational_circle(R);
     EXPECT_NEAR(arc_length(c) / (2 * std::numbers::pi * R), 1.0, 1e-12) << R;
     EXPECT_NEAR(arc_length(c, 0.0, 0.125) / (std::numbers::pi * R / 4), 1.0, 1e-12) << R;
     EXPECT_NEAR(arc_length(c, 0.1, 0.6) + arc_length(c, 0.6, 1.0), arc_length(c, 0.1, 1.0), 1e-12 * R) << R;
@@ -88,7 +68,7 @@ TEST(ArcLength, CubicBezierAgainstBoost) {
 
 // checks: parameter_at_length inverts arc_length to 1e-10 (both directions) on the Bézier and the circle.
 TEST(ArcLength, ParameterAtLengthInverts) {
-  for (const NurbsCurve& c : {NurbsCurve(3, {0, 0, 0, 0, 1, 1, 1, 1}, kBezier), circle(3.0)}) {
+  for (const NurbsCurve& c : {NurbsCurve(3, {0, 0, 0, 0, 1, 1, 1, 1}, kBezier), testing::rational_circle(3.0)}) {
     const double L = arc_length(c);
     for (int i = 0; i <= 40; ++i) {
       const double s = L * i / 40.0;
@@ -98,12 +78,12 @@ TEST(ArcLength, ParameterAtLengthInverts) {
       EXPECT_NEAR(parameter_at_length(c, arc_length(c, 0.0, t2)), t2, 1e-10) << "t = " << t2;
     }
   }
-  EXPECT_NEAR(parameter_at_length(circle(2.0), std::numbers::pi / 2), 0.125, 1e-12);
+  EXPECT_NEAR(parameter_at_length(testing::rational_circle(2.0), std::numbers::pi / 2), 0.125, 1e-12);
 }
 
 // checks: documented errors carry their code and name the offending value.
 TEST(ArcLength, ErrorsNameTheInput) {
-  const NurbsCurve c = circle(1.0);
+  const NurbsCurve c = testing::rational_circle(1.0);
   HULA_EXPECT_ERROR(parameter_at_length(c, -0.5), Errc::OutOfDomain, "s = -0.5");
   HULA_EXPECT_ERROR(parameter_at_length(c, 7.0), Errc::OutOfDomain, "s = 7");
   HULA_EXPECT_ERROR(parameter_at_length(c, NAN), Errc::NonFiniteInput, "s = nan");
@@ -126,16 +106,16 @@ TEST(ArcLength, IntegrationLoopIsAllocationFree) {
                      {{0, 0, 0}, {1, 3, 0}, {4, -2, 1}, {5, 1, 0}, {7, 7, 2}, {8, 0, 0}});
   (void)arc_length(c);  // builds the evaluation cache
   const auto count = [&](double tolerance) {
-    const long before = g_allocations.load();
+    const long before = testing::allocation_count();
     (void)arc_length(c, {.tolerance = tolerance});
-    return g_allocations.load() - before;
+    return testing::allocation_count() - before;
   };
   EXPECT_GT(count(1e-6), 0);  // the counter is live
   EXPECT_EQ(count(1e-6), count(1e-14));
   const auto count_inverse = [&](double s) {
-    const long before = g_allocations.load();
+    const long before = testing::allocation_count();
     (void)parameter_at_length(c, s);
-    return g_allocations.load() - before;
+    return testing::allocation_count() - before;
   };
   EXPECT_EQ(count_inverse(1.0), count_inverse(7.0));
 }

@@ -15,20 +15,11 @@
 namespace hula::nurbs {
 namespace {
 
-NurbsCurve circle(double R, double angle) {
-  const double w = std::sqrt(0.5);
-  std::vector<Vec3> P = {{R, 0, 0},   {R, R, 0},  {0, R, 0},  {-R, R, 0}, {-R, 0, 0},
-                         {-R, -R, 0}, {0, -R, 0}, {R, -R, 0}, {R, 0, 0}};
-  for (Vec3& q : P)
-    q = {std::cos(angle) * q.x - std::sin(angle) * q.y, std::sin(angle) * q.x + std::cos(angle) * q.y, 0};
-  return NurbsCurve(2, {0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1}, P, {1, w, 1, w, 1, w, 1, w, 1}, 2);
-}
-
 // checks: a circle of radius R at the origin (axis-aligned and rotated by 0.3 rad) gives [-R, R]² × {0} (closed form).
 TEST(BoundingBox, CircleIsSquare) {
   for (double R : {1.0, 12.5}) {
     for (double angle : {0.0, 0.3}) {
-      const Box3 b = bounding_box(circle(R, angle));
+      const Box3 b = bounding_box(testing::rational_circle(R, angle));
       EXPECT_NEAR(b.min.x, -R, 1e-12 * R) << angle;
       EXPECT_NEAR(b.min.y, -R, 1e-12 * R) << angle;
       EXPECT_NEAR(b.max.x, R, 1e-12 * R) << angle;

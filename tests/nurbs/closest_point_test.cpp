@@ -14,38 +14,17 @@
 #include <numbers>
 #include <vector>
 
+#include "hula/testing/counting_allocator.hpp"
 #include "hula/testing/curve_generators.hpp"
 #include "hula/testing/expect_error.hpp"
-
-// Counting allocator for the allocation-free checks (STYLE.md: hot loops are
-// checked with a counting allocator, not with timing).
-namespace {
-std::atomic<long> g_allocations{0};
-}  // namespace
-
-void* operator new(std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace hula::nurbs {
 namespace {
 
-NurbsCurve circle(double R) {
-  const double w = std::sqrt(0.5);
-  return NurbsCurve(
-      2, {0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1},
-      {{R, 0, 0}, {R, R, 0}, {0, R, 0}, {-R, R, 0}, {-R, 0, 0}, {-R, -R, 0}, {0, -R, 0}, {R, -R, 0}, {R, 0, 0}},
-      {1, w, 1, w, 1, w, 1, w, 1}, 2);
-}
-
 // checks: points off a circle project radially: foot R(cos θ, sin θ), distance |r - R| (closed form).
 TEST(ClosestPoint, CircleProjectsRadially) {
   const double R = 4.0;
-  const NurbsCurve c = circle(R);
+  const NurbsCurve c = testing::rational_circle(R);
   for (double r : {0.3 * R, 0.999 * R, 1.5 * R, 100 * R}) {
     for (int k = 0; k < 37; ++k) {
       const double theta = 2 * std::numbers::pi * (k + 0.3) / 37.0;
@@ -60,7 +39,7 @@ TEST(ClosestPoint, CircleProjectsRadially) {
 
 // checks: a point far away (1e12 R) and one out of plane project onto the circle (closed form).
 TEST(ClosestPoint, FarAndOutOfPlanePoints) {
-  const NurbsCurve c = circle(1.0);
+  const NurbsCurve c = testing::rational_circle(1.0);
   const ClosestPointResult far = closest_point(c, {0, -1e12, 0});
   EXPECT_LT(distance(far.point, {0, -1, 0}), 1e-9);
   EXPECT_NEAR(far.distance, 1e12 - 1.0, 1e-3);
@@ -71,7 +50,7 @@ TEST(ClosestPoint, FarAndOutOfPlanePoints) {
 
 // checks: documented errors carry their code and name the offending field.
 TEST(ClosestPoint, ErrorsNameTheInput) {
-  const NurbsCurve c = circle(1.0);
+  const NurbsCurve c = testing::rational_circle(1.0);
   HULA_EXPECT_ERROR(closest_point(c, {0, NAN, 0}), Errc::NonFiniteInput, "point[1]");
   HULA_EXPECT_ERROR(closest_point(c, {0, 0, 0}, {.samples_per_span = 1}), Errc::InvalidOption,
                     "options.samples_per_span = 1");
@@ -83,12 +62,12 @@ TEST(ClosestPoint, ErrorsNameTheInput) {
 // checks: Newton iterations do not allocate: 1 and 50 iterations per start make the same number
 // of allocations (counting allocator).
 TEST(ClosestPoint, NewtonLoopIsAllocationFree) {
-  const NurbsCurve c = circle(2.0);
+  const NurbsCurve c = testing::rational_circle(2.0);
   (void)closest_point(c, {1, 1, 0});  // builds the evaluation cache
   const auto count = [&](int iterations) {
-    const long before = g_allocations.load();
+    const long before = testing::allocation_count();
     (void)closest_point(c, {3, 1, 0.5}, {.max_iterations = iterations});
-    return g_allocations.load() - before;
+    return testing::allocation_count() - before;
   };
   EXPECT_EQ(count(1), count(50));
 }

@@ -5,28 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <array>
-#include <atomic>
-#include <cstdlib>
-#include <new>
 #include <string>
 #include <vector>
 
 #include "hula/core/error.hpp"
 #include "hula/core/rng.hpp"
 #include "hula/nurbs/nurbs_curve.hpp"
+#include "hula/testing/counting_allocator.hpp"
 #include "hula/testing/curve_generators.hpp"
-
-namespace {
-std::atomic<long> g_allocations{0};
-}
-
-void* operator new(std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace hula::nurbs {
 namespace {
@@ -41,18 +27,18 @@ TEST(NurbsCurveAlloc, BatchEvaluationDoesNotAllocate) {
     for (auto& t : ts) t = rng.uniform(c.domain().start, c.domain().end);
     std::vector<Vec3> out(ts.size() * 4);
     c.derivatives(ts, 3, out);  // warm: builds the span cache
-    const long before = g_allocations.load();
+    const long before = testing::allocation_count();
     c.evaluate(ts, std::span<Vec3>(out.data(), ts.size()));
     c.derivatives(ts, 3, out);
     c.derivatives(ts, 3, out, {.side = Side::Left});
-    const long after = g_allocations.load();
+    const long after = testing::allocation_count();
     EXPECT_EQ(after - before, 0) << "degree " << c.degree();
     // Single-point calls into a caller's span allocate nothing either (the direct
     // path for degree > kCachedDegreeLimit keeps a per-thread workspace).
     std::array<Vec3, 4> one;
-    const long before_single = g_allocations.load();
+    const long before_single = testing::allocation_count();
     for (double t : ts) c.derivatives(t, 3, one);
-    EXPECT_EQ(g_allocations.load() - before_single, 0) << "degree " << c.degree();
+    EXPECT_EQ(testing::allocation_count() - before_single, 0) << "degree " << c.degree();
   }
 }
 

@@ -9,25 +9,16 @@
 #include <numbers>
 
 #include "hula/core/error.hpp"
+#include "hula/testing/curve_generators.hpp"
 #include "hula/testing/expect_error.hpp"
 
 namespace hula::nurbs {
 namespace {
 
-NurbsCurve quarter_circles(double R) {
-  // Full circle of radius R from four rational quadratic arcs (The NURBS Book ex. 7.2).
-  const double w = std::sqrt(0.5);
-  std::vector<Vec3> P = {{R, 0, 0},   {R, R, 0},  {0, R, 0},  {-R, R, 0}, {-R, 0, 0},
-                         {-R, -R, 0}, {0, -R, 0}, {R, -R, 0}, {R, 0, 0}};
-  std::vector<double> W = {1, w, 1, w, 1, w, 1, w, 1};
-  std::vector<double> U = {0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1};
-  return NurbsCurve(2, U, P, W, 2);
-}
-
 // checks: a rational quadratic circle has radius exactly R everywhere (closed form).
 TEST(NurbsCurve, RationalCircleHasConstantRadius) {
   for (double R : {1.0, 25.0, 1e-150, 1e150}) {
-    const NurbsCurve c = quarter_circles(R);
+    const NurbsCurve c = testing::rational_circle(R);
     for (int i = 0; i <= 1000; ++i) {
       const double t = i / 1000.0;
       EXPECT_NEAR(norm(c.evaluate(t)) / R, 1.0, 1e-14) << "R=" << R << " t=" << t;
@@ -38,7 +29,7 @@ TEST(NurbsCurve, RationalCircleHasConstantRadius) {
 // checks: curvature of the rational circle from derivatives |C'×C''|/|C'|^3 = 1/R (closed form).
 TEST(NurbsCurve, RationalCircleCurvatureFromDerivatives) {
   const double R = 3.0;
-  const NurbsCurve c = quarter_circles(R);
+  const NurbsCurve c = testing::rational_circle(R);
   for (int i = 0; i <= 200; ++i) {
     const double t = i / 200.0;
     const auto d = c.derivatives(t, 2);
@@ -62,7 +53,7 @@ TEST(NurbsCurve, ThesisDoubleKnotIsC1NotC2) {
 
 // checks: out-of-domain parameters are refused by name, clamped or extrapolated only when asked.
 TEST(NurbsCurve, DomainPolicy) {
-  const NurbsCurve c = quarter_circles(1.0);
+  const NurbsCurve c = testing::rational_circle(1.0);
   HULA_EXPECT_ERROR(c.evaluate(1.5), Errc::OutOfDomain, "1.5");
   HULA_EXPECT_ERROR(c.evaluate(std::nan("")), Errc::NonFiniteInput, "nan");
   EXPECT_EQ(c.evaluate(1.5, {.domain = Domain::Clamp}), c.evaluate(1.0));

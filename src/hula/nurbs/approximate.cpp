@@ -22,6 +22,7 @@
 #include "hula/core/banded.hpp"
 #include "hula/core/error.hpp"
 #include "hula/nurbs/basis.hpp"
+#include "hula/nurbs/detail/option_checks.hpp"
 
 namespace hula::nurbs {
 
@@ -35,20 +36,8 @@ void ApproximationOptions::validate() const {
                 "control_points = " + std::to_string(control_points) +
                     " must be at least degree + 1 = " + std::to_string(degree + 1),
                 {.field = "control_points"});
-  if (dimension != 2 && dimension != 3)
-    throw Error(Errc::InvalidOption, "dimension = " + std::to_string(dimension) + " must be 2 or 3",
-                {.field = "dimension"});
-  switch (parameterisation) {
-    case Parameterisation::Uniform:
-    case Parameterisation::ChordLength:
-    case Parameterisation::Centripetal:
-      break;
-    default:
-      throw Error(Errc::InvalidOption,
-                  "parameterisation = " + std::to_string(static_cast<int>(parameterisation)) +
-                      " is not a Parameterisation value",
-                  {.field = "parameterisation"});
-  }
+  detail::check_dimension_option(dimension);
+  detail::check_parameterisation_option(parameterisation);
 }
 
 ApproximationResult approximate(std::span<const Vec3> points, const ApproximationOptions& options) {

@@ -35,6 +35,7 @@
 #include "hula/core/banded.hpp"
 #include "hula/core/error.hpp"
 #include "hula/nurbs/basis.hpp"
+#include "hula/nurbs/detail/option_checks.hpp"
 
 namespace hula::nurbs {
 
@@ -306,20 +307,8 @@ NurbsCurve make_curve(KnotVector knots, std::vector<Vec3> control_points, int di
 }  // namespace
 
 void InterpolationOptions::validate() const {
-  if (dimension != 2 && dimension != 3)
-    throw Error(Errc::InvalidOption, "dimension = " + std::to_string(dimension) + " must be 2 or 3",
-                {.field = "dimension"});
-  switch (parameterisation) {
-    case Parameterisation::Uniform:
-    case Parameterisation::ChordLength:
-    case Parameterisation::Centripetal:
-      break;
-    default:
-      throw Error(Errc::InvalidOption,
-                  "parameterisation = " + std::to_string(static_cast<int>(parameterisation)) +
-                      " is not a Parameterisation value",
-                  {.field = "parameterisation"});
-  }
+  detail::check_dimension_option(dimension);
+  detail::check_parameterisation_option(parameterisation);
   tolerance.validate();
   const std::array<std::pair<const EndCondition*, const char*>, 2> ends{{{&start, "start"}, {&end, "end"}}};
   for (const auto& [ec, name] : ends) {

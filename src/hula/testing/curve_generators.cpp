@@ -66,6 +66,17 @@ double max_deviation(const nurbs::NurbsCurve& a, const nurbs::NurbsCurve& b, int
   return worst;
 }
 
+nurbs::NurbsCurve rational_circle(double R, double angle) {
+  const double w = std::sqrt(0.5);
+  std::vector<Vec3> P = {{R, 0, 0},   {R, R, 0},  {0, R, 0},  {-R, R, 0}, {-R, 0, 0},
+                         {-R, -R, 0}, {0, -R, 0}, {R, -R, 0}, {R, 0, 0}};
+  if (angle != 0.0)
+    for (Vec3& q : P)
+      q = {std::cos(angle) * q.x - std::sin(angle) * q.y, std::sin(angle) * q.x + std::cos(angle) * q.y, 0};
+  return nurbs::NurbsCurve(2, {0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1}, std::move(P),
+                           {1, w, 1, w, 1, w, 1, w, 1}, 2);
+}
+
 nurbs::NurbsCurve arbitrary_curve(int max_degree) {
   const auto seed = *rc::gen::arbitrary<std::uint64_t>();
   const int degree = *rc::gen::inRange(1, max_degree + 1);

@@ -28,6 +28,12 @@ struct RandomCurveSpec {
 /// and length in [0.1, 10].
 [[nodiscard]] nurbs::NurbsCurve random_curve(Rng& rng, const RandomCurveSpec& spec);
 
+/// Full circle of radius R about the origin in the XY plane, rotated by
+/// `angle` radians, as four rational quadratic arcs (The NURBS Book ex. 7.2:
+/// weights 1, √½, 1, …; knots 0, ¼, ½, ¾, 1 doubled). 2-D, domain [0, 1]:
+/// the closed-form fixture (|C(t)| = R, κ = 1/R, length 2πR).
+[[nodiscard]] nurbs::NurbsCurve rational_circle(double R, double angle = 0.0);
+
 /// max |a(t) - b(t)| over `samples` + 1 equally spaced parameters of a's
 /// domain (b is evaluated at the same parameters; its domain must contain them).
 [[nodiscard]] double max_deviation(const nurbs::NurbsCurve& a, const nurbs::NurbsCurve& b, int samples = 1000);
