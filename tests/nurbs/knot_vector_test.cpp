@@ -68,5 +68,17 @@ TEST(KnotVector, ReparameterisedMapsDomainExactly) {
   HULA_EXPECT_ERROR(kv.reparameterised({1.0, 1.0}), Errc::InvalidArgument, "target domain");
 }
 
+// checks: uniform clamped knots are evenly spaced and refuse impossible requests by name.
+TEST(KnotVector, UniformClamped) {
+  const KnotVector kv = KnotVector::uniform_clamped(6, 3, {0.0, 3.0});
+  EXPECT_EQ(kv.values().size(), 10u);
+  EXPECT_DOUBLE_EQ(kv[4], 1.0);
+  EXPECT_DOUBLE_EQ(kv[5], 2.0);
+  EXPECT_TRUE(kv.is_clamped());
+  HULA_EXPECT_ERROR(KnotVector::uniform_clamped(3, 3), Errc::InvalidDegree, "needs at least 4 control points");
+  HULA_EXPECT_ERROR(KnotVector::uniform_clamped(5, 0), Errc::InvalidDegree, "degree = 0");
+  HULA_EXPECT_ERROR(KnotVector::uniform_clamped(5, 2, {1.0, 1.0}), Errc::InvalidArgument, "domain [1, 1]");
+}
+
 }  // namespace
 }  // namespace hula::nurbs

@@ -93,5 +93,28 @@ TEST(NurbsCurve, ConstructionErrorsNameTheInput) {
   }
 }
 
+// checks: evaluator argument errors name the argument (negative order, output span too small).
+TEST(NurbsCurve, EvaluatorArgumentErrors) {
+  const NurbsCurve c = testing::rational_circle(1.0);
+  HULA_EXPECT_ERROR(c.derivatives(0.5, -1), Errc::InvalidArgument, "order = -1");
+  std::vector<Vec3> small(2);
+  HULA_EXPECT_ERROR(c.derivatives(0.5, 3, std::span<Vec3>(small)), Errc::InvalidArgument, "needs 4");
+  const std::vector<double> ts = {0.1, 0.2};
+  HULA_EXPECT_ERROR(c.derivatives(ts, 1, std::span<Vec3>(small)), Errc::InvalidArgument, "need 4");
+  HULA_EXPECT_ERROR(c.derivatives(ts, -2, std::span<Vec3>(small)), Errc::InvalidArgument, "order = -2");
+}
+
+// checks: derivatives of order above the degree are exactly zero for polynomial curves and
+// follow the quotient rule (non-zero) for rational ones.
+TEST(NurbsCurve, HighOrderDerivatives) {
+  const NurbsCurve line(1, {0, 0, 1, 1}, {{0, 0, 0}, {2, 4, 6}});
+  const auto d = line.derivatives(0.3, 5);
+  EXPECT_EQ(d[1], (Vec3{2, 4, 6}));
+  for (std::size_t k = 2; k <= 5; ++k) EXPECT_EQ(d[k], Vec3{});
+  // Circle x = cos θ with θ(t): fourth derivative is finite and non-zero.
+  const auto r = testing::rational_circle(1.0).derivatives(0.1, 6);
+  EXPECT_GT(norm(r[6]), 0.0);
+}
+
 }  // namespace
 }  // namespace hula::nurbs
