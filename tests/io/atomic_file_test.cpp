@@ -12,33 +12,14 @@
 
 #include "hula/core/error.hpp"
 #include "hula/testing/expect_error.hpp"
+#include "hula/testing/temp_dir.hpp"
 
 namespace hula::io {
 namespace {
 
 namespace fs = std::filesystem;
 
-// A fresh empty directory under the system temp directory, removed at the end.
-class TempDir {
- public:
-  TempDir() {
-    std::string pattern = (fs::temp_directory_path() / "hula-io-test-XXXXXX").string();
-    path_ = ::mkdtemp(pattern.data());
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-  [[nodiscard]] const fs::path& path() const { return path_; }
-  [[nodiscard]] std::size_t entries() const {
-    return static_cast<std::size_t>(std::distance(fs::directory_iterator(path_), fs::directory_iterator()));
-  }
-
- private:
-  fs::path path_;
-};
+using testing::TempDir;
 
 // checks: a new file gets the contents (binary-exact, with NUL and CRLF bytes).
 TEST(AtomicFile, WritesNewFile) {
@@ -46,7 +27,7 @@ TEST(AtomicFile, WritesNewFile) {
   const std::string contents("a\r\nb\0c", 6);
   write_file_atomically(dir.path() / "x.json", contents);
   EXPECT_EQ(read_text_file(dir.path() / "x.json"), contents);
-  EXPECT_EQ(dir.entries(), 1u);
+  EXPECT_EQ(dir.names().size(), 1u);
 }
 
 // checks: replacing keeps the permission bits of the old file and leaves no temporary behind.
@@ -60,7 +41,7 @@ TEST(AtomicFile, ReplacesExistingFileKeepingMode) {
   struct stat st {};
   ASSERT_EQ(::stat(p.c_str(), &st), 0);
   EXPECT_EQ(st.st_mode & 0777, 0640u);
-  EXPECT_EQ(dir.entries(), 1u);
+  EXPECT_EQ(dir.names().size(), 1u);
 }
 
 // checks: a missing directory is an IoError naming the path.
@@ -77,7 +58,7 @@ TEST(AtomicFile, FailedRenameRemovesTemporary) {
   fs::create_directory(target);
   write_file_atomically(target / "keep", "x");
   HULA_EXPECT_ERROR(write_file_atomically(target, "data"), Errc::IoError, target.string());
-  EXPECT_EQ(dir.entries(), 1u);  // only the directory itself
+  EXPECT_EQ(dir.names().size(), 1u);  // only the directory itself
   EXPECT_EQ(read_text_file(target / "keep"), "x");
 }
 

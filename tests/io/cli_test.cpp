@@ -14,6 +14,7 @@
 #include "hula/io/atomic_file.hpp"
 #include "hula/io/json_curve.hpp"
 #include "hula/testing/run_process.hpp"
+#include "hula/testing/temp_dir.hpp"
 
 #ifndef HULA_CLI_PATH
 #error "HULA_CLI_PATH must name the hula binary"
@@ -33,29 +34,7 @@ std::string data(const std::string& name) {
   return (fs::path(root ? root : "tests/data") / "io" / name).string();
 }
 
-class TempDir {
- public:
-  TempDir() {
-    std::string pattern = (fs::temp_directory_path() / "hula-cli-test-XXXXXX").string();
-    path_ = ::mkdtemp(pattern.data());
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-  [[nodiscard]] fs::path operator/(const std::string& name) const { return path_ / name; }
-  [[nodiscard]] std::vector<std::string> names() const {
-    std::vector<std::string> out;
-    for (const auto& e : fs::directory_iterator(path_)) out.push_back(e.path().filename().string());
-    std::sort(out.begin(), out.end());
-    return out;
-  }
-
- private:
-  fs::path path_;
-};
+using testing::TempDir;
 
 // Parses stderr as the error JSON and checks its code.
 json expect_error_json(const ProcessResult& r, const std::string& code) {
