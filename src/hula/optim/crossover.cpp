@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: MIT
+#include "hula/optim/crossover.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hula::optim {
+namespace {
+// Inverse CDF of the spread factor truncated so the child stays inside the
+// bound on its side: alpha = 2 - beta_bound^-(eta+1) is the mass allowed.
+double beta_q(double u, double beta_bound, double eta) noexcept {
+  const double e1 = eta + 1.0;
+  const double alpha = 2.0 - std::pow(beta_bound, -e1);
+  if (u <= 1.0 / alpha) return std::pow(u * alpha, 1.0 / e1);
+  return std::pow(1.0 / (2.0 - u * alpha), 1.0 / e1);
+}
+}  // namespace
+
+void sbx_crossover(std::span<const double> parent1, std::span<const double> parent2, std::span<const double> lower,
+                   std::span<const double> upper, std::span<double> child1, std::span<double> child2,
+                   const SbxSettings& settings, Rng& rng) noexcept {
+  const std::size_t d = parent1.size();
+  for (std::size_t i = 0; i < d; ++i) {
+    const double p1 = parent1[i];
+    const double p2 = parent2[i];
+    if (rng.uniform() >= settings.variable_probability || std::fabs(p1 - p2) <= 1e-14) {
+      child1[i] = p1;
+      child2[i] = p2;
+      continue;
+    }
+    const double y1 = std::min(p1, p2);
+    const double y2 = std::max(p1, p2);
+    const double yl = lower[i];
+    const double yu = upper[i];
+    const double dy = y2 - y1;
+    const double u = rng.uniform();
+    // Step 1: child towards the lower bound, spread limited by y1 - yl.
+    double c1 = 0.5 * ((y1 + y2) - beta_q(u, 1.0 + 2.0 * (y1 - yl) / dy, settings.eta) * dy);
+    // Step 2: child towards the upper bound, spread limited by yu - y2.
+    double c2 = 0.5 * ((y1 + y2) + beta_q(u, 1.0 + 2.0 * (yu - y2) / dy, settings.eta) * dy);
+    c1 = std::clamp(c1, yl, yu);
+    c2 = std::clamp(c2, yl, yu);
+    // Step 3: children are exchanged with probability 0.5 so neither parent
+    // systematically receives the lower child.
+    if (rng.uniform() < 0.5) std::swap(c1, c2);
+    child1[i] = c1;
+    child2[i] = c2;
+  }
+}
+
+std::size_t single_point_crossover(std::span<const std::uint8_t> parent1, std::span<const std::uint8_t> parent2,
+                                   std::span<std::uint8_t> child1, std::span<std::uint8_t> child2, Rng& rng) noexcept {
+  const std::size_t n = parent1.size();
+  const std::size_t cut = n > 1 ? 1 + static_cast<std::size_t>(rng.below(n - 1)) : n;
+  for (std::size_t i = 0; i < n; ++i) {
+    child1[i] = i < cut ? parent1[i] : parent2[i];
+    child2[i] = i < cut ? parent2[i] : parent1[i];
+  }
+  return cut;
+}
+
+std::size_t uniform_crossover(std::span<const std::uint8_t> parent1, std::span<const std::uint8_t> parent2,
+                              std::span<std::uint8_t> child1, std::span<std::uint8_t> child2, Rng& rng) noexcept {
+  const std::size_t n = parent1.size();
+  std::size_t exchanged = 0;
+  std::uint64_t word = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i % 64 == 0) word = rng();  // one random bit per position
+    const bool swap = ((word >> (i % 64)) & 1U) != 0;
+    exchanged += swap ? 1 : 0;
+    child1[i] = swap ? parent2[i] : parent1[i];
+    child2[i] = swap ? parent1[i] : parent2[i];
+  }
+  return exchanged;
+}
+
+}  // namespace hula::optim
