@@ -4,13 +4,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "hula/optim/detail/power.hpp"
+
 namespace hula::optim {
 namespace {
 // Inverse CDF of the spread factor truncated so the child stays inside the
 // bound on its side: alpha = 2 - beta_bound^-(eta+1) is the mass allowed.
-double beta_q(double u, double beta_bound, double eta) noexcept {
-  const double e1 = eta + 1.0;
-  const double alpha = 2.0 - std::pow(beta_bound, -e1);
+double alpha_of(double beta_bound, double e1) noexcept { return 2.0 - 1.0 / detail::power(beta_bound, e1); }
+double beta_q(double u, double alpha, double e1) noexcept {
   if (u <= 1.0 / alpha) return std::pow(u * alpha, 1.0 / e1);
   return std::pow(1.0 / (2.0 - u * alpha), 1.0 / e1);
 }
@@ -34,10 +35,17 @@ void sbx_crossover(std::span<const double> parent1, std::span<const double> pare
     const double yu = upper[i];
     const double dy = y2 - y1;
     const double u = rng.uniform();
+    const double e1 = settings.eta + 1.0;
     // Step 1: child towards the lower bound, spread limited by y1 - yl.
-    double c1 = 0.5 * ((y1 + y2) - beta_q(u, 1.0 + 2.0 * (y1 - yl) / dy, settings.eta) * dy);
-    // Step 2: child towards the upper bound, spread limited by yu - y2.
-    double c2 = 0.5 * ((y1 + y2) + beta_q(u, 1.0 + 2.0 * (yu - y2) / dy, settings.eta) * dy);
+    const double alpha1 = alpha_of(1.0 + 2.0 * (y1 - yl) / dy, e1);
+    const double bq1 = beta_q(u, alpha1, e1);
+    // Step 2: child towards the upper bound, spread limited by yu - y2. Far
+    // from both bounds the two truncations agree (alpha = 2 to the last
+    // bit), and the costly root is shared.
+    const double alpha2 = alpha_of(1.0 + 2.0 * (yu - y2) / dy, e1);
+    const double bq2 = alpha2 == alpha1 ? bq1 : beta_q(u, alpha2, e1);
+    double c1 = 0.5 * ((y1 + y2) - bq1 * dy);
+    double c2 = 0.5 * ((y1 + y2) + bq2 * dy);
     c1 = std::clamp(c1, yl, yu);
     c2 = std::clamp(c2, yl, yu);
     // Step 3: children are exchanged with probability 0.5 so neither parent

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "hula/optim/detail/power.hpp"
 #include "hula/optim/selection.hpp"
 
 namespace hula::optim {
@@ -25,10 +26,10 @@ std::size_t polynomial_mutation(std::span<double> x, std::span<const double> low
     double deltaq = 0.0;
     if (r < 0.5) {
       // Move down; the (1 - delta1)^(eta+1) term truncates the step at yl.
-      const double val = 2.0 * r + (1.0 - 2.0 * r) * std::pow(1.0 - delta1, eta + 1.0);
+      const double val = 2.0 * r + (1.0 - 2.0 * r) * detail::power(1.0 - delta1, eta + 1.0);
       deltaq = std::pow(val, power) - 1.0;
     } else {
-      const double val = 2.0 * (1.0 - r) + 2.0 * (r - 0.5) * std::pow(1.0 - delta2, eta + 1.0);
+      const double val = 2.0 * (1.0 - r) + 2.0 * (r - 0.5) * detail::power(1.0 - delta2, eta + 1.0);
       deltaq = 1.0 - std::pow(val, power);
     }
     x[i] = std::clamp(y + deltaq * (yu - yl), yl, yu);
