@@ -86,6 +86,9 @@ bool constrained_dominates(std::span<const double> a, double violation_a, std::s
 std::span<const std::size_t> NonDominatedSorter::sort(std::span<const double> objectives, std::size_t m,
                                                       std::span<const double> violation) {
   const std::size_t n = m ? objectives.size() / m : 0;
+  // Reserve every buffer for n points so that later calls of the same size
+  // never allocate (NSGA-II sorts 2N points every generation).
+  for (auto* buffer : {&order_, &next_, &current_, &last_, &start_, &next_front_, &count_}) buffer->reserve(n + 1);
   rank_.assign(n, 0);
   order_.clear();    // feasible
   next_.clear();     // infeasible
@@ -169,7 +172,7 @@ std::span<const std::size_t> NonDominatedSorter::sort(std::span<const double> ob
       for (std::size_t a = 0; a < nf; ++a) {
         if (count_[a] == 0) cur.push_back(a);
       }
-      std::vector<std::size_t> nxt;
+      std::vector<std::size_t>& nxt = next_front_;
       while (!cur.empty()) {
         nxt.clear();
         for (const std::size_t a : cur) {

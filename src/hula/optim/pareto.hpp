@@ -40,7 +40,7 @@ class NonDominatedSorter {
   [[nodiscard]] std::size_t fronts() const noexcept { return fronts_; }
 
  private:
-  std::vector<std::size_t> rank_, order_, dominated_, count_, start_, current_, next_, last_;
+  std::vector<std::size_t> rank_, order_, dominated_, count_, start_, current_, next_, last_, next_front_;
   std::size_t fronts_ = 0;
 };
 
