@@ -210,6 +210,9 @@ TEST(OptimGaOptions, ValidateNamesFieldAndValue) {
   o = {};
   o.run.stop.stagnation_tolerance = -1;
   HULA_EXPECT_ERROR(o.validate(), Errc::InvalidOption, "stop.stagnation_tolerance = -1");
+  o = {};
+  o.run.stop.max_evaluations = 50;
+  HULA_EXPECT_ERROR(o.validate(), Errc::InvalidOption, "stop.max_evaluations = 50 is below population = 100");
 
   BinaryGaOptions b;
   b.population = 3;

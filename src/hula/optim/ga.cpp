@@ -77,6 +77,7 @@ void RealGaOptions::validate() const {
   detail::check_eta(mutation_eta, "mutation_eta");
   if (survival == Survival::Generational) check_elites(elites, population);
   run.validate();
+  detail::check_budget(run.stop, population);
 }
 
 void BinaryGaOptions::validate() const {
@@ -102,6 +103,7 @@ void BinaryGaOptions::validate() const {
   }
   check_elites(elites, population);
   run.validate();
+  detail::check_budget(run.stop, population);
 }
 
 GaResult solve_real_ga(const Problem& problem, const RealGaOptions& options) {

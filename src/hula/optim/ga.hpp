@@ -59,7 +59,8 @@ struct RealGaOptions {
   /// @throws hula::Error(Errc::InvalidOption) before any work, naming the
   ///   field and its value: population 0 or odd, tournament_size 0 or >
   ///   population, a probability outside [0, 1] or NaN, a negative or
-  ///   non-finite eta, elites >= population, or invalid run settings.
+  ///   non-finite eta, elites >= population, stop.max_evaluations set below
+  ///   population, or invalid run settings.
   void validate() const;
 };
 
@@ -101,7 +102,8 @@ struct BinaryGaOptions {
   /// @throws hula::Error(Errc::InvalidOption) before any work, naming the
   ///   field and its value: population 0 or odd, a probability outside
   ///   [0, 1], a level > 9, a boost power <= 0 or not finite, tournament_size
-  ///   0 or > population, elites >= population, or invalid run settings.
+  ///   0 or > population, elites >= population, stop.max_evaluations set
+  ///   below population, or invalid run settings.
   void validate() const;
 };
 

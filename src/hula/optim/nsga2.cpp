@@ -54,6 +54,7 @@ void Nsga2Options::validate() const {
   detail::check_eta(crossover_eta, "crossover_eta");
   detail::check_eta(mutation_eta, "mutation_eta");
   run.validate();
+  detail::check_budget(run.stop, population);
 }
 
 Nsga2Result solve_nsga2(const Problem& problem, const Nsga2Options& options) {

@@ -43,7 +43,8 @@ struct Nsga2Options {
 
   /// @throws hula::Error(Errc::InvalidOption) before any work, naming the
   ///   field and its value: population < 4 or odd, a probability outside [0, 1],
-  ///   a negative or non-finite eta, or invalid run settings.
+  ///   a negative or non-finite eta, stop.max_evaluations set below
+  ///   population, or invalid run settings.
   void validate() const;
 };
 

@@ -181,4 +181,13 @@ void check_population(std::size_t value, std::size_t minimum) {
   }
 }
 
+void check_budget(const StopCriteria& stop, std::size_t population) {
+  if (stop.max_evaluations > 0 && stop.max_evaluations < population) {
+    throw Error(Errc::InvalidOption,
+                "stop.max_evaluations = " + std::to_string(stop.max_evaluations) + " is below population = " +
+                    std::to_string(population) + ": the initial population alone would exceed it",
+                {.field = "stop.max_evaluations"});
+  }
+}
+
 }  // namespace hula::optim::detail

@@ -111,5 +111,7 @@ void check_probability(double value, const char* field);
 void check_eta(double value, const char* field);
 /// Checks that population is even and >= minimum.
 void check_population(std::size_t value, std::size_t minimum);
+/// Checks that an evaluation budget, if set, covers the initial population.
+void check_budget(const StopCriteria& stop, std::size_t population);
 
 }  // namespace hula::optim::detail
