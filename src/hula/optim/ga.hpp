@@ -117,6 +117,7 @@ struct GaResult {
 
 /// Runs the real-coded GA on a single-objective problem.
 /// @param problem a problem with objectives == 1.
+/// @param options operators, survival and run settings.
 /// @returns the best solution and the run report.
 /// @throws hula::Error(Errc::InvalidOption) if the problem or the options are
 ///   invalid or the problem has several objectives (before any evaluation).
@@ -128,17 +129,26 @@ struct GaResult {
 
 /// Runs the binary-coded GA of appendix 2 on a single-objective problem whose
 /// variables all have a precision.
+/// @param problem a problem with objectives == 1 and every precision > 0.
+/// @param options selection, crossover, mutation, boosting and run settings.
+/// @returns the best solution (decoded variables) and the run report.
 /// @throws hula::Error(Errc::InvalidOption) as solve_real_ga, and if a
 ///   variable has precision 0 or needs more than 52 bits.
 /// @throws hula::Error(Errc::NumericalFailure) if no evaluation returned finite values.
 [[nodiscard]] GaResult solve_binary_ga(const Problem& problem, const BinaryGaOptions& options = {});
 
-/// The fitness of eq. 32-33: (1 / (1 + e))^power, where e >= 0 is the
-/// (shifted) evaluation. Returns 0 for NaN or infinite e.
+/// The fitness of eq. 32-33: (1 / (1 + e))^power.
+/// @param evaluation e >= 0, the (shifted) penalised objective.
+/// @param power the boosting exponent n > 0.
+/// @returns a value in (0, 1]; 0 for NaN or infinite e.
 [[nodiscard]] double boosted_fitness(double evaluation, double power) noexcept;
 
 /// The boosting power at generation g of G (eq. 33 with the linear rise of
-/// appendix 6.2): start + (end - start) g / G; start when G == 0.
+/// appendix 6.2).
+/// @param start, end powers at generation 0 and G.
+/// @param generation g, 0..G.
+/// @param generations G.
+/// @returns start + (end - start) g / G; start when G == 0.
 [[nodiscard]] double boost_power(double start, double end, std::size_t generation, std::size_t generations) noexcept;
 
 }  // namespace hula::optim

@@ -60,6 +60,8 @@ struct Nsga2Result {
 
 /// Runs NSGA-II.
 /// @param problem a problem with one or more objectives.
+/// @param options coding, operators and run settings.
+/// @returns the final first front, the final population and the run report.
 /// @throws hula::Error(Errc::InvalidOption) if the problem or options are invalid (before any evaluation).
 /// @throws hula::Error(Errc::NumericalFailure) if no evaluation returned finite values.
 /// Complexity per generation: population evaluations plus O(n log n) (2

@@ -61,6 +61,9 @@ struct PagmoResult {
 /// Solves a Flexo problem with a pagmo2 algorithm. Failed evaluations (throw
 /// or NaN) are given the worst representable value so pagmo ranks them last,
 /// and are counted in the report.
+/// @param problem a problem without constraints (pagmo's algorithms here do not take them).
+/// @param options algorithm, population, generations, seed (pagmo takes 32 bits of it).
+/// @returns pagmo's champion (one objective) or first front (several) and a report.
 /// @throws hula::Error(Errc::InvalidOption) if the problem or options are
 ///   invalid, the algorithm cannot handle the problem (objective count,
 ///   constraints), or pagmo refuses the settings (its message is included).

@@ -63,12 +63,15 @@ struct GenerationStatistics {
 };
 
 /// Statistics of objective 0 in one generation.
+/// @param generation a logged generation.
+/// @returns best (feasible), mean and spread of the successful evaluations.
 [[nodiscard]] GenerationStatistics statistics(const GenerationLog& generation) noexcept;
 
 /// A whole run's log, collected from the callback.
 class RunLog {
  public:
   /// Appends a copy of one generation.
+  /// @param generation the generation to copy.
   void append(const GenerationLog& generation) { generations_.push_back(generation); }
   /// A callback that appends to this log; the log must outlive the run.
   [[nodiscard]] GenerationCallback collector() {

@@ -34,6 +34,7 @@ class RouletteWheel {
   /// @param fitness one value per individual, at least one.
   void reset(std::span<const double> fitness);
   /// Spins the wheel once.
+  /// @param rng the stream to draw from.
   /// @returns an index in [0, size) with probability fitness[i] / sum(fitness).
   /// Complexity: O(log n).
   [[nodiscard]] std::size_t spin(Rng& rng) const noexcept;
@@ -48,6 +49,7 @@ class RouletteWheel {
 /// and returns the best according to `better`.
 /// @param population number of individuals, > 0.
 /// @param size tournament size, >= 1.
+/// @param rng the stream to draw from.
 /// @param better better(a, b) is true when individual a beats b.
 /// @returns the winner's index.
 template <class Better>

@@ -70,7 +70,11 @@ struct SweepResult {
 };
 
 /// Evaluates the problem on a regular grid over one or two variables (appendix 6.1's fitness map).
+/// @param problem the problem; variables not swept stay at options.nominal.
+/// @param options axes, objective, fitness power, threads.
+/// @returns the sampled values and the objective, fitness and violation maps.
 /// @throws hula::Error(Errc::InvalidOption) if the problem or options are invalid.
+/// Complexity: x.steps x y.steps evaluations in one batch.
 [[nodiscard]] SweepResult sweep(const Problem& problem, const SweepOptions& options);
 
 /// A copy of the problem whose bounds are shrunk by `shrink` around `centre`
@@ -95,6 +99,11 @@ struct RecentredRunResult {
 /// Runs the real-coded GA, then re-runs it `rounds` times with bounds
 /// re-centred on the best so far and shrunk by `shrink` each time (seeds
 /// seed, seed+1, ...).
+/// @param problem a single-objective problem.
+/// @param options GA options of every round.
+/// @param rounds re-runs after the first run.
+/// @param shrink width factor per round, in (0, 1].
+/// @returns the best over all rounds and each round's best and report.
 /// @throws hula::Error(Errc::InvalidOption) as solve_real_ga and recentred.
 [[nodiscard]] RecentredRunResult rerun_recentred(const Problem& problem, const RealGaOptions& options,
                                                  std::size_t rounds, double shrink);
@@ -109,6 +118,7 @@ struct ConvergenceSummary {
 };
 
 /// Summarises a run log.
+/// @param log a single-objective run's log.
 /// @param window number of final generations for the slope, >= 2.
 /// @throws hula::Error(Errc::InvalidOption) if window < 2.
 [[nodiscard]] ConvergenceSummary convergence(const RunLog& log, std::size_t window = 10);
