@@ -10,7 +10,9 @@ namespace hula::optim {
 namespace {
 // Inverse CDF of the spread factor truncated so the child stays inside the
 // bound on its side: alpha = 2 - beta_bound^-(eta+1) is the mass allowed.
-double alpha_of(double beta_bound, double e1) noexcept { return 2.0 - 1.0 / detail::power(beta_bound, e1); }
+// beta_bound >= 1; raising its inverse cannot overflow (it may underflow to 0,
+// which is the right limit far from the bound).
+double alpha_of(double beta_bound, double e1) noexcept { return 2.0 - detail::power(1.0 / beta_bound, e1); }
 double beta_q(double u, double alpha, double e1) noexcept {
   if (u <= 1.0 / alpha) return std::pow(u * alpha, 1.0 / e1);
   return std::pow(1.0 / (2.0 - u * alpha), 1.0 / e1);

@@ -93,11 +93,11 @@ void BinaryGaOptions::validate() const {
     throw Error(Errc::InvalidOption, "mutation_level = " + std::to_string(mutation_level) + " must be in [0, 9]",
                 {.field = "mutation_level"});
   }
-  if (!(boost_start > 0.0) || !std::isfinite(boost_start)) {
+  if (!std::isfinite(boost_start) || boost_start <= 0.0) {
     throw Error(Errc::InvalidOption, "boost_start = " + format_number(boost_start) + " must be finite and > 0",
                 {.field = "boost_start"});
   }
-  if (!(boost_end > 0.0) || !std::isfinite(boost_end)) {
+  if (!std::isfinite(boost_end) || boost_end <= 0.0) {
     throw Error(Errc::InvalidOption, "boost_end = " + format_number(boost_end) + " must be finite and > 0",
                 {.field = "boost_end"});
   }

@@ -105,6 +105,12 @@ Nsga2Result solve_nsga2(const Problem& problem, const Nsga2Options& options) {
     std::size_t begin = 0;
     for (std::size_t f = 0; f < fronts; ++f) {
       const std::size_t end = count[f];
+      if (pop.failed[order[begin]] != 0) {
+        // Failed evaluations form the last rank alone; their objectives are NaN.
+        for (std::size_t q = begin; q < end; ++q) crowd[order[q]] = 0.0;
+        begin = end;
+        continue;
+      }
       crowding_distance(pop.objectives, m, std::span<const std::size_t>(order).subspan(begin, end - begin), crowd,
                         scratch);
       begin = end;

@@ -16,7 +16,7 @@ std::string var_field(std::size_t i, const char* member) { return "variables[" +
 
 std::size_t bits_for(const Variable& variable, std::size_t index) {
   const double range = variable.upper - variable.lower;
-  if (!(variable.precision > 0.0) || !std::isfinite(variable.precision)) {
+  if (!std::isfinite(variable.precision) || variable.precision <= 0.0) {
     throw Error(
         Errc::InvalidOption,
         var_field(index, "precision") + " = " + format_number(variable.precision) + " must be > 0 for binary coding",
@@ -68,7 +68,7 @@ void Problem::validate() const {
   if (objectives == 0) {
     throw Error(Errc::InvalidOption, "objectives = 0 must be >= 1", {.field = "objectives"});
   }
-  if (!(equality_tolerance >= 0.0) || !std::isfinite(equality_tolerance)) {
+  if (!std::isfinite(equality_tolerance) || equality_tolerance < 0.0) {
     throw Error(Errc::InvalidOption,
                 "equality_tolerance = " + format_number(equality_tolerance) + " must be finite and >= 0",
                 {.field = "equality_tolerance"});
@@ -78,16 +78,16 @@ void Problem::validate() const {
 }
 
 double Problem::violation(std::span<const double> values) const noexcept {
+  // NaN first: ordered comparisons with NaN raise FE_INVALID (trapped in Debug tests).
+  for (std::size_t i = objectives; i < values_per_point(); ++i) {
+    if (std::isnan(values[i])) return std::numeric_limits<double>::quiet_NaN();
+  }
   double v = 0.0;
   const std::size_t g0 = objectives;
   for (std::size_t i = 0; i < inequality_constraints; ++i) v += std::max(0.0, values[g0 + i]);
   const std::size_t h0 = g0 + inequality_constraints;
   for (std::size_t j = 0; j < equality_constraints; ++j) {
     v += std::max(0.0, std::fabs(values[h0 + j]) - equality_tolerance);
-  }
-  // std::max(0, NaN) returns 0: report NaN constraints explicitly.
-  for (std::size_t i = g0; i < h0 + equality_constraints; ++i) {
-    if (std::isnan(values[i])) return std::numeric_limits<double>::quiet_NaN();
   }
   return v;
 }

@@ -30,12 +30,12 @@ void StopCriteria::validate() const {
     throw Error(Errc::InvalidOption, "stop.target = " + format_number(*target) + " must be finite",
                 {.field = "stop.target"});
   }
-  if (!(stagnation_tolerance >= 0.0) || !std::isfinite(stagnation_tolerance)) {
+  if (!std::isfinite(stagnation_tolerance) || stagnation_tolerance < 0.0) {
     throw Error(Errc::InvalidOption,
                 "stop.stagnation_tolerance = " + format_number(stagnation_tolerance) + " must be finite and >= 0",
                 {.field = "stop.stagnation_tolerance"});
   }
-  if (!(wall_time_seconds >= 0.0) || !std::isfinite(wall_time_seconds)) {
+  if (!std::isfinite(wall_time_seconds) || wall_time_seconds < 0.0) {
     throw Error(Errc::InvalidOption,
                 "stop.wall_time_seconds = " + format_number(wall_time_seconds) + " must be finite and >= 0",
                 {.field = "stop.wall_time_seconds"});

@@ -21,7 +21,7 @@ void RouletteWheel::reset(std::span<const double> fitness) {
   double sum = 0.0;
   for (std::size_t i = 0; i < fitness.size(); ++i) {
     const double f = fitness[i];
-    if (f > 0.0 && std::isfinite(f)) sum += f;
+    if (std::isfinite(f) && f > 0.0) sum += f;
     cumulative_[i] = sum;
   }
 }

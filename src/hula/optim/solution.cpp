@@ -8,7 +8,7 @@
 namespace hula::optim {
 
 void RunSettings::validate() const {
-  if (!(penalty >= 0.0) || !std::isfinite(penalty)) {
+  if (!std::isfinite(penalty) || penalty < 0.0) {
     throw Error(Errc::InvalidOption, "run.penalty = " + format_number(penalty) + " must be finite and >= 0",
                 {.field = "run.penalty"});
   }

@@ -66,7 +66,7 @@ void SweepOptions::validate(const Problem& problem) const {
         "objective = " + std::to_string(objective) + " must be < objectives = " + std::to_string(problem.objectives),
         {.field = "objective"});
   }
-  if (!(power > 0.0) || !std::isfinite(power)) {
+  if (!std::isfinite(power) || power <= 0.0) {
     throw Error(Errc::InvalidOption, "power = " + format_number(power) + " must be finite and > 0", {.field = "power"});
   }
 }

@@ -72,6 +72,9 @@ double RunControl::seconds() const {
 }
 
 std::optional<Termination> RunControl::check(std::size_t generation, std::size_t evaluations, double progress) {
+  // No feasible progress value yet counts as no improvement (and never meets
+  // the target); +inf keeps the comparisons below quiet (no FE_INVALID).
+  if (std::isnan(progress)) progress = kInf;
   if (generation > 0 && stop_.stagnation_generations > 0) {
     if (progress < best_progress_ - stop_.stagnation_tolerance) {
       stagnant_ = 0;
@@ -159,14 +162,14 @@ void throw_no_finite(const Evaluator& evaluator) {
 }
 
 void check_probability(double value, const char* field) {
-  if (!(value >= 0.0 && value <= 1.0)) {
+  if (std::isnan(value) || value < 0.0 || value > 1.0) {
     throw Error(Errc::InvalidOption, std::string(field) + " = " + format_number(value) + " must be in [0, 1]",
                 {.field = field});
   }
 }
 
 void check_eta(double value, const char* field) {
-  if (!(value >= 0.0) || !std::isfinite(value)) {
+  if (!std::isfinite(value) || value < 0.0) {
     throw Error(Errc::InvalidOption, std::string(field) + " = " + format_number(value) + " must be finite and >= 0",
                 {.field = field});
   }
