@@ -119,5 +119,33 @@ TEST(OptimNsga2, FailedEvaluations) {
   HULA_EXPECT_ERROR(solve_nsga2(p, o), Errc::NumericalFailure, "no evaluation returned finite values");
 }
 
+// checks: zero generations returns the initial population's first front; cancellation returns the front so far
+TEST(OptimNsga2, ZeroGenerationsAndCancellation) {
+  Nsga2Options o;
+  o.population = 12;
+  o.run.stop.generations = 0;
+  RunLog log;
+  o.run.on_generation = log.collector();
+  const auto r = solve_nsga2(zdt(1, 4), o);
+  EXPECT_EQ(r.report.evaluations, 12U);
+  EXPECT_EQ(r.report.generations, 0U);
+  ASSERT_EQ(log.generations().size(), 1U);
+  std::size_t first_front = 0;
+  for (const double rank : log.generations()[0].fitness) first_front += rank == 0.0 ? 1 : 0;
+  EXPECT_EQ(r.front.size(), first_front);
+  EXPECT_EQ(r.population.size(), 12U);
+
+  CancellationToken token;
+  o.run.stop.generations = 1000;
+  o.run.stop.cancel = &token;
+  o.run.on_generation = [&](const GenerationLog& g) {
+    if (g.generation == 4) token.cancel();
+  };
+  const auto c = solve_nsga2(zdt(1, 4), o);
+  EXPECT_EQ(c.report.termination, Termination::Cancelled);
+  EXPECT_EQ(c.report.generations, 4U);
+  EXPECT_FALSE(c.front.empty());
+}
+
 }  // namespace
 }  // namespace hula::optim
