@@ -24,8 +24,8 @@ struct Nsga2Options {
   std::size_t population = 100;
   /// Real (SBX + polynomial mutation) or Binary (bit operators; every variable needs a precision). Default Real.
   Coding coding = Coding::Real;
-  /// Probability that a pair is recombined, in [0, 1]. Default 1 (measured
-  /// best on ZDT1-3 in bench/optim/ga_bench.cpp; Deb 2002 used 0.9).
+  /// Probability that a pair is recombined, in [0, 1]. Default 1: on ZDT1-3
+  /// (10 seeds, 100 x 250) it gave slightly higher hypervolumes than Deb's 0.9.
   double crossover_probability = 1.0;
   /// SBX distribution index, finite, >= 0. Default 20 (Deb 2002).
   double crossover_eta = 20.0;
