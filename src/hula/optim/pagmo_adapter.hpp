@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: MIT
+// The "flexible optimisation wheel" (thesis appendix 1.5): a Flexo Problem
+// solved by one of pagmo2's algorithms (CMA-ES, DE, SADE, PSO, SGA, MOEA/D,
+// NSGA-II), so the user picks the algorithm per problem and the benchmarks
+// measure Flexo against pagmo in the same run. Built as the separate target
+// hula::optim_pagmo so only its users link pagmo.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+#include <vector>
+
+#include "hula/optim/problem.hpp"
+#include "hula/optim/solution.hpp"
+
+namespace hula::optim {
+
+/// pagmo2 algorithms reachable through the adapter.
+enum class PagmoAlgorithm {
+  Cmaes,  ///< pagmo::cmaes, single objective, box constraints
+  De,     ///< pagmo::de, single objective
+  Sade,   ///< pagmo::sade (self-adaptive DE), single objective
+  Pso,    ///< pagmo::pso, single objective
+  Sga,    ///< pagmo::sga (simple genetic algorithm), single objective
+  Moead,  ///< pagmo::moead, several objectives
+  Nsga2,  ///< pagmo::nsga2, several objectives
+};
+
+/// Looks an algorithm up by its pagmo name ("cmaes", "de", "sade", "pso", "sga", "moead", "nsga2").
+/// @throws hula::Error(Errc::InvalidArgument) naming the unknown algorithm.
+[[nodiscard]] PagmoAlgorithm pagmo_algorithm(std::string_view name);
+
+/// Options of solve_with_pagmo.
+struct PagmoOptions {
+  /// The algorithm. Default Nsga2.
+  PagmoAlgorithm algorithm = PagmoAlgorithm::Nsga2;
+  /// Population size; pagmo's own limits apply (NSGA-II: multiple of 4, > 4;
+  /// DE, CMA-ES: >= 5; SADE: >= 7). Default 100.
+  std::size_t population = 100;
+  /// Generations of the algorithm. Default 100.
+  std::size_t generations = 100;
+  /// Seed of pagmo's population and algorithm. Default 0.
+  std::uint64_t seed = 0;
+
+  /// @throws hula::Error(Errc::InvalidOption) naming the field and value if
+  ///   population or generations is 0.
+  void validate() const;
+};
+
+/// Result of a pagmo run.
+struct PagmoResult {
+  /// Single objective: pagmo's champion. Several objectives: empty.
+  Solution best{};
+  /// Several objectives: the final population's first non-dominated front. Single objective: empty.
+  std::vector<Solution> front{};
+  /// Evaluations (pagmo's fevals), failed evaluations, time; termination is MaxGenerations.
+  RunReport report{};
+};
+
+/// Solves a Flexo problem with a pagmo2 algorithm. Failed evaluations (throw
+/// or NaN) are given the worst representable value so pagmo ranks them last,
+/// and are counted in the report.
+/// @param problem a problem without constraints (pagmo's algorithms here do not take them).
+/// @param options algorithm, population, generations, seed (pagmo takes 32 bits of it).
+/// @returns pagmo's champion (one objective) or first front (several) and a report.
+/// @throws hula::Error(Errc::InvalidOption) if the problem or options are
+///   invalid, the algorithm cannot handle the problem (objective count,
+///   constraints), or pagmo refuses the settings (its message is included).
+/// @throws hula::Error(Errc::NumericalFailure) if no evaluation returned finite values.
+[[nodiscard]] PagmoResult solve_with_pagmo(const Problem& problem, const PagmoOptions& options = {});
+
+}  // namespace hula::optim

@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: MIT
+// Stop criteria, cancellation and the run report shared by every Flexo
+// algorithm. Modelled on Ceres' Solver::Summary (termination type + message)
+// and pagmo's up-front option checks: StopCriteria::validate() refuses bad
+// values before any work, and the report says why and when a run ended.
+#pragma once
+
+#include <atomic>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace hula::optim {
+
+/// A flag another thread (a UI, a Ctrl-C handler) sets to end a run cleanly.
+/// The algorithm checks it between generations and returns the best so far
+/// with Termination::Cancelled.
+class CancellationToken {
+ public:
+  /// Requests cancellation; safe from any thread and from a signal handler.
+  void cancel() noexcept { flag_.store(true, std::memory_order_relaxed); }
+  /// @returns true once cancel() was called.
+  [[nodiscard]] bool is_cancelled() const noexcept { return flag_.load(std::memory_order_relaxed); }
+
+ private:
+  std::atomic<bool> flag_{false};
+};
+
+/// Why a run ended.
+enum class Termination {
+  MaxGenerations,  ///< StopCriteria::generations were run
+  MaxEvaluations,  ///< another generation would exceed StopCriteria::max_evaluations
+  TargetReached,   ///< the best objective reached StopCriteria::target
+  Stagnation,      ///< no improvement for StopCriteria::stagnation_generations
+  WallTime,        ///< StopCriteria::wall_time_seconds elapsed
+  Cancelled,       ///< the CancellationToken was set
+};
+
+/// Stable name of a termination reason, e.g. "MaxGenerations".
+[[nodiscard]] std::string_view termination_name(Termination reason) noexcept;
+
+/// When to stop. Every criterion that is set can end the run; the first met
+/// (checked after each generation, in the order of the Termination enum) wins.
+struct StopCriteria {
+  /// Generations after the initial population. 0 evaluates the initial
+  /// population only and returns its best. Default 100.
+  std::size_t generations = 100;
+  /// Budget of evaluations including the initial population; 0 = unlimited.
+  /// The run stops before a generation that would exceed it. Default 0.
+  std::size_t max_evaluations = 0;
+  /// Single objective only: stop once the best feasible objective is <= target.
+  /// Default unset.
+  std::optional<double> target{};
+  /// Stop when the best objective (single objective) or the hypervolume-free
+  /// proxy "sum of per-objective minima" (several objectives) has not improved
+  /// by more than stagnation_tolerance for this many generations; 0 = off.
+  std::size_t stagnation_generations = 0;
+  /// Improvement below which a generation counts as stagnant; >= 0. Default 0.
+  double stagnation_tolerance = 0.0;
+  /// Wall-clock limit in seconds; 0 = unlimited. Makes a run depend on the
+  /// machine: leave it at 0 when reproducibility matters. Default 0.
+  double wall_time_seconds = 0.0;
+  /// Optional cancellation token, not owned; must outlive the run. Default none.
+  const CancellationToken* cancel = nullptr;
+
+  /// @throws hula::Error(Errc::InvalidOption) if target is not finite,
+  ///   stagnation_tolerance is negative or not finite, or wall_time_seconds
+  ///   is negative or not finite; the message names the field and its value.
+  void validate() const;
+};
+
+/// What happened in a run.
+struct RunReport {
+  /// Why the run ended.
+  Termination termination = Termination::MaxGenerations;
+  /// One line for humans, e.g. "250 generations run".
+  std::string message{};
+  /// Generations run after the initial population.
+  std::size_t generations = 0;
+  /// Evaluations of the problem, failed ones included.
+  std::size_t evaluations = 0;
+  /// Evaluations that threw or returned a non-finite value; they ranked last.
+  std::size_t failed_evaluations = 0;
+  /// Wall-clock duration of the run, seconds.
+  double seconds = 0.0;
+};
+
+}  // namespace hula::optim

@@ -1,0 +1,104 @@
+// SPDX-License-Identifier: MIT
+// Tests of the thesis practices: fitness maps over one or two variables,
+// re-centred bounds and re-runs, convergence statistics.
+#include "hula/optim/sweep.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "hula/optim/test_problems.hpp"
+#include "hula/testing/expect_error.hpp"
+
+namespace hula::optim {
+namespace {
+
+// checks: a 2-variable sphere fitness map against 1/(1+x^2+y^2) at every grid node (eq. 32), and power 3 (eq. 33)
+TEST(OptimSweep, TwoVariableFitnessMap) {
+  const Problem p = sphere(3);
+  SweepOptions o;
+  o.nominal = {0.0, 0.0, 0.0};
+  o.x = {.variable = 0, .from = 0.0, .to = 1.0, .steps = 11};
+  o.y = SweepAxis{.variable = 2, .from = -1.0, .to = 1.0, .steps = 5};
+  const SweepResult r = sweep(p, o);
+  ASSERT_EQ(r.objective.size(), 55U);
+  EXPECT_EQ(r.x_values.back(), 1.0);
+  EXPECT_EQ(r.y_values.front(), -1.0);
+  for (std::size_t row = 0; row < 5; ++row) {
+    for (std::size_t col = 0; col < 11; ++col) {
+      const double x = r.x_values[col];
+      const double y = r.y_values[row];
+      EXPECT_NEAR(r.objective[row * 11 + col], x * x + y * y, 1e-15);
+      EXPECT_NEAR(r.fitness[row * 11 + col], 1.0 / (1.0 + x * x + y * y), 1e-15);
+    }
+  }
+  o.power = 3.0;
+  o.y.reset();
+  const SweepResult boosted = sweep(p, o);
+  ASSERT_EQ(boosted.fitness.size(), 11U);
+  EXPECT_NEAR(boosted.fitness[10], 1.0 / 8.0, 1e-15);
+  EXPECT_EQ(boosted.x_values[0], 0.0);
+}
+
+// checks: sweep option errors name the field and value
+TEST(OptimSweep, OptionErrors) {
+  const Problem p = sphere(2);
+  SweepOptions o;
+  o.nominal = {0.0};
+  HULA_EXPECT_ERROR(sweep(p, o), Errc::InvalidOption, "nominal has 1 values, expected dimension = 2");
+  o.nominal = {0.0, 0.0};
+  o.x.variable = 4;
+  HULA_EXPECT_ERROR(sweep(p, o), Errc::InvalidOption, "x.variable = 4 must be < dimension = 2");
+  o.x = {};
+  o.y = SweepAxis{.variable = 1, .steps = 1};
+  HULA_EXPECT_ERROR(sweep(p, o), Errc::InvalidOption, "y.steps = 1 must be >= 2");
+  o.y.reset();
+  o.power = 0.0;
+  HULA_EXPECT_ERROR(sweep(p, o), Errc::InvalidOption, "power = 0");
+}
+
+// checks: re-centred bounds against the definition (width x shrink around the centre, clipped) and their errors
+TEST(OptimSweep, RecentredBounds) {
+  const Problem p = sphere(2);  // [-5.12, 5.12]
+  const std::vector<double> centre = {5.0, 0.0};
+  const Problem q = recentred(p, centre, 0.25);
+  EXPECT_DOUBLE_EQ(q.variables[0].lower, 5.0 - 1.28);
+  EXPECT_DOUBLE_EQ(q.variables[0].upper, 5.12);
+  EXPECT_DOUBLE_EQ(q.variables[1].lower, -1.28);
+  EXPECT_DOUBLE_EQ(q.variables[1].upper, 1.28);
+  HULA_EXPECT_ERROR(recentred(p, centre, 0.0), Errc::InvalidOption, "shrink = 0 must be in (0, 1]");
+  const std::vector<double> outside = {6.0, 0.0};
+  HULA_EXPECT_ERROR(recentred(p, outside, 0.5), Errc::InvalidOption, "centre[0] = 6 is outside [-5.12");
+}
+
+// checks: re-running Rastrigin-5 on re-centred bounds never worsens the best and reports every round
+TEST(OptimSweep, RerunRecentredImproves) {
+  RealGaOptions o;
+  o.population = 20;
+  o.run.stop.generations = 15;
+  const RecentredRunResult r = rerun_recentred(rastrigin(5), o, 3, 0.3);
+  ASSERT_EQ(r.round_best.size(), 4U);
+  ASSERT_EQ(r.reports.size(), 4U);
+  EXPECT_LE(r.best.objectives[0], r.round_best[0]);
+  for (const double b : r.round_best) EXPECT_LE(r.best.objectives[0], b);
+}
+
+// checks: convergence statistics of a run log: best is the log's minimum, slope <= 0, errors for window < 2
+TEST(OptimSweep, ConvergenceSummary) {
+  RunLog log;
+  RealGaOptions o;
+  o.population = 20;
+  o.run.stop.generations = 30;
+  o.run.on_generation = log.collector();
+  const GaResult r = solve_real_ga(sphere(4), o);
+  const ConvergenceSummary s = convergence(log, 10);
+  ASSERT_EQ(s.generations.size(), 31U);
+  EXPECT_EQ(s.generations.back().best, r.best.objectives[0]);
+  EXPECT_LE(s.slope, 0.0);
+  EXPECT_GE(s.generations[0].spread, 0.0);
+  EXPECT_GE(s.generations[0].mean, s.generations[0].best);
+  HULA_EXPECT_ERROR(convergence(log, 1), Errc::InvalidOption, "window = 1 must be >= 2");
+}
+
+}  // namespace
+}  // namespace hula::optim
