@@ -5,26 +5,11 @@
 // constant (the std::function wrapping a batch for parallel_for).
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstdlib>
-#include <new>
-
 #include "hula/optim/ga.hpp"
 #include "hula/optim/nsga2.hpp"
 #include "hula/optim/run_log.hpp"
 #include "hula/optim/test_problems.hpp"
-
-namespace {
-std::atomic<long> g_allocations{0};
-}
-
-void* operator new(std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+#include "hula/testing/counting_allocator.hpp"
 
 namespace hula::optim {
 namespace {
@@ -36,8 +21,8 @@ long per_generation(const Solve& solve, std::size_t population) {
   long at5 = 0;
   long at25 = 0;
   solve(population, [&](const GenerationLog& g) {
-    if (g.generation == 5) at5 = g_allocations.load();
-    if (g.generation == 25) at25 = g_allocations.load();
+    if (g.generation == 5) at5 = testing::allocation_count();
+    if (g.generation == 25) at25 = testing::allocation_count();
   });
   return (at25 - at5) / 20;
 }

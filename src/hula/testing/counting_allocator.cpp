@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Replacement global operator new/delete with a relaxed atomic counter. This
-// object file is only linked into test binaries that reference
-// allocation_count() (static library semantics).
+// Replacement global operator new/delete with a relaxed atomic counter,
+// linked into every test binary (see counting_allocator.hpp).
 #include "hula/testing/counting_allocator.hpp"
 
 #include <atomic>
