@@ -316,6 +316,7 @@ class Parser {
     try {
       out = f();
     } catch (const Error& e) {
+      if (e.code() == Errc::ParseError) throw;  // already positioned (e.g. a bad term index)
       fail(at, e.message());
     }
     if (ctx_.node_count() - start_nodes_ > options_.max_nodes)

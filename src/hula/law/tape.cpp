@@ -114,8 +114,6 @@ class Compiler {
 
   /// Emits (or reuses) one scalar instruction. `total`: result finite for finite inputs.
   std::uint32_t emit(Code code, std::uint32_t a, std::uint32_t b = 0, std::uint32_t c = 0) {
-    const bool ca = is_const_[a];
-    const bool cb = is_const_[b];
     // Identities that never change a value (x·0 only when x is total).
     switch (code) {
       case Code::Add:
@@ -141,6 +139,8 @@ class Compiler {
                        code == Code::Sin || code == Code::Cos || code == Code::Tan || code == Code::Asin ||
                        code == Code::Acos || code == Code::Atan || code == Code::Sinh || code == Code::Cosh ||
                        code == Code::Tanh || code == Code::Abs || code == Code::Sign || code == Code::PowI;
+    const bool ca = is_const_[a];
+    const bool cb = !unary && code != Code::Curve && is_const_[b];
     if (code != Code::Select && code != Code::Curve && ca && (unary || cb)) {
       return constant(fold(code, p_.initial[a], unary ? 0.0 : p_.initial[b], b));
     }
@@ -526,8 +526,11 @@ inline void run(const Tape::Program& p, double* s) {
         s[in.out + 2] = v.z;
         break;
       }
-      default:
-        s[in.out] = scalar(in.code, s[in.a], s[in.b], in.b);
+      case Code::PowI:
+        s[in.out] = op_powi(s[in.a], static_cast<std::int32_t>(in.b));
+        break;
+      default:  // b is a slot for every remaining code
+        s[in.out] = scalar(in.code, s[in.a], s[in.b], 0);
         break;
     }
   }
