@@ -7,6 +7,7 @@
 // constant operands with the very functions the interpreter runs.
 #include "hula/law/tape.hpp"
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <cmath>
@@ -52,6 +53,7 @@ enum class Code : std::uint8_t {
   LessEq,
   Select,
   Curve,
+  SinCos,  // out = sin(a), b = the slot receiving cos(a)
 };
 
 struct Instr {
@@ -414,6 +416,30 @@ void Compiler::compile_node(NodeId id, const std::vector<std::uint32_t>& param_s
   }
 }
 
+/// Replaces each pair Sin(a), Cos(a) by one SinCos at the earlier position (both only need a).
+void fuse_sincos(Tape::Program& p) {
+  std::unordered_map<std::uint32_t, std::size_t> sin_at, cos_at;
+  for (std::size_t i = 0; i < p.code.size(); ++i) {
+    if (p.code[i].code == Code::Sin) sin_at.emplace(p.code[i].a, i);
+    if (p.code[i].code == Code::Cos) cos_at.emplace(p.code[i].a, i);
+  }
+  std::vector<char> drop(p.code.size(), 0);
+  for (const auto& [arg, si] : sin_at) {
+    auto it = cos_at.find(arg);
+    if (it == cos_at.end()) continue;
+    const std::size_t ci = it->second;
+    const std::size_t first = std::min(si, ci);
+    const Instr fused{Code::SinCos, p.code[si].out, arg, p.code[ci].out, 0};
+    drop[si + ci - first] = 1;
+    p.code[first] = fused;
+  }
+  std::vector<Instr> kept;
+  kept.reserve(p.code.size());
+  for (std::size_t i = 0; i < p.code.size(); ++i)
+    if (!drop[i]) kept.push_back(p.code[i]);
+  p.code = std::move(kept);
+}
+
 struct ThreadBuffer {
   std::uint64_t tape_id = 0;
   std::vector<double> slots;
@@ -467,6 +493,7 @@ Tape Tape::compile(std::span<const Law> outputs, std::span<const std::string> in
     }
     for (int k = 0; k < root.dimension(); ++k) p->outputs.push_back(c.slots[root.id()][static_cast<std::size_t>(k)]);
   }
+  fuse_sincos(*p);
   Tape t;
   t.program_ = std::move(p);
   return t;
@@ -481,6 +508,9 @@ Workspace Tape::make_workspace() const {
   Workspace w;
   w.tape_id_ = program_->id;
   w.slots_ = program_->initial;
+  w.block_.resize(program_->initial.size() * kBlock);
+  for (std::size_t k = 0; k < program_->initial.size(); ++k)
+    for (std::size_t j = 0; j < kBlock; ++j) w.block_[k * kBlock + j] = program_->initial[k];
   return w;
 }
 
@@ -529,9 +559,98 @@ inline void run(const Tape::Program& p, double* s) {
       case Code::PowI:
         s[in.out] = op_powi(s[in.a], static_cast<std::int32_t>(in.b));
         break;
+      case Code::SinCos:
+        s[in.out] = std::sin(s[in.a]);
+        s[in.b] = std::cos(s[in.a]);
+        break;
       default:  // b is a slot for every remaining code
         s[in.out] = scalar(in.code, s[in.a], s[in.b], 0);
         break;
+    }
+  }
+}
+
+/// Evaluates the NURBS leaf instruction for one parameter into three values.
+inline void curve_value(const Tape::Program& p, const Instr& in, double t, double& x, double& y, double& z) {
+  const auto& curve = p.curves[in.b];
+  const auto dom = curve.domain();
+  if (!(t >= dom.start && t <= dom.end)) {
+    x = y = z = kUndefined;
+    return;
+  }
+  std::array<Vec3, kMaxCurveOrder + 1> buf;
+  curve.derivatives(t, static_cast<int>(in.c), std::span<Vec3>(buf.data(), in.c + 1));
+  x = buf[in.c].x;
+  y = buf[in.c].y;
+  z = buf[in.c].z;
+}
+
+/// Instruction-major evaluation of n ≤ kBlock points held slot-major in s.
+void run_block(const Tape::Program& p, double* s, std::size_t n) {
+  constexpr std::size_t B = Tape::kBlock;
+  for (const Instr& in : p.code) {
+    double* o = s + static_cast<std::size_t>(in.out) * B;
+    const double* a = s + static_cast<std::size_t>(in.a) * B;
+    switch (in.code) {
+      case Code::Add: {
+        const double* b = s + static_cast<std::size_t>(in.b) * B;
+        for (std::size_t j = 0; j < n; ++j) o[j] = a[j] + b[j];
+        break;
+      }
+      case Code::Sub: {
+        const double* b = s + static_cast<std::size_t>(in.b) * B;
+        for (std::size_t j = 0; j < n; ++j) o[j] = a[j] - b[j];
+        break;
+      }
+      case Code::Mul: {
+        const double* b = s + static_cast<std::size_t>(in.b) * B;
+        for (std::size_t j = 0; j < n; ++j) o[j] = a[j] * b[j];
+        break;
+      }
+      case Code::Div: {
+        const double* b = s + static_cast<std::size_t>(in.b) * B;
+        for (std::size_t j = 0; j < n; ++j) o[j] = op_div(a[j], b[j]);
+        break;
+      }
+      case Code::Neg:
+        for (std::size_t j = 0; j < n; ++j) o[j] = -a[j];
+        break;
+      case Code::Sqrt:
+        for (std::size_t j = 0; j < n; ++j) o[j] = op_sqrt(a[j]);
+        break;
+      case Code::PowI: {
+        const auto k = static_cast<std::int32_t>(in.b);
+        if (k == 2) {
+          for (std::size_t j = 0; j < n; ++j) o[j] = a[j] * a[j];
+        } else if (k == 3) {
+          for (std::size_t j = 0; j < n; ++j) o[j] = a[j] * a[j] * a[j];
+        } else {
+          for (std::size_t j = 0; j < n; ++j) o[j] = op_powi(a[j], k);
+        }
+        break;
+      }
+      case Code::SinCos: {
+        double* oc = s + static_cast<std::size_t>(in.b) * B;
+        for (std::size_t j = 0; j < n; ++j) {
+          o[j] = std::sin(a[j]);
+          oc[j] = std::cos(a[j]);
+        }
+        break;
+      }
+      case Code::Select: {
+        const double* b = s + static_cast<std::size_t>(in.b) * B;
+        const double* c = s + static_cast<std::size_t>(in.c) * B;
+        for (std::size_t j = 0; j < n; ++j) o[j] = op_select(a[j], b[j], c[j]);
+        break;
+      }
+      case Code::Curve:
+        for (std::size_t j = 0; j < n; ++j) curve_value(p, in, a[j], o[j], o[j + B], o[j + 2 * B]);
+        break;
+      default: {
+        const double* b = s + static_cast<std::size_t>(in.b) * B;
+        for (std::size_t j = 0; j < n; ++j) o[j] = scalar(in.code, a[j], b[j], 0);
+        break;
+      }
     }
   }
 }
@@ -579,26 +698,54 @@ bool Tape::evaluate(std::span<const double> inputs, std::span<double> outputs) c
   return finish(p, s, outputs.data());
 }
 
-std::size_t Tape::evaluate(std::span<const double> inputs, std::span<double> outputs, Workspace& workspace,
-                           std::span<std::uint8_t> defined) const {
-  check(workspace);
-  const Program& p = *program_;
+namespace {
+std::size_t run_batch(const Tape::Program& p, std::span<const double> inputs, std::span<double> outputs, double* s,
+                      std::span<std::uint8_t> defined) {
+  constexpr std::size_t B = Tape::kBlock;
   const std::size_t ni = p.inputs;
   const std::size_t no = p.outputs.size();
   const std::size_t n = ni == 0 ? outputs.size() / (no == 0 ? 1 : no) : inputs.size() / ni;
   size_check("inputs", inputs.size(), n * ni);
   size_check("outputs", outputs.size(), n * no);
   if (!defined.empty()) size_check("defined", defined.size(), n);
-  double* s = workspace.slots_.data();
   std::size_t undefined = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    for (std::size_t k = 0; k < ni; ++k) s[k] = inputs[i * ni + k];
-    run(p, s);
-    const bool ok = finish(p, s, outputs.data() + i * no);
-    if (!ok) ++undefined;
-    if (!defined.empty()) defined[i] = ok ? 1 : 0;
+  for (std::size_t i0 = 0; i0 < n; i0 += B) {
+    const std::size_t m = std::min(B, n - i0);
+    for (std::size_t k = 0; k < ni; ++k)
+      for (std::size_t j = 0; j < m; ++j) s[k * B + j] = inputs[(i0 + j) * ni + k];
+    run_block(p, s, m);
+    for (std::size_t j = 0; j < m; ++j) {
+      bool ok = true;
+      double* out = outputs.data() + (i0 + j) * no;
+      for (std::size_t k = 0; k < no; ++k) {
+        out[k] = s[static_cast<std::size_t>(p.outputs[k]) * B + j];
+        ok = ok && !std::isnan(out[k]);
+      }
+      if (!ok) ++undefined;
+      if (!defined.empty()) defined[i0 + j] = ok ? 1 : 0;
+    }
   }
   return undefined;
+}
+}  // namespace
+
+std::size_t Tape::evaluate(std::span<const double> inputs, std::span<double> outputs, Workspace& workspace,
+                           std::span<std::uint8_t> defined) const {
+  check(workspace);
+  return run_batch(*program_, inputs, outputs, workspace.block_.data(), defined);
+}
+
+std::size_t Tape::evaluate(std::span<const double> inputs, std::span<double> outputs,
+                           std::span<std::uint8_t> defined) const {
+  thread_local Workspace buffer;
+  if (buffer.tape_id_ != program_->id) {
+    const std::size_t slots = program_->initial.size();
+    buffer.block_.resize(slots * kBlock);
+    for (std::size_t k = 0; k < slots; ++k)
+      for (std::size_t j = 0; j < kBlock; ++j) buffer.block_[k * kBlock + j] = program_->initial[k];
+    buffer.tape_id_ = program_->id;
+  }
+  return run_batch(*program_, inputs, outputs, buffer.block_.data(), defined);
 }
 
 // ---------------------------------------------------------------- CurveEvaluator
@@ -634,9 +781,20 @@ bool CurveEvaluator::derivatives(double t, std::span<Vec3> out) const {
 std::size_t CurveEvaluator::derivatives(std::span<const double> ts, std::span<Vec3> out) const {
   const auto m = static_cast<std::size_t>(order_ + 1);
   size_check("out", out.size(), ts.size() * m);
+  const auto d = static_cast<std::size_t>(dimension_);
+  const std::size_t no = tape_.output_count();
+  std::array<double, 3 * 17 * Tape::kBlock> buf;  // one block of outputs, on the stack
   std::size_t undefined = 0;
-  for (std::size_t i = 0; i < ts.size(); ++i)
-    if (!derivatives(ts[i], out.subspan(i * m, m))) ++undefined;
+  for (std::size_t i0 = 0; i0 < ts.size(); i0 += Tape::kBlock) {
+    const std::size_t n = std::min(Tape::kBlock, ts.size() - i0);
+    undefined += tape_.evaluate(ts.subspan(i0, n), std::span<double>(buf.data(), n * no), {});
+    for (std::size_t j = 0; j < n; ++j)
+      for (std::size_t k = 0; k < m; ++k) {
+        Vec3 v{0.0, 0.0, 0.0};
+        for (std::size_t c = 0; c < d; ++c) v[c] = buf[j * no + k * d + c];
+        out[(i0 + j) * m + k] = v;
+      }
+  }
   return undefined;
 }
 

@@ -5,7 +5,9 @@
 // across all outputs, vector operations expanded component-wise and trivial
 // scalar identities removed. Evaluation runs the instructions in order with
 // no allocation: the slot array lives in a Workspace created once (or in a
-// per-thread buffer reused across calls).
+// per-thread buffer reused across calls). Batches run block-major: each
+// instruction processes Tape::kBlock points before the next one, and sin and
+// cos of the same argument are computed together (sincos).
 //
 // Undefined values (docs: expr.hpp) come out as NaN and are reported by the
 // boolean results; ±inf only means overflow. Vector norms are evaluated as
@@ -34,7 +36,8 @@ class Workspace {
  private:
   friend class Tape;
   std::uint64_t tape_id_ = 0;
-  std::vector<double> slots_;
+  std::vector<double> slots_;  // one point
+  std::vector<double> block_;  // kBlock points, slot-major (slot k of point j at k * kBlock + j)
 };
 
 /// An immutable compiled program computing several laws at once. Thread-safe for concurrent
@@ -75,6 +78,13 @@ class Tape {
   /// @throws hula::Error(Errc::InvalidArgument) if the span sizes do not match
   std::size_t evaluate(std::span<const double> inputs, std::span<double> outputs, Workspace& workspace,
                        std::span<std::uint8_t> defined) const;
+  /// Batch with a per-thread workspace (allocation only when a thread first meets a larger tape).
+  std::size_t evaluate(std::span<const double> inputs, std::span<double> outputs,
+                       std::span<std::uint8_t> defined) const;
+
+  /// Points evaluated together by the batch form (instruction-major over a block, so each
+  /// instruction is dispatched once per block and its loop vectorises).
+  static constexpr std::size_t kBlock = 32;
 
   /// The compiled program (opaque; defined in tape.cpp).
   struct Program;
