@@ -79,12 +79,15 @@ void add_root(std::vector<double>& out, double t) { out.push_back(t); }
 
 /// Roots of f^(k) on [a, b] (see roots.hpp).
 std::vector<double> find(Derivs& d, int k, int levels, double a, double b, const RootOptions& o, double scale) {
+  // Cuts: a uniform grid (which also isolates undefined regions) refined by the roots of the next
+  // derivative, so f^(k) is monotone between consecutive cuts whenever k < levels.
   std::vector<double> cuts{a};
+  for (std::size_t i = 1; i < o.samples; ++i)
+    cuts.push_back(a + (b - a) * static_cast<double>(i) / static_cast<double>(o.samples));
   if (k < levels) {
-    for (double c : find(d, k + 1, levels, a, b, o, scale)) cuts.push_back(c);
-  } else {
-    for (std::size_t i = 1; i < o.samples; ++i)
-      cuts.push_back(a + (b - a) * static_cast<double>(i) / static_cast<double>(o.samples));
+    for (double c : find(d, k + 1, levels, a, b, o, scale))
+      if (c > a && c < b) cuts.push_back(c);
+    std::sort(cuts.begin(), cuts.end());
   }
   cuts.push_back(b);
   // value scale of f^(k) for the even-multiplicity test
@@ -94,13 +97,21 @@ std::vector<double> find(Derivs& d, int k, int levels, double a, double b, const
     if (std::isfinite(v)) fmax = std::max(fmax, std::fabs(v));
   }
   (void)scale;
+  double dmax = 0.0;
+  for (double c : cuts) {
+    const double v = d.value(k + 1, c);
+    if (std::isfinite(v)) dmax = std::max(dmax, std::fabs(v));
+  }
   std::vector<double> out;
   const double vt = o.value_tolerance * fmax;
+  const double vt_d = 1e-6 * dmax;
   for (std::size_t i = 0; i < cuts.size(); ++i) {
     const double c = cuts[i];
     const double fc = d.value(k, c);
     const bool interior_cut = i > 0 && i + 1 < cuts.size();
-    if (fc == 0.0 || (interior_cut && k < levels && std::fabs(fc) <= vt)) add_root(out, c);
+    // even-multiplicity roots sit at critical points (|f| tiny where f' = 0)
+    const bool critical = interior_cut && k < levels && std::fabs(d.value(k + 1, c)) <= vt_d;
+    if (fc == 0.0 || (critical && std::fabs(fc) <= vt)) add_root(out, c);
     if (i + 1 == cuts.size()) break;
     const double n = cuts[i + 1];
     const double fn = d.value(k, n);
