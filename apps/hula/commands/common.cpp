@@ -1,0 +1,215 @@
+// SPDX-License-Identifier: MIT
+// Shared helpers of the `hula` commands (see common.hpp).
+#include "commands/common.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <iostream>
+
+#include "hula/core/error.hpp"
+#include "hula/core/tolerance.hpp"
+#include "hula/nurbs/arc_length.hpp"
+
+namespace hula::cli {
+
+void print_json(const Json& document) {
+  std::cout << document.dump(2, ' ', false, Json::error_handler_t::replace) << '\n';
+  std::cout.flush();
+}
+
+Json vec_to_json(const Vec3& v, int dimension) {
+  Json a = Json::array({v.x, v.y});
+  if (dimension != 2) a.push_back(v.z);
+  return a;
+}
+
+namespace {
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
+  return s;
+}
+
+double parse_number(std::string_view entry, const std::string& name, const ErrorWhere& where) {
+  std::string_view s = trim(entry);
+  // from_chars does not take a leading '+'; accept it as people write it.
+  if (s.size() > 1 && s.front() == '+') s.remove_prefix(1);
+  double v = 0.0;
+  const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec == std::errc::result_out_of_range)
+    throw Error(Errc::NonFiniteInput, name + " = \"" + std::string(entry) + "\" is outside the range of a double",
+                where);
+  if (s.empty() || ec != std::errc() || ptr != s.data() + s.size())
+    throw Error(Errc::ParseError, name + " = \"" + std::string(entry) + "\" is not a number", where);
+  if (!std::isfinite(v))
+    throw Error(Errc::NonFiniteInput, name + " = \"" + std::string(entry) + "\" is not a finite number", where);
+  return v;
+}
+
+}  // namespace
+
+std::vector<double> parse_number_list(std::string_view text, std::string_view field) {
+  std::vector<double> out;
+  std::size_t start = 0;
+  for (std::size_t i = 0;; ++i) {
+    std::size_t comma = text.find(',', start);
+    const bool last = comma == std::string_view::npos;
+    if (last) comma = text.size();
+    const std::string name = std::string(field) + "[" + std::to_string(i) + "]";
+    out.push_back(parse_number(text.substr(start, comma - start), name, {.field = std::string(field), .index = i}));
+    if (last) break;
+    start = comma + 1;
+  }
+  return out;
+}
+
+nurbs::EndCondition parse_end_condition(std::string_view text, std::string_view field) {
+  if (text == "natural") return nurbs::EndCondition::natural();
+  if (text == "bessel") return nurbs::EndCondition::bessel();
+  if (text == "not-a-knot") return nurbs::EndCondition::not_a_knot();
+  if (text == "occt") return nurbs::EndCondition::occt();
+  constexpr std::string_view kClamped = "clamped:";
+  if (text.substr(0, kClamped.size()) == kClamped) {
+    const std::vector<double> d = parse_number_list(text.substr(kClamped.size()), std::string(field) + ".tangent");
+    if (d.size() == 2 || d.size() == 3) return nurbs::EndCondition::clamped({d[0], d[1], d.size() == 3 ? d[2] : 0.0});
+    throw Error(Errc::ParseError,
+                std::string(field) + " = \"" + std::string(text) + "\": a clamped tangent needs 2 or 3 numbers, got " +
+                    std::to_string(d.size()),
+                {.field = std::string(field)});
+  }
+  throw Error(Errc::ParseError,
+              std::string(field) + " = \"" + std::string(text) +
+                  "\" is not an end condition (expected natural, bessel, not-a-knot, occt or clamped:x,y,z)",
+              {.field = std::string(field)});
+}
+
+Planarity planarity(const nurbs::NurbsCurve& curve) {
+  const std::span<const Vec3> P = curve.control_points();
+  Planarity out;
+  out.tolerance = resolution_for_size(Tolerance{}, curve.model_size());
+  if (curve.dimension() == 2) {
+    out.planar = true;
+    out.normal = Vec3{0, 0, 1};
+    return out;
+  }
+  // A plane through P0, the point farthest from it, and the point farthest
+  // from that line: robust for any point order, exact for collinear sets.
+  const Vec3 p0 = P[0];
+  std::size_t i1 = 0;
+  for (std::size_t i = 1; i < P.size(); ++i)
+    if (distance(P[i], p0) > distance(P[i1], p0)) i1 = i;
+  const Vec3 axis = P[i1] - p0;
+  const double axis_length = norm(axis);
+  if (!(axis_length > out.tolerance)) {
+    out.planar = true;  // all control points coincide: no unique plane
+    return out;
+  }
+  std::size_t i2 = 0;
+  double best = -1.0;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    const double d = norm(cross(axis, P[i] - p0)) / axis_length;  // distance from the line
+    if (d > best) {
+      best = d;
+      i2 = i;
+    }
+  }
+  if (!(best > out.tolerance)) {
+    out.planar = true;  // collinear: every plane through the line contains the curve
+    out.max_deviation = best;
+    return out;
+  }
+  Vec3 n = normalized(cross(axis, P[i2] - p0));
+  double deviation = 0.0;
+  for (const Vec3& p : P) deviation = std::fmax(deviation, std::fabs(dot(n, p - p0)));
+  // Sign convention: the largest-magnitude component is positive, so the XY plane gives +Z.
+  std::size_t k = 0;
+  for (std::size_t c = 1; c < 3; ++c)
+    if (std::fabs(n[c]) > std::fabs(n[k])) k = c;
+  if (n[k] < 0) n = -n;
+  n += Vec3{0.0, 0.0, 0.0};  // turns -0.0 components into +0.0 for clean output
+  out.max_deviation = deviation;
+  out.planar = deviation <= out.tolerance;
+  if (out.planar) out.normal = n;
+  return out;
+}
+
+Json planarity_to_json(const Planarity& p) {
+  Json o = Json::object();
+  o["planar"] = p.planar;
+  o["normal"] = p.normal ? vec_to_json(*p.normal, 3) : Json(nullptr);
+  o["max_deviation"] = p.max_deviation;
+  o["tolerance"] = p.tolerance;
+  return o;
+}
+
+Json max_curvature_estimate(const nurbs::NurbsCurve& curve, int samples) {
+  const nurbs::Interval dom = curve.domain();
+  std::vector<std::pair<double, nurbs::Side>> ts;
+  for (int i = 0; i <= samples; ++i)
+    ts.emplace_back(dom.start + dom.length() * (static_cast<double>(i) / samples), nurbs::Side::Right);
+  for (double u : curve.knots().breakpoints()) {
+    ts.emplace_back(u, nurbs::Side::Left);
+    ts.emplace_back(u, nurbs::Side::Right);
+  }
+  double best = -1.0, best_t = dom.start;
+  const double speed_floor = 1e-300;
+  for (const auto& [t, side] : ts) {
+    const auto d = curve.derivatives(t, 2, {.side = side});
+    const double speed = norm(d[1]);
+    if (!(speed > speed_floor)) continue;  // curvature undefined where C' vanishes
+    const double kappa = norm(cross(d[1], d[2])) / (speed * speed * speed);
+    if (std::isfinite(kappa) && kappa > best) {
+      best = kappa;
+      best_t = t;
+    }
+  }
+  Json o = Json::object();
+  o["value"] = best >= 0 ? Json(best) : Json(nullptr);
+  o["t"] = best >= 0 ? Json(best_t) : Json(nullptr);
+  o["samples"] = ts.size();
+  return o;
+}
+
+Json analyse(const nurbs::NurbsCurve& curve) {
+  const int dim = curve.dimension();
+  const nurbs::Interval dom = curve.domain();
+  Json o = Json::object();
+  o["degree"] = curve.degree();
+  o["dimension"] = dim;
+  o["rational"] = curve.is_rational();
+  o["domain"] = Json::array({dom.start, dom.end});
+  Json knots = Json::array();
+  for (double u : curve.knots().values()) knots.push_back(u);
+  o["knots"] = std::move(knots);
+  Json points = Json::array();
+  for (const Vec3& p : curve.control_points()) points.push_back(vec_to_json(p, dim));
+  o["control_points"] = std::move(points);
+  if (curve.is_rational()) {
+    Json w = Json::array();
+    for (double v : curve.weights()) w.push_back(v);
+    o["weights"] = std::move(w);
+  } else {
+    o["weights"] = nullptr;
+  }
+  o["length"] = nurbs::arc_length(curve);
+  const Vec3 d0 = curve.derivatives(dom.start, 1)[1];
+  const Vec3 d1 = curve.derivatives(dom.end, 1)[1];
+  Json tangents = Json::object();
+  tangents["start"] = vec_to_json(d0, dim);
+  tangents["end"] = vec_to_json(d1, dim);
+  o["end_derivatives"] = std::move(tangents);
+  // Unit tangents where |C'| is above rounding noise relative to the derivative's scale; null otherwise.
+  const auto unit = [&](const Vec3& d) {
+    const double scale = curve.model_size() / dom.length();
+    return norm(d) > 1e-12 * scale ? vec_to_json(normalized(d), dim) : Json(nullptr);
+  };
+  Json units = Json::object();
+  units["start"] = unit(d0);
+  units["end"] = unit(d1);
+  o["end_tangents"] = std::move(units);
+  o["planarity"] = planarity_to_json(planarity(curve));
+  return o;
+}
+
+}  // namespace hula::cli

@@ -1,0 +1,175 @@
+// SPDX-License-Identifier: MIT
+// Checked JSON accessors with path-naming errors (see json_read.hpp).
+#include "hula/io/detail/json_read.hpp"
+
+#include <cmath>
+#include <utility>
+
+namespace hula::io::detail {
+
+JsonPath JsonPath::member(std::string_view name) const {
+  JsonPath out = *this;
+  if (text.empty()) {
+    out.text = std::string(name);
+    out.where.field = std::string(name);
+  } else {
+    out.text += "." + std::string(name);
+  }
+  return out;
+}
+
+JsonPath JsonPath::element(std::size_t i) const {
+  JsonPath out = *this;
+  out.text += "[" + std::to_string(i) + "]";
+  if (!out.where.index)
+    out.where.index = i;
+  else if (!out.where.component)
+    out.where.component = i;
+  return out;
+}
+
+JsonPath root_path(std::string_view field) {
+  JsonPath p;
+  p.text = std::string(field);
+  p.where.field = std::string(field);
+  return p;
+}
+
+std::string describe(const Json& value) {
+  std::string s = value.dump(-1, ' ', false, Json::error_handler_t::replace);
+  constexpr std::size_t kMax = 60;
+  if (s.size() > kMax) s = s.substr(0, kMax) + "...";
+  return s;
+}
+
+Json parse_json_text(std::string_view text, std::string_view what) {
+  try {
+    return Json::parse(text.begin(), text.end());
+  } catch (const Json::parse_error& e) {
+    // Translate the byte offset (1-based, of the offending character) into line and column.
+    const std::size_t offset = e.byte == 0 ? 0 : std::min<std::size_t>(e.byte - 1, text.size());
+    std::size_t line = 1, column = 1;
+    for (std::size_t i = 0; i < offset; ++i) {
+      if (text[i] == '\n') {
+        ++line;
+        column = 1;
+      } else {
+        ++column;
+      }
+    }
+    std::string reason = e.what();
+    // nlohmann's message is "[json.exception.parse_error.101] parse error at line L, column C: <reason>".
+    if (const auto colon = reason.find(": "); colon != std::string::npos) reason = reason.substr(colon + 2);
+    throw Error(Errc::ParseError,
+                std::string(what) + " is not valid JSON at line " + std::to_string(line) + ", column " +
+                    std::to_string(column) + ": " + reason,
+                {.line = line, .column = column});
+  } catch (const Json::out_of_range& e) {
+    // nlohmann refuses literals that overflow a double (e.g. 1e999) before any path is known.
+    std::string reason = e.what();
+    if (const auto bracket = reason.find("] "); bracket != std::string::npos) reason = reason.substr(bracket + 2);
+    throw Error(Errc::NonFiniteInput, std::string(what) + " holds a number that is not a finite double: " + reason);
+  } catch (const Json::exception& e) {
+    throw Error(Errc::ParseError, std::string(what) + " cannot be read as JSON: " + e.what());
+  }
+}
+
+void type_error(const Json& value, const JsonPath& path, std::string_view expected) {
+  const std::string name = path.text.empty() ? std::string("document") : path.text;
+  throw Error(Errc::ParseError, name + " = " + describe(value) + " must be " + std::string(expected), path.where);
+}
+
+double get_number(const Json& value, const JsonPath& path) {
+  if (!value.is_number()) type_error(value, path, "a number");
+  const double v = value.get<double>();
+  // JSON has no NaN or infinity and the parser rejects overflowing literals; kept for documents built in code.
+  if (!std::isfinite(v))
+    throw Error(Errc::NonFiniteInput, path.text + " = " + describe(value) + " is not a finite double", path.where);
+  return v;
+}
+
+long long get_integer(const Json& value, const JsonPath& path, long long lo, long long hi) {
+  long long v = 0;
+  if (value.is_number_unsigned()) {
+    const auto u = value.get<unsigned long long>();
+    if (u > static_cast<unsigned long long>(hi)) type_error(value, path, "an integer <= " + std::to_string(hi));
+    v = static_cast<long long>(u);
+  } else if (value.is_number_integer()) {
+    v = value.get<long long>();
+  } else if (value.is_number_float()) {
+    const double d = value.get<double>();
+    if (!(d == std::floor(d)) || !(std::fabs(d) < 9e15)) type_error(value, path, "an integer");
+    v = static_cast<long long>(d);
+  } else {
+    type_error(value, path, "an integer");
+  }
+  if (v < lo || v > hi)
+    type_error(value, path, "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  return v;
+}
+
+std::string get_string(const Json& value, const JsonPath& path) {
+  if (!value.is_string()) type_error(value, path, "a string");
+  return value.get<std::string>();
+}
+
+const Json& get_array(const Json& value, const JsonPath& path) {
+  if (!value.is_array()) type_error(value, path, "an array");
+  return value;
+}
+
+std::vector<double> get_number_array(const Json& value, const JsonPath& path) {
+  const Json& array = get_array(value, path);
+  std::vector<double> out;
+  out.reserve(array.size());
+  for (std::size_t i = 0; i < array.size(); ++i) out.push_back(get_number(array[i], path.element(i)));
+  return out;
+}
+
+const Json& require_member(const Json& object, const JsonPath& parent, std::string_view name) {
+  const auto it = object.find(std::string(name));
+  if (it == object.end()) {
+    const JsonPath p = parent.member(name);
+    throw Error(
+        Errc::ParseError,
+        "missing member \"" + std::string(name) + "\"" + (parent.text.empty() ? std::string() : " in " + parent.text),
+        p.where);
+  }
+  return *it;
+}
+
+const Json* optional_member(const Json& object, std::string_view name) {
+  const auto it = object.find(std::string(name));
+  if (it == object.end() || it->is_null()) return nullptr;
+  return &*it;
+}
+
+std::pair<Vec3, int> get_point(const Json& value, const JsonPath& path) {
+  if (!value.is_array() || (value.size() != 2 && value.size() != 3))
+    type_error(value, path, "an array of 2 or 3 numbers ([x, y] or [x, y, z])");
+  Vec3 p;
+  for (std::size_t c = 0; c < value.size(); ++c) p[c] = get_number(value[c], path.element(c));
+  return {p, static_cast<int>(value.size())};
+}
+
+PointArray get_points(const Json& value, const JsonPath& path) {
+  const Json& array = get_array(value, path);
+  PointArray out;
+  out.points.reserve(array.size());
+  for (std::size_t i = 0; i < array.size(); ++i) {
+    const JsonPath pi = path.element(i);
+    auto [p, count] = get_point(array[i], pi);
+    if (i == 0) {
+      out.dimension = count;
+    } else if (count != out.dimension) {
+      throw Error(Errc::ParseError,
+                  pi.text + " has " + std::to_string(count) + " components but " + path.text + "[0] has " +
+                      std::to_string(out.dimension) + " (all points must be 2-D or all 3-D)",
+                  pi.where);
+    }
+    out.points.push_back(p);
+  }
+  return out;
+}
+
+}  // namespace hula::io::detail

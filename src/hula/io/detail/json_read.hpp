@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: MIT
+// Checked accessors for reading JSON documents: every failure throws
+// hula::Error naming the JSON path (e.g. `control_points[3][1]`) and the value
+// found, with ErrorWhere.field = the top-level member and index / component =
+// the first / second array index on the path.
+#pragma once
+
+#include <cstddef>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "hula/core/error.hpp"
+#include "hula/core/vec.hpp"
+
+namespace hula::io::detail {
+
+using Json = nlohmann::ordered_json;
+
+/// A position in a JSON document: its printable path and its ErrorWhere.
+struct JsonPath {
+  std::string text;
+  ErrorWhere where;
+
+  /// Path of a member of the document root (or of a nested object, appended with '.').
+  [[nodiscard]] JsonPath member(std::string_view name) const;
+  /// Path of an array element: fills where.index, then where.component.
+  [[nodiscard]] JsonPath element(std::size_t i) const;
+};
+
+/// The root path named `field` (e.g. "control_points"), or "" for the document itself.
+[[nodiscard]] JsonPath root_path(std::string_view field);
+
+/// A short printable rendering of a JSON value for messages (at most ~60 characters).
+[[nodiscard]] std::string describe(const Json& value);
+
+/// Parses JSON text; syntax errors become Errc::ParseError with line and column, a
+/// number literal that overflows a double (1e999) Errc::NonFiniteInput.
+/// @param what the kind of document for the message ("curve file")
+[[nodiscard]] Json parse_json_text(std::string_view text, std::string_view what);
+
+/// Throws ParseError "<path> = <value> must be <expected>".
+[[noreturn]] void type_error(const Json& value, const JsonPath& path, std::string_view expected);
+
+/// A finite number (integer or floating point) at `path`.
+[[nodiscard]] double get_number(const Json& value, const JsonPath& path);
+/// An integer at `path` in [lo, hi] (integral floating-point values are accepted).
+[[nodiscard]] long long get_integer(const Json& value, const JsonPath& path, long long lo, long long hi);
+/// A string at `path`.
+[[nodiscard]] std::string get_string(const Json& value, const JsonPath& path);
+/// An array at `path`.
+[[nodiscard]] const Json& get_array(const Json& value, const JsonPath& path);
+/// An array of finite numbers at `path`.
+[[nodiscard]] std::vector<double> get_number_array(const Json& value, const JsonPath& path);
+/// Member `name` of object `object` (at `parent`), or throws ParseError "missing member".
+[[nodiscard]] const Json& require_member(const Json& object, const JsonPath& parent, std::string_view name);
+/// Member `name` or nullptr when absent or null.
+[[nodiscard]] const Json* optional_member(const Json& object, std::string_view name);
+
+/// Points as arrays of 2 or 3 numbers, all with the same count.
+struct PointArray {
+  std::vector<Vec3> points;
+  int dimension = 3;
+};
+/// Reads an array of [x, y] or [x, y, z] arrays at `path`; an empty array is
+/// accepted (the caller checks counts). Mixed component counts name the index.
+[[nodiscard]] PointArray get_points(const Json& value, const JsonPath& path);
+/// One [x, y] or [x, y, z] array; z = 0 for two components.
+/// @returns the point and its component count
+[[nodiscard]] std::pair<Vec3, int> get_point(const Json& value, const JsonPath& path);
+
+}  // namespace hula::io::detail
