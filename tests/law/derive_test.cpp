@@ -231,3 +231,18 @@ TEST(LawDerive, NurbsLeafUsesKernelDerivatives) {
 
 }  // namespace
 }  // namespace hula::law
+
+namespace hula::law {
+namespace {
+
+// checks: runaway derivative orders stop with a documented InvalidArgument (DAG limits) instead of
+// exhausting memory or the stack.
+TEST(LawDerive, DerivativeGrowthIsBounded) {
+  Context ctx;
+  const Law n = normalize(vec(cos(ctx.parameter("t")), sin(ctx.parameter("t")), exp(ctx.parameter("t") / 3.0)));
+  HULA_EXPECT_ERROR(derivative(n, "t", 5000), Errc::InvalidArgument, "limit");
+  EXPECT_LE(ctx.node_count(), kMaxNodes);
+}
+
+}  // namespace
+}  // namespace hula::law

@@ -27,7 +27,7 @@ class Integrator {
 
   bool depends(const Law& e) {
     if (auto it = depends_.find(e.id()); it != depends_.end()) return it->second;
-    const Node& n = e.node();
+    const Node n = e.node();
     bool d = n.op == Op::Parameter && n.index == p_;
     for (std::size_t i = 0; i < n.arity && !d; ++i) d = depends(e.arg(i));
     depends_.emplace(e.id(), d);
@@ -47,7 +47,7 @@ class Integrator {
 
  private:
   std::optional<Poly> poly_uncached(const Law& e) {
-    const Node& n = e.node();
+    const Node n = e.node();
     if (n.dimension != 1) return std::nullopt;
     switch (n.op) {
       case Op::Constant:
@@ -147,7 +147,7 @@ std::optional<Law> Integrator::integrate(const Law& f) {
 }
 
 std::optional<Law> Integrator::integrate_uncached(const Law& f) {
-  const Node& n = f.node();
+  const Node n = f.node();  // a copy: building nodes may reallocate the node array
   const Law p = param();
   if (n.dimension > 1) {
     if (n.op != Op::Vec && depends(f)) {

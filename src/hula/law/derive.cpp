@@ -23,7 +23,7 @@ Law zero_like(const Law& e) {
 Law d(const Law& e, std::uint32_t p);
 
 Law rule(const Law& q, std::uint32_t p) {
-  const Node& n = q.node();
+  const Node n = q.node();  // a copy: building nodes may reallocate the node array
   Context ctx = q.context();
   auto c = [&ctx](double v) { return ctx.constant(v); };
   auto A = [&q](std::size_t i) { return q.arg(i); };

@@ -526,7 +526,7 @@ Law normalize(const Law& a) {
 // ---------------------------------------------------------------- rebuild / substitute
 
 Law detail::rebuild(const Law& original, std::span<const Law> args) {
-  const Node& n = original.node();
+  const Node n = original.node();
   switch (n.op) {
     case Op::Constant:
     case Op::Parameter:
@@ -606,7 +606,7 @@ Law detail::rebuild(const Law& original, std::span<const Law> args) {
 namespace {
 Law substitute_rec(const Law& e, NodeId param, const Law& value, std::unordered_map<NodeId, Law>& memo) {
   if (auto it = memo.find(e.id()); it != memo.end()) return it->second;
-  const Node& n = e.node();
+  const Node n = e.node();  // a copy: building nodes may reallocate the node array
   Law out;
   if (n.op == Op::Parameter) {
     out = e.id() == param ? value : e;

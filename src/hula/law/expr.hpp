@@ -94,7 +94,7 @@ struct Node {
 
 /// Largest number of nodes a Context holds. Building beyond it (a huge
 /// expression or runaway derivative growth) throws Errc::InvalidArgument.
-inline constexpr std::size_t kMaxNodes = 4'000'000;
+inline constexpr std::size_t kMaxNodes = 1'000'000;
 /// Largest node height (nesting depth). Recursive algorithms stay within a
 /// few megabytes of stack below it.
 inline constexpr std::uint32_t kMaxHeight = 4000;
@@ -112,6 +112,8 @@ class Law {
   /// True when the handle refers to a node.
   [[nodiscard]] bool valid() const noexcept { return graph_ != nullptr; }
   /// The node (throws hula::Error(Errc::InvalidArgument) on an empty handle).
+  /// @note The reference is valid until the context creates another node (any builder,
+  ///   derivative or parse on it may reallocate the node array): copy the Node to keep it.
   [[nodiscard]] const Node& node() const;
   [[nodiscard]] Op op() const { return node().op; }
   /// 1 for scalars, 2 or 3 for vectors.

@@ -69,7 +69,7 @@ struct Condition {
 
 /// The condition laws of one node (empty for smooth, total operations).
 void conditions(const Law& e, std::vector<Condition>& out) {
-  const Node& n = e.node();
+  const Node n = e.node();  // a copy: building nodes may reallocate the node array
   Context ctx = e.context();
   auto add = [&](const Law& g, SingularityKind k) {
     if (!g.is_constant()) out.push_back({g, k, e});
