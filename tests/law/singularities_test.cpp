@@ -76,5 +76,29 @@ TEST(LawSingularities, Errors) {
   HULA_EXPECT_ERROR(singularities(parse("t", ctx), "t", 0, 1, o), Errc::InvalidOption, "SingularityOptions::samples");
 }
 
+// checks: explain_undefined names the innermost undefined subexpression and the reason, ignores an
+// unselected piecewise branch, and returns nothing where the law is defined.
+TEST(LawSingularities, ExplainUndefined) {
+  testing::FpeGuard guard;
+  Context ctx;
+  auto cause = explain_undefined(parse("sin(t) + 1/t", ctx), "t", 0.0);
+  ASSERT_TRUE(cause.has_value());
+  EXPECT_EQ(cause->expression, "1/t");
+  EXPECT_EQ(cause->reason, "division by zero");
+  cause = explain_undefined(parse("exp(sqrt(t - 1)) * 2", ctx), "t", 0.0);
+  ASSERT_TRUE(cause.has_value());
+  EXPECT_EQ(cause->expression, "sqrt(t - 1)");
+  EXPECT_EQ(cause->reason, "sqrt of a negative number");
+  cause = explain_undefined(parse("vec(t, log(t))", ctx), "t", -1.0);
+  ASSERT_TRUE(cause.has_value());
+  EXPECT_EQ(cause->reason, "log of a number <= 0");
+  EXPECT_FALSE(explain_undefined(parse("piecewise(t > 0, log(t), t)", ctx), "t", -1.0).has_value());
+  // the cause is in the selected branch, not in the undefined unselected one
+  cause = explain_undefined(parse("piecewise(t > 0, log(t), 1/(t + 1))", ctx), "t", -1.0);
+  ASSERT_TRUE(cause.has_value());
+  EXPECT_EQ(cause->expression, "1/(t + 1)");
+  EXPECT_FALSE(explain_undefined(parse("1/t", ctx), "t", 2.0).has_value());
+}
+
 }  // namespace
 }  // namespace hula::law

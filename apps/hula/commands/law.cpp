@@ -14,6 +14,7 @@
 #include "hula/law/derive.hpp"
 #include "hula/law/parser.hpp"
 #include "hula/law/roots.hpp"
+#include "hula/law/singularities.hpp"
 #include "hula/law/tape.hpp"
 
 namespace hula::cli {
@@ -27,13 +28,22 @@ std::vector<std::vector<double>> law_derivatives(const law::Law& l, const std::s
   law::Workspace w = tape.make_workspace();
   for (std::size_t i = 0; i < ts.size(); ++i) {
     std::vector<double> v(tape.output_count());
-    if (!tape.evaluate(ts.subspan(i, 1), v, w))
+    if (!tape.evaluate(ts.subspan(i, 1), v, w)) {
+      // Name the innermost undefined subexpression (of the law or of the derivative that failed).
+      std::string why;
+      for (const law::Law& d : laws)
+        if (auto cause = law::explain_undefined(d, parameter, ts[i])) {
+          why = " (" + cause->expression + ": " + cause->reason + ")";
+          break;
+        }
       throw Error(Errc::OutOfDomain,
                   parameter + "[" + std::to_string(i) + "] = " + format_number(ts[i]) +
                       (order == 0 ? std::string(": the law is undefined there")
                                   : ": the law or one of its first " + std::to_string(order) +
-                                        " derivatives is undefined there"),
+                                        " derivatives is undefined there") +
+                      why,
                   ErrorWhere{.field = parameter, .index = i});
+    }
     out.push_back(std::move(v));
   }
   return out;

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <unordered_map>
 #include <unordered_set>
 
 #include "hula/core/error.hpp"
@@ -217,6 +218,93 @@ SingularityReport singularities(const Law& f, std::string_view parameter, double
   }
   if (!prev_ok) report.undefined.push_back({start, b});
   return report;
+}
+
+namespace {
+const char* undefined_reason(Op op) {
+  switch (op) {
+    case Op::Div:
+      return "division by zero";
+    case Op::Sqrt:
+      return "sqrt of a negative number";
+    case Op::Log:
+      return "log of a number <= 0";
+    case Op::Pow:
+      return "0 to a negative power, or a negative base to a non-integer power";
+    case Op::Asin:
+      return "asin of a number outside [-1, 1]";
+    case Op::Acos:
+      return "acos of a number outside [-1, 1]";
+    case Op::Atan2:
+      return "atan2(0, 0)";
+    case Op::Normalize:
+      return "normalize of a zero vector";
+    case Op::Norm:
+      return "norm of a zero vector";
+    case Op::Curve:
+      return "parameter outside the NURBS curve's domain";
+    default:
+      return "undefined operation";
+  }
+}
+}  // namespace
+
+std::optional<UndefinedCause> explain_undefined(const Law& f, std::string_view parameter, double t) {
+  if (!f.valid()) throw Error(Errc::InvalidArgument, "explain_undefined: empty law");
+  // Every reachable node in post-order (arguments before the node), all compiled as outputs.
+  std::vector<Law> order;
+  std::unordered_set<NodeId> seen;
+  std::vector<std::pair<Law, bool>> stack{{f, false}};
+  while (!stack.empty()) {
+    auto [e, expanded] = stack.back();
+    stack.pop_back();
+    if (expanded) {
+      order.push_back(e);
+      continue;
+    }
+    if (!seen.insert(e.id()).second) continue;
+    stack.push_back({e, true});
+    for (std::size_t i = 0; i < e.node().arity; ++i)
+      if (!seen.count(e.node().args[i])) stack.push_back({e.arg(i), false});
+  }
+  const std::string in[1] = {std::string(parameter)};
+  const Tape tape = Tape::compile(order, in);
+  std::vector<double> out(tape.output_count());
+  if (tape.evaluate(std::span<const double>(&t, 1), out)) return std::nullopt;
+  // Other outputs may be undefined in an unselected piecewise branch: only f itself (the last
+  // node of the post-order) decides.
+  bool f_defined = true;
+  for (std::size_t c = out.size() - static_cast<std::size_t>(f.dimension()); c < out.size(); ++c)
+    f_defined = f_defined && !std::isnan(out[c]);
+  if (f_defined) return std::nullopt;
+  std::unordered_map<NodeId, bool> defined;
+  std::size_t k = 0;
+  for (const Law& e : order) {
+    bool ok = true;
+    for (int c = 0; c < e.dimension(); ++c) ok = ok && !std::isnan(out[k++]);
+    defined[e.id()] = ok;
+  }
+  std::unordered_map<NodeId, double> first_value;  // first component, for piecewise conditions
+  k = 0;
+  for (const Law& e : order) {
+    first_value[e.id()] = out[k];
+    k += static_cast<std::size_t>(e.dimension());
+  }
+  // Descend from f through undefined arguments (into the selected branch of a piecewise) to the
+  // innermost node that is undefined although its arguments are defined.
+  Law e = f;
+  for (;;) {
+    const Node n = e.node();
+    std::optional<Law> next;
+    if (n.op == Op::Piecewise && defined[n.args[0]]) {
+      next = first_value[n.args[0]] != 0.0 ? e.arg(1) : e.arg(2);
+    } else {
+      for (std::size_t i = 0; i < n.arity && !next; ++i)
+        if (!defined[n.args[i]]) next = e.arg(i);
+    }
+    if (!next || defined[next->id()]) return UndefinedCause{short_print(e), undefined_reason(n.op)};
+    e = *next;
+  }
 }
 
 }  // namespace hula::law

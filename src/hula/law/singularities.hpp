@@ -9,6 +9,7 @@
 // bisecting their ends.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -81,5 +82,19 @@ struct SingularityOptions {
 /// @throws hula::Error(Errc::InvalidOption) if options are invalid
 [[nodiscard]] SingularityReport singularities(const Law& f, std::string_view parameter, double a, double b,
                                               const SingularityOptions& options = {});
+
+/// Why a law is undefined at one parameter value.
+struct UndefinedCause {
+  /// The innermost undefined subexpression, printed (truncated to 120 characters).
+  std::string expression;
+  /// What went wrong, e.g. "division by zero", "sqrt of a negative number".
+  std::string reason;
+};
+
+/// Explains an undefined value: the innermost subexpression that is undefined at
+/// parameter = t although its arguments are defined, and why.
+/// @returns nullopt when the law is defined at t
+/// @throws hula::Error(Errc::InvalidArgument) if the law uses another parameter
+[[nodiscard]] std::optional<UndefinedCause> explain_undefined(const Law& f, std::string_view parameter, double t);
 
 }  // namespace hula::law
