@@ -169,6 +169,10 @@ TEST(LawParser, LimitsAreEnforced) {
   Context ctx;
   const std::string deep = std::string(10000, '(') + "t" + std::string(10000, ')');
   HULA_EXPECT_ERROR(parse(deep, ctx), Errc::ParseError, "nested deeper than the limit of 200 levels");
+  std::string powers = "t";
+  for (int i = 0; i < 10000; ++i) powers += "^t";
+  HULA_EXPECT_ERROR(parse(powers, ctx), Errc::ParseError, "nested deeper than the limit of 200 levels");
+  EXPECT_NO_THROW((void)parse(std::string(200, '(') + "t" + std::string(200, ')'), ctx));  // 200 is allowed
   const std::string minus(10000, '-');
   HULA_EXPECT_ERROR(parse(minus + "t", ctx), Errc::ParseError, "ParseOptions::max_depth");
   std::string big;

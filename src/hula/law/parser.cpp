@@ -9,9 +9,9 @@
 //   primary    := number | "pi" | "e" | parameter | call | "(" expression ")"
 //   call       := name "(" expression { "," expression } ")"
 //
-// Recursion is bounded by ParseOptions::max_depth (checked on every nesting
-// step), the input by max_length and the output by max_nodes, so hostile
-// input gets a positioned error instead of a stack overflow.
+// Recursion is bounded by ParseOptions::max_depth, counted at every nesting
+// step: an opening parenthesis, a call, a unary sign and a '^' exponent, the input by max_length and the output by
+// max_nodes, so hostile input gets a positioned error instead of a stack overflow.
 #include "hula/law/parser.hpp"
 
 #include <charconv>
@@ -331,7 +331,6 @@ class Parser {
   }
 
   Law expression() {
-    DepthGuard guard(*this, tok_pos_);
     Law a = additive();
     if (tok_ == Tok::Less || tok_ == Tok::LessEq || tok_ == Tok::Greater || tok_ == Tok::GreaterEq) {
       const Tok op = tok_;
@@ -381,10 +380,10 @@ class Parser {
   }
 
   Law unary() {
-    DepthGuard guard(*this, tok_pos_);
     if (tok_ == Tok::Minus || tok_ == Tok::Plus) {
       const Tok op = tok_;
       const Pos at = tok_pos_;
+      DepthGuard guard(*this, at);  // "- - - t" nests
       next();
       Law a = unary();
       if (op == Tok::Plus) return a;
@@ -397,6 +396,7 @@ class Parser {
     Law base = primary();
     if (tok_ == Tok::Caret) {
       const Pos at = tok_pos_;
+      DepthGuard guard(*this, at);  // "t^t^t" nests to the right
       next();
       Law exponent = unary();
       return build(at, [&] { return pow(base, exponent); });
