@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -248,6 +249,78 @@ TEST(Cli, DemoIsDefaultAndReportsDoubleKnotContinuity) {
   EXPECT_EQ(dk["continuity"]["C2"], false);
   EXPECT_EQ(dk["derivative_table"]["rows"].size(), 4u);
   EXPECT_EQ(hula({"demo"}).out, r.out);
+}
+
+}  // namespace
+}  // namespace hula::io
+
+namespace hula::io {
+namespace {
+
+// checks: `hula law` output shape (results like eval, scalars as one-element arrays), printed derivative,
+// roots/extrema/integral against closed forms, and positioned errors with exit 3.
+TEST(CliLaw, OutputAndAnalyses) {
+  const ProcessResult r =
+      hula({"law", "sin(t)", "--at", "0,1", "--derivatives", "2", "--print-derivative", "1", "--roots", "0.5,7",
+            "--extrema", "0,6.283185307179586", "--integrate", "0,3.141592653589793"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_EQ(j["expression"], "sin(t)");
+  ASSERT_EQ(j["results"].size(), 2u);
+  EXPECT_EQ(j["results"][1]["t"], 1.0);
+  ASSERT_EQ(j["results"][1]["derivatives"].size(), 3u);
+  EXPECT_EQ(j["results"][1]["derivatives"][0].size(), 1u);
+  EXPECT_DOUBLE_EQ(j["results"][1]["derivatives"][1][0].get<double>(), std::cos(1.0));
+  EXPECT_EQ(j["derivative"]["expression"], "cos(t)");
+  ASSERT_EQ(j["roots"]["roots"].size(), 2u);
+  EXPECT_NEAR(j["roots"]["roots"][0].get<double>(), 3.141592653589793, 1e-13);
+  EXPECT_NEAR(j["extrema"]["maximum"]["t"].get<double>(), 1.5707963267948966, 1e-12);
+  EXPECT_EQ(j["integral"]["method"], "symbolic");
+  EXPECT_NEAR(j["integral"]["value"].get<double>(), 2.0, 1e-14);
+
+  const ProcessResult bad = hula({"law", "t + vec(t, t, t)"});
+  EXPECT_EQ(bad.exit_code, 3);
+  const json e = expect_error_json(bad, "ParseError");
+  EXPECT_EQ(e["error"]["where"]["column"], 3);
+  EXPECT_NE(e["error"]["message"].get<std::string>().find("'+'"), std::string::npos);
+
+  const ProcessResult undef = hula({"law", "1/t", "--at", "1,0"});
+  EXPECT_EQ(undef.exit_code, 3);
+  const json u = expect_error_json(undef, "OutOfDomain");
+  EXPECT_NE(
+      u["error"]["message"].get<std::string>().find("t[1] = 0: the law is undefined there (1/t: division by zero)"),
+      std::string::npos);
+  EXPECT_EQ(hula({"law", "sin(t", "--at", "0"}).exit_code, 3);
+  EXPECT_EQ(hula({"law", "vec(t, t)", "--roots", "0,1"}).exit_code, 3);
+}
+
+// checks: `hula eval` and `info` take a law curve file; eval values are the law's (exact), info reports
+// the stand-in NURBS and its deviation; a law undefined in its domain is an invalid file (exit 3).
+TEST(CliLaw, LawCurveFiles) {
+  TempDir dir;
+  const std::string helix = (dir / "helix.json").string();
+  write_file_atomically(helix, R"j({"kind": "law", "expression": "vec(2*cos(t), 2*sin(t), 0.5*t)",
+                                   "parameter": "t", "domain": [0, 12.566370614359172]})j");
+  const ProcessResult r = hula({"eval", helix, "--at", "0,1", "--derivatives", "1"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_DOUBLE_EQ(j["results"][1]["derivatives"][0][0].get<double>(), 2 * std::cos(1.0));
+  EXPECT_DOUBLE_EQ(j["results"][1]["derivatives"][1][2].get<double>(), 0.5);
+  EXPECT_EQ(hula({"eval", helix, "--at", "13"}).exit_code, 3);
+  EXPECT_EQ(hula({"eval", helix, "--at", "13", "--clamp"}).exit_code, 0);
+  const ProcessResult info = hula({"info", helix});
+  ASSERT_EQ(info.exit_code, 0) << info.err;
+  const json ji = json::parse(info.out);
+  EXPECT_EQ(ji["kind"], "law");
+  EXPECT_LE(ji["law"]["approximation_deviation"].get<double>(), 1e-6);
+  EXPECT_NEAR(ji["length"].get<double>(), std::sqrt(4.25) * 12.566370614359172, 1e-5);
+
+  const std::string bad = (dir / "bad.json").string();
+  write_file_atomically(bad, R"j({"kind": "law", "expression": "vec(t, 1/t)", "domain": [-1, 1]})j");
+  const ProcessResult b = hula({"info", bad});
+  EXPECT_EQ(b.exit_code, 3);
+  const json e = expect_error_json(b, "InvalidArgument");
+  EXPECT_EQ(e["error"]["where"]["field"], "domain");
 }
 
 }  // namespace

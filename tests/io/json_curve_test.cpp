@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 #include "hula/core/error.hpp"
@@ -239,6 +240,50 @@ TEST(JsonCurveErrors, SyntaxErrorHasLineAndColumn) {
 TEST(JsonCurveErrors, BezierNeedsTwoPoints) {
   HULA_EXPECT_ERROR(parse_curve_json(R"({"kind": "bezier", "control_points": [[0, 0]]})"), Errc::TooFewPoints,
                     "control_points has 1 point");
+}
+
+}  // namespace
+}  // namespace hula::io
+
+namespace hula::io {
+namespace {
+
+const char* const kHelixLaw =
+    R"j({"kind": "law", "expression": "vec(2*cos(t), 2*sin(t), 0.5*t)", "parameter": "t",
+        "domain": [0, 12.566370614359172]})j";
+
+// checks: a "law" curve file reads to the law (exact values) plus a stand-in NURBS within
+// kLawCurveTolerance, and writes back the same members.
+TEST(JsonCurveLaw, ReadsLawKind) {
+  const CurveFile f = parse_curve_json(kHelixLaw);
+  EXPECT_EQ(f.kind, CurveKind::Law);
+  ASSERT_TRUE(f.law.has_value());
+  EXPECT_EQ(f.law->law.dimension(), 3);
+  EXPECT_LE(f.law->approximation_deviation, kLawCurveTolerance);
+  EXPECT_NEAR(f.curve.evaluate(1.0).x, 2 * std::cos(1.0), 1e-6);
+  const Json back = law_to_json(*f.law);
+  EXPECT_EQ(back["kind"], "law");
+  EXPECT_EQ(back["expression"], "vec(2*cos(t), 2*sin(t), 0.5*t)");
+  EXPECT_EQ(back["domain"][1], 12.566370614359172);
+  const CurveFile g =
+      parse_curve_json(R"j({"kind": "law", "expression": "vec(u, u^2)", "parameter": "u", "domain": [0, 1]})j");
+  EXPECT_EQ(g.curve.dimension(), 2);
+}
+
+// checks: bad law files: expression errors keep line/column under field "expression"; scalar laws,
+// bad domains and laws undefined inside the domain are rejected naming the member.
+TEST(JsonCurveLaw, Errors) {
+  HULA_EXPECT_ERROR(parse_curve_json(R"j({"kind": "law", "expression": "vec(t, sin(t)", "domain": [0, 1]})j"),
+                    Errc::ParseError, "expression: line 1, column 14: expected ',' or ')'");
+  HULA_EXPECT_ERROR(parse_curve_json(R"j({"kind": "law", "expression": "sin(t)", "domain": [0, 1]})j"),
+                    Errc::ParseError, "a law curve must be a 2- or 3-vector");
+  HULA_EXPECT_ERROR(parse_curve_json(R"j({"kind": "law", "expression": "vec(t, t)", "domain": [1, 0]})j"),
+                    Errc::ParseError, "domain must be [start, end] with start < end");
+  HULA_EXPECT_ERROR(parse_curve_json(R"j({"kind": "law", "expression": "vec(t, u)", "domain": [0, 1]})j"),
+                    Errc::ParseError, "unknown identifier 'u'");
+  HULA_EXPECT_ERROR(parse_curve_json(R"j({"kind": "law", "expression": "vec(t, log(t))", "domain": [-1, 1]})j"),
+                    Errc::InvalidArgument, "undefined at t = -1");
+  HULA_EXPECT_ERROR(parse_curve_json(R"j({"kind": "law", "domain": [0, 1]})j"), Errc::ParseError, "expression");
 }
 
 }  // namespace

@@ -11,12 +11,14 @@
 #include <CLI/CLI.hpp>
 #include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "hula/core/vec.hpp"
 #include "hula/io/json_curve.hpp"
+#include "hula/law/expr.hpp"
 #include "hula/nurbs/interpolate.hpp"
 #include "hula/nurbs/nurbs_curve.hpp"
 
@@ -92,6 +94,15 @@ struct Command {
 [[nodiscard]] Command add_interpolate(CLI::App& app);
 /// `hula eval`: positions and derivatives at parameters.
 [[nodiscard]] Command add_eval(CLI::App& app);
+/// `hula law`: evaluate, differentiate and analyse a law expression.
+[[nodiscard]] Command add_law(CLI::App& app);
+/// Values and derivatives 0..order of a law at parameters: result[i][k * dimension + c].
+/// @throws hula::Error(Errc::OutOfDomain) naming `parameter[i]` where a value is undefined
+[[nodiscard]] std::vector<std::vector<double>> law_derivatives(const law::Law& law, const std::string& parameter,
+                                                               std::span<const double> ts, int order);
+/// {"t", "derivatives": [[...], ...]} entries (the `hula eval` shape; scalars as one-element arrays).
+[[nodiscard]] Json law_results_to_json(std::span<const double> ts, const std::vector<std::vector<double>>& values,
+                                       int dimension, int order);
 /// `hula info`: the analysis of a curve file.
 [[nodiscard]] Command add_info(CLI::App& app);
 /// `hula demo`: the thesis's example curves (also the default command).

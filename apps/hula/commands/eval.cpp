@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // `hula eval`: positions and derivatives of a curve file at given parameters,
 // as {"results": [{"t": t, "derivatives": [[C], [C'], ...]}]}.
+#include <algorithm>
 #include <memory>
 
 #include "commands/common.hpp"
@@ -27,9 +28,32 @@ int run_eval(const EvalArgs& a) {
       a.extrapolate ? nurbs::Domain::Extrapolate : (a.clamp ? nurbs::Domain::Clamp : nurbs::Domain::Strict);
   const auto per_t = static_cast<std::size_t>(a.derivatives) + 1;
   std::vector<Vec3> out(ts.size() * per_t);
-  // The batch form names the index of a bad parameter ("t[2] = 1.5 is outside ...").
-  file.curve.derivatives(ts, a.derivatives, out, options);
+  if (!file.law) {
+    // The batch form names the index of a bad parameter ("t[2] = 1.5 is outside ...").
+    file.curve.derivatives(ts, a.derivatives, out, options);
+  }
 
+  if (file.law) {
+    // Law curves are evaluated exactly from the law, not from their stand-in NURBS.
+    const io::LawCurve& lc = *file.law;
+    std::vector<double> us = ts;
+    for (std::size_t i = 0; i < us.size(); ++i) {
+      if (lc.domain.contains(us[i]) || options.domain == nurbs::Domain::Extrapolate) continue;
+      if (options.domain == nurbs::Domain::Clamp) {
+        us[i] = std::clamp(us[i], lc.domain.start, lc.domain.end);
+        continue;
+      }
+      throw Error(Errc::OutOfDomain,
+                  "t[" + std::to_string(i) + "] = " + format_number(us[i]) + " is outside the domain [" +
+                      format_number(lc.domain.start) + ", " + format_number(lc.domain.end) + "]",
+                  ErrorWhere{.field = "t", .index = i});
+    }
+    Json doc = Json::object();
+    doc["results"] = law_results_to_json(ts, law_derivatives(lc.law, lc.parameter, us, a.derivatives),
+                                         lc.law.dimension(), a.derivatives);
+    print_json(doc);
+    return kExitOk;
+  }
   const int dim = file.curve.dimension();
   Json results = Json::array();
   for (std::size_t i = 0; i < ts.size(); ++i) {

@@ -17,6 +17,13 @@ int run_info(const std::string& path) {
   const Json analysis = analyse(file.curve);
   for (const auto& [key, value] : analysis.items()) doc[key] = value;
   if (file.inputs) doc["inputs"] = io::interpolated_to_json(*file.inputs);
+  if (file.law) {
+    // The analysis above is of the stand-in NURBS; say what it stands for and how closely.
+    Json l = io::law_to_json(*file.law);
+    l.erase("kind");
+    l["approximation_deviation"] = file.law->approximation_deviation;
+    doc["law"] = std::move(l);
+  }
   print_json(doc);
   return kExitOk;
 }

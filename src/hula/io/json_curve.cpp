@@ -12,6 +12,8 @@
 #include "hula/core/error.hpp"
 #include "hula/io/atomic_file.hpp"
 #include "hula/io/detail/json_read.hpp"
+#include "hula/law/convert.hpp"
+#include "hula/law/parser.hpp"
 
 namespace hula::io {
 
@@ -26,6 +28,8 @@ std::string_view curve_kind_name(CurveKind kind) noexcept {
       return "bezier";
     case CurveKind::Interpolated:
       return "interpolated";
+    case CurveKind::Law:
+      return "law";
   }
   return "nurbs";
 }
@@ -107,7 +111,7 @@ CurveFile read_nurbs(const Json& doc) {
     weights = detail::get_number_array(*w, root_path("weights"));
   nurbs::NurbsCurve curve(static_cast<int>(degree), std::move(knots), std::move(cps.points), std::move(weights),
                           cps.dimension);
-  return CurveFile{std::move(curve), CurveKind::Nurbs, std::nullopt};
+  return CurveFile{std::move(curve), CurveKind::Nurbs, std::nullopt, std::nullopt};
 }
 
 CurveFile read_bezier(const Json& doc) {
@@ -132,7 +136,7 @@ CurveFile read_bezier(const Json& doc) {
                 {.field = "control_points"});
   nurbs::NurbsCurve curve(static_cast<int>(n - 1), std::move(knots), std::move(cps.points), std::move(weights),
                           cps.dimension);
-  return CurveFile{std::move(curve), CurveKind::Bezier, std::nullopt};
+  return CurveFile{std::move(curve), CurveKind::Bezier, std::nullopt, std::nullopt};
 }
 
 CurveFile read_interpolated(const Json& doc) {
@@ -168,7 +172,7 @@ CurveFile read_interpolated(const Json& doc) {
   if (const Json* s = detail::optional_member(doc, "start")) in.start = end_condition_from_json(*s, "start");
   if (const Json* e = detail::optional_member(doc, "end")) in.end = end_condition_from_json(*e, "end");
   nurbs::NurbsCurve curve = resolve(in, from_knots ? "knots" : "parameters");
-  return CurveFile{std::move(curve), CurveKind::Interpolated, std::move(in)};
+  return CurveFile{std::move(curve), CurveKind::Interpolated, std::move(in), std::nullopt};
 }
 
 }  // namespace
@@ -219,15 +223,73 @@ nurbs::NurbsCurve resolve(const InterpolationInputs& inputs, std::string_view pa
   }
 }
 
+namespace {
+CurveFile read_law(const Json& doc) {
+  const JsonPath root;
+  LawCurve lc;
+  lc.expression = detail::get_string(detail::require_member(doc, root, "expression"), root_path("expression"));
+  if (const Json* p = detail::optional_member(doc, "parameter"))
+    lc.parameter = detail::get_string(*p, root_path("parameter"));
+  const std::vector<double> dom =
+      detail::get_number_array(detail::require_member(doc, root, "domain"), root_path("domain"));
+  if (dom.size() != 2 || !(dom[0] < dom[1]))
+    throw Error(Errc::ParseError,
+                "domain must be [start, end] with start < end, got " + detail::describe(doc["domain"]),
+                {.field = "domain"});
+  lc.domain = {dom[0], dom[1]};
+  law::ParseOptions options;
+  options.parameters = {lc.parameter};
+  law::Context ctx;
+  try {
+    options.validate();
+    lc.law = law::parse(lc.expression, ctx, options);
+  } catch (const Error& e) {
+    ErrorWhere where = e.where();
+    where.field = "expression";
+    throw Error(Errc::ParseError, "expression: " + e.message(), where);
+  }
+  if (lc.law.dimension() == 1)
+    throw Error(Errc::ParseError, "expression: a law curve must be a 2- or 3-vector (vec(x, y[, z])), got a scalar",
+                {.field = "expression"});
+  law::ToNurbsOptions to;
+  to.tolerance = kLawCurveTolerance;
+  law::ToNurbsResult approx = [&] {
+    try {
+      return law::to_nurbs(lc.law, lc.parameter, lc.domain.start, lc.domain.end, to);
+    } catch (const Error& e) {
+      // A law undefined inside its own domain is a bad file, not a numerical failure.
+      if (e.code() != Errc::NumericalFailure || e.message().find("undefined") == std::string::npos) throw;
+      throw Error(Errc::InvalidArgument,
+                  "domain: " + e.message() + " (inside the domain [" + format_number(lc.domain.start) + ", " +
+                      format_number(lc.domain.end) + "])",
+                  {.field = "domain"});
+    }
+  }();
+  lc.approximation_deviation = approx.max_deviation;
+  return CurveFile{std::move(approx.curve), CurveKind::Law, std::nullopt, std::move(lc)};
+}
+}  // namespace
+
+Json law_to_json(const LawCurve& curve) {
+  Json doc = Json::object();
+  doc["kind"] = "law";
+  doc["expression"] = curve.expression;
+  doc["parameter"] = curve.parameter;
+  doc["domain"] = Json::array({curve.domain.start, curve.domain.end});
+  return doc;
+}
+
 CurveFile curve_from_json(const Json& document) {
   if (!document.is_object()) detail::type_error(document, JsonPath{}, "a JSON object with a \"kind\" member");
   const std::string kind = detail::get_string(detail::require_member(document, JsonPath{}, "kind"), root_path("kind"));
   if (kind == "nurbs") return read_nurbs(document);
   if (kind == "bezier") return read_bezier(document);
   if (kind == "interpolated") return read_interpolated(document);
-  throw Error(Errc::ParseError,
-              "kind = \"" + kind + "\" is not a known curve kind (expected \"nurbs\", \"bezier\" or \"interpolated\")",
-              {.field = "kind"});
+  if (kind == "law") return read_law(document);
+  throw Error(
+      Errc::ParseError,
+      "kind = \"" + kind + "\" is not a known curve kind (expected \"nurbs\", \"bezier\", \"interpolated\" or \"law\")",
+      {.field = "kind"});
 }
 
 CurveFile parse_curve_json(std::string_view text) {

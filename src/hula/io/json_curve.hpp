@@ -10,6 +10,8 @@
 //    "parameterisation": "uniform" | "chord" | "centripetal",
 //    "parameters": [...]?, "knots": [...]?, "start": END, "end": END}
 //      END = "natural" | "bessel" | "not-a-knot" | "occt" | {"tangent": [x, y, z]}
+//   {"kind": "law", "expression": "vec(2*cos(t), 2*sin(t), 0.5*t)", "parameter": "t",
+//    "domain": [t0, t1]}   (a 2- or 3-vector law; grammar in docs/formats.md)
 //
 // 2-D points ([x, y]) give a 2-D curve (dimension 2) and are written back as
 // [x, y]. Members not listed here are ignored, so files written by a newer
@@ -27,6 +29,7 @@
 #include <vector>
 
 #include "hula/core/vec.hpp"
+#include "hula/law/expr.hpp"
 #include "hula/nurbs/interpolate.hpp"
 #include "hula/nurbs/nurbs_curve.hpp"
 
@@ -40,6 +43,24 @@ enum class CurveKind {
   Nurbs,         ///< "nurbs": degree, full knot vector, control points, optional weights
   Bezier,        ///< "bezier": control points (degree = count - 1), optional weights
   Interpolated,  ///< "interpolated": data points and end conditions, resolved by interpolate_cubic
+  Law,           ///< "law": a vector law (expression text) of one parameter on a domain
+};
+
+/// Tolerance of the NURBS that stands in for a law curve (CurveFile::curve) in tools that need one.
+inline constexpr double kLawCurveTolerance = 1e-6;
+
+/// A "law" curve file after reading: the expression, compiled in its own context.
+struct LawCurve {
+  /// The expression as stored in the file.
+  std::string expression;
+  /// The parameter name ("parameter", default "t").
+  std::string parameter = "t";
+  /// The domain [start, end], start < end.
+  nurbs::Interval domain{};
+  /// The parsed law (2- or 3-vector), owned by its context.
+  law::Law law{};
+  /// max |law(t) − curve(t)| of the stand-in NURBS (≤ kLawCurveTolerance), by dense sampling.
+  double approximation_deviation = 0.0;
 };
 
 /// The file name of a kind: "nurbs", "bezier" or "interpolated".
@@ -81,6 +102,9 @@ struct CurveFile {
   CurveKind kind = CurveKind::Nurbs;
   /// For CurveKind::Interpolated, the inputs as stored; empty otherwise.
   std::optional<InterpolationInputs> inputs;
+  /// For CurveKind::Law, the law (exact: evaluate it rather than `curve` when possible);
+  /// `curve` is then law::to_nurbs of it within kLawCurveTolerance.
+  std::optional<LawCurve> law;
 };
 
 /// Parses an END value: "natural", "bessel", "not-a-knot", "occt" or {"tangent": [x, y(, z)]}.
@@ -110,6 +134,10 @@ struct CurveFile {
 ///   than 2 or more than kMaxDegree + 1 control points
 /// @throws hula::Error from the kernel (InvalidKnots, InvalidDegree, InvalidWeight, ...)
 ///   with its own field / index (e.g. field "knots", the index of the decreasing knot)
+/// @throws for "law" files: hula::Error(Errc::ParseError) with field "expression", line and
+///   column for a bad expression (or a scalar law), field "domain" for a domain that is not two
+///   finite numbers start < end; hula::Error(Errc::NumericalFailure) naming the parameter value
+///   where the law is undefined on its domain
 [[nodiscard]] CurveFile curve_from_json(const Json& document);
 /// Parses curve-file text; as curve_from_json, plus ParseError with line/column for bad JSON.
 [[nodiscard]] CurveFile parse_curve_json(std::string_view text);
@@ -123,6 +151,8 @@ struct CurveFile {
 /// The "interpolated" kind document of interpolation inputs ("parameters"
 /// written only when given).
 [[nodiscard]] Json interpolated_to_json(const InterpolationInputs& inputs);
+/// The "law" kind document of a law curve: kind, expression, parameter, domain.
+[[nodiscard]] Json law_to_json(const LawCurve& curve);
 /// Serialises a document as the files are written: 2-space indentation, final newline.
 [[nodiscard]] std::string to_file_text(const Json& document);
 /// Writes a curve as a "nurbs" file, atomically.

@@ -1,0 +1,197 @@
+// SPDX-License-Identifier: MIT
+// `hula law EXPR`: evaluate, differentiate and analyse a law expression given
+// on the command line (grammar in docs/formats.md), with JSON output. Values
+// at --at have the shape of `hula eval` ({"results": [{"t", "derivatives":
+// [[value], [first], ...]}]}, scalars as one-element arrays); also, on request,
+// the printed N-th derivative, all roots, the extrema and the integral on an
+// interval. Shared with `hula eval` for law curve files: law_derivatives().
+#include <memory>
+#include <string>
+
+#include "commands/common.hpp"
+#include "hula/core/error.hpp"
+#include "hula/law/antiderivative.hpp"
+#include "hula/law/derive.hpp"
+#include "hula/law/parser.hpp"
+#include "hula/law/roots.hpp"
+#include "hula/law/singularities.hpp"
+#include "hula/law/tape.hpp"
+
+namespace hula::cli {
+
+std::vector<std::vector<double>> law_derivatives(const law::Law& l, const std::string& parameter,
+                                                 std::span<const double> ts, int order) {
+  const std::vector<law::Law> laws = law::derivatives(l, parameter, order);
+  const std::string in[1] = {parameter};
+  const law::Tape tape = law::Tape::compile(laws, in);
+  std::vector<std::vector<double>> out;
+  law::Workspace w = tape.make_workspace();
+  for (std::size_t i = 0; i < ts.size(); ++i) {
+    std::vector<double> v(tape.output_count());
+    if (!tape.evaluate(ts.subspan(i, 1), v, w)) {
+      // Name the innermost undefined subexpression (of the law or of the derivative that failed).
+      std::string why;
+      for (const law::Law& d : laws)
+        if (auto cause = law::explain_undefined(d, parameter, ts[i])) {
+          why = " (" + cause->expression + ": " + cause->reason + ")";
+          break;
+        }
+      throw Error(Errc::OutOfDomain,
+                  parameter + "[" + std::to_string(i) + "] = " + format_number(ts[i]) +
+                      (order == 0 ? std::string(": the law is undefined there")
+                                  : ": the law or one of its first " + std::to_string(order) +
+                                        " derivatives is undefined there") +
+                      why,
+                  ErrorWhere{.field = parameter, .index = i});
+    }
+    out.push_back(std::move(v));
+  }
+  return out;
+}
+
+Json law_results_to_json(std::span<const double> ts, const std::vector<std::vector<double>>& values, int dimension,
+                         int order) {
+  Json results = Json::array();
+  const auto d = static_cast<std::size_t>(dimension);
+  for (std::size_t i = 0; i < ts.size(); ++i) {
+    Json ders = Json::array();
+    for (std::size_t k = 0; k <= static_cast<std::size_t>(order); ++k) {
+      Json v = Json::array();
+      for (std::size_t c = 0; c < d; ++c) v.push_back(values[i][k * d + c]);
+      ders.push_back(std::move(v));
+    }
+    Json r = Json::object();
+    r["t"] = ts[i];
+    r["derivatives"] = std::move(ders);
+    results.push_back(std::move(r));
+  }
+  return results;
+}
+
+namespace {
+
+struct LawArgs {
+  std::string expression;
+  std::string parameter = "t";
+  std::string at;
+  int derivatives = 0;
+  int print_derivative = -1;
+  std::string roots;
+  std::string extrema;
+  std::string integrate;
+};
+
+std::pair<double, double> interval(const std::string& text, const char* field) {
+  const std::vector<double> v = parse_number_list(text, field);
+  if (v.size() != 2 || !(v[0] < v[1]))
+    throw Error(Errc::InvalidArgument, std::string("--") + field + " must be a,b with a < b, got '" + text + "'",
+                ErrorWhere{.field = field});
+  return {v[0], v[1]};
+}
+
+const char* kind_name(law::ExtremumKind k) {
+  switch (k) {
+    case law::ExtremumKind::Minimum:
+      return "minimum";
+    case law::ExtremumKind::Maximum:
+      return "maximum";
+    case law::ExtremumKind::Stationary:
+      return "stationary";
+  }
+  return "?";
+}
+
+Json extremum_json(const law::Extremum& e) {
+  Json j = Json::object();
+  j["t"] = e.t;
+  j["value"] = e.value;
+  j["kind"] = kind_name(e.kind);
+  return j;
+}
+
+void require_scalar(const law::Law& l, const char* option) {
+  if (l.dimension() != 1)
+    throw Error(Errc::InvalidArgument,
+                std::string("--") + option + " needs a scalar law, got a " + std::to_string(l.dimension()) + "-vector",
+                ErrorWhere{.field = option});
+}
+
+int run_law(const LawArgs& a) {
+  law::Context ctx;
+  law::ParseOptions po;
+  po.parameters = {a.parameter};
+  const law::Law l = law::parse(a.expression, ctx, po);
+  Json doc = Json::object();
+  doc["expression"] = law::print(l);
+  doc["parameter"] = a.parameter;
+  doc["dimension"] = l.dimension();
+  if (!a.at.empty()) {
+    const std::vector<double> ts = parse_number_list(a.at, a.parameter);
+    doc["results"] =
+        law_results_to_json(ts, law_derivatives(l, a.parameter, ts, a.derivatives), l.dimension(), a.derivatives);
+  }
+  if (a.print_derivative >= 0) {
+    Json d = Json::object();
+    d["order"] = a.print_derivative;
+    d["expression"] = law::print(law::derivative(l, a.parameter, a.print_derivative));
+    doc["derivative"] = std::move(d);
+  }
+  if (!a.roots.empty()) {
+    require_scalar(l, "roots");
+    const auto [lo, hi] = interval(a.roots, "roots");
+    Json r = Json::object();
+    r["interval"] = Json::array({lo, hi});
+    Json list = Json::array();
+    for (double t : law::roots(l, a.parameter, lo, hi)) list.push_back(t);
+    r["roots"] = std::move(list);
+    doc["roots"] = std::move(r);
+  }
+  if (!a.extrema.empty()) {
+    require_scalar(l, "extrema");
+    const auto [lo, hi] = interval(a.extrema, "extrema");
+    const law::ExtremaResult e = law::extrema(l, a.parameter, lo, hi);
+    Json r = Json::object();
+    r["interval"] = Json::array({lo, hi});
+    Json pts = Json::array();
+    for (const auto& p : e.points) pts.push_back(extremum_json(p));
+    r["points"] = std::move(pts);
+    r["minimum"] = extremum_json(e.minimum);
+    r["maximum"] = extremum_json(e.maximum);
+    doc["extrema"] = std::move(r);
+  }
+  if (!a.integrate.empty()) {
+    require_scalar(l, "integrate");
+    const auto [lo, hi] = interval(a.integrate, "integrate");
+    const law::DefiniteIntegralResult r = law::definite_integral(l, a.parameter, lo, hi);
+    Json j = Json::object();
+    j["interval"] = Json::array({lo, hi});
+    j["value"] = r.value;
+    j["error_estimate"] = r.error_estimate;
+    j["method"] = r.method == law::IntegralMethod::Symbolic ? "symbolic" : "numeric";
+    j["converged"] = r.converged;
+    if (r.method == law::IntegralMethod::Symbolic) j["antiderivative"] = law::print(r.antiderivative);
+    doc["integral"] = std::move(j);
+  }
+  print_json(doc);
+  return kExitOk;
+}
+
+}  // namespace
+
+Command add_law(CLI::App& app) {
+  auto args = std::make_shared<LawArgs>();
+  CLI::App* sub = app.add_subcommand("law", "Evaluate, differentiate and analyse a law expression");
+  sub->add_option("expression", args->expression, "Law expression, e.g. 'vec(2*cos(t), 2*sin(t), 0.5*t)'")->required();
+  sub->add_option("--parameter", args->parameter, "Parameter name (default t)");
+  sub->add_option("--at", args->at, "Parameters t0,t1,... at which to evaluate");
+  sub->add_option("--derivatives", args->derivatives, "Highest derivative order N in [0, 16] for --at (default 0)")
+      ->check(CLI::Range(0, 16));
+  sub->add_option("--print-derivative", args->print_derivative, "Print the N-th derivative expression, N in [0, 8]")
+      ->check(CLI::Range(0, 8));
+  sub->add_option("--roots", args->roots, "All roots on a,b (scalar laws)");
+  sub->add_option("--extrema", args->extrema, "Extrema on a,b (scalar laws)");
+  sub->add_option("--integrate", args->integrate, "Integral over a,b (scalar laws): symbolic when possible");
+  return {sub, [args] { return run_law(*args); }};
+}
+
+}  // namespace hula::cli

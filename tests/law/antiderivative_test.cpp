@@ -1,0 +1,109 @@
+// SPDX-License-Identifier: MIT
+// Symbolic antiderivatives: d/dt F = f (exact symbolic derivative, checked at
+// sample points to 1e-12) for polynomials, piecewise polynomials, linear-argument
+// trig/exp/power forms and vectors; continuity at piecewise switches; definite
+// integrals against closed forms; and the numeric fallback (with its accuracy)
+// for forms without a closed form.
+#include "hula/law/antiderivative.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "hula/law/derive.hpp"
+#include "hula/law/parser.hpp"
+#include "hula/testing/fpe.hpp"
+#include "law_test_util.hpp"
+
+namespace hula::law {
+namespace {
+
+using test::eval;
+
+// checks: F' = f at sample points for every supported closed form (against the integrand itself).
+TEST(LawAntiderivative, DerivativeGivesBackTheIntegrand) {
+  struct Case {
+    const char* f;
+    double lo, hi;
+  };
+  const Case cases[] = {
+      {"3*t^2 - 2*t + 1", -2, 2},
+      {"(t - 1)*(t + 2)^3", -2, 2},
+      {"t^7", -1.5, 1.5},
+      {"sin(2*t + 1)", -3, 3},
+      {"cos(3*t)", -3, 3},
+      {"exp(0.5*t - 1)", -3, 3},
+      {"5*sin(t) + 2*exp(t) - t/4", -3, 3},
+      {"1/(2*t + 1)", 0, 3},
+      {"(2*t + 1)^-2", 0, 3},
+      {"(2*t + 1)^2.5", 0, 3},
+      {"sqrt(3*t + 1)", 0, 3},
+      {"abs(2*t - 1)", -2, 2},
+      {"tan(t/2)", -2, 2},
+      {"sinh(2*t) + cosh(t)", -2, 2},
+      {"piecewise(t < 1, t^2, 2 - t)", -2, 3},
+      {"piecewise(2*t + 1 >= 0, sin(t), t^3)", -2, 3},
+      {"vec(cos(t), sin(t), 0.5*t)", -3, 3},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.f);
+    Context ctx;
+    const Law f = parse(c.f, ctx);
+    const auto F = antiderivative(f, "t");
+    ASSERT_TRUE(F.has_value());
+    const Law dF = derivative(*F, "t");
+    for (int i = 0; i <= 20; ++i) {
+      const double t = c.lo + (c.hi - c.lo) * (i + 0.31) / 21.0;
+      const auto want = eval(f, t);
+      const auto got = eval(dF, t);
+      for (std::size_t k = 0; k < want.size(); ++k)
+        EXPECT_NEAR(got[k], want[k], 1e-12 * (1 + std::fabs(want[k]))) << "t = " << t;
+    }
+  }
+}
+
+// checks: the antiderivative of a piecewise law is continuous at the switch (left and right limits agree).
+TEST(LawAntiderivative, PiecewiseIsContinuous) {
+  Context ctx;
+  const auto F = antiderivative(parse("piecewise(t < 1, t^2, 2 - t)", ctx), "t");
+  ASSERT_TRUE(F);
+  EXPECT_NEAR(test::eval1(*F, 1 - 1e-12), test::eval1(*F, 1 + 1e-12), 1e-11);
+}
+
+// checks: definite integrals by the symbolic path against closed forms, with a rounding-size error estimate.
+TEST(LawAntiderivative, DefiniteSymbolic) {
+  Context ctx;
+  auto check = [&](const char* f, double a, double b, double want) {
+    SCOPED_TRACE(f);
+    const DefiniteIntegralResult r = definite_integral(parse(f, ctx), "t", a, b);
+    EXPECT_EQ(r.method, IntegralMethod::Symbolic);
+    EXPECT_TRUE(r.converged);
+    EXPECT_NEAR(r.value, want, 1e-13 * (1 + std::fabs(want)));
+    EXPECT_LE(r.error_estimate, 1e-13 * (1 + std::fabs(want)));
+  };
+  check("t^3", 0, 2, 4.0);
+  check("sin(t)", 0, 3.141592653589793, 2.0);
+  check("exp(2*t)", 0, 1, (std::exp(2.0) - 1) / 2);
+  check("piecewise(t < 1, t^2, 2 - t)", 0, 2, 1.0 / 3 + 0.5);
+  check("1/t", 1, std::exp(1.0), 1.0);
+}
+
+// checks: forms without a closed form use quadrature and report its accuracy (Fresnel S(1), erf);
+// a pole inside the interval never goes through the symbolic path.
+TEST(LawAntiderivative, NumericFallback) {
+  testing::FpeGuard guard;
+  Context ctx;
+  EXPECT_FALSE(antiderivative(parse("sin(t^2)", ctx), "t").has_value());
+  const DefiniteIntegralResult s = definite_integral(parse("sin(pi*t^2/2)", ctx), "t", 0, 1);
+  EXPECT_EQ(s.method, IntegralMethod::Numeric);
+  EXPECT_TRUE(s.converged);
+  EXPECT_NEAR(s.value, 0.43825914739035476607, 1e-12);
+  EXPECT_GT(s.error_estimate, 0.0);
+  EXPECT_LT(s.error_estimate, 1e-12);
+  const DefiniteIntegralResult p = definite_integral(parse("1/t", ctx), "t", -1, 2);
+  EXPECT_EQ(p.method, IntegralMethod::Numeric);
+  EXPECT_FALSE(p.converged);  // divergent: said so, not a log|t| difference
+}
+
+}  // namespace
+}  // namespace hula::law
