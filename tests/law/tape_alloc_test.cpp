@@ -5,29 +5,12 @@
 // NURBS leaf.
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstdlib>
-#include <new>
 #include <vector>
 
 #include "hula/law/parser.hpp"
 #include "hula/law/tape.hpp"
 #include "hula/nurbs/interpolate.hpp"
-
-// The replacement operators pair malloc with free; GCC cannot see that through inlining.
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-
-namespace {
-std::atomic<long> g_allocations{0};
-}
-
-void* operator new(std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+#include "hula/testing/counting_allocator.hpp"
 
 namespace hula::law {
 namespace {
@@ -47,11 +30,11 @@ TEST(LawTapeAlloc, EvaluationDoesNotAllocate) {
   Workspace w = ev.tape().make_workspace();
   std::vector<double> raw(ts.size() * ev.tape().output_count());
   std::vector<std::uint8_t> ok(ts.size());
-  const long before = g_allocations.load();
+  const long before = testing::allocation_count();
   EXPECT_EQ(ev.derivatives(ts, out), 0U);
   EXPECT_EQ(ev.tape().evaluate(ts, raw, w, ok), 0U);
   for (double x : ts) (void)ev.tape().evaluate(std::span<const double>(&x, 1), std::span<double>(raw.data(), 12), w);
-  EXPECT_EQ(g_allocations.load() - before, 0);
+  EXPECT_EQ(testing::allocation_count() - before, 0);
 }
 
 }  // namespace
