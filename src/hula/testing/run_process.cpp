@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// posix_spawn-based run_process (see run_process.hpp).
+// posix_spawn-based run_process and start_process (see run_process.hpp).
 #include "hula/testing/run_process.hpp"
 
 #include <fcntl.h>
@@ -8,12 +8,14 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <csignal>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 extern char** environ;
 
@@ -39,8 +41,45 @@ std::string slurp_and_remove(const std::string& path) {
 
 }  // namespace
 
-ProcessResult run_process(const std::string& program, const std::vector<std::string>& args) {
-  const std::string out_path = temp_name("out"), err_path = temp_name("err");
+RunningProcess::RunningProcess(pid_t pid, std::string out_path, std::string err_path)
+    : pid_(pid), out_path_(std::move(out_path)), err_path_(std::move(err_path)) {}
+
+RunningProcess::~RunningProcess() {
+  if (waited_) return;
+  ::kill(pid_, SIGKILL);
+  int status = 0;
+  while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+  }
+  std::error_code ec;
+  std::filesystem::remove(out_path_, ec);
+  std::filesystem::remove(err_path_, ec);
+}
+
+std::string RunningProcess::err_so_far() const {
+  std::ifstream in(err_path_, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+bool RunningProcess::send(int signal) const noexcept { return ::kill(pid_, signal) == 0; }
+
+ProcessResult RunningProcess::wait() {
+  if (waited_) throw std::runtime_error("RunningProcess::wait called twice");
+  int status = 0;
+  while (::waitpid(pid_, &status, 0) < 0) {
+    if (errno != EINTR) throw std::runtime_error("waitpid failed: " + std::string(std::strerror(errno)));
+  }
+  waited_ = true;
+  ProcessResult result;
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  result.out = slurp_and_remove(out_path_);
+  result.err = slurp_and_remove(err_path_);
+  return result;
+}
+
+RunningProcess start_process(const std::string& program, const std::vector<std::string>& args) {
+  std::string out_path = temp_name("out"), err_path = temp_name("err");
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
@@ -62,15 +101,11 @@ ProcessResult run_process(const std::string& program, const std::vector<std::str
     std::filesystem::remove(err_path);
     throw std::runtime_error("cannot start " + program + ": " + std::strerror(rc));
   }
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0) {
-    if (errno != EINTR) throw std::runtime_error("waitpid failed: " + std::string(std::strerror(errno)));
-  }
-  ProcessResult result;
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  result.out = slurp_and_remove(out_path);
-  result.err = slurp_and_remove(err_path);
-  return result;
+  return RunningProcess(pid, std::move(out_path), std::move(err_path));
+}
+
+ProcessResult run_process(const std::string& program, const std::vector<std::string>& args) {
+  return start_process(program, args).wait();
 }
 
 }  // namespace hula::testing

@@ -3,6 +3,8 @@
 // tests that drive the `hula` binary (CLI contract tests, golden CLI output).
 #pragma once
 
+#include <sys/types.h>
+
 #include <string>
 #include <vector>
 
@@ -15,6 +17,36 @@ struct ProcessResult {
   std::string out;  ///< everything written to stdout
   std::string err;  ///< everything written to stderr
 };
+
+/// A program started by start_process and still running: its stdout and
+/// stderr go to temporary files that can be read while it runs (e.g. to wait
+/// for a "ready" line before sending it a signal).
+class RunningProcess {
+ public:
+  RunningProcess(pid_t pid, std::string out_path, std::string err_path);
+  /// Kills (SIGKILL) and reaps the process if wait() was not called, and removes the files.
+  ~RunningProcess();
+  RunningProcess(const RunningProcess&) = delete;
+  RunningProcess& operator=(const RunningProcess&) = delete;
+
+  [[nodiscard]] pid_t pid() const noexcept { return pid_; }
+  /// What the process has written to stderr so far.
+  [[nodiscard]] std::string err_so_far() const;
+  /// Sends a signal (e.g. SIGINT). @returns false if kill() failed.
+  bool send(int signal) const noexcept;
+  /// Waits for the process to end and collects its output (once).
+  /// @throws std::runtime_error if waitpid fails or wait() was already called
+  [[nodiscard]] ProcessResult wait();
+
+ private:
+  pid_t pid_;
+  std::string out_path_, err_path_;
+  bool waited_ = false;
+};
+
+/// Starts `program` with `args` as run_process does, without waiting.
+/// @throws std::runtime_error if the program cannot be started
+[[nodiscard]] RunningProcess start_process(const std::string& program, const std::vector<std::string>& args);
 
 /// Runs `program` with `args` (argv[1..]) via posix_spawn, stdin from /dev/null,
 /// stdout and stderr captured through temporary files, and waits for it.
