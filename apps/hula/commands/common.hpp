@@ -107,6 +107,8 @@ struct Command {
 [[nodiscard]] Command add_info(CLI::App& app);
 /// `hula demo`: the thesis's example curves (also the default command).
 [[nodiscard]] Command add_demo(CLI::App& app);
+/// `hula optimise`: a GA, NSGA-II or pagmo2 algorithm on a test problem or problem file.
+[[nodiscard]] Command add_optimise(CLI::App& app);
 /// Runs the demo and prints its JSON.
 int run_demo();
 

@@ -1,0 +1,427 @@
+// SPDX-License-Identifier: MIT
+// `hula optimise`: runs a Flexo algorithm (binary or real-coded GA, NSGA-II)
+// or one of pagmo2's through the adapter on a built-in test problem or a
+// problem file (io/problem_file.hpp), and
+// prints the best solution (one objective) or the final non-dominated front
+// with its hypervolume (several objectives) and the run report (issue 5,
+// thesis appendix 1.5 "flexible optimisation wheel").
+//
+// Ctrl-C (SIGINT) sets a CancellationToken from an async-signal-safe handler
+// (one lock-free atomic store); the algorithm notices it between generations
+// and returns the best so far with termination "Cancelled". `--time` sets the
+// wall-time stop criterion the same way. The handler is installed with
+// SA_RESETHAND, so a second Ctrl-C ends the process at once.
+#include <signal.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <iostream>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "commands/common.hpp"
+#include "hula/core/error.hpp"
+#include "hula/io/atomic_file.hpp"
+#include "hula/io/problem_file.hpp"
+#include "hula/optim/ga.hpp"
+#include "hula/optim/nsga2.hpp"
+#include "hula/optim/pagmo_adapter.hpp"
+#include "hula/optim/pareto.hpp"
+#include "hula/optim/run_log.hpp"
+#include "hula/optim/test_problems.hpp"
+
+namespace hula::cli {
+
+namespace {
+
+using optim::Problem;
+using optim::RunReport;
+using optim::Solution;
+
+struct OptimiseArgs {
+  std::string problem;
+  std::string problem_file;
+  std::size_t dimension = 0;
+  std::size_t objectives = 0;
+  std::string algorithm;
+  std::optional<std::size_t> population;
+  std::optional<std::size_t> generations;
+  std::optional<std::size_t> evaluations;
+  std::uint64_t seed = 0;
+  std::size_t threads = 1;
+  std::optional<double> crossover;
+  std::optional<double> mutation;
+  std::optional<std::string> lower;
+  std::optional<std::string> upper;
+  std::optional<double> precision;
+  std::optional<std::string> boost;
+  std::optional<double> time;
+  std::optional<std::string> log;
+  std::optional<std::string> reference;
+  bool progress = false;
+};
+
+// The token the SIGINT handler sets. A lock-free atomic store is
+// async-signal-safe; a lock-based one would not be.
+static_assert(std::atomic<bool>::is_always_lock_free, "the SIGINT handler needs a lock-free atomic flag");
+optim::CancellationToken g_interrupt;
+
+extern "C" void on_sigint(int /*signal*/) { g_interrupt.cancel(); }
+
+// Installs on_sigint for the lifetime of a run and restores the previous
+// disposition afterwards.
+class SigintGuard {
+ public:
+  SigintGuard() {
+    struct sigaction action {};
+    action.sa_handler = on_sigint;
+    sigemptyset(&action.sa_mask);
+    action.sa_flags = SA_RESETHAND;  // a second Ctrl-C is not caught: it ends the process
+    installed_ = ::sigaction(SIGINT, &action, &previous_) == 0;
+  }
+  ~SigintGuard() {
+    if (installed_) ::sigaction(SIGINT, &previous_, nullptr);
+  }
+  SigintGuard(const SigintGuard&) = delete;
+  SigintGuard& operator=(const SigintGuard&) = delete;
+
+ private:
+  struct sigaction previous_ {};
+  bool installed_ = false;
+};
+
+enum class Algorithm { BinaryGa, RealGa, Nsga2, Pagmo };
+
+struct AlgorithmChoice {
+  Algorithm kind = Algorithm::RealGa;
+  optim::PagmoAlgorithm pagmo = optim::PagmoAlgorithm::Nsga2;
+};
+
+AlgorithmChoice parse_algorithm(const std::string& name) {
+  if (name == "ga-binary") return {Algorithm::BinaryGa};
+  if (name == "ga-real") return {Algorithm::RealGa};
+  if (name == "nsga2") return {Algorithm::Nsga2};
+  constexpr std::string_view kPagmo = "pagmo-";
+  if (name.starts_with(kPagmo)) {
+    try {
+      return {Algorithm::Pagmo, optim::pagmo_algorithm(std::string_view(name).substr(kPagmo.size()))};
+    } catch (const Error&) {
+      // Fall through to the message that lists every accepted name.
+    }
+  }
+  throw Error(Errc::InvalidArgument,
+              "algorithm = \"" + name +
+                  "\" is not an algorithm (expected ga-binary, ga-real, nsga2 or pagmo-<name> with <name> one of "
+                  "cmaes, de, sade, pso, sga, moead, nsga2)",
+              {.field = "algorithm"});
+}
+
+// Refuses an option the chosen algorithm does not take (no silent no-ops).
+void refuse(bool given, const char* field, const std::string& algorithm) {
+  if (given) {
+    throw Error(Errc::InvalidOption, std::string("--") + field + " is not supported by algorithm " + algorithm,
+                {.field = field});
+  }
+}
+
+// Applies --lower/--upper/--precision to every variable.
+void apply_bounds(Problem& problem, const OptimiseArgs& a) {
+  const auto apply = [&](const std::string& text, const char* field, auto member) {
+    const std::vector<double> values = parse_number_list(text, field);
+    if (values.size() != problem.dimension()) {
+      throw Error(Errc::InvalidOption,
+                  std::string(field) + " has " + std::to_string(values.size()) + " values but the problem has " +
+                      std::to_string(problem.dimension()) + " variables",
+                  {.field = field, .index = std::min(values.size(), problem.dimension())});
+    }
+    for (std::size_t i = 0; i < values.size(); ++i) problem.variables[i].*member = values[i];
+  };
+  if (a.lower) apply(*a.lower, "lower", &optim::Variable::lower);
+  if (a.upper) apply(*a.upper, "upper", &optim::Variable::upper);
+  if (a.precision)
+    for (optim::Variable& v : problem.variables) v.precision = *a.precision;
+}
+
+std::vector<double> parse_boost(const std::string& text) {
+  std::vector<double> b = parse_number_list(text, "boost");
+  if (b.size() != 2) {
+    throw Error(Errc::InvalidOption,
+                "boost = \"" + text + "\" must be two numbers start,end (got " + std::to_string(b.size()) + ")",
+                {.field = "boost"});
+  }
+  return b;
+}
+
+struct Outcome {
+  // One objective: the best solution. Several: the final first front.
+  std::vector<Solution> solutions;
+  RunReport report;
+  std::size_t threads = 1;
+};
+
+optim::StopCriteria stop_criteria(const OptimiseArgs& a, std::size_t population) {
+  optim::StopCriteria stop;
+  if (a.generations) stop.generations = *a.generations;
+  if (a.evaluations) {
+    stop.max_evaluations = *a.evaluations;
+    // The budget binds before the generation count, and the binary GA's
+    // boosting schedule (eq. 33) spans the generations the budget allows.
+    stop.generations = *a.evaluations / std::max<std::size_t>(population, 1);
+  }
+  if (a.time) stop.wall_time_seconds = *a.time;
+  stop.cancel = &g_interrupt;
+  return stop;
+}
+
+// The per-generation callback: collects the run log and prints progress lines.
+optim::GenerationCallback generation_callback(const OptimiseArgs& a, optim::RunLog& log) {
+  if (!a.log && !a.progress) return {};
+  return [&a, &log](const optim::GenerationLog& g) {
+    if (a.log) log.append(g);
+    if (a.progress) {
+      const optim::GenerationStatistics s = optim::statistics(g);
+      Json line = Json::object();
+      line["generation"] = g.generation;
+      line["evaluations"] = g.evaluations;
+      line["best"] = std::isfinite(s.best) ? Json(s.best) : Json(nullptr);
+      std::cerr << line.dump() << '\n';
+      std::cerr.flush();
+    }
+  };
+}
+
+template <class Options>
+void fill_run(Options& o, const OptimiseArgs& a, optim::RunLog& log) {
+  if (a.population) o.population = *a.population;
+  o.run.seed = a.seed;
+  o.run.threads = a.threads;
+  o.run.stop = stop_criteria(a, o.population);
+  o.run.on_generation = generation_callback(a, log);
+}
+
+Outcome run_flexo(const Problem& problem, const OptimiseArgs& a, Algorithm kind, optim::RunLog& log) {
+  Outcome out;
+  out.threads = a.threads;
+  const SigintGuard guard;
+  if (kind == Algorithm::RealGa) {
+    optim::RealGaOptions o;
+    fill_run(o, a, log);
+    if (a.crossover) o.crossover_probability = *a.crossover;
+    if (a.mutation) o.mutation_probability = *a.mutation;
+    optim::GaResult r = optim::solve_real_ga(problem, o);
+    out.solutions.push_back(std::move(r.best));
+    out.report = std::move(r.report);
+  } else if (kind == Algorithm::BinaryGa) {
+    optim::BinaryGaOptions o;
+    fill_run(o, a, log);
+    if (a.crossover) o.crossover_probability = *a.crossover;
+    if (a.mutation) o.mutation_probability = *a.mutation;
+    if (a.boost) {
+      const std::vector<double> b = parse_boost(*a.boost);
+      o.boost_start = b[0];
+      o.boost_end = b[1];
+    }
+    optim::GaResult r = optim::solve_binary_ga(problem, o);
+    out.solutions.push_back(std::move(r.best));
+    out.report = std::move(r.report);
+  } else {
+    optim::Nsga2Options o;
+    fill_run(o, a, log);
+    if (a.crossover) o.crossover_probability = *a.crossover;
+    if (a.mutation) o.mutation_probability = *a.mutation;
+    optim::Nsga2Result r = optim::solve_nsga2(problem, o);
+    out.solutions = std::move(r.front);
+    out.report = std::move(r.report);
+  }
+  return out;
+}
+
+Outcome run_pagmo(const Problem& problem, const OptimiseArgs& a, optim::PagmoAlgorithm algorithm) {
+  // pagmo runs its own loop: no per-generation callback, stop criteria,
+  // cancellation or evaluation threads reach it through the adapter.
+  refuse(a.evaluations.has_value(), "evaluations", a.algorithm);
+  refuse(a.time.has_value(), "time", a.algorithm);
+  refuse(a.log.has_value(), "log", a.algorithm);
+  refuse(a.progress, "progress", a.algorithm);
+  refuse(a.crossover.has_value(), "crossover", a.algorithm);
+  refuse(a.mutation.has_value(), "mutation", a.algorithm);
+  refuse(a.threads != 1, "threads", a.algorithm);
+  optim::PagmoOptions o;
+  o.algorithm = algorithm;
+  if (a.population) o.population = *a.population;
+  if (a.generations) o.generations = *a.generations;
+  o.seed = a.seed;
+  optim::PagmoResult r = optim::solve_with_pagmo(problem, o);
+  Outcome out;
+  if (problem.objectives == 1) {
+    out.solutions.push_back(std::move(r.best));
+  } else {
+    out.solutions = std::move(r.front);
+  }
+  out.report = std::move(r.report);
+  return out;
+}
+
+Json solution_json(const Solution& s, bool constrained) {
+  Json o = Json::object();
+  o["variables"] = s.variables;
+  o["objectives"] = s.objectives;
+  if (constrained) o["violation"] = s.violation;
+  return o;
+}
+
+Json report_json(const RunReport& r, const OptimiseArgs& a, const Problem& problem, std::size_t threads) {
+  Json o = Json::object();
+  o["termination"] = std::string(optim::termination_name(r.termination));
+  o["message"] = r.message;
+  o["generations"] = r.generations;
+  o["evaluations"] = r.evaluations;
+  o["failed_evaluations"] = r.failed_evaluations;
+  o["seconds"] = r.seconds;
+  o["seed"] = a.seed;
+  o["threads"] = threads;
+  o["algorithm"] = a.algorithm;
+  o["problem"] = problem.name;
+  return o;
+}
+
+// Smallest objective among the (feasible) solutions, lowest index on ties.
+const Solution& best_of(const std::vector<Solution>& solutions) {
+  const auto better = [](const Solution& x, const Solution& y) {
+    if (x.violation != y.violation) return x.violation < y.violation;
+    return x.objectives.at(0) < y.objectives.at(0);
+  };
+  return *std::min_element(solutions.begin(), solutions.end(), better);
+}
+
+Json front_json(std::vector<Solution> front, const Problem& problem, const std::optional<std::vector<double>>& ref) {
+  // Lexicographic order of the objectives: a stable, readable listing.
+  std::stable_sort(front.begin(), front.end(),
+                   [](const Solution& x, const Solution& y) { return x.objectives < y.objectives; });
+  const bool constrained = problem.inequality_constraints + problem.equality_constraints > 0;
+  Json doc = Json::object();
+  Json list = Json::array();
+  std::vector<double> points;
+  for (const Solution& s : front) {
+    list.push_back(solution_json(s, constrained));
+    if (s.violation == 0.0) points.insert(points.end(), s.objectives.begin(), s.objectives.end());
+  }
+  doc["front"] = std::move(list);
+  if (ref) {
+    doc["hypervolume"] = optim::hypervolume(points, problem.objectives, *ref);
+    doc["reference"] = *ref;
+  } else {
+    doc["hypervolume"] = nullptr;
+    doc["reference"] = nullptr;
+  }
+  return doc;
+}
+
+void write_log(const optim::RunLog& log, const std::string& path) {
+  std::ostringstream text;
+  if (path.ends_with(".csv")) {
+    log.write_csv(text);
+  } else {
+    log.write_json(text);
+  }
+  io::write_file_atomically(path, text.str());
+}
+
+int run_optimise(const OptimiseArgs& a) {
+  const AlgorithmChoice algorithm = parse_algorithm(a.algorithm);
+  if (a.objectives != 0 && a.problem != "dtlz2") {
+    throw Error(Errc::InvalidOption,
+                "objectives = " + std::to_string(a.objectives) + ": only dtlz2 takes a number of objectives",
+                {.field = "objectives"});
+  }
+  Problem problem;
+  std::optional<std::vector<double>> reference;
+  if (!a.problem_file.empty()) {
+    io::ProblemFile file = io::read_problem_file(a.problem_file);
+    problem = std::move(file.problem);
+    reference = std::move(file.reference);
+  } else {
+    problem = optim::test_problem(a.problem, a.dimension, a.objectives);
+    // Built-in test problems are normalised so that 1.1 per objective bounds
+    // their Pareto fronts (the reference of the issue's benchmarks).
+    reference = std::vector<double>(problem.objectives, 1.1);
+  }
+  apply_bounds(problem, a);
+  if (a.reference) {
+    reference = parse_number_list(*a.reference, "reference");
+    if (reference->size() != problem.objectives) {
+      throw Error(Errc::InvalidOption,
+                  "reference has " + std::to_string(reference->size()) + " values but the problem has " +
+                      std::to_string(problem.objectives) + " objectives",
+                  {.field = "reference"});
+    }
+  }
+  if (algorithm.kind != Algorithm::BinaryGa) refuse(a.boost.has_value(), "boost", a.algorithm);
+
+  optim::RunLog log;
+  const Outcome out = algorithm.kind == Algorithm::Pagmo ? run_pagmo(problem, a, algorithm.pagmo)
+                                                         : run_flexo(problem, a, algorithm.kind, log);
+  if (a.log) write_log(log, *a.log);
+
+  Json doc = Json::object();
+  if (problem.objectives == 1) {
+    const bool constrained = problem.inequality_constraints + problem.equality_constraints > 0;
+    doc["best"] = out.solutions.empty() ? Json(nullptr) : solution_json(best_of(out.solutions), constrained);
+  } else {
+    doc = front_json(out.solutions, problem, reference);
+  }
+  doc["report"] = report_json(out.report, a, problem, out.threads);
+  print_json(doc);
+  return kExitOk;
+}
+
+}  // namespace
+
+Command add_optimise(CLI::App& app) {
+  auto a = std::make_shared<OptimiseArgs>();
+  CLI::App* sub =
+      app.add_subcommand("optimise", "Run a genetic algorithm (Flexo or pagmo2) on an optimisation problem");
+  CLI::Option_group* source = sub->add_option_group("problem source", "Exactly one of --problem, --problem-file");
+  CLI::Option* problem = source->add_option(
+      "--problem", a->problem,
+      "Built-in test problem: sphere, rastrigin, rosenbrock, ackley, schwefel, onemax, zdt1, zdt2, zdt3, zdt4, "
+      "zdt6, dtlz2");
+  CLI::Option* file = source->add_option("--problem-file", a->problem_file, "Problem file (JSON, docs/formats.md)");
+  source->require_option(1);
+  sub->add_option("--dimension", a->dimension, "Number of variables (default: the problem's own)")
+      ->needs(problem)
+      ->excludes(file);
+  sub->add_option("--objectives", a->objectives, "Number of objectives of dtlz2 (default 3)")
+      ->needs(problem)
+      ->excludes(file);
+  sub->add_option("--algorithm", a->algorithm,
+                  "ga-binary | ga-real | nsga2 | pagmo-<cmaes|de|sade|pso|sga|moead|nsga2>")
+      ->required();
+  sub->add_option("--population", a->population, "Individuals per generation (default: the algorithm's own)");
+  CLI::Option* gens =
+      sub->add_option("--generations", a->generations, "Generations after the initial one (default 100)");
+  sub->add_option("--evaluations", a->evaluations, "Evaluation budget, initial population included")->excludes(gens);
+  sub->add_option("--seed", a->seed, "Seed (default 0); the same seed gives the same result on any thread count");
+  sub->add_option("--threads", a->threads, "Evaluation threads; 0 = all cores (default 1)");
+  sub->add_option("--crossover", a->crossover, "Crossover probability in [0, 1]");
+  sub->add_option("--mutation", a->mutation, "Mutation probability in [0, 1] (per variable, or per bit for ga-binary)");
+  sub->add_option("--lower", a->lower, "Lower bounds l1,l2,... (one per variable)");
+  sub->add_option("--upper", a->upper, "Upper bounds u1,u2,... (one per variable)");
+  sub->add_option("--precision", a->precision, "Binary-coding resolution of every variable (ga-binary)");
+  sub->add_option("--boost", a->boost, "ga-binary fitness power start,end (eq. 33; default 1,1)");
+  sub->add_option("--time", a->time, "Wall-time limit in seconds (0 = none); ends with the best so far");
+  sub->add_option("--log", a->log, "Write the run log: CSV if FILE ends in .csv, else JSON");
+  sub->add_option("--reference", a->reference, "Hypervolume reference r1,r2,... (default 1.1 per objective)");
+  sub->add_flag("--progress", a->progress, "Print one JSON line per generation on stderr");
+  return {sub, [a] { return run_optimise(*a); }};
+}
+
+}  // namespace hula::cli
