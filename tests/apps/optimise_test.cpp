@@ -136,6 +136,7 @@ TEST(CliOptimise, BadOptionsExit3NamingTheField) {
       {{"--problem", "sphere", "--dimension", "2", "--algorithm", "ga-real", "--lower", "0,1,2"}, "lower", "3 values"},
       {{"--problem", "zdt1", "--algorithm", "nsga2", "--reference", "1,1,1"}, "reference", "3 values"},
       {{"--problem", "sphere", "--algorithm", "ga-real", "--boost", "1,8"}, "boost", "ga-real"},
+      {{"--problem", "sphere", "--algorithm", "ga-real", "--reference", "1"}, "reference", "several objectives"},
       {{"--problem", "sphere", "--algorithm", "ga-binary"}, "variables[0].precision", "precision"},
       {{"--problem", "sphere", "--algorithm", "ga-real", "--time", "-1"},
        "stop.wall_time_seconds",

@@ -19,7 +19,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <iostream>
-#include <limits>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -356,6 +355,12 @@ int run_optimise(const OptimiseArgs& a) {
   }
   apply_bounds(problem, a);
   if (a.reference) {
+    if (problem.objectives == 1) {
+      throw Error(Errc::InvalidOption,
+                  "reference: a hypervolume reference applies to problems with several objectives; " + problem.name +
+                      " has one",
+                  {.field = "reference"});
+    }
     reference = parse_number_list(*a.reference, "reference");
     if (reference->size() != problem.objectives) {
       throw Error(Errc::InvalidOption,
