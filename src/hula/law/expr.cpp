@@ -525,12 +525,8 @@ Law normalize(const Law& a) {
 
 // ---------------------------------------------------------------- rebuild / substitute
 
-Law detail::rebuild(const Law& original, std::span<const Law> args) {
-  const Node n = original.node();
-  switch (n.op) {
-    case Op::Constant:
-    case Op::Parameter:
-      return original;
+Law detail::build(Op op, std::span<const Law> args, int component) {
+  switch (op) {
     case Op::Neg:
       return -args[0];
     case Op::Add:
@@ -584,9 +580,9 @@ Law detail::rebuild(const Law& original, std::span<const Law> args) {
     case Op::Piecewise:
       return piecewise(args[0], args[1], args[2]);
     case Op::Vec:
-      return n.arity == 2 ? vec(args[0], args[1]) : vec(args[0], args[1], args[2]);
+      return args.size() == 2 ? vec(args[0], args[1]) : vec(args[0], args[1], args[2]);
     case Op::Term:
-      return term(args[0], static_cast<int>(n.index));
+      return term(args[0], component);
     case Op::Dot:
       return dot(args[0], args[1]);
     case Op::Cross:
@@ -595,12 +591,27 @@ Law detail::rebuild(const Law& original, std::span<const Law> args) {
       return norm(args[0]);
     case Op::Normalize:
       return normalize(args[0]);
+    case Op::Constant:
+    case Op::Parameter:
+    case Op::Curve:
+      break;
+  }
+  throw InternalError("law build: operation needs more than its arguments");
+}
+
+Law detail::rebuild(const Law& original, std::span<const Law> args) {
+  const Node n = original.node();
+  switch (n.op) {
+    case Op::Constant:
+    case Op::Parameter:
+      return original;
     case Op::Curve: {
       Context ctx = original.context();
       return ctx.curve(ctx.curve_at(n.index), args[0], ctx.curve_name(n.index), static_cast<int>(n.order));
     }
+    default:
+      return build(n.op, args, static_cast<int>(n.index));
   }
-  throw InternalError("law rebuild: unknown op");
 }
 
 namespace {

@@ -20,6 +20,7 @@
 #include <string>
 
 #include "hula/core/error.hpp"
+#include "hula/law/detail/graph.hpp"
 #include "hula/law/detail/names.hpp"
 
 namespace hula::law {
@@ -490,61 +491,11 @@ class Parser {
                    [&] { return ctx_.curve(ctx_.curve_at(static_cast<std::uint32_t>(curve)), args[0], name, order); });
     }
     return build(at, [&]() -> Law {
-      switch (f->op) {
-        case Op::Atan2:
-          return atan2(args[0], args[1]);
-        case Op::Min:
-          return min(args[0], args[1]);
-        case Op::Max:
-          return max(args[0], args[1]);
-        case Op::Pow:
-          return pow(args[0], args[1]);
-        case Op::Piecewise:
-          return piecewise(args[0], args[1], args[2]);
-        case Op::Vec:
-          return n == 2 ? vec(args[0], args[1]) : vec(args[0], args[1], args[2]);
-        case Op::Term:
-          return term(args[0], integer_arg(1, "the component index", 1));
-        case Op::Dot:
-          return dot(args[0], args[1]);
-        case Op::Cross:
-          return cross(args[0], args[1]);
-        case Op::Norm:
-          return norm(args[0]);
-        case Op::Normalize:
-          return normalize(args[0]);
-        case Op::Sqrt:
-          return sqrt(args[0]);
-        case Op::Exp:
-          return exp(args[0]);
-        case Op::Log:
-          return log(args[0]);
-        case Op::Sin:
-          return sin(args[0]);
-        case Op::Cos:
-          return cos(args[0]);
-        case Op::Tan:
-          return tan(args[0]);
-        case Op::Asin:
-          return asin(args[0]);
-        case Op::Acos:
-          return acos(args[0]);
-        case Op::Atan:
-          return atan(args[0]);
-        case Op::Sinh:
-          return sinh(args[0]);
-        case Op::Cosh:
-          return cosh(args[0]);
-        case Op::Tanh:
-          return tanh(args[0]);
-        case Op::Abs:
-          return abs(args[0]);
-        case Op::Sign:
-          return sign(args[0]);
-        default:
-          break;
+      if (f->op == Op::Term) {
+        const Law vector[1] = {args[0]};
+        return detail::build(Op::Term, vector, integer_arg(1, "the component index", 1));
       }
-      throw InternalError("law parser: function table out of sync");
+      return detail::build(f->op, args);
     });
   }
 

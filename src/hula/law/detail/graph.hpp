@@ -44,6 +44,12 @@ struct Graph {
 namespace detail {
 /// The same operation as `original` on new arguments, through the simplifying builders.
 [[nodiscard]] Law rebuild(const Law& original, std::span<const Law> args);
+/// Operation `op` on `args` through its simplifying builder: the one map from
+/// an Op to its builder, shared by rebuild and the parser. `component` is the
+/// 1-based index of Op::Term. Not for Constant, Parameter and Curve, which
+/// carry data besides their arguments.
+/// @throws InternalError for those three ops
+[[nodiscard]] Law build(Op op, std::span<const Law> args, int component = 0);
 }  // namespace detail
 
 }  // namespace hula::law
