@@ -312,7 +312,8 @@ std::vector<FramePoint> IntrinsicCurve::evaluate(std::span<const double> s) cons
       out.push_back(evaluate(s[i]));
     } catch (const Error& e) {
       if (e.code() != Errc::OutOfDomain) throw;
-      throw Error(Errc::OutOfDomain, "s[" + std::to_string(i) + "]: " + e.what(), ErrorWhere{.field = "s", .index = i});
+      throw Error(Errc::OutOfDomain, "s[" + std::to_string(i) + "]: " + e.message(),
+                  ErrorWhere{.field = "s", .index = i});
     }
   }
   return out;
@@ -376,7 +377,7 @@ law::Tape compile(std::span<const law::Law> laws, std::string_view parameter, co
   try {
     return law::Tape::compile(laws, in);
   } catch (const Error& e) {
-    throw Error(Errc::InvalidArgument, std::string(field) + ": " + e.what(), ErrorWhere{.field = field});
+    throw Error(Errc::InvalidArgument, std::string(field) + ": " + e.message(), ErrorWhere{.field = field});
   }
 }
 
