@@ -521,9 +521,8 @@ NurbsFitResult fit_nurbs(const IntrinsicCurve& curve, const NurbsFitOptions& opt
   }
   const nurbs::NurbsCurve unit_curve = nurbs::hermite_quintic(p, d, a, params, 3);
   std::vector<double> knots(unit_curve.knots().values().begin(), unit_curve.knots().values().end());
+  // The unit knots end exactly at 0 and 1, so the scaled ones end exactly at 0 and L.
   for (double& k : knots) k *= L;
-  knots.front() = 0.0;
-  knots.back() = L;
   std::vector<Vec3> cps(unit_curve.control_points().begin(), unit_curve.control_points().end());
   nurbs::NurbsCurve fitted(5, std::move(knots), std::move(cps));
   double worst = 0.0;
