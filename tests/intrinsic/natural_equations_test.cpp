@@ -96,11 +96,17 @@ TEST(NaturalEquations, RejectsBadLaws) {
   HULA_EXPECT_ERROR(reconstruct_planar(l.parse("t"), "s", 1.0), Errc::InvalidArgument, "kappa");
 }
 
-// checks: κ undefined inside [0, L] (sqrt of a negative) fails with NumericalFailure naming kappa and s.
+// checks: κ or τ undefined inside [0, L] (sqrt of a negative, log(0), a pole) fails with NumericalFailure naming the
+// law.
 TEST(NaturalEquations, UndefinedCurvatureIsNumericalFailure) {
   Laws l;
   HULA_EXPECT_ERROR(reconstruct(l.parse("sqrt(1 - s)"), l.parse("0.1"), "s", 2.0), Errc::NumericalFailure, "kappa");
   HULA_EXPECT_ERROR(reconstruct(l.parse("1"), l.parse("log(1 - s)"), "s", 2.0), Errc::NumericalFailure, "tau");
+  HULA_EXPECT_ERROR(reconstruct_planar(l.parse("sqrt(1 - s)"), "s", 2.0), Errc::NumericalFailure, "kappa");
+  HULA_EXPECT_ERROR(reconstruct_planar(l.parse("1/(s - 1)"), "s", 2.0), Errc::NumericalFailure, "kappa has a pole");
+  HULA_EXPECT_ERROR(reconstruct(l.parse("1"), l.parse("tan(s)"), "s", 2.0), Errc::NumericalFailure, "tau has a pole");
+  // A removable point is not a pole.
+  EXPECT_NO_THROW((void)reconstruct(l.parse("sin(s - 1)/(s - 1)"), l.parse("0.2"), "s", 2.0));
 }
 
 // checks: evaluate() outside [0, L] throws OutOfDomain naming s (and the index in the batch form).

@@ -19,6 +19,7 @@
 
 #include "hula/core/error.hpp"
 #include "hula/law/antiderivative.hpp"
+#include "hula/law/singularities.hpp"
 #include "hula/law/tape.hpp"
 #include "hula/nurbs/interpolate.hpp"
 
@@ -249,10 +250,9 @@ struct IntrinsicCurve::Impl {
                         " intervals (reached s = " + format_number(a) + " of " + format_number(length) + ")",
                     ErrorWhere{.field = "max_steps"});
       const double m = 0.5 * (a + b);
-      const std::complex<double> whole = chord(a, b), halves = chord(a, m) + chord(m, b);
+      const std::complex<double> whole = chord(a, b), left = chord(a, m), halves = left + chord(m, b);
       if (std::abs(whole - halves) <= eps * (b - a) || !(m > a && m < b)) {
         // Store the halves (the more accurate value) and keep the node list sorted.
-        const std::complex<double> left = chord(a, m);
         for (const auto& [at, v] : {std::pair{m, z + left}, std::pair{b, z + halves}}) {
           y[0] = v.real();
           y[1] = v.imag();
@@ -372,6 +372,39 @@ std::shared_ptr<IntrinsicCurve::Impl> prepare(const law::Law& kappa, std::string
   return impl;
 }
 
+// Rejects a pole of κ or τ on [0, L] before integrating: an integrator approaching 1/(s − 1)
+// would shrink its steps until the budget runs out. A candidate point (division by zero, log
+// or tan pole, power base at 0) is a pole when |f| at δ = 1e-7 max(1, L) on either side exceeds
+// 1 / (1000 δ), the size of a simple pole; removable points such as sin(s − 1)/(s − 1) pass.
+void reject_poles(const law::Law& f, std::string_view parameter, double length, const char* field) {
+  if (f.is_constant()) return;
+  law::SingularityOptions so;
+  so.samples = 2;  // undefined regions are found by the integration itself, with their s
+  const law::SingularityReport report = law::singularities(f, parameter, 0.0, length, so);
+  const std::string in_name[1] = {std::string(parameter)};
+  const law::Law one[1] = {f};
+  const law::Tape tape = law::Tape::compile(one, in_name);
+  const double delta = 1e-7 * std::max(1.0, length);
+  for (const law::Singularity& p : report.points) {
+    if (p.kind != law::SingularityKind::DivisionByZero && p.kind != law::SingularityKind::LogBoundary &&
+        p.kind != law::SingularityKind::TanPole && p.kind != law::SingularityKind::PowerBase)
+      continue;
+    double worst = 0.0;
+    for (const double at : {p.t - delta, p.t + delta}) {
+      if (at < 0.0 || at > length) continue;
+      double v = 0.0;
+      const double in[1] = {at};
+      (void)tape.evaluate(in, std::span<double>(&v, 1));
+      worst = std::max(worst, std::isfinite(v) ? std::abs(v) : std::numeric_limits<double>::infinity());
+    }
+    if (worst > 1.0 / (1000.0 * delta))
+      throw Error(Errc::NumericalFailure,
+                  std::string(field) + " has a pole at s = " + format_number(p.t) + " (" + p.expression +
+                      "): the curve is not defined on [0, " + format_number(length) + "]",
+                  ErrorWhere{.field = field});
+  }
+}
+
 law::Tape compile(std::span<const law::Law> laws, std::string_view parameter, const char* field) {
   const std::string in[1] = {std::string(parameter)};
   try {
@@ -390,9 +423,16 @@ IntrinsicCurve reconstruct_planar(const law::Law& kappa, std::string_view parame
     const law::Law one[1] = {kappa};
     (void)compile(one, parameter, "kappa");  // names "kappa" for a foreign parameter
   }
+  reject_poles(kappa, parameter, length, "kappa");
   // θ(s) = F(s) − F(0) when the antiderivative exists and κ has no pole or undefined region on
   // [0, L] (definite_integral then reports the symbolic method).
-  const law::DefiniteIntegralResult total = law::definite_integral(kappa, parameter, 0.0, length);
+  law::DefiniteIntegralResult total;
+  try {
+    total = law::definite_integral(kappa, parameter, 0.0, length);
+  } catch (const Error& e) {
+    // The numeric fallback reports an undefined integrand: say which law.
+    throw Error(e.code(), "kappa: " + e.message(), ErrorWhere{.field = "kappa"});
+  }
   if (total.method == law::IntegralMethod::Symbolic) {
     const law::Context ctx = kappa.context();
     const law::Law& F = total.antiderivative;
@@ -436,6 +476,8 @@ IntrinsicCurve reconstruct(const law::Law& kappa, const law::Law& tau, std::stri
     const law::Law other[1] = {tau};
     (void)compile(other, parameter, "tau");
   }
+  reject_poles(kappa, parameter, length, "kappa");
+  reject_poles(tau, parameter, length, "tau");
   const law::Law outs[2] = {kappa, tau};
   impl->laws = compile(outs, parameter, "kappa");
   impl->kind = IntegrationKind::FrenetSerret;
