@@ -103,6 +103,8 @@ struct Command {
 /// {"t", "derivatives": [[...], ...]} entries (the `hula eval` shape; scalars as one-element arrays).
 [[nodiscard]] Json law_results_to_json(std::span<const double> ts, const std::vector<std::vector<double>>& values,
                                        int dimension, int order);
+/// `hula reconstruct`: a curve from its curvature and torsion laws (natural equations).
+[[nodiscard]] Command add_reconstruct(CLI::App& app);
 /// `hula info`: the analysis of a curve file.
 [[nodiscard]] Command add_info(CLI::App& app);
 /// `hula demo`: the thesis's example curves (also the default command).

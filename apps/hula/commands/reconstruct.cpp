@@ -1,0 +1,124 @@
+// SPDX-License-Identifier: MIT
+// `hula reconstruct --kappa EXPR --tau EXPR --length L`: the curve with the
+// given curvature and torsion laws of arc length `s` (thesis 8.2.2, eq. 34;
+// hula::intrinsic::reconstruct), printed as position and Frenet frame at
+// requested arc lengths plus a quintic NURBS fitted within the tolerance
+// ({"points": [{"s", "position", "T", "N", "B"}], "fit": {"control_points",
+// "max_deviation"}}; control_points is the count). -o writes the fitted NURBS
+// atomically.
+#include <memory>
+#include <string>
+
+#include "commands/common.hpp"
+#include "hula/core/error.hpp"
+#include "hula/intrinsic/natural_equations.hpp"
+#include "hula/io/json_curve.hpp"
+#include "hula/law/parser.hpp"
+
+namespace hula::cli {
+
+namespace {
+
+struct ReconstructArgs {
+  std::string kappa;
+  std::string tau;
+  double length = 0.0;
+  std::string start_point;
+  std::string start_frame;
+  double tolerance = 1e-10;
+  std::string at;
+  std::string output;
+};
+
+// Parses a law of s given as --<field>, naming the option and the expression in errors.
+law::Law parse_law(const std::string& text, law::Context& ctx, const char* field) {
+  law::ParseOptions po;
+  po.parameters = {"s"};
+  try {
+    return law::parse(text, ctx, po);
+  } catch (const Error& e) {
+    ErrorWhere where = e.where();
+    where.field = field;
+    throw Error(e.code(), std::string("--") + field + " '" + text + "': " + e.message(), where);
+  }
+}
+
+Vec3 parse_vec(const std::string& text, const char* field) {
+  const std::vector<double> v = parse_number_list(text, field);
+  if (v.size() != 3)
+    throw Error(Errc::InvalidArgument,
+                std::string("--") + field + " needs 3 numbers x,y,z, got " + std::to_string(v.size()),
+                ErrorWhere{.field = field});
+  return {v[0], v[1], v[2]};
+}
+
+Json point_json(const intrinsic::FramePoint& p) {
+  Json j = Json::object();
+  j["s"] = p.s;
+  j["position"] = vec_to_json(p.position, 3);
+  j["T"] = vec_to_json(p.tangent, 3);
+  j["N"] = vec_to_json(p.normal, 3);
+  j["B"] = vec_to_json(p.binormal, 3);
+  return j;
+}
+
+int run_reconstruct(const ReconstructArgs& a) {
+  law::Context ctx;
+  const law::Law kappa = parse_law(a.kappa, ctx, "kappa");
+  const law::Law tau = parse_law(a.tau, ctx, "tau");
+  intrinsic::StartFrame start;
+  if (!a.start_point.empty()) start.point = parse_vec(a.start_point, "start-point");
+  if (!a.start_frame.empty()) {
+    const std::vector<double> v = parse_number_list(a.start_frame, "start-frame");
+    if (v.size() != 6)
+      throw Error(Errc::InvalidArgument,
+                  "--start-frame needs 6 numbers Tx,Ty,Tz,Nx,Ny,Nz, got " + std::to_string(v.size()),
+                  ErrorWhere{.field = "start-frame"});
+    start.tangent = {v[0], v[1], v[2]};
+    start.normal = {v[3], v[4], v[5]};
+  }
+  intrinsic::ReconstructionOptions options;
+  options.tolerance = a.tolerance;
+  const intrinsic::IntrinsicCurve curve = intrinsic::reconstruct(kappa, tau, "s", a.length, start, options);
+  std::vector<double> ss;
+  if (a.at.empty())
+    for (int i = 0; i <= 4; ++i) ss.push_back(i == 4 ? a.length : a.length * i / 4.0);
+  else
+    ss = parse_number_list(a.at, "at");
+  Json points = Json::array();
+  for (const intrinsic::FramePoint& p : curve.evaluate(ss)) points.push_back(point_json(p));
+  intrinsic::NurbsFitOptions fit_options;
+  fit_options.tolerance = a.tolerance;
+  const intrinsic::NurbsFitResult fit = intrinsic::fit_nurbs(curve, fit_options);
+  if (!a.output.empty()) io::write_curve_file(a.output, fit.curve);
+  Json f = Json::object();
+  f["control_points"] = fit.curve.control_points().size();
+  f["max_deviation"] = fit.max_deviation;
+  Json doc = Json::object();
+  doc["points"] = std::move(points);
+  doc["fit"] = std::move(f);
+  print_json(doc);
+  return kExitOk;
+}
+
+}  // namespace
+
+Command add_reconstruct(CLI::App& app) {
+  auto args = std::make_shared<ReconstructArgs>();
+  CLI::App* sub = app.add_subcommand(
+      "reconstruct", "Curve from its curvature and torsion laws of arc length s (natural equations, thesis 8.2.2)");
+  sub->add_option("--kappa", args->kappa, "Curvature law of s, e.g. '1 + 0.5*sin(s)' (signed when planar)")->required();
+  sub->add_option("--tau", args->tau, "Torsion law of s, e.g. '0.3*cos(2*s)'; 0 gives a planar curve")->required();
+  sub->add_option("--length", args->length, "Arc length L > 0 of the curve")->required();
+  sub->add_option("--start-point", args->start_point, "Start point x,y,z (default 0,0,0)");
+  sub->add_option("--start-frame", args->start_frame,
+                  "Start tangent and normal Tx,Ty,Tz,Nx,Ny,Nz (normalised, N made orthogonal to T; default "
+                  "1,0,0,0,1,0)");
+  sub->add_option("--tolerance", args->tolerance,
+                  "Position tolerance of the integration and of the NURBS fit, in [1e-13, 1e-2] (default 1e-10)");
+  sub->add_option("--at", args->at, "Arc lengths s0,s1,... in [0, L] to print (default 0, L/4, L/2, 3L/4, L)");
+  sub->add_option("-o,--output", args->output, "Write the fitted NURBS curve file (atomically)");
+  return {sub, [args] { return run_reconstruct(*args); }};
+}
+
+}  // namespace hula::cli

@@ -1,0 +1,217 @@
+// SPDX-License-Identifier: MIT
+// Curves from their natural equations (thesis 8.2.2, eq. 34; Nutbourne):
+// given the curvature κ(s) and torsion τ(s) as laws of arc length on [0, L],
+// a start point and a start frame, the curve r(s) with its frame {T, N, B}.
+//
+// Notation: s arc length, κ curvature, τ torsion, θ turning angle, T/N/B the
+// tangent, normal and binormal; h a step length.
+//
+// - Planar (τ ≡ 0): eq. 34 in the plane of the start frame, θ(s) = ∫κ from
+//   law::antiderivative when a closed form exists on [0, L] (exact angle,
+//   frame exactly orthonormal) and x + iy = ∫ e^{iθ} along T(0) and N(0) by
+//   adaptive 10-point Gauss–Legendre; otherwise the Frenet–Serret system
+//   below with τ = 0. κ may change sign: positive
+//   turns towards N(0) (counter-clockwise seen from B(0) = T(0) × N(0)).
+// - Space: the Frenet–Serret system r' = T, T' = κN, N' = −κT + τB,
+//   B' = −τN, integrated by the embedded Runge–Kutta–Fehlberg 7(8) pair
+//   (Boost.Odeint runge_kutta_fehlberg78 with its controlled stepper), with
+//   the frame re-orthonormalised (Gram–Schmidt, B = T × N) after every accepted
+//   step. Why RKF78 and not a Lie-group (Magnus) step: the 8th-order pair takes
+//   few, long steps at tolerances 1e-9 … 1e-12, and the drift from
+//   orthonormality per step is of the order of the local error, which the
+//   projection removes; a Magnus integrator would keep the frame exactly on
+//   SO(3) but needs matrix exponentials per stage for the same order.
+//   N is the "signed" normal carried by the ODE: where κ < 0 it is minus the
+//   Frenet normal, so κN (= r'') is continuous.
+//
+// Dense output: the accepted steps are stored; the value at any s is one RKF78
+// step (or one Gauss–Legendre rule) of length s − s_k from the last node
+// s_k ≤ s, so dense values have the local accuracy of the integration
+// (shorter steps are more accurate).
+// A NURBS is fitted by quintic Hermite interpolation with the exact r' = T and
+// r'' = κN at breakpoints refined until the deviation is below a tolerance.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "hula/core/vec.hpp"
+#include "hula/law/expr.hpp"
+#include "hula/nurbs/nurbs_curve.hpp"
+
+namespace hula::intrinsic {
+
+/// Where the reconstructed curve starts and how it is oriented.
+struct StartFrame {
+  /// r(0), model units. Default the origin.
+  Vec3 point{0.0, 0.0, 0.0};
+  /// T(0): any non-zero finite vector, normalised. Default +X.
+  Vec3 tangent{1.0, 0.0, 0.0};
+  /// N(0): any finite vector not parallel to the tangent; its component along the tangent is
+  /// removed and it is normalised. Default +Y. B(0) = T(0) × N(0).
+  Vec3 normal{0.0, 1.0, 0.0};
+};
+
+/// How reconstruct() integrates.
+enum class ReconstructionMethod {
+  Auto,          ///< planar (eq. 34) when τ is the constant 0, else Frenet–Serret
+  FrenetSerret,  ///< always integrate the Frenet–Serret system (also for τ ≡ 0)
+};
+
+/// How reconstruct() actually integrated (reported by IntrinsicCurve::method()).
+enum class IntegrationKind {
+  PlanarExactAngle,    ///< eq. 34, θ from the closed-form antiderivative of κ, x + iy by adaptive Gauss–Legendre
+  PlanarNumericAngle,  ///< no closed-form angle: the Frenet–Serret system with τ = 0 (stays in the plane)
+  FrenetSerret,        ///< the Frenet–Serret system
+};
+
+/// Options of reconstruct().
+struct ReconstructionOptions {
+  /// Requested absolute accuracy of the positions over [0, L], model units. The local error per
+  /// step is held below tolerance / max(1, L) / 20 (frame errors grow into position errors times
+  /// the remaining length). Default 1e-10; valid [1e-13, 1e-2]. Below ~1e-13 rounding dominates.
+  double tolerance = 1e-10;
+  /// Auto or force the Frenet–Serret integration. Default Auto.
+  ReconstructionMethod method = ReconstructionMethod::Auto;
+  /// Largest number of step attempts (accepted + rejected) before NumericalFailure. Default
+  /// 1 000 000; valid 1 … 100 000 000.
+  std::size_t max_steps = 1'000'000;
+  /// @throws hula::Error(Errc::InvalidOption) naming the field, its value and the valid range
+  void validate() const;
+};
+
+/// Position and frame at one arc length.
+struct FramePoint {
+  /// Arc length from the start.
+  double s = 0.0;
+  /// r(s), model units.
+  Vec3 position{};
+  /// Unit tangent T = r'(s).
+  Vec3 tangent{};
+  /// Unit (signed) normal N, with r''(s) = κ(s) N(s); minus the Frenet normal where κ < 0.
+  Vec3 normal{};
+  /// Unit binormal B = T × N.
+  Vec3 binormal{};
+  /// κ(s) as given (signed).
+  double curvature = 0.0;
+  /// τ(s) as given (0 for planar reconstructions).
+  double torsion = 0.0;
+};
+
+/// The reconstructed curve as a dense, law-like result: position and frame at any s in [0, L].
+/// Immutable and thread-safe to evaluate (compiled laws with per-thread workspaces).
+class IntrinsicCurve {
+ public:
+  /// Length L of the curve (the arc-length domain is [0, L]).
+  [[nodiscard]] double length() const noexcept;
+  /// How the curve was integrated.
+  [[nodiscard]] IntegrationKind method() const noexcept;
+  /// The requested position tolerance.
+  [[nodiscard]] double tolerance() const noexcept;
+  /// Arc lengths of the accepted integration steps, 0 = s_0 < … < s_n = L.
+  [[nodiscard]] std::span<const double> nodes() const noexcept;
+  /// Number of rejected step attempts (a measure of difficulty).
+  [[nodiscard]] std::size_t rejected_steps() const noexcept;
+
+  /// Position and frame at arc length s.
+  /// @param s arc length in [0, L] (within 1e-12 L; clamped to the ends there)
+  /// @returns the point with an orthonormal, right-handed frame
+  /// @throws hula::Error(Errc::OutOfDomain) naming "s" if s is outside [0, L] or not finite
+  [[nodiscard]] FramePoint evaluate(double s) const;
+  /// Batch form of evaluate(); any order of arc lengths.
+  /// @throws hula::Error(Errc::OutOfDomain) naming "s" and the index of the first bad value
+  [[nodiscard]] std::vector<FramePoint> evaluate(std::span<const double> s) const;
+
+  /// Opaque implementation (natural_equations.cpp).
+  struct Impl;
+
+ private:
+  friend IntrinsicCurve reconstruct(const law::Law&, const law::Law&, std::string_view, double, const StartFrame&,
+                                    const ReconstructionOptions&);
+  friend IntrinsicCurve reconstruct_planar(const law::Law&, std::string_view, double, const StartFrame&,
+                                           const ReconstructionOptions&);
+  explicit IntrinsicCurve(std::shared_ptr<const Impl> impl);
+  std::shared_ptr<const Impl> impl_;
+};
+
+/// The curve with curvature κ(s) and torsion τ(s), s ∈ [0, L], starting at `start`.
+///
+/// Example:
+/// ```
+/// law::Context ctx;
+/// law::ParseOptions po; po.parameters = {"s"};
+/// IntrinsicCurve c = reconstruct(law::parse("0.8", ctx, po), law::parse("0.4", ctx, po), "s", 20.0);
+/// FramePoint p = c.evaluate(10.0);   // a point of the helix with κ = 0.8, τ = 0.4
+/// ```
+/// @param kappa scalar law of `parameter` only (signed for planar curves)
+/// @param tau scalar law of `parameter` only, of the same context as kappa; the constant 0
+///   selects the planar method (unless options.method = FrenetSerret)
+/// @param parameter the arc-length parameter name, e.g. "s"
+/// @param length L > 0, finite
+/// @param start start point and frame (normalised here, see StartFrame)
+/// @param options tolerance, method, step budget
+/// @returns the dense curve
+/// @throws hula::Error(Errc::InvalidArgument) naming "kappa" or "tau" if a law is empty, not
+///   scalar, of another context or uses another parameter; naming "length" if L ≤ 0;
+///   naming "start_frame.tangent" if T(0) = 0 and "start_frame.normal" if N(0) ∥ T(0)
+/// @throws hula::Error(Errc::NonFiniteInput) naming "length", "start_frame.point",
+///   "start_frame.tangent" or "start_frame.normal" for NaN/inf
+/// @throws hula::Error(Errc::InvalidOption) from options.validate()
+/// @throws hula::Error(Errc::NumericalFailure) naming "kappa"/"tau" and s where a law is
+///   undefined or infinite, or when the step budget is exhausted
+/// Complexity: O(number of steps × cost of κ, τ); steps grow as tolerance^(−1/8).
+[[nodiscard]] IntrinsicCurve reconstruct(const law::Law& kappa, const law::Law& tau, std::string_view parameter,
+                                         double length, const StartFrame& start = {},
+                                         const ReconstructionOptions& options = {});
+
+/// The planar curve with signed curvature κ(s) (eq. 34) in the plane of the start frame;
+/// κ > 0 turns towards start.normal. Same as reconstruct() with τ ≡ 0 and method Auto.
+/// @throws as reconstruct() (without the "tau" cases)
+[[nodiscard]] IntrinsicCurve reconstruct_planar(const law::Law& kappa, std::string_view parameter, double length,
+                                                const StartFrame& start = {},
+                                                const ReconstructionOptions& options = {});
+
+/// Options of fit_nurbs().
+struct NurbsFitOptions {
+  /// Largest allowed distance |C(s) − r(s)| between the NURBS and the dense curve at equal arc
+  /// length, model units (an upper bound of the geometric deviation). Default 1e-9; valid
+  /// [1e-13, 1]. It cannot be met below the curve's own integration tolerance.
+  double tolerance = 1e-9;
+  /// Largest number of Hermite segments before giving up (converged = false). Default 100 000;
+  /// valid 1 … 10 000 000.
+  std::size_t max_segments = 100'000;
+  /// Samples per segment in the final deviation check (besides the ends). Default 16; valid 1 … 1000.
+  int check_samples = 16;
+  /// @throws hula::Error(Errc::InvalidOption) naming the field, its value and the valid range
+  void validate() const;
+};
+
+/// Result of fit_nurbs().
+struct NurbsFitResult {
+  /// Quintic, C2, parameterised by arc length on [0, L]; knots of multiplicity 3 at the breakpoints.
+  nurbs::NurbsCurve curve;
+  /// Largest |C(s) − r(s)| found by dense sampling (check_samples per segment).
+  double max_deviation = 0.0;
+  /// Number of Hermite segments.
+  std::size_t segments = 0;
+  /// True when max_deviation ≤ tolerance.
+  bool converged = false;
+};
+
+/// Fits a quintic NURBS to a reconstructed curve: Hermite interpolation through breakpoints with
+/// the exact first (T) and second (κN) arc-length derivatives, bisecting every segment whose
+/// deviation exceeds the tolerance, then re-measuring by dense sampling.
+/// @param curve a reconstructed curve
+/// @param options tolerance, segment budget, check density
+/// @returns the curve and its measured deviation (converged = false when the budget ran out;
+///   the curve is then the last refinement)
+/// @throws hula::Error(Errc::InvalidOption) from options.validate()
+/// Complexity: O(segments × (check_samples + 8)) dense evaluations.
+[[nodiscard]] NurbsFitResult fit_nurbs(const IntrinsicCurve& curve, const NurbsFitOptions& options = {});
+
+}  // namespace hula::intrinsic

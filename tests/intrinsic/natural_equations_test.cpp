@@ -1,0 +1,152 @@
+// SPDX-License-Identifier: MIT
+// Unit tests of the natural-equation API contract: input validation naming
+// the field (length, start frame, laws, options), the normalisation of the
+// start frame, domain errors of evaluate(), undefined κ reported as a
+// numerical failure with s, and the shape of the dense and fitted results.
+#include "hula/intrinsic/natural_equations.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "hula/law/parser.hpp"
+#include "hula/testing/expect_error.hpp"
+
+namespace hula::intrinsic {
+namespace {
+
+using law::Law;
+
+struct Laws {
+  law::Context ctx;
+  Law parse(const std::string& text) {
+    law::ParseOptions po;
+    po.parameters = {"s", "t"};
+    return law::parse(text, ctx, po);
+  }
+};
+
+constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+
+// checks: non-positive, infinite and NaN lengths are rejected naming "length".
+TEST(NaturalEquations, RejectsBadLength) {
+  Laws l;
+  const Law k = l.parse("1"), t = l.parse("0.2");
+  HULA_EXPECT_ERROR(reconstruct(k, t, "s", 0.0), Errc::InvalidArgument, "length = 0");
+  HULA_EXPECT_ERROR(reconstruct(k, t, "s", -2.0), Errc::InvalidArgument, "length");
+  HULA_EXPECT_ERROR(reconstruct(k, t, "s", kNan), Errc::NonFiniteInput, "length");
+  HULA_EXPECT_ERROR(reconstruct(k, t, "s", std::numeric_limits<double>::infinity()), Errc::NonFiniteInput, "length");
+}
+
+// checks: zero tangent, normal parallel to the tangent, zero normal and NaN components name the start-frame field.
+TEST(NaturalEquations, RejectsBadStartFrame) {
+  Laws l;
+  const Law k = l.parse("1"), t = l.parse("0.2");
+  HULA_EXPECT_ERROR(reconstruct(k, t, "s", 1.0, StartFrame{{}, {0, 0, 0}, {0, 1, 0}}), Errc::InvalidArgument,
+                    "start_frame.tangent");
+  HULA_EXPECT_ERROR(reconstruct(k, t, "s", 1.0, StartFrame{{}, {1, 0, 0}, {-2, 0, 0}}), Errc::InvalidArgument,
+                    "start_frame.normal is parallel");
+  HULA_EXPECT_ERROR(reconstruct(k, t, "s", 1.0, StartFrame{{}, {1, 0, 0}, {0, 0, 0}}), Errc::InvalidArgument,
+                    "start_frame.normal");
+  HULA_EXPECT_ERROR(reconstruct(k, t, "s", 1.0, StartFrame{{0, kNan, 0}, {1, 0, 0}, {0, 1, 0}}), Errc::NonFiniteInput,
+                    "start_frame.point[1]");
+  HULA_EXPECT_ERROR(reconstruct(k, t, "s", 1.0, StartFrame{{}, {1, 0, 0}, {0, 1, kNan}}), Errc::NonFiniteInput,
+                    "start_frame.normal[2]");
+}
+
+// checks: a non-unit tangent and a normal with a tangential part are normalised and orthogonalised, B = T × N.
+TEST(NaturalEquations, NormalisesStartFrame) {
+  Laws l;
+  const IntrinsicCurve c =
+      reconstruct(l.parse("1"), l.parse("0.5"), "s", 1.0, StartFrame{{1, 2, 3}, {0, 0, 5}, {2, 0, 7}});
+  const FramePoint p = c.evaluate(0.0);
+  EXPECT_EQ(p.position, (Vec3{1, 2, 3}));
+  EXPECT_LT(distance(p.tangent, Vec3{0, 0, 1}), 1e-15);
+  EXPECT_LT(distance(p.normal, Vec3{1, 0, 0}), 1e-15);
+  EXPECT_LT(distance(p.binormal, Vec3{0, 1, 0}), 1e-15);
+  EXPECT_EQ(p.curvature, 1.0);
+  EXPECT_EQ(p.torsion, 0.5);
+}
+
+// checks: options out of range throw InvalidOption naming the field.
+TEST(NaturalEquations, RejectsBadOptions) {
+  Laws l;
+  ReconstructionOptions o;
+  o.tolerance = 0.0;
+  HULA_EXPECT_ERROR(reconstruct(l.parse("1"), l.parse("0"), "s", 1.0, {}, o), Errc::InvalidOption, "tolerance");
+  o = {};
+  o.max_steps = 0;
+  HULA_EXPECT_ERROR(o.validate(), Errc::InvalidOption, "max_steps");
+  NurbsFitOptions f;
+  f.tolerance = kNan;
+  HULA_EXPECT_ERROR(f.validate(), Errc::InvalidOption, "tolerance");
+  f = {};
+  f.check_samples = 0;
+  HULA_EXPECT_ERROR(f.validate(), Errc::InvalidOption, "check_samples");
+}
+
+// checks: vector laws, another parameter and foreign contexts name "kappa" or "tau".
+TEST(NaturalEquations, RejectsBadLaws) {
+  Laws l, other;
+  HULA_EXPECT_ERROR(reconstruct(l.parse("vec(s, s, s)"), l.parse("0"), "s", 1.0), Errc::InvalidArgument, "kappa");
+  HULA_EXPECT_ERROR(reconstruct(l.parse("1"), l.parse("t"), "s", 1.0), Errc::InvalidArgument, "tau");
+  HULA_EXPECT_ERROR(reconstruct(l.parse("1"), other.parse("1"), "s", 1.0), Errc::InvalidArgument, "context");
+  HULA_EXPECT_ERROR(reconstruct_planar(l.parse("t"), "s", 1.0), Errc::InvalidArgument, "kappa");
+}
+
+// checks: κ or τ undefined inside [0, L] (sqrt of a negative, log(0), a pole) fails with NumericalFailure naming the
+// law.
+TEST(NaturalEquations, UndefinedCurvatureIsNumericalFailure) {
+  Laws l;
+  HULA_EXPECT_ERROR(reconstruct(l.parse("sqrt(1 - s)"), l.parse("0.1"), "s", 2.0), Errc::NumericalFailure, "kappa");
+  HULA_EXPECT_ERROR(reconstruct(l.parse("1"), l.parse("log(1 - s)"), "s", 2.0), Errc::NumericalFailure, "tau");
+  HULA_EXPECT_ERROR(reconstruct_planar(l.parse("sqrt(1 - s)"), "s", 2.0), Errc::NumericalFailure, "kappa");
+  HULA_EXPECT_ERROR(reconstruct_planar(l.parse("1/(s - 1)"), "s", 2.0), Errc::NumericalFailure, "kappa has a pole");
+  HULA_EXPECT_ERROR(reconstruct(l.parse("1"), l.parse("tan(s)"), "s", 2.0), Errc::NumericalFailure, "tau has a pole");
+  // A removable point is not a pole.
+  EXPECT_NO_THROW((void)reconstruct(l.parse("sin(s - 1)/(s - 1)"), l.parse("0.2"), "s", 2.0));
+}
+
+// checks: evaluate() outside [0, L] throws OutOfDomain naming s (and the index in the batch form).
+TEST(NaturalEquations, EvaluateOutsideDomain) {
+  Laws l;
+  const IntrinsicCurve c = reconstruct(l.parse("1"), l.parse("0.1"), "s", 2.0);
+  HULA_EXPECT_ERROR(c.evaluate(2.5), Errc::OutOfDomain, "s = 2.5");
+  HULA_EXPECT_ERROR(c.evaluate(kNan), Errc::OutOfDomain, "s = ");
+  const double ss[3] = {0.0, 1.0, -1.0};
+  HULA_EXPECT_ERROR(c.evaluate(ss), Errc::OutOfDomain, "s[2]");
+  EXPECT_EQ(c.evaluate(2.0).s, 2.0);
+  EXPECT_EQ(c.nodes().front(), 0.0);
+  EXPECT_EQ(c.nodes().back(), 2.0);
+}
+
+// checks: a step budget too small for the problem is a NumericalFailure naming max_steps.
+TEST(NaturalEquations, StepBudget) {
+  Laws l;
+  ReconstructionOptions o;
+  o.max_steps = 2;
+  HULA_EXPECT_ERROR(reconstruct(l.parse("1 + sin(5*s)"), l.parse("0.1"), "s", 50.0, {}, o), Errc::NumericalFailure,
+                    "max_steps");
+}
+
+// checks: the fitted NURBS is quintic on [0, L], interpolates the ends and reports its deviation.
+TEST(NaturalEquations, FitShape) {
+  Laws l;
+  const IntrinsicCurve c = reconstruct(l.parse("1 + 0.5*sin(s)"), l.parse("0.3*cos(2*s)"), "s", 6.0);
+  const NurbsFitResult fit = fit_nurbs(c);
+  EXPECT_TRUE(fit.converged);
+  EXPECT_LE(fit.max_deviation, 1e-9);
+  EXPECT_EQ(fit.curve.degree(), 5);
+  EXPECT_EQ(fit.curve.knots().values().front(), 0.0);
+  EXPECT_EQ(fit.curve.knots().values().back(), 6.0);
+  EXPECT_EQ(fit.curve.control_points().size(), 3 * (fit.segments + 1));
+  EXPECT_LT(distance(fit.curve.derivatives(6.0, 0)[0], c.evaluate(6.0).position), 1e-12);
+  NurbsFitOptions tight;
+  tight.max_segments = 2;
+  EXPECT_FALSE(fit_nurbs(c, tight).converged);
+}
+
+}  // namespace
+}  // namespace hula::intrinsic
