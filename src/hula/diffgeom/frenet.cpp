@@ -174,31 +174,38 @@ void curvature_torsion(const nurbs::NurbsCurve& curve, std::span<const double> t
   const double angular = options.tolerance.angular;
   const double inv_size = 1.0 / scale.model_size;
   const double angular2 = angular * angular;
+  const double zero_speed2 = scale.zero_speed * scale.zero_speed;
   std::array<Vec3, 4 * kBlock> d;
   for (std::size_t i0 = 0; i0 < ts.size(); i0 += kBlock) {
     const std::size_t m = std::min(kBlock, ts.size() - i0);
     block_derivatives(curve, ts, i0, m, std::span<Vec3>(d.data(), 4 * m), options.eval);
     for (std::size_t i = 0; i < m; ++i) {
-      // The same tests and the same 1/m scaling as frenet_from_derivatives, without the frame vectors.
-      const double mi = max_abs(d[4 * i + 1]);
-      if (!(mi > scale.zero_speed)) {  // zero speed, and no division by zero below
-        kappa[i0 + i] = tau[i0 + i] = kNaN;
+      // The tests of frenet_from_derivatives without the frame vectors and, while |r'|² and |r''|² sit
+      // in [1e-50, 1e50] (so |r' × r''|² can neither overflow nor underflow), without its 1/m
+      // rescaling; other points take the general kernel.
+      const Vec3& r1 = d[4 * i + 1];
+      const Vec3& r2 = d[4 * i + 2];
+      const Vec3& r3 = d[4 * i + 3];
+      const double v2 = dot(r1, r1);
+      const double r22 = dot(r2, r2);
+      if (!(v2 >= 1e-50 && v2 <= 1e50 && r22 <= 1e50)) {
+        const FrenetPoint p =
+            frenet_from_derivatives(ts[i0 + i], std::span<const Vec3, 4>(d.data() + 4 * i, 4), scale, options);
+        kappa[i0 + i] = p.curvature;
+        tau[i0 + i] = p.torsion;
         continue;
       }
-      const double inv_m = 1.0 / mi;
-      const Vec3 r1 = d[4 * i + 1] * inv_m;
-      const Vec3 r2 = d[4 * i + 2] * inv_m;
-      const Vec3 r3 = d[4 * i + 3] * inv_m;
-      const double v2 = dot(r1, r1);
       const Vec3 a = cross(r1, r2);
       const double a2 = dot(a, a);
-      const double v = std::sqrt(v2);
-      const double big = v2 * mi * inv_size;
-      const double bound_base = std::max(dot(r2, r2), big * big);
-      const bool moving = v * mi > scale.zero_speed;
-      const bool curved = a2 > angular2 * v2 * bound_base;
-      kappa[i0 + i] = moving ? (curved ? std::sqrt(a2) / (v2 * v) * inv_m : 0.0) : kNaN;
-      tau[i0 + i] = moving && curved ? dot(a, r3) / a2 * inv_m : kNaN;
+      const double big = v2 * inv_size;
+      const bool moving = v2 > zero_speed2;
+      const bool curved = a2 > angular2 * v2 * std::max(r22, big * big);
+      // One division for both: q = 1/(|a|^2 v^6), kappa = |a|^2 sqrt(q), tau = (a . r''') v^6 q. With |r'|^2
+      // and |r''|^2 in [1e-50, 1e50] and a curved point, |a|^2 v^6 stays in range.
+      const double v6 = v2 * v2 * v2;
+      const double q = 1.0 / (curved ? a2 * v6 : 1.0);
+      kappa[i0 + i] = moving ? (curved ? a2 * std::sqrt(q) : 0.0) : kNaN;
+      tau[i0 + i] = moving && curved ? dot(a, r3) * v6 * q : kNaN;
     }
   }
 }

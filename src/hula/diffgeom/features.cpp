@@ -1,0 +1,176 @@
+// SPDX-License-Identifier: MIT
+// Sign-change search with bisection for inflections and curvature extrema;
+// see features.hpp.
+#include "hula/diffgeom/features.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+#include "hula/core/error.hpp"
+
+namespace hula::diffgeom {
+
+namespace {
+using Eval = std::function<FrenetPoint(double)>;
+using Quantity = double (*)(const FrenetPoint&);
+
+double signed_kappa(const FrenetPoint& p) { return p.tangent_defined ? p.signed_curvature : std::nan(""); }
+double kappa_prime(const FrenetPoint& p) { return p.frame_defined ? p.curvature_derivative : std::nan(""); }
+
+int sign(double x) { return x > 0.0 ? 1 : (x < 0.0 ? -1 : 0); }
+
+// Roots with a strict sign change of q over the pieces [cuts[i], cuts[i+1]], each sampled at n points.
+// A zero sample between samples of opposite signs is itself the root (exact inflections).
+void search(const Eval& eval, Quantity q, const std::vector<double>& cuts, int n, bool extrema,
+            std::vector<Feature>& out) {
+  for (std::size_t c = 0; c + 1 < cuts.size(); ++c) {
+    const double a = cuts[c], b = cuts[c + 1];
+    double t_prev = a;
+    double q_prev = q(eval(a));
+    double t_zero = std::nan("");  // a zero sample waiting for the next sign
+    int s_before = sign(q_prev);
+    for (int i = 1; i <= n; ++i) {
+      const double t = i == n ? b : a + (b - a) * i / n;
+      const double v = q(eval(t));
+      const int s = sign(v);
+      if (std::isnan(v) || std::isnan(q_prev)) {
+        t_prev = t;
+        q_prev = v;
+        s_before = sign(v);
+        t_zero = std::nan("");
+        continue;
+      }
+      double root = std::nan("");
+      int from = 0;
+      if (s == 0 && sign(q_prev) != 0) {
+        t_zero = t;  // decide when the sign after it is known
+      } else if (s != 0 && sign(q_prev) == 0 && !std::isnan(t_zero)) {
+        if (s_before != 0 && s != s_before) {
+          root = t_zero;
+          from = s_before;
+        }
+        t_zero = std::nan("");
+      } else if (s != 0 && sign(q_prev) != 0 && s != sign(q_prev)) {
+        // Bisection on [t_prev, t]: halves the bracket until it stops shrinking (~1 ulp).
+        double lo = t_prev, hi = t;
+        const int s_lo = sign(q_prev);
+        for (int it = 0; it < 200; ++it) {
+          const double mid = 0.5 * (lo + hi);
+          if (mid <= lo || mid >= hi) break;
+          const double vm = q(eval(mid));
+          if (std::isnan(vm)) break;
+          if (sign(vm) == 0) {
+            lo = hi = mid;
+            break;
+          }
+          (sign(vm) == s_lo ? lo : hi) = mid;
+        }
+        root = 0.5 * (lo + hi);
+        from = s_lo;
+      }
+      if (!std::isnan(root)) {
+        const FrenetPoint p = eval(root);
+        Feature f;
+        f.kind = !extrema ? FeatureKind::Inflection
+                          : (from > 0 ? FeatureKind::CurvatureMaximum : FeatureKind::CurvatureMinimum);
+        f.t = root;
+        f.position = p.position;
+        f.curvature = extrema ? p.curvature : 0.0;
+        if (out.empty() || out.back().t != root || out.back().kind != f.kind) out.push_back(f);
+      }
+      if (s != 0) s_before = s;
+      t_prev = t;
+      q_prev = v;
+    }
+  }
+}
+
+std::vector<double> nurbs_cuts(const nurbs::NurbsCurve& curve) { return curve.knots().breakpoints(); }
+std::vector<double> law_cuts(nurbs::Interval d) {
+  std::vector<double> c;
+  for (int i = 0; i <= 64; ++i) c.push_back(d.start + d.length() * i / 64.0);
+  c.back() = d.end;
+  return c;
+}
+// Sign changes that happen across an interior knot (a jump of κ_s or dκ/ds between one-sided limits),
+// which the per-span sampling cannot see; the results stay sorted by t.
+void knot_jumps(const nurbs::NurbsCurve& curve, const FrenetOptions& o, Quantity q, bool extrema,
+                std::vector<Feature>& out) {
+  const std::vector<double> bp = curve.knots().breakpoints();
+  FrenetOptions left = o, right = o;
+  left.eval.side = nurbs::Side::Left;
+  right.eval.side = nurbs::Side::Right;
+  for (std::size_t i = 1; i + 1 < bp.size(); ++i) {
+    const FrenetPoint l = frenet(curve, bp[i], left), r = frenet(curve, bp[i], right);
+    const int sl = sign(q(l)), sr = sign(q(r));
+    if (sl == 0 || sr == 0 || sl == sr) continue;
+    Feature f;
+    f.kind =
+        !extrema ? FeatureKind::Inflection : (sl > 0 ? FeatureKind::CurvatureMaximum : FeatureKind::CurvatureMinimum);
+    f.t = bp[i];
+    f.position = r.position;
+    f.curvature = extrema ? std::max(l.curvature, r.curvature) : 0.0;
+    const auto at = std::lower_bound(out.begin(), out.end(), f.t, [](const Feature& a, double t) { return a.t < t; });
+    if (at == out.end() || at->t != f.t) out.insert(at, f);
+  }
+}
+
+Eval nurbs_eval(const nurbs::NurbsCurve& curve, const FrenetOptions& o) {
+  return [&curve, o](double t) { return frenet(curve, t, o); };
+}
+}  // namespace
+
+void FeatureOptions::validate() const {
+  frenet.validate();
+  if (samples_per_span < 2 || samples_per_span > 100000)
+    throw Error(Errc::InvalidOption,
+                "samples_per_span = " + std::to_string(samples_per_span) + " must be in [2, 100000]",
+                {.field = "samples_per_span"});
+}
+
+std::string_view feature_kind_name(FeatureKind kind) noexcept {
+  switch (kind) {
+    case FeatureKind::Inflection:
+      return "inflection";
+    case FeatureKind::CurvatureMaximum:
+      return "curvature-maximum";
+    case FeatureKind::CurvatureMinimum:
+      return "curvature-minimum";
+  }
+  return "unknown";
+}
+
+std::vector<Feature> inflections(const nurbs::NurbsCurve& curve, const FeatureOptions& options) {
+  options.validate();
+  std::vector<Feature> out;
+  search(nurbs_eval(curve, options.frenet), signed_kappa, nurbs_cuts(curve), options.samples_per_span, false, out);
+  knot_jumps(curve, options.frenet, signed_kappa, false, out);
+  return out;
+}
+
+std::vector<Feature> curvature_extrema(const nurbs::NurbsCurve& curve, const FeatureOptions& options) {
+  options.validate();
+  std::vector<Feature> out;
+  search(nurbs_eval(curve, options.frenet), kappa_prime, nurbs_cuts(curve), options.samples_per_span, true, out);
+  knot_jumps(curve, options.frenet, kappa_prime, true, out);
+  return out;
+}
+
+std::vector<Feature> inflections(const LawFrenet& curve, nurbs::Interval domain, const FeatureOptions& options) {
+  options.validate();
+  std::vector<Feature> out;
+  search([&curve](double t) { return curve.at(t); }, signed_kappa, law_cuts(domain), options.samples_per_span, false,
+         out);
+  return out;
+}
+
+std::vector<Feature> curvature_extrema(const LawFrenet& curve, nurbs::Interval domain, const FeatureOptions& options) {
+  options.validate();
+  std::vector<Feature> out;
+  search([&curve](double t) { return curve.at(t); }, kappa_prime, law_cuts(domain), options.samples_per_span, true,
+         out);
+  return out;
+}
+
+}  // namespace hula::diffgeom
