@@ -91,6 +91,29 @@ TEST(AnalyseCli, ByArcLength) {
   }
 }
 
+// checks --features on the planar S-curve (x, x³ − x) as a cubic Bézier split at a double knot: one inflection
+// at t = 0.5, and the knot table at the double knot (4 left and 4 right derivatives; one cubic, so C3).
+TEST(AnalyseCli, Features) {
+  const testing::TempDir dir;
+  const std::string f = write(dir, "s.json",
+                              R"J({"kind": "nurbs", "degree": 3, "knots": [0, 0, 0, 0, 0.5, 0.5, 1, 1, 1, 1],
+      "control_points": [[-1, 0], [-0.6666666666666666, 0.6666666666666666], [-0.3333333333333333, 0.3333333333333333],
+                         [0.3333333333333333, -0.3333333333333333], [0.6666666666666666, -0.6666666666666666], [1, 0]]})J");
+  const ProcessResult r = hula({"analyse", f, "--samples", "2", "--features"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(r.out);
+  ASSERT_TRUE(j.contains("features"));
+  const json& ft = j["features"];
+  ASSERT_EQ(ft["inflections"].size(), 1U);
+  EXPECT_NEAR(ft["inflections"][0]["t"].get<double>(), 0.5, 1e-10);
+  ASSERT_EQ(ft["knots"].size(), 1U);
+  EXPECT_EQ(ft["knots"][0]["multiplicity"], 2);
+  EXPECT_EQ(ft["knots"][0]["parametric"], "C3");
+  EXPECT_EQ(ft["knots"][0]["left"].size(), 4U);
+  EXPECT_EQ(ft["knots"][0]["right"].size(), 4U);
+  EXPECT_TRUE(ft["curvature_extrema"].is_array());
+}
+
 // checks exit codes: 2 for a usage error (both --at and --samples), 3 for an out-of-domain t naming t[1]
 // and for a missing file.
 TEST(AnalyseCli, ExitCodes) {

@@ -12,6 +12,8 @@
 #include "commands/common.hpp"
 #include "hula/core/error.hpp"
 #include "hula/diffgeom/bishop.hpp"
+#include "hula/diffgeom/continuity.hpp"
+#include "hula/diffgeom/features.hpp"
 #include "hula/law/derive.hpp"
 #include "hula/law/integrate.hpp"
 #include "hula/nurbs/arc_length.hpp"
@@ -28,6 +30,7 @@ struct AnalyseArgs {
   std::string at;
   int samples = 0;
   std::string by = "parameter";
+  bool features = false;
 };
 
 Json number_or_null(double x, bool defined) { return defined && std::isfinite(x) ? Json(x) : Json(nullptr); }
@@ -72,6 +75,7 @@ class Subject {
     }
     return t;
   }
+  [[nodiscard]] const diffgeom::LawFrenet* law() const { return law_ ? &*law_ : nullptr; }
   [[nodiscard]] double total_length() const { return length_to(domain().end); }
   void frenet(std::span<const double> ts, std::span<diffgeom::FrenetPoint> out) const {
     if (law_) {
@@ -92,6 +96,53 @@ class Subject {
   std::optional<diffgeom::LawFrenet> law_;
   law::Law speed_{};
 };
+
+// {"inflections", "curvature_extrema", "knots"}: inflections only for planar curves (about their
+// plane's normal; [] for space curves), extrema of κ, and the continuity at every interior knot
+// (NURBS only; a law has no knots).
+Json features_to_json(const io::CurveFile& file, const Subject& subject) {
+  const Planarity plane = planarity(file.curve);
+  diffgeom::FeatureOptions fo;
+  if (plane.normal) fo.frenet.plane_normal = *plane.normal;
+  const nurbs::Interval dom = subject.domain();
+  std::vector<diffgeom::Feature> infl, ext;
+  if (subject.law()) {
+    if (plane.planar) infl = diffgeom::inflections(*subject.law(), dom, fo);
+    ext = diffgeom::curvature_extrema(*subject.law(), dom, fo);
+  } else {
+    if (plane.planar) infl = diffgeom::inflections(file.curve, fo);
+    ext = diffgeom::curvature_extrema(file.curve, fo);
+  }
+  auto vec = [](const Vec3& v) { return Json::array({v.x, v.y, v.z}); };
+  Json j = Json::object();
+  Json ji = Json::array();
+  for (const auto& f : infl) ji.push_back(Json{{"t", f.t}, {"position", vec(f.position)}});
+  Json je = Json::array();
+  for (const auto& f : ext)
+    je.push_back(Json{{"t", f.t},
+                      {"kind", f.kind == diffgeom::FeatureKind::CurvatureMaximum ? "maximum" : "minimum"},
+                      {"kappa", f.curvature},
+                      {"position", vec(f.position)}});
+  Json jk = Json::array();
+  if (!subject.law()) {
+    for (const diffgeom::Continuity& c : diffgeom::knot_continuity(file.curve)) {
+      Json left = Json::array(), right = Json::array();
+      for (const Vec3& v : c.left) left.push_back(vec(v));
+      for (const Vec3& v : c.right) right.push_back(vec(v));
+      jk.push_back(Json{{"t", c.t},
+                        {"multiplicity", c.multiplicity},
+                        {"parametric", c.parametric < 0 ? Json(nullptr) : Json("C" + std::to_string(c.parametric))},
+                        {"geometric", c.geometric < 0 ? Json(nullptr) : Json("G" + std::to_string(c.geometric))},
+                        {"tangent_angle", std::isfinite(c.tangent_angle) ? Json(c.tangent_angle) : Json(nullptr)},
+                        {"left", std::move(left)},
+                        {"right", std::move(right)}});
+    }
+  }
+  j["inflections"] = std::move(ji);
+  j["curvature_extrema"] = std::move(je);
+  j["knots"] = std::move(jk);
+  return j;
+}
 
 int run_analyse(const AnalyseArgs& a) {
   const io::CurveFile file = io::read_curve_file(a.curve);
@@ -163,6 +214,7 @@ int run_analyse(const AnalyseArgs& a) {
   }
   Json doc = Json::object();
   doc["points"] = std::move(list);
+  if (a.features) doc["features"] = features_to_json(file, subject);
   print_json(doc);
   return kExitOk;
 }
@@ -179,6 +231,8 @@ Command add_analyse(CLI::App& app) {
   at->excludes(n);
   sub->add_option("--by", args->by, "Abscissa of --at / --samples: parameter | arclength (default parameter)")
       ->check(CLI::IsMember({"parameter", "arclength"}));
+  sub->add_flag("--features", args->features,
+                "Add \"features\": inflections (planar curves), curvature extrema, knot continuity");
   return {sub, [args, sub] {
             if (sub->count("--at") == 0 && sub->count("--samples") == 0)
               throw Error(Errc::InvalidArgument, "give --at or --samples", {.field = "at"});

@@ -21,15 +21,17 @@ double kappa_prime(const FrenetPoint& p) { return p.frame_defined ? p.curvature_
 int sign(double x) { return x > 0.0 ? 1 : (x < 0.0 ? -1 : 0); }
 
 // Roots with a strict sign change of q over the pieces [cuts[i], cuts[i+1]], each sampled at n points.
-// A zero sample between samples of opposite signs is itself the root (exact inflections).
+// A zero sample (or run of zero samples) between samples of opposite signs is itself the root (exact
+// inflections, also at knots).
 void search(const Eval& eval, Quantity q, const std::vector<double>& cuts, int n, bool extrema,
             std::vector<Feature>& out) {
+  // One pass over all spans, so a zero sample at a knot is judged by the signs on both sides.
+  double t_prev = cuts.front();
+  double q_prev = q(eval(t_prev));
+  double t_zero = std::nan("");  // a zero sample waiting for the next sign
+  int s_before = sign(q_prev);
   for (std::size_t c = 0; c + 1 < cuts.size(); ++c) {
     const double a = cuts[c], b = cuts[c + 1];
-    double t_prev = a;
-    double q_prev = q(eval(a));
-    double t_zero = std::nan("");  // a zero sample waiting for the next sign
-    int s_before = sign(q_prev);
     for (int i = 1; i <= n; ++i) {
       const double t = i == n ? b : a + (b - a) * i / n;
       const double v = q(eval(t));
