@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 
 #include "hula/testing/run_process.hpp"
@@ -112,6 +113,24 @@ TEST(AnalyseCli, Features) {
   EXPECT_EQ(ft["knots"][0]["left"].size(), 4U);
   EXPECT_EQ(ft["knots"][0]["right"].size(), 4U);
   EXPECT_TRUE(ft["curvature_extrema"].is_array());
+}
+
+// checks --svg writes curve.svg, kappa.svg and tau.svg (complete SVG documents) and still prints the points.
+TEST(AnalyseCli, SvgFiles) {
+  const testing::TempDir dir;
+  const ProcessResult r =
+      hula({"analyse", write(dir, "helix.json", kHelix), "--samples", "2", "--svg", (dir.path() / "fig").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(json::parse(r.out)["points"].size(), 2U);
+  for (const char* name : {"curve.svg", "kappa.svg", "tau.svg"}) {
+    std::ifstream in(dir.path() / "fig" / name);
+    std::ostringstream buffer;
+    buffer << in.rdbuf();
+    const std::string text = buffer.str();
+    EXPECT_EQ(text.rfind("<svg", 0), 0U) << name;
+    EXPECT_NE(text.find("</svg>"), std::string::npos) << name;
+    EXPECT_NE(text.find("<path"), std::string::npos) << name;
+  }
 }
 
 // checks exit codes: 2 for a usage error (both --at and --samples), 3 for an out-of-domain t naming t[1]

@@ -14,6 +14,8 @@
 #include "hula/diffgeom/bishop.hpp"
 #include "hula/diffgeom/continuity.hpp"
 #include "hula/diffgeom/features.hpp"
+#include "hula/diffgeom/fins.hpp"
+#include "hula/io/atomic_file.hpp"
 #include "hula/law/derive.hpp"
 #include "hula/law/integrate.hpp"
 #include "hula/nurbs/arc_length.hpp"
@@ -31,6 +33,7 @@ struct AnalyseArgs {
   int samples = 0;
   std::string by = "parameter";
   bool features = false;
+  std::string svg;
 };
 
 Json number_or_null(double x, bool defined) { return defined && std::isfinite(x) ? Json(x) : Json(nullptr); }
@@ -144,6 +147,106 @@ Json features_to_json(const io::CurveFile& file, const Subject& subject) {
   return j;
 }
 
+// --- SVG figures (thesis figures 32–48): the curve seen from +Z with its curvature fins (blue) and
+// torsion fins (red), and κ(t), τ(t) plots. Written with io::write_file_atomically.
+struct Polyline {
+  std::vector<Vec3> points;  // NaN points break the line
+  std::string colour;
+  double width = 1.0;
+};
+
+std::string svg_document(const std::vector<Polyline>& lines, const std::string& title) {
+  Box3 box;
+  for (const Polyline& l : lines)
+    for (const Vec3& p : l.points)
+      if (is_finite(p)) box.add(p);
+  if (box.empty()) box.add(Vec3{0, 0, 0});
+  const double w = std::max(box.max.x - box.min.x, 1e-300), h = std::max(box.max.y - box.min.y, 1e-300);
+  const double size = 800.0, margin = 20.0;
+  const double k = (size - 2 * margin) / std::max(w, h);
+  auto X = [&](double x) { return margin + (x - box.min.x) * k; };
+  auto Y = [&](double y) { return size - margin - (y - box.min.y) * k; };  // SVG y points down
+  std::string out = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"800\" height=\"800\" viewBox=\"0 0 800 800\">\n";
+  out += "<title>" + title + "</title>\n<rect width=\"800\" height=\"800\" fill=\"white\"/>\n";
+  for (const Polyline& l : lines) {
+    std::string d;
+    bool pen = false;
+    for (const Vec3& p : l.points) {
+      if (!is_finite(p)) {
+        pen = false;
+        continue;
+      }
+      d += (pen ? " L" : " M") + format_number(X(p.x)) + " " + format_number(Y(p.y));
+      pen = true;
+    }
+    if (!d.empty())
+      out += "<path fill=\"none\" stroke=\"" + l.colour + "\" stroke-width=\"" + format_number(l.width) + "\" d=\"" +
+             d + "\"/>\n";
+  }
+  return out + "</svg>\n";
+}
+
+void write_svgs(const std::filesystem::path& dir, const io::CurveFile& file, const Subject& subject) {
+  std::filesystem::create_directories(dir);
+  const nurbs::Interval dom = subject.domain();
+  constexpr int kSamples = 400;
+  std::vector<double> ts(kSamples);
+  for (int i = 0; i < kSamples; ++i) ts[static_cast<std::size_t>(i)] = dom.start + dom.length() * i / (kSamples - 1);
+  ts.back() = dom.end;
+  std::vector<diffgeom::FrenetPoint> pts(ts.size());
+  subject.frenet(ts, pts);
+  // Fin scale: the largest fin is a fifth of the curve's size.
+  Box3 box;
+  double kmax = 0.0, tmax = 0.0;
+  for (const auto& p : pts) {
+    box.add(p.position);
+    if (p.tangent_defined) kmax = std::max(kmax, p.curvature);
+    if (p.torsion_defined) tmax = std::max(tmax, std::fabs(p.torsion));
+  }
+  const double size = std::max(box.diagonal(), 1e-300);
+  auto comb = [&](diffgeom::FinKind kind, double qmax, const std::string& colour, std::vector<Polyline>& out) {
+    diffgeom::FinOptions fo;
+    fo.kind = kind;
+    fo.density = 120;
+    fo.scale = qmax > 0 ? 0.2 * size / qmax : 1.0;
+    const diffgeom::Fins f = subject.law() ? diffgeom::fins(*subject.law(), dom, fo) : diffgeom::fins(file.curve, fo);
+    for (std::size_t i = 0; i < f.tip.size(); ++i)
+      if (f.defined[i]) out.push_back({{f.base[i], f.tip[i]}, colour, 0.5});
+    out.push_back({f.tip, colour, 1.0});
+  };
+  std::vector<Polyline> curve;
+  comb(diffgeom::FinKind::Curvature, kmax, "#1f5fbf", curve);
+  comb(diffgeom::FinKind::Torsion, tmax, "#c0392b", curve);
+  Polyline c{{}, "black", 2.0};
+  for (const auto& p : pts) c.points.push_back(p.position);
+  curve.push_back(c);
+  io::write_file_atomically(dir / "curve.svg",
+                            svg_document(curve, "curve (seen from +Z) with curvature and torsion fins"));
+  // Plots: x = t scaled to the domain, y = the quantity; NaN breaks the line.
+  auto plot = [&](auto value, const std::string& name, const std::string& colour) {
+    Polyline l{{}, colour, 1.5};
+    double lo = HUGE_VAL, hi = -HUGE_VAL;
+    for (const auto& p : pts) {
+      const double v = value(p);
+      if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+    }
+    const double span = hi > lo ? hi - lo : 1.0;
+    for (const auto& p : pts) {
+      const double v = value(p);
+      l.points.push_back(std::isfinite(v) ? Vec3{(p.t - dom.start) / dom.length(), (v - lo) / span, 0}
+                                          : Vec3{std::nan(""), std::nan(""), std::nan("")});
+    }
+    Polyline axis{{{0, std::isfinite(lo) && lo < 0 && hi > 0 ? -lo / span : 0, 0},
+                   {1, std::isfinite(lo) && lo < 0 && hi > 0 ? -lo / span : 0, 0}},
+                  "#888888",
+                  0.5};
+    io::write_file_atomically(dir / (name + ".svg"), svg_document({axis, l}, name + " against the parameter t"));
+  };
+  plot([](const diffgeom::FrenetPoint& p) { return p.tangent_defined ? p.signed_curvature : std::nan(""); }, "kappa",
+       "#1f5fbf");
+  plot([](const diffgeom::FrenetPoint& p) { return p.torsion_defined ? p.torsion : std::nan(""); }, "tau", "#c0392b");
+}
+
 int run_analyse(const AnalyseArgs& a) {
   const io::CurveFile file = io::read_curve_file(a.curve);
   const Subject subject(file);
@@ -215,6 +318,7 @@ int run_analyse(const AnalyseArgs& a) {
   Json doc = Json::object();
   doc["points"] = std::move(list);
   if (a.features) doc["features"] = features_to_json(file, subject);
+  if (!a.svg.empty()) write_svgs(a.svg, file, subject);
   print_json(doc);
   return kExitOk;
 }
@@ -233,6 +337,8 @@ Command add_analyse(CLI::App& app) {
       ->check(CLI::IsMember({"parameter", "arclength"}));
   sub->add_flag("--features", args->features,
                 "Add \"features\": inflections (planar curves), curvature extrema, knot continuity");
+  sub->add_option("--svg", args->svg,
+                  "Write curve.svg (curvature and torsion fins), kappa.svg and tau.svg into this directory");
   return {sub, [args, sub] {
             if (sub->count("--at") == 0 && sub->count("--samples") == 0)
               throw Error(Errc::InvalidArgument, "give --at or --samples", {.field = "at"});
