@@ -53,5 +53,30 @@ TEST(Plot, SCurveSigned) {
   }
 }
 
+// checks the log curvature graph of the twisted cubic (t, t², t³) against x = −log10 κ, y = log10(κ/|dκ/ds|)
+// from the closed forms κ = |a|/v³ and dκ/ds (chain rule), a = (6t², −6t, 2), v² = 1 + 4t² + 9t⁴.
+TEST(Plot, LogCurvatureGraphTwistedCubic) {
+  const nurbs::NurbsCurve c(3, {0, 0, 0, 0, 1, 1, 1, 1},
+                            {{0, 0, 0}, {1.0 / 3, 0, 0}, {2.0 / 3, 1.0 / 3, 0}, {1, 1, 1}});
+  PlotOptions o;
+  o.quantity = PlotQuantity::LogCurvatureGraph;
+  o.samples = 21;
+  const Plot p = plot(c, o);
+  for (std::size_t i = 0; i < p.t.size(); ++i) {
+    const double t = p.t[i], t2 = t * t;
+    const double v2 = 1 + 4 * t2 + 9 * t2 * t2, a2 = 36 * t2 * t2 + 36 * t2 + 4;
+    const double k = std::sqrt(a2) / std::pow(v2, 1.5);
+    const double da2 = 144 * t2 * t + 72 * t, dv2 = 8 * t + 36 * t2 * t;
+    const double dk = (0.5 * da2 / std::sqrt(a2)) / std::pow(v2, 1.5) - 1.5 * std::sqrt(a2) * dv2 / std::pow(v2, 2.5);
+    const double kp = dk / std::sqrt(v2);
+    if (kp == 0.0) {
+      EXPECT_EQ(p.defined[i], 0);
+      continue;
+    }
+    EXPECT_NEAR(p.x[i], -std::log10(k), 1e-10);
+    EXPECT_NEAR(p.y[i], std::log10(k / std::fabs(kp)), 1e-8);
+  }
+}
+
 }  // namespace
 }  // namespace hula::diffgeom
