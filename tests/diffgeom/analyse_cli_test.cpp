@@ -113,6 +113,7 @@ TEST(AnalyseCli, Features) {
   EXPECT_EQ(ft["knots"][0]["left"].size(), 4U);
   EXPECT_EQ(ft["knots"][0]["right"].size(), 4U);
   EXPECT_TRUE(ft["curvature_extrema"].is_array());
+  EXPECT_TRUE(ft["torsion_extrema"].empty());  // planar: τ = 0 is never a strict extremum
 }
 
 // checks --svg writes curve.svg, kappa.svg and tau.svg (complete SVG documents) and still prints the points.

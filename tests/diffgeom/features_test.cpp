@@ -50,6 +50,18 @@ TEST(Features, EllipseCurvatureExtrema) {
   EXPECT_TRUE(inflections(e, dom).empty());  // convex
 }
 
+// checks the twisted cubic (t, t², t³) on [−1, 1] (Bézier by blossoms): τ = 3/(9t⁴ + 9t² + 1) has its only
+// extremum, a maximum τ = 3, at t = 0.
+TEST(Features, TwistedCubicTorsionMaximum) {
+  const nurbs::NurbsCurve c(3, {-1, -1, -1, -1, 1, 1, 1, 1},
+                            {{-1, 1, -1}, {-1.0 / 3, -1.0 / 3, 1}, {1.0 / 3, -1.0 / 3, -1}, {1, 1, 1}});
+  const std::vector<Feature> f = torsion_extrema(c);
+  ASSERT_EQ(f.size(), 1U);
+  EXPECT_EQ(f[0].kind, FeatureKind::TorsionMaximum);
+  EXPECT_NEAR(f[0].t, 0.0, 1e-12);
+  EXPECT_NEAR(f[0].torsion, 3.0, 1e-12);
+}
+
 // checks no features on a circle (constant κ: no sign change of dκ/ds, none of κ_s) and a bad option.
 TEST(Features, CircleHasNoneAndOptionsValidate) {
   const nurbs::NurbsCurve c = testing::rational_circle(2.0);

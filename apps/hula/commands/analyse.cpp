@@ -126,6 +126,13 @@ Json features_to_json(const io::CurveFile& file, const Subject& subject) {
                       {"kind", f.kind == diffgeom::FeatureKind::CurvatureMaximum ? "maximum" : "minimum"},
                       {"kappa", f.curvature},
                       {"position", vec(f.position)}});
+  Json jt = Json::array();
+  if (!subject.law())
+    for (const auto& f : diffgeom::torsion_extrema(file.curve, fo))
+      jt.push_back(Json{{"t", f.t},
+                        {"kind", f.kind == diffgeom::FeatureKind::TorsionMaximum ? "maximum" : "minimum"},
+                        {"tau", f.torsion},
+                        {"position", vec(f.position)}});
   Json jk = Json::array();
   if (!subject.law()) {
     for (const diffgeom::Continuity& c : diffgeom::knot_continuity(file.curve)) {
@@ -143,6 +150,7 @@ Json features_to_json(const io::CurveFile& file, const Subject& subject) {
   }
   j["inflections"] = std::move(ji);
   j["curvature_extrema"] = std::move(je);
+  j["torsion_extrema"] = std::move(jt);
   j["knots"] = std::move(jk);
   return j;
 }

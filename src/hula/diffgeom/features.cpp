@@ -4,6 +4,7 @@
 #include "hula/diffgeom/features.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 
@@ -23,18 +24,19 @@ int sign(double x) { return x > 0.0 ? 1 : (x < 0.0 ? -1 : 0); }
 // Roots with a strict sign change of q over the pieces [cuts[i], cuts[i+1]], each sampled at n points.
 // A zero sample (or run of zero samples) between samples of opposite signs is itself the root (exact
 // inflections, also at knots).
-void search(const Eval& eval, Quantity q, const std::vector<double>& cuts, int n, bool extrema,
-            std::vector<Feature>& out) {
+// `value` gives the searched quantity; a root where it falls from + to − is `falling`, else `rising`.
+void search(const Eval& eval, const std::function<double(double)>& value, const std::vector<double>& cuts, int n,
+            FeatureKind falling, FeatureKind rising, std::vector<Feature>& out) {
   // One pass over all spans, so a zero sample at a knot is judged by the signs on both sides.
   double t_prev = cuts.front();
-  double q_prev = q(eval(t_prev));
+  double q_prev = value(t_prev);
   double t_zero = std::nan("");  // a zero sample waiting for the next sign
   int s_before = sign(q_prev);
   for (std::size_t c = 0; c + 1 < cuts.size(); ++c) {
     const double a = cuts[c], b = cuts[c + 1];
     for (int i = 1; i <= n; ++i) {
       const double t = i == n ? b : a + (b - a) * i / n;
-      const double v = q(eval(t));
+      const double v = value(t);
       const int s = sign(v);
       if (std::isnan(v) || std::isnan(q_prev)) {
         t_prev = t;
@@ -60,7 +62,7 @@ void search(const Eval& eval, Quantity q, const std::vector<double>& cuts, int n
         for (int it = 0; it < 200; ++it) {
           const double mid = 0.5 * (lo + hi);
           if (mid <= lo || mid >= hi) break;
-          const double vm = q(eval(mid));
+          const double vm = value(mid);
           if (std::isnan(vm)) break;
           if (sign(vm) == 0) {
             lo = hi = mid;
@@ -74,11 +76,11 @@ void search(const Eval& eval, Quantity q, const std::vector<double>& cuts, int n
       if (!std::isnan(root)) {
         const FrenetPoint p = eval(root);
         Feature f;
-        f.kind = !extrema ? FeatureKind::Inflection
-                          : (from > 0 ? FeatureKind::CurvatureMaximum : FeatureKind::CurvatureMinimum);
+        f.kind = from > 0 ? falling : rising;
         f.t = root;
         f.position = p.position;
-        f.curvature = extrema ? p.curvature : 0.0;
+        f.curvature = f.kind == FeatureKind::Inflection ? 0.0 : p.curvature;
+        f.torsion = p.torsion;
         if (out.empty() || out.back().t != root || out.back().kind != f.kind) out.push_back(f);
       }
       if (s != 0) s_before = s;
@@ -139,6 +141,10 @@ std::string_view feature_kind_name(FeatureKind kind) noexcept {
       return "curvature-maximum";
     case FeatureKind::CurvatureMinimum:
       return "curvature-minimum";
+    case FeatureKind::TorsionMaximum:
+      return "torsion-maximum";
+    case FeatureKind::TorsionMinimum:
+      return "torsion-minimum";
   }
   return "unknown";
 }
@@ -146,7 +152,10 @@ std::string_view feature_kind_name(FeatureKind kind) noexcept {
 std::vector<Feature> inflections(const nurbs::NurbsCurve& curve, const FeatureOptions& options) {
   options.validate();
   std::vector<Feature> out;
-  search(nurbs_eval(curve, options.frenet), signed_kappa, nurbs_cuts(curve), options.samples_per_span, false, out);
+  const Eval eval = nurbs_eval(curve, options.frenet);
+  search(
+      eval, [&](double t) { return signed_kappa(eval(t)); }, nurbs_cuts(curve), options.samples_per_span,
+      FeatureKind::Inflection, FeatureKind::Inflection, out);
   knot_jumps(curve, options.frenet, signed_kappa, false, out);
   return out;
 }
@@ -154,7 +163,10 @@ std::vector<Feature> inflections(const nurbs::NurbsCurve& curve, const FeatureOp
 std::vector<Feature> curvature_extrema(const nurbs::NurbsCurve& curve, const FeatureOptions& options) {
   options.validate();
   std::vector<Feature> out;
-  search(nurbs_eval(curve, options.frenet), kappa_prime, nurbs_cuts(curve), options.samples_per_span, true, out);
+  const Eval eval = nurbs_eval(curve, options.frenet);
+  search(
+      eval, [&](double t) { return kappa_prime(eval(t)); }, nurbs_cuts(curve), options.samples_per_span,
+      FeatureKind::CurvatureMaximum, FeatureKind::CurvatureMinimum, out);
   knot_jumps(curve, options.frenet, kappa_prime, true, out);
   return out;
 }
@@ -162,16 +174,40 @@ std::vector<Feature> curvature_extrema(const nurbs::NurbsCurve& curve, const Fea
 std::vector<Feature> inflections(const LawFrenet& curve, nurbs::Interval domain, const FeatureOptions& options) {
   options.validate();
   std::vector<Feature> out;
-  search([&curve](double t) { return curve.at(t); }, signed_kappa, law_cuts(domain), options.samples_per_span, false,
-         out);
+  const Eval eval = [&curve](double t) { return curve.at(t); };
+  search(
+      eval, [&](double t) { return signed_kappa(eval(t)); }, law_cuts(domain), options.samples_per_span,
+      FeatureKind::Inflection, FeatureKind::Inflection, out);
   return out;
 }
 
 std::vector<Feature> curvature_extrema(const LawFrenet& curve, nurbs::Interval domain, const FeatureOptions& options) {
   options.validate();
   std::vector<Feature> out;
-  search([&curve](double t) { return curve.at(t); }, kappa_prime, law_cuts(domain), options.samples_per_span, true,
-         out);
+  const Eval eval = [&curve](double t) { return curve.at(t); };
+  search(
+      eval, [&](double t) { return kappa_prime(eval(t)); }, law_cuts(domain), options.samples_per_span,
+      FeatureKind::CurvatureMaximum, FeatureKind::CurvatureMinimum, out);
+  return out;
+}
+
+std::vector<Feature> torsion_extrema(const nurbs::NurbsCurve& curve, const FeatureOptions& options) {
+  options.validate();
+  const FrenetScale scale = frenet_scale(curve, options.frenet.tolerance);
+  const FrenetOptions fo = options.frenet;
+  // The sign of dτ/dt (= sign of dτ/ds): with a = r' × r'', a' = r' × r''',
+  // dτ/dt = [(a' · r''' + a · r'''') |a|² − 2 (a · r''') (a · a')] / |a|⁴; only the numerator is needed.
+  auto dtau = [&curve, &scale, fo](double t) {
+    std::array<Vec3, 5> d;
+    curve.derivatives(t, 4, d, fo.eval);
+    const FrenetPoint p = frenet_from_derivatives(t, std::span<const Vec3, 4>(d.data(), 4), scale, fo);
+    if (!p.frame_defined) return std::nan("");
+    const Vec3 a = cross(d[1], d[2]), a1 = cross(d[1], d[3]);
+    return (dot(a1, d[3]) + dot(a, d[4])) * dot(a, a) - 2.0 * dot(a, d[3]) * dot(a, a1);
+  };
+  std::vector<Feature> out;
+  search(nurbs_eval(curve, options.frenet), dtau, nurbs_cuts(curve), options.samples_per_span,
+         FeatureKind::TorsionMaximum, FeatureKind::TorsionMinimum, out);
   return out;
 }
 

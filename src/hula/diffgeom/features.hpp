@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Curve features (thesis 6.3.1, 7.1): inflection points of planar curves (sign
-// changes of the signed curvature) and curvature extrema (sign changes of
-// dκ/ds), found by sampling every knot span and refining each bracket by
+// changes of the signed curvature), curvature extrema (sign changes of
+// dκ/ds) and torsion extrema (sign changes of dτ/ds), found by sampling every knot span and refining each bracket by
 // bisection to the parameter resolution. A root is reported only where the
 // quantity changes sign, so straight spans and tangential zeros are not noise.
 #pragma once
@@ -28,9 +28,11 @@ enum class FeatureKind {
   Inflection,        ///< the signed curvature changes sign
   CurvatureMaximum,  ///< dκ/ds changes from + to −
   CurvatureMinimum,  ///< dκ/ds changes from − to +
+  TorsionMaximum,    ///< dτ/ds changes from + to −
+  TorsionMinimum,    ///< dτ/ds changes from − to +
 };
 
-/// "inflection", "curvature-maximum" or "curvature-minimum".
+/// "inflection", "curvature-maximum", "curvature-minimum", "torsion-maximum" or "torsion-minimum".
 [[nodiscard]] std::string_view feature_kind_name(FeatureKind kind) noexcept;
 
 /// One feature point.
@@ -41,6 +43,7 @@ struct Feature {
   double t = 0.0;
   Vec3 position{};         ///< r(t)
   double curvature = 0.0;  ///< κ at t (0 at an inflection)
+  double torsion = 0.0;    ///< τ at t (NaN where the frame is undefined)
 };
 
 /// Inflections of a curve about FeatureOptions::frenet.plane_normal (meaningful for planar curves
@@ -51,6 +54,10 @@ struct Feature {
 /// @throws hula::Error(Errc::InvalidOption) for bad options
 [[nodiscard]] std::vector<Feature> curvature_extrema(const nurbs::NurbsCurve& curve,
                                                      const FeatureOptions& options = {});
+/// Torsion maxima and minima (sign changes of dτ/ds, from r' … r''''), in increasing t. Knots where
+/// τ only jumps are not reported. Uses unscaled derivatives: meant for curves of ordinary scale.
+/// @throws hula::Error(Errc::InvalidOption) for bad options
+[[nodiscard]] std::vector<Feature> torsion_extrema(const nurbs::NurbsCurve& curve, const FeatureOptions& options = {});
 /// Inflections of a law curve on [domain.start, domain.end].
 [[nodiscard]] std::vector<Feature> inflections(const LawFrenet& curve, nurbs::Interval domain,
                                                const FeatureOptions& options = {});
