@@ -228,8 +228,20 @@ void write_svgs(const std::filesystem::path& dir, const io::CurveFile& file, con
   Polyline c{{}, "black", 2.0};
   for (const auto& p : pts) c.points.push_back(p.position);
   curve.push_back(c);
+  // Planar curves in XY are drawn seen from +Z; space curves in an isometric view (X = (x − y) cos 30°,
+  // Y = z + (x + y) sin 30°), so torsion fins along B are visible.
+  bool planar = true;
+  for (const Polyline& l : curve)
+    for (const Vec3& p : l.points)
+      if (is_finite(p) && std::fabs(p.z) > 1e-12 * size) planar = false;
+  if (!planar) {
+    const double c30 = std::sqrt(3.0) / 2.0;
+    for (Polyline& l : curve)
+      for (Vec3& p : l.points) p = Vec3{(p.x - p.y) * c30, p.z + (p.x + p.y) * 0.5, 0.0};
+  }
   io::write_file_atomically(dir / "curve.svg",
-                            svg_document(curve, "curve (seen from +Z) with curvature and torsion fins"));
+                            svg_document(curve, planar ? "curve (seen from +Z) with curvature and torsion fins"
+                                                       : "curve (isometric view) with curvature and torsion fins"));
   // Plots: x = t scaled to the domain, y = the quantity; NaN breaks the line.
   auto plot = [&](auto value, const std::string& name, const std::string& colour) {
     Polyline l{{}, colour, 1.5};
