@@ -94,6 +94,8 @@ struct Command {
 [[nodiscard]] Command add_interpolate(CLI::App& app);
 /// `hula eval`: positions and derivatives at parameters.
 [[nodiscard]] Command add_eval(CLI::App& app);
+/// `hula analyse`: Frenet/Bishop frames, curvature, torsion and speed of a curve file.
+[[nodiscard]] Command add_analyse(CLI::App& app);
 /// `hula law`: evaluate, differentiate and analyse a law expression.
 [[nodiscard]] Command add_law(CLI::App& app);
 /// Values and derivatives 0..order of a law at parameters: result[i][k * dimension + c].

@@ -1,0 +1,214 @@
+// SPDX-License-Identifier: MIT
+// Sign-change search with bisection for inflections and curvature extrema;
+// see features.hpp.
+#include "hula/diffgeom/features.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <functional>
+
+#include "hula/core/error.hpp"
+
+namespace hula::diffgeom {
+
+namespace {
+using Eval = std::function<FrenetPoint(double)>;
+using Quantity = double (*)(const FrenetPoint&);
+
+double signed_kappa(const FrenetPoint& p) { return p.tangent_defined ? p.signed_curvature : std::nan(""); }
+double kappa_prime(const FrenetPoint& p) { return p.frame_defined ? p.curvature_derivative : std::nan(""); }
+
+int sign(double x) { return x > 0.0 ? 1 : (x < 0.0 ? -1 : 0); }
+
+// Roots with a strict sign change of q over the pieces [cuts[i], cuts[i+1]], each sampled at n points.
+// A zero sample (or run of zero samples) between samples of opposite signs is itself the root (exact
+// inflections, also at knots).
+// `value` gives the searched quantity; a root where it falls from + to − is `falling`, else `rising`.
+void search(const Eval& eval, const std::function<double(double)>& value, const std::vector<double>& cuts, int n,
+            FeatureKind falling, FeatureKind rising, std::vector<Feature>& out) {
+  // One pass over all spans, so a zero sample at a knot is judged by the signs on both sides.
+  double t_prev = cuts.front();
+  double q_prev = value(t_prev);
+  double t_zero = std::nan("");  // a zero sample waiting for the next sign
+  int s_before = sign(q_prev);
+  for (std::size_t c = 0; c + 1 < cuts.size(); ++c) {
+    const double a = cuts[c], b = cuts[c + 1];
+    for (int i = 1; i <= n; ++i) {
+      const double t = i == n ? b : a + (b - a) * i / n;
+      const double v = value(t);
+      const int s = sign(v);
+      if (std::isnan(v) || std::isnan(q_prev)) {
+        t_prev = t;
+        q_prev = v;
+        s_before = sign(v);
+        t_zero = std::nan("");
+        continue;
+      }
+      double root = std::nan("");
+      int from = 0;
+      if (s == 0 && sign(q_prev) != 0) {
+        t_zero = t;  // decide when the sign after it is known
+      } else if (s != 0 && sign(q_prev) == 0 && !std::isnan(t_zero)) {
+        if (s_before != 0 && s != s_before) {
+          root = t_zero;
+          from = s_before;
+        }
+        t_zero = std::nan("");
+      } else if (s != 0 && sign(q_prev) != 0 && s != sign(q_prev)) {
+        // Bisection on [t_prev, t]: halves the bracket until it stops shrinking (~1 ulp).
+        double lo = t_prev, hi = t;
+        const int s_lo = sign(q_prev);
+        for (int it = 0; it < 200; ++it) {
+          const double mid = 0.5 * (lo + hi);
+          if (mid <= lo || mid >= hi) break;
+          const double vm = value(mid);
+          if (std::isnan(vm)) break;
+          if (sign(vm) == 0) {
+            lo = hi = mid;
+            break;
+          }
+          (sign(vm) == s_lo ? lo : hi) = mid;
+        }
+        root = 0.5 * (lo + hi);
+        from = s_lo;
+      }
+      if (!std::isnan(root)) {
+        const FrenetPoint p = eval(root);
+        Feature f;
+        f.kind = from > 0 ? falling : rising;
+        f.t = root;
+        f.position = p.position;
+        f.curvature = f.kind == FeatureKind::Inflection ? 0.0 : p.curvature;
+        f.torsion = p.torsion;
+        if (out.empty() || out.back().t != root || out.back().kind != f.kind) out.push_back(f);
+      }
+      if (s != 0) s_before = s;
+      t_prev = t;
+      q_prev = v;
+    }
+  }
+}
+
+std::vector<double> nurbs_cuts(const nurbs::NurbsCurve& curve) { return curve.knots().breakpoints(); }
+std::vector<double> law_cuts(nurbs::Interval d) {
+  std::vector<double> c;
+  for (int i = 0; i <= 64; ++i) c.push_back(d.start + d.length() * i / 64.0);
+  c.back() = d.end;
+  return c;
+}
+// Sign changes that happen across an interior knot (a jump of κ_s or dκ/ds between one-sided limits),
+// which the per-span sampling cannot see; the results stay sorted by t.
+void knot_jumps(const nurbs::NurbsCurve& curve, const FrenetOptions& o, Quantity q, bool extrema,
+                std::vector<Feature>& out) {
+  const std::vector<double> bp = curve.knots().breakpoints();
+  FrenetOptions left = o, right = o;
+  left.eval.side = nurbs::Side::Left;
+  right.eval.side = nurbs::Side::Right;
+  for (std::size_t i = 1; i + 1 < bp.size(); ++i) {
+    const FrenetPoint l = frenet(curve, bp[i], left), r = frenet(curve, bp[i], right);
+    const int sl = sign(q(l)), sr = sign(q(r));
+    if (sl == 0 || sr == 0 || sl == sr) continue;
+    Feature f;
+    f.kind =
+        !extrema ? FeatureKind::Inflection : (sl > 0 ? FeatureKind::CurvatureMaximum : FeatureKind::CurvatureMinimum);
+    f.t = bp[i];
+    f.position = r.position;
+    f.curvature = extrema ? std::max(l.curvature, r.curvature) : 0.0;
+    const auto at = std::lower_bound(out.begin(), out.end(), f.t, [](const Feature& a, double t) { return a.t < t; });
+    if (at == out.end() || at->t != f.t) out.insert(at, f);
+  }
+}
+
+Eval nurbs_eval(const nurbs::NurbsCurve& curve, const FrenetOptions& o) {
+  return [&curve, o](double t) { return frenet(curve, t, o); };
+}
+}  // namespace
+
+void FeatureOptions::validate() const {
+  frenet.validate();
+  if (samples_per_span < 2 || samples_per_span > 100000)
+    throw Error(Errc::InvalidOption,
+                "samples_per_span = " + std::to_string(samples_per_span) + " must be in [2, 100000]",
+                {.field = "samples_per_span"});
+}
+
+std::string_view feature_kind_name(FeatureKind kind) noexcept {
+  switch (kind) {
+    case FeatureKind::Inflection:
+      return "inflection";
+    case FeatureKind::CurvatureMaximum:
+      return "curvature-maximum";
+    case FeatureKind::CurvatureMinimum:
+      return "curvature-minimum";
+    case FeatureKind::TorsionMaximum:
+      return "torsion-maximum";
+    case FeatureKind::TorsionMinimum:
+      return "torsion-minimum";
+  }
+  return "unknown";
+}
+
+std::vector<Feature> inflections(const nurbs::NurbsCurve& curve, const FeatureOptions& options) {
+  options.validate();
+  std::vector<Feature> out;
+  const Eval eval = nurbs_eval(curve, options.frenet);
+  search(
+      eval, [&](double t) { return signed_kappa(eval(t)); }, nurbs_cuts(curve), options.samples_per_span,
+      FeatureKind::Inflection, FeatureKind::Inflection, out);
+  knot_jumps(curve, options.frenet, signed_kappa, false, out);
+  return out;
+}
+
+std::vector<Feature> curvature_extrema(const nurbs::NurbsCurve& curve, const FeatureOptions& options) {
+  options.validate();
+  std::vector<Feature> out;
+  const Eval eval = nurbs_eval(curve, options.frenet);
+  search(
+      eval, [&](double t) { return kappa_prime(eval(t)); }, nurbs_cuts(curve), options.samples_per_span,
+      FeatureKind::CurvatureMaximum, FeatureKind::CurvatureMinimum, out);
+  knot_jumps(curve, options.frenet, kappa_prime, true, out);
+  return out;
+}
+
+std::vector<Feature> inflections(const LawFrenet& curve, nurbs::Interval domain, const FeatureOptions& options) {
+  options.validate();
+  std::vector<Feature> out;
+  const Eval eval = [&curve](double t) { return curve.at(t); };
+  search(
+      eval, [&](double t) { return signed_kappa(eval(t)); }, law_cuts(domain), options.samples_per_span,
+      FeatureKind::Inflection, FeatureKind::Inflection, out);
+  return out;
+}
+
+std::vector<Feature> curvature_extrema(const LawFrenet& curve, nurbs::Interval domain, const FeatureOptions& options) {
+  options.validate();
+  std::vector<Feature> out;
+  const Eval eval = [&curve](double t) { return curve.at(t); };
+  search(
+      eval, [&](double t) { return kappa_prime(eval(t)); }, law_cuts(domain), options.samples_per_span,
+      FeatureKind::CurvatureMaximum, FeatureKind::CurvatureMinimum, out);
+  return out;
+}
+
+std::vector<Feature> torsion_extrema(const nurbs::NurbsCurve& curve, const FeatureOptions& options) {
+  options.validate();
+  const FrenetScale scale = frenet_scale(curve, options.frenet.tolerance);
+  const FrenetOptions fo = options.frenet;
+  // The sign of dτ/dt (= sign of dτ/ds): with a = r' × r'', a' = r' × r''',
+  // dτ/dt = [(a' · r''' + a · r'''') |a|² − 2 (a · r''') (a · a')] / |a|⁴; only the numerator is needed.
+  auto dtau = [&curve, &scale, fo](double t) {
+    std::array<Vec3, 5> d;
+    curve.derivatives(t, 4, d, fo.eval);
+    const FrenetPoint p = frenet_from_derivatives(t, std::span<const Vec3, 4>(d.data(), 4), scale, fo);
+    if (!p.frame_defined) return std::nan("");
+    const Vec3 a = cross(d[1], d[2]), a1 = cross(d[1], d[3]);
+    return (dot(a1, d[3]) + dot(a, d[4])) * dot(a, a) - 2.0 * dot(a, d[3]) * dot(a, a1);
+  };
+  std::vector<Feature> out;
+  search(nurbs_eval(curve, options.frenet), dtau, nurbs_cuts(curve), options.samples_per_span,
+         FeatureKind::TorsionMaximum, FeatureKind::TorsionMinimum, out);
+  return out;
+}
+
+}  // namespace hula::diffgeom

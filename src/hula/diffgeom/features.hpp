@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: MIT
+// Curve features (thesis 6.3.1, 7.1): inflection points of planar curves (sign
+// changes of the signed curvature), curvature extrema (sign changes of
+// dκ/ds) and torsion extrema (sign changes of dτ/ds), found by sampling every knot span and refining each bracket by
+// bisection to the parameter resolution. A root is reported only where the
+// quantity changes sign, so straight spans and tangential zeros are not noise.
+#pragma once
+#include <string_view>
+#include <vector>
+
+#include "hula/diffgeom/frenet.hpp"
+
+namespace hula::diffgeom {
+
+/// Options of the feature searches.
+struct FeatureOptions {
+  /// Samples per knot span (law curves: per 1/64 of the domain) used to bracket sign changes.
+  /// Default 32; two roots closer than a sample step may be missed. Valid: 2 … 100000.
+  int samples_per_span = 32;
+  /// Frenet options (tolerances, plane normal of the signed curvature). Default {}.
+  FrenetOptions frenet{};
+  /// Throws hula::Error(Errc::InvalidOption) naming the bad field.
+  void validate() const;
+};
+
+/// What a feature is.
+enum class FeatureKind {
+  Inflection,        ///< the signed curvature changes sign
+  CurvatureMaximum,  ///< dκ/ds changes from + to −
+  CurvatureMinimum,  ///< dκ/ds changes from − to +
+  TorsionMaximum,    ///< dτ/ds changes from + to −
+  TorsionMinimum,    ///< dτ/ds changes from − to +
+};
+
+/// "inflection", "curvature-maximum", "curvature-minimum", "torsion-maximum" or "torsion-minimum".
+[[nodiscard]] std::string_view feature_kind_name(FeatureKind kind) noexcept;
+
+/// One feature point.
+struct Feature {
+  FeatureKind kind = FeatureKind::Inflection;  ///< what it is
+  /// Parameter: to rounding where a sample hits the root; otherwise to where the quantity becomes
+  /// negligible (for inflections |κ| · model size ≤ tolerance.angular, the zero-curvature test).
+  double t = 0.0;
+  Vec3 position{};         ///< r(t)
+  double curvature = 0.0;  ///< κ at t (0 at an inflection)
+  double torsion = 0.0;    ///< τ at t (NaN where the frame is undefined)
+};
+
+/// Inflections of a curve about FeatureOptions::frenet.plane_normal (meaningful for planar curves
+/// in that plane; 2-D curves use +Z), in increasing t.
+/// @throws hula::Error(Errc::InvalidOption) for bad options
+[[nodiscard]] std::vector<Feature> inflections(const nurbs::NurbsCurve& curve, const FeatureOptions& options = {});
+/// Curvature maxima and minima in the open domain, in increasing t.
+/// @throws hula::Error(Errc::InvalidOption) for bad options
+[[nodiscard]] std::vector<Feature> curvature_extrema(const nurbs::NurbsCurve& curve,
+                                                     const FeatureOptions& options = {});
+/// Torsion maxima and minima (sign changes of dτ/ds, from r' … r''''), in increasing t. Knots where
+/// τ only jumps are not reported. Uses unscaled derivatives: meant for curves of ordinary scale.
+/// @throws hula::Error(Errc::InvalidOption) for bad options
+[[nodiscard]] std::vector<Feature> torsion_extrema(const nurbs::NurbsCurve& curve, const FeatureOptions& options = {});
+/// Inflections of a law curve on [domain.start, domain.end].
+[[nodiscard]] std::vector<Feature> inflections(const LawFrenet& curve, nurbs::Interval domain,
+                                               const FeatureOptions& options = {});
+/// Curvature extrema of a law curve on [domain.start, domain.end].
+[[nodiscard]] std::vector<Feature> curvature_extrema(const LawFrenet& curve, nurbs::Interval domain,
+                                                     const FeatureOptions& options = {});
+
+}  // namespace hula::diffgeom

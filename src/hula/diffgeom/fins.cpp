@@ -1,0 +1,124 @@
+// SPDX-License-Identifier: MIT
+// Fin polylines (thesis 6.3.2); see fins.hpp for the conventions.
+#include "hula/diffgeom/fins.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include "hula/core/error.hpp"
+#include "hula/diffgeom/bishop.hpp"
+
+namespace hula::diffgeom {
+
+namespace {
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+Fins build(std::span<const FrenetPoint> pts, const FinOptions& o) {
+  Fins f;
+  const std::size_t n = pts.size();
+  f.t.resize(n);
+  f.base.resize(n);
+  f.tip.assign(n, Vec3{kNaN, kNaN, kNaN});
+  f.defined.assign(n, 0);
+  BishopResult bishop;
+  if (o.kind == FinKind::BishopU || o.kind == FinKind::BishopV) {
+    BishopOptions bo;
+    bo.frenet = o.frenet;
+    bishop = bishop_frame(pts, bo);
+  }
+  auto length = [&](double q) {
+    const double l = o.scale * q;
+    return o.log_scale ? std::copysign(std::log1p(std::fabs(l)), l) : l;
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    const FrenetPoint& p = pts[i];
+    f.t[i] = p.t;
+    f.base[i] = p.position;
+    Vec3 dir;
+    double q = 1.0;
+    bool ok = p.frame_defined;
+    switch (o.kind) {
+      case FinKind::Curvature:
+        // The curvature vector κN is 0 (not undefined) where κ = 0, so the fin has length 0 there.
+        ok = p.tangent_defined;
+        dir = p.frame_defined ? p.normal * -1.0 : Vec3{};
+        q = p.frame_defined ? p.curvature : 0.0;
+        break;
+      case FinKind::Torsion:
+        dir = p.binormal;
+        q = p.torsion;
+        break;
+      case FinKind::Normal:
+        dir = p.normal * -1.0;
+        break;
+      case FinKind::Binormal:
+        dir = p.binormal * -1.0;
+        break;
+      case FinKind::BishopU:
+        ok = bishop.frames[i].defined;
+        dir = bishop.frames[i].u * -1.0;
+        break;
+      case FinKind::BishopV:
+        ok = bishop.frames[i].defined;
+        dir = bishop.frames[i].v * -1.0;
+        break;
+    }
+    if (!ok) continue;
+    f.tip[i] = p.position + dir * length(q);
+    f.defined[i] = 1;
+  }
+  return f;
+}
+
+std::vector<double> grid(nurbs::Interval d, int n) {
+  std::vector<double> ts(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) ts[static_cast<std::size_t>(i)] = d.start + d.length() * i / (n - 1);
+  ts.back() = d.end;
+  return ts;
+}
+}  // namespace
+
+std::string_view fin_kind_name(FinKind kind) noexcept {
+  switch (kind) {
+    case FinKind::Curvature:
+      return "curvature";
+    case FinKind::Torsion:
+      return "torsion";
+    case FinKind::Normal:
+      return "normal";
+    case FinKind::Binormal:
+      return "binormal";
+    case FinKind::BishopU:
+      return "bishop-u";
+    case FinKind::BishopV:
+      return "bishop-v";
+  }
+  return "unknown";
+}
+
+void FinOptions::validate() const {
+  frenet.validate();
+  if (!std::isfinite(scale))
+    throw Error(Errc::InvalidOption, "scale = " + format_number(scale) + " must be finite", {.field = "scale"});
+  if (density < 2 || density > 1000000)
+    throw Error(Errc::InvalidOption, "density = " + std::to_string(density) + " must be in [2, 1000000]",
+                {.field = "density"});
+}
+
+Fins fins(const nurbs::NurbsCurve& curve, const FinOptions& options) {
+  options.validate();
+  const std::vector<double> ts = grid(curve.domain(), options.density);
+  std::vector<FrenetPoint> pts(ts.size());
+  frenet(curve, ts, pts, options.frenet);
+  return build(pts, options);
+}
+
+Fins fins(const LawFrenet& curve, nurbs::Interval domain, const FinOptions& options) {
+  options.validate();
+  const std::vector<double> ts = grid(domain, options.density);
+  std::vector<FrenetPoint> pts(ts.size());
+  curve.at(ts, pts);
+  return build(pts, options);
+}
+
+}  // namespace hula::diffgeom

@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: MIT
+// Fins (compound renderings, thesis 6.3.2): segments from curve points P along
+// a frame direction scaled by a quantity, drawn as a comb, with the polyline
+// through the tips (the comb's envelope):
+//   curvature fin P − s κN, torsion fin P + s τB, normal fin P − s N, binormal fin
+//   P − s B, and the Bishop variants P − s U, P − s V.
+// κN is the curvature vector, so the curvature fin is defined wherever the
+// tangent is (it has length 0 where κ = 0), also through inflections.
+#pragma once
+#include <cstdint>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "hula/diffgeom/frenet.hpp"
+
+namespace hula::diffgeom {
+
+/// Which fin.
+enum class FinKind {
+  Curvature,  ///< P − s κN
+  Torsion,    ///< P + s τB (undefined where the frame is)
+  Normal,     ///< P − s N (undefined where the frame is)
+  Binormal,   ///< P − s B (undefined where the frame is)
+  BishopU,    ///< P − s U (Bishop frame; defined wherever T is)
+  BishopV,    ///< P − s V (Bishop frame)
+};
+
+/// "curvature", "torsion", "normal", "binormal", "bishop-u", "bishop-v".
+[[nodiscard]] std::string_view fin_kind_name(FinKind kind) noexcept;
+
+/// Options of fins().
+struct FinOptions {
+  /// Which fin. Default Curvature.
+  FinKind kind = FinKind::Curvature;
+  /// Scale s (model units per unit of the quantity; for the unit-vector fins, model units). Default 1.
+  /// Finite, may be negative (flips the fins).
+  double scale = 1.0;
+  /// Number of fins, equally spaced in the parameter over the domain, ends included. Default 200.
+  /// Valid: 2 … 1000000.
+  int density = 200;
+  /// Log scale: the fin length becomes sign(q) · log(1 + |s q|) instead of s q (log-aesthetic
+  /// plots of quantities that vary over decades). Default false.
+  bool log_scale = false;
+  /// Frenet options. Default {}.
+  FrenetOptions frenet{};
+  /// Throws hula::Error(Errc::InvalidOption) naming the bad field.
+  void validate() const;
+};
+
+/// A comb: base[i] on the curve, tip[i] at the fin's end; undefined fins have NaN tips and defined[i] = 0.
+struct Fins {
+  std::vector<double> t;              ///< parameters
+  std::vector<Vec3> base;             ///< P(t_i)
+  std::vector<Vec3> tip;              ///< fin ends (the envelope polyline, NaN where undefined)
+  std::vector<std::uint8_t> defined;  ///< 1 where the fin is defined
+};
+
+/// The fins of a NURBS curve.
+/// @throws hula::Error(Errc::InvalidOption) for bad options
+[[nodiscard]] Fins fins(const nurbs::NurbsCurve& curve, const FinOptions& options = {});
+/// The fins of a law curve over `domain`.
+/// @throws hula::Error(Errc::InvalidOption) for bad options
+[[nodiscard]] Fins fins(const LawFrenet& curve, nurbs::Interval domain, const FinOptions& options = {});
+
+}  // namespace hula::diffgeom

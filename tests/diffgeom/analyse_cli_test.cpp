@@ -1,0 +1,154 @@
+// SPDX-License-Identifier: MIT
+// Contract tests of `hula analyse` (run as a process): exit codes, the exact
+// JSON shape {"points": [{"t", "s", "position", "T", "N", "B", "kappa", "tau",
+// "kappa_prime", "speed", "bishop": {"U", "V"}}]}, null where undefined, values
+// against the helix closed form, and arc-length sampling.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+#include "hula/testing/run_process.hpp"
+#include "hula/testing/temp_dir.hpp"
+
+#ifndef HULA_CLI_PATH
+#error "HULA_CLI_PATH must name the hula binary"
+#endif
+
+namespace hula::diffgeom {
+namespace {
+
+using nlohmann::json;
+using testing::ProcessResult;
+
+ProcessResult hula(const std::vector<std::string>& args) { return testing::run_process(HULA_CLI_PATH, args); }
+
+std::string write(const testing::TempDir& dir, const std::string& name, const std::string& text) {
+  const std::filesystem::path p = dir.path() / name;
+  std::ofstream(p) << text;
+  return p.string();
+}
+
+constexpr const char* kHelix =
+    R"J({"kind": "law", "expression": "vec(2*cos(t), 2*sin(t), 0.5*t)", "parameter": "t", "domain": [0, 12.566370614359172]})J";
+constexpr const char* kLine = R"J({"kind": "bezier", "control_points": [[0, 0, 0], [1, 1, 0], [2, 2, 0], [3, 3, 0]]})J";
+
+// checks the exact key set and the helix values κ = 2/4.25, τ = 0.5/4.25, s = √4.25 t.
+TEST(AnalyseCli, HelixShapeAndValues) {
+  const testing::TempDir dir;
+  const ProcessResult r = hula({"analyse", write(dir, "helix.json", kHelix), "--at", "0,1,2.5"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(r.out);
+  ASSERT_EQ(j.size(), 1U);
+  ASSERT_EQ(j["points"].size(), 3U);
+  for (const json& p : j["points"]) {
+    std::vector<std::string> keys;
+    for (const auto& [k, v] : p.items()) keys.push_back(k);
+    std::sort(keys.begin(), keys.end());
+    EXPECT_EQ(keys, (std::vector<std::string>{"B", "N", "T", "bishop", "kappa", "kappa_prime", "position", "s", "speed",
+                                              "t", "tau"}));
+    EXPECT_EQ(p["bishop"].size(), 2U);
+    EXPECT_NEAR(p["kappa"].get<double>(), 2 / 4.25, 1e-10);
+    EXPECT_NEAR(p["tau"].get<double>(), 0.5 / 4.25, 1e-10);
+    EXPECT_NEAR(p["s"].get<double>(), std::sqrt(4.25) * p["t"].get<double>(), 1e-10);
+    EXPECT_EQ(p["bishop"]["U"].size(), 3U);
+  }
+}
+
+// checks null for N, B, tau, kappa_prime on a straight line while T, kappa = 0 and the Bishop frame are present.
+TEST(AnalyseCli, NullWhereUndefined) {
+  const testing::TempDir dir;
+  const ProcessResult r = hula({"analyse", write(dir, "line.json", kLine), "--samples", "3"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(r.out);
+  ASSERT_EQ(j["points"].size(), 3U);
+  for (const json& p : j["points"]) {
+    EXPECT_TRUE(p["N"].is_null());
+    EXPECT_TRUE(p["B"].is_null());
+    EXPECT_TRUE(p["tau"].is_null());
+    EXPECT_TRUE(p["kappa_prime"].is_null());
+    EXPECT_EQ(p["kappa"].get<double>(), 0.0);
+    EXPECT_TRUE(p["T"].is_array());
+    EXPECT_TRUE(p["bishop"]["U"].is_array());
+  }
+  EXPECT_NEAR(j["points"][2]["s"].get<double>(), 3 * std::sqrt(2.0), 1e-12);
+}
+
+// checks --by arclength: equal arc-length steps along the helix (s = √4.25 t).
+TEST(AnalyseCli, ByArcLength) {
+  const testing::TempDir dir;
+  const ProcessResult r = hula({"analyse", write(dir, "helix.json", kHelix), "--samples", "5", "--by", "arclength"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(r.out);
+  const double L = std::sqrt(4.25) * 4 * M_PI;
+  for (std::size_t i = 0; i < 5; ++i) {
+    EXPECT_NEAR(j["points"][i]["s"].get<double>(), L * static_cast<double>(i) / 4, 1e-9);
+    EXPECT_NEAR(j["points"][i]["t"].get<double>(), 4 * M_PI * static_cast<double>(i) / 4, 1e-9);
+  }
+}
+
+// checks --features on the planar S-curve (x, x³ − x) as a cubic Bézier split at a double knot: one inflection
+// at t = 0.5, and the knot table at the double knot (4 left and 4 right derivatives; one cubic, so C3).
+TEST(AnalyseCli, Features) {
+  const testing::TempDir dir;
+  const std::string f = write(dir, "s.json",
+                              R"J({"kind": "nurbs", "degree": 3, "knots": [0, 0, 0, 0, 0.5, 0.5, 1, 1, 1, 1],
+      "control_points": [[-1, 0], [-0.6666666666666666, 0.6666666666666666], [-0.3333333333333333, 0.3333333333333333],
+                         [0.3333333333333333, -0.3333333333333333], [0.6666666666666666, -0.6666666666666666], [1, 0]]})J");
+  const ProcessResult r = hula({"analyse", f, "--samples", "2", "--features"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(r.out);
+  ASSERT_TRUE(j.contains("features"));
+  const json& ft = j["features"];
+  ASSERT_EQ(ft["inflections"].size(), 1U);
+  EXPECT_NEAR(ft["inflections"][0]["t"].get<double>(), 0.5, 1e-10);
+  ASSERT_EQ(ft["knots"].size(), 1U);
+  EXPECT_EQ(ft["knots"][0]["multiplicity"], 2);
+  EXPECT_EQ(ft["knots"][0]["parametric"], "C3");
+  EXPECT_EQ(ft["knots"][0]["left"].size(), 4U);
+  EXPECT_EQ(ft["knots"][0]["right"].size(), 4U);
+  EXPECT_TRUE(ft["curvature_extrema"].is_array());
+  EXPECT_TRUE(ft["torsion_extrema"].empty());  // planar: τ = 0 is never a strict extremum
+}
+
+// checks --svg writes curve.svg, kappa.svg and tau.svg (complete SVG documents) and still prints the points.
+TEST(AnalyseCli, SvgFiles) {
+  const testing::TempDir dir;
+  const ProcessResult r =
+      hula({"analyse", write(dir, "helix.json", kHelix), "--samples", "2", "--svg", (dir.path() / "fig").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(json::parse(r.out)["points"].size(), 2U);
+  for (const char* name : {"curve.svg", "kappa.svg", "tau.svg"}) {
+    std::ifstream in(dir.path() / "fig" / name);
+    std::ostringstream buffer;
+    buffer << in.rdbuf();
+    const std::string text = buffer.str();
+    EXPECT_EQ(text.rfind("<svg", 0), 0U) << name;
+    EXPECT_NE(text.find("</svg>"), std::string::npos) << name;
+    EXPECT_NE(text.find("<path"), std::string::npos) << name;
+  }
+}
+
+// checks exit codes: 2 for a usage error (both --at and --samples), 3 for an out-of-domain t naming t[1]
+// and for a missing file.
+TEST(AnalyseCli, ExitCodes) {
+  const testing::TempDir dir;
+  const std::string f = write(dir, "helix.json", kHelix);
+  EXPECT_EQ(hula({"analyse", f, "--at", "0", "--samples", "3"}).exit_code, 2);
+  EXPECT_EQ(hula({"analyse", f, "--by", "speed", "--samples", "3"}).exit_code, 2);
+  const ProcessResult out = hula({"analyse", f, "--at", "0,20"});
+  EXPECT_EQ(out.exit_code, 3);
+  const json e = json::parse(out.err);
+  EXPECT_EQ(e["error"]["code"], "OutOfDomain");
+  EXPECT_EQ(e["error"]["where"]["index"], 1);
+  EXPECT_EQ(hula({"analyse", (dir.path() / "missing.json").string(), "--samples", "2"}).exit_code, 3);
+  EXPECT_EQ(hula({"analyse", f}).exit_code, 3);
+}
+
+}  // namespace
+}  // namespace hula::diffgeom
