@@ -16,6 +16,7 @@
 
 #include "hula/core/rng.hpp"
 #include "hula/diffgeom/frenet.hpp"
+#include "hula/testing/occt_curve.hpp"
 
 namespace {
 
@@ -38,20 +39,6 @@ std::vector<double> sorted_params() {
   for (auto& x : t) x = rng.uniform();
   std::sort(t.begin(), t.end());
   return t;
-}
-
-Handle(Geom_BSplineCurve) to_occt(const NurbsCurve& c) {
-  const auto P = c.control_points();
-  TColgp_Array1OfPnt poles(1, static_cast<int>(P.size()));
-  for (std::size_t i = 0; i < P.size(); ++i) poles.SetValue(static_cast<int>(i) + 1, gp_Pnt(P[i].x, P[i].y, P[i].z));
-  const auto bp = c.knots().breakpoints();
-  TColStd_Array1OfReal knots(1, static_cast<int>(bp.size()));
-  TColStd_Array1OfInteger mults(1, static_cast<int>(bp.size()));
-  for (std::size_t i = 0; i < bp.size(); ++i) {
-    knots.SetValue(static_cast<int>(i) + 1, bp[i]);
-    mults.SetValue(static_cast<int>(i) + 1, c.knots().multiplicity(bp[i]));
-  }
-  return new Geom_BSplineCurve(poles, knots, mults, c.degree());
 }
 
 void BM_diffgeom_curvature_torsion(benchmark::State& state) {
@@ -100,7 +87,7 @@ BENCHMARK(BM_diffgeom_derivatives3_only);
 void BM_diffgeom_occt_clprops_curvature(benchmark::State& state) {
   const NurbsCurve c = make_curve();
   const auto t = sorted_params();
-  const Handle(Geom_BSplineCurve) oc = to_occt(c);
+  const Handle(Geom_BSplineCurve) oc = hula::testing::to_occt(c);
   GeomLProp_CLProps props(oc, 2, 1e-12);
   std::vector<double> kappa(t.size());
   for (auto _ : state) {

@@ -15,6 +15,7 @@
 
 #include "hula/core/rng.hpp"
 #include "hula/nurbs/nurbs_curve.hpp"
+#include "hula/testing/occt_curve.hpp"
 
 namespace {
 
@@ -40,25 +41,6 @@ std::vector<double> params(bool sorted) {
   for (auto& x : t) x = rng.uniform();
   if (sorted) std::sort(t.begin(), t.end());
   return t;
-}
-
-Handle(Geom_BSplineCurve) to_occt(const NurbsCurve& c) {
-  const auto P = c.control_points();
-  TColgp_Array1OfPnt poles(1, static_cast<int>(P.size()));
-  for (std::size_t i = 0; i < P.size(); ++i) poles.SetValue(static_cast<int>(i) + 1, gp_Pnt(P[i].x, P[i].y, P[i].z));
-  const auto bp = c.knots().breakpoints();
-  TColStd_Array1OfReal knots(1, static_cast<int>(bp.size()));
-  TColStd_Array1OfInteger mults(1, static_cast<int>(bp.size()));
-  for (std::size_t i = 0; i < bp.size(); ++i) {
-    knots.SetValue(static_cast<int>(i) + 1, bp[i]);
-    mults.SetValue(static_cast<int>(i) + 1, c.knots().multiplicity(bp[i]));
-  }
-  if (c.is_rational()) {
-    TColStd_Array1OfReal w(1, static_cast<int>(P.size()));
-    for (std::size_t i = 0; i < P.size(); ++i) w.SetValue(static_cast<int>(i) + 1, c.weights()[i]);
-    return new Geom_BSplineCurve(poles, w, knots, mults, c.degree());
-  }
-  return new Geom_BSplineCurve(poles, knots, mults, c.degree());
 }
 
 // args: 0 = rational?, 1 = sorted?
@@ -106,7 +88,7 @@ BENCHMARK(BM_nurbs_derivatives3_single)->ArgNames({"rational"})->Arg(0)->Arg(1);
 
 void BM_occt_bspline_D3(benchmark::State& state) {
   const NurbsCurve c = make_curve(state.range(0) != 0);
-  Handle(Geom_BSplineCurve) occ = to_occt(c);
+  Handle(Geom_BSplineCurve) occ = hula::testing::to_occt(c);
   const auto t = params(true);
   gp_Pnt p;
   gp_Vec v1, v2, v3;
@@ -123,7 +105,7 @@ BENCHMARK(BM_occt_bspline_D3)->ArgNames({"rational"})->Arg(0)->Arg(1);
 
 void BM_occt_adaptor(benchmark::State& state) {
   const NurbsCurve c = make_curve(state.range(0) != 0);
-  GeomAdaptor_Curve adaptor(to_occt(c));
+  GeomAdaptor_Curve adaptor(hula::testing::to_occt(c));
   const auto t = params(true);
   gp_Pnt p;
   gp_Vec v1, v2, v3;

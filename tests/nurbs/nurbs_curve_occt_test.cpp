@@ -23,40 +23,13 @@
 #include "hula/core/rng.hpp"
 #include "hula/nurbs/nurbs_curve.hpp"
 #include "hula/testing/curve_generators.hpp"
+#include "hula/testing/occt_curve.hpp"
 
 namespace hula::nurbs {
 namespace {
 
-Handle(Geom_BSplineCurve) to_occt(const NurbsCurve& c) {
-  const auto P = c.control_points();
-  TColgp_Array1OfPnt poles(1, static_cast<int>(P.size()));
-  for (std::size_t i = 0; i < P.size(); ++i) poles.SetValue(static_cast<int>(i) + 1, gp_Pnt(P[i].x, P[i].y, P[i].z));
-  std::vector<double> distinct;
-  std::vector<int> mults;
-  for (double u : c.knots().values()) {
-    if (!distinct.empty() && distinct.back() == u) {
-      ++mults.back();
-    } else {
-      distinct.push_back(u);
-      mults.push_back(1);
-    }
-  }
-  TColStd_Array1OfReal knots(1, static_cast<int>(distinct.size()));
-  TColStd_Array1OfInteger m(1, static_cast<int>(mults.size()));
-  for (std::size_t i = 0; i < distinct.size(); ++i) {
-    knots.SetValue(static_cast<int>(i) + 1, distinct[i]);
-    m.SetValue(static_cast<int>(i) + 1, mults[i]);
-  }
-  if (c.is_rational()) {
-    TColStd_Array1OfReal w(1, static_cast<int>(P.size()));
-    for (std::size_t i = 0; i < P.size(); ++i) w.SetValue(static_cast<int>(i) + 1, c.weights()[i]);
-    return new Geom_BSplineCurve(poles, w, knots, m, c.degree());
-  }
-  return new Geom_BSplineCurve(poles, knots, m, c.degree());
-}
-
-Vec3 v3(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
-Vec3 v3(const gp_Vec& p) { return {p.X(), p.Y(), p.Z()}; }
+using testing::to_occt;
+using testing::to_vec3;
 
 // rel_tol[k]: tolerance for order k relative to scale_k. `use_value` compares
 // positions with Geom_BSplineCurve::Value (de Boor) instead of D3's cached
@@ -77,7 +50,7 @@ void compare_curve(const NurbsCurve& c, Rng& rng, int curve_index,
     occ->D3(t, p, v1, v2, v3v);
     if (use_value) p = occ->Value(t);
     ours.push_back({D[0], D[1], D[2], D[3]});
-    theirs.push_back({v3(p), v3(v1), v3(v2), v3(v3v)});
+    theirs.push_back({to_vec3(p), to_vec3(v1), to_vec3(v2), to_vec3(v3v)});
   }
   double scale[4] = {0, 0, 0, 0};
   for (const auto& o : theirs)
@@ -143,10 +116,11 @@ TEST(NurbsCurveOcct, OneSidedLimitsMatchLocalD3) {
       gp_Vec a1, a2, a3;
       const auto left = c.derivatives(u, 3, {.side = Side::Left});
       occ->LocalD3(u, k - 1, k, p, a1, a2, a3);
-      samples.push_back({u, {left[0], left[1], left[2], left[3]}, {v3(p), v3(a1), v3(a2), v3(a3)}});
+      samples.push_back({u, {left[0], left[1], left[2], left[3]}, {to_vec3(p), to_vec3(a1), to_vec3(a2), to_vec3(a3)}});
       const auto right = c.derivatives(u, 3, {.side = Side::Right});
       occ->LocalD3(u, k, k + 1, p, a1, a2, a3);
-      samples.push_back({u, {right[0], right[1], right[2], right[3]}, {v3(p), v3(a1), v3(a2), v3(a3)}});
+      samples.push_back(
+          {u, {right[0], right[1], right[2], right[3]}, {to_vec3(p), to_vec3(a1), to_vec3(a2), to_vec3(a3)}});
     }
     // Same rule as compare_curve: per-order scale over all samples of the curve.
     std::array<double, 4> scale{};
