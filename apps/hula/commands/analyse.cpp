@@ -7,7 +7,9 @@
 // Law curves are analysed exactly from the law; NURBS from the kernel.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <memory>
+#include <numbers>
 
 #include "commands/common.hpp"
 #include "hula/core/error.hpp"
@@ -172,8 +174,10 @@ std::string svg_document(const std::vector<Polyline>& lines, const std::string& 
   const double w = std::max(box.max.x - box.min.x, 1e-300), h = std::max(box.max.y - box.min.y, 1e-300);
   const double size = 800.0, margin = 20.0;
   const double k = (size - 2 * margin) / std::max(w, h);
-  auto X = [&](double x) { return margin + (x - box.min.x) * k; };
-  auto Y = [&](double y) { return size - margin - (y - box.min.y) * k; };  // SVG y points down
+  // Centred in the square: the shorter side gets equal margins on both ends.
+  const double ox = margin + 0.5 * (size - 2 * margin - w * k), oy = margin + 0.5 * (size - 2 * margin - h * k);
+  auto X = [&](double x) { return ox + (x - box.min.x) * k; };
+  auto Y = [&](double y) { return size - oy - (y - box.min.y) * k; };  // SVG y points down
   std::string out = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"800\" height=\"800\" viewBox=\"0 0 800 800\">\n";
   out += "<title>" + title + "</title>\n<rect width=\"800\" height=\"800\" fill=\"white\"/>\n";
   for (const Polyline& l : lines) {
@@ -228,43 +232,87 @@ void write_svgs(const std::filesystem::path& dir, const io::CurveFile& file, con
   Polyline c{{}, "black", 2.0};
   for (const auto& p : pts) c.points.push_back(p.position);
   curve.push_back(c);
-  // Planar curves in XY are drawn seen from +Z; space curves in an isometric view (X = (x − y) cos 30°,
-  // Y = z + (x + y) sin 30°), so torsion fins along B are visible.
+  // Planar curves in XY are drawn seen from +Z. Space curves are drawn in an oblique view chosen by their
+  // shape: a tall curve (z extent > half its x or y extent: helices) from −Y, 20° above the XY plane
+  // (X = x, Y = z cos 20° + y sin 20°); a flat one (S-bends, toroidal helices) from +Z tilted 35° towards
+  // −Y (X = x, Y = y cos 35° + z sin 35°). Either way the torsion fins along B are visible.
   bool planar = true;
   for (const Polyline& l : curve)
     for (const Vec3& p : l.points)
       if (is_finite(p) && std::fabs(p.z) > 1e-12 * size) planar = false;
+  std::string view = "seen from +Z";
   if (!planar) {
-    const double c30 = std::sqrt(3.0) / 2.0;
+    const bool tall = box.max.z - box.min.z > 0.5 * std::max(box.max.x - box.min.x, box.max.y - box.min.y);
+    const double a = (tall ? 20.0 : 35.0) * std::numbers::pi / 180.0;
+    view = tall ? "seen from -Y, 20 degrees above" : "seen from +Z, tilted 35 degrees towards -Y";
     for (Polyline& l : curve)
-      for (Vec3& p : l.points) p = Vec3{(p.x - p.y) * c30, p.z + (p.x + p.y) * 0.5, 0.0};
+      for (Vec3& p : l.points)
+        p = tall ? Vec3{p.x, p.z * std::cos(a) + p.y * std::sin(a), 0.0}
+                 : Vec3{p.x, p.y * std::cos(a) + p.z * std::sin(a), 0.0};
   }
   io::write_file_atomically(dir / "curve.svg",
-                            svg_document(curve, planar ? "curve (seen from +Z) with curvature and torsion fins"
-                                                       : "curve (isometric view) with curvature and torsion fins"));
-  // Plots: x = t scaled to the domain, y = the quantity; NaN breaks the line.
-  auto plot = [&](auto value, const std::string& name, const std::string& colour) {
-    Polyline l{{}, colour, 1.5};
-    double lo = HUGE_VAL, hi = -HUGE_VAL;
+                            svg_document(curve, "curve (" + view + ") with curvature and torsion fins"));
+  // Plots: x = t, y = the quantity on a range that contains 0 (so a constant profile is a flat line, not
+  // magnified rounding noise), padded by 8 %; framed, with the values of the range ends, the zero line and
+  // the domain ends written as text. NaN breaks the line.
+  auto plot = [&](auto value, const std::string& name, const std::string& label, const std::string& colour) {
+    double lo = 0.0, hi = 0.0;
     for (const auto& p : pts) {
       const double v = value(p);
       if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
     }
-    const double span = hi > lo ? hi - lo : 1.0;
+    const double pad = hi > lo ? 0.08 * (hi - lo) : 1.0;
+    lo = lo < 0.0 ? lo - pad : lo;
+    hi = hi > 0.0 ? hi + pad : (lo < 0.0 ? hi : hi + pad);
+    if (lo >= 0.0 && hi <= 0.0) hi = 1.0;
+    const double left = 90, right = 770, top = 60, bottom = 740;
+    auto X = [&](double t) { return left + (t - dom.start) / dom.length() * (right - left); };
+    auto Y = [&](double v) { return bottom - (v - lo) / (hi - lo) * (bottom - top); };
+    std::string d;
+    bool pen = false;
     for (const auto& p : pts) {
       const double v = value(p);
-      l.points.push_back(std::isfinite(v) ? Vec3{(p.t - dom.start) / dom.length(), (v - lo) / span, 0}
-                                          : Vec3{std::nan(""), std::nan(""), std::nan("")});
+      if (!std::isfinite(v)) {
+        pen = false;
+        continue;
+      }
+      d += (pen ? " L" : " M") + format_number(X(p.t)) + " " + format_number(Y(v));
+      pen = true;
     }
-    Polyline axis{{{0, std::isfinite(lo) && lo < 0 && hi > 0 ? -lo / span : 0, 0},
-                   {1, std::isfinite(lo) && lo < 0 && hi > 0 ? -lo / span : 0, 0}},
-                  "#888888",
-                  0.5};
-    io::write_file_atomically(dir / (name + ".svg"), svg_document({axis, l}, name + " against the parameter t"));
+    auto text = [](double x, double y, const std::string& anchor, const std::string& body) {
+      return "<text x=\"" + format_number(x) + "\" y=\"" + format_number(y) + "\" text-anchor=\"" + anchor +
+             "\" font-family=\"sans-serif\" font-size=\"20\">" + body + "</text>\n";
+    };
+    auto value_text = [](double v) {
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%.4g", v);
+      return std::string(buf);
+    };
+    std::string out =
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"800\" height=\"800\" viewBox=\"0 0 800 800\">\n";
+    out += "<title>" + name + " against the parameter t</title>\n<rect width=\"800\" height=\"800\" fill=\"white\"/>\n";
+    out += "<rect x=\"" + format_number(left) + "\" y=\"" + format_number(top) + "\" width=\"" +
+           format_number(right - left) + "\" height=\"" + format_number(bottom - top) +
+           "\" fill=\"none\" stroke=\"#888888\" stroke-width=\"1\"/>\n";
+    out += "<path fill=\"none\" stroke=\"#888888\" stroke-width=\"1\" stroke-dasharray=\"6 4\" d=\"M" +
+           format_number(left) + " " + format_number(Y(0.0)) + " L" + format_number(right) + " " +
+           format_number(Y(0.0)) + "\"/>\n";
+    if (!d.empty()) out += "<path fill=\"none\" stroke=\"" + colour + "\" stroke-width=\"2.5\" d=\"" + d + "\"/>\n";
+    out += text(400, 35, "middle", label + " against t");
+    out += text(left - 8, top + 7, "end", value_text(hi)) + text(left - 8, bottom + 7, "end", value_text(lo));
+    if (lo < 0.0 && hi > 0.0) out += text(left - 8, Y(0.0) + 7, "end", "0");
+    out += text(left, bottom + 30, "middle", "t = " + value_text(dom.start)) +
+           text(right, bottom + 30, "end", value_text(dom.end));
+    io::write_file_atomically(dir / (name + ".svg"), out + "</svg>\n");
   };
-  plot([](const diffgeom::FrenetPoint& p) { return p.tangent_defined ? p.signed_curvature : std::nan(""); }, "kappa",
-       "#1f5fbf");
-  plot([](const diffgeom::FrenetPoint& p) { return p.torsion_defined ? p.torsion : std::nan(""); }, "tau", "#c0392b");
+  // Signed curvature (about +Z) for planar curves, so it crosses zero at inflections; κ ≥ 0 for space curves.
+  plot(
+      [planar](const diffgeom::FrenetPoint& p) {
+        return p.tangent_defined ? (planar ? p.signed_curvature : p.curvature) : std::nan("");
+      },
+      "kappa", planar ? "signed curvature \u03BA" : "curvature \u03BA", "#1f5fbf");
+  plot([](const diffgeom::FrenetPoint& p) { return p.torsion_defined ? p.torsion : std::nan(""); }, "tau",
+       "torsion \u03C4", "#c0392b");
 }
 
 int run_analyse(const AnalyseArgs& a) {
