@@ -207,7 +207,7 @@ void write_svgs(const std::filesystem::path& dir, const io::CurveFile& file, con
   ts.back() = dom.end;
   std::vector<diffgeom::FrenetPoint> pts(ts.size());
   subject.frenet(ts, pts);
-  // Fin scale: the largest fin is a fifth of the curve's size.
+  // Fin scale: the largest fin is a fifth of the curve's size (less for coiling curves, below).
   Box3 box;
   double kmax = 0.0, tmax = 0.0;
   for (const auto& p : pts) {
@@ -216,11 +216,18 @@ void write_svgs(const std::filesystem::path& dir, const io::CurveFile& file, con
     if (p.torsion_defined) tmax = std::max(tmax, std::fabs(p.torsion));
   }
   const double size = std::max(box.diagonal(), 1e-300);
+  // Total turning of the tangent in turns: curves that coil many times (toroidal helices) get proportionally
+  // shorter fins, fraction 0.2 / sqrt(turns / 2), so neighbouring coils' fins do not cover each other.
+  double turning = 0.0;
+  for (std::size_t i = 1; i < pts.size(); ++i)
+    if (pts[i - 1].tangent_defined && pts[i].tangent_defined)
+      turning += std::acos(std::clamp(dot(pts[i - 1].tangent, pts[i].tangent), -1.0, 1.0));
+  const double fraction = 0.2 / std::sqrt(std::max(1.0, turning / (2.0 * std::numbers::pi) / 2.0));
   auto comb = [&](diffgeom::FinKind kind, double qmax, const std::string& colour, std::vector<Polyline>& out) {
     diffgeom::FinOptions fo;
     fo.kind = kind;
     fo.density = 120;
-    fo.scale = qmax > 0 ? 0.2 * size / qmax : 1.0;
+    fo.scale = qmax > 0 ? fraction * size / qmax : 1.0;
     const diffgeom::Fins f = subject.law() ? diffgeom::fins(*subject.law(), dom, fo) : diffgeom::fins(file.curve, fo);
     for (std::size_t i = 0; i < f.tip.size(); ++i)
       if (f.defined[i]) out.push_back({{f.base[i], f.tip[i]}, colour, 0.5});
@@ -265,7 +272,7 @@ void write_svgs(const std::filesystem::path& dir, const io::CurveFile& file, con
     lo = lo < 0.0 ? lo - pad : lo;
     hi = hi > 0.0 ? hi + pad : (lo < 0.0 ? hi : hi + pad);
     if (lo >= 0.0 && hi <= 0.0) hi = 1.0;
-    const double left = 90, right = 770, top = 60, bottom = 740;
+    const double left = 130, right = 770, top = 60, bottom = 740;
     auto X = [&](double t) { return left + (t - dom.start) / dom.length() * (right - left); };
     auto Y = [&](double v) { return bottom - (v - lo) / (hi - lo) * (bottom - top); };
     std::string d;
