@@ -217,17 +217,23 @@ void write_svgs(const std::filesystem::path& dir, const io::CurveFile& file, con
   }
   const double size = std::max(box.diagonal(), 1e-300);
   // Total turning of the tangent in turns: curves that coil many times (toroidal helices) get proportionally
-  // shorter fins, fraction 0.2 / sqrt(turns / 2), so neighbouring coils' fins do not cover each other.
+  // shorter fins, fraction 0.2 / (turns / 2), so neighbouring coils' fins do not cover each other.
   double turning = 0.0;
   for (std::size_t i = 1; i < pts.size(); ++i)
     if (pts[i - 1].tangent_defined && pts[i].tangent_defined)
       turning += std::acos(std::clamp(dot(pts[i - 1].tangent, pts[i].tangent), -1.0, 1.0));
-  const double fraction = 0.2 / std::sqrt(std::max(1.0, turning / (2.0 * std::numbers::pi) / 2.0));
+  const double fraction = 0.2 / std::max(1.0, turning / (2.0 * std::numbers::pi) / 2.0);
+  // And no fin longer than half the smallest extent of the box (ignoring a flat direction), so the fins of a
+  // slender helix stay of the size of its diameter instead of its height.
+  double thin = HUGE_VAL;
+  for (const double e : {box.max.x - box.min.x, box.max.y - box.min.y, box.max.z - box.min.z})
+    if (e > 1e-9 * size) thin = std::min(thin, e);
+  const double longest = std::min(fraction * size, 0.5 * thin);
   auto comb = [&](diffgeom::FinKind kind, double qmax, const std::string& colour, std::vector<Polyline>& out) {
     diffgeom::FinOptions fo;
     fo.kind = kind;
     fo.density = 120;
-    fo.scale = qmax > 0 ? fraction * size / qmax : 1.0;
+    fo.scale = qmax > 0 ? longest / qmax : 1.0;
     const diffgeom::Fins f = subject.law() ? diffgeom::fins(*subject.law(), dom, fo) : diffgeom::fins(file.curve, fo);
     for (std::size_t i = 0; i < f.tip.size(); ++i)
       if (f.defined[i]) out.push_back({{f.base[i], f.tip[i]}, colour, 0.5});
