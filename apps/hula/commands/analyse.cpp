@@ -242,29 +242,56 @@ void write_svgs(const std::filesystem::path& dir, const io::CurveFile& file, con
   io::write_file_atomically(dir / "curve.svg",
                             svg_document(curve, planar ? "curve (seen from +Z) with curvature and torsion fins"
                                                        : "curve (isometric view) with curvature and torsion fins"));
-  // Plots: x = t scaled to the domain, y = the quantity; NaN breaks the line.
-  auto plot = [&](auto value, const std::string& name, const std::string& colour) {
+  // Plots: x = the abscissa scaled to [0, 1], y = the quantity scaled to [0, 1]; NaN breaks the line.
+  auto graph = [&](auto abscissa, auto value, const std::string& name, const std::string& colour,
+                   const std::string& title) {
     Polyline l{{}, colour, 1.5};
-    double lo = HUGE_VAL, hi = -HUGE_VAL;
+    double lo = HUGE_VAL, hi = -HUGE_VAL, xlo = HUGE_VAL, xhi = -HUGE_VAL;
     for (const auto& p : pts) {
       const double v = value(p);
-      if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+      const double x = abscissa(p);
+      if (std::isfinite(v) && std::isfinite(x)) lo = std::min(lo, v), hi = std::max(hi, v);
+      if (std::isfinite(v) && std::isfinite(x)) xlo = std::min(xlo, x), xhi = std::max(xhi, x);
     }
     const double span = hi > lo ? hi - lo : 1.0;
+    const double xspan = xhi > xlo ? xhi - xlo : 1.0;
     for (const auto& p : pts) {
       const double v = value(p);
-      l.points.push_back(std::isfinite(v) ? Vec3{(p.t - dom.start) / dom.length(), (v - lo) / span, 0}
-                                          : Vec3{std::nan(""), std::nan(""), std::nan("")});
+      const double x = abscissa(p);
+      l.points.push_back(std::isfinite(v) && std::isfinite(x) ? Vec3{(x - xlo) / xspan, (v - lo) / span, 0}
+                                                              : Vec3{std::nan(""), std::nan(""), std::nan("")});
     }
     Polyline axis{{{0, std::isfinite(lo) && lo < 0 && hi > 0 ? -lo / span : 0, 0},
                    {1, std::isfinite(lo) && lo < 0 && hi > 0 ? -lo / span : 0, 0}},
                   "#888888",
                   0.5};
-    io::write_file_atomically(dir / (name + ".svg"), svg_document({axis, l}, name + " against the parameter t"));
+    io::write_file_atomically(dir / (name + ".svg"), svg_document({axis, l}, title));
+  };
+  const auto by_t = [](const diffgeom::FrenetPoint& p) { return p.t; };
+  auto plot = [&](auto value, const std::string& name, const std::string& colour) {
+    graph(by_t, value, name, colour, name + " against the parameter t");
   };
   plot([](const diffgeom::FrenetPoint& p) { return p.tangent_defined ? p.signed_curvature : std::nan(""); }, "kappa",
        "#1f5fbf");
   plot([](const diffgeom::FrenetPoint& p) { return p.torsion_defined ? p.torsion : std::nan(""); }, "tau", "#c0392b");
+  // Radius of curvature limited to ten times the curve's size (nearly straight pieces would squash the rest).
+  const double radius_limit = 10.0 * size;
+  plot(
+      [&](const diffgeom::FrenetPoint& p) {
+        const double r = p.tangent_defined && p.curvature > 0 ? 1.0 / p.curvature : std::nan("");
+        return r <= radius_limit ? r : std::nan("");
+      },
+      "radius", "#27ae60");
+  plot([](const diffgeom::FrenetPoint& p) { return std::isfinite(p.speed) ? p.speed : std::nan(""); }, "speed",
+       "#8e44ad");
+  // Logarithmic curvature graph (log-aesthetic analysis): x = log10 ρ, y = log10(κ / |dκ/ds|).
+  graph([](const diffgeom::FrenetPoint& p) { return p.frame_defined ? -std::log10(p.curvature) : std::nan(""); },
+        [](const diffgeom::FrenetPoint& p) {
+          return p.frame_defined && p.curvature_derivative != 0.0
+                     ? std::log10(p.curvature / std::fabs(p.curvature_derivative))
+                     : std::nan("");
+        },
+        "logcurvature", "#d35400", "logarithmic curvature graph: log10(kappa/|dkappa/ds|) against log10 rho");
 }
 
 int run_analyse(const AnalyseArgs& a) {
@@ -357,8 +384,10 @@ Command add_analyse(CLI::App& app) {
       ->check(CLI::IsMember({"parameter", "arclength"}));
   sub->add_flag("--features", args->features,
                 "Add \"features\": inflections (planar curves), curvature extrema, knot continuity");
-  sub->add_option("--svg", args->svg,
-                  "Write curve.svg (curvature and torsion fins), kappa.svg and tau.svg into this directory");
+  sub->add_option(
+      "--svg", args->svg,
+      "Write curve.svg (curvature and torsion fins), kappa.svg, tau.svg, radius.svg (range-limited radius of "
+      "curvature), speed.svg and logcurvature.svg into this directory");
   return {sub, [args, sub] {
             if (sub->count("--at") == 0 && sub->count("--samples") == 0)
               throw Error(Errc::InvalidArgument, "give --at or --samples", {.field = "at"});
