@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdint>
 #include <limits>
 
 #include "hula/core/error.hpp"
@@ -176,64 +175,37 @@ void curvature_torsion(const nurbs::NurbsCurve& curve, std::span<const double> t
   const double inv_size = 1.0 / scale.model_size;
   const double angular2 = angular * angular;
   const double zero_speed2 = scale.zero_speed * scale.zero_speed;
-  // Three passes per block, all on the stack: (1) cross products, the range and zero tests, and the
-  // indices of the rare special points; (2) a branch-free loop the compiler vectorises (one division
-  // and one square root per point, packed); (3) the special points: zero speed, zero curvature, and
-  // points outside the fast range, which take the general kernel with its 1/m rescaling.
-  enum : std::uint8_t { kGeneral, kStill, kStraight };
   std::array<Vec3, 4 * kBlock> d;
-  std::array<double, kBlock> w_a2, w_v6, w_ar3;
-  std::array<std::uint16_t, kBlock> special;
-  std::array<std::uint8_t, kBlock> kind;
   for (std::size_t i0 = 0; i0 < ts.size(); i0 += kBlock) {
     const std::size_t m = std::min(kBlock, ts.size() - i0);
     block_derivatives(curve, ts, i0, m, std::span<Vec3>(d.data(), 4 * m), options.eval);
-    std::size_t n_special = 0;
     for (std::size_t i = 0; i < m; ++i) {
       // The tests of frenet_from_derivatives without the frame vectors and, while |r'|² and |r''|² sit
       // in [1e-50, 1e50] (so |r' × r''|² can neither overflow nor underflow), without its 1/m
-      // rescaling; other points take the general kernel in pass 3.
+      // rescaling; other points take the general kernel.
       const Vec3& r1 = d[4 * i + 1];
       const Vec3& r2 = d[4 * i + 2];
       const Vec3& r3 = d[4 * i + 3];
       const double v2 = dot(r1, r1);
       const double r22 = dot(r2, r2);
+      if (!(v2 >= 1e-50 && v2 <= 1e50 && r22 <= 1e50)) {
+        const FrenetPoint p =
+            frenet_from_derivatives(ts[i0 + i], std::span<const Vec3, 4>(d.data() + 4 * i, 4), scale, options);
+        kappa[i0 + i] = p.curvature;
+        tau[i0 + i] = p.torsion;
+        continue;
+      }
       const Vec3 a = cross(r1, r2);
       const double a2 = dot(a, a);
       const double big = v2 * inv_size;
-      const bool in_range = v2 >= 1e-50 && v2 <= 1e50 && r22 <= 1e50;
       const bool moving = v2 > zero_speed2;
       const bool curved = a2 > angular2 * v2 * std::max(r22, big * big);
-      const bool regular = in_range && moving && curved;
-      w_a2[i] = regular ? a2 : 1.0;
-      w_v6[i] = regular ? v2 * v2 * v2 : 1.0;
-      w_ar3[i] = dot(a, r3);
-      if (!regular) {
-        special[n_special] = static_cast<std::uint16_t>(i);
-        kind[n_special] = !in_range ? kGeneral : (!moving ? kStill : kStraight);
-        ++n_special;
-      }
-    }
-    // One division for both: q = 1/(|a|^2 v^6), kappa = |a|^2 sqrt(q), tau = (a . r3) v^6 q. With |r'|^2
-    // and |r''|^2 in [1e-50, 1e50] and a curved point, |a|^2 v^6 stays in range.
-    double* const k_out = kappa.data() + i0;
-    double* const t_out = tau.data() + i0;
-    for (std::size_t i = 0; i < m; ++i) {
-      const double q = 1.0 / (w_a2[i] * w_v6[i]);
-      k_out[i] = w_a2[i] * std::sqrt(q);
-      t_out[i] = w_ar3[i] * w_v6[i] * q;
-    }
-    for (std::size_t j = 0; j < n_special; ++j) {
-      const std::size_t i = special[j];
-      if (kind[j] == kGeneral) {
-        const FrenetPoint p =
-            frenet_from_derivatives(ts[i0 + i], std::span<const Vec3, 4>(d.data() + 4 * i, 4), scale, options);
-        k_out[i] = p.curvature;
-        t_out[i] = p.torsion;
-      } else {
-        k_out[i] = kind[j] == kStill ? kNaN : 0.0;
-        t_out[i] = kNaN;
-      }
+      // One division for both: q = 1/(|a|^2 v^6), kappa = |a|^2 sqrt(q), tau = (a . r''') v^6 q. With |r'|^2
+      // and |r''|^2 in [1e-50, 1e50] and a curved point, |a|^2 v^6 stays in range.
+      const double v6 = v2 * v2 * v2;
+      const double q = 1.0 / (curved ? a2 * v6 : 1.0);
+      kappa[i0 + i] = moving ? (curved ? a2 * std::sqrt(q) : 0.0) : kNaN;
+      tau[i0 + i] = moving && curved ? dot(a, r3) * v6 * q : kNaN;
     }
   }
 }
