@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -130,6 +131,28 @@ TEST(AnalyseCli, SvgFiles) {
     const std::string text = buffer.str();
     EXPECT_EQ(text.rfind("<svg", 0), 0U) << name;
     EXPECT_NE(text.find("</svg>"), std::string::npos) << name;
+    EXPECT_NE(text.find("<path"), std::string::npos) << name;
+  }
+}
+
+// checks --svg also writes radius.svg, speed.svg and logcurvature.svg as complete SVG documents (start
+// with <svg, end with </svg>), each with a drawn path for a cubic whose curvature varies.
+TEST(AnalyseCli, SvgRadiusSpeedLogCurvature) {
+  const testing::TempDir dir;
+  constexpr const char* kCubic =
+      R"J({"kind": "bezier", "control_points": [[0, 0, 0], [1, 2, 0.5], [3, -1, 1], [4, 1, 0]]})J";
+  const ProcessResult r =
+      hula({"analyse", write(dir, "cubic.json", kCubic), "--samples", "3", "--svg", (dir.path() / "fig").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* name : {"radius.svg", "speed.svg", "logcurvature.svg"}) {
+    ASSERT_TRUE(std::filesystem::exists(dir.path() / "fig" / name)) << name;
+    std::ifstream in(dir.path() / "fig" / name);
+    std::ostringstream buffer;
+    buffer << in.rdbuf();
+    std::string text = buffer.str();
+    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
+    EXPECT_EQ(text.rfind("<svg", 0), 0U) << name;
+    EXPECT_TRUE(text.ends_with("</svg>")) << name;
     EXPECT_NE(text.find("<path"), std::string::npos) << name;
   }
 }

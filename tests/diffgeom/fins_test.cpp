@@ -7,7 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "hula/core/error.hpp"
 #include "hula/law/parser.hpp"
@@ -70,6 +72,92 @@ TEST(Fins, InflectionAndUndefined) {
   EXPECT_TRUE(std::isnan(t.tip[1].x));
   o.density = 1;
   EXPECT_THROW((void)fins(c, o), Error);
+}
+
+}  // namespace
+}  // namespace hula::diffgeom
+
+namespace hula::diffgeom {
+namespace {
+
+// Largest distance between the fitted fin NURBS and the fin tips of a dense comb (fins() polyline).
+double deviation_from_comb(const law::ToNurbsResult& fit, const Fins& comb) {
+  double worst = 0.0;
+  for (std::size_t i = 0; i < comb.t.size(); ++i) {
+    EXPECT_EQ(comb.defined[i], 1) << i;
+    worst = std::max(worst, norm(fit.curve.evaluate(comb.t[i]) - comb.tip[i]));
+  }
+  return worst;
+}
+
+// checks the curvature fin of the helix (2 cos t, 2 sin t, 0.5 t) as a NURBS: closed form
+// ((2 + s κ) cos t, (2 + s κ) sin t, 0.5 t) with κ = 2/4.25, and within the tolerance of a dense comb.
+TEST(Fins, HelixCurvatureFinAsNurbs) {
+  law::Context ctx;
+  const law::Law helix = law::parse("vec(2*cos(t), 2*sin(t), 0.5*t)", ctx);
+  const nurbs::Interval dom{0.0, 6.0};
+  FinOptions o;
+  o.kind = FinKind::Curvature;
+  o.scale = 1.5;
+  o.density = 2001;
+  law::ToNurbsOptions fit;
+  fit.tolerance = 1e-8;
+  const law::ToNurbsResult r = fin_nurbs(helix, "t", dom, o, fit);
+  EXPECT_LE(r.max_deviation, 1e-8);
+  const double radius = 2.0 + 1.5 * 2.0 / 4.25;
+  for (int i = 0; i <= 60; ++i) {
+    const double t = dom.start + dom.length() * i / 60.0;
+    const Vec3 want{radius * std::cos(t), radius * std::sin(t), 0.5 * t};
+    EXPECT_LT(norm(r.curve.evaluate(t) - want), 1e-8) << t;
+  }
+  const LawFrenet frenet(helix, "t", dom);
+  EXPECT_LT(deviation_from_comb(r, fins(frenet, dom, o)), 1e-8);
+}
+
+// checks the torsion fin P + s τB of the twisted cubic (t, t², t³) and the curvature fin of the planar
+// S-curve (t, t³ − t) through its inflection, each as a NURBS within 1e-7 of a dense comb.
+TEST(Fins, TwistedCubicTorsionAndSCurveCurvatureFinsAsNurbs) {
+  law::Context ctx;
+  const nurbs::Interval dom{-1.0, 1.0};
+  law::ToNurbsOptions fit;
+  fit.tolerance = 1e-7;
+  FinOptions o;
+  o.density = 4001;
+  o.kind = FinKind::Torsion;
+  o.scale = 0.2;
+  const law::Law cubic = law::parse("vec(t, t^2, t^3)", ctx);
+  const law::ToNurbsResult tor = fin_nurbs(cubic, "t", dom, o, fit);
+  EXPECT_LE(tor.max_deviation, 1e-7);
+  EXPECT_LT(deviation_from_comb(tor, fins(LawFrenet(cubic, "t", dom), dom, o)), 1e-7);
+  // At t = 0: P = 0, τ = 3, B = (0, 0, 1).
+  EXPECT_LT(norm(tor.curve.evaluate(0.0) - Vec3{0, 0, 0.6}), 1e-7);
+  o.kind = FinKind::Curvature;
+  o.scale = 0.3;
+  const law::Law s_curve = law::parse("vec(t, t^3 - t)", ctx);
+  const law::ToNurbsResult cur = fin_nurbs(s_curve, "t", dom, o, fit);
+  EXPECT_LE(cur.max_deviation, 1e-7);
+  EXPECT_LT(deviation_from_comb(cur, fins(LawFrenet(s_curve, "t", dom), dom, o)), 1e-7);
+}
+
+// checks the errors name the input: Bishop fins ("kind"), log scale ("log_scale"), a scalar law ("law").
+TEST(Fins, FinLawErrorsNameTheInput) {
+  law::Context ctx;
+  const law::Law c = law::parse("vec(t, t^2, t^3)", ctx);
+  auto field_of = [&](const law::Law& l, const FinOptions& o) {
+    try {
+      (void)fin_law(l, "t", o);
+    } catch (const Error& e) {
+      return e.where().field;
+    }
+    return std::string("no error");
+  };
+  FinOptions o;
+  o.kind = FinKind::BishopU;
+  EXPECT_EQ(field_of(c, o), "kind");
+  o.kind = FinKind::Curvature;
+  o.log_scale = true;
+  EXPECT_EQ(field_of(c, o), "log_scale");
+  EXPECT_EQ(field_of(law::parse("t^2", ctx), FinOptions{}), "law");
 }
 
 }  // namespace

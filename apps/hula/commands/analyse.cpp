@@ -265,31 +265,42 @@ void write_svgs(const std::filesystem::path& dir, const io::CurveFile& file, con
   }
   io::write_file_atomically(dir / "curve.svg",
                             svg_document(curve, "curve (" + view + ") with curvature and torsion fins"));
-  // Plots: x = t, y = the quantity on a range that contains 0 (so a constant profile is a flat line, not
-  // magnified rounding noise), padded by 8 %; framed, with the values of the range ends, the zero line and
-  // the domain ends written as text. NaN breaks the line.
-  auto plot = [&](auto value, const std::string& name, const std::string& label, const std::string& colour) {
-    double lo = 0.0, hi = 0.0;
+  // Plots: y = the quantity on a range that contains 0 when `with_zero` (so a constant profile is a flat line,
+  // not magnified rounding noise), padded by 8 %; x = the abscissa over its finite range. Framed, with the
+  // values of the range ends, the zero line and the abscissa ends written as text. NaN breaks the line.
+  auto graph = [&](auto abscissa, auto value, const std::string& name, const std::string& label,
+                   const std::string& xlabel, const std::string& colour, bool with_zero) {
+    double lo = with_zero ? 0.0 : HUGE_VAL, hi = with_zero ? 0.0 : -HUGE_VAL, xlo = HUGE_VAL, xhi = -HUGE_VAL;
     for (const auto& p : pts) {
       const double v = value(p);
-      if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+      const double x = abscissa(p);
+      if (std::isfinite(v) && std::isfinite(x)) lo = std::min(lo, v), hi = std::max(hi, v);
+      if (std::isfinite(v) && std::isfinite(x)) xlo = std::min(xlo, x), xhi = std::max(xhi, x);
     }
+    if (!(lo <= hi)) lo = 0.0, hi = 1.0;  // nothing finite to draw: an empty frame
+    if (!(xlo < xhi)) xlo = std::isfinite(xlo) ? xlo - 0.5 : 0.0, xhi = xlo + 1.0;
     const double pad = hi > lo ? 0.08 * (hi - lo) : 1.0;
-    lo = lo < 0.0 ? lo - pad : lo;
-    hi = hi > 0.0 ? hi + pad : (lo < 0.0 ? hi : hi + pad);
-    if (lo >= 0.0 && hi <= 0.0) hi = 1.0;
+    if (with_zero) {
+      lo = lo < 0.0 ? lo - pad : lo;
+      hi = hi > 0.0 ? hi + pad : (lo < 0.0 ? hi : hi + pad);
+      if (lo >= 0.0 && hi <= 0.0) hi = 1.0;
+    } else {
+      lo -= pad;
+      hi += pad;
+    }
     const double left = 130, right = 770, top = 60, bottom = 740;
-    auto X = [&](double t) { return left + (t - dom.start) / dom.length() * (right - left); };
+    auto X = [&](double x) { return left + (x - xlo) / (xhi - xlo) * (right - left); };
     auto Y = [&](double v) { return bottom - (v - lo) / (hi - lo) * (bottom - top); };
     std::string d;
     bool pen = false;
     for (const auto& p : pts) {
       const double v = value(p);
-      if (!std::isfinite(v)) {
+      const double x = abscissa(p);
+      if (!std::isfinite(v) || !std::isfinite(x)) {
         pen = false;
         continue;
       }
-      d += (pen ? " L" : " M") + format_number(X(p.t)) + " " + format_number(Y(v));
+      d += (pen ? " L" : " M") + format_number(X(x)) + " " + format_number(Y(v));
       pen = true;
     }
     auto text = [](double x, double y, const std::string& anchor, const std::string& body) {
@@ -303,20 +314,25 @@ void write_svgs(const std::filesystem::path& dir, const io::CurveFile& file, con
     };
     std::string out =
         "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"800\" height=\"800\" viewBox=\"0 0 800 800\">\n";
-    out += "<title>" + name + " against the parameter t</title>\n<rect width=\"800\" height=\"800\" fill=\"white\"/>\n";
+    out += "<title>" + label + " against " + xlabel + "</title>\n<rect width=\"800\" height=\"800\" fill=\"white\"/>\n";
     out += "<rect x=\"" + format_number(left) + "\" y=\"" + format_number(top) + "\" width=\"" +
            format_number(right - left) + "\" height=\"" + format_number(bottom - top) +
            "\" fill=\"none\" stroke=\"#888888\" stroke-width=\"1\"/>\n";
-    out += "<path fill=\"none\" stroke=\"#888888\" stroke-width=\"1\" stroke-dasharray=\"6 4\" d=\"M" +
-           format_number(left) + " " + format_number(Y(0.0)) + " L" + format_number(right) + " " +
-           format_number(Y(0.0)) + "\"/>\n";
+    if (lo < 0.0 && hi > 0.0)
+      out += "<path fill=\"none\" stroke=\"#888888\" stroke-width=\"1\" stroke-dasharray=\"6 4\" d=\"M" +
+             format_number(left) + " " + format_number(Y(0.0)) + " L" + format_number(right) + " " +
+             format_number(Y(0.0)) + "\"/>\n";
     if (!d.empty()) out += "<path fill=\"none\" stroke=\"" + colour + "\" stroke-width=\"2.5\" d=\"" + d + "\"/>\n";
-    out += text(400, 35, "middle", label + " against t");
+    out += text(400, 35, "middle", label + " against " + xlabel);
     out += text(left - 8, top + 7, "end", value_text(hi)) + text(left - 8, bottom + 7, "end", value_text(lo));
     if (lo < 0.0 && hi > 0.0) out += text(left - 8, Y(0.0) + 7, "end", "0");
-    out += text(left, bottom + 30, "middle", "t = " + value_text(dom.start)) +
-           text(right, bottom + 30, "end", value_text(dom.end));
+    out += text(left, bottom + 30, "middle", xlabel + " = " + value_text(xlo)) +
+           text(right, bottom + 30, "end", value_text(xhi));
     io::write_file_atomically(dir / (name + ".svg"), out + "</svg>\n");
+  };
+  const auto by_t = [](const diffgeom::FrenetPoint& p) { return p.t; };
+  auto plot = [&](auto value, const std::string& name, const std::string& label, const std::string& colour) {
+    graph(by_t, value, name, label, "t", colour, true);
   };
   // Signed curvature (about +Z) for planar curves, so it crosses zero at inflections; κ ≥ 0 for space curves.
   plot(
@@ -326,6 +342,24 @@ void write_svgs(const std::filesystem::path& dir, const io::CurveFile& file, con
       "kappa", planar ? "signed curvature \u03BA" : "curvature \u03BA", "#1f5fbf");
   plot([](const diffgeom::FrenetPoint& p) { return p.torsion_defined ? p.torsion : std::nan(""); }, "tau",
        "torsion \u03C4", "#c0392b");
+  // Radius of curvature limited to ten times the curve's size (nearly straight pieces would squash the rest).
+  const double radius_limit = 10.0 * size;
+  plot(
+      [&](const diffgeom::FrenetPoint& p) {
+        const double r = p.tangent_defined && p.curvature > 0 ? 1.0 / p.curvature : std::nan("");
+        return r <= radius_limit ? r : std::nan("");
+      },
+      "radius", "radius of curvature \u03C1", "#27ae60");
+  plot([](const diffgeom::FrenetPoint& p) { return std::isfinite(p.speed) ? p.speed : std::nan(""); }, "speed",
+       "speed |C'(t)|", "#8e44ad");
+  // Logarithmic curvature graph (log-aesthetic analysis): x = log10 ρ, y = log10(κ / |dκ/ds|).
+  graph([](const diffgeom::FrenetPoint& p) { return p.frame_defined ? -std::log10(p.curvature) : std::nan(""); },
+        [](const diffgeom::FrenetPoint& p) {
+          return p.frame_defined && p.curvature_derivative != 0.0
+                     ? std::log10(p.curvature / std::fabs(p.curvature_derivative))
+                     : std::nan("");
+        },
+        "logcurvature", "log10(\u03BA / |d\u03BA/ds|)", "log10 \u03C1", "#d35400", false);
 }
 
 int run_analyse(const AnalyseArgs& a) {
@@ -418,8 +452,10 @@ Command add_analyse(CLI::App& app) {
       ->check(CLI::IsMember({"parameter", "arclength"}));
   sub->add_flag("--features", args->features,
                 "Add \"features\": inflections (planar curves), curvature extrema, knot continuity");
-  sub->add_option("--svg", args->svg,
-                  "Write curve.svg (curvature and torsion fins), kappa.svg and tau.svg into this directory");
+  sub->add_option(
+      "--svg", args->svg,
+      "Write curve.svg (curvature and torsion fins), kappa.svg, tau.svg, radius.svg (range-limited radius of "
+      "curvature), speed.svg and logcurvature.svg into this directory");
   return {sub, [args, sub] {
             if (sub->count("--at") == 0 && sub->count("--samples") == 0)
               throw Error(Errc::InvalidArgument, "give --at or --samples", {.field = "at"});

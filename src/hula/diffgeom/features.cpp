@@ -9,6 +9,9 @@
 #include <functional>
 
 #include "hula/core/error.hpp"
+#include "hula/diffgeom/frenet_law.hpp"
+#include "hula/law/derive.hpp"
+#include "hula/law/tape.hpp"
 
 namespace hula::diffgeom {
 
@@ -209,6 +212,106 @@ std::vector<Feature> torsion_extrema(const nurbs::NurbsCurve& curve, const Featu
   search(nurbs_eval(curve, options.frenet), dtau, nurbs_cuts(curve), options.samples_per_span,
          FeatureKind::TorsionMaximum, FeatureKind::TorsionMinimum, out);
   return out;
+}
+
+namespace {
+// The curve as a 3-vector law (2-vector laws embedded in z = 0), after checking the inputs.
+law::Law law_curve3(const law::Law& curve, nurbs::Interval domain) {
+  if (!curve.valid() || (curve.dimension() != 2 && curve.dimension() != 3))
+    throw Error(Errc::InvalidArgument, "the curve law must be a 2- or 3-vector", {.field = "law"});
+  if (!std::isfinite(domain.start) || !std::isfinite(domain.end) || !(domain.start < domain.end))
+    throw Error(Errc::InvalidArgument,
+                "domain [" + format_number(domain.start) + ", " + format_number(domain.end) +
+                    "] must be finite with start < end",
+                {.field = "domain"});
+  if (curve.dimension() == 3) return curve;
+  return law::vec(law::term(curve, 1), law::term(curve, 2), curve.context().constant(0.0));
+}
+
+Feature law_feature(const LawFrenet& frenet, double t, FeatureKind kind) {
+  const FrenetPoint p = frenet.at(t);
+  return Feature{.kind = kind,
+                 .t = t,
+                 .position = p.position,
+                 .curvature = kind == FeatureKind::Inflection ? 0.0 : p.curvature,
+                 .torsion = p.torsion};
+}
+
+// Interior minima and maxima of f (law::extrema) as features.
+std::vector<Feature> law_extrema(const law::Law& f, const LawFrenet& frenet, std::string_view parameter,
+                                 nurbs::Interval domain, const law::RootOptions& roots, FeatureKind maximum,
+                                 FeatureKind minimum) {
+  const law::ExtremaResult r = law::extrema(f, parameter, domain.start, domain.end, roots);
+  // An extremum must stand out of its neighbours (ends included) by more than value_tolerance × max |f|,
+  // so a law that is constant up to rounding (the torsion of a helix) has none.
+  const double floor = roots.value_tolerance * std::max(std::fabs(r.minimum.value), std::fabs(r.maximum.value));
+  std::vector<Feature> out;
+  for (std::size_t i = 0; i < r.points.size(); ++i) {
+    const law::Extremum& e = r.points[i];
+    if (!(e.t > domain.start && e.t < domain.end) || e.kind == law::ExtremumKind::Stationary) continue;
+    const bool stands_out = (i > 0 && std::fabs(e.value - r.points[i - 1].value) > floor) ||
+                            (i + 1 < r.points.size() && std::fabs(e.value - r.points[i + 1].value) > floor);
+    if (!stands_out) continue;
+    out.push_back(law_feature(frenet, e.t, e.kind == law::ExtremumKind::Maximum ? maximum : minimum));
+  }
+  return out;
+}
+}  // namespace
+
+std::vector<Feature> inflections(const law::Law& curve, std::string_view parameter, nurbs::Interval domain,
+                                 const FeatureOptions& options, const law::RootOptions& roots) {
+  options.validate();
+  roots.validate();
+  const law::Law r = law_curve3(curve, domain);
+  const Vec3 n = options.frenet.plane_normal / norm(options.frenet.plane_normal);
+  const law::Law r1 = law::derivative(r, parameter, 1);
+  const law::Law g = law::dot(law::cross(r1, law::derivative(r, parameter, 2)), r.context().constant(n));
+  const std::vector<double> zeros = law::roots(g, parameter, domain.start, domain.end, roots);
+  const LawFrenet frenet(r, std::string(parameter), domain, options.frenet);
+  // Keep the roots where g changes sign: compare g half-way to the neighbouring roots (or ends).
+  const std::string name(parameter);
+  const law::Tape tape = law::Tape::compile(std::span<const law::Law>(&g, 1), std::span<const std::string>(&name, 1));
+  auto g_at = [&tape](double t) {
+    double v = 0.0;
+    tape.evaluate(std::span<const double>(&t, 1), std::span<double>(&v, 1));
+    return v;
+  };
+  std::vector<Feature> out;
+  for (std::size_t i = 0; i < zeros.size(); ++i) {
+    const double t = zeros[i];
+    if (!(t > domain.start && t < domain.end)) continue;
+    const double left = 0.5 * (t + (i > 0 ? zeros[i - 1] : domain.start));
+    const double right = 0.5 * (t + (i + 1 < zeros.size() ? zeros[i + 1] : domain.end));
+    const double gl = g_at(left), gr = g_at(right);
+    if ((gl < 0.0 && gr > 0.0) || (gl > 0.0 && gr < 0.0))
+      out.push_back(law_feature(frenet, t, FeatureKind::Inflection));
+  }
+  return out;
+}
+
+std::vector<Feature> curvature_extrema(const law::Law& curve, std::string_view parameter, nurbs::Interval domain,
+                                       const FeatureOptions& options, const law::RootOptions& roots) {
+  options.validate();
+  roots.validate();
+  const law::Law r = law_curve3(curve, domain);
+  const law::Law r1 = law::derivative(r, parameter, 1);
+  const law::Law a = law::cross(r1, law::derivative(r, parameter, 2));
+  const law::Law v2 = law::dot(r1, r1);
+  const law::Law kappa2 = law::dot(a, a) / (v2 * v2 * v2);
+  const LawFrenet frenet(r, std::string(parameter), domain, options.frenet);
+  return law_extrema(kappa2, frenet, parameter, domain, roots, FeatureKind::CurvatureMaximum,
+                     FeatureKind::CurvatureMinimum);
+}
+
+std::vector<Feature> torsion_extrema(const law::Law& curve, std::string_view parameter, nurbs::Interval domain,
+                                     const FeatureOptions& options, const law::RootOptions& roots) {
+  options.validate();
+  roots.validate();
+  const law::Law r = law_curve3(curve, domain);
+  const FrenetLaws laws = frenet_laws(r, parameter);
+  const LawFrenet frenet(r, std::string(parameter), domain, options.frenet);
+  return law_extrema(laws.torsion, frenet, parameter, domain, roots, FeatureKind::TorsionMaximum,
+                     FeatureKind::TorsionMinimum);
 }
 
 }  // namespace hula::diffgeom

@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "hula/diffgeom/frenet.hpp"
+#include "hula/law/expr.hpp"
+#include "hula/law/roots.hpp"
 
 namespace hula::diffgeom {
 
@@ -65,4 +67,28 @@ struct Feature {
 [[nodiscard]] std::vector<Feature> curvature_extrema(const LawFrenet& curve, nurbs::Interval domain,
                                                      const FeatureOptions& options = {});
 
+/// Inflections of a law curve without sampling the curve: the roots (law::roots) of the exact law
+/// g = (r' × r'') · n, n = FeatureOptions::frenet.plane_normal, kept where g changes sign. 2-vector
+/// laws are embedded in z = 0. FeatureOptions::samples_per_span is ignored; `roots` steers the
+/// search on the derivative laws.
+/// @param curve a 2- or 3-vector law of `parameter`
+/// @throws hula::Error(Errc::InvalidArgument) naming "law" for a scalar law, "domain" for a bad domain
+/// @throws hula::Error(Errc::InvalidOption) for bad options
+[[nodiscard]] std::vector<Feature> inflections(const law::Law& curve, std::string_view parameter,
+                                               nurbs::Interval domain, const FeatureOptions& options = {},
+                                               const law::RootOptions& roots = {});
+/// Curvature extrema of a law curve in the open domain without sampling the curve: the interior
+/// extrema (law::extrema) of the exact smooth law κ² = |r' × r''|² / |r'|⁶ (an inflection, κ = 0,
+/// is a curvature minimum). Stationary points without a change of sign, and extrema that differ from
+/// their neighbours by no more than roots.value_tolerance × max |κ²|, are not reported.
+/// @throws as inflections(const law::Law&, ...)
+[[nodiscard]] std::vector<Feature> curvature_extrema(const law::Law& curve, std::string_view parameter,
+                                                     nurbs::Interval domain, const FeatureOptions& options = {},
+                                                     const law::RootOptions& roots = {});
+/// Torsion extrema of a law curve in the open domain without sampling the curve: the interior
+/// extrema (law::extrema) of the exact law τ = (r' × r'') · r''' / |r' × r''|² (as frenet_laws).
+/// @throws as inflections(const law::Law&, ...)
+[[nodiscard]] std::vector<Feature> torsion_extrema(const law::Law& curve, std::string_view parameter,
+                                                   nurbs::Interval domain, const FeatureOptions& options = {},
+                                                   const law::RootOptions& roots = {});
 }  // namespace hula::diffgeom

@@ -4,9 +4,12 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "hula/core/error.hpp"
 #include "hula/diffgeom/bishop.hpp"
+#include "hula/diffgeom/frenet_law.hpp"
+#include "hula/law/derive.hpp"
 
 namespace hula::diffgeom {
 
@@ -119,6 +122,46 @@ Fins fins(const LawFrenet& curve, nurbs::Interval domain, const FinOptions& opti
   std::vector<FrenetPoint> pts(ts.size());
   curve.at(ts, pts);
   return build(pts, options);
+}
+
+law::Law fin_law(const law::Law& curve, std::string_view parameter, const FinOptions& options) {
+  options.validate();
+  if (!curve.valid() || (curve.dimension() != 2 && curve.dimension() != 3))
+    throw Error(Errc::InvalidArgument, "the curve law must be a 2- or 3-vector", {.field = "law"});
+  if (options.log_scale) throw Error(Errc::InvalidOption, "log_scale fins have no law form", {.field = "log_scale"});
+  const law::Law r = curve.dimension() == 3
+                         ? curve
+                         : law::vec(law::term(curve, 1), law::term(curve, 2), curve.context().constant(0.0));
+  const double s = options.scale;
+  switch (options.kind) {
+    case FinKind::Curvature: {
+      const law::Law r1 = law::derivative(r, parameter, 1);
+      const law::Law r2 = law::derivative(r, parameter, 2);
+      const law::Law v2 = law::dot(r1, r1);
+      const law::Law kn = (v2 * r2 - law::dot(r1, r2) * r1) / (v2 * v2);  // κN
+      return r - s * kn;
+    }
+    case FinKind::Torsion: {
+      const FrenetLaws f = frenet_laws(r, parameter);
+      return r + s * (f.torsion * f.binormal);
+    }
+    case FinKind::Normal:
+      return r - s * frenet_laws(r, parameter).normal;
+    case FinKind::Binormal:
+      return r - s * frenet_laws(r, parameter).binormal;
+    case FinKind::BishopU:
+    case FinKind::BishopV:
+      break;
+  }
+  throw Error(
+      Errc::InvalidOption,
+      "the " + std::string(fin_kind_name(options.kind)) + " fin has no law form (the Bishop frame is integrated)",
+      {.field = "kind"});
+}
+
+law::ToNurbsResult fin_nurbs(const law::Law& curve, std::string_view parameter, nurbs::Interval domain,
+                             const FinOptions& options, const law::ToNurbsOptions& fit) {
+  return law::to_nurbs(fin_law(curve, parameter, options), parameter, domain.start, domain.end, fit);
 }
 
 }  // namespace hula::diffgeom

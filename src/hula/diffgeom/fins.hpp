@@ -13,6 +13,8 @@
 #include <vector>
 
 #include "hula/diffgeom/frenet.hpp"
+#include "hula/law/convert.hpp"
+#include "hula/law/expr.hpp"
 
 namespace hula::diffgeom {
 
@@ -63,4 +65,17 @@ struct Fins {
 /// @throws hula::Error(Errc::InvalidOption) for bad options
 [[nodiscard]] Fins fins(const LawFrenet& curve, nurbs::Interval domain, const FinOptions& options = {});
 
+/// The fin curve (the comb's envelope) of a law curve as an exact law of `parameter`:
+/// Curvature P − s κN, built as P − s ((r'·r') r'' − (r'·r'') r') / |r'|⁴ so it stays defined through
+/// inflections; Torsion P + s τB, Normal P − s N, Binormal P − s B from frenet_laws (undefined where
+/// the frame is). 2-vector laws are embedded in z = 0.
+/// @throws hula::Error(Errc::InvalidArgument) naming "law" for a scalar law
+/// @throws hula::Error(Errc::InvalidOption) naming "kind" for the Bishop fins (no closed law) and
+///   "log_scale" when it is set, or for other bad options
+[[nodiscard]] law::Law fin_law(const law::Law& curve, std::string_view parameter, const FinOptions& options = {});
+/// The fin curve of a law curve over `domain` as a NURBS within fit.tolerance (law::to_nurbs of fin_law).
+/// @throws as fin_law and law::to_nurbs (Errc::NumericalFailure where the fin is undefined, e.g. a
+///   torsion fin through an inflection)
+[[nodiscard]] law::ToNurbsResult fin_nurbs(const law::Law& curve, std::string_view parameter, nurbs::Interval domain,
+                                           const FinOptions& options = {}, const law::ToNurbsOptions& fit = {});
 }  // namespace hula::diffgeom

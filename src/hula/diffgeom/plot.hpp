@@ -8,6 +8,7 @@
 #pragma once
 #include <cstdint>
 #include <limits>
+#include <string_view>
 #include <vector>
 
 #include "hula/diffgeom/frenet.hpp"
@@ -22,6 +23,9 @@ enum class PlotQuantity {
   Torsion,            ///< τ
   Speed,              ///< |r'(t)|
   LogCurvatureGraph,  ///< x = log10 ρ, y = log10(κ/|dκ/ds|) (abscissa option ignored)
+  /// Logarithmic torsion graph: x = log10(1/|τ|), y = log10(|τ|/|dτ/ds|) (abscissa option ignored);
+  /// undefined where τ = 0 or dτ/ds = 0 (a helix: everywhere)
+  LogTorsionGraph,
 };
 
 /// Against what.
@@ -58,4 +62,11 @@ struct Plot {
 /// @throws hula::Error(Errc::InvalidOption) for bad options
 [[nodiscard]] Plot plot(const nurbs::NurbsCurve& curve, const PlotOptions& options = {});
 
+/// Samples a plot of a law curve on [domain.start, domain.end] (arc length by Gauss–Legendre
+/// quadrature of |r'| between samples).
+/// @param curve a 2- or 3-vector law of `parameter`
+/// @throws hula::Error(Errc::InvalidArgument) naming "law" for a scalar law or "domain" for a bad domain
+/// @throws hula::Error(Errc::InvalidOption) for bad options
+[[nodiscard]] Plot plot(const law::Law& curve, std::string_view parameter, nurbs::Interval domain,
+                        const PlotOptions& options = {});
 }  // namespace hula::diffgeom

@@ -10,7 +10,6 @@
 #include <TColgp_Array1OfPnt.hxx>
 #include <gp_Pnt.hxx>
 #include <gp_Vec.hxx>
-
 #include <vector>
 
 #include "hula/core/vec.hpp"
