@@ -153,16 +153,8 @@ GaResult solve_real_ga(const Problem& problem, const RealGaOptions& options) {
       Rng rng(run.seed, detail::pair_stream(g, j));
       const std::size_t a = tournament_select(n, options.tournament_size, rng, better);
       const std::size_t b = tournament_select(n, options.tournament_size, rng, better);
-      const auto c1 = pop.var(n + 2 * j);
-      const auto c2 = pop.var(n + 2 * j + 1);
-      if (rng.uniform() < options.crossover_probability) {
-        sbx_crossover(pop.var(a), pop.var(b), lo, hi, c1, c2, sbx, rng);
-      } else {
-        std::copy(pop.var(a).begin(), pop.var(a).end(), c1.begin());
-        std::copy(pop.var(b).begin(), pop.var(b).end(), c2.begin());
-      }
-      polynomial_mutation(c1, lo, hi, pm, options.mutation_eta, rng);
-      polynomial_mutation(c2, lo, hi, pm, options.mutation_eta, rng);
+      detail::real_offspring(pop.var(a), pop.var(b), pop.var(n + 2 * j), pop.var(n + 2 * j + 1), lo, hi,
+                             options.crossover_probability, sbx, pm, options.mutation_eta, rng);
     }
     evaluator.evaluate(pop, n, 2 * n);
     for (std::size_t i = n; i < 2 * n; ++i) champion.offer(pop, i);

@@ -178,16 +178,8 @@ Nsga2Result solve_nsga2(const Problem& problem, const Nsga2Options& options) {
         encoding->decode(c1, pop.var(r1));
         encoding->decode(c2, pop.var(r2));
       } else {
-        const auto c1 = pop.var(r1);
-        const auto c2 = pop.var(r2);
-        if (rng.uniform() < options.crossover_probability) {
-          sbx_crossover(pop.var(a), pop.var(b), lo, hi, c1, c2, sbx, rng);
-        } else {
-          std::copy(pop.var(a).begin(), pop.var(a).end(), c1.begin());
-          std::copy(pop.var(b).begin(), pop.var(b).end(), c2.begin());
-        }
-        polynomial_mutation(c1, lo, hi, pm, options.mutation_eta, rng);
-        polynomial_mutation(c2, lo, hi, pm, options.mutation_eta, rng);
+        detail::real_offspring(pop.var(a), pop.var(b), pop.var(r1), pop.var(r2), lo, hi, options.crossover_probability,
+                               sbx, pm, options.mutation_eta, rng);
       }
     }
     const std::size_t failed_before = evaluator.failed();

@@ -1,11 +1,26 @@
 // SPDX-License-Identifier: MIT
 #include "hula/optim/detail/engine.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "hula/core/error.hpp"
+#include "hula/optim/mutation.hpp"
 
 namespace hula::optim::detail {
+
+void real_offspring(std::span<const double> a, std::span<const double> b, std::span<double> c1, std::span<double> c2,
+                    std::span<const double> lower, std::span<const double> upper, double crossover_probability,
+                    const SbxSettings& sbx, double mutation_probability, double mutation_eta, Rng& rng) {
+  if (rng.uniform() < crossover_probability) {
+    sbx_crossover(a, b, lower, upper, c1, c2, sbx, rng);
+  } else {
+    std::copy(a.begin(), a.end(), c1.begin());
+    std::copy(b.begin(), b.end(), c2.begin());
+  }
+  polynomial_mutation(c1, lower, upper, mutation_probability, mutation_eta, rng);
+  polynomial_mutation(c2, lower, upper, mutation_probability, mutation_eta, rng);
+}
 
 void Population::allocate(std::size_t rows, std::size_t dimension, std::size_t value_count, std::size_t objective_count,
                           std::size_t chromosome_bits) {

@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "hula/core/rng.hpp"
+#include "hula/optim/crossover.hpp"
 #include "hula/optim/problem.hpp"
 #include "hula/optim/run_log.hpp"
 #include "hula/optim/run_report.hpp"
@@ -27,6 +29,14 @@ inline constexpr double kInf = std::numeric_limits<double>::infinity();
 [[nodiscard]] inline std::uint64_t pair_stream(std::size_t generation, std::size_t pair) noexcept {
   return (static_cast<std::uint64_t>(generation) << 32) + pair;
 }
+
+/// Real-coded offspring of parents a and b into children c1 and c2: SBX with
+/// probability `crossover_probability` (else copies), then polynomial mutation
+/// of each child with per-variable probability `mutation_probability`. The
+/// draws from `rng` come in that order, shared by the real GA and NSGA-II.
+void real_offspring(std::span<const double> a, std::span<const double> b, std::span<double> c1, std::span<double> c2,
+                    std::span<const double> lower, std::span<const double> upper, double crossover_probability,
+                    const SbxSettings& sbx, double mutation_probability, double mutation_eta, Rng& rng);
 
 /// Rows of individuals, allocated once per run.
 struct Population {
