@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "commands/common.hpp"
+#include "commands/study_common.hpp"
 #include "hula/core/error.hpp"
 #include "hula/io/atomic_file.hpp"
 #include "hula/io/problem_file.hpp"
@@ -324,16 +325,6 @@ Json front_json(std::vector<Solution> front, const Problem& problem, const std::
   return doc;
 }
 
-void write_log(const optim::RunLog& log, const std::string& path) {
-  std::ostringstream text;
-  if (path.ends_with(".csv")) {
-    log.write_csv(text);
-  } else {
-    log.write_json(text);
-  }
-  io::write_file_atomically(path, text.str());
-}
-
 int run_optimise(const OptimiseArgs& a) {
   const AlgorithmChoice algorithm = parse_algorithm(a.algorithm);
   if (a.objectives != 0 && a.problem != "dtlz2") {
@@ -374,7 +365,7 @@ int run_optimise(const OptimiseArgs& a) {
   optim::RunLog log;
   const Outcome out = algorithm.kind == Algorithm::Pagmo ? run_pagmo(problem, a, algorithm.pagmo)
                                                          : run_flexo(problem, a, algorithm.kind, log);
-  if (a.log) write_log(log, *a.log);
+  if (a.log) write_run_log(log, *a.log);
 
   Json doc = Json::object();
   if (problem.objectives == 1) {

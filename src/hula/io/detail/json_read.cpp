@@ -2,6 +2,7 @@
 // Checked JSON accessors with path-naming errors (see json_read.hpp).
 #include "hula/io/detail/json_read.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -142,6 +143,17 @@ const Json* optional_member(const Json& object, std::string_view name) {
   const auto it = object.find(std::string(name));
   if (it == object.end() || it->is_null()) return nullptr;
   return &*it;
+}
+
+void reject_unknown_members(const Json& object, const JsonPath& path, std::span<const std::string_view> allowed) {
+  if (!object.is_object()) type_error(object, path, "an object");
+  for (const auto& [key, value] : object.items()) {
+    if (std::find(allowed.begin(), allowed.end(), std::string_view(key)) != allowed.end()) continue;
+    std::string expected;
+    for (std::string_view a : allowed) expected += (expected.empty() ? "" : ", ") + std::string(a);
+    const JsonPath at = path.member(key);
+    throw Error(Errc::ParseError, at.text + ": unknown member (expected one of " + expected + ")", at.where);
+  }
 }
 
 std::pair<Vec3, int> get_point(const Json& value, const JsonPath& path) {

@@ -6,7 +6,9 @@
 #pragma once
 
 #include <cstddef>
+#include <initializer_list>
 #include <nlohmann/json.hpp>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -57,6 +59,14 @@ struct JsonPath {
 [[nodiscard]] const Json& require_member(const Json& object, const JsonPath& parent, std::string_view name);
 /// Member `name` or nullptr when absent or null.
 [[nodiscard]] const Json* optional_member(const Json& object, std::string_view name);
+/// Refuses an object that is not an object or has a member outside `allowed`
+/// (a misspelt setting must not be silently ignored).
+/// @throws hula::Error(Errc::ParseError) "<path>.<name>: unknown member (expected one of a, b, ...)"
+void reject_unknown_members(const Json& object, const JsonPath& path, std::span<const std::string_view> allowed);
+inline void reject_unknown_members(const Json& object, const JsonPath& path,
+                                   std::initializer_list<std::string_view> allowed) {
+  reject_unknown_members(object, path, std::span<const std::string_view>(allowed.begin(), allowed.size()));
+}
 
 /// Points as arrays of 2 or 3 numbers, all with the same count.
 struct PointArray {
