@@ -11,14 +11,14 @@
 
 #include "hula/core/error.hpp"
 #include "hula/io/atomic_file.hpp"
-#include "hula/io/detail/json_read.hpp"
+#include "hula/io/json_read.hpp"
 #include "hula/law/convert.hpp"
 #include "hula/law/parser.hpp"
 
 namespace hula::io {
 
-using detail::JsonPath;
-using detail::root_path;
+using json::JsonPath;
+using json::root_path;
 
 std::string_view curve_kind_name(CurveKind kind) noexcept {
   switch (kind) {
@@ -66,17 +66,17 @@ nurbs::EndCondition end_condition_from_json(const Json& value, std::string_view 
     if (name == "not-a-knot") return {K::NotAKnot, {}};
     if (name == "occt") return {K::Occt, {}};
     throw Error(Errc::ParseError,
-                path.text + " = " + detail::describe(value) +
+                path.text + " = " + json::describe(value) +
                     " is not an end condition (expected \"natural\", \"bessel\", \"not-a-knot\", \"occt\" or "
                     "{\"tangent\": [x, y, z]})",
                 path.where);
   }
   if (value.is_object()) {
-    const Json& tangent = detail::require_member(value, path, "tangent");
-    return {K::Clamped, detail::get_point(tangent, path.member("tangent")).first};
+    const Json& tangent = json::require_member(value, path, "tangent");
+    return {K::Clamped, json::get_point(tangent, path.member("tangent")).first};
   }
-  detail::type_error(
-      value, path, "an end condition (\"natural\", \"bessel\", \"not-a-knot\", \"occt\" or {\"tangent\": [x, y, z]})");
+  json::type_error(value, path,
+                   "an end condition (\"natural\", \"bessel\", \"not-a-knot\", \"occt\" or {\"tangent\": [x, y, z]})");
 }
 
 namespace {
@@ -102,13 +102,12 @@ Json numbers_to_json(std::span<const double> values) {
 CurveFile read_nurbs(const Json& doc) {
   const JsonPath root;
   const auto degree =
-      detail::get_integer(detail::require_member(doc, root, "degree"), root_path("degree"), INT_MIN, INT_MAX);
-  std::vector<double> knots = detail::get_number_array(detail::require_member(doc, root, "knots"), root_path("knots"));
-  detail::PointArray cps =
-      detail::get_points(detail::require_member(doc, root, "control_points"), root_path("control_points"));
+      json::get_integer(json::require_member(doc, root, "degree"), root_path("degree"), INT_MIN, INT_MAX);
+  std::vector<double> knots = json::get_number_array(json::require_member(doc, root, "knots"), root_path("knots"));
+  json::PointArray cps =
+      json::get_points(json::require_member(doc, root, "control_points"), root_path("control_points"));
   std::vector<double> weights;
-  if (const Json* w = detail::optional_member(doc, "weights"))
-    weights = detail::get_number_array(*w, root_path("weights"));
+  if (const Json* w = json::optional_member(doc, "weights")) weights = json::get_number_array(*w, root_path("weights"));
   nurbs::NurbsCurve curve(static_cast<int>(degree), std::move(knots), std::move(cps.points), std::move(weights),
                           cps.dimension);
   return CurveFile{std::move(curve), CurveKind::Nurbs, std::nullopt, std::nullopt};
@@ -116,16 +115,15 @@ CurveFile read_nurbs(const Json& doc) {
 
 CurveFile read_bezier(const Json& doc) {
   const JsonPath root;
-  detail::PointArray cps =
-      detail::get_points(detail::require_member(doc, root, "control_points"), root_path("control_points"));
+  json::PointArray cps =
+      json::get_points(json::require_member(doc, root, "control_points"), root_path("control_points"));
   const std::size_t n = cps.points.size();
   if (n < 2)
     throw Error(Errc::TooFewPoints,
                 "control_points has " + std::to_string(n) + " point(s); a Bézier curve needs at least 2",
                 {.field = "control_points"});
   std::vector<double> weights;
-  if (const Json* w = detail::optional_member(doc, "weights"))
-    weights = detail::get_number_array(*w, root_path("weights"));
+  if (const Json* w = json::optional_member(doc, "weights")) weights = json::get_number_array(*w, root_path("weights"));
   // Degree n - 1 on [0, 1]: n zeros followed by n ones (the Bernstein basis).
   std::vector<double> knots(2 * n, 0.0);
   for (std::size_t i = n; i < 2 * n; ++i) knots[i] = 1.0;
@@ -142,16 +140,16 @@ CurveFile read_bezier(const Json& doc) {
 CurveFile read_interpolated(const Json& doc) {
   const JsonPath root;
   InterpolationInputs in;
-  detail::PointArray pts = detail::get_points(detail::require_member(doc, root, "points"), root_path("points"));
+  json::PointArray pts = json::get_points(json::require_member(doc, root, "points"), root_path("points"));
   in.points = std::move(pts.points);
   in.dimension = pts.dimension;
-  if (const Json* rule = detail::optional_member(doc, "parameterisation"))
-    in.parameterisation = parameterisation_from_name(detail::get_string(*rule, root_path("parameterisation")));
+  if (const Json* rule = json::optional_member(doc, "parameterisation"))
+    in.parameterisation = parameterisation_from_name(json::get_string(*rule, root_path("parameterisation")));
   std::vector<double> parameters, knots;
-  const Json* jp = detail::optional_member(doc, "parameters");
-  const Json* jk = detail::optional_member(doc, "knots");
-  if (jp) parameters = detail::get_number_array(*jp, root_path("parameters"));
-  if (jk) knots = detail::get_number_array(*jk, root_path("knots"));
+  const Json* jp = json::optional_member(doc, "parameters");
+  const Json* jk = json::optional_member(doc, "knots");
+  if (jp) parameters = json::get_number_array(*jp, root_path("parameters"));
+  if (jk) knots = json::get_number_array(*jk, root_path("knots"));
   if (jp && jk) {
     // "knots" is the thesis's interpolate-knots: the same quantity as "parameters".
     if (knots.size() != parameters.size())
@@ -169,8 +167,8 @@ CurveFile read_interpolated(const Json& doc) {
   }
   const bool from_knots = jk && !jp;
   in.parameters = from_knots ? std::move(knots) : std::move(parameters);
-  if (const Json* s = detail::optional_member(doc, "start")) in.start = end_condition_from_json(*s, "start");
-  if (const Json* e = detail::optional_member(doc, "end")) in.end = end_condition_from_json(*e, "end");
+  if (const Json* s = json::optional_member(doc, "start")) in.start = end_condition_from_json(*s, "start");
+  if (const Json* e = json::optional_member(doc, "end")) in.end = end_condition_from_json(*e, "end");
   nurbs::NurbsCurve curve = resolve(in, from_knots ? "knots" : "parameters");
   return CurveFile{std::move(curve), CurveKind::Interpolated, std::move(in), std::nullopt};
 }
@@ -227,14 +225,13 @@ namespace {
 CurveFile read_law(const Json& doc) {
   const JsonPath root;
   LawCurve lc;
-  lc.expression = detail::get_string(detail::require_member(doc, root, "expression"), root_path("expression"));
-  if (const Json* p = detail::optional_member(doc, "parameter"))
-    lc.parameter = detail::get_string(*p, root_path("parameter"));
+  lc.expression = json::get_string(json::require_member(doc, root, "expression"), root_path("expression"));
+  if (const Json* p = json::optional_member(doc, "parameter"))
+    lc.parameter = json::get_string(*p, root_path("parameter"));
   const std::vector<double> dom =
-      detail::get_number_array(detail::require_member(doc, root, "domain"), root_path("domain"));
+      json::get_number_array(json::require_member(doc, root, "domain"), root_path("domain"));
   if (dom.size() != 2 || !(dom[0] < dom[1]))
-    throw Error(Errc::ParseError,
-                "domain must be [start, end] with start < end, got " + detail::describe(doc["domain"]),
+    throw Error(Errc::ParseError, "domain must be [start, end] with start < end, got " + json::describe(doc["domain"]),
                 {.field = "domain"});
   lc.domain = {dom[0], dom[1]};
   law::ParseOptions options;
@@ -280,8 +277,8 @@ Json law_to_json(const LawCurve& curve) {
 }
 
 CurveFile curve_from_json(const Json& document) {
-  if (!document.is_object()) detail::type_error(document, JsonPath{}, "a JSON object with a \"kind\" member");
-  const std::string kind = detail::get_string(detail::require_member(document, JsonPath{}, "kind"), root_path("kind"));
+  if (!document.is_object()) json::type_error(document, JsonPath{}, "a JSON object with a \"kind\" member");
+  const std::string kind = json::get_string(json::require_member(document, JsonPath{}, "kind"), root_path("kind"));
   if (kind == "nurbs") return read_nurbs(document);
   if (kind == "bezier") return read_bezier(document);
   if (kind == "interpolated") return read_interpolated(document);
@@ -292,9 +289,7 @@ CurveFile curve_from_json(const Json& document) {
       {.field = "kind"});
 }
 
-CurveFile parse_curve_json(std::string_view text) {
-  return curve_from_json(detail::parse_json_text(text, "curve file"));
-}
+CurveFile parse_curve_json(std::string_view text) { return curve_from_json(json::parse_json_text(text, "curve file")); }
 
 CurveFile read_curve_file(const std::filesystem::path& path) { return parse_curve_json(read_text_file(path)); }
 

@@ -8,7 +8,7 @@
 
 #include "hula/core/error.hpp"
 #include "hula/io/atomic_file.hpp"
-#include "hula/io/detail/json_read.hpp"
+#include "hula/io/json_read.hpp"
 
 namespace hula::io {
 namespace {
@@ -23,8 +23,8 @@ std::string quoted(std::string_view s) {
 }  // namespace
 
 PointSet parse_points_json(std::string_view text) {
-  const detail::Json doc = detail::parse_json_text(text, "point file");
-  detail::PointArray a = detail::get_points(doc, detail::root_path("points"));
+  const json::Json doc = json::parse_json_text(text, "point file");
+  json::PointArray a = json::get_points(doc, json::root_path("points"));
   return PointSet{std::move(a.points), a.dimension};
 }
 

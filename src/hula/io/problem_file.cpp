@@ -8,7 +8,7 @@
 
 #include "hula/core/error.hpp"
 #include "hula/io/atomic_file.hpp"
-#include "hula/io/detail/json_read.hpp"
+#include "hula/io/json_read.hpp"
 #include "hula/law/parser.hpp"
 #include "hula/law/tape.hpp"
 
@@ -16,16 +16,16 @@ namespace hula::io {
 
 namespace {
 
-using detail::Json;
-using detail::JsonPath;
-using detail::root_path;
+using json::Json;
+using json::JsonPath;
+using json::root_path;
 
 optim::Variable read_variable(const Json& value, const JsonPath& path, law::Context& context,
                               std::set<std::string>& names) {
-  if (!value.is_object()) detail::type_error(value, path, "an object {\"name\", \"lower\", \"upper\"}");
+  if (!value.is_object()) json::type_error(value, path, "an object {\"name\", \"lower\", \"upper\"}");
   optim::Variable v;
   const JsonPath name_path = path.member("name");
-  v.name = detail::get_string(detail::require_member(value, path, "name"), name_path);
+  v.name = json::get_string(json::require_member(value, path, "name"), name_path);
   try {
     (void)context.parameter(v.name);  // refuses non-identifiers, function names, pi and e
   } catch (const Error& e) {
@@ -35,10 +35,10 @@ optim::Variable read_variable(const Json& value, const JsonPath& path, law::Cont
   if (!names.insert(v.name).second)
     throw Error(Errc::ParseError, name_path.text + " = \"" + v.name + "\" repeats an earlier variable name",
                 name_path.where);
-  v.lower = detail::get_number(detail::require_member(value, path, "lower"), path.member("lower"));
-  v.upper = detail::get_number(detail::require_member(value, path, "upper"), path.member("upper"));
-  if (const Json* p = detail::optional_member(value, "precision"))
-    v.precision = detail::get_number(*p, path.member("precision"));
+  v.lower = json::get_number(json::require_member(value, path, "lower"), path.member("lower"));
+  v.upper = json::get_number(json::require_member(value, path, "upper"), path.member("upper"));
+  if (const Json* p = json::optional_member(value, "precision"))
+    v.precision = json::get_number(*p, path.member("precision"));
   return v;
 }
 
@@ -66,20 +66,20 @@ law::Law read_expression(const std::string& text, const JsonPath& path, const la
 }  // namespace
 
 ProblemFile parse_problem_json(std::string_view text) {
-  const Json doc = detail::parse_json_text(text, "problem file");
+  const Json doc = json::parse_json_text(text, "problem file");
   const JsonPath root;
-  if (!doc.is_object()) detail::type_error(doc, root_path(""), "an object (a problem file)");
+  if (!doc.is_object()) json::type_error(doc, root_path(""), "an object (a problem file)");
 
   ProblemFile out;
   optim::Problem& problem = out.problem;
   problem.name = "problem-file";
-  if (const Json* n = detail::optional_member(doc, "name")) problem.name = detail::get_string(*n, root_path("name"));
+  if (const Json* n = json::optional_member(doc, "name")) problem.name = json::get_string(*n, root_path("name"));
 
   law::Context context;
   law::ParseOptions options;
   options.parameters.clear();
   std::set<std::string> names;
-  const Json& vars = detail::get_array(detail::require_member(doc, root, "variables"), root_path("variables"));
+  const Json& vars = json::get_array(json::require_member(doc, root, "variables"), root_path("variables"));
   if (vars.empty())
     throw Error(Errc::ParseError, "variables is empty: a problem needs at least one variable", {.field = "variables"});
   for (std::size_t i = 0; i < vars.size(); ++i) {
@@ -90,35 +90,35 @@ ProblemFile parse_problem_json(std::string_view text) {
   // Tape outputs in the order Problem::evaluate writes them: objectives,
   // inequality constraints, equality constraints.
   std::vector<law::Law> objectives, inequalities, equalities;
-  const Json& objs = detail::get_array(detail::require_member(doc, root, "objectives"), root_path("objectives"));
+  const Json& objs = json::get_array(json::require_member(doc, root, "objectives"), root_path("objectives"));
   if (objs.empty())
     throw Error(Errc::ParseError, "objectives is empty: a problem needs at least one objective",
                 {.field = "objectives"});
   for (std::size_t i = 0; i < objs.size(); ++i) {
     const JsonPath path = root_path("objectives").element(i);
-    objectives.push_back(read_expression(detail::get_string(objs[i], path), path, context, options));
+    objectives.push_back(read_expression(json::get_string(objs[i], path), path, context, options));
   }
-  if (const Json* cons = detail::optional_member(doc, "constraints")) {
-    const Json& list = detail::get_array(*cons, root_path("constraints"));
+  if (const Json* cons = json::optional_member(doc, "constraints")) {
+    const Json& list = json::get_array(*cons, root_path("constraints"));
     for (std::size_t i = 0; i < list.size(); ++i) {
       const JsonPath path = root_path("constraints").element(i);
-      if (!list[i].is_object()) detail::type_error(list[i], path, "an object {\"expression\", \"type\"}");
+      if (!list[i].is_object()) json::type_error(list[i], path, "an object {\"expression\", \"type\"}");
       std::string type = "inequality";
-      if (const Json* t = detail::optional_member(list[i], "type")) type = detail::get_string(*t, path.member("type"));
+      if (const Json* t = json::optional_member(list[i], "type")) type = json::get_string(*t, path.member("type"));
       if (type != "inequality" && type != "equality")
         throw Error(
             Errc::ParseError,
             path.member("type").text + " = \"" + type + "\" must be \"inequality\" (g <= 0) or \"equality\" (h = 0)",
             path.where);
       const JsonPath expr_path = path.member("expression");
-      const std::string expr = detail::get_string(detail::require_member(list[i], path, "expression"), expr_path);
+      const std::string expr = json::get_string(json::require_member(list[i], path, "expression"), expr_path);
       (type == "inequality" ? inequalities : equalities).push_back(read_expression(expr, expr_path, context, options));
     }
   }
-  if (const Json* tol = detail::optional_member(doc, "equality_tolerance"))
-    problem.equality_tolerance = detail::get_number(*tol, root_path("equality_tolerance"));
-  if (const Json* ref = detail::optional_member(doc, "reference")) {
-    out.reference = detail::get_number_array(*ref, root_path("reference"));
+  if (const Json* tol = json::optional_member(doc, "equality_tolerance"))
+    problem.equality_tolerance = json::get_number(*tol, root_path("equality_tolerance"));
+  if (const Json* ref = json::optional_member(doc, "reference")) {
+    out.reference = json::get_number_array(*ref, root_path("reference"));
     if (out.reference->size() != objectives.size())
       throw Error(Errc::InvalidOption,
                   "reference has " + std::to_string(out.reference->size()) + " values but the file has " +

@@ -16,20 +16,28 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 void check_sizes(std::size_t a, std::size_t b, const char* what) {
   if (a != b)
-    throw Error(Errc::InvalidArgument,
-                std::string("SvgFigure::") + what + ": coordinate arrays differ in size (" + std::to_string(a) +
-                    " vs " + std::to_string(b) + ")");
+    throw Error(Errc::InvalidArgument, std::string("SvgFigure::") + what + ": coordinate arrays differ in size (" +
+                                           std::to_string(a) + " vs " + std::to_string(b) + ")");
 }
 
 std::string escape(const std::string& text) {
   std::string out;
   for (char c : text) {
     switch (c) {
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '&': out += "&amp;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '&':
+        out += "&amp;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -179,8 +187,8 @@ std::string SvgFigure::render() const {
   const auto X = [&](double x) { return ox + (x - rx.lo) * sx; };
   const auto Y = [&](double y) { return oy + ph - (ymap(y) - ry.lo) * sy; };
 
-  std::string out = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + num(width_) + "\" height=\"" +
-                    num(height_) + "\" viewBox=\"0 0 " + num(width_) + " " + num(height_) +
+  std::string out = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + num(width_) + "\" height=\"" + num(height_) +
+                    "\" viewBox=\"0 0 " + num(width_) + " " + num(height_) +
                     "\" font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" "
                     "fill=\"white\"/>\n";
   if (!title_.empty())
@@ -294,8 +302,8 @@ std::string SvgFigure::render() const {
     const double ly = height_ - 10;
     for (const auto& it : items_) {
       if (it.legend.empty()) continue;
-      out += "<line x1=\"" + num(lx) + "\" y1=\"" + num(ly - 4) + "\" x2=\"" + num(lx + 24) + "\" y2=\"" +
-             num(ly - 4) + "\"" + stroke_attrs(it.style) + "/>\n";
+      out += "<line x1=\"" + num(lx) + "\" y1=\"" + num(ly - 4) + "\" x2=\"" + num(lx + 24) + "\" y2=\"" + num(ly - 4) +
+             "\"" + stroke_attrs(it.style) + "/>\n";
       out += "<text x=\"" + num(lx + 30) + "\" y=\"" + num(ly) + "\">" + escape(it.legend) + "</text>\n";
       lx += 40 + 7.0 * static_cast<double>(it.legend.size());
     }

@@ -52,8 +52,8 @@ class SvgFigure {
                     std::span<const double> y1, const SvgStyle& style = {}, std::string legend = {});
   /// Circular markers of `radius` pixels at (x[i], y[i]).
   /// @throws hula::Error(Errc::InvalidArgument) if the sizes differ.
-  void add_points(std::span<const double> x, std::span<const double> y, const SvgStyle& style = {},
-                  double radius = 3.0, std::string legend = {});
+  void add_points(std::span<const double> x, std::span<const double> y, const SvgStyle& style = {}, double radius = 3.0,
+                  std::string legend = {});
   /// A heat map: values[j * xs.size() + i] is the value at (xs[i], ys[j]);
   /// each cell is drawn around its node, coloured from dark blue (smallest
   /// finite value) to yellow (largest); NaN cells stay blank. A colour bar

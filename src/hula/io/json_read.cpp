@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
 // Checked JSON accessors with path-naming errors (see json_read.hpp).
-#include "hula/io/detail/json_read.hpp"
+#include "hula/io/json_read.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <utility>
 
-namespace hula::io::detail {
+namespace hula::io::json {
 
 JsonPath JsonPath::member(std::string_view name) const {
   JsonPath out = *this;
@@ -184,4 +184,4 @@ PointArray get_points(const Json& value, const JsonPath& path) {
   return out;
 }
 
-}  // namespace hula::io::detail
+}  // namespace hula::io::json

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Checked accessors for reading JSON documents: every failure throws
+// Checked accessors for reading JSON documents (used by io and by the study
+// readers): every failure throws
 // hula::Error naming the JSON path (e.g. `control_points[3][1]`) and the value
 // found, with ErrorWhere.field = the top-level member and index / component =
 // the first / second array index on the path.
@@ -16,7 +17,7 @@
 #include "hula/core/error.hpp"
 #include "hula/core/vec.hpp"
 
-namespace hula::io::detail {
+namespace hula::io::json {
 
 using Json = nlohmann::ordered_json;
 
@@ -80,4 +81,4 @@ struct PointArray {
 /// @returns the point and its component count
 [[nodiscard]] std::pair<Vec3, int> get_point(const Json& value, const JsonPath& path);
 
-}  // namespace hula::io::detail
+}  // namespace hula::io::json
