@@ -1,0 +1,177 @@
+// SPDX-License-Identifier: MIT
+#include "hula/studies/curvature_torsion_match.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "hula/core/error.hpp"
+#include "hula/optim/pareto.hpp"
+
+namespace hula::studies {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+void require_torsion(const CurvatureMatch& match) {
+  if (match.torsion_target_samples().empty())
+    throw Error(Errc::InvalidArgument, "the curvature + torsion study needs a torsion target",
+                {.field = "torsion_target"});
+  if (match.setup().dimension != 3)
+    throw Error(Errc::InvalidArgument, "the curvature + torsion study needs 3-D points (planar curves have no torsion)",
+                {.field = "points"});
+}
+
+void check(bool ok, const std::string& field, double value, const char* range) {
+  if (!ok)
+    throw Error(Errc::InvalidOption, field + " = " + format_number(value) + " must be " + range, {.field = field});
+}
+
+}  // namespace
+
+std::pair<double, double> curvature_torsion_errors(const CurvatureMatch& match, std::span<const double> x,
+                                                   SplineProfileSampler::Workspace& ws, std::span<Vec3> points,
+                                                   std::span<double> kappa, std::span<double> tau) {
+  match.points_from(x, points);
+  if (!match.sampler().sample(points, ws, kappa, tau)) return {kNaN, kNaN};
+  const auto& kt = match.target_samples();
+  const auto& tt = match.torsion_target_samples();
+  double ek = 0.0, et = 0.0;
+  std::size_t defined = 0;
+  for (std::size_t i = 0; i < kappa.size(); ++i) {
+    ek += std::fabs(kappa[i] - kt[i]);
+    if (std::isfinite(tau[i])) {
+      et += std::fabs(tau[i] - tt[i]);
+      ++defined;
+    }
+  }
+  if (2 * defined < tau.size()) return {kNaN, kNaN};
+  return {ek / static_cast<double>(kappa.size()), et / static_cast<double>(defined)};
+}
+
+optim::Problem curvature_torsion_problem(const CurvatureMatch& match) {
+  require_torsion(match);
+  optim::Problem p;
+  p.name = "match-curvature-torsion";
+  p.variables = match.variables();
+  p.objectives = 2;
+  const std::size_t n_points = match.setup().points.size(), n_samples = match.setup().samples;
+  p.evaluate = [&match, n_points, n_samples](std::span<const double> x, std::span<double> values) {
+    // One set of buffers per thread; none allocates once warm.
+    thread_local SplineProfileSampler::Workspace ws;
+    thread_local std::vector<Vec3> points;
+    thread_local std::vector<double> kappa, tau;
+    if (points.size() != n_points) points.resize(n_points);
+    if (kappa.size() != n_samples) kappa.resize(n_samples);
+    if (tau.size() != n_samples) tau.resize(n_samples);
+    const auto [ek, et] = curvature_torsion_errors(match, x, ws, points, kappa, tau);
+    values[0] = ek;
+    values[1] = et;
+  };
+  return p;
+}
+
+void TorsionMatchSettings::validate() const {
+  check(population >= 4 && population % 2 == 0, "nsga2.population", static_cast<double>(population),
+        "even and >= 4");
+  check(crossover_probability >= 0.0 && crossover_probability <= 1.0, "nsga2.crossover_probability",
+        crossover_probability, "in [0, 1]");
+  check(std::isfinite(crossover_eta) && crossover_eta >= 0.0, "nsga2.crossover_eta", crossover_eta,
+        "finite and >= 0");
+  check(std::isfinite(mutation_eta) && mutation_eta >= 0.0, "nsga2.mutation_eta", mutation_eta, "finite and >= 0");
+  if (mutation_probability)
+    check(*mutation_probability >= 0.0 && *mutation_probability <= 1.0, "nsga2.mutation_probability",
+          *mutation_probability, "in [0, 1]");
+  check(std::isfinite(torsion_weight) && torsion_weight > 0.0, "polish_torsion_weight", torsion_weight,
+        "finite and > 0");
+  lm.validate();
+}
+
+TorsionMatchResult run_curvature_torsion_match(const CurvatureMatch& match, const TorsionMatchSettings& settings,
+                                               std::uint64_t seed, std::size_t threads, bool keep_log) {
+  require_torsion(match);
+  settings.validate();
+  const auto clock_start = std::chrono::steady_clock::now();
+  const optim::Problem problem = curvature_torsion_problem(match);
+  TorsionMatchResult result;
+
+  const std::size_t n_points = match.setup().points.size(), n_samples = match.setup().samples;
+  SplineProfileSampler::Workspace ws;
+  std::vector<Vec3> points(n_points);
+  std::vector<double> kappa(n_samples), tau(n_samples);
+  const std::vector<double> start = match.start_variables();
+  std::tie(result.start_curvature, result.start_torsion) =
+      curvature_torsion_errors(match, start, ws, points, kappa, tau);
+
+  optim::Nsga2Options options;
+  options.population = settings.population;
+  options.crossover_probability = settings.crossover_probability;
+  options.crossover_eta = settings.crossover_eta;
+  options.mutation_eta = settings.mutation_eta;
+  options.mutation_probability = settings.mutation_probability;
+  options.run.seed = seed;
+  options.run.threads = threads;
+  options.run.stop.generations = settings.generations;
+  options.run.on_generation = [&](const optim::GenerationLog& g) {
+    double bk = std::numeric_limits<double>::infinity(), bt = bk;
+    for (std::size_t i = 0; i < g.failed.size(); ++i) {
+      if (g.failed[i]) continue;
+      bk = std::min(bk, g.objective_values[2 * i]);
+      bt = std::min(bt, g.objective_values[2 * i + 1]);
+    }
+    result.best_curvature.push_back(bk);
+    result.best_torsion.push_back(bt);
+    if (keep_log) result.log.append(g);
+  };
+  const optim::Nsga2Result run = optim::solve_nsga2(problem, options);
+  result.report = run.report;
+  for (const optim::Solution& s : run.front)
+    result.front.push_back({s.variables, s.objectives[0], s.objectives[1], false});
+
+  const auto worst = [](const TorsionFrontMember& m) { return std::max(m.curvature, m.torsion); };
+  if (settings.polish && !result.front.empty()) {
+    const auto best = std::min_element(result.front.begin(), result.front.end(),
+                                       [&](const auto& a, const auto& b) { return worst(a) < worst(b); });
+    // Stacked residuals [κ − κ*; w (τ − τ*)]; an undefined τ contributes 0 (the
+    // objective skips it the same way).
+    LeastSquaresProblem ls;
+    ls.variables = match.variables();
+    ls.residual_count = 2 * n_samples;
+    const double w = settings.torsion_weight;
+    ls.residuals = [&, w](std::span<const double> x, std::span<double> r) {
+      match.points_from(x, points);
+      if (!match.sampler().sample(points, ws, kappa, tau)) return false;
+      const auto& kt = match.target_samples();
+      const auto& tt = match.torsion_target_samples();
+      for (std::size_t i = 0; i < n_samples; ++i) {
+        r[i] = kappa[i] - kt[i];
+        r[n_samples + i] = std::isfinite(tau[i]) ? w * (tau[i] - tt[i]) : 0.0;
+      }
+      return true;
+    };
+    result.lm = refine_levenberg_marquardt(ls, best->variables, settings.lm);
+    const auto [ek, et] = curvature_torsion_errors(match, result.lm->variables, ws, points, kappa, tau);
+    if (std::isfinite(ek) && std::isfinite(et)) {
+      TorsionFrontMember polished{result.lm->variables, ek, et, true};
+      // Keep the set non-dominated: drop members the polished curve dominates.
+      std::erase_if(result.front, [&](const TorsionFrontMember& m) {
+        return polished.curvature <= m.curvature && polished.torsion <= m.torsion &&
+               (polished.curvature < m.curvature || polished.torsion < m.torsion);
+      });
+      const bool dominated = std::any_of(result.front.begin(), result.front.end(), [&](const auto& m) {
+        return m.curvature <= polished.curvature && m.torsion <= polished.torsion;
+      });
+      if (!dominated) result.front.push_back(std::move(polished));
+    }
+  }
+  std::sort(result.front.begin(), result.front.end(),
+            [](const auto& a, const auto& b) { return a.curvature < b.curvature; });
+  result.compromise = 0;
+  for (std::size_t i = 1; i < result.front.size(); ++i)
+    if (worst(result.front[i]) < worst(result.front[result.compromise])) result.compromise = i;
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
+  return result;
+}
+
+}  // namespace hula::studies

@@ -1,0 +1,114 @@
+// SPDX-License-Identifier: MIT
+// Curvature and torsion as two objectives (issue 6 item 4; the thesis's 8.2.1
+// discussion: "there is no facility in the GA to include a second,
+// independent evaluation function"). The design variables are the free data
+// coordinates of a curvature-matching problem (curvature_match.hpp) whose
+// setup carries both targets; NSGA-II (optim/nsga2.hpp) minimises
+//
+//   f1 = mean_i |κ(u_i) − κ*(u_i)|   (eq. 31)
+//   f2 = mean_i |τ(u_i) − τ*(u_i)|   over the samples where τ is defined
+//
+// and returns the Pareto set of curves, each with both errors. Optionally
+// (`polish`) the front member with the smallest max(f1, f2) is refined by
+// Levenberg–Marquardt on the stacked residuals [κ − κ*; τ − τ*] and added to
+// the set: where one curve meets both targets, the GA brings it into the
+// basin and the local solver reaches it.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "hula/optim/nsga2.hpp"
+#include "hula/optim/run_log.hpp"
+#include "hula/studies/curvature_match.hpp"
+#include "hula/studies/hybrid_refine.hpp"
+#include "hula/studies/study_file.hpp"
+
+namespace hula::studies {
+
+/// Both mean errors of one candidate, without allocation once the buffers are warm.
+/// @param match a problem whose setup has a torsion target
+/// @param x match.dimension() design variables
+/// @param ws, points, kappa, tau scratch (points: point count; kappa, tau: sample count)
+/// @returns {mean |κ − κ*|, mean |τ − τ*| over the samples where τ is defined}; NaN, NaN if the
+///   spline is degenerate or τ is defined at fewer than half of the samples
+[[nodiscard]] std::pair<double, double> curvature_torsion_errors(const CurvatureMatch& match,
+                                                                 std::span<const double> x,
+                                                                 SplineProfileSampler::Workspace& ws,
+                                                                 std::span<Vec3> points, std::span<double> kappa,
+                                                                 std::span<double> tau);
+
+/// The two-objective Flexo problem (f1, f2) above; one workspace per thread.
+/// @throws hula::Error(Errc::InvalidArgument) if the setup has no torsion target or is planar
+[[nodiscard]] optim::Problem curvature_torsion_problem(const CurvatureMatch& match);
+
+/// Settings of the curvature + torsion study.
+struct TorsionMatchSettings {
+  /// NSGA-II individuals, even, >= 4. Default 100.
+  std::size_t population = 100;
+  /// Generations after the initial one. Default 250.
+  std::size_t generations = 250;
+  /// SBX crossover probability and distribution index; polynomial mutation index and
+  /// per-variable probability (unset = 1 / dimension).
+  double crossover_probability = 1.0;
+  double crossover_eta = 20.0;
+  double mutation_eta = 20.0;
+  std::optional<double> mutation_probability{};
+  /// Refine the best compromise by Levenberg–Marquardt on both residuals. Default true.
+  bool polish = true;
+  /// Weight of the torsion residuals in the polish, > 0. Default 1.
+  double torsion_weight = 1.0;
+  /// Levenberg–Marquardt settings of the polish.
+  LmOptions lm{};
+  /// @throws hula::Error(Errc::InvalidOption) naming `nsga2.<field>` / `lm.<field>` out of range
+  void validate() const;
+};
+
+/// One curve of the Pareto set.
+struct TorsionFrontMember {
+  /// Design variables (the free coordinates).
+  std::vector<double> variables{};
+  /// Mean curvature and torsion errors.
+  double curvature = 0.0;
+  double torsion = 0.0;
+  /// True for the member added by the polish.
+  bool polished = false;
+};
+
+/// Outcome of run_curvature_torsion_match.
+struct TorsionMatchResult {
+  /// Non-dominated curves, sorted by increasing curvature error.
+  std::vector<TorsionFrontMember> front{};
+  /// Index in `front` of the best compromise (smallest max(curvature, torsion)).
+  std::size_t compromise = 0;
+  /// Errors of the start curve.
+  double start_curvature = 0.0;
+  double start_torsion = 0.0;
+  /// NSGA-II report.
+  optim::RunReport report{};
+  /// Best curvature and torsion errors in the population after each generation.
+  std::vector<double> best_curvature{}, best_torsion{};
+  /// The polish report, when run.
+  std::optional<LmResult> lm{};
+  /// Every individual of every generation, when asked for.
+  optim::RunLog log{};
+  /// Total wall time in seconds.
+  double seconds = 0.0;
+};
+
+/// Runs NSGA-II (and the optional polish) on a curvature + torsion matching problem.
+/// @param match a 3-D problem with both targets
+/// @param settings the algorithm settings; @param seed, threads as every Flexo run
+/// @param keep_log collect every individual into the result's log
+/// @throws hula::Error(Errc::InvalidArgument) if the problem has no torsion target or is planar
+/// @throws hula::Error(Errc::InvalidOption) for invalid settings (before any evaluation)
+/// @throws hula::Error(Errc::NumericalFailure) if no candidate could be evaluated
+[[nodiscard]] TorsionMatchResult run_curvature_torsion_match(const CurvatureMatch& match,
+                                                             const TorsionMatchSettings& settings,
+                                                             std::uint64_t seed, std::size_t threads = 1,
+                                                             bool keep_log = false);
+
+}  // namespace hula::studies

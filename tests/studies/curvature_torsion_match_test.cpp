@@ -1,0 +1,122 @@
+// SPDX-License-Identifier: MIT
+#include "hula/studies/curvature_torsion_match.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "hula/testing/counting_allocator.hpp"
+#include "hula/testing/expect_error.hpp"
+
+namespace {
+
+using hula::Errc;
+using hula::Vec3;
+using hula::studies::CurvatureMatch;
+using hula::studies::CurvatureMatchSetup;
+using hula::studies::Profile;
+using hula::studies::SplineProfileSampler;
+
+std::vector<double> uniform(std::size_t n) {
+  std::vector<double> u(n);
+  for (std::size_t i = 0; i < n; ++i) u[i] = static_cast<double>(i) / static_cast<double>(n - 1);
+  return u;
+}
+
+// Points on a helix of radius 10 and pitch 2π·4: κ and τ both non-zero everywhere on the spline.
+std::vector<Vec3> helix_points(std::size_t n) {
+  std::vector<Vec3> p(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const double a = 1.6 * static_cast<double>(k) / static_cast<double>(n - 1) * M_PI;
+    p[k] = {10 * std::sin(a), 10 * (1 - std::cos(a)), 4 * a};
+  }
+  return p;
+}
+
+// A matching problem whose targets are the κ(u) and τ(u) of the spline through `truth`, started from a
+// perturbed copy with every coordinate of the points after the first free within ±3.
+CurvatureMatch known_curve_problem(const std::vector<Vec3>& truth, std::size_t samples) {
+  const auto u = uniform(samples);
+  const SplineProfileSampler sampler(truth.size(), 3, u, Vec3{1, 0, 0}, std::nullopt);
+  SplineProfileSampler::Workspace ws;
+  std::vector<double> kappa(samples), tau(samples);
+  EXPECT_TRUE(sampler.sample(truth, ws, kappa, tau));
+  CurvatureMatchSetup s;
+  s.dimension = 3;
+  s.points = truth;
+  const Vec3 shift[] = {{0, 0, 0}, {0.8, -0.6, 0.5}, {-0.7, 0.9, -0.4}, {0.6, 0.5, -0.8}, {-0.5, -0.7, 0.6}};
+  for (std::size_t k = 0; k < truth.size(); ++k) s.points[k] = truth[k] + shift[k % 5];
+  s.lower.assign(truth.size(), Vec3{3, 3, 3});
+  s.upper.assign(truth.size(), Vec3{3, 3, 3});
+  s.lower[0] = s.upper[0] = Vec3{0, 0, 0};
+  s.start_tangent = Vec3{1, 0, 0};
+  s.samples = samples;
+  s.target = Profile::from_samples(u, kappa);
+  s.torsion_target = Profile::from_samples(u, tau);
+  return CurvatureMatch(std::move(s));
+}
+
+TEST(CurvatureTorsionMatch, ErrorsVanishOnTheKnownCurveAndAllocateNothing) {
+  const auto truth = helix_points(5);
+  const CurvatureMatch match = known_curve_problem(truth, 200);
+  std::vector<double> x;
+  for (std::size_t k = 1; k < truth.size(); ++k)
+    for (int c = 0; c < 3; ++c) x.push_back(truth[k][c]);
+  SplineProfileSampler::Workspace ws;
+  std::vector<Vec3> points(truth.size());
+  std::vector<double> kappa(200), tau(200);
+  auto [ek, et] = hula::studies::curvature_torsion_errors(match, x, ws, points, kappa, tau);
+  EXPECT_LT(ek, 1e-14);
+  EXPECT_LT(et, 1e-13);
+  const std::vector<double> start = match.start_variables();
+  const long before = hula::testing::allocation_count();
+  std::tie(ek, et) = hula::studies::curvature_torsion_errors(match, start, ws, points, kappa, tau);
+  EXPECT_EQ(hula::testing::allocation_count(), before);
+  EXPECT_GT(ek, 1e-3);
+  EXPECT_GT(et, 1e-3);
+}
+
+// Issue 6: on a space curve whose κ and τ are both prescribed from a known curve, the Pareto set contains a
+// curve that matches both within 1e-3.
+TEST(CurvatureTorsionMatch, ParetoSetContainsACurveMatchingBoth) {
+  const auto truth = helix_points(5);
+  const CurvatureMatch match = known_curve_problem(truth, 200);
+  hula::studies::TorsionMatchSettings settings;
+  settings.population = 60;
+  settings.generations = 120;
+  const auto result = hula::studies::run_curvature_torsion_match(match, settings, 7);
+  ASSERT_FALSE(result.front.empty());
+  for (std::size_t i = 1; i < result.front.size(); ++i) {
+    EXPECT_LE(result.front[i - 1].curvature, result.front[i].curvature);
+    // Non-dominated: sorted by curvature error, torsion error must not increase along it.
+    EXPECT_GE(result.front[i - 1].torsion, result.front[i].torsion);
+  }
+  const auto& best = result.front[result.compromise];
+  EXPECT_LT(best.curvature, 1e-3);
+  EXPECT_LT(best.torsion, 1e-3);
+  EXPECT_LT(std::max(best.curvature, best.torsion),
+            0.01 * std::max(result.start_curvature, result.start_torsion));
+  ASSERT_EQ(result.best_curvature.size(), settings.generations + 1);
+}
+
+TEST(CurvatureTorsionMatch, PlanarOrTorsionlessProblemsAreRefused) {
+  CurvatureMatchSetup s;
+  s.dimension = 3;
+  s.points = {{0, 0, 0}, {10, 5, 1}, {20, 0, 3}};
+  s.lower.assign(3, Vec3{1, 1, 1});
+  s.upper.assign(3, Vec3{1, 1, 1});
+  s.lower[0] = s.upper[0] = Vec3{0, 0, 0};
+  const std::vector<double> u = {0, 1}, v = {0.1, 0.1};
+  s.target = Profile::from_samples(u, v);
+  const CurvatureMatch no_tau(s);
+  HULA_EXPECT_ERROR(hula::studies::curvature_torsion_problem(no_tau), Errc::InvalidArgument, "torsion target");
+  hula::studies::TorsionMatchSettings bad;
+  bad.population = 5;
+  s.torsion_target = Profile::from_samples(u, v);
+  const CurvatureMatch with_tau(s);
+  HULA_EXPECT_ERROR(hula::studies::run_curvature_torsion_match(with_tau, bad, 1), Errc::InvalidOption,
+                    "nsga2.population");
+}
+
+}  // namespace
