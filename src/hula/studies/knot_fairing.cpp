@@ -2,9 +2,9 @@
 #include "hula/studies/knot_fairing.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <string>
 
@@ -19,10 +19,11 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
+// Shortest round-trip form (0.7, not 0.69999999999999996).
 std::string num(double v) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
 }
 
 nurbs::InterpolationOptions interpolation_options(const KnotFairingSetup& setup, std::span<const double> parameters) {
