@@ -43,7 +43,7 @@ TEST(StudiesFairKnotsStudy, ResolvedDocumentRoundTrips) {
   const FairKnotsStudy s = read(
       R"(, "energy": "variation", "method": "ga", "start": "bessel", "ga": {"algorithm": "binary", "population": 20,
          "generations": 7, "boost_end": 8, "max_recentres": 2}, "deterministic": {"x_tolerance": 1e-9},
-         "map": {"knots": [1, 2], "grid": 11}, "parameters": [0, 0.3, 0.7, 1])");
+         "map": {"knots": [1, 2], "grid": 11, "sections": [0.2]}, "parameters": [0, 0.3, 0.7, 1])");
   const Json resolved = fair_knots_study_to_json(s);
   const FairKnotsStudy t = fair_knots_study_from_json(parse_study_json(resolved.dump(), "fair-knots"));
   EXPECT_EQ(fair_knots_study_to_json(t), resolved);
@@ -58,6 +58,7 @@ TEST(StudiesFairKnotsStudy, ResolvedDocumentRoundTrips) {
   EXPECT_EQ(t.deterministic.x_tolerance, 1e-9);
   ASSERT_TRUE(t.map.has_value());
   EXPECT_EQ(t.map->grid, 11u);
+  EXPECT_EQ(t.sections, std::vector<double>{0.2});
   ASSERT_TRUE(t.parameters.has_value());
   EXPECT_EQ((*t.parameters)[2], 0.7);
 }
@@ -75,6 +76,8 @@ TEST(StudiesFairKnotsStudy, BadFilesNameTheMember) {
   HULA_EXPECT_ERROR(read(R"(, "map": {"knots": [0, 2]})"), Errc::InvalidOption, "map.knots[0] = 0");
   HULA_EXPECT_ERROR(read(R"(, "map": {"knots": [1, 2, 3]})"), Errc::ParseError, "map.knots");
   HULA_EXPECT_ERROR(read(R"(, "map": {"grid": 1})"), Errc::ParseError, "map.grid");
+  HULA_EXPECT_ERROR(read(R"(, "map": {"sections": [0.2, 1.2]})"), Errc::InvalidOption,
+                    "map.sections[1]: section k1 = 1.2 is outside");
   HULA_EXPECT_ERROR(read(R"(, "parameters": [0, 0.7, 0.5, 1])"), Errc::InvalidArgument, "parameters[2] = 0.5");
   HULA_EXPECT_ERROR(read(R"(, "parameters": [0, 0.5, 1])"), Errc::InvalidArgument, "3 values for 4 points");
   HULA_EXPECT_ERROR(read(R"(, "start": "free")"), Errc::ParseError, "start");

@@ -131,6 +131,26 @@ TEST(StudiesKnotFairing, NoDropOfEnergyWhereKnotsAddUpToOne) {
   }
 }
 
+// checks: a map section at a grid node's k1 with as many nodes as the grid reproduces that column of the map,
+// and a k1 outside the map's range is refused
+TEST(StudiesKnotFairing, MapSectionIsAMapColumn) {
+  const KnotFairingSetup s = planar(kExample73_2);
+  const std::vector<double> base = chord_length_parameters(s);
+  const EnergyMapOptions o{.first = 1, .second = 2, .grid = 9};
+  const EnergyMap m = energy_map(s, base, o);
+  const MapSection sec = map_section(s, base, o, m.k1[3], 9);
+  for (std::size_t j = 0; j < 9; ++j) {
+    EXPECT_EQ(sec.k2[j], m.k2[j]);
+    const double e = m.energy[j * 9 + 3];
+    if (std::isnan(e)) {
+      EXPECT_TRUE(std::isnan(sec.energy[j])) << j;
+    } else {
+      EXPECT_EQ(sec.energy[j], e) << j;
+    }
+  }
+  HULA_EXPECT_ERROR((void)map_section(s, base, o, 1.0, 9), Errc::InvalidArgument, "section k1 = 1 is outside");
+}
+
 // checks: the 7.4.1 bounds of 7.4.2 Example 3's chord parameters follow the thesis's listing and do not overlap
 TEST(StudiesKnotFairing, BoundsFollowSection741) {
   const std::vector<double> p{0.0, 0.1, 0.4, 0.5, 0.8, 1.0};

@@ -120,6 +120,24 @@ int run_fair_knots(const StudyArgs& args) {
   out["chord_length"] = evaluation_to_json(before);
   if (study.parameters) out["given"] = evaluation_to_json(studies::evaluate_parameters(setup, *study.parameters));
 
+  // The map and its sections first: they are evaluations of the setup, and
+  // their errors should come before the optimisers run.
+  std::optional<studies::EnergyMap> map;
+  std::vector<studies::MapSection> sections;
+  if (study.map) {
+    map = studies::energy_map(setup, chord, *study.map);
+    out["map"] = Json{{"knots", Json::array({map->first, map->second})},
+                      {"grid", study.map->grid},
+                      {"min", Json{{"energy", map->min_energy}, {"k1", map->min_k1}, {"k2", map->min_k2}}}};
+    for (const double k1 : study.sections) {
+      sections.push_back(studies::map_section(setup, chord, *study.map, k1, 201));
+      const studies::MapSection& sec = sections.back();
+      Json energies = Json::array();
+      for (const double e : sec.energy) energies.push_back(std::isfinite(e) ? Json(e) : Json(nullptr));
+      out["map"]["sections"].push_back(Json{{"k1", sec.k1}, {"k2", sec.k2}, {"energy", energies}});
+    }
+  }
+
   optim::RunLog log;
   std::optional<studies::FairingResult> ga;
   std::optional<studies::FairingResult> det;
@@ -140,14 +158,6 @@ int run_fair_knots(const StudyArgs& args) {
       dp = std::max(dp, std::abs(ga->best.parameters[i] - det->best.parameters[i]));
     out["agreement"] = Json{{"relative_energy", ga->best.energy / det->best.energy - 1.0}, {"max_parameter", dp}};
   }
-  std::optional<studies::EnergyMap> map;
-  if (study.map) {
-    map = studies::energy_map(setup, chord, *study.map);
-    out["map"] = Json{{"knots", Json::array({map->first, map->second})},
-                      {"grid", study.map->grid},
-                      {"min", Json{{"energy", map->min_energy}, {"k1", map->min_k1}, {"k2", map->min_k2}}}};
-  }
-
   if (args.log && run_ga) write_run_log(log, *args.log);
   if (args.svg) {
     const std::filesystem::path dir = *args.svg;
@@ -192,6 +202,18 @@ int run_fair_knots(const StudyArgs& args) {
         fig.add_points(bx, by, io::SvgStyle{.stroke = "#d62728", .fill = "#d62728"}, 5.0, "optimum");
       }
       write_svg(dir, "energy_map", fig);
+      if (!sections.empty()) {
+        io::SvgFigure sec_fig(800, 500);
+        sec_fig.set_title("energy map cross sections (Figures 56-57)");
+        sec_fig.set_axes("k" + std::to_string(map->second), energy_label(setup.energy));
+        sec_fig.set_log_y(true);
+        const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e"};
+        for (std::size_t i = 0; i < sections.size(); ++i) {
+          sec_fig.add_polyline(sections[i].k2, sections[i].energy, io::SvgStyle{.stroke = colours[i % 5], .width = 1.5},
+                               "k" + std::to_string(map->first) + " = " + fmt(sections[i].k1));
+        }
+        write_svg(dir, "energy_sections", sec_fig);
+      }
       io::write_file_atomically(dir / "energy_map.csv", studies::energy_map_csv(*map));
     }
   }

@@ -159,7 +159,7 @@ FairKnotsStudy fair_knots_study_from_json(const StudyDocument& document) {
 
   if (const Json* m = io::json::optional_member(doc, "map")) {
     const JsonPath p = root_path("map");
-    io::json::reject_unknown_members(*m, p, {"knots", "grid"});
+    io::json::reject_unknown_members(*m, p, {"knots", "grid", "sections"});
     EnergyMapOptions o;
     if (const Json* k = io::json::optional_member(*m, "knots")) {
       const Json& arr = io::json::get_array(*k, p.member("knots"));
@@ -170,6 +170,19 @@ FairKnotsStudy fair_knots_study_from_json(const StudyDocument& document) {
     o.grid = count_or(*m, p, "grid", o.grid, 2, 2000);
     o.validate(study.setup.points.size());
     study.map = o;
+    if (const Json* v = io::json::optional_member(*m, "sections")) {
+      study.sections = io::json::get_number_array(*v, p.member("sections"));
+      // Each section must lie inside the map's range of k1 (the chord-length neighbours).
+      const std::vector<double> chord = chord_length_parameters(study.setup);
+      for (std::size_t i = 0; i < study.sections.size(); ++i) {
+        try {
+          (void)map_section(study.setup, chord, o, study.sections[i], 2);
+        } catch (const Error& e) {
+          const JsonPath at = p.member("sections").element(i);
+          throw Error(Errc::InvalidOption, at.text + ": " + e.message(), at.where);
+        }
+      }
+    }
   }
 
   if (const Json* v = io::json::optional_member(doc, "parameters")) {
@@ -219,8 +232,10 @@ Json fair_knots_study_to_json(const FairKnotsStudy& study) {
                               {"f_tolerance", d.f_tolerance},
                               {"max_evaluations", d.max_evaluations},
                               {"restarts", d.restarts}};
-  if (study.map)
+  if (study.map) {
     out["map"] = Json{{"knots", Json::array({study.map->first, study.map->second})}, {"grid", study.map->grid}};
+    if (!study.sections.empty()) out["map"]["sections"] = study.sections;
+  }
   if (study.parameters) out["parameters"] = *study.parameters;
   return out;
 }

@@ -41,6 +41,9 @@ struct FairKnotsStudy {
   optim::NelderMeadOptions deterministic{};
   /// The energy map, when asked for.
   std::optional<EnergyMapOptions> map{};
+  /// Values of the map's first parameter at which cross sections are taken
+  /// (Figures 56–57); only with a map. Default none.
+  std::vector<double> sections{};
   /// A parameter vector to evaluate (the interactive evaluation of 7.2), when given.
   std::optional<std::vector<double>> parameters{};
 };

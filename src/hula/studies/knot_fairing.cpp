@@ -130,42 +130,64 @@ void EnergyMapOptions::validate(std::size_t points) const {
   }
 }
 
+namespace {
+
+// The open ranges of the two mapped parameters (the neighbours held fixed).
+struct MapRanges {
+  double lo1, hi1, lo2, hi2;
+};
+
+MapRanges map_ranges(std::span<const double> base, const EnergyMapOptions& options) {
+  const std::size_t i1 = options.first;
+  const std::size_t i2 = options.second;
+  const bool adjacent = i2 == i1 + 1;
+  return {base[i1 - 1], adjacent ? base[i2 + 1] : base[i1 + 1], adjacent ? base[i1 - 1] : base[i2 - 1], base[i2 + 1]};
+}
+
+double node(double lo, double hi, std::size_t i, std::size_t count) {
+  return lo + (hi - lo) * static_cast<double>(i + 1) / static_cast<double>(count + 1);
+}
+
+bool strictly_increasing(std::span<const double> p) {
+  for (std::size_t i = 1; i < p.size(); ++i)
+    if (!(p[i] > p[i - 1])) return false;
+  return true;
+}
+
+double energy_or_nan(const KnotFairingSetup& setup, std::span<const double> p) {
+  if (!strictly_increasing(p)) return std::numeric_limits<double>::quiet_NaN();
+  try {
+    return fairing_energy(setup, p);
+  } catch (const Error&) {
+    return std::numeric_limits<double>::quiet_NaN();  // a singular system leaves the cell blank
+  }
+}
+
+}  // namespace
+
 EnergyMap energy_map(const KnotFairingSetup& setup, std::span<const double> base, const EnergyMapOptions& options) {
   setup.validate();
   check_parameters(setup, base);
   options.validate(base.size());
-  const std::size_t i1 = options.first;
-  const std::size_t i2 = options.second;
-  const bool adjacent = i2 == i1 + 1;
-  const double lo1 = base[i1 - 1];
-  const double hi1 = adjacent ? base[i2 + 1] : base[i1 + 1];
-  const double lo2 = adjacent ? base[i1 - 1] : base[i2 - 1];
-  const double hi2 = base[i2 + 1];
+  const MapRanges r = map_ranges(base, options);
   const std::size_t g = options.grid;
   EnergyMap m;
-  m.first = i1;
-  m.second = i2;
+  m.first = options.first;
+  m.second = options.second;
   m.k1.resize(g);
   m.k2.resize(g);
   for (std::size_t i = 0; i < g; ++i) {
-    const double f = static_cast<double>(i + 1) / static_cast<double>(g + 1);
-    m.k1[i] = lo1 + (hi1 - lo1) * f;
-    m.k2[i] = lo2 + (hi2 - lo2) * f;
+    m.k1[i] = node(r.lo1, r.hi1, i, g);
+    m.k2[i] = node(r.lo2, r.hi2, i, g);
   }
   m.energy.assign(g * g, std::numeric_limits<double>::quiet_NaN());
   m.min_energy = std::numeric_limits<double>::quiet_NaN();
   std::vector<double> p(base.begin(), base.end());
   for (std::size_t j = 0; j < g; ++j) {
     for (std::size_t i = 0; i < g; ++i) {
-      p[i1] = m.k1[i];
-      p[i2] = m.k2[j];
-      if (!(p[i1] < p[i2])) continue;
-      double e = std::numeric_limits<double>::quiet_NaN();
-      try {
-        e = fairing_energy(setup, p);
-      } catch (const Error&) {
-        // A singular system leaves the cell blank.
-      }
+      p[m.first] = m.k1[i];
+      p[m.second] = m.k2[j];
+      const double e = energy_or_nan(setup, p);
       m.energy[j * g + i] = e;
       if (std::isfinite(e) && !(e >= m.min_energy)) {
         m.min_energy = e;
@@ -175,6 +197,35 @@ EnergyMap energy_map(const KnotFairingSetup& setup, std::span<const double> base
     }
   }
   return m;
+}
+
+MapSection map_section(const KnotFairingSetup& setup, std::span<const double> base, const EnergyMapOptions& options,
+                       double k1, std::size_t nodes) {
+  setup.validate();
+  check_parameters(setup, base);
+  options.validate(base.size());
+  const MapRanges r = map_ranges(base, options);
+  if (!(k1 > r.lo1 && k1 < r.hi1)) {
+    throw Error(Errc::InvalidArgument,
+                "section k1 = " + num(k1) + " is outside the map's range (" + num(r.lo1) + ", " + num(r.hi1) + ")",
+                ErrorWhere{.field = "sections"});
+  }
+  if (nodes < 2) {
+    throw Error(Errc::InvalidArgument, "a section needs at least 2 nodes, got " + std::to_string(nodes),
+                ErrorWhere{.field = "sections"});
+  }
+  MapSection s;
+  s.k1 = k1;
+  s.k2.resize(nodes);
+  s.energy.resize(nodes);
+  std::vector<double> p(base.begin(), base.end());
+  p[options.first] = k1;
+  for (std::size_t j = 0; j < nodes; ++j) {
+    s.k2[j] = node(r.lo2, r.hi2, j, nodes);
+    p[options.second] = s.k2[j];
+    s.energy[j] = energy_or_nan(setup, p);
+  }
+  return s;
 }
 
 std::vector<double> energy_section(const KnotFairingSetup& setup, std::span<const double> base, std::size_t index,

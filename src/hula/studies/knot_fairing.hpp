@@ -139,6 +139,23 @@ struct EnergyMap {
 [[nodiscard]] EnergyMap energy_map(const KnotFairingSetup& setup, std::span<const double> base,
                                    const EnergyMapOptions& options = {});
 
+/// A cross section of an energy map at a fixed k1 (Figures 56–57).
+struct MapSection {
+  double k1 = 0.0;             ///< the fixed value of parameter `first`
+  std::vector<double> k2{};    ///< nodes of parameter `second`, as the map's y axis
+  std::vector<double> energy;  ///< energy at each node; NaN where k2 <= k1 or it failed
+};
+
+/// The cross section of energy_map(setup, base, options) at parameter
+/// options.first = k1: `nodes` nodes over the same open range of parameter
+/// options.second as the map's (options.grid is ignored).
+/// @param k1 inside the map's range of parameter `first`
+/// @param nodes >= 2
+/// @throws hula::Error(Errc::InvalidArgument) naming k1 if it is outside the range, or nodes < 2
+/// @throws as energy_map
+[[nodiscard]] MapSection map_section(const KnotFairingSetup& setup, std::span<const double> base,
+                                     const EnergyMapOptions& options, double k1, std::size_t nodes);
+
 /// A cross section: the energy as parameter `index` runs over `values`, the
 /// others held at `base` (Figures 56–57, 60). Values that break the strict
 /// ordering give NaN.
