@@ -367,6 +367,9 @@ FairingResult fair_knots_ga(const KnotFairingSetup& setup, std::span<const doubl
       std::copy(r.best.variables.begin(), r.best.variables.end(), best.begin() + 1);
     }
     // Re-centre when the run's best sits on a bound of its box (7.4.1).
+    // optim::rerun_recentred does not fit: it shrinks boxes inside the
+    // original bounds, while here the new 7.4.1 boxes around the best must be
+    // able to leave the chord-length boxes (7.4.2 Example 3's optimum does).
     bool on_bound = false;
     for (std::size_t i = 0; i < m; ++i) {
       const double x = r.best.variables[i];
