@@ -245,6 +245,23 @@ TEST(StudiesKnotFairing, OptimisersBeatChordAndAgree) {
   }
 }
 
+// checks: the GA fairing is reproducible: the same seed gives bit-identical parameters on 1 and 2 threads,
+// and the run log holds every generation of every round
+TEST(StudiesKnotFairing, GaIsThreadInvariant) {
+  const KnotFairingSetup s = planar(kExample73_2);
+  const std::vector<double> chord = chord_length_parameters(s);
+  GaFairingOptions o;
+  o.real.run.seed = 4;
+  optim::RunLog log;
+  const FairingResult one = fair_knots_ga(s, chord, o, &log);
+  o.real.run.threads = 2;
+  const FairingResult two = fair_knots_ga(s, chord, o);
+  EXPECT_EQ(one.best.parameters, two.best.parameters);
+  EXPECT_EQ(one.best.energy, two.best.energy);
+  EXPECT_EQ(one.evaluations, two.evaluations);
+  EXPECT_EQ(log.generations().size(), one.rounds * 51u);
+}
+
 // checks: the measured optima of 7.4.2 Examples 2 and 3 (bending, natural ends), pinned for the docs table
 TEST(StudiesKnotFairing, MeasuredOptimaOfThesisExamples) {
   const KnotFairingSetup s2 = planar(kExample74_2);
