@@ -171,6 +171,10 @@ TEST(NormalCompound, RefusesNonPlanarCompound) {
   const nurbs::NurbsCurve q = nurbs::make_bezier(cp);
   HULA_EXPECT_ERROR(curve_from_normal_compound(q, {.plane = Plane::XY}), Errc::InvalidArgument, "control_points[2].z");
   HULA_EXPECT_ERROR(curve_from_normal_compound(q, {.scale = 0.0}), Errc::InvalidOption, "scale");
+  // A polyline's tangent jumps at its corner, so its compound would tear there: refused, naming the knot.
+  const nurbs::NurbsCurve corner(1, {0, 0, 0.5, 1, 1}, {{0, 0, 0}, {1, 1, 0}, {2, 0, 0}});
+  HULA_EXPECT_ERROR(normal_compound(corner, {.scale = 0.1}), Errc::InvalidArgument,
+                    "curve's tangent turns by 1.5707963267948966 rad at the knot t = 0.5");
 }
 
 // checks the Combescure compound of a helix (r, h) is the helix shifted by C w / r along its axis

@@ -20,6 +20,35 @@ namespace {
 
 constexpr int kMaxSamples = 1000000;
 
+// Tangent directions on the two sides of a knot that differ by more than this angle (radians) are a
+// corner. The pieces joined by fit_on_spans meet with the law's exact derivative on both sides, so
+// curves produced here stay far below it; a real corner is orders of magnitude above.
+constexpr double kCornerAngle = 1e-8;
+
+// Refuses a curve whose tangent turns at a knot: the offset by its normal would tear there (and the
+// kernel's one-sided evaluation at the knot would hide the tear inside one piece of the fit).
+void require_g1(const nurbs::NurbsCurve& curve, const char* field) {
+  const auto U = curve.knots().values();
+  const nurbs::Interval d = curve.domain();
+  for (std::size_t i = 0; i < U.size();) {
+    std::size_t j = i;
+    while (j < U.size() && U[j] == U[i]) ++j;
+    const int mult = static_cast<int>(j - i);
+    if (U[i] > d.start && U[i] < d.end && mult >= curve.degree()) {
+      const Vec3 l = curve.derivatives(U[i], 1, {.side = nurbs::Side::Left})[1];
+      const Vec3 r = curve.derivatives(U[i], 1, {.side = nurbs::Side::Right})[1];
+      const double angle = std::atan2(norm(cross(l, r)), dot(l, r));
+      if (!(angle <= kCornerAngle))
+        throw Error(Errc::InvalidArgument,
+                    std::string(field) + "'s tangent turns by " + format_number(angle) +
+                        " rad at the knot t = " + format_number(U[i]) +
+                        ": its normal fin compound would tear there (give a tangent-continuous curve)",
+                    {.field = field, .index = i});
+    }
+    i = j;
+  }
+}
+
 // `count` parameters equally spaced over the domain, plus the interior knots, sorted.
 std::vector<double> sample_parameters(const nurbs::NurbsCurve& curve, int count) {
   const nurbs::Interval d = curve.domain();
@@ -41,9 +70,10 @@ law::Law offset_law(const nurbs::NurbsCurve& curve, const Vec3& n, double signed
   return c + signed_scale * normal;
 }
 
-LawCurveFit fit(const law::Law& law, const nurbs::NurbsCurve& along, const law::ToNurbsOptions& options) {
+LawCurveFit fit(const law::Law& law, const nurbs::NurbsCurve& along, const law::ToNurbsOptions& options,
+                std::string_view field) {
   const std::vector<double> breaks = detail::breakpoints(along);
-  law::ToNurbsResult r = detail::fit_on_spans(law, "t", breaks, options);
+  law::ToNurbsResult r = detail::fit_on_spans(law, "t", breaks, options, field);
   return {law, std::move(r.curve), r.max_deviation};
 }
 
@@ -79,6 +109,7 @@ void CombescureOptions::validate() const {
 LawCurveFit normal_compound(const nurbs::NurbsCurve& curve, const NormalCompoundOptions& options) {
   options.validate();
   const nurbs::NurbsCurve projection = diffgeom::project(curve, options.plane);
+  require_g1(projection, "curve");
   // Where 1 + s κ_s ≤ 0 the fins cross and Q runs backwards: Q + s n_Q is then not P, so a compound
   // that folds back is refused rather than returned as if it could be inverted.
   const std::vector<double> ts = sample_parameters(projection, options.samples);
@@ -103,7 +134,7 @@ LawCurveFit normal_compound(const nurbs::NurbsCurve& curve, const NormalCompound
                   {.field = "curve"});
   }
   // Q = P − s (n × T) (fin_compound.hpp).
-  return fit(offset_law(projection, plane_normal(options.plane), -options.scale), projection, options.fit);
+  return fit(offset_law(projection, plane_normal(options.plane), -options.scale), projection, options.fit, "curve");
 }
 
 StretchReport compound_stretch(const nurbs::NurbsCurve& compound, const NormalCompoundOptions& options) {
@@ -131,6 +162,7 @@ StretchReport compound_stretch(const nurbs::NurbsCurve& compound, const NormalCo
 LawCurveFit curve_from_normal_compound(const nurbs::NurbsCurve& compound, const NormalCompoundOptions& options) {
   options.validate();
   require_planar(compound, options.plane, "compound");
+  require_g1(compound, "compound");
   const StretchReport s = compound_stretch(compound, options);
   if (s.min_stretch < options.min_stretch)
     throw Error(Errc::InvalidArgument,
@@ -141,7 +173,7 @@ LawCurveFit curve_from_normal_compound(const nurbs::NurbsCurve& compound, const 
                     ", so the curve P = Q + s*n_Q would reverse there and its own compound would differ from Q)",
                 {.field = "compound"});
   // P = Q + s n_Q (fin_compound.hpp).
-  return fit(offset_law(compound, plane_normal(options.plane), options.scale), compound, options.fit);
+  return fit(offset_law(compound, plane_normal(options.plane), options.scale), compound, options.fit, "compound");
 }
 
 CompoundEditResult edit_normal_compound(const nurbs::NurbsCurve& curve, const nurbs::NurbsCurve& edited_compound,
@@ -229,7 +261,7 @@ LawCurveFit combescure_checked(const law::Law& curve, std::string_view parameter
                     " (a planar piece): the Combescure transform is undefined there (thesis 8.3)",
                 {.field = field});
   const law::Law q = diffgeom::combescure_law(curve, parameter, c);
-  law::ToNurbsResult r = detail::fit_on_spans(q, parameter, breaks, options.fit);
+  law::ToNurbsResult r = detail::fit_on_spans(q, parameter, breaks, options.fit, field);
   return {q, std::move(r.curve), r.max_deviation};
 }
 

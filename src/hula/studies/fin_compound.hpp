@@ -74,7 +74,8 @@ struct LawCurveFit {
 /// @returns Q on the curve's domain
 /// @throws hula::Error(Errc::InvalidOption) for bad options
 /// @throws hula::Error(Errc::InvalidArgument) naming "curve" and the parameter where the projection has
-///   zero speed or the fins cross (1 + s κ_s < min_stretch: Q folds back and cannot be inverted)
+///   zero speed or the fins cross (1 + s κ_s < min_stretch: Q folds back and cannot be inverted), or
+///   the knot where its tangent turns (a corner: the compound would tear)
 [[nodiscard]] LawCurveFit normal_compound(const nurbs::NurbsCurve& curve, const NormalCompoundOptions& options = {});
 
 /// The signed curvature stretch 1 − s κ_Q of a prescribed compound at its lowest point.
@@ -91,7 +92,8 @@ struct StretchReport {
 /// @param compound a curve in a plane parallel to options.plane (e.g. an edited normal_compound)
 /// @returns P on the compound's domain, in the compound's plane
 /// @throws hula::Error(Errc::InvalidArgument) naming "compound" if it is not planar in the plane (the
-///   control point), has zero speed, or 1 − s κ_Q < min_stretch somewhere (the parameter and value)
+///   control point), has a corner at a knot, has zero speed, or 1 − s κ_Q < min_stretch somewhere
+///   (the parameter and value)
 /// @throws hula::Error(Errc::InvalidOption) for bad options
 [[nodiscard]] LawCurveFit curve_from_normal_compound(const nurbs::NurbsCurve& compound,
                                                      const NormalCompoundOptions& options = {});

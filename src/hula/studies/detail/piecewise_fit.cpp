@@ -2,6 +2,7 @@
 #include "hula/studies/detail/piecewise_fit.hpp"
 
 #include <algorithm>
+#include <string>
 
 #include "hula/core/error.hpp"
 
@@ -17,7 +18,7 @@ std::vector<double> breakpoints(const nurbs::NurbsCurve& curve) {
 }
 
 law::ToNurbsResult fit_on_spans(const law::Law& law, std::string_view parameter, std::span<const double> breaks,
-                                const law::ToNurbsOptions& options) {
+                                const law::ToNurbsOptions& options, std::string_view field) {
   HULA_ASSERT(breaks.size() >= 2, "fit_on_spans needs two breakpoints");
   std::vector<nurbs::NurbsCurve> pieces;
   double deviation = 0.0;
@@ -34,6 +35,17 @@ law::ToNurbsResult fit_on_spans(const law::Law& law, std::string_view parameter,
   }
   // Join: each piece is a clamped quintic {b_i^6, interior, b_{i+1}^6}; the joint keeps one copy of
   // the shared end point and knot multiplicity 5 (C0; the law fixes the two sides' derivatives).
+  // The pieces must meet: the law is continuous only if the input is smooth enough at the breakpoint.
+  for (std::size_t i = 0; i + 1 < pieces.size(); ++i) {
+    const Vec3 a = pieces[i].control_points().back(), b = pieces[i + 1].control_points().front();
+    const double gap = distance(a, b);
+    if (gap > 10.0 * options.tolerance)
+      throw Error(Errc::InvalidArgument,
+                  std::string(field) + ": the result jumps by " + format_number(gap) +
+                      " at the knot t = " + format_number(breaks[i + 1]) +
+                      " (the input's tangent or a higher derivative it depends on is discontinuous there)",
+                  {.field = std::string(field), .index = i + 1});
+  }
   const int p = pieces[0].degree();
   std::vector<double> knots(static_cast<std::size_t>(p + 1), breaks.front());
   std::vector<Vec3> points;

@@ -17,8 +17,13 @@ namespace hula::studies::detail {
 [[nodiscard]] std::vector<double> breakpoints(const nurbs::NurbsCurve& curve);
 
 /// law::to_nurbs on each [breaks[i], breaks[i+1]], joined into one quintic.
+/// @param field the input named in the error when the pieces do not meet
 /// @throws as law::to_nurbs
+/// @throws hula::Error(Errc::InvalidArgument) naming `field` and the breakpoint where the law jumps
+///   (the two pieces' ends differ by more than 10 × the fit tolerance: e.g. the input's tangent jumps
+///   there, so its compound is torn)
 [[nodiscard]] law::ToNurbsResult fit_on_spans(const law::Law& law, std::string_view parameter,
-                                              std::span<const double> breaks, const law::ToNurbsOptions& options);
+                                              std::span<const double> breaks, const law::ToNurbsOptions& options,
+                                              std::string_view field);
 
 }  // namespace hula::studies::detail
