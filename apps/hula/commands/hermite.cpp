@@ -46,14 +46,14 @@ void draw_handles(io::SvgFigure& f, const studies::HermiteHandles& h, double sca
     tip1.push_back(h.points[i] + scale_first * h.first[i]);
     tip2.push_back(h.points[i] + scale_second * h.normal_handle[i]);
   }
-  draw_segments(f, h.points, tip1, diffgeom::Plane::XY, {.stroke = "#2ca02c", .width = 2.0}, "tangent handles T|P'|");
-  draw_segments(f, h.points, tip2, diffgeom::Plane::XY, {.stroke = "#9467bd", .width = 2.0}, "normal handles N|P''|");
+  draw_segments(f, h.points, tip1, diffgeom::Plane::XY, {.stroke = "#2ca02c", .width = 2.0}, "T|P'|");
+  draw_segments(f, h.points, tip2, diffgeom::Plane::XY, {.stroke = "#9467bd", .width = 2.0}, "N|P''|");
   std::vector<double> x, y;
   for (const Vec3& p : h.points) {
     x.push_back(p.x);
     y.push_back(p.y);
   }
-  f.add_points(x, y, {.stroke = "black"}, 3.0, "data points");
+  f.add_points(x, y, {.stroke = "black"}, 3.0, "points");
 }
 
 int run_hermite(const HermiteArgs& a) {
