@@ -113,6 +113,8 @@ struct Command {
 [[nodiscard]] Command add_demo(CLI::App& app);
 /// `hula optimise`: a GA, NSGA-II or pagmo2 algorithm on a test problem or problem file.
 [[nodiscard]] Command add_optimise(CLI::App& app);
+/// `hula match-curvature`: a prescribed curvature profile matched over data points (GA or hybrid).
+[[nodiscard]] Command add_match_curvature(CLI::App& app);
 /// Runs the demo and prints its JSON.
 int run_demo();
 

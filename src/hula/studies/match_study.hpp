@@ -78,7 +78,8 @@ struct MatchStudy {
 
 /// Outcome of a run.
 struct MatchResult {
-  /// Start and best design variables (the free coordinates), and the GA's best.
+  /// Start and best design variables (the free coordinates), and the GA's best. For the hybrid method, best is
+  /// the LM result unless that has a larger mean distance (eq. 31) than the GA's best (LM minimises squares).
   std::vector<double> start{}, ga_best{}, best{};
   /// Distances at the start, after the GA and at the end.
   MatchDistances before{}, after_ga{}, after{};
