@@ -7,6 +7,7 @@
 // A further method is a new MatchMethod value: match_method_from_name accepts
 // its name and run_curvature_match dispatches it; this command needs no change
 // beyond the help text.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <memory>
@@ -15,6 +16,7 @@
 
 #include "commands/common.hpp"
 #include "commands/study_common.hpp"
+#include "hula/diffgeom/frenet.hpp"
 #include "hula/studies/match_study.hpp"
 
 namespace hula::cli {
@@ -27,7 +29,7 @@ struct MatchArgs {
 };
 
 void add_curve(io::SvgFigure& fig, const nurbs::NurbsCurve& curve, std::span<const Vec3> points,
-               const io::SvgStyle& style, const std::string& legend) {
+               const io::SvgStyle& style, const std::string& legend, bool fins) {
   constexpr int kSamples = 300;
   std::vector<double> x(kSamples + 1), y(kSamples + 1);
   for (int i = 0; i <= kSamples; ++i) {
@@ -36,6 +38,35 @@ void add_curve(io::SvgFigure& fig, const nurbs::NurbsCurve& curve, std::span<con
     y[static_cast<std::size_t>(i)] = p.y;
   }
   fig.add_polyline(x, y, style, legend);
+  // Curvature fins P - s κ N (DESIGN, thesis 6.4) at 120 parameters, the longest 15% of the curve's extent.
+  constexpr int kFins = 120;
+  std::vector<double> t(kFins + 1), kappa(kFins + 1), x1(kFins + 1), y1(kFins + 1), x0(kFins + 1), y0(kFins + 1);
+  std::vector<diffgeom::FrenetPoint> frames(kFins + 1);
+  for (int i = 0; i <= kFins; ++i) t[static_cast<std::size_t>(i)] = static_cast<double>(i) / kFins;
+  diffgeom::frenet(curve, t, frames);
+  double kmax = 0.0;
+  for (const auto& f : frames)
+    if (f.frame_defined) kmax = std::max(kmax, f.curvature);
+  const double extent = std::max(*std::max_element(x.begin(), x.end()) - *std::min_element(x.begin(), x.end()),
+                                 *std::max_element(y.begin(), y.end()) - *std::min_element(y.begin(), y.end()));
+  if (fins && kmax > 0.0) {
+    const double scale = 0.15 * extent / kmax;
+    std::size_t m = 0;
+    for (const auto& f : frames) {
+      if (!f.frame_defined) continue;
+      const Vec3 end = f.position - scale * f.curvature * f.normal;
+      x0[m] = f.position.x;
+      y0[m] = f.position.y;
+      x1[m] = end.x;
+      y1[m] = end.y;
+      ++m;
+    }
+    for (auto* v : {&x0, &y0, &x1, &y1}) v->resize(m);
+    io::SvgStyle fin = style;
+    fin.width = 0.6;
+    fin.dash.clear();
+    fig.add_segments(x0, y0, x1, y1, fin);
+  }
   std::vector<double> px, py;
   for (const Vec3& p : points) {
     px.push_back(p.x);
@@ -55,9 +86,9 @@ void write_figures(const std::filesystem::path& dir, const studies::CurvatureMat
     io::SvgFigure fig;
     fig.set_equal_aspect(true);
     fig.set_title(is_after ? "Optimised curve (x-y view)" : "Start curve (x-y view)");
-    if (is_after) add_curve(fig, match.sampler().curve(before), before, grey, "start");
+    if (is_after) add_curve(fig, match.sampler().curve(before), before, grey, "start", false);
     add_curve(fig, match.sampler().curve(is_after ? after : before), is_after ? after : before, blue,
-              is_after ? "optimised" : "start");
+              is_after ? "optimised" : "start", true);
     write_svg(dir, is_after ? "curve_after" : "curve_before", fig);
   }
   {
