@@ -92,6 +92,8 @@ TEST(MatchCurvatureCli, BadStudyFilesNameTheMember) {
       {head + bounds + R"("target": {"samples": [[0, 0.1], [0.5, NaN], [1, 0.1]]}})", "line 1"},
       {head + bounds + R"("target": {"samples": [[0, 0.1], [0.5, "nan"], [1, 0.1]]}})", "target"},
       {head + bounds + target + R"(, "samples": 0})", "samples = 0"},
+      {head + bounds + R"x("target": {"law": "sqrt(0.5 - u)"}})x", "target: the profile is undefined"},
+      {head + bounds + R"("target": {"of_points": [[0, 0], [0, 0], [1, 1]]}})", "target.of_points"},
       {head + bounds + target + R"(, "method": "direct"})", "method"},
       {head + bounds + target + R"(, "ga": {"population": 7}})", "ga.population"},
       {head + bounds + target + R"(, "lm": {"difference_step": 2}})", "lm.difference_step"},

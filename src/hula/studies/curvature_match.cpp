@@ -283,7 +283,11 @@ SplineProfileSampler make_sampler(const CurvatureMatchSetup& s) {
 
 CurvatureMatch::CurvatureMatch(CurvatureMatchSetup setup) : setup_(std::move(setup)), sampler_(make_sampler(setup_)) {
   target_.resize(setup_.samples);
-  setup_.target->sample(sampler_.abscissae(), target_);
+  try {
+    setup_.target->sample(sampler_.abscissae(), target_);
+  } catch (const Error& e) {
+    throw Error(e.code(), "target: " + e.message(), {.field = "target"});
+  }
   for (std::size_t i = 0; i < target_.size(); ++i)
     if (!std::isfinite(target_[i]))
       throw Error(
@@ -292,7 +296,11 @@ CurvatureMatch::CurvatureMatch(CurvatureMatchSetup setup) : setup_(std::move(set
           {.field = "target", .index = i});
   if (setup_.torsion_target) {
     torsion_target_.resize(setup_.samples);
-    setup_.torsion_target->sample(sampler_.abscissae(), torsion_target_);
+    try {
+      setup_.torsion_target->sample(sampler_.abscissae(), torsion_target_);
+    } catch (const Error& e) {
+      throw Error(e.code(), "torsion_target: " + e.message(), {.field = "torsion_target"});
+    }
   }
   for (std::size_t i = 0; i < setup_.points.size(); ++i)
     for (std::size_t c = 0; c < static_cast<std::size_t>(setup_.dimension); ++c)
