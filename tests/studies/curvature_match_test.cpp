@@ -156,4 +156,38 @@ TEST(CurvatureMatch, RejectsBadSetupsNamingTheMember) {
   HULA_EXPECT_ERROR(CurvatureMatch{s}, Errc::InvalidArgument, "lower has 3 entries");
 }
 
+// Curvature and torsion distances for the two-objective study: zero at the known space curve, both positive
+// elsewhere, and no allocation per evaluation.
+TEST(CurvatureMatch, CurvatureAndTorsionDistancesForTheTwoObjectiveStudy) {
+  const std::vector<Vec3> truth = {{0, 0, 0}, {10, 10, 0}, {20, -10, 2}, {30, 4, 5}, {40, 0, 8}};
+  CurvatureMatchSetup s;
+  s.dimension = 3;
+  s.points = truth;
+  s.points[2].z += 1.0;
+  s.lower.assign(truth.size(), Vec3{2, 2, 2});
+  s.lower[0] = Vec3{};
+  s.upper = s.lower;
+  const SplineProfileSampler sampler(truth.size(), 3, uniform(200));
+  SplineProfileSampler::Workspace ws;
+  std::vector<double> kappa(200), tau(200);
+  ASSERT_TRUE(sampler.sample(truth, ws, kappa, tau));
+  for (double& t : tau) t = std::isfinite(t) ? t : 0.0;
+  s.target = Profile::from_samples(uniform(200), kappa);
+  s.torsion_target = Profile::from_samples(uniform(200), tau);
+  const CurvatureMatch match(s);
+  std::vector<double> x = match.start_variables();
+  const auto far = match.distances(x);
+  EXPECT_GT(far.mean, 1e-3);
+  EXPECT_GT(far.torsion_mean, 1e-3);
+  x[5] -= 1.0;  // points[2].z back to the known curve's value
+  EXPECT_EQ(match.variables()[5].name, "points[2].z");
+  std::vector<Vec3> pts(truth.size());
+  const auto at = match.mean_distances(x, ws, pts, kappa, tau);
+  EXPECT_NEAR(at.mean, 0.0, 1e-15);
+  EXPECT_NEAR(at.torsion_mean, 0.0, 1e-14);
+  const long before = hula::testing::allocation_count();
+  for (int i = 0; i < 50; ++i) (void)match.mean_distances(x, ws, pts, kappa, tau);
+  EXPECT_EQ(hula::testing::allocation_count(), before);
+}
+
 }  // namespace

@@ -349,13 +349,13 @@ double CurvatureMatch::mean_distance(std::span<const double> x, SplineProfileSam
   return sum / static_cast<double>(kappa.size());
 }
 
-MatchDistances CurvatureMatch::distances(std::span<const double> x) const {
-  SplineProfileSampler::Workspace ws;
-  std::vector<Vec3> points(setup_.points.size());
-  std::vector<double> kappa(setup_.samples), tau(setup_.samples);
+MatchDistances CurvatureMatch::mean_distances(std::span<const double> x, SplineProfileSampler::Workspace& ws,
+                                              std::span<Vec3> points, std::span<double> kappa,
+                                              std::span<double> tau) const {
   points_from(x, points);
+  const bool want_tau = !torsion_target_.empty();
   MatchDistances d{kNaN, kNaN, kNaN};
-  if (!sampler_.sample(points, ws, kappa, tau)) return d;
+  if (!sampler_.sample(points, ws, kappa, want_tau ? tau : std::span<double>{})) return d;
   d.mean = d.max = 0.0;
   for (std::size_t i = 0; i < kappa.size(); ++i) {
     const double e = std::fabs(kappa[i] - target_[i]);
@@ -363,7 +363,7 @@ MatchDistances CurvatureMatch::distances(std::span<const double> x) const {
     d.max = std::max(d.max, e);
   }
   d.mean /= static_cast<double>(kappa.size());
-  if (!torsion_target_.empty()) {
+  if (want_tau) {
     double sum = 0.0;
     std::size_t count = 0;
     for (std::size_t i = 0; i < tau.size(); ++i)
@@ -374,6 +374,13 @@ MatchDistances CurvatureMatch::distances(std::span<const double> x) const {
     d.torsion_mean = count > 0 ? sum / static_cast<double>(count) : kNaN;
   }
   return d;
+}
+
+MatchDistances CurvatureMatch::distances(std::span<const double> x) const {
+  SplineProfileSampler::Workspace ws;
+  std::vector<Vec3> points(setup_.points.size());
+  std::vector<double> kappa(setup_.samples), tau(setup_.samples);
+  return mean_distances(x, ws, points, kappa, tau);
 }
 
 std::vector<double> CurvatureMatch::curvature_samples(std::span<const double> x) const {

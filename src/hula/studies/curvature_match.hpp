@@ -157,6 +157,13 @@ class CurvatureMatch {
   /// Residuals r_i = κ(u_i) − κ*(u_i) of x; returns false if degenerate.
   bool residuals(std::span<const double> x, SplineProfileSampler::Workspace& ws, std::span<Vec3> points,
                  std::span<double> r) const;
+  /// Curvature and torsion distances of x in one pass, for the two-objective (NSGA-II) study: no allocation once
+  /// `ws` is warm. torsion_mean is NaN without a torsion target (τ is then not computed) or if τ is undefined at
+  /// every sample; all three are NaN if the spline is degenerate.
+  /// @param points, kappa, tau scratch of point count and sampler().abscissae().size() values
+  [[nodiscard]] MatchDistances mean_distances(std::span<const double> x, SplineProfileSampler::Workspace& ws,
+                                              std::span<Vec3> points, std::span<double> kappa,
+                                              std::span<double> tau) const;
   /// All distances of x (allocates; for reports).
   [[nodiscard]] MatchDistances distances(std::span<const double> x) const;
   /// κ(u_i) of x (allocates; for reports and figures).
