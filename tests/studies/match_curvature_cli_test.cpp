@@ -63,6 +63,23 @@ TEST(MatchCurvatureCli, SameSeedSameResult) {
   EXPECT_EQ(Json::parse(a.out)["study"]["seed"].get<int>(), 5);
 }
 
+// The resolved study in the output repeats the run exactly.
+TEST(MatchCurvatureCli, ResolvedStudyRepeatsTheRun) {
+  const hula::testing::TempDir dir;
+  const ProcessResult a = hula_run({"match-curvature", example(4), "--seed", "9", "--method", "hybrid"});
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  const Json first = Json::parse(a.out);
+  const auto path = dir.path() / "resolved.json";
+  std::ofstream(path) << first["study"].dump();
+  const ProcessResult b = hula_run({"match-curvature", path.string()});
+  ASSERT_EQ(b.exit_code, 0) << b.err;
+  const Json second = Json::parse(b.out);
+  EXPECT_EQ(first["best_points"], second["best_points"]);
+  EXPECT_EQ(first["after"], second["after"]);
+  EXPECT_EQ(second["study"]["seed"].get<int>(), 9);
+  EXPECT_EQ(second["method"], "hybrid");
+}
+
 // Examples 3 and 4 have no exact solution; the GA must improve on the start.
 TEST(MatchCurvatureCli, Examples3And4Improve) {
   for (int i : {3, 4}) {
