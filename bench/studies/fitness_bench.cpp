@@ -73,6 +73,25 @@ void BM_match_fitness(benchmark::State& state) {
 }
 BENCHMARK(BM_match_fitness)->Arg(4)->Arg(7)->Arg(10);
 
+// The same with the arc-length abscissa (span lengths by Gauss-Legendre, Newton per sample).
+void BM_match_fitness_arclength(benchmark::State& state) {
+  CurvatureMatchSetup s = setup(static_cast<std::size_t>(state.range(0)));
+  s.abscissa = hula::studies::ProfileAbscissa::ArcLength;
+  const CurvatureMatch match(s);
+  hula::studies::SplineProfileSampler::Workspace ws;
+  std::vector<Vec3> pts(match.setup().points.size());
+  std::vector<double> kappa(kSamples);
+  std::vector<double> x = match.start_variables();
+  double sign = 1e-9;
+  for (auto _ : state) {
+    x[0] += sign;
+    sign = -sign;
+    benchmark::DoNotOptimize(match.mean_distance(x, ws, pts, kappa));
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
+}
+BENCHMARK(BM_match_fitness_arclength)->Arg(7);
+
 // Open CASCADE: the same points, GeomAPI_Interpolate (its own chord-length parameters and ends), κ from
 // GeomLProp_CLProps at 200 parameters spread over the curve's domain, mean |κ - κ*|.
 void BM_occt_fitness(benchmark::State& state) {

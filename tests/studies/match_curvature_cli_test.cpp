@@ -63,6 +63,23 @@ TEST(MatchCurvatureCli, SameSeedSameResult) {
   EXPECT_EQ(Json::parse(a.out)["study"]["seed"].get<int>(), 5);
 }
 
+// With the arc-length abscissa, the Table 9 4-variable study's known curve is recovered by the hybrid too.
+TEST(MatchCurvatureCli, ArcLengthAbscissaRecoversKnownCurve) {
+  const hula::testing::TempDir dir;
+  std::ifstream in(std::string(HULA_SOURCE_DIR) + "/examples/studies/match-curvature-table9-4.json");
+  Json study = Json::parse(in);
+  study["abscissa"] = "arclength";
+  const auto path = dir.path() / "arclength.json";
+  std::ofstream(path) << study.dump();
+  const ProcessResult r = hula_run({"match-curvature", path.string(), "--method", "hybrid"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Json j = Json::parse(r.out);
+  EXPECT_LT(j["after"]["mean"].get<double>(), 1e-6);
+  EXPECT_NEAR(j["best_points"][1][0].get<double>(), 16.0, 1e-4);
+  EXPECT_NEAR(j["best_points"][2][1].get<double>(), 30.0, 1e-4);
+  EXPECT_EQ(j["study"]["abscissa"], "arclength");
+}
+
 // The resolved study in the output repeats the run exactly.
 TEST(MatchCurvatureCli, ResolvedStudyRepeatsTheRun) {
   const hula::testing::TempDir dir;
@@ -114,7 +131,7 @@ TEST(MatchCurvatureCli, BadStudyFilesNameTheMember) {
       {head + bounds + target + R"(, "method": "direct"})", "method"},
       {head + bounds + target + R"(, "ga": {"population": 7}})", "ga.population"},
       {head + bounds + target + R"(, "lm": {"difference_step": 2}})", "lm.difference_step"},
-      {head + bounds + target + R"(, "abscissa": "arclength"})", "abscissa"},
+      {head + bounds + target + R"(, "abscissa": "length"})", "abscissa"},
   };
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const auto path = dir.path() / ("bad" + std::to_string(i) + ".json");
