@@ -213,13 +213,17 @@ bool SplineProfileSampler::sample(std::span<const Vec3> points, Workspace& ws, s
       // Newton on g_base + ∫_{w_base}^{w} |C'| = s - S[k], safeguarded to the span.
       const double goal = s - S[k];
       const double span_len = S[k + 1] - S[k];
-      w = span_len > 0.0 ? h[k] * std::clamp(goal / span_len, 0.0, 1.0) : 0.0;
+      // Start from the last sample, one explicit step along the speed there (or proportionally if it vanishes).
+      const double v0 = speed(k, w_base);
+      w = v0 > 0.0 ? w_base + (goal - g_base) / v0 : (span_len > 0.0 ? h[k] * goal / span_len : 0.0);
+      w = std::clamp(w, 0.0, h[k]);
       for (int it = 0; it < 20; ++it) {
         const double v = speed(k, w);
         if (!(v > 0.0)) break;
         const double step = (g_base + integral(k, w_base, w) - goal) / v;
         w = std::clamp(w - step, 0.0, h[k]);
-        if (std::fabs(step) <= 1e-15 * h[k]) break;
+        // Relative 1e-13 in the local parameter: far below the matching's needs, and reachable in rounding.
+        if (std::fabs(step) <= 1e-13 * h[k]) break;
       }
       w_base = w;
       g_base = goal;

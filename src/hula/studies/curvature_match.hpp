@@ -175,7 +175,8 @@ class CurvatureMatch {
   [[nodiscard]] MatchDistances distances(std::span<const double> x) const;
   /// κ(u_i) of x (allocates; for reports and figures).
   [[nodiscard]] std::vector<double> curvature_samples(std::span<const double> x) const;
-  /// The single-objective Flexo problem "mean curvature distance"; evaluation uses one workspace per thread.
+  /// The single-objective Flexo problem "mean curvature distance"; evaluation uses one workspace per thread and
+  /// refers to this object, which must outlive the problem.
   /// @param precision as variables()
   [[nodiscard]] optim::Problem problem(double precision = 0.0) const;
 
