@@ -41,7 +41,10 @@ enum class MatchMethod {
 /// GA settings of the study.
 struct MatchGaSettings {
   /// Binary-coded (thesis) or real-coded GA.
-  enum class Algorithm { Binary, Real };
+  enum class Algorithm {
+    Binary,  ///< solve_binary_ga: the thesis's coding, roulette and power boost
+    Real,    ///< solve_real_ga: SBX and polynomial mutation
+  };
   Algorithm algorithm = Algorithm::Binary;
   /// Individuals per generation, even, >= 2. Default 50 (thesis).
   std::size_t population = 50;
