@@ -56,6 +56,7 @@ int main(int argc, char** argv) {
       hula::cli::add_demo(app),        hula::cli::add_law(app),      hula::cli::add_analyse(app),
       hula::cli::add_reconstruct(app), hula::cli::add_optimise(app), hula::cli::add_fair_knots(app),
       hula::cli::add_fin_compound(app), hula::cli::add_edit_projection(app), hula::cli::add_hermite(app),
+      hula::cli::add_match_curvature(app),
   };
   try {
     try {

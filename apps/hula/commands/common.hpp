@@ -121,6 +121,8 @@ struct Command {
 [[nodiscard]] Command add_edit_projection(CLI::App& app);
 /// `hula hermite`: Hermite editing of a spline's tangent and normal handles.
 [[nodiscard]] Command add_hermite(CLI::App& app);
+/// `hula match-curvature`: a prescribed curvature profile matched over data points (GA or hybrid).
+[[nodiscard]] Command add_match_curvature(CLI::App& app);
 /// Runs the demo and prints its JSON.
 int run_demo();
 

@@ -1,0 +1,491 @@
+// SPDX-License-Identifier: MIT
+#include "hula/studies/curvature_match.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "hula/core/error.hpp"
+#include "hula/nurbs/interpolate.hpp"
+
+namespace hula::studies {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+// τ is undefined where |C' × C''| <= kTorsionCutoff |C'|³, i.e. κ below 1e-12 per model unit: below it the
+// binormal is noise (DESIGN: undefined quantities are NaN, documented).
+constexpr double kTorsionCutoff = 1e-12;
+constexpr const char* kAxis[3] = {"x", "y", "z"};
+
+std::string indexed(const char* field, std::size_t i) { return std::string(field) + "[" + std::to_string(i) + "]"; }
+
+template <class V>
+void grow(std::vector<V>& v, std::size_t n) {
+  if (v.size() < n) v.resize(n);
+}
+
+Vec3 checked_direction(const Vec3& d, const char* field) {
+  if (!is_finite(d)) throw Error(Errc::NonFiniteInput, std::string(field) + " is not finite", {.field = field});
+  const double len = norm(d);
+  if (!(len > 0.0)) throw Error(Errc::InvalidArgument, std::string(field) + " is the zero vector", {.field = field});
+  return d / len;
+}
+
+}  // namespace
+
+SplineProfileSampler::SplineProfileSampler(std::size_t point_count, int dimension, std::vector<double> sample_u,
+                                           std::optional<Vec3> start_tangent, std::optional<Vec3> end_tangent,
+                                           ProfileAbscissa abscissa)
+    : n_(point_count), dim_(dimension), u_(std::move(sample_u)), abscissa_(abscissa) {
+  if (n_ < 2)
+    throw Error(Errc::TooFewPoints, "the spline needs at least 2 points, got " + std::to_string(n_),
+                {.field = "points"});
+  if (dim_ != 2 && dim_ != 3)
+    throw Error(Errc::InvalidArgument, "dimension = " + std::to_string(dim_) + " must be 2 or 3",
+                {.field = "dimension"});
+  for (std::size_t i = 0; i < u_.size(); ++i) {
+    if (!std::isfinite(u_[i]))
+      throw Error(Errc::NonFiniteInput, indexed("samples", i) + " is not finite", {.field = "samples", .index = i});
+    if (u_[i] < 0.0 || u_[i] > 1.0 || (i > 0 && u_[i] < u_[i - 1]))
+      throw Error(Errc::InvalidArgument,
+                  indexed("samples", i) + " = " + format_number(u_[i]) + " must be in [0, 1] and non-decreasing",
+                  {.field = "samples", .index = i});
+  }
+  if (start_tangent) start_ = checked_direction(*start_tangent, "start_tangent");
+  if (end_tangent) end_ = checked_direction(*end_tangent, "end_tangent");
+  if (dim_ == 2) {
+    if (start_ && start_->z != 0.0)
+      throw Error(Errc::InvalidArgument, "start_tangent has z != 0 in a planar study", {.field = "start_tangent"});
+    if (end_ && end_->z != 0.0)
+      throw Error(Errc::InvalidArgument, "end_tangent has z != 0 in a planar study", {.field = "end_tangent"});
+  }
+}
+
+bool SplineProfileSampler::sample(std::span<const Vec3> points, Workspace& ws, std::span<double> kappa,
+                                  std::span<double> tau) const {
+  if (points.size() != n_ || kappa.size() != u_.size() || (!tau.empty() && tau.size() != u_.size()))
+    throw Error(Errc::InvalidArgument,
+                "sample: expected " + std::to_string(n_) + " points and " + std::to_string(u_.size()) +
+                    " samples, got " + std::to_string(points.size()) + " points, " + std::to_string(kappa.size()) +
+                    " kappa and " + std::to_string(tau.size()) + " tau values",
+                {.field = "points"});
+  const std::size_t n = n_;
+  const std::size_t D = static_cast<std::size_t>(dim_);
+  grow(ws.t, n);
+  grow(ws.h, n);
+  grow(ws.diag, n);
+  grow(ws.upper, n);
+  grow(ws.rhs, 3 * n);
+  grow(ws.moments, 3 * n);
+  grow(ws.coefficients, 9 * n);
+  grow(ws.span_length, n);
+  auto fail = [&] {
+    std::fill(kappa.begin(), kappa.end(), kNaN);
+    std::fill(tau.begin(), tau.end(), kNaN);
+    return false;
+  };
+  // Chord-length parameters normalised to [0, 1] (thesis eq. 29).
+  double* t = ws.t.data();
+  double* h = ws.h.data();
+  t[0] = 0.0;
+  for (std::size_t k = 1; k < n; ++k) {
+    double d2 = 0.0;
+    for (std::size_t c = 0; c < D; ++c) {
+      const double e = points[k][c] - points[k - 1][c];
+      d2 += e * e;
+    }
+    t[k] = t[k - 1] + std::sqrt(d2);
+  }
+  const double length = t[n - 1];
+  if (!(length > 0.0) || !std::isfinite(length)) return fail();
+  const double inv_length = 1.0 / length;
+  for (std::size_t k = 1; k < n; ++k) t[k] *= inv_length;
+  t[n - 1] = 1.0;
+  for (std::size_t k = 0; k + 1 < n; ++k) {
+    h[k] = t[k + 1] - t[k];
+    if (!(h[k] > 0.0)) return fail();
+  }
+  // Tridiagonal system for the moments M_k (same matrix for every coordinate).
+  double* diag = ws.diag.data();
+  double* upper = ws.upper.data();
+  double* rhs = ws.rhs.data();
+  auto slope = [&](std::size_t k, std::size_t c) { return (points[k + 1][c] - points[k][c]) / h[k]; };
+  if (start_) {
+    diag[0] = 2.0;
+    upper[0] = 1.0;
+    for (std::size_t c = 0; c < D; ++c) rhs[c] = 6.0 * (slope(0, c) - (*start_)[c] * length) / h[0];
+  } else {
+    diag[0] = 1.0;
+    upper[0] = 0.0;
+    for (std::size_t c = 0; c < D; ++c) rhs[c] = 0.0;
+  }
+  for (std::size_t k = 1; k + 1 < n; ++k) {
+    diag[k] = 2.0 * (h[k - 1] + h[k]);
+    upper[k] = h[k];
+    for (std::size_t c = 0; c < D; ++c) rhs[3 * k + c] = 6.0 * (slope(k, c) - slope(k - 1, c));
+  }
+  const std::size_t last = n - 1;
+  double last_lower = 0.0;
+  if (end_) {
+    diag[last] = 2.0;
+    last_lower = 1.0;
+    for (std::size_t c = 0; c < D; ++c)
+      rhs[3 * last + c] = 6.0 * ((*end_)[c] * length - slope(last - 1, c)) / h[last - 1];
+  } else {
+    diag[last] = 1.0;
+    for (std::size_t c = 0; c < D; ++c) rhs[3 * last + c] = 0.0;
+  }
+  upper[last] = 0.0;
+  // Thomas algorithm (diagonally dominant: no pivoting needed); upper becomes c', rhs becomes d'.
+  {
+    const double inv = 1.0 / diag[0];
+    upper[0] *= inv;
+    for (std::size_t c = 0; c < D; ++c) rhs[c] *= inv;
+  }
+  for (std::size_t k = 1; k < n; ++k) {
+    const double lower = k == last ? last_lower : h[k - 1];
+    const double inv = 1.0 / (diag[k] - lower * upper[k - 1]);
+    upper[k] *= inv;
+    for (std::size_t c = 0; c < D; ++c) rhs[3 * k + c] = (rhs[3 * k + c] - lower * rhs[3 * (k - 1) + c]) * inv;
+  }
+  double* M = ws.moments.data();
+  for (std::size_t c = 0; c < D; ++c) M[3 * last + c] = rhs[3 * last + c];
+  for (std::size_t k = last; k-- > 0;)
+    for (std::size_t c = 0; c < D; ++c) M[3 * k + c] = rhs[3 * k + c] - upper[k] * M[3 * (k + 1) + c];
+  // Per-span coefficients of C' and C'': b, c (= M_k / 2), d.
+  double* coef = ws.coefficients.data();
+  for (std::size_t k = 0; k + 1 < n; ++k)
+    for (std::size_t c = 0; c < D; ++c) {
+      const double m0 = M[3 * k + c], m1 = M[3 * (k + 1) + c];
+      double* q = coef + 9 * k + 3 * c;
+      q[0] = slope(k, c) - h[k] * (2.0 * m0 + m1) / 6.0;
+      q[1] = 0.5 * m0;
+      q[2] = (m1 - m0) / (6.0 * h[k]);
+    }
+  // |C'(t_k + w)| on span k.
+  auto speed = [&](std::size_t span, double w) {
+    const double* q = coef + 9 * span;
+    double v2 = 0.0;
+    for (std::size_t c = 0; c < D; ++c) {
+      const double d = q[3 * c] + w * (2.0 * q[3 * c + 1] + 3.0 * q[3 * c + 2] * w);
+      v2 += d * d;
+    }
+    return std::sqrt(v2);
+  };
+  // ∫_a^b |C'(t_k + v)| dv by 8-point Gauss–Legendre (nodes and weights on [-1, 1]).
+  static constexpr double kGx[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
+  static constexpr double kGw[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
+  auto integral = [&](std::size_t span, double a, double b) {
+    const double mid = 0.5 * (a + b), half = 0.5 * (b - a);
+    double sum = 0.0;
+    for (int j = 0; j < 4; ++j) sum += kGw[j] * (speed(span, mid - half * kGx[j]) + speed(span, mid + half * kGx[j]));
+    return half * sum;
+  };
+  // Span lengths on kPanels panels (the speed of a clamped end span can vary by orders of magnitude); between
+  // consecutive samples a single 8-point rule on the short interval is enough.
+  constexpr int kPanels = 8;
+  const bool by_length = abscissa_ == ProfileAbscissa::ArcLength;
+  double* S = ws.span_length.data();  // cumulative length at t_k
+  if (by_length) {
+    S[0] = 0.0;
+    for (std::size_t j = 0; j + 1 < n; ++j) {
+      const double p = h[j] / kPanels;
+      double len = 0.0;
+      for (int panel = 0; panel < kPanels; ++panel) len += integral(j, p * panel, p * (panel + 1));
+      S[j + 1] = S[j] + len;
+    }
+    if (!(S[n - 1] > 0.0) || !std::isfinite(S[n - 1])) return fail();
+  }
+  // Samples: the abscissae are sorted, so the span only moves forward.
+  std::size_t k = 0;
+  double w_base = 0.0, g_base = 0.0;  // last arc-length sample in span k: local parameter and length from t_k
+  const bool want_tau = !tau.empty();
+  for (std::size_t i = 0; i < u_.size(); ++i) {
+    double w = 0.0;
+    if (by_length) {
+      const double s = u_[i] * S[n - 1];
+      while (k + 2 < n && s > S[k + 1]) {
+        ++k;
+        w_base = g_base = 0.0;
+      }
+      // Newton on g_base + ∫_{w_base}^{w} |C'| = s - S[k], safeguarded to the span.
+      const double goal = s - S[k];
+      const double span_len = S[k + 1] - S[k];
+      // Start from the last sample, one explicit step along the speed there (or proportionally if it vanishes).
+      const double v0 = speed(k, w_base);
+      w = v0 > 0.0 ? w_base + (goal - g_base) / v0 : (span_len > 0.0 ? h[k] * goal / span_len : 0.0);
+      w = std::clamp(w, 0.0, h[k]);
+      for (int it = 0; it < 20; ++it) {
+        const double v = speed(k, w);
+        if (!(v > 0.0)) break;
+        const double step = (g_base + integral(k, w_base, w) - goal) / v;
+        w = std::clamp(w - step, 0.0, h[k]);
+        // Relative 1e-13 in the local parameter: far below the matching's needs, and reachable in rounding.
+        if (std::fabs(step) <= 1e-13 * h[k]) break;
+      }
+      w_base = w;
+      g_base = goal;
+    } else {
+      const double u = u_[i];
+      while (k + 2 < n && u > t[k + 1]) ++k;
+      w = u - t[k];
+    }
+    const double* q = coef + 9 * k;
+    double d1[3] = {0.0, 0.0, 0.0}, d2[3] = {0.0, 0.0, 0.0}, d3[3] = {0.0, 0.0, 0.0};
+    for (std::size_t c = 0; c < D; ++c) {
+      const double* s = q + 3 * c;
+      d1[c] = s[0] + w * (2.0 * s[1] + 3.0 * s[2] * w);
+      d2[c] = 2.0 * s[1] + 6.0 * s[2] * w;
+      d3[c] = 6.0 * s[2];
+    }
+    const double cx = d1[1] * d2[2] - d1[2] * d2[1];
+    const double cy = d1[2] * d2[0] - d1[0] * d2[2];
+    const double cz = d1[0] * d2[1] - d1[1] * d2[0];
+    const double cross2 = cx * cx + cy * cy + cz * cz;
+    const double speed2 = d1[0] * d1[0] + d1[1] * d1[1] + d1[2] * d1[2];
+    const double speed3 = speed2 * std::sqrt(speed2);
+    const double cross_norm = std::sqrt(cross2);
+    kappa[i] = cross_norm / speed3;
+    if (want_tau) {
+      if (D == 2)
+        tau[i] = 0.0;
+      else if (cross_norm <= kTorsionCutoff * speed3)
+        tau[i] = kNaN;
+      else
+        tau[i] = (cx * d3[0] + cy * d3[1] + cz * d3[2]) / cross2;
+    }
+    if (!std::isfinite(kappa[i])) return fail();
+  }
+  return true;
+}
+
+nurbs::NurbsCurve SplineProfileSampler::curve(std::span<const Vec3> points) const {
+  nurbs::InterpolationOptions options;
+  options.dimension = dim_;
+  options.parameterisation = nurbs::Parameterisation::ChordLength;
+  double length = 0.0;
+  for (std::size_t k = 1; k < points.size(); ++k) length += distance(points[k - 1], points[k]);
+  if (start_) options.start = nurbs::EndCondition::clamped(*start_ * length);
+  if (end_) options.end = nurbs::EndCondition::clamped(*end_ * length);
+  std::vector<Vec3> p(points.begin(), points.end());
+  if (dim_ == 2)
+    for (Vec3& v : p) v.z = 0.0;
+  return nurbs::interpolate_cubic(p, options);
+}
+
+void CurvatureMatchSetup::validate() const {
+  if (points.size() < 2)
+    throw Error(Errc::TooFewPoints, "points: at least 2 data points are needed, got " + std::to_string(points.size()),
+                {.field = "points"});
+  if (dimension != 2 && dimension != 3)
+    throw Error(Errc::InvalidArgument, "dimension = " + std::to_string(dimension) + " must be 2 or 3",
+                {.field = "dimension"});
+  for (std::size_t i = 0; i < points.size(); ++i)
+    for (std::size_t c = 0; c < 3; ++c)
+      if (!std::isfinite(points[i][c]))
+        throw Error(Errc::NonFiniteInput, indexed("points", i) + "." + kAxis[c] + " is not finite",
+                    {.field = "points", .index = i, .component = c});
+  for (const auto* offsets : {&lower, &upper}) {
+    const char* name = offsets == &lower ? "lower" : "upper";
+    if (offsets->size() != points.size())
+      throw Error(Errc::InvalidArgument,
+                  std::string(name) + " has " + std::to_string(offsets->size()) + " entries but there are " +
+                      std::to_string(points.size()) + " points",
+                  {.field = name});
+    for (std::size_t i = 0; i < offsets->size(); ++i)
+      for (std::size_t c = 0; c < 3; ++c) {
+        const double v = (*offsets)[i][c];
+        const std::string where = indexed(name, i) + "." + kAxis[c];
+        const ErrorWhere at{.field = name, .index = i, .component = c};
+        if (!std::isfinite(v)) throw Error(Errc::NonFiniteInput, where + " is not finite", at);
+        if (v < 0.0)
+          throw Error(Errc::InvalidArgument,
+                      where + " = " + format_number(v) +
+                          " is negative: the bounds would exclude the start value (offsets are distances below / "
+                          "above it)",
+                      at);
+        if (i == 0 && v != 0.0)
+          throw Error(Errc::InvalidArgument,
+                      where + " = " + format_number(v) + " would move the start point, which is fixed (thesis 8.2.1)",
+                      at);
+        if (c == 2 && dimension == 2 && v != 0.0)
+          throw Error(Errc::InvalidArgument, where + " = " + format_number(v) + " but the study is planar", at);
+      }
+  }
+  bool any_free = false;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    for (std::size_t c = 0; c < 3; ++c) any_free = any_free || lower[i][c] > 0.0 || upper[i][c] > 0.0;
+  if (!any_free)
+    throw Error(Errc::InvalidArgument, "lower/upper: every coordinate is fixed, nothing to optimise",
+                {.field = "upper"});
+  if (samples < 2)
+    throw Error(Errc::InvalidArgument, "samples = " + std::to_string(samples) + " must be at least 2",
+                {.field = "samples"});
+  if (!target) throw Error(Errc::InvalidArgument, "target: no target curvature profile", {.field = "target"});
+}
+
+namespace {
+
+std::vector<double> uniform_abscissae(std::size_t samples) {
+  std::vector<double> u(samples);
+  for (std::size_t i = 0; i < samples; ++i) u[i] = static_cast<double>(i) / static_cast<double>(samples - 1);
+  u.back() = 1.0;
+  return u;
+}
+
+// Validates the setup first, so that a bad setup is reported before anything is built from it.
+SplineProfileSampler make_sampler(const CurvatureMatchSetup& s) {
+  s.validate();
+  return SplineProfileSampler(s.points.size(), s.dimension, uniform_abscissae(s.samples), s.start_tangent,
+                              s.end_tangent, s.abscissa);
+}
+
+}  // namespace
+
+CurvatureMatch::CurvatureMatch(CurvatureMatchSetup setup) : setup_(std::move(setup)), sampler_(make_sampler(setup_)) {
+  target_.resize(setup_.samples);
+  try {
+    setup_.target->sample(sampler_.abscissae(), target_);
+  } catch (const Error& e) {
+    throw Error(e.code(), "target: " + e.message(), {.field = "target"});
+  }
+  for (std::size_t i = 0; i < target_.size(); ++i)
+    if (!std::isfinite(target_[i]))
+      throw Error(
+          Errc::NonFiniteInput,
+          "target(" + format_number(sampler_.abscissae()[i]) + ") is not finite (sample " + std::to_string(i) + ")",
+          {.field = "target", .index = i});
+  if (setup_.torsion_target) {
+    torsion_target_.resize(setup_.samples);
+    try {
+      setup_.torsion_target->sample(sampler_.abscissae(), torsion_target_);
+    } catch (const Error& e) {
+      throw Error(e.code(), "torsion_target: " + e.message(), {.field = "torsion_target"});
+    }
+  }
+  for (std::size_t i = 0; i < setup_.points.size(); ++i)
+    for (std::size_t c = 0; c < static_cast<std::size_t>(setup_.dimension); ++c)
+      if (setup_.lower[i][c] > 0.0 || setup_.upper[i][c] > 0.0) free_.push_back({i, c});
+  if (setup_.dimension == 2)
+    for (Vec3& p : setup_.points) p.z = 0.0;
+}
+
+std::vector<optim::Variable> CurvatureMatch::variables(double precision) const {
+  std::vector<optim::Variable> v;
+  v.reserve(free_.size());
+  for (const Free& f : free_) {
+    const double x = setup_.points[f.point][f.coordinate];
+    v.push_back({indexed("points", f.point) + "." + kAxis[f.coordinate], x - setup_.lower[f.point][f.coordinate],
+                 x + setup_.upper[f.point][f.coordinate], precision});
+  }
+  return v;
+}
+
+std::vector<double> CurvatureMatch::start_variables() const {
+  std::vector<double> x;
+  x.reserve(free_.size());
+  for (const Free& f : free_) x.push_back(setup_.points[f.point][f.coordinate]);
+  return x;
+}
+
+void CurvatureMatch::points_from(std::span<const double> x, std::span<Vec3> out) const {
+  HULA_ASSERT(x.size() == free_.size() && out.size() == setup_.points.size(), "points_from: wrong sizes");
+  std::copy(setup_.points.begin(), setup_.points.end(), out.begin());
+  for (std::size_t j = 0; j < free_.size(); ++j) out[free_[j].point][free_[j].coordinate] = x[j];
+}
+
+bool CurvatureMatch::residuals(std::span<const double> x, SplineProfileSampler::Workspace& ws, std::span<Vec3> points,
+                               std::span<double> r) const {
+  points_from(x, points);
+  if (!sampler_.sample(points, ws, r)) return false;
+  for (std::size_t i = 0; i < r.size(); ++i) r[i] -= target_[i];
+  return true;
+}
+
+double CurvatureMatch::mean_distance(std::span<const double> x, SplineProfileSampler::Workspace& ws,
+                                     std::span<Vec3> points, std::span<double> kappa) const {
+  if (!residuals(x, ws, points, kappa)) return kNaN;
+  double sum = 0.0;
+  for (const double r : kappa) sum += std::fabs(r);
+  return sum / static_cast<double>(kappa.size());
+}
+
+MatchDistances CurvatureMatch::mean_distances(std::span<const double> x, SplineProfileSampler::Workspace& ws,
+                                              std::span<Vec3> points, std::span<double> kappa,
+                                              std::span<double> tau) const {
+  points_from(x, points);
+  const bool want_tau = !torsion_target_.empty();
+  MatchDistances d{kNaN, kNaN, kNaN};
+  if (!sampler_.sample(points, ws, kappa, want_tau ? tau : std::span<double>{})) return d;
+  d.mean = d.max = 0.0;
+  for (std::size_t i = 0; i < kappa.size(); ++i) {
+    const double e = std::fabs(kappa[i] - target_[i]);
+    d.mean += e;
+    d.max = std::max(d.max, e);
+  }
+  d.mean /= static_cast<double>(kappa.size());
+  if (want_tau) {
+    double sum = 0.0;
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < tau.size(); ++i)
+      if (std::isfinite(tau[i])) {
+        sum += std::fabs(tau[i] - torsion_target_[i]);
+        ++count;
+      }
+    d.torsion_mean = count > 0 ? sum / static_cast<double>(count) : kNaN;
+  }
+  return d;
+}
+
+MatchDistances CurvatureMatch::distances(std::span<const double> x) const {
+  SplineProfileSampler::Workspace ws;
+  std::vector<Vec3> points(setup_.points.size());
+  std::vector<double> kappa(setup_.samples), tau(setup_.samples);
+  return mean_distances(x, ws, points, kappa, tau);
+}
+
+std::vector<double> CurvatureMatch::curvature_samples(std::span<const double> x) const {
+  SplineProfileSampler::Workspace ws;
+  std::vector<Vec3> points(setup_.points.size());
+  std::vector<double> kappa(setup_.samples);
+  points_from(x, points);
+  (void)sampler_.sample(points, ws, kappa);
+  return kappa;
+}
+
+optim::Problem CurvatureMatch::problem(double precision) const {
+  optim::Problem p;
+  p.name = "match-curvature";
+  p.variables = variables(precision);
+  p.objectives = 1;
+  p.evaluate = [this](std::span<const double> x, std::span<double> values) {
+    // One set of buffers per thread: evaluations may run concurrently, and none allocates once warm.
+    thread_local SplineProfileSampler::Workspace ws;
+    thread_local std::vector<Vec3> points;
+    thread_local std::vector<double> kappa;
+    if (points.size() != setup_.points.size()) points.resize(setup_.points.size());
+    if (kappa.size() != setup_.samples) kappa.resize(setup_.samples);
+    values[0] = mean_distance(x, ws, points, kappa);
+  };
+  return p;
+}
+
+std::vector<double> curvature_profile_of(std::span<const Vec3> points, int dimension, std::size_t samples,
+                                         std::optional<Vec3> start_tangent, std::optional<Vec3> end_tangent,
+                                         ProfileAbscissa abscissa) {
+  if (samples < 2)
+    throw Error(Errc::InvalidArgument, "samples = " + std::to_string(samples) + " must be at least 2",
+                {.field = "samples"});
+  const SplineProfileSampler sampler(points.size(), dimension, uniform_abscissae(samples), start_tangent, end_tangent,
+                                     abscissa);
+  SplineProfileSampler::Workspace ws;
+  std::vector<double> kappa(samples);
+  if (!sampler.sample(points, ws, kappa))
+    throw Error(Errc::CoincidentPoints, "points: two consecutive points coincide or a value overflowed",
+                {.field = "points"});
+  return kappa;
+}
+
+}  // namespace hula::studies

@@ -1,0 +1,396 @@
+// SPDX-License-Identifier: MIT
+#include "hula/studies/match_study.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "hula/core/error.hpp"
+#include "hula/io/json_read.hpp"
+
+namespace hula::studies {
+
+namespace jr = io::json;
+
+std::string_view match_method_name(MatchMethod m) noexcept {
+  switch (m) {
+    case MatchMethod::Ga:
+      return "ga";
+    case MatchMethod::Hybrid:
+      return "hybrid";
+  }
+  return "?";
+}
+
+MatchMethod match_method_from_name(std::string_view name, std::string_view field) {
+  if (name == "ga") return MatchMethod::Ga;
+  if (name == "hybrid") return MatchMethod::Hybrid;
+  throw Error(Errc::ParseError, std::string(field) + " = \"" + std::string(name) + "\" must be \"ga\" or \"hybrid\"",
+              {.field = std::string(field)});
+}
+
+namespace {
+
+double mean_of(const std::vector<double>& x, const CurvatureMatch& match) { return match.distances(x).mean; }
+
+optim::GaResult run_ga(const CurvatureMatch& match, const MatchStudy& study, MatchResult& result, bool keep_log) {
+  const MatchGaSettings& g = study.ga;
+  optim::RunSettings run;
+  run.seed = study.header.seed;
+  run.threads = study.header.threads;
+  run.stop.generations = g.generations;
+  double best = std::numeric_limits<double>::infinity();
+  run.on_generation = [&](const optim::GenerationLog& log) {
+    for (std::size_t i = 0; i < log.size(); ++i) {
+      const double e = log.objective_values[i * log.objectives];
+      if (!log.failed[i] && std::isfinite(e)) best = std::min(best, e);
+    }
+    result.convergence.push_back(best);
+    if (keep_log) result.log.append(log);
+  };
+  if (g.algorithm == MatchGaSettings::Algorithm::Binary) {
+    optim::BinaryGaOptions o;
+    o.population = g.population;
+    o.selection = g.selection;
+    o.crossover_probability = g.crossover_probability;
+    o.mutation_probability = g.mutation_probability.value_or(0.01);
+    o.boost_start = g.boost_start;
+    o.boost_end = g.boost_end;
+    o.run = run;
+    return optim::solve_binary_ga(match.problem(g.precision), o);
+  }
+  optim::RealGaOptions o;
+  o.population = g.population;
+  o.crossover_probability = g.crossover_probability;
+  o.mutation_probability = g.mutation_probability;
+  o.run = run;
+  return optim::solve_real_ga(match.problem(), o);
+}
+
+}  // namespace
+
+MatchResult run_curvature_match(const CurvatureMatch& match, const MatchStudy& study, bool keep_log) {
+  study.lm.validate();
+  if (!(study.ga.precision > 0.0) || !std::isfinite(study.ga.precision))
+    throw Error(Errc::InvalidOption, "ga.precision = " + format_number(study.ga.precision) + " must be > 0",
+                {.field = "ga.precision"});
+  const auto t0 = std::chrono::steady_clock::now();
+  MatchResult result;
+  result.start = match.start_variables();
+  result.before = match.distances(result.start);
+  const optim::GaResult ga = run_ga(match, study, result, keep_log);
+  result.ga_report = ga.report;
+  result.ga_best = ga.best.variables;
+  // The GA keeps the best it saw; the start itself is a candidate the designer already has.
+  if (!(mean_of(result.ga_best, match) <= result.before.mean)) result.ga_best = result.start;
+  result.after_ga = match.distances(result.ga_best);
+  result.best = result.ga_best;
+  switch (study.method) {
+    case MatchMethod::Ga:
+      break;
+    case MatchMethod::Hybrid:
+      result.lm = refine_levenberg_marquardt(match, result.ga_best, study.lm);
+      // LM minimises the sum of squares; where no exact solution exists that can raise the mean |r| of eq. 31
+      // slightly, and the study reports the better of the two by eq. 31.
+      if (mean_of(result.lm->variables, match) <= result.after_ga.mean) result.best = result.lm->variables;
+      break;
+  }
+  result.after = match.distances(result.best);
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return result;
+}
+
+namespace {
+
+Vec3 read_vector(const Json& v, const jr::JsonPath& path, int dimension) {
+  const auto [p, count] = jr::get_point(v, path);
+  if (count != dimension)
+    throw Error(
+        Errc::ParseError,
+        path.text + " has " + std::to_string(count) + " components but the points have " + std::to_string(dimension),
+        path.where);
+  return p;
+}
+
+std::vector<Vec3> read_offsets(const Json& body, std::string_view name, std::size_t count, int dimension) {
+  const jr::JsonPath path = jr::root_path(name);
+  const Json& arr = jr::require_member(body, jr::root_path(""), name);
+  const jr::PointArray pa = jr::get_points(arr, path);
+  if (pa.points.size() != count)
+    throw Error(Errc::ParseError,
+                std::string(name) + " has " + std::to_string(pa.points.size()) + " entries but there are " +
+                    std::to_string(count) + " points",
+                {.field = std::string(name)});
+  if (!pa.points.empty() && pa.dimension != dimension)
+    throw Error(Errc::ParseError,
+                std::string(name) + " entries have " + std::to_string(pa.dimension) +
+                    " components but the points have " + std::to_string(dimension),
+                {.field = std::string(name)});
+  return pa.points;
+}
+
+// The "known curve" target form: the curvature profile of the spline through `of_points`, optionally mirrored
+// (κ(1 − u)), symmetrised ((κ(u) + κ(1 − u)) / 2) and multiplied by a factor profile.
+Profile known_curve_target(const Json& t, const jr::JsonPath& path, const CurvatureMatchSetup& setup,
+                           const std::filesystem::path& base, const law::Context& context) {
+  jr::reject_unknown_members(t, path, {"of_points", "mirror", "symmetrise", "factor"});
+  const jr::PointArray pa = jr::get_points(jr::require_member(t, path, "of_points"), path.member("of_points"));
+  if (pa.dimension != setup.dimension)
+    throw Error(Errc::ParseError, path.text + ".of_points must have as many components as the points",
+                {.field = "target"});
+  std::vector<double> kappa;
+  try {
+    kappa = curvature_profile_of(pa.points, setup.dimension, setup.samples, setup.start_tangent, setup.end_tangent,
+                                 setup.abscissa);
+  } catch (const Error& e) {
+    throw Error(e.code(), path.text + ".of_points: " + e.message(), {.field = "target"});
+  }
+  const std::size_t N = kappa.size();
+  auto flag = [&](std::string_view name) {
+    const Json* v = jr::optional_member(t, name);
+    if (v == nullptr) return false;
+    if (!v->is_boolean()) jr::type_error(*v, path.member(name), "true or false");
+    return v->get<bool>();
+  };
+  std::vector<double> v = kappa;
+  if (flag("mirror"))
+    for (std::size_t i = 0; i < N; ++i) v[i] = kappa[N - 1 - i];
+  if (flag("symmetrise")) {
+    const std::vector<double> w = v;
+    for (std::size_t i = 0; i < N; ++i) v[i] = 0.5 * (w[i] + w[N - 1 - i]);
+  }
+  std::vector<double> u(N);
+  for (std::size_t i = 0; i < N; ++i) u[i] = static_cast<double>(i) / static_cast<double>(N - 1);
+  u.back() = 1.0;
+  if (const Json* f = jr::optional_member(t, "factor")) {
+    const Profile factor = profile_from_json(*f, path.member("factor"), base, context);
+    std::vector<double> fv(N);
+    factor.sample(u, fv);
+    for (std::size_t i = 0; i < N; ++i) v[i] *= fv[i];
+  }
+  return Profile::from_samples(u, v, context);
+}
+
+double read_positive(const Json& obj, const jr::JsonPath& path, std::string_view name, double current) {
+  const Json* v = jr::optional_member(obj, name);
+  if (v == nullptr) return current;
+  const double x = jr::get_number(*v, path.member(name));
+  if (!(x > 0.0))
+    throw Error(Errc::InvalidOption, path.member(name).text + " = " + format_number(x) + " must be > 0",
+                path.member(name).where);
+  return x;
+}
+
+double read_probability(const Json& obj, const jr::JsonPath& path, std::string_view name, double current) {
+  const Json* v = jr::optional_member(obj, name);
+  if (v == nullptr) return current;
+  const double x = jr::get_number(*v, path.member(name));
+  if (!(x >= 0.0 && x <= 1.0))
+    throw Error(Errc::InvalidOption, path.member(name).text + " = " + format_number(x) + " must be in [0, 1]",
+                path.member(name).where);
+  return x;
+}
+
+MatchGaSettings read_ga(const Json& g, const jr::JsonPath& path) {
+  jr::reject_unknown_members(g, path,
+                             {"algorithm", "population", "generations", "boost_start", "boost_end",
+                              "crossover_probability", "mutation_probability", "precision", "selection"});
+  MatchGaSettings s;
+  if (const Json* a = jr::optional_member(g, "algorithm")) {
+    const std::string name = jr::get_string(*a, path.member("algorithm"));
+    if (name == "binary")
+      s.algorithm = MatchGaSettings::Algorithm::Binary;
+    else if (name == "real")
+      s.algorithm = MatchGaSettings::Algorithm::Real;
+    else
+      throw Error(Errc::ParseError, "ga.algorithm = \"" + name + "\" must be \"binary\" or \"real\"",
+                  {.field = "ga.algorithm"});
+  }
+  if (const Json* a = jr::optional_member(g, "selection")) {
+    const std::string name = jr::get_string(*a, path.member("selection"));
+    if (name == "roulette")
+      s.selection = optim::Selection::Roulette;
+    else if (name == "tournament")
+      s.selection = optim::Selection::Tournament;
+    else
+      throw Error(Errc::ParseError, "ga.selection = \"" + name + "\" must be \"roulette\" or \"tournament\"",
+                  {.field = "ga.selection"});
+  }
+  if (const Json* v = jr::optional_member(g, "population")) {
+    s.population = static_cast<std::size_t>(jr::get_integer(*v, path.member("population"), 2, 100000));
+    if (s.population % 2 != 0)
+      throw Error(Errc::InvalidOption, "ga.population = " + std::to_string(s.population) + " must be even",
+                  {.field = "ga.population"});
+  }
+  if (const Json* v = jr::optional_member(g, "generations"))
+    s.generations = static_cast<std::size_t>(jr::get_integer(*v, path.member("generations"), 0, 1000000));
+  s.boost_start = read_positive(g, path, "boost_start", s.boost_start);
+  s.boost_end = read_positive(g, path, "boost_end", s.boost_end);
+  s.precision = read_positive(g, path, "precision", s.precision);
+  s.crossover_probability = read_probability(g, path, "crossover_probability", s.crossover_probability);
+  if (jr::optional_member(g, "mutation_probability") != nullptr)
+    s.mutation_probability = read_probability(g, path, "mutation_probability", 0.0);
+  return s;
+}
+
+LmOptions read_lm(const Json& g, const jr::JsonPath& path) {
+  jr::reject_unknown_members(
+      g, path, {"max_iterations", "target_mean", "relative_tolerance", "initial_lambda", "difference_step"});
+  LmOptions o;
+  if (const Json* v = jr::optional_member(g, "max_iterations"))
+    o.max_iterations = static_cast<std::size_t>(jr::get_integer(*v, path.member("max_iterations"), 1, 1000000));
+  if (const Json* v = jr::optional_member(g, "target_mean"))
+    o.target_mean = jr::get_number(*v, path.member("target_mean"));
+  if (const Json* v = jr::optional_member(g, "relative_tolerance"))
+    o.relative_tolerance = jr::get_number(*v, path.member("relative_tolerance"));
+  if (const Json* v = jr::optional_member(g, "initial_lambda"))
+    o.initial_lambda = jr::get_number(*v, path.member("initial_lambda"));
+  if (const Json* v = jr::optional_member(g, "difference_step"))
+    o.difference_step = jr::get_number(*v, path.member("difference_step"));
+  o.validate();
+  return o;
+}
+
+}  // namespace
+
+MatchStudy match_study_from_json(const StudyDocument& document, const std::filesystem::path& base) {
+  const Json& body = document.body;
+  check_members(body, {"points", "lower", "upper", "start_tangent", "end_tangent", "target", "abscissa", "samples",
+                       "method", "ga", "lm"});
+  const jr::JsonPath root = jr::root_path("");
+  MatchStudy study;
+  study.header = document.header;
+  CurvatureMatchSetup& s = study.setup;
+  const jr::PointArray pa = jr::get_points(jr::require_member(body, root, "points"), jr::root_path("points"));
+  s.points = pa.points;
+  s.dimension = pa.dimension;
+  if (s.points.size() < 2)
+    throw Error(Errc::TooFewPoints, "points: at least 2 data points are needed, got " + std::to_string(s.points.size()),
+                {.field = "points"});
+  s.lower = read_offsets(body, "lower", s.points.size(), s.dimension);
+  s.upper = read_offsets(body, "upper", s.points.size(), s.dimension);
+  if (const Json* v = jr::optional_member(body, "start_tangent"))
+    s.start_tangent = read_vector(*v, jr::root_path("start_tangent"), s.dimension);
+  if (const Json* v = jr::optional_member(body, "end_tangent"))
+    s.end_tangent = read_vector(*v, jr::root_path("end_tangent"), s.dimension);
+  if (const Json* v = jr::optional_member(body, "samples"))
+    s.samples = static_cast<std::size_t>(jr::get_integer(*v, jr::root_path("samples"), 0, 1000000));
+  if (s.samples < 2)
+    throw Error(Errc::InvalidArgument, "samples = " + std::to_string(s.samples) + " must be at least 2",
+                {.field = "samples"});
+  if (const Json* v = jr::optional_member(body, "abscissa"))
+    s.abscissa = profile_abscissa_from_name(jr::get_string(*v, jr::root_path("abscissa")), "abscissa");
+  if (const Json* v = jr::optional_member(body, "method"))
+    study.method = match_method_from_name(jr::get_string(*v, jr::root_path("method")), "method");
+  if (const Json* v = jr::optional_member(body, "ga")) study.ga = read_ga(*v, jr::root_path("ga"));
+  if (const Json* v = jr::optional_member(body, "lm")) study.lm = read_lm(*v, jr::root_path("lm"));
+  // Bounds before the target: a bad bound is reported without evaluating anything.
+  s.target = Profile::from_samples(std::vector<double>{0.0, 1.0}, std::vector<double>{0.0, 0.0});
+  s.validate();
+  const Json& t = jr::require_member(body, root, "target");
+  study.target_json = t;
+  const law::Context context{};
+  const jr::JsonPath tpath = jr::root_path("target");
+  if (t.is_object() && t.contains("of_points"))
+    s.target = known_curve_target(t, tpath, s, base, context);
+  else
+    s.target = profile_from_json(t, tpath, base, context);
+  return study;
+}
+
+namespace {
+
+Json point_json(const Vec3& p, int dimension) {
+  Json a = Json::array({p.x, p.y});
+  if (dimension == 3) a.push_back(p.z);
+  return a;
+}
+
+Json points_json(std::span<const Vec3> pts, int dimension) {
+  Json a = Json::array();
+  for (const Vec3& p : pts) a.push_back(point_json(p, dimension));
+  return a;
+}
+
+Json distances_json(const MatchDistances& d) {
+  Json o = Json::object();
+  auto num = [](double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); };
+  o["mean"] = num(d.mean);
+  o["max"] = num(d.max);
+  if (std::isfinite(d.torsion_mean)) o["torsion_mean"] = d.torsion_mean;
+  return o;
+}
+
+}  // namespace
+
+Json match_study_to_json(const MatchStudy& study) {
+  const CurvatureMatchSetup& s = study.setup;
+  Json out = header_to_json(study.header);
+  out["points"] = points_json(s.points, s.dimension);
+  out["lower"] = points_json(s.lower, s.dimension);
+  out["upper"] = points_json(s.upper, s.dimension);
+  if (s.start_tangent) out["start_tangent"] = point_json(*s.start_tangent, s.dimension);
+  if (s.end_tangent) out["end_tangent"] = point_json(*s.end_tangent, s.dimension);
+  out["target"] = study.target_json;
+  out["abscissa"] = std::string(profile_abscissa_name(s.abscissa));
+  out["samples"] = s.samples;
+  out["method"] = std::string(match_method_name(study.method));
+  Json ga = Json::object();
+  ga["algorithm"] = study.ga.algorithm == MatchGaSettings::Algorithm::Binary ? "binary" : "real";
+  ga["selection"] = study.ga.selection == optim::Selection::Roulette ? "roulette" : "tournament";
+  ga["population"] = study.ga.population;
+  ga["generations"] = study.ga.generations;
+  ga["boost_start"] = study.ga.boost_start;
+  ga["boost_end"] = study.ga.boost_end;
+  ga["crossover_probability"] = study.ga.crossover_probability;
+  if (study.ga.mutation_probability) ga["mutation_probability"] = *study.ga.mutation_probability;
+  ga["precision"] = study.ga.precision;
+  out["ga"] = ga;
+  Json lm = Json::object();
+  lm["max_iterations"] = study.lm.max_iterations;
+  lm["target_mean"] = study.lm.target_mean;
+  lm["relative_tolerance"] = study.lm.relative_tolerance;
+  lm["initial_lambda"] = study.lm.initial_lambda;
+  lm["difference_step"] = study.lm.difference_step;
+  out["lm"] = lm;
+  return out;
+}
+
+Json match_result_to_json(const CurvatureMatch& match, const MatchStudy& study, const MatchResult& result) {
+  const int dim = study.setup.dimension;
+  std::vector<Vec3> pts(study.setup.points.size());
+  Json out = Json::object();
+  out["method"] = std::string(match_method_name(study.method));
+  out["variables"] = Json::array();
+  for (const auto& v : match.variables()) out["variables"].push_back(v.name);
+  match.points_from(result.start, pts);
+  out["start_points"] = points_json(pts, dim);
+  match.points_from(result.best, pts);
+  out["best_points"] = points_json(pts, dim);
+  out["before"] = distances_json(result.before);
+  out["after_ga"] = distances_json(result.after_ga);
+  if (result.lm) {
+    out["after_lm"] = distances_json(result.after);
+    Json lm = Json::object();
+    lm["iterations"] = result.lm->iterations;
+    lm["evaluations"] = result.lm->evaluations;
+    lm["termination"] = result.lm->termination;
+    lm["seconds"] = result.lm->seconds;
+    out["lm"] = lm;
+  }
+  out["after"] = distances_json(result.after);
+  Json ga = Json::object();
+  ga["generations"] = result.ga_report.generations;
+  ga["evaluations"] = result.ga_report.evaluations;
+  ga["failed_evaluations"] = result.ga_report.failed_evaluations;
+  ga["termination"] = std::string(optim::termination_name(result.ga_report.termination));
+  ga["seconds"] = result.ga_report.seconds;
+  out["ga"] = ga;
+  out["evaluations"] = result.ga_report.evaluations + (result.lm ? result.lm->evaluations : 0);
+  out["seconds"] = result.seconds;
+  out["curve"] = io::curve_to_json(match.sampler().curve(pts));
+  out["study"] = match_study_to_json(study);
+  return out;
+}
+
+}  // namespace hula::studies

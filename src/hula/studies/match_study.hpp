@@ -1,0 +1,127 @@
+// SPDX-License-Identifier: MIT
+// The "match-curvature" study (thesis 8.2.1, appendix 5; issue 6 items 2-3):
+// settings of the GA and hybrid routes, the run, and the study file kind
+// "match-curvature" (docs/formats.md) read and written as JSON.
+//
+// Methods: "ga" runs Flexo's binary GA (thesis: roulette, single-point
+// crossover, power boost 3 -> 5, appendix 5) or the real-coded GA; "hybrid"
+// runs the same GA and then refine_levenberg_marquardt on the best. A third
+// method is one more MatchMethod value, one name in match_method_from_name and
+// one case in run_curvature_match.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "hula/optim/ga.hpp"
+#include "hula/optim/run_log.hpp"
+#include "hula/studies/curvature_match.hpp"
+#include "hula/studies/hybrid_refine.hpp"
+#include "hula/studies/study_file.hpp"
+
+namespace hula::studies {
+
+/// How the study is solved.
+enum class MatchMethod {
+  /// GA alone (thesis 8.2.1).
+  Ga,
+  /// GA, then Levenberg–Marquardt on the residuals.
+  Hybrid,
+};
+
+/// "ga" | "hybrid".
+[[nodiscard]] std::string_view match_method_name(MatchMethod m) noexcept;
+/// @throws hula::Error(Errc::ParseError) naming `field` and the accepted names for any other name
+[[nodiscard]] MatchMethod match_method_from_name(std::string_view name, std::string_view field);
+
+/// GA settings of the study.
+struct MatchGaSettings {
+  /// Binary-coded (thesis) or real-coded GA.
+  enum class Algorithm {
+    Binary,  ///< solve_binary_ga: the thesis's coding, roulette and power boost
+    Real,    ///< solve_real_ga: SBX and polynomial mutation
+  };
+  Algorithm algorithm = Algorithm::Binary;
+  /// Individuals per generation, even, >= 2. Default 50 (thesis).
+  std::size_t population = 50;
+  /// Generations after the initial one. Default 50 (thesis).
+  std::size_t generations = 50;
+  /// Fitness power at the first and last generation (binary GA; appendix 5: 3 -> 5).
+  double boost_start = 3.0;
+  double boost_end = 5.0;
+  /// Crossover probability. Default 1 (appendix 6.3.2).
+  double crossover_probability = 1.0;
+  /// Mutation probability: per bit (binary) or per variable (real; unset there = 1 / dimension). Default 0.01.
+  std::optional<double> mutation_probability{};
+  /// Binary coding resolution in model units, > 0. Default 1e-3.
+  double precision = 1e-3;
+  /// Roulette (thesis) or tournament selection for the binary GA.
+  optim::Selection selection = optim::Selection::Roulette;
+};
+
+/// A complete study: everything needed to repeat a run.
+struct MatchStudy {
+  /// Envelope: seed and threads.
+  StudyHeader header{};
+  /// Points, bounds, tangents, target, samples.
+  CurvatureMatchSetup setup{};
+  /// ga | hybrid.
+  MatchMethod method = MatchMethod::Ga;
+  /// GA settings.
+  MatchGaSettings ga{};
+  /// Levenberg–Marquardt settings (hybrid).
+  LmOptions lm{};
+  /// The target member as written in the file (echoed in the resolved setup).
+  Json target_json{};
+};
+
+/// Outcome of a run.
+struct MatchResult {
+  /// Start and best design variables (the free coordinates), and the GA's best. For the hybrid method, best is
+  /// the LM result unless that has a larger mean distance (eq. 31) than the GA's best (LM minimises squares).
+  std::vector<double> start{}, ga_best{}, best{};
+  /// Distances at the start, after the GA and at the end.
+  MatchDistances before{}, after_ga{}, after{};
+  /// GA report (generations, evaluations, seconds).
+  optim::RunReport ga_report{};
+  /// Best mean distance so far after each generation (generation 0 first).
+  std::vector<double> convergence{};
+  /// The LM report for the hybrid method.
+  std::optional<LmResult> lm{};
+  /// Every individual of every generation, when asked for.
+  optim::RunLog log{};
+  /// Total wall time in seconds.
+  double seconds = 0.0;
+};
+
+/// Runs the study's method on the problem.
+/// @param match the problem (built from study.setup)
+/// @param study method and settings; header.seed and header.threads are used
+/// @param keep_log collect every individual into MatchResult::log
+/// @throws hula::Error(Errc::InvalidOption) for invalid GA or LM settings (before any evaluation)
+/// @throws hula::Error(Errc::NumericalFailure) if no candidate could be evaluated
+[[nodiscard]] MatchResult run_curvature_match(const CurvatureMatch& match, const MatchStudy& study,
+                                              bool keep_log = false);
+
+/// Reads a "match-curvature" study (docs/formats.md). Everything is checked before any run.
+/// @param document the parsed study file (parse_study_json with kind "match-curvature")
+/// @param base directory of the study file (relative CSV paths)
+/// @throws hula::Error(Errc::ParseError) naming the member for unknown members, wrong types and names
+/// @throws hula::Error(Errc::NonFiniteInput / InvalidArgument / TooFewPoints) as CurvatureMatchSetup::validate
+///   and for a target that is not finite at a sample
+/// @throws hula::Error(Errc::InvalidOption) naming `ga.<field>` or `lm.<field>` for settings out of range
+[[nodiscard]] MatchStudy match_study_from_json(const StudyDocument& document, const std::filesystem::path& base);
+
+/// The resolved study as a study file (seed included), so the run can be repeated exactly.
+[[nodiscard]] Json match_study_to_json(const MatchStudy& study);
+
+/// The run's report: start/best points, distances before/after (after GA / after LM for hybrid), evaluations,
+/// time, the curve as io curve JSON and the resolved setup under "study".
+[[nodiscard]] Json match_result_to_json(const CurvatureMatch& match, const MatchStudy& study,
+                                        const MatchResult& result);
+
+}  // namespace hula::studies

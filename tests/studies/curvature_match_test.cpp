@@ -1,0 +1,218 @@
+// SPDX-License-Identifier: MIT
+#include "hula/studies/curvature_match.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "hula/core/rng.hpp"
+#include "hula/diffgeom/frenet.hpp"
+#include "hula/nurbs/arc_length.hpp"
+#include "hula/nurbs/interpolate.hpp"
+#include "hula/testing/counting_allocator.hpp"
+#include "hula/testing/expect_error.hpp"
+
+namespace {
+
+using hula::Errc;
+using hula::Vec3;
+using hula::studies::CurvatureMatch;
+using hula::studies::CurvatureMatchSetup;
+using hula::studies::Profile;
+using hula::studies::SplineProfileSampler;
+
+std::vector<double> uniform(std::size_t n) {
+  std::vector<double> u(n);
+  for (std::size_t i = 0; i < n; ++i) u[i] = static_cast<double>(i) / static_cast<double>(n - 1);
+  return u;
+}
+
+// Checks the sampler's κ and τ against the NURBS interpolant (interpolate_cubic, Piegl-Tiller basis) and the
+// Frenet code of diffgeom: two independent implementations of the same spline and the same formulas.
+void expect_matches_nurbs(const std::vector<Vec3>& pts, int dim, std::optional<Vec3> start, std::optional<Vec3> end) {
+  const auto u = uniform(200);
+  const SplineProfileSampler sampler(pts.size(), dim, u, start, end);
+  SplineProfileSampler::Workspace ws;
+  std::vector<double> kappa(u.size()), tau(u.size());
+  ASSERT_TRUE(sampler.sample(pts, ws, kappa, tau));
+  const hula::nurbs::NurbsCurve curve = sampler.curve(pts);
+  std::vector<double> k_ref(u.size()), t_ref(u.size());
+  hula::diffgeom::curvature_torsion(curve, u, k_ref, t_ref);
+  for (std::size_t i = 0; i < u.size(); ++i) {
+    EXPECT_NEAR(kappa[i], k_ref[i], 1e-12 * std::max(1.0, k_ref[i])) << "u = " << u[i];
+    if (dim == 3 && std::isfinite(tau[i]) && std::isfinite(t_ref[i]) && k_ref[i] > 1e-6) {
+      EXPECT_NEAR(tau[i], t_ref[i], 1e-12 * std::max(1.0, std::fabs(t_ref[i]))) << "u = " << u[i];
+    }
+  }
+}
+
+// The thesis's test curve (8.2.1) and a space S-bend (Example 4), natural and clamped ends.
+TEST(SplineProfileSampler, MatchesNurbsInterpolantAndFrenetTo1e12) {
+  expect_matches_nurbs({{0, 0, 0}, {16, 20, 0}, {20, 30, 0}, {40, 0, 0}}, 2, std::nullopt, std::nullopt);
+  expect_matches_nurbs({{0, 0, 0}, {5, 20, 0}, {40, 0, 0}}, 2, Vec3{1, 1, 0}, std::nullopt);
+  expect_matches_nurbs({{0, 0, 0}, {10, 10, 0}, {20, -10, 2}, {40, 0, 8}}, 3, std::nullopt, std::nullopt);
+  expect_matches_nurbs({{0, 0, 0}, {10, 10, 0}, {20, -10, 2}, {30, 4, 5}, {40, 0, 8}}, 3, Vec3{1, 0, 0},
+                       Vec3{0, -1, 1});
+  expect_matches_nurbs({{0, 0, 0}, {3, 1, 0}}, 2, Vec3{0, 1, 0}, std::nullopt);
+}
+
+// Arc-length abscissa: κ where the arc length is u_i L, checked against the NURBS curve's parameter_at_length
+// (adaptive quadrature to 1e-12) and diffgeom's curvature; to 1e-10.
+TEST(SplineProfileSampler, ArcLengthAbscissaMatchesNurbsArcLength) {
+  const std::vector<Vec3> pts = {{0, 0, 0}, {10, 10, 0}, {20, -10, 2}, {30, 4, 5}, {40, 0, 8}};
+  const auto u = uniform(101);
+  const SplineProfileSampler sampler(pts.size(), 3, u, Vec3{1, 0, 0}, std::nullopt,
+                                     hula::studies::ProfileAbscissa::ArcLength);
+  SplineProfileSampler::Workspace ws;
+  std::vector<double> kappa(u.size());
+  ASSERT_TRUE(sampler.sample(pts, ws, kappa));
+  const long before = hula::testing::allocation_count();
+  ASSERT_TRUE(sampler.sample(pts, ws, kappa));
+  EXPECT_EQ(hula::testing::allocation_count(), before);  // no allocation in the arc-length path either
+  const auto curve = sampler.curve(pts);
+  const double length = hula::nurbs::arc_length(curve);
+  std::vector<double> ts(u.size()), k_ref(u.size()), t_ref(u.size());
+  for (std::size_t i = 0; i < u.size(); ++i) ts[i] = hula::nurbs::parameter_at_length(curve, u[i] * length);
+  hula::diffgeom::curvature_torsion(curve, ts, k_ref, t_ref);
+  for (std::size_t i = 0; i < u.size(); ++i) EXPECT_NEAR(kappa[i], k_ref[i], 1e-10) << "u = " << u[i];
+  // Not the parameter profile: the abscissae differ in the interior.
+  const auto by_parameter = hula::studies::curvature_profile_of(pts, 3, 101, Vec3{1, 0, 0});
+  EXPECT_GT(std::fabs(by_parameter[30] - kappa[30]), 1e-4);
+}
+
+// A straight line has κ = 0 everywhere; a planar spline has τ = 0.
+TEST(SplineProfileSampler, CollinearPointsHaveZeroCurvature) {
+  const SplineProfileSampler sampler(4, 2, uniform(50));
+  SplineProfileSampler::Workspace ws;
+  std::vector<double> kappa(50), tau(50);
+  ASSERT_TRUE(sampler.sample(std::vector<Vec3>{{0, 0, 0}, {1, 2, 0}, {3, 6, 0}, {4, 8, 0}}, ws, kappa, tau));
+  for (std::size_t i = 0; i < 50; ++i) {
+    EXPECT_NEAR(kappa[i], 0.0, 1e-15);
+    EXPECT_EQ(tau[i], 0.0);
+  }
+}
+
+// Coincident points are a failed evaluation (NaN), never an exception in the GA's hot loop.
+TEST(SplineProfileSampler, CoincidentPointsFailWithNaN) {
+  const SplineProfileSampler sampler(3, 2, uniform(10));
+  SplineProfileSampler::Workspace ws;
+  std::vector<double> kappa(10);
+  EXPECT_FALSE(sampler.sample(std::vector<Vec3>{{0, 0, 0}, {0, 0, 0}, {1, 1, 0}}, ws, kappa));
+  EXPECT_TRUE(std::isnan(kappa[3]));
+  HULA_EXPECT_ERROR(SplineProfileSampler(1, 2, uniform(10)), Errc::TooFewPoints, "1");
+  HULA_EXPECT_ERROR(SplineProfileSampler(3, 2, {0.0, 1.5}), Errc::InvalidArgument, "samples[1]");
+  HULA_EXPECT_ERROR(SplineProfileSampler(3, 2, uniform(3), Vec3{0, 0, 0}), Errc::InvalidArgument, "start_tangent");
+}
+
+CurvatureMatchSetup thesis_test_setup() {
+  CurvatureMatchSetup s;
+  s.points = {{0, 0, 0}, {10, 28, 0}, {23, 22, 0}, {40, 0, 0}};
+  s.dimension = 2;
+  s.lower = {{0, 0, 0}, {5, 5, 0}, {5, 5, 0}, {5, 5, 0}};
+  s.upper = s.lower;
+  const auto k =
+      hula::studies::curvature_profile_of(std::vector<Vec3>{{0, 0, 0}, {16, 20, 0}, {20, 30, 0}, {40, 0, 0}}, 2, 200);
+  s.target = Profile::from_samples(uniform(200), k);
+  return s;
+}
+
+// Fitness evaluation of "interpolate a cubic through the points, sample κ at 200 parameters, compare" allocates
+// nothing once the workspace is warm (DESIGN: no allocation in hot loops).
+TEST(CurvatureMatch, EvaluationDoesNotAllocate) {
+  const CurvatureMatch match(thesis_test_setup());
+  SplineProfileSampler::Workspace ws;
+  std::vector<Vec3> pts(4);
+  std::vector<double> kappa(200);
+  std::vector<double> x = match.start_variables();
+  (void)match.mean_distance(x, ws, pts, kappa);
+  const long before = hula::testing::allocation_count();
+  double sum = 0.0;
+  for (int i = 0; i < 100; ++i) {
+    x[0] += 0.01;
+    sum += match.mean_distance(x, ws, pts, kappa);
+  }
+  EXPECT_EQ(hula::testing::allocation_count(), before);
+  EXPECT_GT(sum, 0.0);
+  // The problem's evaluate (thread-local buffers) does not allocate either once warm.
+  const hula::optim::Problem p = match.problem();
+  double value = 0.0;
+  p.evaluate(x, std::span<double>(&value, 1));
+  const long before_problem = hula::testing::allocation_count();
+  for (int i = 0; i < 100; ++i) p.evaluate(x, std::span<double>(&value, 1));
+  EXPECT_EQ(hula::testing::allocation_count(), before_problem);
+}
+
+// The variables are the free coordinates with bounds [value - lower, value + upper] (appendix 5).
+TEST(CurvatureMatch, VariablesAreFreeCoordinatesWithOffsetBounds) {
+  const CurvatureMatch match(thesis_test_setup());
+  const auto v = match.variables(1e-3);
+  ASSERT_EQ(v.size(), 6U);
+  EXPECT_EQ(v[0].name, "points[1].x");
+  EXPECT_EQ(v[0].lower, 5.0);
+  EXPECT_EQ(v[0].upper, 15.0);
+  EXPECT_EQ(v[5].name, "points[3].y");
+  EXPECT_EQ(v[5].precision, 1e-3);
+  // The known curve's own points give distance 0 exactly.
+  const std::vector<double> truth = {16, 20, 20, 30, 40, 0};
+  EXPECT_NEAR(match.distances(truth).mean, 0.0, 1e-15);
+  EXPECT_GT(match.distances(match.start_variables()).mean, 0.01);
+}
+
+// Bad setups are refused before any evaluation, naming the member at fault.
+TEST(CurvatureMatch, RejectsBadSetupsNamingTheMember) {
+  auto s = thesis_test_setup();
+  s.lower[0].x = 1.0;
+  HULA_EXPECT_ERROR(CurvatureMatch{s}, Errc::InvalidArgument, "lower[0].x");
+  s = thesis_test_setup();
+  s.upper[2].y = -1.0;
+  HULA_EXPECT_ERROR(CurvatureMatch{s}, Errc::InvalidArgument, "upper[2].y = -1");
+  s = thesis_test_setup();
+  s.upper[2].z = 1.0;
+  HULA_EXPECT_ERROR(CurvatureMatch{s}, Errc::InvalidArgument, "planar");
+  s = thesis_test_setup();
+  s.samples = 0;
+  HULA_EXPECT_ERROR(CurvatureMatch{s}, Errc::InvalidArgument, "samples = 0");
+  s = thesis_test_setup();
+  s.points[2].x = std::nan("");
+  HULA_EXPECT_ERROR(CurvatureMatch{s}, Errc::NonFiniteInput, "points[2].x");
+  s = thesis_test_setup();
+  s.lower.pop_back();
+  HULA_EXPECT_ERROR(CurvatureMatch{s}, Errc::InvalidArgument, "lower has 3 entries");
+}
+
+// Curvature and torsion distances for the two-objective study: zero at the known space curve, both positive
+// elsewhere, and no allocation per evaluation.
+TEST(CurvatureMatch, CurvatureAndTorsionDistancesForTheTwoObjectiveStudy) {
+  const std::vector<Vec3> truth = {{0, 0, 0}, {10, 10, 0}, {20, -10, 2}, {30, 4, 5}, {40, 0, 8}};
+  CurvatureMatchSetup s;
+  s.dimension = 3;
+  s.points = truth;
+  s.points[2].z += 1.0;
+  s.lower.assign(truth.size(), Vec3{2, 2, 2});
+  s.lower[0] = Vec3{};
+  s.upper = s.lower;
+  const SplineProfileSampler sampler(truth.size(), 3, uniform(200));
+  SplineProfileSampler::Workspace ws;
+  std::vector<double> kappa(200), tau(200);
+  ASSERT_TRUE(sampler.sample(truth, ws, kappa, tau));
+  for (double& t : tau) t = std::isfinite(t) ? t : 0.0;
+  s.target = Profile::from_samples(uniform(200), kappa);
+  s.torsion_target = Profile::from_samples(uniform(200), tau);
+  const CurvatureMatch match(s);
+  std::vector<double> x = match.start_variables();
+  const auto far = match.distances(x);
+  EXPECT_GT(far.mean, 1e-3);
+  EXPECT_GT(far.torsion_mean, 1e-3);
+  x[5] -= 1.0;  // points[2].z back to the known curve's value
+  EXPECT_EQ(match.variables()[5].name, "points[2].z");
+  std::vector<Vec3> pts(truth.size());
+  const auto at = match.mean_distances(x, ws, pts, kappa, tau);
+  EXPECT_NEAR(at.mean, 0.0, 1e-15);
+  EXPECT_NEAR(at.torsion_mean, 0.0, 1e-14);
+  const long before = hula::testing::allocation_count();
+  for (int i = 0; i < 50; ++i) (void)match.mean_distances(x, ws, pts, kappa, tau);
+  EXPECT_EQ(hula::testing::allocation_count(), before);
+}
+
+}  // namespace
