@@ -8,6 +8,7 @@
 
 #include "hula/core/rng.hpp"
 #include "hula/diffgeom/frenet.hpp"
+#include "hula/nurbs/arc_length.hpp"
 #include "hula/nurbs/interpolate.hpp"
 #include "hula/testing/counting_allocator.hpp"
 #include "hula/testing/expect_error.hpp"
@@ -54,6 +55,30 @@ TEST(SplineProfileSampler, MatchesNurbsInterpolantAndFrenetTo1e12) {
   expect_matches_nurbs({{0, 0, 0}, {10, 10, 0}, {20, -10, 2}, {30, 4, 5}, {40, 0, 8}}, 3, Vec3{1, 0, 0},
                        Vec3{0, -1, 1});
   expect_matches_nurbs({{0, 0, 0}, {3, 1, 0}}, 2, Vec3{0, 1, 0}, std::nullopt);
+}
+
+// Arc-length abscissa: κ where the arc length is u_i L, checked against the NURBS curve's parameter_at_length
+// (adaptive quadrature to 1e-12) and diffgeom's curvature; to 1e-10.
+TEST(SplineProfileSampler, ArcLengthAbscissaMatchesNurbsArcLength) {
+  const std::vector<Vec3> pts = {{0, 0, 0}, {10, 10, 0}, {20, -10, 2}, {30, 4, 5}, {40, 0, 8}};
+  const auto u = uniform(101);
+  const SplineProfileSampler sampler(pts.size(), 3, u, Vec3{1, 0, 0}, std::nullopt,
+                                     hula::studies::ProfileAbscissa::ArcLength);
+  SplineProfileSampler::Workspace ws;
+  std::vector<double> kappa(u.size());
+  ASSERT_TRUE(sampler.sample(pts, ws, kappa));
+  const long before = hula::testing::allocation_count();
+  ASSERT_TRUE(sampler.sample(pts, ws, kappa));
+  EXPECT_EQ(hula::testing::allocation_count(), before);  // no allocation in the arc-length path either
+  const auto curve = sampler.curve(pts);
+  const double length = hula::nurbs::arc_length(curve);
+  std::vector<double> ts(u.size()), k_ref(u.size()), t_ref(u.size());
+  for (std::size_t i = 0; i < u.size(); ++i) ts[i] = hula::nurbs::parameter_at_length(curve, u[i] * length);
+  hula::diffgeom::curvature_torsion(curve, ts, k_ref, t_ref);
+  for (std::size_t i = 0; i < u.size(); ++i) EXPECT_NEAR(kappa[i], k_ref[i], 1e-10) << "u = " << u[i];
+  // Not the parameter profile: the abscissae differ in the interior.
+  const auto by_parameter = hula::studies::curvature_profile_of(pts, 3, 101, Vec3{1, 0, 0});
+  EXPECT_GT(std::fabs(by_parameter[30] - kappa[30]), 1e-4);
 }
 
 // A straight line has κ = 0 everywhere; a planar spline has τ = 0.
@@ -154,6 +179,40 @@ TEST(CurvatureMatch, RejectsBadSetupsNamingTheMember) {
   s = thesis_test_setup();
   s.lower.pop_back();
   HULA_EXPECT_ERROR(CurvatureMatch{s}, Errc::InvalidArgument, "lower has 3 entries");
+}
+
+// Curvature and torsion distances for the two-objective study: zero at the known space curve, both positive
+// elsewhere, and no allocation per evaluation.
+TEST(CurvatureMatch, CurvatureAndTorsionDistancesForTheTwoObjectiveStudy) {
+  const std::vector<Vec3> truth = {{0, 0, 0}, {10, 10, 0}, {20, -10, 2}, {30, 4, 5}, {40, 0, 8}};
+  CurvatureMatchSetup s;
+  s.dimension = 3;
+  s.points = truth;
+  s.points[2].z += 1.0;
+  s.lower.assign(truth.size(), Vec3{2, 2, 2});
+  s.lower[0] = Vec3{};
+  s.upper = s.lower;
+  const SplineProfileSampler sampler(truth.size(), 3, uniform(200));
+  SplineProfileSampler::Workspace ws;
+  std::vector<double> kappa(200), tau(200);
+  ASSERT_TRUE(sampler.sample(truth, ws, kappa, tau));
+  for (double& t : tau) t = std::isfinite(t) ? t : 0.0;
+  s.target = Profile::from_samples(uniform(200), kappa);
+  s.torsion_target = Profile::from_samples(uniform(200), tau);
+  const CurvatureMatch match(s);
+  std::vector<double> x = match.start_variables();
+  const auto far = match.distances(x);
+  EXPECT_GT(far.mean, 1e-3);
+  EXPECT_GT(far.torsion_mean, 1e-3);
+  x[5] -= 1.0;  // points[2].z back to the known curve's value
+  EXPECT_EQ(match.variables()[5].name, "points[2].z");
+  std::vector<Vec3> pts(truth.size());
+  const auto at = match.mean_distances(x, ws, pts, kappa, tau);
+  EXPECT_NEAR(at.mean, 0.0, 1e-15);
+  EXPECT_NEAR(at.torsion_mean, 0.0, 1e-14);
+  const long before = hula::testing::allocation_count();
+  for (int i = 0; i < 50; ++i) (void)match.mean_distances(x, ws, pts, kappa, tau);
+  EXPECT_EQ(hula::testing::allocation_count(), before);
 }
 
 }  // namespace

@@ -113,6 +113,16 @@ struct Command {
 [[nodiscard]] Command add_demo(CLI::App& app);
 /// `hula optimise`: a GA, NSGA-II or pagmo2 algorithm on a test problem or problem file.
 [[nodiscard]] Command add_optimise(CLI::App& app);
+/// `hula fair-knots`: knot-vector studies of thesis 7.2-7.4 from a "fair-knots" study file.
+[[nodiscard]] Command add_fair_knots(CLI::App& app);
+/// `hula fin-compound`: prescribed compound fins (projection technique, Combescure transform).
+[[nodiscard]] Command add_fin_compound(CLI::App& app);
+/// `hula edit-projection`: rebuild a 3-D curve from an edited projection.
+[[nodiscard]] Command add_edit_projection(CLI::App& app);
+/// `hula hermite`: Hermite editing of a spline's tangent and normal handles.
+[[nodiscard]] Command add_hermite(CLI::App& app);
+/// `hula match-curvature`: a prescribed curvature profile matched over data points (GA or hybrid).
+[[nodiscard]] Command add_match_curvature(CLI::App& app);
 /// Runs the demo and prints its JSON.
 int run_demo();
 

@@ -36,8 +36,9 @@ Vec3 checked_direction(const Vec3& d, const char* field) {
 }  // namespace
 
 SplineProfileSampler::SplineProfileSampler(std::size_t point_count, int dimension, std::vector<double> sample_u,
-                                           std::optional<Vec3> start_tangent, std::optional<Vec3> end_tangent)
-    : n_(point_count), dim_(dimension), u_(std::move(sample_u)) {
+                                           std::optional<Vec3> start_tangent, std::optional<Vec3> end_tangent,
+                                           ProfileAbscissa abscissa)
+    : n_(point_count), dim_(dimension), u_(std::move(sample_u)), abscissa_(abscissa) {
   if (n_ < 2)
     throw Error(Errc::TooFewPoints, "the spline needs at least 2 points, got " + std::to_string(n_),
                 {.field = "points"});
@@ -79,6 +80,7 @@ bool SplineProfileSampler::sample(std::span<const Vec3> points, Workspace& ws, s
   grow(ws.rhs, 3 * n);
   grow(ws.moments, 3 * n);
   grow(ws.coefficients, 9 * n);
+  grow(ws.span_length, n);
   auto fail = [&] {
     std::fill(kappa.begin(), kappa.end(), kNaN);
     std::fill(tau.begin(), tau.end(), kNaN);
@@ -162,13 +164,74 @@ bool SplineProfileSampler::sample(std::span<const Vec3> points, Workspace& ws, s
       q[1] = 0.5 * m0;
       q[2] = (m1 - m0) / (6.0 * h[k]);
     }
+  // |C'(t_k + w)| on span k.
+  auto speed = [&](std::size_t span, double w) {
+    const double* q = coef + 9 * span;
+    double v2 = 0.0;
+    for (std::size_t c = 0; c < D; ++c) {
+      const double d = q[3 * c] + w * (2.0 * q[3 * c + 1] + 3.0 * q[3 * c + 2] * w);
+      v2 += d * d;
+    }
+    return std::sqrt(v2);
+  };
+  // ∫_a^b |C'(t_k + v)| dv by 8-point Gauss–Legendre (nodes and weights on [-1, 1]).
+  static constexpr double kGx[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
+  static constexpr double kGw[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
+  auto integral = [&](std::size_t span, double a, double b) {
+    const double mid = 0.5 * (a + b), half = 0.5 * (b - a);
+    double sum = 0.0;
+    for (int j = 0; j < 4; ++j) sum += kGw[j] * (speed(span, mid - half * kGx[j]) + speed(span, mid + half * kGx[j]));
+    return half * sum;
+  };
+  // Span lengths on kPanels panels (the speed of a clamped end span can vary by orders of magnitude); between
+  // consecutive samples a single 8-point rule on the short interval is enough.
+  constexpr int kPanels = 8;
+  const bool by_length = abscissa_ == ProfileAbscissa::ArcLength;
+  double* S = ws.span_length.data();  // cumulative length at t_k
+  if (by_length) {
+    S[0] = 0.0;
+    for (std::size_t j = 0; j + 1 < n; ++j) {
+      const double p = h[j] / kPanels;
+      double len = 0.0;
+      for (int panel = 0; panel < kPanels; ++panel) len += integral(j, p * panel, p * (panel + 1));
+      S[j + 1] = S[j] + len;
+    }
+    if (!(S[n - 1] > 0.0) || !std::isfinite(S[n - 1])) return fail();
+  }
   // Samples: the abscissae are sorted, so the span only moves forward.
   std::size_t k = 0;
+  double w_base = 0.0, g_base = 0.0;  // last arc-length sample in span k: local parameter and length from t_k
   const bool want_tau = !tau.empty();
   for (std::size_t i = 0; i < u_.size(); ++i) {
-    const double u = u_[i];
-    while (k + 2 < n && u > t[k + 1]) ++k;
-    const double w = u - t[k];
+    double w = 0.0;
+    if (by_length) {
+      const double s = u_[i] * S[n - 1];
+      while (k + 2 < n && s > S[k + 1]) {
+        ++k;
+        w_base = g_base = 0.0;
+      }
+      // Newton on g_base + ∫_{w_base}^{w} |C'| = s - S[k], safeguarded to the span.
+      const double goal = s - S[k];
+      const double span_len = S[k + 1] - S[k];
+      // Start from the last sample, one explicit step along the speed there (or proportionally if it vanishes).
+      const double v0 = speed(k, w_base);
+      w = v0 > 0.0 ? w_base + (goal - g_base) / v0 : (span_len > 0.0 ? h[k] * goal / span_len : 0.0);
+      w = std::clamp(w, 0.0, h[k]);
+      for (int it = 0; it < 20; ++it) {
+        const double v = speed(k, w);
+        if (!(v > 0.0)) break;
+        const double step = (g_base + integral(k, w_base, w) - goal) / v;
+        w = std::clamp(w - step, 0.0, h[k]);
+        // Relative 1e-13 in the local parameter: far below the matching's needs, and reachable in rounding.
+        if (std::fabs(step) <= 1e-13 * h[k]) break;
+      }
+      w_base = w;
+      g_base = goal;
+    } else {
+      const double u = u_[i];
+      while (k + 2 < n && u > t[k + 1]) ++k;
+      w = u - t[k];
+    }
     const double* q = coef + 9 * k;
     double d1[3] = {0.0, 0.0, 0.0}, d2[3] = {0.0, 0.0, 0.0}, d3[3] = {0.0, 0.0, 0.0};
     for (std::size_t c = 0; c < D; ++c) {
@@ -276,14 +339,18 @@ std::vector<double> uniform_abscissae(std::size_t samples) {
 SplineProfileSampler make_sampler(const CurvatureMatchSetup& s) {
   s.validate();
   return SplineProfileSampler(s.points.size(), s.dimension, uniform_abscissae(s.samples), s.start_tangent,
-                              s.end_tangent);
+                              s.end_tangent, s.abscissa);
 }
 
 }  // namespace
 
 CurvatureMatch::CurvatureMatch(CurvatureMatchSetup setup) : setup_(std::move(setup)), sampler_(make_sampler(setup_)) {
   target_.resize(setup_.samples);
-  setup_.target->sample(sampler_.abscissae(), target_);
+  try {
+    setup_.target->sample(sampler_.abscissae(), target_);
+  } catch (const Error& e) {
+    throw Error(e.code(), "target: " + e.message(), {.field = "target"});
+  }
   for (std::size_t i = 0; i < target_.size(); ++i)
     if (!std::isfinite(target_[i]))
       throw Error(
@@ -292,7 +359,11 @@ CurvatureMatch::CurvatureMatch(CurvatureMatchSetup setup) : setup_(std::move(set
           {.field = "target", .index = i});
   if (setup_.torsion_target) {
     torsion_target_.resize(setup_.samples);
-    setup_.torsion_target->sample(sampler_.abscissae(), torsion_target_);
+    try {
+      setup_.torsion_target->sample(sampler_.abscissae(), torsion_target_);
+    } catch (const Error& e) {
+      throw Error(e.code(), "torsion_target: " + e.message(), {.field = "torsion_target"});
+    }
   }
   for (std::size_t i = 0; i < setup_.points.size(); ++i)
     for (std::size_t c = 0; c < static_cast<std::size_t>(setup_.dimension); ++c)
@@ -341,13 +412,13 @@ double CurvatureMatch::mean_distance(std::span<const double> x, SplineProfileSam
   return sum / static_cast<double>(kappa.size());
 }
 
-MatchDistances CurvatureMatch::distances(std::span<const double> x) const {
-  SplineProfileSampler::Workspace ws;
-  std::vector<Vec3> points(setup_.points.size());
-  std::vector<double> kappa(setup_.samples), tau(setup_.samples);
+MatchDistances CurvatureMatch::mean_distances(std::span<const double> x, SplineProfileSampler::Workspace& ws,
+                                              std::span<Vec3> points, std::span<double> kappa,
+                                              std::span<double> tau) const {
   points_from(x, points);
+  const bool want_tau = !torsion_target_.empty();
   MatchDistances d{kNaN, kNaN, kNaN};
-  if (!sampler_.sample(points, ws, kappa, tau)) return d;
+  if (!sampler_.sample(points, ws, kappa, want_tau ? tau : std::span<double>{})) return d;
   d.mean = d.max = 0.0;
   for (std::size_t i = 0; i < kappa.size(); ++i) {
     const double e = std::fabs(kappa[i] - target_[i]);
@@ -355,7 +426,7 @@ MatchDistances CurvatureMatch::distances(std::span<const double> x) const {
     d.max = std::max(d.max, e);
   }
   d.mean /= static_cast<double>(kappa.size());
-  if (!torsion_target_.empty()) {
+  if (want_tau) {
     double sum = 0.0;
     std::size_t count = 0;
     for (std::size_t i = 0; i < tau.size(); ++i)
@@ -366,6 +437,13 @@ MatchDistances CurvatureMatch::distances(std::span<const double> x) const {
     d.torsion_mean = count > 0 ? sum / static_cast<double>(count) : kNaN;
   }
   return d;
+}
+
+MatchDistances CurvatureMatch::distances(std::span<const double> x) const {
+  SplineProfileSampler::Workspace ws;
+  std::vector<Vec3> points(setup_.points.size());
+  std::vector<double> kappa(setup_.samples), tau(setup_.samples);
+  return mean_distances(x, ws, points, kappa, tau);
 }
 
 std::vector<double> CurvatureMatch::curvature_samples(std::span<const double> x) const {
@@ -395,11 +473,13 @@ optim::Problem CurvatureMatch::problem(double precision) const {
 }
 
 std::vector<double> curvature_profile_of(std::span<const Vec3> points, int dimension, std::size_t samples,
-                                         std::optional<Vec3> start_tangent, std::optional<Vec3> end_tangent) {
+                                         std::optional<Vec3> start_tangent, std::optional<Vec3> end_tangent,
+                                         ProfileAbscissa abscissa) {
   if (samples < 2)
     throw Error(Errc::InvalidArgument, "samples = " + std::to_string(samples) + " must be at least 2",
                 {.field = "samples"});
-  const SplineProfileSampler sampler(points.size(), dimension, uniform_abscissae(samples), start_tangent, end_tangent);
+  const SplineProfileSampler sampler(points.size(), dimension, uniform_abscissae(samples), start_tangent, end_tangent,
+                                     abscissa);
   SplineProfileSampler::Workspace ws;
   std::vector<double> kappa(samples);
   if (!sampler.sample(points, ws, kappa))

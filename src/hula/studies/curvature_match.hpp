@@ -36,7 +36,7 @@ class SplineProfileSampler {
  public:
   /// Reused buffers of one thread; sized on first use, never shrunk.
   struct Workspace {
-    std::vector<double> t, h, diag, upper, rhs, moments;
+    std::vector<double> t, h, diag, upper, rhs, moments, span_length;
     std::vector<double> coefficients;  // per span and coordinate: b, c, d
   };
 
@@ -45,13 +45,15 @@ class SplineProfileSampler {
   /// @param sample_u abscissae in [0, 1], non-decreasing
   /// @param start_tangent fixed start tangent direction (clamped start, |C'(0)| = total chord length); unset = natural
   /// @param end_tangent fixed end tangent direction, as start_tangent; unset = natural
+  /// @param abscissa Parameter: κ at t = u_i; ArcLength: κ where the arc length is u_i × the curve's length
+  ///   (8-point Gauss–Legendre per span and Newton's method: about 10 times slower)
   /// @throws hula::Error(Errc::TooFewPoints) if point_count < 2
   /// @throws hula::Error(Errc::InvalidArgument) for a dimension other than 2 or 3, abscissae outside [0, 1] or
   ///   decreasing (naming the index), or a zero tangent direction
   /// @throws hula::Error(Errc::NonFiniteInput) for a non-finite abscissa or tangent
   SplineProfileSampler(std::size_t point_count, int dimension, std::vector<double> sample_u,
-                       std::optional<Vec3> start_tangent = std::nullopt,
-                       std::optional<Vec3> end_tangent = std::nullopt);
+                       std::optional<Vec3> start_tangent = std::nullopt, std::optional<Vec3> end_tangent = std::nullopt,
+                       ProfileAbscissa abscissa = ProfileAbscissa::Parameter);
 
   /// Number of data points the sampler expects.
   [[nodiscard]] std::size_t point_count() const noexcept { return n_; }
@@ -59,6 +61,8 @@ class SplineProfileSampler {
   [[nodiscard]] int dimension() const noexcept { return dim_; }
   /// The sample abscissae u_i.
   [[nodiscard]] const std::vector<double>& abscissae() const noexcept { return u_; }
+  /// What the abscissae measure.
+  [[nodiscard]] ProfileAbscissa abscissa() const noexcept { return abscissa_; }
   /// The unit start / end tangent directions, if fixed.
   [[nodiscard]] const std::optional<Vec3>& start_tangent() const noexcept { return start_; }
   [[nodiscard]] const std::optional<Vec3>& end_tangent() const noexcept { return end_; }
@@ -85,6 +89,7 @@ class SplineProfileSampler {
   int dim_;
   std::vector<double> u_;
   std::optional<Vec3> start_, end_;
+  ProfileAbscissa abscissa_;
 };
 
 /// The setup of a curvature-matching study.
@@ -107,6 +112,8 @@ struct CurvatureMatchSetup {
   std::optional<Profile> torsion_target{};
   /// Samples N >= 2. Default 200.
   std::size_t samples = 200;
+  /// Where the samples are: at the parameter (thesis, default) or at the normalised arc length.
+  ProfileAbscissa abscissa = ProfileAbscissa::Parameter;
 
   /// @throws hula::Error(Errc::TooFewPoints) if fewer than 2 points
   /// @throws hula::Error(Errc::InvalidArgument) naming `lower[i]`/`upper[i]` (and the coordinate) for a count
@@ -157,11 +164,19 @@ class CurvatureMatch {
   /// Residuals r_i = κ(u_i) − κ*(u_i) of x; returns false if degenerate.
   bool residuals(std::span<const double> x, SplineProfileSampler::Workspace& ws, std::span<Vec3> points,
                  std::span<double> r) const;
+  /// Curvature and torsion distances of x in one pass, for the two-objective (NSGA-II) study: no allocation once
+  /// `ws` is warm. torsion_mean is NaN without a torsion target (τ is then not computed) or if τ is undefined at
+  /// every sample; all three are NaN if the spline is degenerate.
+  /// @param points, kappa, tau scratch of point count and sampler().abscissae().size() values
+  [[nodiscard]] MatchDistances mean_distances(std::span<const double> x, SplineProfileSampler::Workspace& ws,
+                                              std::span<Vec3> points, std::span<double> kappa,
+                                              std::span<double> tau) const;
   /// All distances of x (allocates; for reports).
   [[nodiscard]] MatchDistances distances(std::span<const double> x) const;
   /// κ(u_i) of x (allocates; for reports and figures).
   [[nodiscard]] std::vector<double> curvature_samples(std::span<const double> x) const;
-  /// The single-objective Flexo problem "mean curvature distance"; evaluation uses one workspace per thread.
+  /// The single-objective Flexo problem "mean curvature distance"; evaluation uses one workspace per thread and
+  /// refers to this object, which must outlive the problem.
   /// @param precision as variables()
   [[nodiscard]] optim::Problem problem(double precision = 0.0) const;
 
@@ -181,6 +196,7 @@ class CurvatureMatch {
 /// @throws hula::Error as SplineProfileSampler, and Errc::CoincidentPoints if two consecutive points coincide
 [[nodiscard]] std::vector<double> curvature_profile_of(std::span<const Vec3> points, int dimension, std::size_t samples,
                                                        std::optional<Vec3> start_tangent = std::nullopt,
-                                                       std::optional<Vec3> end_tangent = std::nullopt);
+                                                       std::optional<Vec3> end_tangent = std::nullopt,
+                                                       ProfileAbscissa abscissa = ProfileAbscissa::Parameter);
 
 }  // namespace hula::studies

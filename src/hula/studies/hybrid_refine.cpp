@@ -53,8 +53,9 @@ LmResult refine_levenberg_marquardt(const CurvatureMatch& match, std::span<const
   std::vector<Vec3> points(match.setup().points.size());
   LmResult result;
   result.variables.assign(start.begin(), start.end());
-  Eigen::VectorXd r(static_cast<Eigen::Index>(m)), r_try(static_cast<Eigen::Index>(m)),
-      r_plus(static_cast<Eigen::Index>(m)), r_minus(static_cast<Eigen::Index>(m));
+  const auto M = static_cast<Eigen::Index>(m);
+  const auto Nv = static_cast<Eigen::Index>(n);
+  Eigen::VectorXd r(M), r_try(M), r_plus(M), r_minus(M);
   auto eval = [&](std::span<const double> x, Eigen::VectorXd& out) {
     ++result.evaluations;
     return match.residuals(x, ws, points, std::span<double>(out.data(), m));
@@ -66,74 +67,70 @@ LmResult refine_levenberg_marquardt(const CurvatureMatch& match, std::span<const
     throw Error(Errc::NumericalFailure, "the start points give a degenerate spline (coincident points)",
                 {.field = "points"});
   result.mean_before = mean_abs(r);
-  double cost = r.squaredNorm();
-  Eigen::MatrixXd J(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(n));
-  Eigen::MatrixXd A(static_cast<Eigen::Index>(m + n), static_cast<Eigen::Index>(n));
-  Eigen::VectorXd b(static_cast<Eigen::Index>(m + n));
+  Eigen::MatrixXd J(M, Nv);
+  Eigen::MatrixXd A(M + Nv, Nv);
+  Eigen::VectorXd b(M + Nv);
   std::vector<double> x_try(n), x_fd(n);
-  double lambda = options.initial_lambda;
-  bool need_jacobian = true;
-  result.termination = "max iterations";
-  while (result.iterations < options.max_iterations) {
-    if (mean_abs(r) <= options.target_mean) {
-      result.termination = "target reached";
-      break;
-    }
-    if (need_jacobian) {
-      x_fd = x;
-      for (std::size_t j = 0; j < n; ++j) {
-        const double step = options.difference_step * std::max(1.0, std::fabs(x[j]));
-        const double hi = std::min(x[j] + step, vars[j].upper);
-        const double lo = std::max(x[j] - step, vars[j].lower);
-        x_fd[j] = hi;
-        const bool ok_hi = eval(x_fd, r_plus);
-        x_fd[j] = lo;
-        const bool ok_lo = eval(x_fd, r_minus);
-        x_fd[j] = x[j];
-        if (!ok_hi || !ok_lo || !(hi > lo)) {
-          J.col(static_cast<Eigen::Index>(j)).setZero();
-          continue;
+
+  // Damped Gauss-Newton steps from x until `target` or `budget` steps.
+  auto solve = [&](double target, std::size_t budget) {
+    if (!eval(x, r)) return std::string("degenerate");
+    double cost = r.squaredNorm();
+    double lambda = options.initial_lambda;
+    bool need_jacobian = true;
+    for (std::size_t step = 0; step < budget; ++step) {
+      if (mean_abs(r) <= target) return std::string("target reached");
+      if (need_jacobian) {
+        x_fd = x;
+        for (std::size_t j = 0; j < n; ++j) {
+          const double h = options.difference_step * std::max(1.0, std::fabs(x[j]));
+          const double hi = std::min(x[j] + h, vars[j].upper);
+          const double lo = std::max(x[j] - h, vars[j].lower);
+          x_fd[j] = hi;
+          const bool ok_hi = eval(x_fd, r_plus);
+          x_fd[j] = lo;
+          const bool ok_lo = eval(x_fd, r_minus);
+          x_fd[j] = x[j];
+          if (!ok_hi || !ok_lo || !(hi > lo)) {
+            J.col(static_cast<Eigen::Index>(j)).setZero();
+            continue;
+          }
+          J.col(static_cast<Eigen::Index>(j)) = (r_plus - r_minus) / (hi - lo);
         }
-        J.col(static_cast<Eigen::Index>(j)) = (r_plus - r_minus) / (hi - lo);
+        need_jacobian = false;
       }
-      need_jacobian = false;
-    }
-    ++result.iterations;
-    // Damped least squares with Marquardt's scaling.
-    A.topRows(static_cast<Eigen::Index>(m)) = J;
-    A.bottomRows(static_cast<Eigen::Index>(n)).setZero();
-    for (std::size_t j = 0; j < n; ++j) {
-      const double dj = std::max(J.col(static_cast<Eigen::Index>(j)).norm(), 1e-12);
-      A(static_cast<Eigen::Index>(m + j), static_cast<Eigen::Index>(j)) = std::sqrt(lambda) * dj;
-    }
-    b.head(static_cast<Eigen::Index>(m)) = -r;
-    b.tail(static_cast<Eigen::Index>(n)).setZero();
-    const Eigen::VectorXd delta = A.householderQr().solve(b);
-    for (std::size_t j = 0; j < n; ++j)
-      x_try[j] = std::clamp(x[j] + delta(static_cast<Eigen::Index>(j)), vars[j].lower, vars[j].upper);
-    const bool ok = eval(x_try, r_try);
-    const double cost_try = ok ? r_try.squaredNorm() : std::numeric_limits<double>::infinity();
-    if (ok && cost_try < cost) {
-      const double reduction = (cost - cost_try) / cost;
-      x.swap(x_try);
-      r.swap(r_try);
-      cost = cost_try;
-      lambda = std::max(lambda / 3.0, 1e-15);
-      need_jacobian = true;
-      if (reduction < options.relative_tolerance) {
-        result.termination = "converged";
-        break;
+      ++result.iterations;
+      // Damped least squares with Marquardt's scaling.
+      A.topRows(M) = J;
+      A.bottomRows(Nv).setZero();
+      for (std::size_t j = 0; j < n; ++j) {
+        const double dj = std::max(J.col(static_cast<Eigen::Index>(j)).norm(), 1e-12);
+        A(M + static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(j)) = std::sqrt(lambda) * dj;
       }
-    } else {
-      lambda *= 4.0;
-      if (lambda > 1e16) {
-        result.termination = "damping overflow";
-        break;
+      b.head(M) = -r;
+      b.tail(Nv).setZero();
+      const Eigen::VectorXd delta = A.householderQr().solve(b);
+      for (std::size_t j = 0; j < n; ++j)
+        x_try[j] = std::clamp(x[j] + delta(static_cast<Eigen::Index>(j)), vars[j].lower, vars[j].upper);
+      const bool ok = eval(x_try, r_try);
+      const double cost_try = ok ? r_try.squaredNorm() : std::numeric_limits<double>::infinity();
+      if (ok && cost_try < cost) {
+        const double reduction = (cost - cost_try) / cost;
+        x.swap(x_try);
+        r.swap(r_try);
+        cost = cost_try;
+        lambda = std::max(lambda / 3.0, 1e-15);
+        need_jacobian = true;
+        if (reduction < options.relative_tolerance) return std::string("converged");
+      } else {
+        lambda *= 4.0;
+        if (lambda > 1e16) return std::string("damping overflow");
       }
     }
-  }
-  if (result.termination == "max iterations" && mean_abs(r) <= options.target_mean)
-    result.termination = "target reached";
+    return mean_abs(r) <= target ? std::string("target reached") : std::string("max iterations");
+  };
+
+  result.termination = solve(options.target_mean, options.max_iterations);
   result.mean_after = mean_abs(r);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
   return result;

@@ -41,7 +41,10 @@ enum class MatchMethod {
 /// GA settings of the study.
 struct MatchGaSettings {
   /// Binary-coded (thesis) or real-coded GA.
-  enum class Algorithm { Binary, Real };
+  enum class Algorithm {
+    Binary,  ///< solve_binary_ga: the thesis's coding, roulette and power boost
+    Real,    ///< solve_real_ga: SBX and polynomial mutation
+  };
   Algorithm algorithm = Algorithm::Binary;
   /// Individuals per generation, even, >= 2. Default 50 (thesis).
   std::size_t population = 50;
@@ -78,7 +81,8 @@ struct MatchStudy {
 
 /// Outcome of a run.
 struct MatchResult {
-  /// Start and best design variables (the free coordinates), and the GA's best.
+  /// Start and best design variables (the free coordinates), and the GA's best. For the hybrid method, best is
+  /// the LM result unless that has a larger mean distance (eq. 31) than the GA's best (LM minimises squares).
   std::vector<double> start{}, ga_best{}, best{};
   /// Distances at the start, after the GA and at the end.
   MatchDistances before{}, after_ga{}, after{};

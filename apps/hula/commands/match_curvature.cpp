@@ -1,0 +1,146 @@
+// SPDX-License-Identifier: MIT
+// `hula match-curvature STUDY [--method ga|hybrid] [--seed N] [--threads N] [--log FILE] [--svg DIR]`:
+// a prescribed curvature profile matched over data points (thesis 8.2.1,
+// appendix 5) by Flexo's GA, optionally refined by Levenberg–Marquardt
+// (studies/match_study.hpp). Prints the result JSON (start/best points,
+// distances before/after, evaluations, time, the curve, the resolved study).
+// A further method is a new MatchMethod value: match_method_from_name accepts
+// its name and run_curvature_match dispatches it; this command needs no change
+// beyond the help text.
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "commands/common.hpp"
+#include "commands/study_common.hpp"
+#include "hula/diffgeom/frenet.hpp"
+#include "hula/studies/match_study.hpp"
+
+namespace hula::cli {
+
+namespace {
+
+struct MatchArgs {
+  StudyArgs study;
+  std::optional<std::string> method;
+};
+
+void add_curve(io::SvgFigure& fig, const nurbs::NurbsCurve& curve, std::span<const Vec3> points,
+               const io::SvgStyle& style, const std::string& legend, bool fins) {
+  constexpr int kSamples = 300;
+  std::vector<double> x(kSamples + 1), y(kSamples + 1);
+  for (int i = 0; i <= kSamples; ++i) {
+    const Vec3 p = curve.evaluate(static_cast<double>(i) / kSamples);
+    x[static_cast<std::size_t>(i)] = p.x;
+    y[static_cast<std::size_t>(i)] = p.y;
+  }
+  fig.add_polyline(x, y, style, legend);
+  // Curvature fins P - s κ N (DESIGN, thesis 6.4) at 120 parameters, the longest 15% of the curve's extent.
+  constexpr int kFins = 120;
+  std::vector<double> t(kFins + 1), kappa(kFins + 1), x1(kFins + 1), y1(kFins + 1), x0(kFins + 1), y0(kFins + 1);
+  std::vector<diffgeom::FrenetPoint> frames(kFins + 1);
+  for (int i = 0; i <= kFins; ++i) t[static_cast<std::size_t>(i)] = static_cast<double>(i) / kFins;
+  diffgeom::frenet(curve, t, frames);
+  double kmax = 0.0;
+  for (const auto& f : frames)
+    if (f.frame_defined) kmax = std::max(kmax, f.curvature);
+  const double extent = std::max(*std::max_element(x.begin(), x.end()) - *std::min_element(x.begin(), x.end()),
+                                 *std::max_element(y.begin(), y.end()) - *std::min_element(y.begin(), y.end()));
+  if (fins && kmax > 0.0) {
+    const double scale = 0.15 * extent / kmax;
+    std::size_t m = 0;
+    for (const auto& f : frames) {
+      if (!f.frame_defined) continue;
+      const Vec3 end = f.position - scale * f.curvature * f.normal;
+      x0[m] = f.position.x;
+      y0[m] = f.position.y;
+      x1[m] = end.x;
+      y1[m] = end.y;
+      ++m;
+    }
+    for (auto* v : {&x0, &y0, &x1, &y1}) v->resize(m);
+    io::SvgStyle fin = style;
+    fin.width = 0.6;
+    fin.dash.clear();
+    fig.add_segments(x0, y0, x1, y1, fin);
+  }
+  std::vector<double> px, py;
+  for (const Vec3& p : points) {
+    px.push_back(p.x);
+    py.push_back(p.y);
+  }
+  fig.add_points(px, py, style, 3.0);
+}
+
+void write_figures(const std::filesystem::path& dir, const studies::CurvatureMatch& match,
+                   const studies::MatchResult& r) {
+  const std::size_t n = match.setup().points.size();
+  std::vector<Vec3> before(n), after(n);
+  match.points_from(r.start, before);
+  match.points_from(r.best, after);
+  const io::SvgStyle grey{"#888888", 1.5, {}, "6 4"}, blue{"#1f5fbf", 2.0, {}, {}};
+  for (const bool is_after : {false, true}) {
+    io::SvgFigure fig;
+    fig.set_equal_aspect(true);
+    fig.set_title(is_after ? "Optimised curve (x-y view)" : "Start curve (x-y view)");
+    if (is_after) add_curve(fig, match.sampler().curve(before), before, grey, "start", false);
+    add_curve(fig, match.sampler().curve(is_after ? after : before), is_after ? after : before, blue,
+              is_after ? "optimised" : "start", true);
+    write_svg(dir, is_after ? "curve_after" : "curve_before", fig);
+  }
+  {
+    io::SvgFigure fig;
+    fig.set_title("Curvature profile");
+    fig.set_axes("u (parameter on [0, 1])", "curvature");
+    const auto& u = match.sampler().abscissae();
+    fig.add_polyline(u, match.curvature_samples(r.start), grey, "start");
+    fig.add_polyline(u, match.target_samples(), io::SvgStyle{"#c03030", 2.0, {}, "3 3"}, "target");
+    fig.add_polyline(u, match.curvature_samples(r.best), blue, "achieved");
+    write_svg(dir, "profile", fig);
+  }
+  {
+    io::SvgFigure fig;
+    fig.set_title("Convergence: best mean curvature distance");
+    fig.set_axes("generation", "mean |k - k*|");
+    fig.set_log_y(true);
+    std::vector<double> g(r.convergence.size());
+    for (std::size_t i = 0; i < g.size(); ++i) g[i] = static_cast<double>(i);
+    fig.add_polyline(g, r.convergence, blue, "GA best");
+    if (r.lm) {
+      const double x = g.empty() ? 0.0 : g.back();
+      fig.add_points(std::vector<double>{x}, std::vector<double>{r.after.mean}, io::SvgStyle{"#c03030", 1.5, {}, {}},
+                     4.0, "after LM");
+    }
+    write_svg(dir, "convergence", fig);
+  }
+}
+
+int run_match(const MatchArgs& a) {
+  const studies::StudyDocument doc = load_study(a.study, "match-curvature");
+  const std::filesystem::path base = std::filesystem::path(a.study.study).parent_path();
+  studies::MatchStudy study = studies::match_study_from_json(doc, base);
+  if (a.method) study.method = studies::match_method_from_name(*a.method, "--method");
+  const studies::CurvatureMatch match(study.setup);
+  const studies::MatchResult result = studies::run_curvature_match(match, study, a.study.log.has_value());
+  if (a.study.log) write_run_log(result.log, *a.study.log);
+  if (a.study.svg) write_figures(*a.study.svg, match, result);
+  print_json(studies::match_result_to_json(match, study, result));
+  return kExitOk;
+}
+
+}  // namespace
+
+Command add_match_curvature(CLI::App& app) {
+  auto a = std::make_shared<MatchArgs>();
+  CLI::App* sub = app.add_subcommand(
+      "match-curvature",
+      "Match a prescribed curvature profile by moving data points (GA, or GA + Levenberg-Marquardt)");
+  add_study_options(sub, a->study);
+  sub->add_option("--method", a->method, "ga | hybrid (overrides the study file's \"method\")");
+  return {sub, [a] { return run_match(*a); }};
+}
+
+}  // namespace hula::cli

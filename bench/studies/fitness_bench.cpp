@@ -1,0 +1,174 @@
+// SPDX-License-Identifier: MIT
+// The curvature-matching fitness evaluation (thesis 8.2.1, eq. 31): interpolate
+// a cubic through N data points, sample κ at 200 parameters, compare with the
+// target — ours (studies::CurvatureMatch, allocation-free) beside Open CASCADE
+// doing the same (GeomAPI_Interpolate + GeomLProp_CLProps) in the same run;
+// then the thesis's whole 50 x 50 GA run and a 20-variable hybrid run.
+// Items processed = fitness evaluations.
+#include <benchmark/benchmark.h>
+
+#include <GeomAPI_Interpolate.hxx>
+#include <GeomLProp_CLProps.hxx>
+#include <Geom_BSplineCurve.hxx>
+#include <TColgp_HArray1OfPnt.hxx>
+#include <cmath>
+#include <vector>
+
+#include "hula/core/rng.hpp"
+#include "hula/studies/curvature_match.hpp"
+#include "hula/studies/match_study.hpp"
+
+namespace {
+
+using hula::Vec3;
+using hula::studies::CurvatureMatch;
+using hula::studies::CurvatureMatchSetup;
+
+constexpr std::size_t kSamples = 200;
+
+std::vector<double> uniform(std::size_t n) {
+  std::vector<double> u(n);
+  for (std::size_t i = 0; i < n; ++i) u[i] = static_cast<double>(i) / static_cast<double>(n - 1);
+  return u;
+}
+
+std::vector<Vec3> wave(std::size_t n) {
+  std::vector<Vec3> p(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double s = static_cast<double>(i) / static_cast<double>(n - 1);
+    p[i] = {40.0 * s, 12.0 * std::sin(2.5 * s) + 3.0 * s * s, 0.0};
+  }
+  return p;
+}
+
+// N planar points, every coordinate after the start point free by +-2; the target is the known curve's profile.
+CurvatureMatchSetup setup(std::size_t n) {
+  CurvatureMatchSetup s;
+  s.points = wave(n);
+  s.dimension = 2;
+  s.lower.assign(n, Vec3{2, 2, 0});
+  s.upper = s.lower;
+  s.lower[0] = s.upper[0] = Vec3{};
+  s.target = hula::studies::Profile::from_samples(uniform(kSamples),
+                                                  hula::studies::curvature_profile_of(s.points, 2, kSamples));
+  for (std::size_t i = 1; i < n; ++i) s.points[i].y += 0.5;
+  return s;
+}
+
+void BM_match_fitness(benchmark::State& state) {
+  const CurvatureMatch match(setup(static_cast<std::size_t>(state.range(0))));
+  hula::studies::SplineProfileSampler::Workspace ws;
+  std::vector<Vec3> pts(match.setup().points.size());
+  std::vector<double> kappa(kSamples);
+  std::vector<double> x = match.start_variables();
+  hula::Rng rng(1);
+  for (auto& v : x) v += rng.uniform(-0.1, 0.1);
+  double sign = 1e-9;
+  for (auto _ : state) {
+    x[0] += sign;
+    sign = -sign;
+    benchmark::DoNotOptimize(match.mean_distance(x, ws, pts, kappa));
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
+}
+BENCHMARK(BM_match_fitness)->Arg(4)->Arg(7)->Arg(10);
+
+// The same with the arc-length abscissa (span lengths by Gauss-Legendre, Newton per sample).
+void BM_match_fitness_arclength(benchmark::State& state) {
+  CurvatureMatchSetup s = setup(static_cast<std::size_t>(state.range(0)));
+  s.abscissa = hula::studies::ProfileAbscissa::ArcLength;
+  const CurvatureMatch match(s);
+  hula::studies::SplineProfileSampler::Workspace ws;
+  std::vector<Vec3> pts(match.setup().points.size());
+  std::vector<double> kappa(kSamples);
+  std::vector<double> x = match.start_variables();
+  double sign = 1e-9;
+  for (auto _ : state) {
+    x[0] += sign;
+    sign = -sign;
+    benchmark::DoNotOptimize(match.mean_distance(x, ws, pts, kappa));
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
+}
+BENCHMARK(BM_match_fitness_arclength)->Arg(7);
+
+// Open CASCADE: the same points, GeomAPI_Interpolate (its own chord-length parameters and ends), κ from
+// GeomLProp_CLProps at 200 parameters spread over the curve's domain, mean |κ - κ*|.
+void BM_occt_fitness(benchmark::State& state) {
+  const std::size_t n = static_cast<std::size_t>(state.range(0));
+  const CurvatureMatch match(setup(n));
+  const auto& target = match.target_samples();
+  const auto& pts = match.setup().points;
+  Handle(TColgp_HArray1OfPnt) arr = new TColgp_HArray1OfPnt(1, static_cast<int>(n));
+  double sign = 1e-9;
+  for (auto _ : state) {
+    for (std::size_t i = 0; i < n; ++i) arr->SetValue(static_cast<int>(i) + 1, gp_Pnt(pts[i].x, pts[i].y + sign, 0.0));
+    sign = -sign;
+    GeomAPI_Interpolate interp(arr, Standard_False, 1e-9);
+    interp.Perform();
+    const Handle(Geom_BSplineCurve) c = interp.Curve();
+    const double t0 = c->FirstParameter(), t1 = c->LastParameter();
+    GeomLProp_CLProps props(c, 2, 1e-9);
+    double sum = 0.0;
+    for (std::size_t i = 0; i < kSamples; ++i) {
+      props.SetParameter(t0 + (t1 - t0) * static_cast<double>(i) / static_cast<double>(kSamples - 1));
+      sum += std::fabs(props.Curvature() - target[i]);
+    }
+    benchmark::DoNotOptimize(sum);
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
+}
+BENCHMARK(BM_occt_fitness)->Arg(4)->Arg(7)->Arg(10);
+
+// The thesis's run: binary GA, population 50, 50 generations, roulette, boost 3 -> 5, on the 4-point test curve.
+void BM_match_ga_50x50(benchmark::State& state) {
+  CurvatureMatchSetup s;
+  s.points = {{0, 0, 0}, {13, 23, 0}, {23, 27, 0}, {40, 0, 0}};
+  s.dimension = 2;
+  s.lower = {{0, 0, 0}, {5, 5, 0}, {5, 5, 0}, {0, 0, 0}};
+  s.upper = s.lower;
+  s.target = hula::studies::Profile::from_samples(
+      uniform(kSamples), hula::studies::curvature_profile_of(
+                             std::vector<Vec3>{{0, 0, 0}, {16, 20, 0}, {20, 30, 0}, {40, 0, 0}}, 2, kSamples));
+  const CurvatureMatch match(s);
+  hula::studies::MatchStudy study;
+  double mean = 0.0;
+  for (auto _ : state) {
+    const auto r = hula::studies::run_curvature_match(match, study);
+    // (DoNotOptimize on a non-const double lvalue may hand it back through a general register under GCC.)
+    benchmark::DoNotOptimize(r.best.data());
+    mean = r.after.mean;
+  }
+  state.counters["mean_distance"] = mean;
+}
+BENCHMARK(BM_match_ga_50x50)->Unit(benchmark::kMillisecond);
+
+// Hybrid with 20 free coordinates (12 points, the start and end points fixed), GA 50 x 20 then LM to 1e-10.
+void BM_match_hybrid_20(benchmark::State& state) {
+  constexpr std::size_t kPoints = 12;
+  CurvatureMatchSetup s = setup(kPoints);
+  for (std::size_t i = 1; i < kPoints; ++i) s.points[i].y -= 0.45;  // 0.05 from the known curve
+  s.lower.assign(kPoints, Vec3{0.5, 0.5, 0});
+  s.upper = s.lower;
+  s.lower[0] = s.upper[0] = s.lower[kPoints - 1] = s.upper[kPoints - 1] = Vec3{};
+  s.points[kPoints - 1] = wave(kPoints)[kPoints - 1];  // the fixed end point is the known curve's
+  s.start_tangent = Vec3{1, 0.75, 0};
+  s.target = hula::studies::Profile::from_samples(
+      uniform(kSamples), hula::studies::curvature_profile_of(wave(kPoints), 2, kSamples, s.start_tangent));
+  const CurvatureMatch match(s);
+  hula::studies::MatchStudy study;
+  study.method = hula::studies::MatchMethod::Hybrid;
+  study.ga.generations = 20;
+  double mean = 0.0;
+  for (auto _ : state) {
+    const auto r = hula::studies::run_curvature_match(match, study);
+    // (DoNotOptimize on a non-const double lvalue may hand it back through a general register under GCC.)
+    benchmark::DoNotOptimize(r.best.data());
+    mean = r.after.mean;
+  }
+  state.counters["variables"] = static_cast<double>(match.dimension());
+  state.counters["mean_distance"] = mean;
+}
+BENCHMARK(BM_match_hybrid_20)->Unit(benchmark::kMillisecond);
+
+}  // namespace

@@ -1,0 +1,172 @@
+// SPDX-License-Identifier: MIT
+// Study files of the editing studies; see editing_study.hpp and docs/formats.md.
+#include "hula/studies/editing_study.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "hula/core/error.hpp"
+#include "hula/io/json_read.hpp"
+
+namespace hula::studies {
+
+namespace json = io::json;
+
+namespace {
+
+const json::JsonPath kRoot = json::root_path("");
+
+double number_member(const Json& body, std::string_view name, double fallback) {
+  const Json* v = json::optional_member(body, name);
+  return v ? json::get_number(*v, kRoot.member(name)) : fallback;
+}
+
+int samples_member(const Json& body, int fallback) {
+  const Json* v = json::optional_member(body, "samples");
+  return v ? static_cast<int>(json::get_integer(*v, kRoot.member("samples"), 2, 1000000)) : fallback;
+}
+
+diffgeom::Plane plane_member(const Json& body) {
+  const std::string name = json::get_string(json::require_member(body, kRoot, "plane"), kRoot.member("plane"));
+  return plane_from_name(name, "plane");
+}
+
+// The curve a file describes, as the studies take it (law files: the stand-in NURBS).
+const nurbs::NurbsCurve& nurbs_of(const io::CurveFile& file) { return file.curve; }
+
+}  // namespace
+
+io::CurveFile read_curve_member(const Json& body, std::string_view name) {
+  const Json& value = json::require_member(body, kRoot, name);
+  try {
+    return io::curve_from_json(value);
+  } catch (const Error& e) {
+    ErrorWhere where = e.where();
+    where.field = where.field.empty() ? std::string(name) : std::string(name) + "." + where.field;
+    throw Error(e.code(), std::string(name) + ": " + e.message(), where);
+  }
+}
+
+FinCompoundStudy read_fin_compound_study(const StudyDocument& doc) {
+  const Json& b = doc.body;
+  check_members(b, {"method", "curve", "compound", "plane", "scale", "c", "samples", "min_stretch", "tolerance"});
+  FinCompoundStudy s;
+  s.header = doc.header;
+  const std::string method = json::get_string(json::require_member(b, kRoot, "method"), kRoot.member("method"));
+  if (method == "projection") {
+    s.method = FinCompoundMethod::Projection;
+  } else if (method == "combescure") {
+    s.method = FinCompoundMethod::Combescure;
+  } else {
+    throw Error(Errc::ParseError, "method = \"" + method + "\" must be \"projection\" or \"combescure\"",
+                {.field = "method"});
+  }
+  auto refuse = [](const char* member, const char* method_name) {
+    throw Error(Errc::ParseError,
+                std::string(member) + ": not a member of a \"" + method_name + "\" fin-compound study",
+                {.field = member});
+  };
+  const double tolerance = number_member(b, "tolerance", 1e-9);
+  if (s.method == FinCompoundMethod::Projection) {
+    if (json::optional_member(b, "c")) refuse("c", "projection");
+    s.projection.plane = plane_member(b);
+    s.projection.scale = number_member(b, "scale", 1.0);
+    s.projection.samples = samples_member(b, s.projection.samples);
+    s.projection.min_stretch = number_member(b, "min_stretch", s.projection.min_stretch);
+    s.projection.fit.tolerance = tolerance;
+    s.projection.validate();
+    s.curve = read_curve_member(b, "curve");
+    if (json::optional_member(b, "compound")) {
+      s.compound = read_curve_member(b, "compound");
+      require_planar(nurbs_of(*s.compound), s.projection.plane, "compound");
+    }
+  } else {
+    for (const char* m : {"plane", "scale", "min_stretch"})
+      if (json::optional_member(b, m)) refuse(m, "combescure");
+    s.combescure.c = number_member(b, "c", 1.0);
+    s.combescure.samples = samples_member(b, s.combescure.samples);
+    s.combescure.fit.tolerance = tolerance;
+    s.combescure.validate();
+    const bool has_curve = json::optional_member(b, "curve") != nullptr;
+    const bool has_compound = json::optional_member(b, "compound") != nullptr;
+    if (has_curve == has_compound)
+      throw Error(Errc::ParseError,
+                  "a \"combescure\" fin-compound study needs exactly one of \"curve\" (the parent: forward "
+                  "transform) and \"compound\" (prescribed: inverse transform)",
+                  {.field = has_curve ? "compound" : "curve"});
+    if (has_curve) s.curve = read_curve_member(b, "curve");
+    if (has_compound) s.compound = read_curve_member(b, "compound");
+  }
+  return s;
+}
+
+EditProjectionStudy read_edit_projection_study(const StudyDocument& doc) {
+  const Json& b = doc.body;
+  check_members(b, {"curve", "edited", "plane"});
+  const diffgeom::Plane plane = plane_member(b);
+  EditProjectionStudy s{doc.header, read_curve_member(b, "curve"), read_curve_member(b, "edited"), plane};
+  require_planar(s.edited.curve, plane, "edited");
+  return s;
+}
+
+HermiteStudy read_hermite_study(const StudyDocument& doc) {
+  const Json& b = doc.body;
+  check_members(b, {"spline", "rebuild", "edits"});
+  HermiteStudy s;
+  s.header = doc.header;
+  const io::CurveFile spline = read_curve_member(b, "spline");
+  if (!spline.inputs)
+    throw Error(Errc::ParseError,
+                "spline: must be an \"interpolated\" curve document (points to interpolate), got kind \"" +
+                    std::string(io::curve_kind_name(spline.kind)) + "\"",
+                {.field = "spline"});
+  s.spline = *spline.inputs;
+  s.options.interpolation = s.spline.options();
+  if (const Json* r = json::optional_member(b, "rebuild")) {
+    const std::string name = json::get_string(*r, kRoot.member("rebuild"));
+    if (name == "quintic")
+      s.options.rebuild = HermiteRebuild::Quintic;
+    else if (name == "cubic")
+      s.options.rebuild = HermiteRebuild::Cubic;
+    else
+      throw Error(Errc::ParseError, "rebuild = \"" + name + "\" must be \"quintic\" or \"cubic\"",
+                  {.field = "rebuild"});
+  }
+  if (const Json* e = json::optional_member(b, "edits")) {
+    const json::JsonPath path = kRoot.member("edits");
+    const Json& arr = json::get_array(*e, path);
+    constexpr double kDeg = std::numbers::pi / 180.0;
+    for (std::size_t i = 0; i < arr.size(); ++i) {
+      const json::JsonPath p = path.element(i);
+      const Json& item = arr[i];
+      json::reject_unknown_members(item, p,
+                                   {"knot", "tangent_angle", "tangent_scale", "normal_angle", "normal_scale", "axis"});
+      HandleEdit h;
+      h.knot = static_cast<std::size_t>(
+          json::get_integer(json::require_member(item, p, "knot"), p.member("knot"), 0, 1000000000));
+      auto num = [&](const char* name, double fallback) {
+        const Json* v = json::optional_member(item, name);
+        return v ? json::get_number(*v, p.member(name)) : fallback;
+      };
+      h.tangent_angle = num("tangent_angle", 0.0) * kDeg;
+      h.tangent_scale = num("tangent_scale", 1.0);
+      h.normal_angle = num("normal_angle", 0.0) * kDeg;
+      h.normal_scale = num("normal_scale", 1.0);
+      if (const Json* a = json::optional_member(item, "axis")) h.axis = json::get_point(*a, p.member("axis")).first;
+      s.edits.push_back(h);
+    }
+  }
+  s.options.validate();
+  // Index and value checks of the edits, before any work (the spline itself is cheap; hermite_edit
+  // repeats them and also checks what needs the spline, e.g. an undefined binormal).
+  for (std::size_t i = 0; i < s.edits.size(); ++i)
+    if (s.edits[i].knot >= s.spline.points.size())
+      throw Error(Errc::InvalidArgument,
+                  "edits[" + std::to_string(i) + "].knot = " + std::to_string(s.edits[i].knot) +
+                      " is not a data point index (0 … " + std::to_string(s.spline.points.size() - 1) + ")",
+                  {.field = "edits[" + std::to_string(i) + "].knot", .index = i});
+  return s;
+}
+
+}  // namespace hula::studies

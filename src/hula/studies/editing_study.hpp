@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: MIT
+// The study files of the editing studies (docs/formats.md, study kinds
+// "fin-compound", "edit-projection" and "hermite"): readers that check every
+// member before any work (unknown members, wrong plane, non-planar edits,
+// mismatched counts are errors naming the member), and the resolved setup as
+// JSON so that a run can be repeated exactly.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "hula/io/json_curve.hpp"
+#include "hula/studies/fin_compound.hpp"
+#include "hula/studies/hermite_edit.hpp"
+#include "hula/studies/projection_edit.hpp"
+#include "hula/studies/study_file.hpp"
+
+namespace hula::studies {
+
+/// Reads member `name` of a study body as an inline curve document (docs/formats.md curve files:
+/// "nurbs", "bezier", "interpolated" or "law").
+/// @throws hula::Error(Errc::ParseError) if it is missing; errors of io::curve_from_json with the
+///   member name prefixed to the message and the field ("curve.control_points")
+[[nodiscard]] io::CurveFile read_curve_member(const Json& body, std::string_view name);
+
+/// Which technique a "fin-compound" study runs.
+enum class FinCompoundMethod {
+  Projection,  ///< the projection technique (normal fin compound of a projection)
+  Combescure,  ///< the Combescure transform and its inverse
+};
+
+/// A "fin-compound" study.
+struct FinCompoundStudy {
+  StudyHeader header{};
+  FinCompoundMethod method = FinCompoundMethod::Projection;
+  /// "curve": the original curve (projection: required; combescure: the parent, forward transform).
+  std::optional<io::CurveFile> curve{};
+  /// "compound": the edited / prescribed compound (projection: optional, without it only the compound
+  /// is computed; combescure: the prescribed compound, inverse transform). One of curve/compound for
+  /// combescure.
+  std::optional<io::CurveFile> compound{};
+  /// "plane", "scale", "samples", "min_stretch", "tolerance" (projection).
+  NormalCompoundOptions projection{};
+  /// "c", "samples", "tolerance" (combescure).
+  CombescureOptions combescure{};
+};
+
+/// Reads a "fin-compound" study body.
+/// @throws hula::Error(Errc::ParseError) naming an unknown or missing member or a bad value;
+///   hula::Error(Errc::InvalidArgument) naming "plane" or "compound" (not planar in the plane);
+///   hula::Error(Errc::InvalidOption) naming the option out of range
+[[nodiscard]] FinCompoundStudy read_fin_compound_study(const StudyDocument& doc);
+
+/// An "edit-projection" study.
+struct EditProjectionStudy {
+  StudyHeader header{};
+  io::CurveFile curve;                          ///< "curve": the original 3-D curve
+  io::CurveFile edited;                         ///< "edited": the edited projection, planar in `plane`
+  diffgeom::Plane plane = diffgeom::Plane::XY;  ///< "plane"
+};
+
+/// Reads an "edit-projection" study body.
+/// @throws as read_fin_compound_study; InvalidArgument naming "edited" if it is not planar in the plane
+[[nodiscard]] EditProjectionStudy read_edit_projection_study(const StudyDocument& doc);
+
+/// A "hermite" study.
+struct HermiteStudy {
+  StudyHeader header{};
+  /// "spline": an "interpolated" curve document (points, parameterisation or parameters, ends).
+  io::InterpolationInputs spline{};
+  /// The spline's interpolation options and "rebuild".
+  HermiteEditOptions options{};
+  /// "edits" (angles in the file in degrees, here in radians).
+  std::vector<HandleEdit> edits;
+};
+
+/// Reads a "hermite" study body.
+/// @throws hula::Error(Errc::ParseError) naming the member ("spline" not of kind "interpolated", an
+///   unknown edit member); the errors of the interpolated curve reader (e.g. "spline.parameters" whose
+///   count differs from the points'); hula::Error(Errc::InvalidArgument) naming "edits[i].<field>"
+///   for a bad edit (hermite_edit's checks, run here before any work)
+[[nodiscard]] HermiteStudy read_hermite_study(const StudyDocument& doc);
+
+}  // namespace hula::studies

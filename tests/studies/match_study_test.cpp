@@ -1,0 +1,195 @@
+// SPDX-License-Identifier: MIT
+// The thesis's validation method (8.2.1): a target profile taken from a known
+// curve must be recovered. GA alone to the thesis's accuracy (Table 9), the
+// hybrid GA + Levenberg-Marquardt to 1e-6 in mean curvature distance with
+// 4, 9, 20 and 50 free coordinates.
+#include "hula/studies/match_study.hpp"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "hula/core/rng.hpp"
+#include "hula/testing/expect_error.hpp"
+
+namespace {
+
+using hula::Errc;
+using hula::Vec3;
+using hula::studies::CurvatureMatch;
+using hula::studies::CurvatureMatchSetup;
+using hula::studies::MatchMethod;
+using hula::studies::MatchStudy;
+using hula::studies::Profile;
+
+std::vector<double> uniform(std::size_t n) {
+  std::vector<double> u(n);
+  for (std::size_t i = 0; i < n; ++i) u[i] = static_cast<double>(i) / static_cast<double>(n - 1);
+  return u;
+}
+
+// A known curve through `truth`; the first `free` coordinates after the start point are moved by up to `delta`
+// (seeded) and bounded by `bound` around the moved start value; the target is the known curve's profile.
+CurvatureMatchSetup known_curve_setup(const std::vector<Vec3>& truth, int dim, std::size_t free, double delta,
+                                      double bound, std::uint64_t seed, std::optional<Vec3> start_tangent) {
+  CurvatureMatchSetup s;
+  s.dimension = dim;
+  s.points = truth;
+  s.lower.assign(truth.size(), Vec3{});
+  s.upper.assign(truth.size(), Vec3{});
+  s.start_tangent = start_tangent;
+  hula::Rng rng(seed);
+  std::size_t k = 0;
+  for (std::size_t i = 1; i < truth.size() && k < free; ++i)
+    for (std::size_t c = 0; c < static_cast<std::size_t>(dim) && k < free; ++c, ++k) {
+      s.points[i][c] += rng.uniform(-delta, delta);
+      s.lower[i][c] = bound;
+      s.upper[i][c] = bound;
+    }
+  s.target = Profile::from_samples(uniform(200),
+                                   hula::studies::curvature_profile_of(truth, dim, 200, start_tangent, std::nullopt));
+  return s;
+}
+
+std::vector<Vec3> planar_wave(std::size_t n) {
+  std::vector<Vec3> p(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double s = static_cast<double>(i) / static_cast<double>(n - 1);
+    p[i] = {40.0 * s, 12.0 * std::sin(2.5 * s) + 3.0 * s * s, 0.0};
+  }
+  return p;
+}
+
+// A convex planar arc without inflection (turning angle 1.5 s + s^2 over length 40): unsigned κ then determines
+// the curve (at an inflection the unsigned profile cannot tell a curve from its reflection, which with a fixed end
+// point leaves spurious local minima).
+std::vector<Vec3> convex_arc(std::size_t n) {
+  std::vector<Vec3> p(n);
+  Vec3 q{0, 0, 0};
+  const int steps = 400;
+  std::size_t next = 1;
+  p[0] = q;
+  for (int k = 0; k < steps; ++k) {
+    const double s0 = static_cast<double>(k) / steps, s1 = static_cast<double>(k + 1) / steps;
+    const double sm = 0.5 * (s0 + s1);
+    auto theta = [](double s) { return 1.5 * s + s * s; };
+    // Simpson on [s0, s1] of 40 (cos θ, sin θ) ds.
+    const double w = 40.0 * (s1 - s0) / 6.0;
+    q.x += w * (std::cos(theta(s0)) + 4.0 * std::cos(theta(sm)) + std::cos(theta(s1)));
+    q.y += w * (std::sin(theta(s0)) + 4.0 * std::sin(theta(sm)) + std::sin(theta(s1)));
+    if (next < n && (k + 1) * static_cast<int>(n - 1) == static_cast<int>(next) * steps) p[next++] = q;
+  }
+  return p;
+}
+
+std::vector<Vec3> space_wave(std::size_t n) {
+  std::vector<Vec3> p = planar_wave(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double s = static_cast<double>(i) / static_cast<double>(n - 1);
+    p[i].z = 8.0 * s * s - 2.0 * std::sin(3.0 * s);
+  }
+  return p;
+}
+
+MatchStudy ga_study(MatchMethod method) {
+  MatchStudy st;
+  st.method = method;
+  st.header.seed = 7;
+  st.ga.population = 50;
+  st.ga.generations = 50;
+  return st;
+}
+
+// Hybrid: GA then LM reaches 1e-6 in mean curvature distance with start point and tangent fixed.
+void expect_hybrid_recovers(const std::vector<Vec3>& truth, int dim, std::size_t free, double move) {
+  // Start points moved by up to `move` x the point spacing, bounds of 5 x that: the known curve lies inside.
+  const double spacing = 40.0 / static_cast<double>(truth.size() - 1);
+  const Vec3 tangent = truth[1] - truth[0];
+  const CurvatureMatch match(known_curve_setup(truth, dim, free, move * spacing, 5.0 * move * spacing, 11, tangent));
+  ASSERT_EQ(match.dimension(), free);
+  MatchStudy st = ga_study(MatchMethod::Hybrid);
+  st.ga.generations = 20;
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto r = hula::studies::run_curvature_match(match, st);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::printf("hybrid %zu variables: before %.3g after GA %.3g after LM %.3g (%zu LM steps, %.3f s)\n", free,
+              r.before.mean, r.after_ga.mean, r.after.mean, r.lm->iterations, seconds);
+  EXPECT_GT(r.before.mean, 1e-3);
+  EXPECT_LE(r.after.mean, 1e-6) << free << " variables, LM " << r.lm->termination;
+  EXPECT_LE(r.after.mean, r.after_ga.mean);
+}
+
+// 4 and 9 free coordinates from starts 15% of the spacing away; 20 and 50 from 2% (the LM basin narrows with the
+// number of points: from 15% those stall at 1e-3..1e-2, see hybrid_refine.hpp).
+TEST(MatchHybrid, Recovers4Variables) { expect_hybrid_recovers(planar_wave(4), 2, 4, 0.15); }
+TEST(MatchHybrid, Recovers9Variables) { expect_hybrid_recovers(space_wave(4), 3, 9, 0.15); }
+TEST(MatchHybrid, Recovers20Variables) { expect_hybrid_recovers(convex_arc(11), 2, 20, 0.02); }
+TEST(MatchHybrid, Recovers50Variables) { expect_hybrid_recovers(convex_arc(26), 2, 50, 0.02); }
+
+// Table 9 (GA performance against the number of variables: best 0.08, 0.1, 0.9, 10 for 2, 4, 6, 9), on targets
+// from known curves: our binary GA (thesis settings: 50 x 50, roulette, boost 3 -> 5) must do at least as well.
+struct Table9Case {
+  std::vector<Vec3> truth;
+  int dim;
+  std::size_t free;
+  double thesis;
+};
+
+TEST(MatchGa, ReachesTable9AccuracyInWellUnderASecond) {
+  const std::vector<Table9Case> cases = {
+      {{{0, 0, 0}, {5, 20, 0}, {40, 0, 0}}, 2, 2, 0.08},
+      {{{0, 0, 0}, {16, 20, 0}, {20, 30, 0}, {40, 0, 0}}, 2, 4, 0.1},
+      {{{0, 0, 0}, {16, 20, 0}, {20, -30, 0}, {40, 0, 0}}, 2, 6, 0.9},
+      {{{0, 0, 0}, {10, 10, 0}, {20, -10, 2}, {40, 0, 8}}, 3, 9, 10.0},
+  };
+  for (const auto& c : cases) {
+    const CurvatureMatch match(known_curve_setup(c.truth, c.dim, c.free, 3.0, 5.0, 3, std::nullopt));
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto r = hula::studies::run_curvature_match(match, ga_study(MatchMethod::Ga));
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::printf("GA %zu variables: before %.4g after %.4g (thesis %.3g) in %.3f s\n", c.free, r.before.mean,
+                r.after.mean, c.thesis, seconds);
+    EXPECT_LT(r.after.mean, c.thesis) << c.free << " variables";
+    EXPECT_LT(r.after.mean, r.before.mean);
+    EXPECT_LT(seconds, 1.0);
+  }
+}
+
+// Same seed, same result on 1 and 2 threads (Flexo's reproducibility contract carries through).
+TEST(MatchGa, ResultDoesNotDependOnThreads) {
+  const CurvatureMatch match(known_curve_setup(planar_wave(5), 2, 6, 2.0, 4.0, 5, std::nullopt));
+  MatchStudy st = ga_study(MatchMethod::Ga);
+  st.ga.generations = 10;
+  const auto a = hula::studies::run_curvature_match(match, st);
+  st.header.threads = 2;
+  const auto b = hula::studies::run_curvature_match(match, st);
+  EXPECT_EQ(a.best, b.best);
+  EXPECT_EQ(a.convergence, b.convergence);
+  ASSERT_EQ(a.convergence.size(), 11U);
+  for (std::size_t g = 1; g < a.convergence.size(); ++g) EXPECT_LE(a.convergence[g], a.convergence[g - 1]);
+}
+
+// The real-coded GA is the alternative route; on the 4-variable test curve it also beats the thesis's 0.1.
+TEST(MatchGa, RealCodedGaAlsoMatches) {
+  const CurvatureMatch match(
+      known_curve_setup({{0, 0, 0}, {16, 20, 0}, {20, 30, 0}, {40, 0, 0}}, 2, 4, 3.0, 5.0, 3, std::nullopt));
+  MatchStudy st = ga_study(MatchMethod::Ga);
+  st.ga.algorithm = hula::studies::MatchGaSettings::Algorithm::Real;
+  const auto r = hula::studies::run_curvature_match(match, st);
+  EXPECT_LT(r.after.mean, 0.1);
+}
+
+// LM options are checked before any work, naming the field.
+TEST(MatchHybrid, RejectsBadOptions) {
+  hula::studies::LmOptions o;
+  o.difference_step = 0.5;
+  HULA_EXPECT_ERROR(o.validate(), Errc::InvalidOption, "lm.difference_step = 0.5");
+  o = {};
+  o.max_iterations = 0;
+  HULA_EXPECT_ERROR(o.validate(), Errc::InvalidOption, "lm.max_iterations");
+}
+
+}  // namespace
