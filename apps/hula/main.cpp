@@ -52,10 +52,18 @@ int main(int argc, char** argv) {
   app.footer(kFooter);
   app.require_subcommand(0, 1);
   std::vector<hula::cli::Command> commands = {
-      hula::cli::add_interpolate(app), hula::cli::add_eval(app),     hula::cli::add_info(app),
-      hula::cli::add_demo(app),        hula::cli::add_law(app),      hula::cli::add_analyse(app),
-      hula::cli::add_reconstruct(app), hula::cli::add_optimise(app), hula::cli::add_fair_knots(app),
-      hula::cli::add_fin_compound(app), hula::cli::add_edit_projection(app), hula::cli::add_hermite(app),
+      hula::cli::add_interpolate(app),
+      hula::cli::add_eval(app),
+      hula::cli::add_info(app),
+      hula::cli::add_demo(app),
+      hula::cli::add_law(app),
+      hula::cli::add_analyse(app),
+      hula::cli::add_reconstruct(app),
+      hula::cli::add_optimise(app),
+      hula::cli::add_fair_knots(app),
+      hula::cli::add_fin_compound(app),
+      hula::cli::add_edit_projection(app),
+      hula::cli::add_hermite(app),
       hula::cli::add_match_curvature(app),
   };
   try {

@@ -80,15 +80,10 @@ TEST(Profile, JsonFormsAndTheirErrors) {
   EXPECT_NEAR(parse(R"({"law": "2*u"})")(0.25), 0.5, 1e-15);
   EXPECT_NEAR(parse(R"({"law": "2*t", "variable": "t"})")(0.25), 0.5, 1e-15);
   EXPECT_NEAR(parse(R"({"samples": [[0, 0], [1, 4]]})")(0.25), 1.0, 1e-15);
-  EXPECT_NEAR(parse(R"({"bspline": {"degree": 1, "knots": [0, 0, 1, 1], "coefficients": [2, 4]}})")(0.5), 3.0,
-              1e-15);
-  {
-    std::ofstream(dir.path() / "k.csv") << "0,1\n0.5,2\n1,1\n";
-  }
+  EXPECT_NEAR(parse(R"({"bspline": {"degree": 1, "knots": [0, 0, 1, 1], "coefficients": [2, 4]}})")(0.5), 3.0, 1e-15);
+  { std::ofstream(dir.path() / "k.csv") << "0,1\n0.5,2\n1,1\n"; }
   EXPECT_NEAR(parse(R"({"csv": "k.csv"})")(0.75), 1.5, 1e-14);
-  {
-    std::ofstream(dir.path() / "bad.csv") << "0,1\n0.5,nan\n1,1\n";
-  }
+  { std::ofstream(dir.path() / "bad.csv") << "0,1\n0.5,nan\n1,1\n"; }
   HULA_EXPECT_ERROR(parse(R"({"csv": "bad.csv"})"), Errc::NonFiniteInput, "nan");
   HULA_EXPECT_ERROR(parse(R"({"csv": "missing.csv"})"), Errc::IoError, "missing.csv");
   HULA_EXPECT_ERROR(parse(R"({"law": "2*u +"})"), Errc::ParseError, "target.law");

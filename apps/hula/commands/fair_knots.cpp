@@ -232,7 +232,8 @@ Command add_fair_knots(CLI::App& app) {
   add_study_options(sub, *args);
   sub->footer(
       "--svg DIR writes curve_before.svg, curve_after.svg (curves with curvature fins), convergence.svg, and with "
-      "a \"map\" energy_map.svg, energy_map.csv and (with map.sections) energy_sections.svg. --log writes the GA's run log (all rounds).");
+      "a \"map\" energy_map.svg, energy_map.csv and (with map.sections) energy_sections.svg. --log writes the GA's run "
+      "log (all rounds).");
   return {sub, [args] { return run_fair_knots(*args); }};
 }
 

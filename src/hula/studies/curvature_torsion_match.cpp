@@ -30,26 +30,6 @@ void check(bool ok, const std::string& field, double value, const char* range) {
 
 }  // namespace
 
-std::pair<double, double> curvature_torsion_errors(const CurvatureMatch& match, std::span<const double> x,
-                                                   SplineProfileSampler::Workspace& ws, std::span<Vec3> points,
-                                                   std::span<double> kappa, std::span<double> tau) {
-  match.points_from(x, points);
-  if (!match.sampler().sample(points, ws, kappa, tau)) return {kNaN, kNaN};
-  const auto& kt = match.target_samples();
-  const auto& tt = match.torsion_target_samples();
-  double ek = 0.0, et = 0.0;
-  std::size_t defined = 0;
-  for (std::size_t i = 0; i < kappa.size(); ++i) {
-    ek += std::fabs(kappa[i] - kt[i]);
-    if (std::isfinite(tau[i])) {
-      et += std::fabs(tau[i] - tt[i]);
-      ++defined;
-    }
-  }
-  if (2 * defined < tau.size()) return {kNaN, kNaN};
-  return {ek / static_cast<double>(kappa.size()), et / static_cast<double>(defined)};
-}
-
 optim::Problem curvature_torsion_problem(const CurvatureMatch& match) {
   require_torsion(match);
   optim::Problem p;
@@ -65,20 +45,18 @@ optim::Problem curvature_torsion_problem(const CurvatureMatch& match) {
     if (points.size() != n_points) points.resize(n_points);
     if (kappa.size() != n_samples) kappa.resize(n_samples);
     if (tau.size() != n_samples) tau.resize(n_samples);
-    const auto [ek, et] = curvature_torsion_errors(match, x, ws, points, kappa, tau);
-    values[0] = ek;
-    values[1] = et;
+    const MatchDistances d = match.mean_distances(x, ws, points, kappa, tau);
+    values[0] = d.mean;
+    values[1] = d.torsion_mean;
   };
   return p;
 }
 
 void TorsionMatchSettings::validate() const {
-  check(population >= 4 && population % 2 == 0, "nsga2.population", static_cast<double>(population),
-        "even and >= 4");
+  check(population >= 4 && population % 2 == 0, "nsga2.population", static_cast<double>(population), "even and >= 4");
   check(crossover_probability >= 0.0 && crossover_probability <= 1.0, "nsga2.crossover_probability",
         crossover_probability, "in [0, 1]");
-  check(std::isfinite(crossover_eta) && crossover_eta >= 0.0, "nsga2.crossover_eta", crossover_eta,
-        "finite and >= 0");
+  check(std::isfinite(crossover_eta) && crossover_eta >= 0.0, "nsga2.crossover_eta", crossover_eta, "finite and >= 0");
   check(std::isfinite(mutation_eta) && mutation_eta >= 0.0, "nsga2.mutation_eta", mutation_eta, "finite and >= 0");
   if (mutation_probability)
     check(*mutation_probability >= 0.0 && *mutation_probability <= 1.0, "nsga2.mutation_probability",
@@ -101,8 +79,9 @@ TorsionMatchResult run_curvature_torsion_match(const CurvatureMatch& match, cons
   std::vector<Vec3> points(n_points);
   std::vector<double> kappa(n_samples), tau(n_samples);
   const std::vector<double> start = match.start_variables();
-  std::tie(result.start_curvature, result.start_torsion) =
-      curvature_torsion_errors(match, start, ws, points, kappa, tau);
+  const MatchDistances at_start = match.mean_distances(start, ws, points, kappa, tau);
+  result.start_curvature = at_start.mean;
+  result.start_torsion = at_start.torsion_mean;
 
   optim::Nsga2Options options;
   options.population = settings.population;
@@ -151,9 +130,9 @@ TorsionMatchResult run_curvature_torsion_match(const CurvatureMatch& match, cons
       return true;
     };
     result.lm = refine_levenberg_marquardt(ls, best->variables, settings.lm);
-    const auto [ek, et] = curvature_torsion_errors(match, result.lm->variables, ws, points, kappa, tau);
-    if (std::isfinite(ek) && std::isfinite(et)) {
-      TorsionFrontMember polished{result.lm->variables, ek, et, true};
+    const MatchDistances d = match.mean_distances(result.lm->variables, ws, points, kappa, tau);
+    if (std::isfinite(d.mean) && std::isfinite(d.torsion_mean)) {
+      TorsionFrontMember polished{result.lm->variables, d.mean, d.torsion_mean, true};
       // Keep the set non-dominated: drop members the polished curve dominates.
       std::erase_if(result.front, [&](const TorsionFrontMember& m) {
         return polished.curvature <= m.curvature && polished.torsion <= m.torsion &&

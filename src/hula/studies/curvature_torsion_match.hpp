@@ -29,19 +29,8 @@
 
 namespace hula::studies {
 
-/// Both mean errors of one candidate, without allocation once the buffers are warm.
-/// @param match a problem whose setup has a torsion target
-/// @param x match.dimension() design variables
-/// @param ws, points, kappa, tau scratch (points: point count; kappa, tau: sample count)
-/// @returns {mean |κ − κ*|, mean |τ − τ*| over the samples where τ is defined}; NaN, NaN if the
-///   spline is degenerate or τ is defined at fewer than half of the samples
-[[nodiscard]] std::pair<double, double> curvature_torsion_errors(const CurvatureMatch& match,
-                                                                 std::span<const double> x,
-                                                                 SplineProfileSampler::Workspace& ws,
-                                                                 std::span<Vec3> points, std::span<double> kappa,
-                                                                 std::span<double> tau);
-
-/// The two-objective Flexo problem (f1, f2) above; one workspace per thread.
+/// The two-objective Flexo problem (f1, f2) above (CurvatureMatch::mean_distances); one workspace per
+/// thread; `match` must outlive it. A candidate whose torsion is undefined at every sample fails.
 /// @throws hula::Error(Errc::InvalidArgument) if the setup has no torsion target or is planar
 [[nodiscard]] optim::Problem curvature_torsion_problem(const CurvatureMatch& match);
 
@@ -107,8 +96,7 @@ struct TorsionMatchResult {
 /// @throws hula::Error(Errc::InvalidOption) for invalid settings (before any evaluation)
 /// @throws hula::Error(Errc::NumericalFailure) if no candidate could be evaluated
 [[nodiscard]] TorsionMatchResult run_curvature_torsion_match(const CurvatureMatch& match,
-                                                             const TorsionMatchSettings& settings,
-                                                             std::uint64_t seed, std::size_t threads = 1,
-                                                             bool keep_log = false);
+                                                             const TorsionMatchSettings& settings, std::uint64_t seed,
+                                                             std::size_t threads = 1, bool keep_log = false);
 
 }  // namespace hula::studies

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 
 #include "hula/core/error.hpp"
 
@@ -30,13 +31,15 @@ void LmOptions::validate() const {
   check_range(difference_step > 0.0 && difference_step <= 1e-2, "difference_step", difference_step, "in (0, 1e-2]");
 }
 
-LmResult refine_levenberg_marquardt(const CurvatureMatch& match, std::span<const double> start,
+LmResult refine_levenberg_marquardt(const LeastSquaresProblem& problem, std::span<const double> start,
                                     const LmOptions& options) {
   options.validate();
+  if (problem.residual_count == 0 || !problem.residuals)
+    throw Error(Errc::InvalidArgument, "a least-squares problem needs residuals (residual_count >= 1 and a function)");
   const auto clock_start = std::chrono::steady_clock::now();
-  const std::size_t n = match.dimension();
-  const std::size_t m = match.target_samples().size();
-  const std::vector<optim::Variable> vars = match.variables();
+  const std::size_t n = problem.variables.size();
+  const std::size_t m = problem.residual_count;
+  const std::vector<optim::Variable>& vars = problem.variables;
   if (start.size() != n)
     throw Error(
         Errc::InvalidArgument,
@@ -49,8 +52,6 @@ LmResult refine_levenberg_marquardt(const CurvatureMatch& match, std::span<const
                       format_number(vars[j].lower) + ", " + format_number(vars[j].upper) + "]",
                   {.field = "start", .index = j});
 
-  SplineProfileSampler::Workspace ws;
-  std::vector<Vec3> points(match.setup().points.size());
   LmResult result;
   result.variables.assign(start.begin(), start.end());
   const auto M = static_cast<Eigen::Index>(m);
@@ -58,14 +59,14 @@ LmResult refine_levenberg_marquardt(const CurvatureMatch& match, std::span<const
   Eigen::VectorXd r(M), r_try(M), r_plus(M), r_minus(M);
   auto eval = [&](std::span<const double> x, Eigen::VectorXd& out) {
     ++result.evaluations;
-    return match.residuals(x, ws, points, std::span<double>(out.data(), m));
+    return problem.residuals(x, std::span<double>(out.data(), m));
   };
   auto mean_abs = [&](const Eigen::VectorXd& v) { return v.cwiseAbs().sum() / static_cast<double>(m); };
 
   std::vector<double>& x = result.variables;
   if (!eval(x, r))
-    throw Error(Errc::NumericalFailure, "the start points give a degenerate spline (coincident points)",
-                {.field = "points"});
+    throw Error(Errc::NumericalFailure, "the residuals are undefined at the start (a degenerate curve)",
+                {.field = "start"});
   result.mean_before = mean_abs(r);
   Eigen::MatrixXd J(M, Nv);
   Eigen::MatrixXd A(M + Nv, Nv);
@@ -134,6 +135,19 @@ LmResult refine_levenberg_marquardt(const CurvatureMatch& match, std::span<const
   result.mean_after = mean_abs(r);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
   return result;
+}
+
+LmResult refine_levenberg_marquardt(const CurvatureMatch& match, std::span<const double> start,
+                                    const LmOptions& options) {
+  LeastSquaresProblem problem;
+  problem.variables = match.variables();
+  problem.residual_count = match.target_samples().size();
+  auto ws = std::make_shared<SplineProfileSampler::Workspace>();
+  auto points = std::make_shared<std::vector<Vec3>>(match.setup().points.size());
+  problem.residuals = [&match, ws, points](std::span<const double> x, std::span<double> r) {
+    return match.residuals(x, *ws, *points, r);
+  };
+  return refine_levenberg_marquardt(problem, start, options);
 }
 
 }  // namespace hula::studies

@@ -22,6 +22,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -63,7 +64,28 @@ struct LmResult {
   double seconds = 0.0;
 };
 
-/// Refines design variables of a curvature-matching problem by bounded Levenberg–Marquardt.
+/// A bounded nonlinear least-squares problem: minimise ‖r(x)‖² with every x_j in
+/// [variables[j].lower, variables[j].upper].
+struct LeastSquaresProblem {
+  /// The variables and their bounds (names are used in error messages).
+  std::vector<optim::Variable> variables{};
+  /// Number of residuals, >= 1.
+  std::size_t residual_count = 0;
+  /// Writes residual_count residuals of x; returns false where they are undefined (such a step is rejected).
+  std::function<bool(std::span<const double> x, std::span<double> r)> residuals{};
+};
+
+/// Bounded Levenberg–Marquardt on any least-squares problem (the method above); LmResult's
+/// mean_before / mean_after are mean |r_i| and LmOptions::target_mean applies to it.
+/// @throws hula::Error(Errc::InvalidOption) from options.validate()
+/// @throws hula::Error(Errc::InvalidArgument) if the problem has no residual or no function, or start has the
+///   wrong size or leaves the bounds (naming the variable)
+/// @throws hula::Error(Errc::NumericalFailure) if the residuals are undefined at the start
+[[nodiscard]] LmResult refine_levenberg_marquardt(const LeastSquaresProblem& problem, std::span<const double> start,
+                                                  const LmOptions& options = {});
+
+/// Refines design variables of a curvature-matching problem by bounded Levenberg–Marquardt
+/// (the residuals r_i = κ(u_i) − κ*(u_i); mean |r_i| is the mean curvature distance).
 /// @param match the problem; @param start its dimension() values, within the bounds
 /// @param options iteration limits and tolerances
 /// @returns the refined variables and a report (never worse than the start)

@@ -120,12 +120,11 @@ void Profile::sample(std::span<const double> u, std::span<double> out) const {
                                            std::to_string(out.size()) + " outputs");
   if (tape_->evaluate(u, out, std::span<std::uint8_t>{}) == 0) return;
   for (std::size_t i = 0; i < u.size(); ++i)
-    if (std::isnan(out[i]))
-      throw Error(Errc::OutOfDomain, "the profile is undefined at u = " + std::to_string(u[i]));
+    if (std::isnan(out[i])) throw Error(Errc::OutOfDomain, "the profile is undefined at u = " + std::to_string(u[i]));
 }
 
-Profile profile_from_json(const io::json::Json& value, const io::json::JsonPath& path, const std::filesystem::path& base,
-                          const law::Context& context) {
+Profile profile_from_json(const io::json::Json& value, const io::json::JsonPath& path,
+                          const std::filesystem::path& base, const law::Context& context) {
   namespace json = io::json;
   if (!value.is_object()) json::type_error(value, path, "an object with one of law, samples, csv, bspline");
   if (const io::json::Json* text = json::optional_member(value, "law")) {
@@ -159,7 +158,8 @@ Profile profile_from_json(const io::json::Json& value, const io::json::JsonPath&
     if (file.is_relative()) file = base / file;
     const io::PointSet pts = io::read_points_file(file);
     if (pts.dimension != 2)
-      throw Error(Errc::ParseError, path.member("csv").text + ": '" + file.string() + "' must have two columns (u, value)",
+      throw Error(Errc::ParseError,
+                  path.member("csv").text + ": '" + file.string() + "' must have two columns (u, value)",
                   path.member("csv").where);
     std::vector<double> u(pts.points.size()), v(pts.points.size());
     for (std::size_t i = 0; i < u.size(); ++i) {
@@ -172,7 +172,8 @@ Profile profile_from_json(const io::json::Json& value, const io::json::JsonPath&
     json::reject_unknown_members(value, path, {"bspline"});
     const json::JsonPath bp = path.member("bspline");
     json::reject_unknown_members(*b, bp, {"degree", "knots", "coefficients"});
-    const int degree = static_cast<int>(json::get_integer(json::require_member(*b, bp, "degree"), bp.member("degree"), 1, 64));
+    const int degree =
+        static_cast<int>(json::get_integer(json::require_member(*b, bp, "degree"), bp.member("degree"), 1, 64));
     const auto knots = json::get_number_array(json::require_member(*b, bp, "knots"), bp.member("knots"));
     const auto coefficients =
         json::get_number_array(json::require_member(*b, bp, "coefficients"), bp.member("coefficients"));
