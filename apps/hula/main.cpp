@@ -65,6 +65,7 @@ int main(int argc, char** argv) {
       hula::cli::add_edit_projection(app),
       hula::cli::add_hermite(app),
       hula::cli::add_match_curvature(app),
+      hula::cli::add_match_curvature_torsion(app),
   };
   try {
     try {

@@ -123,6 +123,8 @@ struct Command {
 [[nodiscard]] Command add_hermite(CLI::App& app);
 /// `hula match-curvature`: a prescribed curvature profile matched over data points (GA or hybrid).
 [[nodiscard]] Command add_match_curvature(CLI::App& app);
+/// `hula match-curvature-torsion`: curvature and torsion profiles as two objectives (NSGA-II).
+[[nodiscard]] Command add_match_curvature_torsion(CLI::App& app);
 /// Runs the demo and prints its JSON.
 int run_demo();
 

@@ -472,20 +472,44 @@ optim::Problem CurvatureMatch::problem(double precision) const {
   return p;
 }
 
-std::vector<double> curvature_profile_of(std::span<const Vec3> points, int dimension, std::size_t samples,
-                                         std::optional<Vec3> start_tangent, std::optional<Vec3> end_tangent,
-                                         ProfileAbscissa abscissa) {
+namespace {
+
+// κ(u_i) and, when `torsion`, τ(u_i) of the spline through `points`.
+std::vector<double> profile_of(std::span<const Vec3> points, int dimension, std::size_t samples,
+                               std::optional<Vec3> start_tangent, std::optional<Vec3> end_tangent,
+                               ProfileAbscissa abscissa, bool torsion) {
   if (samples < 2)
     throw Error(Errc::InvalidArgument, "samples = " + std::to_string(samples) + " must be at least 2",
                 {.field = "samples"});
-  const SplineProfileSampler sampler(points.size(), dimension, uniform_abscissae(samples), start_tangent, end_tangent,
-                                     abscissa);
+  const std::vector<double> u = uniform_abscissae(samples);
+  const SplineProfileSampler sampler(points.size(), dimension, u, start_tangent, end_tangent, abscissa);
   SplineProfileSampler::Workspace ws;
-  std::vector<double> kappa(samples);
-  if (!sampler.sample(points, ws, kappa))
+  std::vector<double> kappa(samples), tau(torsion ? samples : 0);
+  if (!sampler.sample(points, ws, kappa, tau))
     throw Error(Errc::CoincidentPoints, "points: two consecutive points coincide or a value overflowed",
                 {.field = "points"});
-  return kappa;
+  if (!torsion) return kappa;
+  for (std::size_t i = 0; i < samples; ++i)
+    if (!std::isfinite(tau[i]))
+      throw Error(Errc::OutOfDomain,
+                  "the torsion of the curve is undefined at u = " + format_number(u[i]) +
+                      " (its curvature vanishes there, as at a natural end: fix the end tangents)",
+                  {.field = "points", .index = i});
+  return tau;
+}
+
+}  // namespace
+
+std::vector<double> curvature_profile_of(std::span<const Vec3> points, int dimension, std::size_t samples,
+                                         std::optional<Vec3> start_tangent, std::optional<Vec3> end_tangent,
+                                         ProfileAbscissa abscissa) {
+  return profile_of(points, dimension, samples, start_tangent, end_tangent, abscissa, false);
+}
+
+std::vector<double> torsion_profile_of(std::span<const Vec3> points, std::size_t samples,
+                                       std::optional<Vec3> start_tangent, std::optional<Vec3> end_tangent,
+                                       ProfileAbscissa abscissa) {
+  return profile_of(points, 3, samples, start_tangent, end_tangent, abscissa, true);
 }
 
 }  // namespace hula::studies

@@ -199,4 +199,12 @@ class CurvatureMatch {
                                                        std::optional<Vec3> end_tangent = std::nullopt,
                                                        ProfileAbscissa abscissa = ProfileAbscissa::Parameter);
 
+/// The torsion profile τ(u_i) of the 3-D spline through `points`, as curvature_profile_of.
+/// @throws hula::Error as curvature_profile_of, and Errc::OutOfDomain naming u where τ is undefined (the
+///   curvature vanishes there, as at a natural end)
+[[nodiscard]] std::vector<double> torsion_profile_of(std::span<const Vec3> points, std::size_t samples,
+                                                     std::optional<Vec3> start_tangent = std::nullopt,
+                                                     std::optional<Vec3> end_tangent = std::nullopt,
+                                                     ProfileAbscissa abscissa = ProfileAbscissa::Parameter);
+
 }  // namespace hula::studies

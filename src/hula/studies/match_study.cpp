@@ -132,18 +132,19 @@ std::vector<Vec3> read_offsets(const Json& body, std::string_view name, std::siz
 // The "known curve" target form: the curvature profile of the spline through `of_points`, optionally mirrored
 // (κ(1 − u)), symmetrised ((κ(u) + κ(1 − u)) / 2) and multiplied by a factor profile.
 Profile known_curve_target(const Json& t, const jr::JsonPath& path, const CurvatureMatchSetup& setup,
-                           const std::filesystem::path& base, const law::Context& context) {
+                           const std::filesystem::path& base, const law::Context& context, bool torsion) {
   jr::reject_unknown_members(t, path, {"of_points", "mirror", "symmetrise", "factor"});
   const jr::PointArray pa = jr::get_points(jr::require_member(t, path, "of_points"), path.member("of_points"));
   if (pa.dimension != setup.dimension)
-    throw Error(Errc::ParseError, path.text + ".of_points must have as many components as the points",
-                {.field = "target"});
+    throw Error(Errc::ParseError, path.text + ".of_points must have as many components as the points", path.where);
   std::vector<double> kappa;
   try {
-    kappa = curvature_profile_of(pa.points, setup.dimension, setup.samples, setup.start_tangent, setup.end_tangent,
-                                 setup.abscissa);
+    kappa = torsion
+                ? torsion_profile_of(pa.points, setup.samples, setup.start_tangent, setup.end_tangent, setup.abscissa)
+                : curvature_profile_of(pa.points, setup.dimension, setup.samples, setup.start_tangent,
+                                       setup.end_tangent, setup.abscissa);
   } catch (const Error& e) {
-    throw Error(e.code(), path.text + ".of_points: " + e.message(), {.field = "target"});
+    throw Error(e.code(), path.text + ".of_points: " + e.message(), path.where);
   }
   const std::size_t N = kappa.size();
   auto flag = [&](std::string_view name) {
@@ -233,7 +234,9 @@ MatchGaSettings read_ga(const Json& g, const jr::JsonPath& path) {
   return s;
 }
 
-LmOptions read_lm(const Json& g, const jr::JsonPath& path) {
+}  // namespace
+
+LmOptions lm_options_from_json(const Json& g, const io::json::JsonPath& path) {
   jr::reject_unknown_members(
       g, path, {"max_iterations", "target_mean", "relative_tolerance", "initial_lambda", "difference_step"});
   LmOptions o;
@@ -251,51 +254,14 @@ LmOptions read_lm(const Json& g, const jr::JsonPath& path) {
   return o;
 }
 
-}  // namespace
-
-MatchStudy match_study_from_json(const StudyDocument& document, const std::filesystem::path& base) {
-  const Json& body = document.body;
-  check_members(body, {"points", "lower", "upper", "start_tangent", "end_tangent", "target", "abscissa", "samples",
-                       "method", "ga", "lm"});
-  const jr::JsonPath root = jr::root_path("");
-  MatchStudy study;
-  study.header = document.header;
-  CurvatureMatchSetup& s = study.setup;
-  const jr::PointArray pa = jr::get_points(jr::require_member(body, root, "points"), jr::root_path("points"));
-  s.points = pa.points;
-  s.dimension = pa.dimension;
-  if (s.points.size() < 2)
-    throw Error(Errc::TooFewPoints, "points: at least 2 data points are needed, got " + std::to_string(s.points.size()),
-                {.field = "points"});
-  s.lower = read_offsets(body, "lower", s.points.size(), s.dimension);
-  s.upper = read_offsets(body, "upper", s.points.size(), s.dimension);
-  if (const Json* v = jr::optional_member(body, "start_tangent"))
-    s.start_tangent = read_vector(*v, jr::root_path("start_tangent"), s.dimension);
-  if (const Json* v = jr::optional_member(body, "end_tangent"))
-    s.end_tangent = read_vector(*v, jr::root_path("end_tangent"), s.dimension);
-  if (const Json* v = jr::optional_member(body, "samples"))
-    s.samples = static_cast<std::size_t>(jr::get_integer(*v, jr::root_path("samples"), 0, 1000000));
-  if (s.samples < 2)
-    throw Error(Errc::InvalidArgument, "samples = " + std::to_string(s.samples) + " must be at least 2",
-                {.field = "samples"});
-  if (const Json* v = jr::optional_member(body, "abscissa"))
-    s.abscissa = profile_abscissa_from_name(jr::get_string(*v, jr::root_path("abscissa")), "abscissa");
-  if (const Json* v = jr::optional_member(body, "method"))
-    study.method = match_method_from_name(jr::get_string(*v, jr::root_path("method")), "method");
-  if (const Json* v = jr::optional_member(body, "ga")) study.ga = read_ga(*v, jr::root_path("ga"));
-  if (const Json* v = jr::optional_member(body, "lm")) study.lm = read_lm(*v, jr::root_path("lm"));
-  // Bounds before the target: a bad bound is reported without evaluating anything.
-  s.target = Profile::from_samples(std::vector<double>{0.0, 1.0}, std::vector<double>{0.0, 0.0});
-  s.validate();
-  const Json& t = jr::require_member(body, root, "target");
-  study.target_json = t;
-  const law::Context context{};
-  const jr::JsonPath tpath = jr::root_path("target");
-  if (t.is_object() && t.contains("of_points"))
-    s.target = known_curve_target(t, tpath, s, base, context);
-  else
-    s.target = profile_from_json(t, tpath, base, context);
-  return study;
+Json lm_options_to_json(const LmOptions& o) {
+  Json lm = Json::object();
+  lm["max_iterations"] = o.max_iterations;
+  lm["target_mean"] = o.target_mean;
+  lm["relative_tolerance"] = o.relative_tolerance;
+  lm["initial_lambda"] = o.initial_lambda;
+  lm["difference_step"] = o.difference_step;
+  return lm;
 }
 
 namespace {
@@ -323,17 +289,80 @@ Json distances_json(const MatchDistances& d) {
 
 }  // namespace
 
-Json match_study_to_json(const MatchStudy& study) {
-  const CurvatureMatchSetup& s = study.setup;
-  Json out = header_to_json(study.header);
+MatchSetupJson match_setup_from_json(const Json& body, const std::filesystem::path& base, bool with_torsion) {
+  const jr::JsonPath root = jr::root_path("");
+  MatchSetupJson out;
+  CurvatureMatchSetup& s = out.setup;
+  const jr::PointArray pa = jr::get_points(jr::require_member(body, root, "points"), jr::root_path("points"));
+  s.points = pa.points;
+  s.dimension = pa.dimension;
+  if (s.points.size() < 2)
+    throw Error(Errc::TooFewPoints, "points: at least 2 data points are needed, got " + std::to_string(s.points.size()),
+                {.field = "points"});
+  if (with_torsion && s.dimension != 3)
+    throw Error(Errc::InvalidArgument, "points: matching torsion needs 3-D points ([x, y, z]); planar curves have none",
+                {.field = "points"});
+  s.lower = read_offsets(body, "lower", s.points.size(), s.dimension);
+  s.upper = read_offsets(body, "upper", s.points.size(), s.dimension);
+  if (const Json* v = jr::optional_member(body, "start_tangent"))
+    s.start_tangent = read_vector(*v, jr::root_path("start_tangent"), s.dimension);
+  if (const Json* v = jr::optional_member(body, "end_tangent"))
+    s.end_tangent = read_vector(*v, jr::root_path("end_tangent"), s.dimension);
+  if (const Json* v = jr::optional_member(body, "samples"))
+    s.samples = static_cast<std::size_t>(jr::get_integer(*v, jr::root_path("samples"), 0, 1000000));
+  if (s.samples < 2)
+    throw Error(Errc::InvalidArgument, "samples = " + std::to_string(s.samples) + " must be at least 2",
+                {.field = "samples"});
+  if (const Json* v = jr::optional_member(body, "abscissa"))
+    s.abscissa = profile_abscissa_from_name(jr::get_string(*v, jr::root_path("abscissa")), "abscissa");
+  // Bounds before the targets: a bad bound is reported without evaluating anything.
+  s.target = Profile::from_samples(std::vector<double>{0.0, 1.0}, std::vector<double>{0.0, 0.0});
+  s.validate();
+  const law::Context context{};
+  const auto read_target = [&](std::string_view name, bool torsion, Json& echo) {
+    const Json& t = jr::require_member(body, root, name);
+    echo = t;
+    const jr::JsonPath tpath = jr::root_path(name);
+    if (t.is_object() && t.contains("of_points")) return known_curve_target(t, tpath, s, base, context, torsion);
+    return profile_from_json(t, tpath, base, context);
+  };
+  s.target = read_target("target", false, out.target);
+  if (with_torsion) s.torsion_target = read_target("torsion_target", true, out.torsion_target);
+  return out;
+}
+
+void match_setup_to_json(const MatchSetupJson& setup, Json& out) {
+  const CurvatureMatchSetup& s = setup.setup;
   out["points"] = points_json(s.points, s.dimension);
   out["lower"] = points_json(s.lower, s.dimension);
   out["upper"] = points_json(s.upper, s.dimension);
   if (s.start_tangent) out["start_tangent"] = point_json(*s.start_tangent, s.dimension);
   if (s.end_tangent) out["end_tangent"] = point_json(*s.end_tangent, s.dimension);
-  out["target"] = study.target_json;
+  out["target"] = setup.target;
+  if (s.torsion_target) out["torsion_target"] = setup.torsion_target;
   out["abscissa"] = std::string(profile_abscissa_name(s.abscissa));
   out["samples"] = s.samples;
+}
+
+MatchStudy match_study_from_json(const StudyDocument& document, const std::filesystem::path& base) {
+  const Json& body = document.body;
+  check_members(body, {"points", "lower", "upper", "start_tangent", "end_tangent", "target", "abscissa", "samples",
+                       "method", "ga", "lm"});
+  MatchStudy study;
+  study.header = document.header;
+  if (const Json* v = jr::optional_member(body, "method"))
+    study.method = match_method_from_name(jr::get_string(*v, jr::root_path("method")), "method");
+  if (const Json* v = jr::optional_member(body, "ga")) study.ga = read_ga(*v, jr::root_path("ga"));
+  if (const Json* v = jr::optional_member(body, "lm")) study.lm = lm_options_from_json(*v, jr::root_path("lm"));
+  MatchSetupJson setup = match_setup_from_json(body, base, false);
+  study.setup = std::move(setup.setup);
+  study.target_json = std::move(setup.target);
+  return study;
+}
+
+Json match_study_to_json(const MatchStudy& study) {
+  Json out = header_to_json(study.header);
+  match_setup_to_json({study.setup, study.target_json, {}}, out);
   out["method"] = std::string(match_method_name(study.method));
   Json ga = Json::object();
   ga["algorithm"] = study.ga.algorithm == MatchGaSettings::Algorithm::Binary ? "binary" : "real";
@@ -346,13 +375,7 @@ Json match_study_to_json(const MatchStudy& study) {
   if (study.ga.mutation_probability) ga["mutation_probability"] = *study.ga.mutation_probability;
   ga["precision"] = study.ga.precision;
   out["ga"] = ga;
-  Json lm = Json::object();
-  lm["max_iterations"] = study.lm.max_iterations;
-  lm["target_mean"] = study.lm.target_mean;
-  lm["relative_tolerance"] = study.lm.relative_tolerance;
-  lm["initial_lambda"] = study.lm.initial_lambda;
-  lm["difference_step"] = study.lm.difference_step;
-  out["lm"] = lm;
+  out["lm"] = lm_options_to_json(study.lm);
   return out;
 }
 

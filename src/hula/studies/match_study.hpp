@@ -107,6 +107,26 @@ struct MatchResult {
 [[nodiscard]] MatchResult run_curvature_match(const CurvatureMatch& match, const MatchStudy& study,
                                               bool keep_log = false);
 
+/// The members of a curvature-matching setup, shared by the "match-curvature" and
+/// "match-curvature-torsion" study kinds, with the targets as written (echoed in the resolved setup).
+struct MatchSetupJson {
+  CurvatureMatchSetup setup{};
+  Json target{};
+  Json torsion_target{};
+};
+/// Reads points, lower, upper, start_tangent, end_tangent, samples, abscissa, target and (with_torsion)
+/// torsion_target; the caller checks the members. Bounds are checked before any target is evaluated.
+/// @throws hula::Error as match_study_from_json; with_torsion also refuses planar points and a known-curve
+///   torsion target whose torsion is undefined at a sample (Errc::OutOfDomain)
+[[nodiscard]] MatchSetupJson match_setup_from_json(const Json& body, const std::filesystem::path& base,
+                                                   bool with_torsion);
+/// Writes the setup's members into `out` (a study document).
+void match_setup_to_json(const MatchSetupJson& setup, Json& out);
+/// Reads the "lm" settings object.
+/// @throws hula::Error(Errc::ParseError / InvalidOption) naming `lm.<field>`
+[[nodiscard]] LmOptions lm_options_from_json(const Json& value, const io::json::JsonPath& path);
+/// The "lm" settings object.
+[[nodiscard]] Json lm_options_to_json(const LmOptions& options);
 /// Reads a "match-curvature" study (docs/formats.md). Everything is checked before any run.
 /// @param document the parsed study file (parse_study_json with kind "match-curvature")
 /// @param base directory of the study file (relative CSV paths)
