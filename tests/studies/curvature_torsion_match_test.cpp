@@ -110,6 +110,12 @@ TEST(CurvatureTorsionMatch, ParetoSetContainsACurveMatchingBoth) {
   EXPECT_LT(best.torsion, 1e-3);
   EXPECT_LT(std::max(best.curvature, best.torsion), 0.01 * std::max(result.start_curvature, result.start_torsion));
   ASSERT_EQ(result.best_curvature.size(), settings.generations + 1);
+  // NSGA-II's own front is kept: a spread of trade-offs, each with both errors.
+  ASSERT_GT(result.nsga2_front.size(), 5u);
+  for (std::size_t i = 1; i < result.nsga2_front.size(); ++i) {
+    EXPECT_LE(result.nsga2_front[i - 1].curvature, result.nsga2_front[i].curvature);
+    EXPECT_GE(result.nsga2_front[i - 1].torsion, result.nsga2_front[i].torsion);
+  }
 }
 
 TEST(CurvatureTorsionMatch, PlanarOrTorsionlessProblemsAreRefused) {

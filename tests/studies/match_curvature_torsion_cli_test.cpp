@@ -35,13 +35,14 @@ TEST(MatchCurvatureTorsionCli, HelixExampleMatchesBothProfiles) {
     both = both || (m["curvature"].get<double>() < 1e-3 && m["torsion"].get<double>() < 1e-3);
   }
   EXPECT_TRUE(both);
+  EXPECT_GT(j["nsga2_front"].size(), 5U);
   EXPECT_LT(j["compromise"]["curvature"].get<double>(), 1e-3);
   EXPECT_LT(j["compromise"]["torsion"].get<double>(), 1e-3);
   EXPECT_GT(j["start"]["curvature"].get<double>(), 5e-3);
   EXPECT_EQ(j["study"]["study"], "match-curvature-torsion");
   EXPECT_EQ(j["compromise"]["curve"]["kind"], "nurbs");
-  for (const char* f : {"curve_before.svg", "curve_after.svg", "profile.svg", "torsion_profile.svg", "pareto.svg",
-                        "convergence.svg"})
+  for (const char* f :
+       {"curve_before.svg", "curve_after.svg", "profile.svg", "torsion_profile.svg", "pareto.svg", "convergence.svg"})
     EXPECT_TRUE(std::filesystem::exists(dir.path() / "svg" / f)) << f;
   EXPECT_GT(std::filesystem::file_size(dir.path() / "log.csv"), 1000U);
   // The resolved study repeats the run exactly.
@@ -72,7 +73,9 @@ TEST(MatchCurvatureTorsionCli, BadStudiesAreRefusedBeforeAnyRun) {
       {[](Json& j) { j["nsga2"]["eta"] = 7; }, "nsga2.eta: unknown member"},
       {[](Json& j) { j["lower"][1][0] = -1; }, "lower"},
       {[](Json& j) { j["samples"] = 0; }, "samples"},
-      {[](Json& j) { j["torsion_target"] = Json{{"samples", Json::array({Json::array({0, 1}), Json::array({0.5})})}}; },
+      {[](Json& j) {
+         j["torsion_target"] = Json{{"samples", Json::array({Json::array({0, 1}), Json::array({0.5})})}};
+       },
        "torsion_target.samples"},
       {[](Json& j) {
          for (auto& p : j["points"]) p.erase(2);
@@ -80,10 +83,7 @@ TEST(MatchCurvatureTorsionCli, BadStudiesAreRefusedBeforeAnyRun) {
          for (auto& p : j["upper"]) p.erase(2);
        },
        "3-D points"},
-      {[](Json& j) {
-         j.erase("end_tangent");
-       },
-       "torsion of the curve is undefined"},
+      {[](Json& j) { j.erase("end_tangent"); }, "torsion of the curve is undefined"},
   };
   for (const Case& c : cases) {
     const ProcessResult r = run_with(c.edit);

@@ -108,6 +108,9 @@ TorsionMatchResult run_curvature_torsion_match(const CurvatureMatch& match, cons
   result.report = run.report;
   for (const optim::Solution& s : run.front)
     result.front.push_back({s.variables, s.objectives[0], s.objectives[1], false});
+  std::sort(result.front.begin(), result.front.end(),
+            [](const auto& a, const auto& b) { return a.curvature < b.curvature; });
+  result.nsga2_front = result.front;
 
   const auto worst = [](const TorsionFrontMember& m) { return std::max(m.curvature, m.torsion); };
   if (settings.polish && !result.front.empty()) {
@@ -233,13 +236,17 @@ Json torsion_match_result_to_json(const CurvatureMatch& match, const TorsionMatc
   out["start"] = {{"curvature", number_or_null(result.start_curvature)},
                   {"torsion", number_or_null(result.start_torsion)},
                   {"points", points_of(match, match.start_variables())}};
-  Json front = Json::array();
-  for (const TorsionFrontMember& m : result.front)
-    front.push_back({{"curvature", m.curvature},
-                     {"torsion", m.torsion},
-                     {"polished", m.polished},
-                     {"points", points_of(match, m.variables)}});
-  out["front"] = std::move(front);
+  const auto members = [&](const std::vector<TorsionFrontMember>& set) {
+    Json front = Json::array();
+    for (const TorsionFrontMember& m : set)
+      front.push_back({{"curvature", m.curvature},
+                       {"torsion", m.torsion},
+                       {"polished", m.polished},
+                       {"points", points_of(match, m.variables)}});
+    return front;
+  };
+  out["front"] = members(result.front);
+  out["nsga2_front"] = members(result.nsga2_front);
   if (!result.front.empty()) {
     const TorsionFrontMember& best = result.front[result.compromise];
     std::vector<Vec3> pts(match.setup().points.size());

@@ -70,8 +70,11 @@ struct TorsionFrontMember {
 
 /// Outcome of run_curvature_torsion_match.
 struct TorsionMatchResult {
-  /// Non-dominated curves, sorted by increasing curvature error.
+  /// Non-dominated curves, sorted by increasing curvature error (the polished curve included; when it
+  /// matches both targets it dominates every other and the set collapses to it).
   std::vector<TorsionFrontMember> front{};
+  /// NSGA-II's own first front before the polish, sorted by increasing curvature error.
+  std::vector<TorsionFrontMember> nsga2_front{};
   /// Index in `front` of the best compromise (smallest max(curvature, torsion)).
   std::size_t compromise = 0;
   /// Errors of the start curve.
