@@ -15,6 +15,7 @@
 #include <utility>
 
 #include "hula/core/error.hpp"
+#include "hula/law/antiderivative.hpp"
 
 namespace hula::studies {
 namespace {
@@ -158,7 +159,15 @@ class Solver {
       e.curve = intrinsic::reconstruct(e.kappa, e.tau, "s", length, p_.start, ro);
     } else {
       e.tau = s_.context().constant(0.0);
-      e.curve = intrinsic::reconstruct_planar(e.kappa, "s", length, p_.start, ro);
+      if (law::antiderivative(e.kappa, "s")) {
+        e.curve = intrinsic::reconstruct_planar(e.kappa, "s", length, p_.start, ro);
+      } else {
+        // No closed-form angle: integrate the Frenet–Serret system with τ = 0 directly (it stays
+        // in the start plane). reconstruct_planar would first try a numeric definite integral of
+        // κ to the rounding level, which is slow on B-spline profiles.
+        ro.method = intrinsic::ReconstructionMethod::FrenetSerret;
+        e.curve = intrinsic::reconstruct(e.kappa, e.tau, "s", length, p_.start, ro);
+      }
     }
     ++reconstructions_;
     const intrinsic::FramePoint end = e.curve->evaluate(length);
@@ -410,6 +419,8 @@ void DirectReconstructionOptions::validate() const {
   if (!(length_weight > 0.0 && length_weight <= 1e6)) invalid_option("length_weight", length_weight, "(0, 1e6]");
   if (!(end_tolerance >= 1e-13 && end_tolerance <= 1e-2))
     invalid_option("end_tolerance", end_tolerance, "[1e-13, 1e-2]");
+  if (!(optimality_tolerance >= 1e-12 && optimality_tolerance <= 1e-1))
+    invalid_option("optimality_tolerance", optimality_tolerance, "[1e-12, 0.1]");
   if (max_iterations < 1 || max_iterations > 10'000) invalid_option("max_iterations", max_iterations, "[1, 10000]");
   if (!(integration_tolerance >= 1e-13 && integration_tolerance <= 1e-3))
     invalid_option("integration_tolerance", integration_tolerance, "[1e-13, 1e-3]");
@@ -439,8 +450,13 @@ DirectReconstructionResult reconstruct_direct(const DirectReconstructionProblem&
     const Matrix r_upper = llt.matrixU();
     const Vector x_ref = solver.reference();
     const double tol = options.end_tolerance;
-    // Steps below this metric norm no longer change the curve beyond the end tolerance.
-    const double step_tol = tol;
+    // Optimality: the minimum-norm iteration converges linearly once feasible (it ignores the
+    // constraints' curvature), so it stops when a step is below optimality_tolerance times the
+    // correction's own norm (or below the end tolerance in absolute terms).
+    const auto step_tol = [&](const Vector& at) {
+      const Vector y = at - x_ref;
+      return std::max(tol, options.optimality_tolerance * std::sqrt(std::max(0.0, y.dot(metric * y))));
+    };
     bool converged = false;
     while (iterations < options.max_iterations) {
       ++iterations;
@@ -452,7 +468,7 @@ DirectReconstructionResult reconstruct_direct(const DirectReconstructionProblem&
       const Vector y = r_upper.triangularView<Eigen::Upper>().solve(z);
       const Vector step = (x_ref + y) - x;
       const double step_norm = std::sqrt(std::max(0.0, step.dot(metric * step)));
-      if (current.merit() <= tol && step_norm <= step_tol) {
+      if (current.merit() <= tol && step_norm <= step_tol(x)) {
         converged = true;
         break;
       }
@@ -470,7 +486,7 @@ DirectReconstructionResult reconstruct_direct(const DirectReconstructionProblem&
         }
       }
       if (!accepted) break;
-      if (current.merit() <= tol && alpha * step_norm <= step_tol) {
+      if (current.merit() <= tol && alpha * step_norm <= step_tol(x)) {
         converged = true;
         break;
       }
