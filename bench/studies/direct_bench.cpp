@@ -14,6 +14,8 @@
 #include <cmath>
 #include <string>
 
+// The target-from-a-known-curve helper shared with the tests (thesis 8.2.1 validation method).
+#include "../../tests/studies/direct_reconstruction_support.hpp"
 #include "hula/law/parser.hpp"
 #include "hula/studies/direct_reconstruction.hpp"
 
@@ -100,6 +102,24 @@ void BM_studies_direct_bvp_space_fit(benchmark::State& state) {
   run(state, t.space(true), true);
 }
 
+// Target from a known curve (the thesis's validation method, 8.2.1): the cubic Bézier of the unit
+// test tabulated at 201 arc-length samples (natural cubic spline profile), reconstructed freely and
+// held to the Bézier's own end.
+DirectReconstructionProblem bezier_problem(bool constrained) {
+  const nurbs::NurbsCurve bez(3, {0, 0, 0, 0, 1, 1, 1, 1}, {{0, 0, 0}, {1, 1, 0}, {2.5, -0.5, 0}, {3.5, 1, 0}});
+  const testing::CurvatureTarget t = testing::planar_curvature_target(bez, 201);
+  DirectReconstructionProblem p{.curvature = t.profile, .length = t.length, .start = t.start};
+  if (constrained) {
+    p.end_point = t.end_point;
+    p.end_tangent = t.end_tangent;
+  }
+  return p;
+}
+void BM_studies_direct_ivp_bezier_target(benchmark::State& state) { run(state, bezier_problem(false), false); }
+void BM_studies_direct_bvp_bezier_target(benchmark::State& state) { run(state, bezier_problem(true), false); }
+
+BENCHMARK(BM_studies_direct_ivp_bezier_target)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_studies_direct_bvp_bezier_target)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_studies_direct_ivp_planar)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_studies_direct_bvp_planar)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_studies_direct_bvp_planar_fit)->Unit(benchmark::kMillisecond);
