@@ -327,3 +327,28 @@ TEST(DirectReconstruction, NonConvergenceReportsWhatWasReached) {
 
 }  // namespace
 }  // namespace hula::studies
+
+namespace hula::studies {
+namespace {
+
+// checks: the same problem built twice (fresh law contexts) gives bit-identical corrections and
+// end errors, so a study run repeats exactly.
+TEST(DirectReconstruction, RepeatsExactly) {
+  const auto solve = [] {
+    Laws l;
+    return reconstruct_direct({.curvature = l.profile("0.8 + 0.05*sin(2*pi*u)"),
+                               .torsion = l.profile("0.4 - 0.05*u"),
+                               .length = 10.0,
+                               .end_point = Vec3{1.0, 2.0, 3.0},
+                               .end_tangent = Vec3{0.0, 0.0, 1.0}},
+                              no_fit());
+  };
+  const DirectReconstructionResult a = solve(), b = solve();
+  EXPECT_EQ(a.curvature_correction, b.curvature_correction);
+  EXPECT_EQ(a.torsion_correction, b.torsion_correction);
+  EXPECT_EQ(a.end_point_error, b.end_point_error);
+  EXPECT_EQ(a.iterations, b.iterations);
+}
+
+}  // namespace
+}  // namespace hula::studies
