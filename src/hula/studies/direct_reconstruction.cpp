@@ -170,7 +170,16 @@ class Solver {
       }
     }
     ++reconstructions_;
+    measure(e);
+    return e;
+  }
+
+  // The end residuals of a reconstruction in the frame fixed by set_frame().
+  void measure(Evaluation& e) const {
+    const double length = e.length;
     const intrinsic::FramePoint end = e.curve->evaluate(length);
+    e.point_error = 0.0;
+    e.angle_error = 0.0;
     e.residual.resize(constraint_count());
     int row = 0;
     if (p_.end_point) {
@@ -199,7 +208,6 @@ class Solver {
         e.angle_error = angle;
       }
     }
-    return e;
   }
 
   // Fixes the plane basis (planar) and the end-tangent basis from the normalised start frame.
@@ -444,7 +452,7 @@ DirectReconstructionResult reconstruct_direct(const DirectReconstructionProblem&
 
   int iterations = 0;
   if (solver.constraint_count() > 0) {
-    current = solver.evaluate(x);  // residuals in the frame just fixed
+    solver.measure(current);  // residuals in the frame just fixed
     const Matrix metric = solver.metric();
     const Eigen::LLT<Matrix> llt(metric);
     const Matrix r_upper = llt.matrixU();
