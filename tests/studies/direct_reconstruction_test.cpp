@@ -352,3 +352,25 @@ TEST(DirectReconstruction, RepeatsExactly) {
 
 }  // namespace
 }  // namespace hula::studies
+
+namespace hula::studies {
+namespace {
+
+// checks: the header's example meets its end to 1e-9 L (end point 3.2 from the start, L = 4).
+TEST(DirectReconstruction, HeaderExampleMeetsItsEnd) {
+  law::Context ctx;
+  law::ParseOptions po;
+  po.parameters = {"u"};
+  const DirectReconstructionProblem p{.curvature = Profile::from_law(law::parse("0.5 + 0.1*sin(6*u)", ctx, po)),
+                                      .length = 4.0,
+                                      .end_point = Vec3{2.5, 2.0, 0.0}};
+  const DirectReconstructionResult r = reconstruct_direct(p);
+  EXPECT_LE(r.end_point_error, 4e-9);
+  EXPECT_GT(r.mean_curvature_deviation, 0.0);
+  EXPECT_GT(r.seconds, 0.0);
+  EXPECT_GE(r.reconstructions,
+            r.iterations);  // one per trial step plus the start; the last linearisation may only confirm
+}
+
+}  // namespace
+}  // namespace hula::studies

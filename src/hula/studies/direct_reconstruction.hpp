@@ -145,7 +145,8 @@ struct DirectReconstructionResult {
   double mean_torsion_deviation = 0.0;
   /// max_i |τ(u_i) − τ*(u_i)|.
   double max_torsion_deviation = 0.0;
-  /// Gauss–Newton iterations (0 without end constraints).
+  /// Gauss–Newton iterations = linearisations, the last of which may only confirm convergence
+  /// (0 without end constraints).
   int iterations = 0;
   /// Reconstructions performed (1 + trial steps).
   int reconstructions = 0;
@@ -170,8 +171,9 @@ struct DirectReconstructionResult {
 /// @returns the curve, its NURBS, the corrections and the measured errors
 /// @throws hula::Error(Errc::InvalidArgument) naming "length" if L ≤ 0; "end_point" if it is
 ///   farther than L from the start point (unreachable) or, for a planar curve, off the start
-///   plane; "end_tangent" if it is zero or, planar, not in the start plane; naming
-///   "start.tangent"/"start.normal" as intrinsic::reconstruct
+///   plane; "end_tangent" if it is zero or, planar, not in the start plane; "torsion" if its
+///   profile belongs to another law::Context than the curvature's; "start_frame.tangent" /
+///   "start_frame.normal" from intrinsic::reconstruct
 /// @throws hula::Error(Errc::NonFiniteInput) naming "length", "end_point" or "end_tangent" for NaN/inf
 /// @throws hula::Error(Errc::InvalidOption) from options.validate(), or "correction_degree" when
 ///   the corrections have fewer unknowns than there are end conditions
