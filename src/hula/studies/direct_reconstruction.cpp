@@ -1,0 +1,578 @@
+// SPDX-License-Identifier: MIT
+// Direct reconstruction from prescribed profiles: initial-value problem by the
+// natural-equation solver, boundary-value problem by minimum-norm Gauss–Newton
+// on Bernstein corrections with the Darboux-vector Jacobian (see the header).
+#include "hula/studies/direct_reconstruction.hpp"
+
+#include <Eigen/Cholesky>
+#include <Eigen/Dense>
+#include <Eigen/QR>
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <string>
+#include <utility>
+
+#include "hula/core/error.hpp"
+#include "hula/law/antiderivative.hpp"
+
+namespace hula::studies {
+namespace {
+
+using Matrix = Eigen::MatrixXd;
+using Vector = Eigen::VectorXd;
+
+// 8-point Gauss–Legendre rule on [−1, 1] (nodes ± and weights).
+constexpr std::array<double, 4> kGaussNodes{0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
+                                            0.9602898564975363};
+constexpr std::array<double, 4> kGaussWeights{0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
+                                              0.1012285362903763};
+// Quadrature panels are at most L / kMinPanels long, so the Jacobian integrals of the
+// polynomial corrections are resolved even where the integrator took one long step.
+constexpr double kMinPanels = 32.0;
+// A step whose end residual exceeds the current one is still accepted while the residual stays
+// within this factor of the tolerance: near feasibility the minimum-norm projection may trade a
+// rounding-level rise of F for a smaller correction, and Gauss–Newton converges quadratically there.
+constexpr double kNearFeasible = 1e3;
+// Largest number of step halvings in one iteration before declaring failure.
+constexpr int kMaxHalvings = 30;
+
+[[noreturn]] void invalid_option(const std::string& field, double value, const std::string& range) {
+  throw Error(Errc::InvalidOption,
+              "DirectReconstructionOptions." + field + " = " + format_number(value) + " is outside " + range,
+              ErrorWhere{.field = field});
+}
+
+double binomial(int n, int k) {
+  double b = 1.0;
+  for (int i = 1; i <= k; ++i) b = b * static_cast<double>(n - k + i) / static_cast<double>(i);
+  return b;
+}
+
+// B_k(u), k = 0..n, into out (size n + 1); de Casteljau-free direct form, n ≤ 20.
+void bernstein(int n, double u, std::span<double> out) {
+  for (int k = 0; k <= n; ++k)
+    out[static_cast<std::size_t>(k)] = binomial(n, k) * std::pow(u, k) * std::pow(1.0 - u, n - k);
+}
+
+// Σ c_k B_k(u) at u.
+double bernstein_sum(std::span<const double> c, double u) {
+  const int n = static_cast<int>(c.size()) - 1;
+  double v = 0.0;
+  for (int k = 0; k <= n; ++k)
+    v += c[static_cast<std::size_t>(k)] * binomial(n, k) * std::pow(u, k) * std::pow(1.0 - u, n - k);
+  return v;
+}
+
+// Gram matrix ∫₀¹ B_i B_j du = C(n,i) C(n,j) / (C(2n, i+j) (2n + 1)).
+Matrix bernstein_gram(int n) {
+  Matrix g(n + 1, n + 1);
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j)
+      g(i, j) = binomial(n, i) * binomial(n, j) / (binomial(2 * n, i + j) * static_cast<double>(2 * n + 1));
+  return g;
+}
+
+// The correction Σ c_k B_k(s / L) as a law of `s`: the power-basis coefficients
+// a_j = Σ_{k ≤ j} c_k C(n,k) C(n−k, j−k) (−1)^{j−k} in Horner form, a polynomial the
+// antiderivative rules integrate exactly (so planar curves keep the exact angle).
+law::Law correction_law(std::span<const double> c, const law::Law& u) {
+  const int n = static_cast<int>(c.size()) - 1;
+  std::vector<double> a(c.size(), 0.0);
+  for (int j = 0; j <= n; ++j)
+    for (int k = 0; k <= j; ++k)
+      a[static_cast<std::size_t>(j)] +=
+          c[static_cast<std::size_t>(k)] * binomial(n, k) * binomial(n - k, j - k) * (((j - k) % 2 == 0) ? 1.0 : -1.0);
+  const law::Context ctx = u.context();
+  law::Law p = ctx.constant(a[static_cast<std::size_t>(n)]);
+  for (int j = n - 1; j >= 0; --j) p = a[static_cast<std::size_t>(j)] + u * p;
+  return p;
+}
+
+bool all_zero(std::span<const double> c) {
+  return std::all_of(c.begin(), c.end(), [](double v) { return v == 0.0; });
+}
+
+// Unknowns: [κ coefficients | τ coefficients (optional) | L (optional)].
+struct Unknowns {
+  int n = 5;
+  bool torsion = false;
+  bool length = false;
+  [[nodiscard]] int size() const { return (n + 1) * (torsion ? 2 : 1) + (length ? 1 : 0); }
+  [[nodiscard]] int torsion_offset() const { return n + 1; }
+  [[nodiscard]] int length_index() const { return (n + 1) * (torsion ? 2 : 1); }
+};
+
+// The end state of one reconstruction and its residuals.
+struct Evaluation {
+  std::optional<intrinsic::IntrinsicCurve> curve;
+  law::Law kappa;
+  law::Law tau;
+  double length = 0.0;
+  Vector residual;           // dimensionless, see the header
+  double point_error = 0.0;  // |r(L) − p*|
+  double angle_error = 0.0;  // angle(T(L), t*)
+  [[nodiscard]] double merit() const { return std::max(point_error / length, angle_error); }
+};
+
+class Solver {
+ public:
+  Solver(const DirectReconstructionProblem& problem, const DirectReconstructionOptions& options)
+      : p_(problem), o_(options) {
+    const law::Context ctx = p_.curvature.law().context();
+    s_ = ctx.parameter("s");
+    if (p_.torsion && !(p_.torsion->law().context() == ctx))
+      throw Error(Errc::InvalidArgument,
+                  "torsion profile belongs to another law context than the curvature profile; build both "
+                  "profiles in one law::Context",
+                  ErrorWhere{.field = "torsion"});
+    unknowns_.n = o_.correction_degree;
+    unknowns_.torsion = p_.torsion.has_value() && o_.correct_torsion;
+    unknowns_.length = o_.vary_length && (p_.end_point || p_.end_tangent);
+  }
+
+  [[nodiscard]] const Unknowns& unknowns() const { return unknowns_; }
+
+  // Reconstructs the curve for unknowns x and measures its end residuals.
+  [[nodiscard]] Evaluation evaluate(const Vector& x) const {
+    Evaluation e;
+    e.length = unknowns_.length ? x(unknowns_.length_index()) : p_.length;
+    const double length = e.length;
+    const law::Law u = s_ * (1.0 / length);
+    const auto coefficients = [&](int offset) {
+      std::vector<double> c(static_cast<std::size_t>(unknowns_.n + 1));
+      for (int k = 0; k <= unknowns_.n; ++k) c[static_cast<std::size_t>(k)] = x(offset + k);
+      return c;
+    };
+    e.kappa = law::substitute(p_.curvature.law(), p_.curvature.variable(), u);
+    const std::vector<double> ck = coefficients(0);
+    if (!all_zero(ck)) e.kappa = e.kappa + correction_law(ck, u);
+    intrinsic::ReconstructionOptions ro;
+    ro.tolerance = std::clamp(o_.integration_tolerance * length, 1e-13, 1e-2);
+    if (p_.torsion) {
+      e.tau = law::substitute(p_.torsion->law(), p_.torsion->variable(), u);
+      if (unknowns_.torsion) {
+        const std::vector<double> ct = coefficients(unknowns_.torsion_offset());
+        if (!all_zero(ct)) e.tau = e.tau + correction_law(ct, u);
+      }
+      e.curve = intrinsic::reconstruct(e.kappa, e.tau, "s", length, p_.start, ro);
+    } else {
+      e.tau = s_.context().constant(0.0);
+      if (law::antiderivative(e.kappa, "s")) {
+        e.curve = intrinsic::reconstruct_planar(e.kappa, "s", length, p_.start, ro);
+      } else {
+        // No closed-form angle: integrate the Frenet–Serret system with τ = 0 directly (it stays
+        // in the start plane). reconstruct_planar would first try a numeric definite integral of
+        // κ to the rounding level, which is slow on B-spline profiles.
+        ro.method = intrinsic::ReconstructionMethod::FrenetSerret;
+        e.curve = intrinsic::reconstruct(e.kappa, e.tau, "s", length, p_.start, ro);
+      }
+    }
+    ++reconstructions_;
+    measure(e);
+    return e;
+  }
+
+  // The end residuals of a reconstruction in the frame fixed by set_frame().
+  void measure(Evaluation& e) const {
+    const double length = e.length;
+    const intrinsic::FramePoint end = e.curve->evaluate(length);
+    e.point_error = 0.0;
+    e.angle_error = 0.0;
+    e.residual.resize(constraint_count());
+    int row = 0;
+    if (p_.end_point) {
+      const Vec3 d = end.position - *p_.end_point;
+      e.point_error = norm(d);
+      if (planar()) {
+        e.residual(row++) = dot(d, e_x_) / length;
+        e.residual(row++) = dot(d, e_y_) / length;
+      } else {
+        for (std::size_t i = 0; i < 3; ++i) e.residual(row++) = d[i] / length;
+      }
+    }
+    if (p_.end_tangent) {
+      const Vec3 a = cross(t_end_, end.tangent);
+      const double c = dot(t_end_, end.tangent);
+      if (planar()) {
+        e.residual(row++) = std::atan2(dot(a, b_), c);
+        e.angle_error = std::abs(e.residual(row - 1));
+      } else {
+        // Rotation vector from t* to T(L): angle θ about a / |a|; its two components normal to t*.
+        const double sin_angle = norm(a);
+        const double angle = std::atan2(sin_angle, c);
+        const Vec3 rho = sin_angle > 0.0 ? a * (angle / sin_angle) : Vec3{};
+        e.residual(row++) = dot(rho, t_e1_);
+        e.residual(row++) = dot(rho, t_e2_);
+        e.angle_error = angle;
+      }
+    }
+  }
+
+  // Fixes the plane basis (planar) and the end-tangent basis from the normalised start frame.
+  void set_frame(const intrinsic::FramePoint& start) {
+    e_x_ = start.tangent;
+    e_y_ = start.normal;
+    b_ = start.binormal;
+    if (p_.end_tangent) {
+      t_end_ = normalized(*p_.end_tangent);
+      const Vec3 helper = std::abs(t_end_.x) < 0.6 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+      t_e1_ = normalized(cross(t_end_, helper));
+      t_e2_ = cross(t_end_, t_e1_);
+    }
+  }
+
+  [[nodiscard]] bool planar() const { return !p_.torsion.has_value(); }
+
+  [[nodiscard]] int constraint_count() const {
+    const int point_rows = p_.end_point ? (planar() ? 2 : 3) : 0;
+    const int tangent_rows = p_.end_tangent ? (planar() ? 1 : 2) : 0;
+    return point_rows + tangent_rows;
+  }
+
+  // ∂F/∂x by the Darboux-vector sensitivities (header), Gauss–Legendre over the dense curve.
+  [[nodiscard]] Matrix jacobian(const Evaluation& e) const {
+    const intrinsic::IntrinsicCurve& curve = *e.curve;
+    const double length = e.length;
+    // Panels: the integration nodes, each split into pieces no longer than L / kMinPanels.
+    const std::span<const double> nodes = curve.nodes();
+    std::vector<double> s_points, weights;
+    for (std::size_t i = 0; i + 1 < nodes.size(); ++i) {
+      const double a = nodes[i], b = nodes[i + 1];
+      const int pieces = std::max(1, static_cast<int>(std::ceil((b - a) * kMinPanels / length)));
+      const double h = (b - a) / pieces;
+      for (int piece = 0; piece < pieces; ++piece) {
+        const double mid = a + (piece + 0.5) * h;
+        for (std::size_t g = 0; g < kGaussNodes.size(); ++g) {
+          for (const double sign : {-1.0, 1.0}) {
+            s_points.push_back(std::clamp(mid + sign * kGaussNodes[g] * 0.5 * h, 0.0, length));
+            weights.push_back(kGaussWeights[g] * 0.5 * h);
+          }
+        }
+      }
+    }
+    const std::vector<intrinsic::FramePoint> frames = curve.evaluate(s_points);
+    const intrinsic::FramePoint end = curve.evaluate(length);
+    const int m = unknowns_.size();
+    // Per unknown: δr(L) and δΩ = ∫δω (the tangent turns by δΩ × T(L)).
+    std::vector<Vec3> d_r(static_cast<std::size_t>(m)), d_omega(static_cast<std::size_t>(m));
+    std::vector<double> basis(static_cast<std::size_t>(unknowns_.n + 1));
+    for (std::size_t q = 0; q < frames.size(); ++q) {
+      const intrinsic::FramePoint& f = frames[q];
+      const Vec3 lever = end.position - f.position;
+      const double w = weights[q];
+      bernstein(unknowns_.n, f.s / length, basis);
+      const Vec3 bend = f.binormal * w;  // δω of a unit δκ, times the weight
+      const Vec3 bend_r = cross(bend, lever);
+      for (int k = 0; k <= unknowns_.n; ++k) {
+        const double bk = basis[static_cast<std::size_t>(k)];
+        d_r[static_cast<std::size_t>(k)] += bend_r * bk;
+        d_omega[static_cast<std::size_t>(k)] += bend * bk;
+      }
+      if (unknowns_.torsion) {
+        const Vec3 twist = f.tangent * w;  // δω of a unit δτ
+        const Vec3 twist_r = cross(twist, lever);
+        for (int k = 0; k <= unknowns_.n; ++k) {
+          const auto j = static_cast<std::size_t>(unknowns_.torsion_offset() + k);
+          const double bk = basis[static_cast<std::size_t>(k)];
+          d_r[j] += twist_r * bk;
+          d_omega[j] += twist * bk;
+        }
+      }
+      if (unknowns_.length) {
+        // With u fixed, a longer curve turns at the rate ω / L more per unit length.
+        const Vec3 omega = (f.binormal * f.curvature + f.tangent * f.torsion) * (w / length);
+        const auto j = static_cast<std::size_t>(unknowns_.length_index());
+        d_r[j] += cross(omega, lever);
+        d_omega[j] += omega;
+      }
+    }
+    if (unknowns_.length) {
+      const Vec3 start = frames.empty() ? end.position : curve.evaluate(0.0).position;
+      d_r[static_cast<std::size_t>(unknowns_.length_index())] += (end.position - start) / length;
+    }
+    Matrix jac = Matrix::Zero(constraint_count(), m);
+    for (int col = 0; col < m; ++col) {
+      const Vec3& dr = d_r[static_cast<std::size_t>(col)];
+      const Vec3& om = d_omega[static_cast<std::size_t>(col)];
+      int row = 0;
+      if (p_.end_point) {
+        if (planar()) {
+          jac(row++, col) = dot(dr, e_x_) / length;
+          jac(row++, col) = dot(dr, e_y_) / length;
+        } else {
+          for (std::size_t i = 0; i < 3; ++i) jac(row++, col) = dr[i] / length;
+        }
+      }
+      if (p_.end_tangent) {
+        // T × (δΩ × T) = δΩ − T (T·δΩ): the turn of T(L) seen as a rotation vector (exact at T = t*).
+        const Vec3 turn = om - end.tangent * dot(end.tangent, om);
+        if (planar()) {
+          jac(row++, col) = dot(turn, b_);
+        } else {
+          jac(row++, col) = dot(turn, t_e1_);
+          jac(row++, col) = dot(turn, t_e2_);
+        }
+      }
+    }
+    return jac;
+  }
+
+  // The metric M of the minimum-norm objective (header): L0² G per profile block, w / L0² for L.
+  [[nodiscard]] Matrix metric() const {
+    const int m = unknowns_.size();
+    Matrix metric = Matrix::Zero(m, m);
+    const Matrix g = bernstein_gram(unknowns_.n) * (p_.length * p_.length);
+    const int b = unknowns_.n + 1;
+    metric.block(0, 0, b, b) = g;
+    if (unknowns_.torsion) metric.block(b, b, b, b) = g;
+    if (unknowns_.length) {
+      const int j = unknowns_.length_index();
+      metric(j, j) = o_.length_weight / (p_.length * p_.length);
+    }
+    return metric;
+  }
+
+  [[nodiscard]] Vector reference() const {
+    Vector x = Vector::Zero(unknowns_.size());
+    if (unknowns_.length) x(unknowns_.length_index()) = p_.length;
+    return x;
+  }
+
+  [[nodiscard]] int reconstructions() const { return reconstructions_; }
+
+ private:
+  const DirectReconstructionProblem& p_;
+  const DirectReconstructionOptions& o_;
+  law::Law s_;
+  Unknowns unknowns_;
+  Vec3 e_x_{}, e_y_{}, b_{}, t_end_{}, t_e1_{}, t_e2_{};
+  mutable int reconstructions_ = 0;
+};
+
+void check_problem(const DirectReconstructionProblem& p, const DirectReconstructionOptions& o) {
+  if (!std::isfinite(p.length))
+    throw Error(Errc::NonFiniteInput, "length = " + format_number(p.length) + " is not finite",
+                ErrorWhere{.field = "length"});
+  if (p.length <= 0.0)
+    throw Error(Errc::InvalidArgument, "length = " + format_number(p.length) + " must be positive",
+                ErrorWhere{.field = "length"});
+  if (p.end_point) {
+    for (std::size_t i = 0; i < 3; ++i)
+      if (!std::isfinite((*p.end_point)[i]))
+        throw Error(Errc::NonFiniteInput,
+                    "end_point[" + std::to_string(i) + "] = " + format_number((*p.end_point)[i]) + " is not finite",
+                    ErrorWhere{.field = "end_point", .index = i});
+    if (!o.vary_length && is_finite(p.start.point)) {
+      const double reach = distance(*p.end_point, p.start.point);
+      if (reach > p.length * (1.0 - o.end_tolerance))
+        throw Error(Errc::InvalidArgument,
+                    "end_point is " + format_number(reach) +
+                        " from the start point, farther than (or as far as) the length L = " + format_number(p.length) +
+                        ": no curve of that length can reach it (a straight segment " +
+                        "only when equal); lengthen the curve or set vary_length",
+                    ErrorWhere{.field = "end_point"});
+    }
+  }
+  if (p.end_tangent) {
+    for (std::size_t i = 0; i < 3; ++i)
+      if (!std::isfinite((*p.end_tangent)[i]))
+        throw Error(Errc::NonFiniteInput,
+                    "end_tangent[" + std::to_string(i) + "] = " + format_number((*p.end_tangent)[i]) + " is not finite",
+                    ErrorWhere{.field = "end_tangent", .index = i});
+    if (norm(*p.end_tangent) == 0.0)
+      throw Error(Errc::InvalidArgument, "end_tangent is the zero vector: it gives no direction",
+                  ErrorWhere{.field = "end_tangent"});
+  }
+  const int constraints = (p.end_point ? (p.torsion ? 3 : 2) : 0) + (p.end_tangent ? (p.torsion ? 2 : 1) : 0);
+  const int unknowns = (o.correction_degree + 1) * ((p.torsion && o.correct_torsion) ? 2 : 1) +
+                       (o.vary_length && constraints > 0 ? 1 : 0);
+  if (unknowns < constraints)
+    throw Error(Errc::InvalidOption,
+                "DirectReconstructionOptions.correction_degree = " + std::to_string(o.correction_degree) + " gives " +
+                    std::to_string(unknowns) + " correction coefficients for " + std::to_string(constraints) +
+                    " end conditions; raise the degree" +
+                    (p.torsion && !o.correct_torsion ? " or correct_torsion" : ""),
+                ErrorWhere{.field = "correction_degree"});
+}
+
+// Planar curves live in the start plane: an end point or tangent off it cannot be met.
+void check_planar_ends(const DirectReconstructionProblem& p, const intrinsic::FramePoint& start) {
+  if (p.torsion) return;
+  if (p.end_point) {
+    const double off = dot(*p.end_point - start.position, start.binormal);
+    if (std::abs(off) > 1e-12 * std::max(1.0, p.length) + 1e-9 * p.length)
+      throw Error(Errc::InvalidArgument,
+                  "end_point is " + format_number(off) +
+                      " off the plane of the start tangent and normal; a planar curve (no torsion profile) "
+                      "cannot reach it",
+                  ErrorWhere{.field = "end_point"});
+  }
+  if (p.end_tangent) {
+    const double off = dot(normalized(*p.end_tangent), start.binormal);
+    if (std::abs(off) > 1e-9)
+      throw Error(Errc::InvalidArgument,
+                  "end_tangent has a component " + format_number(off) +
+                      " normal to the plane of the start tangent and normal; a planar curve cannot meet it",
+                  ErrorWhere{.field = "end_tangent"});
+  }
+}
+
+}  // namespace
+
+void DirectReconstructionOptions::validate() const {
+  if (correction_degree < 1 || correction_degree > 20)
+    invalid_option("correction_degree", correction_degree, "[1, 20]");
+  if (!(length_weight > 0.0 && length_weight <= 1e6)) invalid_option("length_weight", length_weight, "(0, 1e6]");
+  if (!(end_tolerance >= 1e-13 && end_tolerance <= 1e-2))
+    invalid_option("end_tolerance", end_tolerance, "[1e-13, 1e-2]");
+  if (!(optimality_tolerance >= 1e-12 && optimality_tolerance <= 1e-1))
+    invalid_option("optimality_tolerance", optimality_tolerance, "[1e-12, 0.1]");
+  if (max_iterations < 1 || max_iterations > 10'000) invalid_option("max_iterations", max_iterations, "[1, 10000]");
+  if (!(integration_tolerance >= 1e-13 && integration_tolerance <= 1e-3))
+    invalid_option("integration_tolerance", integration_tolerance, "[1e-13, 1e-3]");
+  if (deviation_samples < 2 || deviation_samples > 1'000'000)
+    invalid_option("deviation_samples", static_cast<double>(deviation_samples), "[2, 1000000]");
+  fit_options.validate();
+}
+
+DirectReconstructionResult reconstruct_direct(const DirectReconstructionProblem& problem,
+                                              const DirectReconstructionOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  options.validate();
+  check_problem(problem, options);
+  Solver solver(problem, options);
+  const Unknowns& unknowns = solver.unknowns();
+  Vector x = solver.reference();
+  Evaluation current = solver.evaluate(x);
+  const intrinsic::FramePoint start = current.curve->evaluate(0.0);
+  check_planar_ends(problem, start);
+  solver.set_frame(start);
+
+  int iterations = 0;
+  if (solver.constraint_count() > 0) {
+    solver.measure(current);  // residuals in the frame just fixed
+    const Matrix metric = solver.metric();
+    const Eigen::LLT<Matrix> llt(metric);
+    const Matrix r_upper = llt.matrixU();
+    const Vector x_ref = solver.reference();
+    const double tol = options.end_tolerance;
+    // Optimality: the minimum-norm iteration converges linearly once feasible (it ignores the
+    // constraints' curvature), so it stops when a step is below optimality_tolerance times the
+    // correction's own norm (or below the end tolerance in absolute terms).
+    const auto step_tol = [&](const Vector& at) {
+      const Vector y = at - x_ref;
+      return std::max(tol, options.optimality_tolerance * std::sqrt(std::max(0.0, y.dot(metric * y))));
+    };
+    bool converged = false;
+    while (iterations < options.max_iterations) {
+      ++iterations;
+      const Matrix jac = solver.jacobian(current);
+      // Minimum-norm solution y of J y = J (x − x_ref) − F in the metric M = RᵀR: z = (J R⁻¹)⁺ b.
+      const Matrix j_hat = r_upper.transpose().triangularView<Eigen::Lower>().solve(jac.transpose()).transpose();
+      const Vector rhs = jac * (x - x_ref) - current.residual;
+      const Vector z = Eigen::CompleteOrthogonalDecomposition<Matrix>(j_hat).solve(rhs);
+      const Vector y = r_upper.triangularView<Eigen::Upper>().solve(z);
+      const Vector step = (x_ref + y) - x;
+      const double step_norm = std::sqrt(std::max(0.0, step.dot(metric * step)));
+      if (current.merit() <= tol && step_norm <= step_tol(x)) {
+        converged = true;
+        break;
+      }
+      double alpha = 1.0;
+      bool accepted = false;
+      for (int halving = 0; halving <= kMaxHalvings; ++halving, alpha *= 0.5) {
+        const Vector trial_x = x + alpha * step;
+        if (unknowns.length && !(trial_x(unknowns.length_index()) > 0.0)) continue;
+        Evaluation trial = solver.evaluate(trial_x);
+        if (trial.merit() < current.merit() || trial.merit() <= kNearFeasible * tol) {
+          x = trial_x;
+          current = std::move(trial);
+          accepted = true;
+          break;
+        }
+      }
+      if (!accepted) break;
+      if (current.merit() <= tol && alpha * step_norm <= step_tol(x)) {
+        converged = true;
+        break;
+      }
+    }
+    if (!converged && current.merit() > tol)
+      throw Error(Errc::NumericalFailure,
+                  "direct reconstruction did not meet the end constraints in " + std::to_string(iterations) +
+                      " Gauss-Newton iterations: reached end point error " + format_number(current.point_error) +
+                      " (L = " + format_number(current.length) + "), end tangent angle error " +
+                      format_number(current.angle_error) + " rad, tolerance " + format_number(tol) +
+                      "; raise correction_degree or max_iterations, or check that the end is reachable",
+                  ErrorWhere{.field = problem.end_point ? "end_point" : "end_tangent"});
+  }
+
+  DirectReconstructionResult result{.curve = std::move(*current.curve)};
+  result.curvature_law = current.kappa;
+  result.torsion_law = current.tau;
+  result.planar = solver.planar();
+  result.length = current.length;
+  result.end_point_error = current.point_error;
+  result.end_tangent_error = current.angle_error;
+  result.iterations = iterations;
+  const std::size_t nb = static_cast<std::size_t>(unknowns.n) + 1;
+  result.curvature_correction.assign(x.data(), x.data() + nb);
+  if (unknowns.torsion)
+    result.torsion_correction.assign(x.data() + unknowns.torsion_offset(), x.data() + unknowns.torsion_offset() + nb);
+
+  // Profile deviation: κ = κ* + δκ exactly (the integrated law), so |κ − κ*| = |δκ(u)|.
+  const std::size_t n_samples = options.deviation_samples;
+  double sum_k = 0.0, max_k = 0.0, sum_t = 0.0, max_t = 0.0;
+  for (std::size_t i = 0; i < n_samples; ++i) {
+    const double u = static_cast<double>(i) / static_cast<double>(n_samples - 1);
+    const double dk = std::abs(bernstein_sum(result.curvature_correction, u));
+    sum_k += dk;
+    max_k = std::max(max_k, dk);
+    if (!result.torsion_correction.empty()) {
+      const double dt = std::abs(bernstein_sum(result.torsion_correction, u));
+      sum_t += dt;
+      max_t = std::max(max_t, dt);
+    }
+  }
+  result.mean_curvature_deviation = sum_k / static_cast<double>(n_samples);
+  result.max_curvature_deviation = max_k;
+  result.mean_torsion_deviation = sum_t / static_cast<double>(n_samples);
+  result.max_torsion_deviation = max_t;
+  if (options.fit) result.nurbs = intrinsic::fit_nurbs(result.curve, options.fit_options);
+  result.reconstructions = solver.reconstructions();
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return result;
+}
+
+io::json::Json direct_reconstruction_summary(const DirectReconstructionResult& r) {
+  io::json::Json j;
+  j["planar"] = r.planar;
+  j["length"] = r.length;
+  j["end_point_error"] = r.end_point_error;
+  j["end_tangent_error"] = r.end_tangent_error;
+  j["mean_curvature_deviation"] = r.mean_curvature_deviation;
+  j["max_curvature_deviation"] = r.max_curvature_deviation;
+  if (!r.planar) {
+    j["mean_torsion_deviation"] = r.mean_torsion_deviation;
+    j["max_torsion_deviation"] = r.max_torsion_deviation;
+  }
+  j["iterations"] = r.iterations;
+  j["reconstructions"] = r.reconstructions;
+  j["seconds"] = r.seconds;
+  j["curvature_correction"] = r.curvature_correction;
+  if (!r.torsion_correction.empty()) j["torsion_correction"] = r.torsion_correction;
+  if (r.nurbs) {
+    io::json::Json n;
+    n["degree"] = r.nurbs->curve.degree();
+    n["control_points"] = r.nurbs->curve.control_points().size();
+    n["segments"] = r.nurbs->segments;
+    n["max_deviation"] = r.nurbs->max_deviation;
+    n["converged"] = r.nurbs->converged;
+    j["nurbs"] = n;
+  }
+  return j;
+}
+
+}  // namespace hula::studies
