@@ -128,7 +128,8 @@ TEST(MatchCurvatureCli, BadStudyFilesNameTheMember) {
       {head + bounds + target + R"(, "samples": 0})", "samples = 0"},
       {head + bounds + R"x("target": {"law": "sqrt(0.5 - u)"}})x", "target: the profile is undefined"},
       {head + bounds + R"("target": {"of_points": [[0, 0], [0, 0], [1, 1]]}})", "target.of_points"},
-      {head + bounds + target + R"(, "method": "direct"})", "method"},
+      {head + bounds + target + R"(, "method": "simplex"})", "simplex"},
+      {head + bounds + target + R"(, "direct": {"end_point": 1}})", "direct.end_point"},
       {head + bounds + target + R"(, "ga": {"population": 7}})", "ga.population"},
       {head + bounds + target + R"(, "lm": {"difference_step": 2}})", "lm.difference_step"},
       {head + bounds + target + R"(, "abscissa": "length"})", "abscissa"},
@@ -141,9 +142,44 @@ TEST(MatchCurvatureCli, BadStudyFilesNameTheMember) {
     EXPECT_NE(r.err.find(cases[i].expected), std::string::npos) << r.err;
     EXPECT_TRUE(r.out.empty()) << "case " << i;
   }
-  const ProcessResult r = hula_run({"match-curvature", example(1), "--method", "direct"});
+  const ProcessResult r = hula_run({"match-curvature", example(1), "--method", "simplex"});
   EXPECT_EQ(r.exit_code, 3);
   EXPECT_NE(r.err.find("--method"), std::string::npos) << r.err;
+}
+
+}  // namespace
+
+namespace {
+
+const std::string kDirect = std::string(HULA_SOURCE_DIR) + "/examples/studies/match-curvature-direct.json";
+
+// The three routes on one target (the arc-length profile of a known curve): the direct route integrates the
+// profile and, held to the last data point with a free length, lands there with a profile deviation of the
+// order of its end tolerance; the hybrid recovers the known point; the GA gets close.
+TEST(MatchCurvatureCli, DirectGaAndHybridOnOneTarget) {
+  const hula::testing::TempDir dir;
+  const ProcessResult d = hula_run({"match-curvature", kDirect, "--svg", dir.path().string()});
+  ASSERT_EQ(d.exit_code, 0) << d.err;
+  const Json dj = Json::parse(d.out);
+  EXPECT_EQ(dj["method"], "direct");
+  EXPECT_LT(dj["direct"]["end_miss"].get<double>(), 1e-4);
+  EXPECT_LT(dj["after"]["mean"].get<double>(), 1e-5);
+  EXPECT_EQ(dj["curve"]["kind"], "nurbs");
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "profile.svg"));
+  const ProcessResult h = hula_run({"match-curvature", kDirect, "--method", "hybrid"});
+  ASSERT_EQ(h.exit_code, 0) << h.err;
+  const Json hj = Json::parse(h.out);
+  EXPECT_NEAR(hj["best_points"][1][0].get<double>(), 35.0, 1e-6);
+  EXPECT_NEAR(hj["best_points"][1][1].get<double>(), 20.0, 1e-6);
+  const ProcessResult g = hula_run({"match-curvature", kDirect, "--method", "ga"});
+  ASSERT_EQ(g.exit_code, 0) << g.err;
+  EXPECT_LT(Json::parse(g.out)["after"]["mean"].get<double>(), 0.01);
+}
+
+TEST(MatchCurvatureCli, DirectNeedsAnArcLengthProfile) {
+  const ProcessResult r = hula_run({"match-curvature", example(1), "--method", "direct"});
+  EXPECT_EQ(r.exit_code, 3);
+  EXPECT_NE(r.err.find("arclength"), std::string::npos) << r.err;
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// `hula match-curvature STUDY [--method ga|hybrid] [--seed N] [--threads N] [--log FILE] [--svg DIR]`:
+// `hula match-curvature STUDY [--method ga|hybrid|direct] [--seed N] [--threads N] [--log FILE] [--svg DIR]`:
 // a prescribed curvature profile matched over data points (thesis 8.2.1,
 // appendix 5) by Flexo's GA, optionally refined by Levenberg–Marquardt
 // (studies/match_study.hpp). Prints the result JSON (start/best points,
@@ -38,7 +38,7 @@ void add_curve(io::SvgFigure& fig, const nurbs::NurbsCurve& curve, std::span<con
   constexpr int kSamples = 300;
   std::vector<double> x(kSamples + 1), y(kSamples + 1);
   for (int i = 0; i <= kSamples; ++i) {
-    const Vec3 p = curve.evaluate(static_cast<double>(i) / kSamples);
+    const Vec3 p = curve.evaluate(curve.domain().start + curve.domain().length() * i / kSamples);
     x[static_cast<std::size_t>(i)] = p.x;
     y[static_cast<std::size_t>(i)] = p.y;
   }
@@ -47,7 +47,8 @@ void add_curve(io::SvgFigure& fig, const nurbs::NurbsCurve& curve, std::span<con
   constexpr int kFins = 120;
   std::vector<double> t(kFins + 1), kappa(kFins + 1), x1(kFins + 1), y1(kFins + 1), x0(kFins + 1), y0(kFins + 1);
   std::vector<diffgeom::FrenetPoint> frames(kFins + 1);
-  for (int i = 0; i <= kFins; ++i) t[static_cast<std::size_t>(i)] = static_cast<double>(i) / kFins;
+  for (int i = 0; i <= kFins; ++i)
+    t[static_cast<std::size_t>(i)] = curve.domain().start + curve.domain().length() * i / kFins;
   diffgeom::frenet(curve, t, frames);
   double kmax = 0.0;
   for (const auto& f : frames)
@@ -80,12 +81,44 @@ void add_curve(io::SvgFigure& fig, const nurbs::NurbsCurve& curve, std::span<con
   fig.add_points(px, py, style, 3.0);
 }
 
+// The direct method's figures: the start spline and the reconstructed curve, and the profiles (the target,
+// the start spline's and the reconstruction's, against normalised arc length).
+void write_direct_figures(const std::filesystem::path& dir, const studies::CurvatureMatch& match,
+                          const studies::DirectReconstructionResult& d, const std::vector<Vec3>& before) {
+  const io::SvgStyle grey{"#888888", 1.5, {}, "6 4"}, blue{"#1f5fbf", 2.0, {}, {}};
+  const nurbs::NurbsCurve& curve = d.nurbs->curve;
+  for (const bool is_after : {false, true}) {
+    io::SvgFigure fig;
+    fig.set_equal_aspect(true);
+    fig.set_title(is_after ? "Direct reconstruction (x-y view)" : "Start curve (x-y view)");
+    if (is_after) add_curve(fig, match.sampler().curve(before), before, grey, "start", false);
+    add_curve(fig, is_after ? curve : match.sampler().curve(before), is_after ? std::vector<Vec3>{} : before, blue,
+              is_after ? "reconstructed" : "start", true);
+    write_svg(dir, is_after ? "curve_after" : "curve_before", fig);
+  }
+  const auto& u = match.sampler().abscissae();
+  std::vector<double> s(u.size()), kappa(u.size()), tau(u.size());
+  for (std::size_t i = 0; i < u.size(); ++i) s[i] = curve.domain().start + u[i] * curve.domain().length();
+  diffgeom::curvature_torsion(curve, s, kappa, tau);
+  io::SvgFigure fig;
+  fig.set_title("Curvature profile");
+  fig.set_axes("u (normalised arc length)", "curvature");
+  fig.add_polyline(u, match.curvature_samples(match.start_variables()), grey, "start");
+  fig.add_polyline(u, match.target_samples(), io::SvgStyle{"#c03030", 2.0, {}, "3 3"}, "target");
+  fig.add_polyline(u, kappa, blue, "reconstructed");
+  write_svg(dir, "profile", fig);
+}
+
 void write_figures(const std::filesystem::path& dir, const studies::CurvatureMatch& match,
                    const studies::MatchResult& r) {
   const std::size_t n = match.setup().points.size();
   std::vector<Vec3> before(n), after(n);
   match.points_from(r.start, before);
   match.points_from(r.best, after);
+  if (r.direct && r.direct->nurbs) {
+    write_direct_figures(dir, match, *r.direct, before);
+    return;
+  }
   const io::SvgStyle grey{"#888888", 1.5, {}, "6 4"}, blue{"#1f5fbf", 2.0, {}, {}};
   for (const bool is_after : {false, true}) {
     io::SvgFigure fig;
@@ -239,7 +272,7 @@ Command add_match_curvature(CLI::App& app) {
       "match-curvature",
       "Match a prescribed curvature profile by moving data points (GA, or GA + Levenberg-Marquardt)");
   add_study_options(sub, a->study);
-  sub->add_option("--method", a->method, "ga | hybrid (overrides the study file's \"method\")");
+  sub->add_option("--method", a->method, "ga | hybrid | direct (overrides the study file's \"method\")");
   return {sub, [a] { return run_match(*a); }};
 }
 

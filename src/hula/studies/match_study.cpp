@@ -7,6 +7,7 @@
 
 #include "hula/core/error.hpp"
 #include "hula/io/json_read.hpp"
+#include "hula/nurbs/arc_length.hpp"
 
 namespace hula::studies {
 
@@ -18,6 +19,8 @@ std::string_view match_method_name(MatchMethod m) noexcept {
       return "ga";
     case MatchMethod::Hybrid:
       return "hybrid";
+    case MatchMethod::Direct:
+      return "direct";
   }
   return "?";
 }
@@ -25,7 +28,9 @@ std::string_view match_method_name(MatchMethod m) noexcept {
 MatchMethod match_method_from_name(std::string_view name, std::string_view field) {
   if (name == "ga") return MatchMethod::Ga;
   if (name == "hybrid") return MatchMethod::Hybrid;
-  throw Error(Errc::ParseError, std::string(field) + " = \"" + std::string(name) + "\" must be \"ga\" or \"hybrid\"",
+  if (name == "direct") return MatchMethod::Direct;
+  throw Error(Errc::ParseError,
+              std::string(field) + " = \"" + std::string(name) + "\" must be \"ga\", \"hybrid\" or \"direct\"",
               {.field = std::string(field)});
 }
 
@@ -67,6 +72,48 @@ optim::GaResult run_ga(const CurvatureMatch& match, const MatchStudy& study, Mat
   return optim::solve_real_ga(match.problem(), o);
 }
 
+// The direct route: the target as an arc-length profile integrated from the start point and frame of the
+// spline through the start points (its turning side for planar curves), held to the last data point and the
+// end tangent when asked.
+DirectReconstructionResult run_direct(const CurvatureMatch& match, const MatchStudy& study) {
+  const CurvatureMatchSetup& s = match.setup();
+  if (s.abscissa != ProfileAbscissa::ArcLength)
+    throw Error(Errc::InvalidOption,
+                "method = \"direct\" integrates the natural equations in arc length: set \"abscissa\": \"arclength\"",
+                {.field = "abscissa"});
+  const MatchDirectSettings& d = study.direct;
+  if (d.end_tangent && !s.end_tangent)
+    throw Error(Errc::InvalidOption, "direct.end_tangent = true needs the study's \"end_tangent\"",
+                {.field = "direct.end_tangent"});
+  const nurbs::NurbsCurve start_curve = match.sampler().curve(s.points);
+  const std::vector<Vec3> d0 = start_curve.derivatives(start_curve.domain().start, 2);
+  DirectReconstructionProblem p{.curvature = *s.target};
+  p.length = d.length ? *d.length : nurbs::arc_length(start_curve);
+  p.start.point = s.points.front();
+  p.start.tangent = s.start_tangent ? *s.start_tangent : d0[1];
+  const Vec3 t = normalized(p.start.tangent);
+  if (s.dimension == 2) {
+    // The thesis's profiles are unsigned: turn towards the side of the last data point (the turning side
+    // of a curve without inflection).
+    const double turn = cross(t, s.points.back() - s.points.front()).z;
+    p.start.normal = (turn < 0.0 ? -1.0 : 1.0) * Vec3{-t.y, t.x, 0.0};
+  } else {
+    Vec3 n = d0[2] - dot(d0[2], t) * t;
+    if (!(norm(n) > 1e-12 * norm(d0[2]) && norm(n) > 0.0))
+      n = std::abs(t.z) < 0.9 ? cross(t, Vec3{0, 0, 1}) : cross(t, Vec3{1, 0, 0});
+    p.start.normal = n;
+  }
+  if (d.end_point) p.end_point = s.points.back();
+  if (d.end_tangent) p.end_tangent = *s.end_tangent;
+  DirectReconstructionOptions o;
+  o.correction_degree = d.correction_degree;
+  o.vary_length = d.vary_length;
+  o.length_weight = d.length_weight;
+  o.end_tolerance = d.end_tolerance;
+  o.deviation_samples = s.samples;
+  return reconstruct_direct(p, o);
+}
+
 }  // namespace
 
 MatchResult run_curvature_match(const CurvatureMatch& match, const MatchStudy& study, bool keep_log) {
@@ -78,6 +125,13 @@ MatchResult run_curvature_match(const CurvatureMatch& match, const MatchStudy& s
   MatchResult result;
   result.start = match.start_variables();
   result.before = match.distances(result.start);
+  if (study.method == MatchMethod::Direct) {
+    result.direct = run_direct(match, study);
+    result.ga_best = result.best = result.start;
+    result.after_ga = result.after = result.before;
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return result;
+  }
   const optim::GaResult ga = run_ga(match, study, result, keep_log);
   result.ga_report = ga.report;
   result.ga_best = ga.best.variables;
@@ -87,6 +141,8 @@ MatchResult run_curvature_match(const CurvatureMatch& match, const MatchStudy& s
   result.best = result.ga_best;
   switch (study.method) {
     case MatchMethod::Ga:
+      break;
+    case MatchMethod::Direct:
       break;
     case MatchMethod::Hybrid:
       result.lm = refine_levenberg_marquardt(match, result.ga_best, study.lm);
@@ -347,13 +403,42 @@ void match_setup_to_json(const MatchSetupJson& setup, Json& out) {
 MatchStudy match_study_from_json(const StudyDocument& document, const std::filesystem::path& base) {
   const Json& body = document.body;
   check_members(body, {"points", "lower", "upper", "start_tangent", "end_tangent", "target", "abscissa", "samples",
-                       "method", "ga", "lm"});
+                       "method", "ga", "lm", "direct"});
   MatchStudy study;
   study.header = document.header;
   if (const Json* v = jr::optional_member(body, "method"))
     study.method = match_method_from_name(jr::get_string(*v, jr::root_path("method")), "method");
   if (const Json* v = jr::optional_member(body, "ga")) study.ga = read_ga(*v, jr::root_path("ga"));
   if (const Json* v = jr::optional_member(body, "lm")) study.lm = lm_options_from_json(*v, jr::root_path("lm"));
+  if (const Json* v = jr::optional_member(body, "direct")) {
+    const jr::JsonPath path = jr::root_path("direct");
+    jr::reject_unknown_members(
+        *v, path,
+        {"length", "end_point", "end_tangent", "correction_degree", "vary_length", "length_weight", "end_tolerance"});
+    MatchDirectSettings& d = study.direct;
+    if (const Json* l = jr::optional_member(*v, "length")) {
+      d.length = jr::get_number(*l, path.member("length"));
+      if (!(*d.length > 0.0))
+        throw Error(Errc::InvalidOption, "direct.length = " + format_number(*d.length) + " must be > 0",
+                    path.member("length").where);
+    }
+    for (auto [flag, target] : {std::pair{"end_point", &d.end_point}, std::pair{"end_tangent", &d.end_tangent},
+                                std::pair{"vary_length", &d.vary_length}})
+      if (const Json* b = jr::optional_member(*v, flag)) {
+        if (!b->is_boolean()) jr::type_error(*b, path.member(flag), "true or false");
+        *target = b->get<bool>();
+      }
+    if (const Json* e = jr::optional_member(*v, "end_tolerance"))
+      d.end_tolerance = jr::get_number(*e, path.member("end_tolerance"));
+    if (const Json* w = jr::optional_member(*v, "length_weight")) {
+      d.length_weight = jr::get_number(*w, path.member("length_weight"));
+      if (!(d.length_weight > 0.0))
+        throw Error(Errc::InvalidOption, "direct.length_weight = " + format_number(d.length_weight) + " must be > 0",
+                    path.member("length_weight").where);
+    }
+    if (const Json* c = jr::optional_member(*v, "correction_degree"))
+      d.correction_degree = static_cast<int>(jr::get_integer(*c, path.member("correction_degree"), 1, 20));
+  }
   MatchSetupJson setup = match_setup_from_json(body, base, false);
   study.setup = std::move(setup.setup);
   study.target_json = std::move(setup.target);
@@ -376,6 +461,15 @@ Json match_study_to_json(const MatchStudy& study) {
   ga["precision"] = study.ga.precision;
   out["ga"] = ga;
   out["lm"] = lm_options_to_json(study.lm);
+  Json direct = Json::object();
+  if (study.direct.length) direct["length"] = *study.direct.length;
+  direct["end_point"] = study.direct.end_point;
+  direct["end_tangent"] = study.direct.end_tangent;
+  direct["correction_degree"] = study.direct.correction_degree;
+  direct["vary_length"] = study.direct.vary_length;
+  direct["length_weight"] = study.direct.length_weight;
+  direct["end_tolerance"] = study.direct.end_tolerance;
+  out["direct"] = direct;
   return out;
 }
 
@@ -402,6 +496,21 @@ Json match_result_to_json(const CurvatureMatch& match, const MatchStudy& study, 
     out["lm"] = lm;
   }
   out["after"] = distances_json(result.after);
+  if (result.direct) {
+    // The direct curve matches the profile by construction (up to the correction that holds its end); its
+    // distance from the target and where its end lands are what to compare with the GA routes.
+    const DirectReconstructionResult& d = *result.direct;
+    out["after"] = {{"mean", d.mean_curvature_deviation}, {"max", d.max_curvature_deviation}};
+    out["direct"] = direct_reconstruction_summary(d);
+    if (d.nurbs) {
+      const nurbs::NurbsCurve& c = d.nurbs->curve;
+      out["direct"]["end_miss"] = norm(c.evaluate(c.domain().end) - study.setup.points.back());
+      out["curve"] = io::curve_to_json(c);
+    }
+    out["seconds"] = result.seconds;
+    out["study"] = match_study_to_json(study);
+    return out;
+  }
   Json ga = Json::object();
   ga["generations"] = result.ga_report.generations;
   ga["evaluations"] = result.ga_report.evaluations;

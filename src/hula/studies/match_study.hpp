@@ -20,6 +20,7 @@
 #include "hula/optim/ga.hpp"
 #include "hula/optim/run_log.hpp"
 #include "hula/studies/curvature_match.hpp"
+#include "hula/studies/direct_reconstruction.hpp"
 #include "hula/studies/hybrid_refine.hpp"
 #include "hula/studies/study_file.hpp"
 
@@ -31,9 +32,13 @@ enum class MatchMethod {
   Ga,
   /// GA, then Levenberg–Marquardt on the residuals.
   Hybrid,
+  /// No search: the natural-equation solver integrates the target profile (as an arc-length profile)
+  /// from the start point and frame, optionally held to the end point / end tangent
+  /// (direct_reconstruction.hpp; issue 6 item 5).
+  Direct,
 };
 
-/// "ga" | "hybrid".
+/// "ga" | "hybrid" | "direct".
 [[nodiscard]] std::string_view match_method_name(MatchMethod m) noexcept;
 /// @throws hula::Error(Errc::ParseError) naming `field` and the accepted names for any other name
 [[nodiscard]] MatchMethod match_method_from_name(std::string_view name, std::string_view field);
@@ -63,6 +68,25 @@ struct MatchGaSettings {
   optim::Selection selection = optim::Selection::Roulette;
 };
 
+/// Settings of the direct method.
+struct MatchDirectSettings {
+  /// Curve length L; unset = the arc length of the spline through the start points.
+  std::optional<double> length{};
+  /// Hold the reconstructed curve's end at the last data point (boundary-value version). Default false.
+  bool end_point = false;
+  /// Hold its end tangent at the study's end_tangent (which must then be given). Default false.
+  bool end_tangent = false;
+  /// Degree of the Bernstein correction of the profile when an end is held. Default 5.
+  int correction_degree = 5;
+  /// Let the length vary too when an end is held (the profile fixes the shape, not the size). Default false.
+  bool vary_length = false;
+  /// Weight of (ΔL / L)² against the correction when the length varies; > 0. Default 1.
+  double length_weight = 1.0;
+  /// End tolerance relative to L (DirectReconstructionOptions::end_tolerance). Default 1e-9; sampled
+  /// (piecewise-linear) targets integrate to about 1e-7 relative, so they need about 1e-6.
+  double end_tolerance = 1e-9;
+};
+
 /// A complete study: everything needed to repeat a run.
 struct MatchStudy {
   /// Envelope: seed and threads.
@@ -75,6 +99,8 @@ struct MatchStudy {
   MatchGaSettings ga{};
   /// Levenberg–Marquardt settings (hybrid).
   LmOptions lm{};
+  /// Direct-method settings.
+  MatchDirectSettings direct{};
   /// The target member as written in the file (echoed in the resolved setup).
   Json target_json{};
 };
@@ -92,6 +118,9 @@ struct MatchResult {
   std::vector<double> convergence{};
   /// The LM report for the hybrid method.
   std::optional<LmResult> lm{};
+  /// The reconstruction of the direct method (no GA runs then: start, best and the distances
+  /// are those of the start points, the direct curve's own errors are in here).
+  std::optional<DirectReconstructionResult> direct{};
   /// Every individual of every generation, when asked for.
   optim::RunLog log{};
   /// Total wall time in seconds.
