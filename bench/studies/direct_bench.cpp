@@ -15,9 +15,9 @@
 #include <string>
 
 // The target-from-a-known-curve helper shared with the tests (thesis 8.2.1 validation method).
-#include "../../tests/studies/direct_reconstruction_support.hpp"
 #include "hula/law/parser.hpp"
 #include "hula/studies/direct_reconstruction.hpp"
+#include "hula/testing/curvature_target.hpp"
 
 namespace {
 
@@ -107,7 +107,7 @@ void BM_studies_direct_bvp_space_fit(benchmark::State& state) {
 // held to the Bézier's own end.
 DirectReconstructionProblem bezier_problem(bool constrained) {
   const nurbs::NurbsCurve bez(3, {0, 0, 0, 0, 1, 1, 1, 1}, {{0, 0, 0}, {1, 1, 0}, {2.5, -0.5, 0}, {3.5, 1, 0}});
-  const testing::CurvatureTarget t = testing::planar_curvature_target(bez, 201);
+  const hula::testing::CurvatureTarget t = hula::testing::planar_curvature_target(bez, 201);
   DirectReconstructionProblem p{.curvature = t.profile, .length = t.length, .start = t.start};
   if (constrained) {
     p.end_point = t.end_point;

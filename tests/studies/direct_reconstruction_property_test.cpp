@@ -10,9 +10,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "direct_reconstruction_support.hpp"
 #include "hula/core/rng.hpp"
 #include "hula/studies/direct_reconstruction.hpp"
+#include "hula/testing/curvature_target.hpp"
 
 namespace hula::studies {
 namespace {
@@ -56,11 +56,11 @@ TEST(DirectReconstructionProperty, RandomBeziers) {
   for (int c = 0; c < kCases; ++c) {
     SCOPED_TRACE("case " + std::to_string(c) + " of seed " + std::to_string(kSeed));
     const nurbs::NurbsCurve bez = random_bezier(rng);
-    const testing::CurvatureTarget t = testing::planar_curvature_target(bez, 201);
+    const hula::testing::CurvatureTarget t = hula::testing::planar_curvature_target(bez, 201);
     const double L = t.length;
     const DirectReconstructionResult ivp =
         reconstruct_direct({.curvature = t.profile, .length = L, .start = t.start}, o);
-    EXPECT_LT(testing::max_distance_at_equal_length(ivp.curve, bez, 40), 1e-5 * L);
+    EXPECT_LT(hula::testing::max_distance_at_equal_length(ivp.curve, bez, 40), 1e-5 * L);
 
     const DirectReconstructionResult own = reconstruct_direct(
         {.curvature = t.profile, .length = L, .start = t.start, .end_point = t.end_point, .end_tangent = t.end_tangent},

@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "direct_reconstruction_support.hpp"
 #include "hula/law/parser.hpp"
+#include "hula/testing/curvature_target.hpp"
 #include "hula/testing/expect_error.hpp"
 
 namespace hula::studies {
@@ -244,11 +244,11 @@ TEST(DirectReconstruction, VaryLengthStraightLine) {
 // to 1e-9 L with a correction below 1e-5.
 TEST(DirectReconstruction, RecoversABezierFromItsCurvature) {
   const nurbs::NurbsCurve bez(3, {0, 0, 0, 0, 1, 1, 1, 1}, {{0, 0, 0}, {1, 1, 0}, {2.5, -0.5, 0}, {3.5, 1, 0}});
-  const testing::CurvatureTarget target = testing::planar_curvature_target(bez, 201);
+  const hula::testing::CurvatureTarget target = hula::testing::planar_curvature_target(bez, 201);
   const double L = target.length;
   const DirectReconstructionResult ivp =
       reconstruct_direct({.curvature = target.profile, .length = L, .start = target.start}, no_fit());
-  EXPECT_LT(testing::max_distance_at_equal_length(ivp.curve, bez, 50), 1e-6 * L);
+  EXPECT_LT(hula::testing::max_distance_at_equal_length(ivp.curve, bez, 50), 1e-6 * L);
   const DirectReconstructionResult bvp = reconstruct_direct({.curvature = target.profile,
                                                              .length = L,
                                                              .start = target.start,

@@ -28,24 +28,19 @@ constexpr double kCornerAngle = 1e-8;
 // Refuses a curve whose tangent turns at a knot: the offset by its normal would tear there (and the
 // kernel's one-sided evaluation at the knot would hide the tear inside one piece of the fit).
 void require_g1(const nurbs::NurbsCurve& curve, const char* field) {
-  const auto U = curve.knots().values();
   const nurbs::Interval d = curve.domain();
-  for (std::size_t i = 0; i < U.size();) {
-    std::size_t j = i;
-    while (j < U.size() && U[j] == U[i]) ++j;
-    const int mult = static_cast<int>(j - i);
-    if (U[i] > d.start && U[i] < d.end && mult >= curve.degree()) {
-      const Vec3 l = curve.derivatives(U[i], 1, {.side = nurbs::Side::Left})[1];
-      const Vec3 r = curve.derivatives(U[i], 1, {.side = nurbs::Side::Right})[1];
-      const double angle = std::atan2(norm(cross(l, r)), dot(l, r));
-      if (!(angle <= kCornerAngle))
-        throw Error(Errc::InvalidArgument,
-                    std::string(field) + "'s tangent turns by " + format_number(angle) +
-                        " rad at the knot t = " + format_number(U[i]) +
-                        ": its normal fin compound would tear there (give a tangent-continuous curve)",
-                    {.field = field, .index = i});
-    }
-    i = j;
+  const std::vector<double> knots = curve.knots().breakpoints();
+  for (std::size_t i = 0; i < knots.size(); ++i) {
+    const double u = knots[i];
+    if (!(u > d.start && u < d.end) || curve.knots().multiplicity(u) < curve.degree()) continue;
+    const Vec3 l = curve.derivatives(u, 1, {.side = nurbs::Side::Left})[1];
+    const Vec3 r = curve.derivatives(u, 1, {.side = nurbs::Side::Right})[1];
+    const double angle = std::atan2(norm(cross(l, r)), dot(l, r));
+    if (!(angle <= kCornerAngle))
+      throw Error(Errc::InvalidArgument,
+                  std::string(field) + "'s tangent turns by " + format_number(angle) + " rad at the knot t = " +
+                      format_number(u) + ": its normal fin compound would tear there (give a tangent-continuous curve)",
+                  {.field = field, .index = i});
   }
 }
 
@@ -204,21 +199,19 @@ namespace {
 
 // Refuses a NURBS curve whose third derivative jumps at a knot (the compound would tear there).
 void require_c3(const nurbs::NurbsCurve& curve, const char* field) {
-  const auto U = curve.knots().values();
   const nurbs::Interval d = curve.domain();
-  for (std::size_t i = 0; i < U.size();) {
-    std::size_t j = i;
-    while (j < U.size() && U[j] == U[i]) ++j;
-    const int mult = static_cast<int>(j - i);
-    if (U[i] > d.start && U[i] < d.end && curve.degree() - mult < 3)
+  const std::vector<double> knots = curve.knots().breakpoints();
+  for (std::size_t i = 0; i < knots.size(); ++i) {
+    const double u = knots[i];
+    const int mult = curve.knots().multiplicity(u);
+    if (u > d.start && u < d.end && curve.degree() - mult < 3)
       throw Error(Errc::InvalidArgument,
                   std::string(field) + " is only C" + std::to_string(curve.degree() - mult) + " at the knot " +
-                      format_number(U[i]) + " (degree " + std::to_string(curve.degree()) + ", multiplicity " +
+                      format_number(u) + " (degree " + std::to_string(curve.degree()) + ", multiplicity " +
                       std::to_string(mult) +
                       "): its torsion jumps there and the Combescure transform would tear; give a curve that is "
                       "C3 (a Bezier, a quintic with simple knots, or a law)",
                   {.field = field, .index = i});
-    i = j;
   }
 }
 

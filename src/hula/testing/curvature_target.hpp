@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Shared by the direct-reconstruction unit and property tests: the curvature
+// Header-only test and benchmark support (direct-reconstruction tests and
+// bench): the curvature
 // profile of a known planar NURBS curve tabulated against u = s / L (κ from the
 // curve's derivatives, s by nurbs::arc_length), made a natural cubic spline
 // B-spline profile, with the curve's own start frame and end; and the distance
@@ -15,7 +16,9 @@
 #include "hula/nurbs/interpolate.hpp"
 #include "hula/studies/profile.hpp"
 
-namespace hula::studies::testing {
+namespace hula::testing {
+
+using studies::Profile;
 
 /// A target profile taken from a known planar curve, with the curve's start frame and end.
 struct CurvatureTarget {
@@ -67,4 +70,4 @@ inline double max_distance_at_equal_length(const intrinsic::IntrinsicCurve& r, c
   return worst;
 }
 
-}  // namespace hula::studies::testing
+}  // namespace hula::testing
