@@ -3,7 +3,8 @@
 // a cubic through N data points, sample κ at 200 parameters, compare with the
 // target — ours (studies::CurvatureMatch, allocation-free) beside Open CASCADE
 // doing the same (GeomAPI_Interpolate + GeomLProp_CLProps) in the same run;
-// then the thesis's whole 50 x 50 GA run and a 20-variable hybrid run.
+// then the thesis's whole 50 x 50 GA run, a 20-variable hybrid run and the
+// curvature + torsion NSGA-II run (with and without the LM polish).
 // Items processed = fitness evaluations.
 #include <benchmark/benchmark.h>
 
@@ -16,6 +17,7 @@
 
 #include "hula/core/rng.hpp"
 #include "hula/studies/curvature_match.hpp"
+#include "hula/studies/curvature_torsion_match.hpp"
 #include "hula/studies/match_study.hpp"
 
 namespace {
@@ -170,5 +172,42 @@ void BM_match_hybrid_20(benchmark::State& state) {
   state.counters["mean_distance"] = mean;
 }
 BENCHMARK(BM_match_hybrid_20)->Unit(benchmark::kMillisecond);
+
+// Curvature + torsion (NSGA-II 60 x 120, 12 free coordinates) on five helix points with clamped ends: the
+// set-up of examples/studies/match-curvature-torsion-helix.json. Arg 1 = with the LM polish.
+void BM_match_curvature_torsion(benchmark::State& state) {
+  std::vector<Vec3> truth(5);
+  for (std::size_t k = 0; k < 5; ++k) {
+    const double a = 1.6 * static_cast<double>(k) / 4.0 * M_PI;
+    truth[k] = {10 * std::sin(a), 10 * (1 - std::cos(a)), 4 * a};
+  }
+  CurvatureMatchSetup s;
+  s.dimension = 3;
+  s.start_tangent = Vec3{1, 0, 0};
+  s.end_tangent = Vec3{10 * std::cos(1.6 * M_PI), 10 * std::sin(1.6 * M_PI), 4};
+  s.target = hula::studies::Profile::from_samples(
+      uniform(kSamples), hula::studies::curvature_profile_of(truth, 3, kSamples, s.start_tangent, s.end_tangent));
+  s.torsion_target = hula::studies::Profile::from_samples(
+      uniform(kSamples), hula::studies::torsion_profile_of(truth, kSamples, s.start_tangent, s.end_tangent));
+  const Vec3 shift[] = {{0, 0, 0}, {0.8, -0.6, 0.5}, {-0.7, 0.9, -0.4}, {0.6, 0.5, -0.8}, {-0.5, -0.7, 0.6}};
+  s.points = truth;
+  for (std::size_t k = 0; k < 5; ++k) s.points[k] = truth[k] + shift[k];
+  s.lower.assign(5, Vec3{3, 3, 3});
+  s.upper = s.lower;
+  s.lower[0] = s.upper[0] = Vec3{};
+  const CurvatureMatch match(s);
+  hula::studies::TorsionMatchSettings settings;
+  settings.population = 60;
+  settings.generations = 120;
+  settings.polish = state.range(0) != 0;
+  double worst = 0.0;
+  for (auto _ : state) {
+    const auto r = hula::studies::run_curvature_torsion_match(match, settings, 1);
+    benchmark::DoNotOptimize(r.front.data());
+    worst = std::max(r.front[r.compromise].curvature, r.front[r.compromise].torsion);
+  }
+  state.counters["compromise_max_error"] = worst;
+}
+BENCHMARK(BM_match_curvature_torsion)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace
