@@ -28,12 +28,6 @@ using hula::studies::CurvatureMatchSetup;
 
 constexpr std::size_t kSamples = 200;
 
-std::vector<double> uniform(std::size_t n) {
-  std::vector<double> u(n);
-  for (std::size_t i = 0; i < n; ++i) u[i] = static_cast<double>(i) / static_cast<double>(n - 1);
-  return u;
-}
-
 std::vector<Vec3> wave(std::size_t n) {
   std::vector<Vec3> p(n);
   for (std::size_t i = 0; i < n; ++i) {
@@ -51,7 +45,7 @@ CurvatureMatchSetup setup(std::size_t n) {
   s.lower.assign(n, Vec3{2, 2, 0});
   s.upper = s.lower;
   s.lower[0] = s.upper[0] = Vec3{};
-  s.target = hula::studies::Profile::from_samples(uniform(kSamples),
+  s.target = hula::studies::Profile::from_samples(hula::studies::uniform_abscissae(kSamples),
                                                   hula::studies::curvature_profile_of(s.points, 2, kSamples));
   for (std::size_t i = 1; i < n; ++i) s.points[i].y += 0.5;
   return s;
@@ -130,8 +124,9 @@ void BM_match_ga_50x50(benchmark::State& state) {
   s.lower = {{0, 0, 0}, {5, 5, 0}, {5, 5, 0}, {0, 0, 0}};
   s.upper = s.lower;
   s.target = hula::studies::Profile::from_samples(
-      uniform(kSamples), hula::studies::curvature_profile_of(
-                             std::vector<Vec3>{{0, 0, 0}, {16, 20, 0}, {20, 30, 0}, {40, 0, 0}}, 2, kSamples));
+      hula::studies::uniform_abscissae(kSamples),
+      hula::studies::curvature_profile_of(std::vector<Vec3>{{0, 0, 0}, {16, 20, 0}, {20, 30, 0}, {40, 0, 0}}, 2,
+                                          kSamples));
   const CurvatureMatch match(s);
   hula::studies::MatchStudy study;
   double mean = 0.0;
@@ -156,7 +151,8 @@ void BM_match_hybrid_20(benchmark::State& state) {
   s.points[kPoints - 1] = wave(kPoints)[kPoints - 1];  // the fixed end point is the known curve's
   s.start_tangent = Vec3{1, 0.75, 0};
   s.target = hula::studies::Profile::from_samples(
-      uniform(kSamples), hula::studies::curvature_profile_of(wave(kPoints), 2, kSamples, s.start_tangent));
+      hula::studies::uniform_abscissae(kSamples),
+      hula::studies::curvature_profile_of(wave(kPoints), 2, kSamples, s.start_tangent));
   const CurvatureMatch match(s);
   hula::studies::MatchStudy study;
   study.method = hula::studies::MatchMethod::Hybrid;
@@ -186,9 +182,11 @@ void BM_match_curvature_torsion(benchmark::State& state) {
   s.start_tangent = Vec3{1, 0, 0};
   s.end_tangent = Vec3{10 * std::cos(1.6 * M_PI), 10 * std::sin(1.6 * M_PI), 4};
   s.target = hula::studies::Profile::from_samples(
-      uniform(kSamples), hula::studies::curvature_profile_of(truth, 3, kSamples, s.start_tangent, s.end_tangent));
+      hula::studies::uniform_abscissae(kSamples),
+      hula::studies::curvature_profile_of(truth, 3, kSamples, s.start_tangent, s.end_tangent));
   s.torsion_target = hula::studies::Profile::from_samples(
-      uniform(kSamples), hula::studies::torsion_profile_of(truth, kSamples, s.start_tangent, s.end_tangent));
+      hula::studies::uniform_abscissae(kSamples),
+      hula::studies::torsion_profile_of(truth, kSamples, s.start_tangent, s.end_tangent));
   const Vec3 shift[] = {{0, 0, 0}, {0.8, -0.6, 0.5}, {-0.7, 0.9, -0.4}, {0.6, 0.5, -0.8}, {-0.5, -0.7, 0.6}};
   s.points = truth;
   for (std::size_t k = 0; k < 5; ++k) s.points[k] = truth[k] + shift[k];

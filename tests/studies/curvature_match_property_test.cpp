@@ -16,12 +16,6 @@ namespace {
 
 using hula::Vec3;
 
-std::vector<double> uniform(std::size_t n) {
-  std::vector<double> u(n);
-  for (std::size_t i = 0; i < n; ++i) u[i] = static_cast<double>(i) / static_cast<double>(n - 1);
-  return u;
-}
-
 // Points with x increasing by 8..12 and y, z in a band: a well-spaced random curve.
 std::vector<Vec3> gen_curve(int dim) {
   const auto n = *rc::gen::inRange<std::size_t>(4, 9);
@@ -35,7 +29,7 @@ std::vector<Vec3> gen_curve(int dim) {
 RC_GTEST_PROP(CurvatureMatchProperty, SamplerAgreesWithNurbsCurvature, ()) {
   const int dim = *rc::gen::element(2, 3);
   const auto pts = gen_curve(dim);
-  const auto u = uniform(101);
+  const auto u = hula::studies::uniform_abscissae(101);
   const hula::studies::SplineProfileSampler sampler(pts.size(), dim, u, Vec3{1, 0, 0});
   hula::studies::SplineProfileSampler::Workspace ws;
   std::vector<double> kappa(u.size()), ref(u.size()), tau(u.size());
@@ -59,8 +53,9 @@ RC_GTEST_PROP(CurvatureMatchProperty, HybridRecoversKnownSpaceCurve, ()) {
   s.upper = s.lower;
   for (std::size_t i = 1; i < truth.size(); ++i)
     for (int c = 0; c < dim; ++c) s.points[i][static_cast<std::size_t>(c)] += *rc::gen::inRange(-10, 11) / 100.0;
-  s.target = hula::studies::Profile::from_samples(
-      uniform(200), hula::studies::curvature_profile_of(truth, dim, 200, tangent, std::nullopt));
+  s.target =
+      hula::studies::Profile::from_samples(hula::studies::uniform_abscissae(200),
+                                           hula::studies::curvature_profile_of(truth, dim, 200, tangent, std::nullopt));
   const hula::studies::CurvatureMatch match(s);
   const auto r = hula::studies::refine_levenberg_marquardt(match, match.start_variables());
   RC_ASSERT(r.mean_after <= 1e-6);

@@ -22,16 +22,10 @@ using hula::studies::CurvatureMatchSetup;
 using hula::studies::Profile;
 using hula::studies::SplineProfileSampler;
 
-std::vector<double> uniform(std::size_t n) {
-  std::vector<double> u(n);
-  for (std::size_t i = 0; i < n; ++i) u[i] = static_cast<double>(i) / static_cast<double>(n - 1);
-  return u;
-}
-
 // Checks the sampler's κ and τ against the NURBS interpolant (interpolate_cubic, Piegl-Tiller basis) and the
 // Frenet code of diffgeom: two independent implementations of the same spline and the same formulas.
 void expect_matches_nurbs(const std::vector<Vec3>& pts, int dim, std::optional<Vec3> start, std::optional<Vec3> end) {
-  const auto u = uniform(200);
+  const auto u = hula::studies::uniform_abscissae(200);
   const SplineProfileSampler sampler(pts.size(), dim, u, start, end);
   SplineProfileSampler::Workspace ws;
   std::vector<double> kappa(u.size()), tau(u.size());
@@ -61,7 +55,7 @@ TEST(SplineProfileSampler, MatchesNurbsInterpolantAndFrenetTo1e12) {
 // (adaptive quadrature to 1e-12) and diffgeom's curvature; to 1e-10.
 TEST(SplineProfileSampler, ArcLengthAbscissaMatchesNurbsArcLength) {
   const std::vector<Vec3> pts = {{0, 0, 0}, {10, 10, 0}, {20, -10, 2}, {30, 4, 5}, {40, 0, 8}};
-  const auto u = uniform(101);
+  const auto u = hula::studies::uniform_abscissae(101);
   const SplineProfileSampler sampler(pts.size(), 3, u, Vec3{1, 0, 0}, std::nullopt,
                                      hula::studies::ProfileAbscissa::ArcLength);
   SplineProfileSampler::Workspace ws;
@@ -83,7 +77,7 @@ TEST(SplineProfileSampler, ArcLengthAbscissaMatchesNurbsArcLength) {
 
 // A straight line has κ = 0 everywhere; a planar spline has τ = 0.
 TEST(SplineProfileSampler, CollinearPointsHaveZeroCurvature) {
-  const SplineProfileSampler sampler(4, 2, uniform(50));
+  const SplineProfileSampler sampler(4, 2, hula::studies::uniform_abscissae(50));
   SplineProfileSampler::Workspace ws;
   std::vector<double> kappa(50), tau(50);
   ASSERT_TRUE(sampler.sample(std::vector<Vec3>{{0, 0, 0}, {1, 2, 0}, {3, 6, 0}, {4, 8, 0}}, ws, kappa, tau));
@@ -95,14 +89,15 @@ TEST(SplineProfileSampler, CollinearPointsHaveZeroCurvature) {
 
 // Coincident points are a failed evaluation (NaN), never an exception in the GA's hot loop.
 TEST(SplineProfileSampler, CoincidentPointsFailWithNaN) {
-  const SplineProfileSampler sampler(3, 2, uniform(10));
+  const SplineProfileSampler sampler(3, 2, hula::studies::uniform_abscissae(10));
   SplineProfileSampler::Workspace ws;
   std::vector<double> kappa(10);
   EXPECT_FALSE(sampler.sample(std::vector<Vec3>{{0, 0, 0}, {0, 0, 0}, {1, 1, 0}}, ws, kappa));
   EXPECT_TRUE(std::isnan(kappa[3]));
-  HULA_EXPECT_ERROR(SplineProfileSampler(1, 2, uniform(10)), Errc::TooFewPoints, "1");
+  HULA_EXPECT_ERROR(SplineProfileSampler(1, 2, hula::studies::uniform_abscissae(10)), Errc::TooFewPoints, "1");
   HULA_EXPECT_ERROR(SplineProfileSampler(3, 2, {0.0, 1.5}), Errc::InvalidArgument, "samples[1]");
-  HULA_EXPECT_ERROR(SplineProfileSampler(3, 2, uniform(3), Vec3{0, 0, 0}), Errc::InvalidArgument, "start_tangent");
+  HULA_EXPECT_ERROR(SplineProfileSampler(3, 2, hula::studies::uniform_abscissae(3), Vec3{0, 0, 0}),
+                    Errc::InvalidArgument, "start_tangent");
 }
 
 CurvatureMatchSetup thesis_test_setup() {
@@ -113,7 +108,7 @@ CurvatureMatchSetup thesis_test_setup() {
   s.upper = s.lower;
   const auto k =
       hula::studies::curvature_profile_of(std::vector<Vec3>{{0, 0, 0}, {16, 20, 0}, {20, 30, 0}, {40, 0, 0}}, 2, 200);
-  s.target = Profile::from_samples(uniform(200), k);
+  s.target = Profile::from_samples(hula::studies::uniform_abscissae(200), k);
   return s;
 }
 
@@ -192,13 +187,13 @@ TEST(CurvatureMatch, CurvatureAndTorsionDistancesForTheTwoObjectiveStudy) {
   s.lower.assign(truth.size(), Vec3{2, 2, 2});
   s.lower[0] = Vec3{};
   s.upper = s.lower;
-  const SplineProfileSampler sampler(truth.size(), 3, uniform(200));
+  const SplineProfileSampler sampler(truth.size(), 3, hula::studies::uniform_abscissae(200));
   SplineProfileSampler::Workspace ws;
   std::vector<double> kappa(200), tau(200);
   ASSERT_TRUE(sampler.sample(truth, ws, kappa, tau));
   for (double& t : tau) t = std::isfinite(t) ? t : 0.0;
-  s.target = Profile::from_samples(uniform(200), kappa);
-  s.torsion_target = Profile::from_samples(uniform(200), tau);
+  s.target = Profile::from_samples(hula::studies::uniform_abscissae(200), kappa);
+  s.torsion_target = Profile::from_samples(hula::studies::uniform_abscissae(200), tau);
   const CurvatureMatch match(s);
   std::vector<double> x = match.start_variables();
   const auto far = match.distances(x);

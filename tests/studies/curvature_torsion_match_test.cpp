@@ -19,12 +19,6 @@ using hula::studies::CurvatureMatchSetup;
 using hula::studies::Profile;
 using hula::studies::SplineProfileSampler;
 
-std::vector<double> uniform(std::size_t n) {
-  std::vector<double> u(n);
-  for (std::size_t i = 0; i < n; ++i) u[i] = static_cast<double>(i) / static_cast<double>(n - 1);
-  return u;
-}
-
 // Points on a helix of radius 10 and pitch 2π·4: κ and τ both non-zero everywhere on the spline.
 std::vector<Vec3> helix_points(std::size_t n) {
   std::vector<Vec3> p(n);
@@ -38,7 +32,7 @@ std::vector<Vec3> helix_points(std::size_t n) {
 // A matching problem whose targets are the κ(u) and τ(u) of the spline through `truth`, started from a
 // perturbed copy with every coordinate of the points after the first free within ±3.
 CurvatureMatch known_curve_problem(const std::vector<Vec3>& truth, std::size_t samples) {
-  const auto u = uniform(samples);
+  const auto u = hula::studies::uniform_abscissae(samples);
   // Clamped at both ends: a natural end has κ = 0 there and τ undefined.
   const Vec3 end_tangent{10 * std::cos(1.6 * M_PI), 10 * std::sin(1.6 * M_PI), 4};
   const SplineProfileSampler sampler(truth.size(), 3, u, Vec3{1, 0, 0}, end_tangent);

@@ -25,12 +25,6 @@ using hula::studies::MatchMethod;
 using hula::studies::MatchStudy;
 using hula::studies::Profile;
 
-std::vector<double> uniform(std::size_t n) {
-  std::vector<double> u(n);
-  for (std::size_t i = 0; i < n; ++i) u[i] = static_cast<double>(i) / static_cast<double>(n - 1);
-  return u;
-}
-
 // A known curve through `truth`; the first `free` coordinates after the start point are moved by up to `delta`
 // (seeded) and bounded by `bound` around the moved start value; the target is the known curve's profile.
 CurvatureMatchSetup known_curve_setup(const std::vector<Vec3>& truth, int dim, std::size_t free, double delta,
@@ -49,7 +43,7 @@ CurvatureMatchSetup known_curve_setup(const std::vector<Vec3>& truth, int dim, s
       s.lower[i][c] = bound;
       s.upper[i][c] = bound;
     }
-  s.target = Profile::from_samples(uniform(200),
+  s.target = Profile::from_samples(hula::studies::uniform_abscissae(200),
                                    hula::studies::curvature_profile_of(truth, dim, 200, start_tangent, std::nullopt));
   return s;
 }

@@ -326,14 +326,14 @@ void CurvatureMatchSetup::validate() const {
   if (!target) throw Error(Errc::InvalidArgument, "target: no target curvature profile", {.field = "target"});
 }
 
-namespace {
-
 std::vector<double> uniform_abscissae(std::size_t samples) {
   std::vector<double> u(samples);
-  for (std::size_t i = 0; i < samples; ++i) u[i] = static_cast<double>(i) / static_cast<double>(samples - 1);
-  u.back() = 1.0;
+  for (std::size_t i = 0; i + 1 < samples; ++i) u[i] = static_cast<double>(i) / static_cast<double>(samples - 1);
+  if (samples > 0) u[samples - 1] = 1.0;
   return u;
 }
+
+namespace {
 
 // Validates the setup first, so that a bad setup is reported before anything is built from it.
 SplineProfileSampler make_sampler(const CurvatureMatchSetup& s) {

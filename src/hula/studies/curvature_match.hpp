@@ -191,6 +191,10 @@ class CurvatureMatch {
   std::vector<Free> free_;
 };
 
+/// The sample abscissae of every matching study: u_i = i / (samples − 1), i = 0 … samples − 1 (the last exactly 1).
+/// @param samples >= 2
+[[nodiscard]] std::vector<double> uniform_abscissae(std::size_t samples);
+
 /// The curvature profile κ(u_i), u_i = i / (samples − 1), of the spline through `points` (natural ends unless
 /// tangents are given): the "known curve" targets of the thesis's validation method.
 /// @throws hula::Error as SplineProfileSampler, and Errc::CoincidentPoints if two consecutive points coincide

@@ -216,9 +216,7 @@ Profile known_curve_target(const Json& t, const jr::JsonPath& path, const Curvat
     const std::vector<double> w = v;
     for (std::size_t i = 0; i < N; ++i) v[i] = 0.5 * (w[i] + w[N - 1 - i]);
   }
-  std::vector<double> u(N);
-  for (std::size_t i = 0; i < N; ++i) u[i] = static_cast<double>(i) / static_cast<double>(N - 1);
-  u.back() = 1.0;
+  const std::vector<double> u = uniform_abscissae(N);
   if (const Json* f = jr::optional_member(t, "factor")) {
     const Profile factor = profile_from_json(*f, path.member("factor"), base, context);
     std::vector<double> fv(N);
