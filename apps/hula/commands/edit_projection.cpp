@@ -9,8 +9,8 @@
 
 #include "commands/common.hpp"
 #include "commands/editing_common.hpp"
+#include "hula/io/editing_study_file.hpp"
 #include "hula/io/json_curve.hpp"
-#include "hula/studies/editing_study.hpp"
 
 namespace hula::cli {
 
@@ -22,8 +22,8 @@ struct EditProjectionArgs {
 };
 
 int run_edit_projection(const EditProjectionArgs& a) {
-  const studies::StudyDocument doc = load_study(a.study, "edit-projection");
-  const studies::EditProjectionStudy s = studies::read_edit_projection_study(doc);
+  const io::StudyDocument doc = load_study(a.study, "edit-projection");
+  const io::EditProjectionStudy s = io::read_edit_projection_study(doc);
   const studies::ProjectionEditResult r = studies::edit_projection(s.curve.nurbs(), s.edited.nurbs(), s.plane);
   Json out = Json::object();
   out["study"] = "edit-projection";

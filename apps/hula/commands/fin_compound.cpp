@@ -12,9 +12,9 @@
 #include "commands/editing_common.hpp"
 #include "hula/core/error.hpp"
 #include "hula/diffgeom/combescure.hpp"
+#include "hula/io/editing_study_file.hpp"
 #include "hula/io/json_curve.hpp"
 #include "hula/law/tape.hpp"
-#include "hula/studies/editing_study.hpp"
 
 namespace hula::cli {
 
@@ -59,7 +59,7 @@ double law_deviation(const law::Law& a, const law::Law& b, const std::string& pa
   return d;
 }
 
-int run_projection(const studies::FinCompoundStudy& s, const FinCompoundArgs& a, Json& out) {
+int run_projection(const io::FinCompoundStudy& s, const FinCompoundArgs& a, Json& out) {
   const studies::NormalCompoundOptions& o = s.projection;
   const nurbs::NurbsCurve& curve = s.curve->nurbs();
   out["plane"] = std::string(diffgeom::plane_name(o.plane));
@@ -129,7 +129,7 @@ int run_projection(const studies::FinCompoundStudy& s, const FinCompoundArgs& a,
   return kExitOk;
 }
 
-int run_combescure(const studies::FinCompoundStudy& s, const FinCompoundArgs& a, Json& out) {
+int run_combescure(const io::FinCompoundStudy& s, const FinCompoundArgs& a, Json& out) {
   const studies::CombescureOptions& o = s.combescure;
   out["c"] = o.c;
   const bool forward = s.curve.has_value();
@@ -168,13 +168,13 @@ int run_combescure(const studies::FinCompoundStudy& s, const FinCompoundArgs& a,
 }
 
 int run_fin_compound(const FinCompoundArgs& a) {
-  const studies::StudyDocument doc = load_study(a.study, "fin-compound");
-  const studies::FinCompoundStudy s = studies::read_fin_compound_study(doc);
+  const io::StudyDocument doc = load_study(a.study, "fin-compound");
+  const io::FinCompoundStudy s = io::read_fin_compound_study(doc);
   Json out = Json::object();
   out["study"] = "fin-compound";
-  out["method"] = s.method == studies::FinCompoundMethod::Projection ? "projection" : "combescure";
+  out["method"] = s.method == io::FinCompoundMethod::Projection ? "projection" : "combescure";
   const int code =
-      s.method == studies::FinCompoundMethod::Projection ? run_projection(s, a, out) : run_combescure(s, a, out);
+      s.method == io::FinCompoundMethod::Projection ? run_projection(s, a, out) : run_combescure(s, a, out);
   record_run(out, s.header, a.study);
   print_json(out);
   return code;

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Study files of the editing studies; see editing_study.hpp and docs/formats.md.
-#include "hula/studies/editing_study.hpp"
+#include "hula/io/editing_study_file.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -9,9 +9,11 @@
 #include "hula/core/error.hpp"
 #include "hula/io/json_read.hpp"
 
-namespace hula::studies {
+namespace hula::io {
 
-namespace json = io::json;
+using namespace studies;  // NOLINT(google-build-using-namespace): this file is the studies' codec
+
+
 
 namespace {
 
@@ -40,7 +42,7 @@ const nurbs::NurbsCurve& nurbs_of(const curve::Curve& c) { return c.nurbs(); }
 curve::Curve read_curve_member(const Json& body, std::string_view name) {
   const Json& value = json::require_member(body, kRoot, name);
   try {
-    return io::curve_from_json(value);
+    return curve_from_json(value);
   } catch (const Error& e) {
     ErrorWhere where = e.where();
     where.field = where.field.empty() ? std::string(name) : std::string(name) + "." + where.field;
@@ -170,4 +172,4 @@ HermiteStudy read_hermite_study(const StudyDocument& doc) {
   return s;
 }
 
-}  // namespace hula::studies
+}  // namespace hula::io

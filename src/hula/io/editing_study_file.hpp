@@ -13,9 +13,9 @@
 #include "hula/studies/fin_compound.hpp"
 #include "hula/studies/hermite_edit.hpp"
 #include "hula/studies/projection_edit.hpp"
-#include "hula/studies/study_file.hpp"
+#include "hula/io/study_file.hpp"
 
-namespace hula::studies {
+namespace hula::io {
 
 /// Reads member `name` of a study body as an inline curve document (docs/formats.md curve files:
 /// "nurbs", "bezier", "interpolated" or "law").
@@ -31,7 +31,7 @@ enum class FinCompoundMethod {
 
 /// A "fin-compound" study.
 struct FinCompoundStudy {
-  StudyHeader header{};
+  studies::StudyHeader header{};
   FinCompoundMethod method = FinCompoundMethod::Projection;
   /// "curve": the original curve (projection: required; combescure: the parent, forward transform).
   std::optional<curve::Curve> curve{};
@@ -40,9 +40,9 @@ struct FinCompoundStudy {
   /// combescure.
   std::optional<curve::Curve> compound{};
   /// "plane", "scale", "samples", "min_stretch", "tolerance" (projection).
-  NormalCompoundOptions projection{};
+  studies::NormalCompoundOptions projection{};
   /// "c", "samples", "tolerance" (combescure).
-  CombescureOptions combescure{};
+  studies::CombescureOptions combescure{};
 };
 
 /// Reads a "fin-compound" study body.
@@ -53,7 +53,7 @@ struct FinCompoundStudy {
 
 /// An "edit-projection" study.
 struct EditProjectionStudy {
-  StudyHeader header{};
+  studies::StudyHeader header{};
   curve::Curve curve;                           ///< "curve": the original 3-D curve
   curve::Curve edited;                          ///< "edited": the edited projection, planar in `plane`
   diffgeom::Plane plane = diffgeom::Plane::XY;  ///< "plane"
@@ -65,13 +65,13 @@ struct EditProjectionStudy {
 
 /// A "hermite" study.
 struct HermiteStudy {
-  StudyHeader header{};
+  studies::StudyHeader header{};
   /// "spline": an "interpolated" curve document (points, parameterisation or parameters, ends).
   curve::InterpolatedData spline{};
   /// The spline's interpolation options and "rebuild".
-  HermiteEditOptions options{};
+  studies::HermiteEditOptions options{};
   /// "edits" (angles in the file in degrees, here in radians).
-  std::vector<HandleEdit> edits;
+  std::vector<studies::HandleEdit> edits;
 };
 
 /// Reads a "hermite" study body.
@@ -81,4 +81,4 @@ struct HermiteStudy {
 ///   for a bad edit (hermite_edit's checks, run here before any work)
 [[nodiscard]] HermiteStudy read_hermite_study(const StudyDocument& doc);
 
-}  // namespace hula::studies
+}  // namespace hula::io
