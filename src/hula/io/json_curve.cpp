@@ -53,16 +53,25 @@ nurbs::EndCondition end_condition_from_json(const Json& value, std::string_view 
     if (name == "occt") return {K::Occt, {}};
     throw Error(Errc::ParseError,
                 path.text + " = " + json::describe(value) +
-                    " is not an end condition (expected \"natural\", \"bessel\", \"not-a-knot\", \"occt\" or "
-                    "{\"tangent\": [x, y, z]})",
+                    " is not an end condition (expected \"natural\", \"bessel\", \"not-a-knot\", \"occt\", "
+                    "{\"tangent\": [x, y, z]} or {\"direction\": [x, y, z]})",
                 path.where);
   }
   if (value.is_object()) {
+    if (const Json* direction = json::optional_member(value, "direction")) {
+      const Vec3 d = json::get_point(*direction, path.member("direction")).first;
+      if (!(norm(d) > 0.0))
+        throw Error(Errc::InvalidArgument,
+                    path.member("direction").text + " is a zero vector (a direction needs a length)",
+                    path.member("direction").where);
+      return {K::Direction, d};
+    }
     const Json& tangent = json::require_member(value, path, "tangent");
     return {K::Clamped, json::get_point(tangent, path.member("tangent")).first};
   }
   json::type_error(value, path,
-                   "an end condition (\"natural\", \"bessel\", \"not-a-knot\", \"occt\" or {\"tangent\": [x, y, z]})");
+                   "an end condition (\"natural\", \"bessel\", \"not-a-knot\", \"occt\", {\"tangent\": [x, y, z]} or "
+                   "{\"direction\": [x, y, z]})");
 }
 
 namespace {
@@ -233,6 +242,11 @@ Json end_condition_to_json(const nurbs::EndCondition& end, int dimension) {
     case K::Clamped: {
       Json o = Json::object();
       o["tangent"] = point_to_json(end.derivative, dimension == 2 && end.derivative.z == 0.0 ? 2 : 3);
+      return o;
+    }
+    case K::Direction: {
+      Json o = Json::object();
+      o["direction"] = point_to_json(end.derivative, dimension == 2 && end.derivative.z == 0.0 ? 2 : 3);
       return o;
     }
   }
