@@ -455,5 +455,7 @@ class Edit {
 
 template <>
 struct std::hash<hula::oli::Label> {
-  std::size_t operator()(const hula::oli::Label& label) const noexcept { return std::hash<std::uint64_t>{}(label.value); }
+  std::size_t operator()(const hula::oli::Label& label) const noexcept {
+    return std::hash<std::uint64_t>{}(label.value);
+  }
 };
