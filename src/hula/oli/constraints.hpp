@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "hula/core/vec.hpp"
+#include "hula/io/json_read.hpp"
 
 namespace hula::curve {
 class Curve;
@@ -75,5 +76,13 @@ struct ConstraintResidual {
 /// @throws hula::Error from Constraint::validate (with the constraint's index in `where`)
 [[nodiscard]] std::vector<ConstraintResidual> check_constraints(const curve::Curve& curve,
                                                                 std::span<const Constraint> constraints);
+
+/// Constraints as JSON: [{"kind": "pass-through", "point": [x, y, z], "tolerance": 1e-6},
+/// {"kind": "end-tangent", "end": "start"|"end", "direction": [x, y, z], "tolerance"},
+/// {"kind": "end-curvature", "end", "value", "tolerance"}, {"kind": "fixed-length", "value", "tolerance"}].
+[[nodiscard]] io::json::Json constraints_to_json(std::span<const Constraint> constraints);
+/// Parses constraints_to_json's form ("tolerance" optional) and validates each.
+/// @throws hula::Error(Errc::ParseError) naming the member (constraints[i].kind, ...); Constraint::validate's errors
+[[nodiscard]] std::vector<Constraint> constraints_from_json(const io::json::Json& json);
 
 }  // namespace hula::oli

@@ -49,6 +49,7 @@
 #include "hula/core/error.hpp"
 #include "hula/core/vec.hpp"
 #include "hula/io/json_curve.hpp"
+#include "hula/io/points_file.hpp"
 #include "hula/oli/constraints.hpp"
 
 namespace hula::curve {
@@ -119,15 +120,9 @@ struct Provenance {
   friend bool operator==(const Provenance&, const Provenance&) = default;
 };
 
-/// A point set entity's data.
-struct PointSet {
-  /// The points in model units, in order.
-  std::vector<Vec3> points{};
-  /// 2 when the points are planar [x, y] data, else 3.
-  int dimension = 3;
-
-  friend bool operator==(const PointSet&, const PointSet&) = default;
-};
+/// A point set entity's data: the io module's point set (points in model
+/// units, dimension 2 for planar [x, y] data, else 3).
+using PointSet = io::PointSet;
 
 /// One run of a study, stored in the study entity.
 struct StudyRun {
