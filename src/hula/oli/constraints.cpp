@@ -16,12 +16,6 @@ namespace hula::oli {
 
 namespace {
 
-Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-double norm(const Vec3& a) { return std::hypot(a.x, a.y, a.z); }
-
 void check_finite(double v, const char* member) {
   if (!std::isfinite(v))
     throw Error(Errc::NonFiniteInput, std::string(member) + " = " + format_number(v) + " is not finite",

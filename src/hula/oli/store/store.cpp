@@ -40,6 +40,9 @@ std::string sqlite_reason(sqlite3* db, int rc) {
   const int primary = rc & 0xff;
   if (primary == SQLITE_CORRUPT || primary == SQLITE_NOTADB) return "the file is corrupt or truncated (" + reason + ")";
   if (primary == SQLITE_FULL) return "the disk is full or the file size limit was reached (" + reason + ")";
+  if (primary == SQLITE_CANTOPEN)
+    return reason + " (a writer creates the -wal and -shm files beside the document: is its directory writable?)";
+  if (primary == SQLITE_READONLY) return reason + " (is the file or its directory write-protected?)";
   return reason;
 }
 
@@ -319,6 +322,9 @@ Store Store::open(const std::filesystem::path& path, Access access) {
   if (access == Access::ReadWrite) impl->lock = lock_for_writing(path);
   check_header(path);
   impl->connect(access == Access::ReadWrite ? SQLITE_OPEN_READWRITE : SQLITE_OPEN_READONLY);
+  // SQLite opens a write-protected file read-only without saying so: refuse it here instead.
+  if (access == Access::ReadWrite && sqlite3_db_readonly(impl->db, "main") == 1)
+    fail(path, "cannot open for writing: the file is write-protected");
   const std::int64_t app = impl->pragma_int("PRAGMA application_id");
   if (app != kApplicationId) fail(path, "not a HulaHoops document (an SQLite database of another application)");
   const std::int64_t version = impl->pragma_int("PRAGMA user_version");
