@@ -6,7 +6,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake ninja-build pkg-config git
+  build-essential cmake ninja-build pkg-config git python3
   clang-format-14 clang-14 libclang-rt-14-dev
   libeigen3-dev libboost-dev libboost-math-dev libtbb-dev
   nlohmann-json3-dev libcli11-dev
