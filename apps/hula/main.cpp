@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "commands/common.hpp"
+#include "commands/doc.hpp"
 #include "hula/core/error.hpp"
 #include "hula/io/error_json.hpp"
 

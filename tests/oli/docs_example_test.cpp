@@ -30,7 +30,9 @@ TEST(DocsExample, OliExamplesRun) {
   oli::Document doc = oli::Document::create(dir / "part.hula");
   oli::Label spine;
   doc.transact("add spine", [&](oli::Edit& e) {
-    spine = e.add_curve(curve::Curve::bezier({{{0, 0, 0}, {1, 2, 0}, {3, 2, 0}, {4, 0, 0}}}), {.name = "spine"});
+    const curve::Curve bezier = curve::Curve::bezier(
+        {.control_points = {{0, 0, 0}, {1, 2, 0}, {3, 2, 0}, {4, 0, 0}}, .weights = {}, .dimension = 3});
+    spine = e.add_curve(bezier, {.name = "spine"});
   });
   // A drag: the first position is a new step, the next ones continue it.
   doc.transact("drag", [&](oli::Edit& e) { e.move_point(spine, 1, {1, 2.5, 0}); });

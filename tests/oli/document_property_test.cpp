@@ -169,6 +169,13 @@ rc::Gen<Op> gen_op() {
       });
 }
 
+// JSON equality without RapidCheck printing the values (it cannot show ordered_json).
+bool same(const Json& a, const Json& b) {
+  if (a == b) return true;
+  RC_LOG() << "expected " << b.dump() << "\nactual   " << a.dump() << "\n";
+  return false;
+}
+
 bool is_failure(OpKind k) { return k == OpKind::FailNaN || k == OpKind::FailInvalidCurve || k == OpKind::FailThrow; }
 
 // Runs ops on `doc`, returns the successful ones; checks failures never succeed and labels only grow.
@@ -177,6 +184,7 @@ std::vector<Op> run(Document& doc, const std::vector<Op>& ops) {
   std::vector<Label> added;
   for (const Op& op : ops) {
     const Json before = observable(doc);
+    const Label next_before = doc.next_label();
     const bool ok = apply(doc, op, added);
     if (is_failure(op.kind)) {
       RC_ASSERT(!ok);
@@ -184,21 +192,26 @@ std::vector<Op> run(Document& doc, const std::vector<Op>& ops) {
     if (ok)
       succeeded.push_back(op);
     else
-      RC_ASSERT(observable(doc) == before);
+      RC_ASSERT(same(observable(doc), before) && doc.next_label() == next_before);
   }
   for (std::size_t i = 1; i < added.size(); ++i) RC_ASSERT(added[i - 1] < added[i]);
   return succeeded;
 }
 
+// Undoes every applied step (reaching the empty document) and redoes as many (reaching the final one).
 void check_undo_all_redo_all(Document& doc) {
   const Json final_state = observable(doc);
   const std::uint64_t next = doc.next_label().value;
-  while (doc.can_undo()) RC_ASSERT(doc.undo().committed);
+  std::size_t undone = 0;
+  while (doc.can_undo()) {
+    RC_ASSERT(doc.undo().committed);
+    ++undone;
+  }
   RC_ASSERT(doc.size() == 0u);
   RC_ASSERT(doc.revision() == 0u);
   RC_ASSERT(doc.next_label().value == next);
-  while (doc.can_redo()) RC_ASSERT(doc.redo().committed);
-  RC_ASSERT(observable(doc) == final_state);
+  for (std::size_t k = 0; k < undone; ++k) RC_ASSERT(doc.redo().committed);
+  RC_ASSERT(same(observable(doc), final_state));
 }
 
 // Checks random operations with injected failures equal the replay of the successful ones, and undo/redo of all steps.
@@ -209,8 +222,9 @@ RC_GTEST_PROP(DocumentProperty, FailuresLeaveTheReplayOfSuccesses, ()) {
   Document replay;
   std::vector<Label> added;
   for (const Op& op : succeeded) RC_ASSERT(apply(replay, op, added));
-  RC_ASSERT(observable(replay) == observable(doc));
-  RC_ASSERT(history_json(replay) == history_json(doc));
+  RC_ASSERT(same(observable(replay), observable(doc)));
+  RC_ASSERT(replay.next_label() == doc.next_label());
+  RC_ASSERT(same(history_json(replay), history_json(doc)));
   check_undo_all_redo_all(doc);
 }
 
@@ -220,6 +234,7 @@ RC_GTEST_PROP(DocumentProperty, FileDocumentReopensEqualAndUndoesEverything, ())
   hula::testing::TempDir dir;
   const auto path = dir / "p.hula";
   Json final_state, history;
+  std::uint64_t applied = 0;
   {
     Document doc = Document::create(path);
     (void)run(doc, ops);
@@ -229,15 +244,16 @@ RC_GTEST_PROP(DocumentProperty, FileDocumentReopensEqualAndUndoesEverything, ())
   RC_ASSERT(Document::check_file(path).ok);
   {
     Document doc = Document::open(path);
-    RC_ASSERT(observable(doc) == final_state);
-    RC_ASSERT(history_json(doc) == history);
+    RC_ASSERT(same(observable(doc), final_state));
+    RC_ASSERT(same(history_json(doc), history));
     check_undo_all_redo_all(doc);
+    applied = doc.revision();
     while (doc.can_undo()) RC_ASSERT(doc.undo().committed);
   }
   Document doc = Document::open(path);
   RC_ASSERT(doc.size() == 0u);
-  while (doc.can_redo()) RC_ASSERT(doc.redo().committed);
-  RC_ASSERT(observable(doc) == final_state);
+  for (std::uint64_t k = 0; k < applied; ++k) RC_ASSERT(doc.redo().committed);
+  RC_ASSERT(same(observable(doc), final_state));
 }
 
 }  // namespace

@@ -92,7 +92,8 @@ TEST(Document, MovePointChangesOnlyThatPoint) {
   const Label a = add(doc, cubic(6));
   doc.transact("move", [&](Edit& e) { e.move_point(a, 3, {1.5, -2, 7}); }).throw_if_failed();
   const auto& cps = doc.get(a).curve().nurbs().control_points();
-  const auto& orig = cubic(6).nurbs().control_points();
+  const curve::Curve original = cubic(6);
+  const auto orig = original.nurbs().control_points();
   for (std::size_t i = 0; i < cps.size(); ++i) {
     const Vec3 want = i == 3 ? Vec3{1.5, -2, 7} : orig[i];
     EXPECT_EQ(cps[i].x, want.x);
@@ -194,7 +195,7 @@ TEST(Document, UndoRedoAndRedoDroppedByNewChange) {
   ASSERT_TRUE(doc.undo());
   doc.transact("other", [&](Edit& e) { e.move_point(a, 1, {8, 8, 8}); }).throw_if_failed();
   EXPECT_FALSE(doc.can_redo());
-  EXPECT_EQ(doc.revision(), 3u);
+  EXPECT_EQ(doc.revision(), 2u);
 }
 
 // Checks observers get one change set per commit, undo and redo, with the right lists.

@@ -21,11 +21,12 @@ inline curve::Curve cubic(std::size_t n, double offset = 0.0) {
   return curve::Curve(nurbs::NurbsCurve(nurbs::KnotVector::uniform_clamped(n, 3), std::move(points)));
 }
 
-/// Everything observable of a document except its file: entities (with labels,
-/// attributes, provenance, data), the revision and the next label.
+/// The state of a document: entities (with labels, attributes, provenance,
+/// data) and the revision — not the next label, which undo never takes back.
 inline Json observable(const Document& doc) {
   Json out = doc.to_json();
   out.erase("backend");
+  out.erase("next_label");
   return out;
 }
 

@@ -4,14 +4,16 @@
 // (or one undo / redo) and prints JSON; inputs are read and checked before
 // the file is opened, and a failed transaction rolls back, so a failing
 // subcommand leaves the file unchanged. Thin: every operation is an oli call.
+#include "commands/doc.hpp"
+
 #include <charconv>
 #include <memory>
 
-#include "commands/common.hpp"
 #include "hula/io/atomic_file.hpp"
 #include "hula/io/json_read.hpp"
 #include "hula/oli/document.hpp"
 #include "hula/oli/json_exchange.hpp"
+#include "hula/oli/study_run.hpp"
 
 namespace hula::cli {
 
@@ -207,6 +209,20 @@ int run_import(const Options& o) {
   return kExitOk;
 }
 
+int run_study(const Options& o) {
+  const Json study = io::json::parse_json_text(io::read_text_file(o.study), "study file");
+  const std::filesystem::path base = std::filesystem::path(o.study).parent_path();
+  oli::Document doc = oli::Document::open(o.file);
+  oli::StudyRunResult ran;
+  commit(doc, "run study", [&](oli::Edit& e) { ran = oli::run_study(e, study, base); });
+  Json out = ran.result;
+  out["study_label"] = ran.study.value;
+  out["result_labels"] = labels_json(ran.curves);
+  out["revision"] = doc.revision();
+  print_json(out);
+  return kExitOk;
+}
+
 int run_check(const Options& o) {
   const oli::CheckReport report = oli::Document::check_file(o.file);
   Json out = Json::object();
@@ -277,6 +293,10 @@ Command add_doc(CLI::App& app) {
   file(imp);
   imp->add_option("input", o->input, "Curve file or hula-document JSON")->required();
 
+  CLI::App* run = doc->add_subcommand("run", "Run a study file (values {\"entity\": L} name entities) and store it");
+  file(run);
+  run->add_option("study", o->study, "Study file (JSON)")->required();
+
   CLI::App* check = doc->add_subcommand("check", "Check a document: schema, every entity loads, undo log consistent");
   file(check);
 
@@ -296,6 +316,7 @@ Command add_doc(CLI::App& app) {
             if (history->parsed()) return run_history(*o);
             if (exp->parsed()) return run_export(*o);
             if (imp->parsed()) return run_import(*o);
+            if (run->parsed()) return run_study(*o);
             return run_check(*o);
           }};
 }

@@ -390,13 +390,15 @@ Outcome Document::transact(std::string_view name, const std::function<void(Edit&
     return out;
   }
 
-  const bool limit_hit =
-      !continuing && m.options.undo_limit && m.undo.size() + 1 > *m.options.undo_limit && !m.undo.empty();
+  // Steps over the undo limit (a document opened with a lower limit may hold several).
+  const std::size_t excess = !continuing && m.options.undo_limit && m.undo.size() + 1 > *m.options.undo_limit
+                                 ? m.undo.size() + 1 - *m.options.undo_limit
+                                 : 0;
   if (m.store) {
     try {
       store::Batch batch;
       if (!m.redo.empty()) batch.delete_steps_from = m.revision + 1;
-      if (limit_hit) batch.delete_steps_through = m.undo.front().revision;
+      if (excess > 0) batch.delete_steps_through = m.undo[excess - 1].revision;
       for (const Change& c : step.changes) batch.entities.emplace_back(c.label.value, encode(c.after));
       if (continuing)
         for (const Change& c : m.undo.back().changes)
@@ -418,7 +420,7 @@ Outcome Document::transact(std::string_view name, const std::function<void(Edit&
     m.undo.back() = std::move(step);
   } else {
     m.undo.push_back(std::move(step));
-    if (limit_hit) m.undo.pop_front();
+    m.undo.erase(m.undo.begin(), m.undo.begin() + static_cast<std::ptrdiff_t>(excess));
     m.revision += 1;
   }
   changes.revision = m.revision;

@@ -274,6 +274,9 @@ Store Store::create(const std::filesystem::path& path, const DocumentRow& row, b
       auto impl = std::make_unique<Impl>();
       impl->path = temp;
       impl->connect(SQLITE_OPEN_READWRITE);
+      // WAL from the start: the migration and the first row cost one sync at the final checkpoint.
+      impl->exec("PRAGMA journal_mode = WAL", "switch to WAL");
+      impl->exec("PRAGMA synchronous = NORMAL", "set synchronous");
       impl->migrate(0);
       sqlite3_stmt* s = impl->prepare(
           "INSERT INTO document (id, revision, next_label, backend, created, tool_version) "
@@ -291,7 +294,6 @@ Store Store::create(const std::filesystem::path& path, const DocumentRow& row, b
         throw;
       }
       sqlite3_finalize(s);
-      impl->exec("PRAGMA journal_mode = WAL", "switch to WAL");
     }
     if (exists) {
       // The old file's WAL and shared memory belong to it, not to the new file.
