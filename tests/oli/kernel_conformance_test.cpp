@@ -81,14 +81,14 @@ class KernelConformance : public ::testing::TestWithParam<std::string> {
 // native kernel's code and index
 TEST_P(KernelConformance, ConstructKeepsDataAndRefusesBadInput) {
   for (const auto& c : random_curves(11)) {
-    const auto made = kernel().construct(c.degree(), std::vector<double>(c.knots().values().begin(),
-                                                                         c.knots().values().end()),
-                                         std::vector<Vec3>(c.control_points().begin(), c.control_points().end()),
-                                         std::vector<double>(c.weights().begin(), c.weights().end()), 3);
+    const auto made =
+        kernel().construct(c.degree(), std::vector<double>(c.knots().values().begin(), c.knots().values().end()),
+                           std::vector<Vec3>(c.control_points().begin(), c.control_points().end()),
+                           std::vector<double>(c.weights().begin(), c.weights().end()), 3);
     EXPECT_EQ(made, c);
   }
-  HULA_EXPECT_ERROR(kernel().construct(2, {0, 0, 0, 0.7, 0.5, 1, 1, 1}, {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {2, 1, 0}, {3, 0, 0}},
-                                       {}, 3),
+  HULA_EXPECT_ERROR(kernel().construct(2, {0, 0, 0, 0.7, 0.5, 1, 1, 1},
+                                       {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {2, 1, 0}, {3, 0, 0}}, {}, 3),
                     Errc::InvalidKnots, "knots[4]");
   HULA_EXPECT_ERROR(kernel().construct(1, {0, 0, 1, 1}, {{0, 0, 0}, {1, 0, 0}}, {1.0, -1.0}, 3), Errc::InvalidWeight,
                     "weights[1]");

@@ -48,14 +48,14 @@ Handle(Geom_BSplineCurve) to_occt(const nurbs::NurbsCurve& curve) {
     }
     return new Geom_BSplineCurve(poles, knots, m, curve.degree());
   } catch (const Standard_Failure& f) {
-    throw Error(Errc::InvalidKnots,
-                std::string("Open CASCADE refuses the curve's knots: ") + f.DynamicType()->Name() + ": " +
-                    f.GetMessageString(),
-                {.field = "knots"});
+    throw Error(
+        Errc::InvalidKnots,
+        std::string("Open CASCADE refuses the curve's knots: ") + f.DynamicType()->Name() + ": " + f.GetMessageString(),
+        {.field = "knots"});
   }
 }
 
-nurbs::NurbsCurve from_occt(const Handle(Geom_BSplineCurve)& curve, int dimension) {
+nurbs::NurbsCurve from_occt(const Handle(Geom_BSplineCurve) & curve, int dimension) {
   Handle(Geom_BSplineCurve) c = curve;
   if (c->IsPeriodic()) {
     c = Handle(Geom_BSplineCurve)::DownCast(curve->Copy());

@@ -28,7 +28,7 @@ namespace hula::oli {
 /// does exactly by knot insertion).
 /// @param dimension 2 to return a planar curve when every pole has z = 0 exactly; else 3
 /// @throws hula::Error from the NurbsCurve constructor if OCCT's data are not a valid curve
-[[nodiscard]] nurbs::NurbsCurve from_occt(const Handle(Geom_BSplineCurve)& curve, int dimension = 3);
+[[nodiscard]] nurbs::NurbsCurve from_occt(const Handle(Geom_BSplineCurve) & curve, int dimension = 3);
 
 /// OCCT point or vector as a Vec3.
 [[nodiscard]] inline Vec3 to_vec3(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }

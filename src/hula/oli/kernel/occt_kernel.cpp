@@ -103,8 +103,8 @@ nurbs::NurbsCurve OcctKernel::elevate_degree(const nurbs::NurbsCurve& curve, int
   const int target = curve.degree() + times;
   if (target > nurbs::kMaxDegree)
     throw Error(Errc::InvalidDegree,
-                "degree " + std::to_string(curve.degree()) + " + " + std::to_string(times) + " exceeds kMaxDegree = " +
-                    std::to_string(nurbs::kMaxDegree),
+                "degree " + std::to_string(curve.degree()) + " + " + std::to_string(times) +
+                    " exceeds kMaxDegree = " + std::to_string(nurbs::kMaxDegree),
                 {.field = "times"});
   if (target > Geom_BSplineCurve::MaxDegree())
     throw Error(Errc::Unsupported,

@@ -16,14 +16,14 @@ void check_derivative_order(int order) {
 }
 
 void check_times(int times) {
-  if (times < 1) throw Error(Errc::InvalidArgument, "times = " + std::to_string(times) + " must be ≥ 1", {.field = "times"});
+  if (times < 1)
+    throw Error(Errc::InvalidArgument, "times = " + std::to_string(times) + " must be ≥ 1", {.field = "times"});
 }
 
 void check_interpolation(std::span<const Vec3> /*points*/, const KernelInterpolation& options) {
   if (options.start_tangent.has_value() != options.end_tangent.has_value()) {
     const char* missing = options.start_tangent ? "end_tangent" : "start_tangent";
-    throw Error(Errc::InvalidArgument,
-                std::string("give both end tangents or neither: ") + missing + " is missing",
+    throw Error(Errc::InvalidArgument, std::string("give both end tangents or neither: ") + missing + " is missing",
                 {.field = missing});
   }
 }
@@ -35,8 +35,8 @@ void check_parameter(const nurbs::NurbsCurve& curve, double t, const char* field
   const auto d = curve.domain();
   if (t < d.start || t > d.end)
     throw Error(Errc::OutOfDomain,
-                std::string(field) + " = " + format_number(t) + " is outside the curve domain [" + format_number(d.start) +
-                    ", " + format_number(d.end) + "]",
+                std::string(field) + " = " + format_number(t) + " is outside the curve domain [" +
+                    format_number(d.start) + ", " + format_number(d.end) + "]",
                 {.field = field});
 }
 
