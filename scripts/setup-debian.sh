@@ -6,7 +6,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake ninja-build pkg-config git
+  build-essential cmake ninja-build pkg-config git python3
   clang-format-14 clang-14 libclang-rt-14-dev
   libeigen3-dev libboost-dev libboost-math-dev libtbb-dev
   nlohmann-json3-dev libcli11-dev
@@ -14,6 +14,7 @@ packages=(
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
   libocct-data-exchange-dev libocct-ocaf-dev
   libpagmo-dev libboost-serialization-dev
+  libsqlite3-dev sqlite3
 )
 
 missing=()

@@ -125,6 +125,9 @@ struct Command {
 [[nodiscard]] Command add_match_curvature(CLI::App& app);
 /// `hula match-curvature-torsion`: curvature and torsion profiles as two objectives (NSGA-II).
 [[nodiscard]] Command add_match_curvature_torsion(CLI::App& app);
+/// `hula doc`: the curve document (new, add, list, show, set, remove, undo, redo, history, export, import, check).
+[[nodiscard]] Command add_doc(CLI::App& app);
+
 /// Runs the demo and prints its JSON.
 int run_demo();
 
