@@ -15,6 +15,7 @@ packages=(
   libocct-data-exchange-dev libocct-ocaf-dev
   libpagmo-dev libboost-serialization-dev
   libsqlite3-dev sqlite3
+  doxygen
 )
 
 missing=()

@@ -68,6 +68,12 @@ int main(int argc, char** argv) {
       hula::cli::add_match_curvature(app),
       hula::cli::add_match_curvature_torsion(app),
       hula::cli::add_doc(app),
+      hula::cli::add_edit(app),
+      hula::cli::add_approximate(app),
+      hula::cli::add_closest(app),
+      hula::cli::add_deviation(app),
+      hula::cli::add_continuity(app),
+      hula::cli::add_energy(app),
   };
   try {
     try {

@@ -16,8 +16,9 @@
 namespace hula::nurbs {
 namespace {
 
-// checks (issue 10 defect): this clamped cubic gave C(0) = P0 + 7.1e-15 through the span
-// polynomial; it must return P0 and Pn bit for bit, in the single and the batch evaluators.
+// checks (issue 10 defect): through the span polynomial this clamped cubic gave C(0.3) with
+// x = 0.10000000000000031 for P0.x = 0.1 (22 ulps off; the issue saw 7.1e-15 on another curve);
+// it must return P0 and Pn bit for bit, in the single and the batch evaluators.
 TEST(ExactEnds, ClampedCurveReturnsItsEndControlPointsBitForBit) {
   const std::vector<Vec3> P = {{0.1, 0.7, -0.3}, {1.3, 2.9, 0.7}, {2.2, -1.1, 0.4}, {3.7, 0.3, 2.9}, {4.1, 1.7, -0.6}};
   const NurbsCurve c(3, {0.3, 0.3, 0.3, 0.3, 0.77, 1.9, 1.9, 1.9, 1.9}, P);

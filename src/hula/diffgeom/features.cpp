@@ -279,7 +279,12 @@ std::vector<Feature> inflections(const law::Law& curve, std::string_view paramet
   const Vec3 n = options.frenet.plane_normal / norm(options.frenet.plane_normal);
   const law::Law r1 = law::derivative(r, parameter, 1);
   const law::Law g = law::dot(law::cross(r1, law::derivative(r, parameter, 2)), r.context().constant(n));
-  const std::vector<double> zeros = law::roots(g, parameter, domain.start, domain.end, roots);
+  // Every sign change of g: its roots and, since a curvature that changes sign through a jump (a
+  // join of two arcs turning opposite ways) is an inflection too, the sign changes without a root.
+  const law::RootReport found = law::find_roots(g, parameter, domain.start, domain.end, roots);
+  std::vector<double> zeros = found.roots;
+  zeros.insert(zeros.end(), found.unresolved.begin(), found.unresolved.end());
+  std::sort(zeros.begin(), zeros.end());
   const LawFrenet frenet(r, std::string(parameter), domain, options.frenet);
   // Keep the roots where g changes sign: compare g half-way to the neighbouring roots (or ends).
   const std::string name(parameter);

@@ -172,9 +172,11 @@ SingularityReport singularities(const Law& f, std::string_view parameter, double
     for (std::size_t i = 0; i < e.node().arity; ++i) stack.push_back(e.arg(i));
   }
   for (const Condition& c : conds) {
-    for (double t : roots(c.law, parameter, a, b, options.roots)) {
-      report.points.push_back({t, c.kind, short_print(c.source)});
-    }
+    // A condition that changes sign through a jump of its own (piecewise(sign(t − 1), …)) still
+    // switches there: its unresolved sign changes are points too.
+    const RootReport found = find_roots(c.law, parameter, a, b, options.roots);
+    for (double t : found.roots) report.points.push_back({t, c.kind, short_print(c.source)});
+    for (double t : found.unresolved) report.points.push_back({t, c.kind, short_print(c.source)});
   }
   std::sort(report.points.begin(), report.points.end(), [](const Singularity& x, const Singularity& y) {
     return x.t != y.t ? x.t < y.t : static_cast<int>(x.kind) < static_cast<int>(y.kind);
