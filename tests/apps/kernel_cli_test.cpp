@@ -67,7 +67,7 @@ struct Case {
         out((dir / "out.json").string()) {
     io::write_curve_file(in, curve);
   }
-  [[nodiscard]] NurbsCurve result() const { return io::read_curve_file(out).curve; }
+  [[nodiscard]] NurbsCurve result() const { return io::read_curve_file(out).nurbs(); }
 };
 
 // checks: `edit insert-knot` equals nurbs::insert_knot and leaves the curve unchanged (≤ 1e-12 × size).
@@ -139,7 +139,7 @@ TEST(KernelCli, SplitHalvesJoinWithTheCurvesContinuity) {
     const json j = run_ok({"edit", "split", c.in, "--at", io::Json(t).dump(), "-o", c.out, "--second", second});
     ASSERT_EQ(j["curves"].size(), 2U);
     const NurbsCurve a = c.result();
-    const NurbsCurve b = io::read_curve_file(second).curve;
+    const NurbsCurve b = io::read_curve_file(second).nurbs();
     EXPECT_EQ(a.domain().end, t);
     EXPECT_EQ(b.domain().start, t);
     EXPECT_LE(testing::max_deviation(a, c.curve), 1e-12 * c.curve.model_size()) << seed;
@@ -169,7 +169,7 @@ TEST(KernelCli, ApproximateMeetsToleranceWithFewestControlPoints) {
     io::write_file_atomically(pfile, arr.dump());
     const double tol = 0.05;
     const json j = run_ok({"approximate", "--points", pfile, "--tolerance", "0.05", "-o", out});
-    const NurbsCurve c = io::read_curve_file(out).curve;
+    const NurbsCurve c = io::read_curve_file(out).nurbs();
     const nurbs::ToleranceFitResult lib = nurbs::approximate_to_tolerance(pts, tol);
     EXPECT_EQ(c, lib.fit.curve) << seed;
     for (std::size_t i = 0; i < pts.size(); ++i) EXPECT_LE(distance(c.evaluate(lib.fit.parameters[i]), pts[i]), tol);

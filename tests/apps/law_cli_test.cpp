@@ -150,7 +150,7 @@ TEST(LawCli, ToNurbsWritesCurveWithinTolerance) {
   const json j = output(
       law({"vec(2*cos(t), 2*sin(t), 0.5*t)", "--to-nurbs", "0,6.283185307179586", "--tolerance", "1e-7", "-o", out}));
   EXPECT_LE(j["nurbs"]["max_deviation"].get<double>(), 1e-7);
-  const hula::nurbs::NurbsCurve c = hula::io::read_curve_file(out).curve;
+  const hula::nurbs::NurbsCurve c = hula::io::read_curve_file(out).nurbs();
   double worst = 0.0;
   for (int i = 0; i <= 2000; ++i) {
     const double t = 6.283185307179586 * i / 2000.0;

@@ -18,8 +18,8 @@ struct ClosestArgs {
 };
 
 int run_closest(const ClosestArgs& a) {
-  const io::CurveFile file = io::read_curve_file(a.curve);
-  const int dim = file.curve.dimension();
+  const curve::Curve file = io::read_curve_file(a.curve);
+  const int dim = file.nurbs().dimension();
   Json results = Json::array();
   for (std::size_t i = 0; i < a.points.size(); ++i) {
     const std::vector<double> p = parse_number_list(a.points[i], "point");
@@ -27,7 +27,7 @@ int run_closest(const ClosestArgs& a) {
       throw Error(Errc::InvalidArgument, "--point " + a.points[i] + ": needs 2 or 3 numbers",
                   ErrorWhere{.field = "point", .index = i});
     const Vec3 q{p[0], p[1], p.size() == 3 ? p[2] : 0.0};
-    const nurbs::ClosestPointResult r = nurbs::closest_point(file.curve, q);
+    const nurbs::ClosestPointResult r = nurbs::closest_point(file.nurbs(), q);
     Json j = Json::object();
     j["point"] = vec_to_json(q, static_cast<int>(p.size()));
     j["t"] = r.t;
@@ -37,7 +37,7 @@ int run_closest(const ClosestArgs& a) {
   }
   Json doc = Json::object();
   doc["curve"] = a.curve;
-  if (file.law) doc["law_stand_in_deviation"] = file.law->approximation_deviation;
+  if (file.law() != nullptr) doc["law_stand_in_deviation"] = file.approximation_deviation();
   doc["results"] = std::move(results);
   print_json(doc);
   return kExitOk;

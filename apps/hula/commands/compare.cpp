@@ -27,8 +27,8 @@ struct TwoCurves {
 Json axes(const Vec3& v) { return Json::array({v.x, v.y, v.z}); }
 
 int run_deviation(const TwoCurves& args) {
-  const io::CurveFile a = io::read_curve_file(args.a);
-  const io::CurveFile b = io::read_curve_file(args.b);
+  const curve::Curve a = io::read_curve_file(args.a);
+  const curve::Curve b = io::read_curve_file(args.b);
   nurbs::DeviationOptions o;
   o.samples = args.samples;
   if (args.mode == "parameter")
@@ -38,7 +38,7 @@ int run_deviation(const TwoCurves& args) {
   else
     throw Error(Errc::InvalidArgument, "--mode " + args.mode + ": expected parameter or closest",
                 ErrorWhere{.field = "mode"});
-  const nurbs::DeviationResult r = nurbs::deviation(a.curve, b.curve, o);
+  const nurbs::DeviationResult r = nurbs::deviation(a.nurbs(), b.nurbs(), o);
   Json doc = Json::object();
   doc["a"] = args.a;
   doc["b"] = args.b;
@@ -59,10 +59,10 @@ Json number_or_null(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr
 Json order_name(char prefix, int k) { return k < 0 ? Json(nullptr) : Json(std::string(1, prefix) + std::to_string(k)); }
 
 int run_continuity(const TwoCurves& args) {
-  const io::CurveFile a = io::read_curve_file(args.a);
-  const io::CurveFile b = io::read_curve_file(args.b);
-  const diffgeom::Continuity c = diffgeom::join_continuity(a.curve, b.curve);
-  const int dim = std::max(a.curve.dimension(), b.curve.dimension());
+  const curve::Curve a = io::read_curve_file(args.a);
+  const curve::Curve b = io::read_curve_file(args.b);
+  const diffgeom::Continuity c = diffgeom::join_continuity(a.nurbs(), b.nurbs());
+  const int dim = std::max(a.nurbs().dimension(), b.nurbs().dimension());
   Json left = Json::array(), right = Json::array();
   for (std::size_t k = 0; k < 4; ++k) {
     left.push_back(vec_to_json(c.left[k], dim));

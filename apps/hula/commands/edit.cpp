@@ -28,12 +28,12 @@ struct EditArgs {
 
 // The curve of a file; edits need the NURBS itself, not the stand-in of a law curve.
 nurbs::NurbsCurve read_nurbs(const std::string& path) {
-  io::CurveFile file = io::read_curve_file(path);
-  if (file.law)
+  curve::Curve file = io::read_curve_file(path);
+  if (file.law() != nullptr)
     throw Error(Errc::InvalidArgument,
                 path + " is a law curve: edit its NURBS form (hula law EXPR --to-nurbs a,b -o FILE) instead",
                 ErrorWhere{.field = "curve"});
-  return std::move(file.curve);
+  return file.nurbs();
 }
 
 Json summary(const std::string& path, const nurbs::NurbsCurve& c) {

@@ -24,11 +24,11 @@ Json energy_json(const diffgeom::EnergyResult& r) {
 }
 
 int run_energy(const std::string& path) {
-  const io::CurveFile file = io::read_curve_file(path);
+  const curve::Curve file = io::read_curve_file(path);
   Json doc = Json::object();
   doc["curve"] = path;
-  doc["bending"] = energy_json(diffgeom::bending_energy(file.curve));
-  doc["curvature_variation"] = energy_json(diffgeom::curvature_variation_energy(file.curve));
+  doc["bending"] = energy_json(diffgeom::bending_energy(file.nurbs()));
+  doc["curvature_variation"] = energy_json(diffgeom::curvature_variation_energy(file.nurbs()));
   print_json(doc);
   return kExitOk;
 }

@@ -9,6 +9,9 @@
 #include "hula/curve/curve.hpp"
 #include "hula/io/json_curve.hpp"
 #include "hula/oli/detail/entity_codec.hpp"
+#include "hula/io/match_study_file.hpp"
+#include "hula/io/path_resolver.hpp"
+#include "hula/io/study_file.hpp"
 #include "hula/studies/match_study.hpp"
 
 #ifndef HULA_VERSION
@@ -66,12 +69,13 @@ Ran run_once(const Json& setup, const Document& document, const std::filesystem:
   Ran out;
   out.kind = kind;
   if (kind == "match-curvature") {
-    const studies::StudyDocument doc = studies::parse_study_json(resolved.dump(), kind);
-    const studies::MatchStudy study = studies::match_study_from_json(doc, base);
-    const studies::CurvatureMatch match(study.setup);
-    const studies::MatchResult result = studies::run_curvature_match(match, study, true);
-    out.run.seed = study.header.seed;
-    out.run.result = studies::match_result_to_json(match, study, result);
+    // Files a study names stay inside the document's folder (io::confined_to), as on a server.
+    const io::StudyDocument doc = io::parse_study_json(resolved.dump(), kind);
+    const io::MatchStudyFile file = io::match_study_from_json(doc, io::confined_to(base));
+    const studies::CurvatureMatch match(file.study.setup);
+    const studies::MatchResult result = studies::run_curvature_match(match, file.study, true);
+    out.run.seed = file.study.header.seed;
+    out.run.result = io::match_result_to_json(match, file, result);
     std::ostringstream log;
     result.log.write_json(log);
     out.run.log = Json::parse(log.str());
