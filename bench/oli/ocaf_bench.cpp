@@ -8,12 +8,12 @@
 // same followed by Undo. In memory (OCAF's transactions have no disk side;
 // saving is a whole-document write, measured separately for 100 curves).
 // Results beside the Oli figures in docs/benchmarks.md.
+#include <benchmark/benchmark.h>
+
 #include <TDF_Label.hxx>
 #include <TDataStd_Integer.hxx>
 #include <TDataStd_RealArray.hxx>
 #include <TDocStd_Document.hxx>
-#include <benchmark/benchmark.h>
-
 #include <vector>
 
 namespace {

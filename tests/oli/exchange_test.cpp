@@ -10,6 +10,10 @@
 // reference to a control point) becomes Errc::HelperFailure naming the signal
 // and the file while this process carries on; a hanging helper is killed at
 // the time limit and the memory limit reaches the helper as RLIMIT_AS.
+#include "hula/oli/exchange/exchange.hpp"
+
+#include <gtest/gtest.h>
+
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
@@ -31,28 +35,25 @@
 #include <StepData_Protocol.hxx>
 #include <StepData_StepModel.hxx>
 #include <StepData_StepWriter.hxx>
-#include <XSControl_WorkSession.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Edge.hxx>
-#include <gp_Circ.hxx>
-#include <gp_Elips.hxx>
-#include <gtest/gtest.h>
-
+#include <XSControl_WorkSession.hxx>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <gp_Circ.hxx>
+#include <gp_Elips.hxx>
 #include <string>
 #include <vector>
 
 #include "hula/core/rng.hpp"
 #include "hula/io/atomic_file.hpp"
 #include "hula/io/json_curve.hpp"
-#include "hula/oli/exchange/exchange.hpp"
 #include "hula/oli/kernel/occt_convert.hpp"
 #include "hula/testing/curve_generators.hpp"
 #include "hula/testing/expect_error.hpp"
@@ -103,7 +104,7 @@ std::vector<Handle(Geom_Curve)> read_back_curves(Reader& reader) {
 }
 
 // max |c(t) - occt(t)| / model size over samples of c's domain.
-double deviation_from(const NurbsCurve& c, const Handle(Geom_Curve)& occt) {
+double deviation_from(const NurbsCurve& c, const Handle(Geom_Curve) & occt) {
   const auto d = c.domain();
   double worst = 0.0;
   for (int i = 0; i <= 100; ++i) {
@@ -115,7 +116,7 @@ double deviation_from(const NurbsCurve& c, const Handle(Geom_Curve)& occt) {
 
 // max distance of c's samples from the OCCT curve (by projection) / model size: for conics, whose
 // NURBS form has another parameterisation.
-double distance_from(const NurbsCurve& c, const Handle(Geom_Curve)& occt) {
+double distance_from(const NurbsCurve& c, const Handle(Geom_Curve) & occt) {
   const auto d = c.domain();
   double worst = 0.0;
   for (int i = 0; i <= 50; ++i) {
@@ -187,12 +188,12 @@ TEST_F(Exchange, IgesExportReadBackByOcctEqualsTheCurves) {
 // checks a law curve exported through its NURBS approximation carries the approximation's
 // deviation (io's law → NURBS) into the IGES resolution
 TEST_F(Exchange, LawCurveExportCarriesItsApproximationDeviation) {
-  const auto file = io::parse_curve_json(
+  const curve::Curve helix = io::parse_curve_json(
       R"json({"kind": "law", "expression": "vec(2*cos(t), 2*sin(t), 0.5*t)", "parameter": "t", "domain": [0, 3]})json");
-  ASSERT_TRUE(file.law.has_value());
-  const double deviation = file.law->approximation_deviation;
+  const double deviation = helix.approximation_deviation();
   EXPECT_GT(deviation, 0.0);
-  const std::vector<ExportCurve> curves{{"helix", file.curve, deviation}};
+  const std::vector<ExportCurve> curves{export_curve("helix", helix)};
+  EXPECT_EQ(curves[0].deviation, deviation);
   const auto report = export_curves(dir / "helix.iges", curves, ExchangeFormat::Iges);
   EXPECT_EQ(report.max_deviation, deviation);
   IGESControl_Reader reader;
@@ -208,14 +209,13 @@ TEST_F(Exchange, FilesWrittenByOcctImport) {
   const auto curves = random_export_curves(23, 6);
   std::vector<Handle(Geom_Curve)> originals;
   for (const auto& c : curves) originals.push_back(to_occt(c.curve));
-  originals.push_back(GC_MakeArcOfCircle(gp_Circ(gp_Ax2(gp_Pnt(1, 2, 3), gp_Dir(0, 0.6, 0.8)), 2.5), 0.3, 2.0,
-                                         Standard_True)
-                          .Value());
+  originals.push_back(
+      GC_MakeArcOfCircle(gp_Circ(gp_Ax2(gp_Pnt(1, 2, 3), gp_Dir(0, 0.6, 0.8)), 2.5), 0.3, 2.0, Standard_True).Value());
   // The ellipse lies in the XY plane: an elliptic arc in another plane, written by OCCT 7.6's IGES
   // writer (entity 104 with a 124 transformation), does not read back as the same arc (measured).
-  originals.push_back(GC_MakeArcOfEllipse(gp_Elips(gp_Ax2(gp_Pnt(0, 1, 0), gp_Dir(0, 0, 1)), 3.0, 1.5), 0.2, 4.0,
-                                          Standard_True)
-                          .Value());
+  originals.push_back(
+      GC_MakeArcOfEllipse(gp_Elips(gp_Ax2(gp_Pnt(0, 1, 0), gp_Dir(0, 0, 1)), 3.0, 1.5), 0.2, 4.0, Standard_True)
+          .Value());
   originals.push_back(GC_MakeSegment(gp_Pnt(-1, 0, 2), gp_Pnt(4, 5, -1)).Value());
   const std::vector<std::string> expected_types{"b-spline", "b-spline", "b-spline", "b-spline", "b-spline",
                                                 "b-spline", "circle",   "ellipse",  "line"};
@@ -256,8 +256,8 @@ TEST_F(Exchange, FilesWrittenByOcctImport) {
       EXPECT_EQ(got.type, expected_types[i]) << name << " curve " << i;
       // B-splines keep their parameterisation (compared at equal parameters); conics become
       // rational quadratics with another one (compared by projection on the original).
-      const double error = got.type == "b-spline" ? deviation_from(got.curve, originals[i])
-                                                  : distance_from(got.curve, originals[i]);
+      const double error =
+          got.type == "b-spline" ? deviation_from(got.curve, originals[i]) : distance_from(got.curve, originals[i]);
       EXPECT_LE(error, kRel) << name << " curve " << i;
     }
   }
@@ -401,9 +401,9 @@ TEST_F(Exchange, FailedExportLeavesTheOldFile) {
   HULA_EXPECT_ERROR((void)export_curves(dir / "keep.step", curves, ExchangeFormat::StepAp214), Errc::Unsupported,
                     "degree 30");
   EXPECT_EQ(read_text(dir / "keep.step"), "old content");
-  HULA_EXPECT_ERROR((void)export_curves(dir / "no-such-dir" / "x.step", random_export_curves(1, 1),
-                                        ExchangeFormat::StepAp214),
-                    Errc::IoError, "x.step");
+  HULA_EXPECT_ERROR(
+      (void)export_curves(dir / "no-such-dir" / "x.step", random_export_curves(1, 1), ExchangeFormat::StepAp214),
+      Errc::IoError, "x.step");
   EXPECT_EQ(dir.names(), (std::vector<std::string>{"keep.step"}));
 }
 

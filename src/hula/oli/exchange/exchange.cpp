@@ -80,21 +80,21 @@ io::Json exchange(const detail::Request& request, const fs::path& file, std::str
                       " s and was killed",
                   where);
     case detail::HelperOutcome::Kind::Signalled:
-      throw Error(Errc::HelperFailure,
-                  subject + ": the exchange helper (Open CASCADE) crashed with signal " +
-                      signal_text(outcome.status) + (outcome.status == SIGKILL || outcome.status == SIGSEGV
-                                                         ? " (a reader fault or the memory limit of " +
-                                                               std::to_string(options.memory_limit >> 20) + " MiB)"
-                                                         : std::string()),
-                  where);
+      throw Error(
+          Errc::HelperFailure,
+          subject + ": the exchange helper (Open CASCADE) crashed with signal " + signal_text(outcome.status) +
+              (outcome.status == SIGKILL || outcome.status == SIGSEGV
+                   ? " (a reader fault or the memory limit of " + std::to_string(options.memory_limit >> 20) + " MiB)"
+                   : std::string()),
+          where);
     case detail::HelperOutcome::Kind::Exited:
       break;
   }
   if (outcome.status != 0 || !fs::exists(answer_path)) {
     std::string log = outcome.log;
     while (!log.empty() && std::isspace(static_cast<unsigned char>(log.back()))) log.pop_back();
-    const bool out_of_memory = log.find("std::bad_alloc") != std::string::npos ||
-                               log.find("Standard_OutOfMemory") != std::string::npos;
+    const bool out_of_memory =
+        log.find("std::bad_alloc") != std::string::npos || log.find("Standard_OutOfMemory") != std::string::npos;
     throw Error(Errc::HelperFailure,
                 subject + ": the exchange helper '" + helper.string() + "' exited with status " +
                     std::to_string(outcome.status) + " without answering" +
@@ -145,6 +145,10 @@ ExchangeFormat exchange_format_for_path(const std::filesystem::path& path) {
               {.field = "path"});
 }
 
+ExportCurve export_curve(std::string name, const curve::Curve& curve) {
+  return {std::move(name), curve.nurbs(), curve.approximation_deviation()};
+}
+
 void ExchangeOptions::validate() const {
   if (!(time_limit > 0.0) || !std::isfinite(time_limit))
     throw Error(Errc::InvalidOption, "time_limit = " + format_number(time_limit) + " must be a finite number > 0",
@@ -169,8 +173,7 @@ std::filesystem::path default_exchange_helper() {
 ExportReport export_curves(const std::filesystem::path& path, std::span<const ExportCurve> curves,
                            ExchangeFormat format, const ExchangeOptions& options) {
   if (curves.empty())
-    throw Error(Errc::InvalidArgument, "nothing to export to '" + path.string() + "': no curves",
-                {.field = "curves"});
+    throw Error(Errc::InvalidArgument, "nothing to export to '" + path.string() + "': no curves", {.field = "curves"});
   ExportReport report{fs::absolute(path), format, curves.size(), 0.0};
   for (std::size_t i = 0; i < curves.size(); ++i) {
     const double d = curves[i].deviation;

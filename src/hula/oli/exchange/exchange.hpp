@@ -32,6 +32,7 @@
 #include <string_view>
 #include <vector>
 
+#include "hula/curve/curve.hpp"
 #include "hula/nurbs/nurbs_curve.hpp"
 
 namespace hula::oli {
@@ -64,6 +65,10 @@ struct ExportCurve {
   double deviation = 0.0;
 };
 
+/// The export item of a curve value: its NURBS (for a law or natural-equation curve, the NURBS
+/// approximation) with the approximation's maximum deviation (curve::Curve::approximation_deviation).
+[[nodiscard]] ExportCurve export_curve(std::string name, const curve::Curve& curve);
+
 /// Limits and location of the helper process.
 struct ExchangeOptions {
   /// The helper executable. Empty: default_exchange_helper().
@@ -79,10 +84,10 @@ struct ExchangeOptions {
 
 /// What an export wrote.
 struct ExportReport {
-  std::filesystem::path path;      ///< the file written
-  ExchangeFormat format{};         ///< its format
-  std::size_t curves = 0;          ///< number of curves written
-  double max_deviation = 0.0;      ///< the largest ExportCurve::deviation, written into the metadata
+  std::filesystem::path path;  ///< the file written
+  ExchangeFormat format{};     ///< its format
+  std::size_t curves = 0;      ///< number of curves written
+  double max_deviation = 0.0;  ///< the largest ExportCurve::deviation, written into the metadata
 };
 
 /// One curve read from a file.

@@ -23,8 +23,8 @@ int main(int argc, char** argv) {
   using namespace hula;
   io::Json answer;
   try {
-    const auto request = oli::detail::request_from_json(
-        io::json::parse_json_text(io::read_text_file(argv[1]), "exchange request"));
+    const auto request =
+        oli::detail::request_from_json(io::json::parse_json_text(io::read_text_file(argv[1]), "exchange request"));
     if (const auto* e = std::get_if<oli::detail::ExportRequest>(&request))
       answer = oli::detail::export_answer_to_json(oli::detail::write_exchange_file(*e));
     else
@@ -35,7 +35,8 @@ int main(int argc, char** argv) {
   } catch (const std::bad_alloc&) {
     answer = io::error_to_json(Error(Errc::HelperFailure, "out of memory (std::bad_alloc)", {.field = "path"}));
   } catch (const std::exception& e) {
-    answer = io::error_to_json(Error(Errc::HelperFailure, std::string("internal error: ") + e.what(), {.field = "path"}));
+    answer =
+        io::error_to_json(Error(Errc::HelperFailure, std::string("internal error: ") + e.what(), {.field = "path"}));
   }
   try {
     io::write_file_atomically(argv[2], answer.dump());

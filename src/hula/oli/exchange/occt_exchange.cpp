@@ -11,6 +11,8 @@
 // transferred and each distinct edge's 3-D curve becomes a NURBS.
 #include "hula/oli/exchange/occt_exchange.hpp"
 
+#include <unistd.h>
+
 #include <APIHeaderSection_MakeHeader.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRep_Builder.hxx>
@@ -59,7 +61,6 @@
 #include <cstdio>
 #include <fstream>
 #include <string>
-#include <unistd.h>
 
 #include "hula/core/error.hpp"
 #include "hula/oli/kernel/occt_convert.hpp"
@@ -80,13 +81,15 @@ double rounded_up(double deviation) {
 
 // The first failure OCCT recorded while reading or transferring the file ("entity #12:
 // Unresolved reference"), or empty. IGES entities are named by their directory-entry line.
-std::string first_failure(const Handle(XSControl_WorkSession)& session, bool iges) {
+std::string first_failure(const Handle(XSControl_WorkSession) & session, bool iges) {
   const Interface_CheckIterator checks = session->ModelCheckList(Standard_True);
   for (checks.Start(); checks.More(); checks.Next()) {
     const Handle(Interface_Check)& check = checks.Value();
     if (!check->HasFailed()) continue;
     const int n = checks.Number();
-    const std::string where = n <= 0 ? std::string("the file") : iges ? "DE " + std::to_string(2 * n - 1) : "entity #" + std::to_string(n);
+    const std::string where = n <= 0 ? std::string("the file")
+                              : iges ? "DE " + std::to_string(2 * n - 1)
+                                     : "entity #" + std::to_string(n);
     return where + ": " + check->CFail(1, Standard_True);
   }
   return {};
@@ -189,7 +192,8 @@ void write_iges(const ExportRequest& r, const fs::path& temporary, double max_de
   translator.SetModel(model);
   for (const auto& c : r.curves) {
     const auto occt = to_occt(c.curve);
-    const Handle(IGESData_IGESEntity) entity = translator.TransferCurve(occt, occt->FirstParameter(), occt->LastParameter());
+    const Handle(IGESData_IGESEntity) entity =
+        translator.TransferCurve(occt, occt->FirstParameter(), occt->LastParameter());
     if (entity.IsNull()) write_failed(r.path, "the IGES translator refused curve '" + c.name + "'");
     if (!c.name.empty()) {
       // The directory-entry label holds 8 characters; the Name property holds the whole name.
@@ -209,7 +213,7 @@ void write_iges(const ExportRequest& r, const fs::path& temporary, double max_de
 }
 
 // The curve types imported, by the basis of a trimmed curve; empty for any other geometry.
-std::string curve_type(const Handle(Geom_Curve)& curve) {
+std::string curve_type(const Handle(Geom_Curve) & curve) {
   Handle(Geom_Curve) c = curve;
   while (const auto trimmed = Handle(Geom_TrimmedCurve)::DownCast(c)) c = trimmed->BasisCurve();
   if (c->IsKind(STANDARD_TYPE(Geom_BSplineCurve))) return "b-spline";
@@ -224,8 +228,8 @@ std::string curve_type(const Handle(Geom_Curve)& curve) {
 
 // The name a STEP file gives the entity an edge came from (itself, or the curve of an edge or
 // the basis of a trimmed curve when those are unnamed).
-std::string step_name(const Handle(Standard_Transient)& entity) {
-  auto name_of = [](const Handle(Standard_Transient)& e) -> std::string {
+std::string step_name(const Handle(Standard_Transient) & entity) {
+  auto name_of = [](const Handle(Standard_Transient) & e) -> std::string {
     const auto item = Handle(StepRepr_RepresentationItem)::DownCast(e);
     return item.IsNull() || item->Name().IsNull() ? std::string() : std::string(item->Name()->ToCString());
   };
@@ -286,8 +290,8 @@ ImportReport read_step(const fs::path& path) {
     // to their curve entity directly).
     const Handle(Standard_Transient) entity = transfer->EntityFromShapeResult(edge, -1);
     const int number = entity.IsNull() ? 0 : model->Number(entity);
-    report.curves.push_back(
-        edge_curve(edge, entity.IsNull() ? std::string() : step_name(entity), number > 0 ? "#" + std::to_string(number) : "", type));
+    report.curves.push_back(edge_curve(edge, entity.IsNull() ? std::string() : step_name(entity),
+                                       number > 0 ? "#" + std::to_string(number) : "", type));
   }
   return report;
 }
@@ -348,7 +352,8 @@ ExportReport write_exchange_file(const ExportRequest& request) {
   } catch (const Standard_Failure& f) {
     std::error_code ec;
     fs::remove(temporary, ec);
-    write_failed(request.path, std::string("Open CASCADE raised ") + f.DynamicType()->Name() + ": " + f.GetMessageString());
+    write_failed(request.path,
+                 std::string("Open CASCADE raised ") + f.DynamicType()->Name() + ": " + f.GetMessageString());
   } catch (...) {
     std::error_code ec;
     fs::remove(temporary, ec);

@@ -34,8 +34,8 @@ std::string tail_of(const std::filesystem::path& path, std::size_t limit) {
 
 }  // namespace
 
-HelperOutcome run_helper(const std::filesystem::path& program, const std::vector<std::string>& args,
-                         double time_limit, std::size_t memory_limit, const std::filesystem::path& log_path) {
+HelperOutcome run_helper(const std::filesystem::path& program, const std::vector<std::string>& args, double time_limit,
+                         std::size_t memory_limit, const std::filesystem::path& log_path) {
   // Everything the child needs is prepared before fork: after fork only async-signal-safe calls.
   const std::string program_text = program.string();
   std::vector<std::string> argv_text{program_text};
@@ -45,7 +45,8 @@ HelperOutcome run_helper(const std::filesystem::path& program, const std::vector
   argv.push_back(nullptr);
   const int log_fd = ::open(log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0600);
   if (log_fd < 0)
-    throw Error(Errc::HelperFailure, "cannot create the helper log '" + log_path.string() + "': " + std::strerror(errno),
+    throw Error(Errc::HelperFailure,
+                "cannot create the helper log '" + log_path.string() + "': " + std::strerror(errno),
                 {.field = "helper"});
   const rlimit as_limit{static_cast<rlim_t>(memory_limit), static_cast<rlim_t>(memory_limit)};
   const rlimit no_core{0, 0};
