@@ -12,6 +12,11 @@
 namespace hula::server {
 namespace {
 
+// Waits until a job's event log is closed (its final event published).
+void wait_finished(const Job& job) {
+  while (!job.events()->next(job.events()->size(), [] {}).closed) std::this_thread::yield();
+}
+
 // checks events arrive in order as SSE frames and a waiting subscriber is woken exactly once
 TEST(EventLog, BatchesInOrderAndWakesOnce) {
   EventLog log;
@@ -45,12 +50,7 @@ TEST(JobPool, RunsWorkAndPublishes) {
     c.publish(Json{{"generation", 0}});
     return JobOutcome{Json{{"value", 42}}, Json::object(), false};
   });
-  std::atomic<bool> done{false};
-  while (!done) {
-    const EventLog::Batch b = job->events()->next(0, [] {});
-    done = b.closed;
-    std::this_thread::yield();
-  }
+  wait_finished(*job);
   EXPECT_EQ(job->state(), JobState::Done);
   EXPECT_EQ(job->to_json()["result"]["value"], 42);
   EXPECT_EQ(job->events()->size(), 2u);

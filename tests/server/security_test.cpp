@@ -50,7 +50,8 @@ TEST(Security, RefusalsCarryTheirStatus) {
   const SecurityPolicy p = policy();
   RequestHead h = head("/api/jobs/1");
   EXPECT_EQ(check_request(h, p)->status(), 401u);
-  h.authorization = "Bearer " + p.token;
+  const std::string bearer = "Bearer " + p.token;
+  h.authorization = bearer;
   EXPECT_FALSE(check_request(h, p));
   h.host = "evil.example";
   EXPECT_EQ(check_request(h, p)->status(), 403u);
@@ -100,7 +101,8 @@ TEST(Security, DocumentNamesArePlainFileNames) {
   EXPECT_EQ(check_request(head("/api/documents/..%2Fx.hula"), policy())->status(), 401u);  // token first
   SecurityPolicy p = policy();
   RequestHead h = head("/api/documents/..%2Fx.hula/entities");
-  h.authorization = "Bearer " + p.token;
+  const std::string bearer = "Bearer " + p.token;
+  h.authorization = bearer;
   EXPECT_EQ(check_request(h, p)->status(), 400u);
 }
 

@@ -2,11 +2,22 @@
 // The bounded job pool (jobs.hpp).
 #include "hula/server/jobs.hpp"
 
+#include <sys/resource.h>
+#include <unistd.h>
+
 #include <exception>
 
 #include "hula/io/error_json.hpp"
 
 namespace hula::server {
+
+namespace {
+
+// Job threads run at a lower scheduling priority (nice +10 on Linux, per thread) than the HTTP
+// threads, so interrogation and drag requests are served first when jobs keep every core busy.
+constexpr int kJobNice = 10;
+
+}  // namespace
 
 std::string_view job_state_name(JobState state) noexcept {
   switch (state) {
@@ -108,6 +119,8 @@ void JobPool::finish(Job& job, JobState state) {
 }
 
 void JobPool::worker() {
+  // Best effort: a failure (no permission to change it) leaves the normal priority.
+  (void)::setpriority(PRIO_PROCESS, static_cast<id_t>(::gettid()), kJobNice);
   while (true) {
     std::shared_ptr<Job> job;
     {
