@@ -91,7 +91,7 @@ TEST(JobPool, ErrorsMakeFailedJobs) {
   JobPool pool({.workers = 1});
   const auto job =
       pool.submit("fail", [](JobContext&) -> JobOutcome { throw Error(Errc::NumericalFailure, "no finite value"); });
-  pool.shutdown();
+  wait_finished(*job);
   EXPECT_EQ(job->state(), JobState::Failed);
   EXPECT_EQ(job->to_json()["error"]["code"], "NumericalFailure");
 }
