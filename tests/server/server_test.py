@@ -7,6 +7,7 @@ with jsonschema, and SSE streams are parsed event by event.
 Run by ctest (label `server`): python3 server_test.py HULA_BINARY [unittest args].
 """
 import json
+import math
 import os
 import resource
 import signal
@@ -502,6 +503,138 @@ class DocsTest(unittest.TestCase):
         self.assertIn("event: done", out)
         self.assertIn("done MaxGenerations", out)
         self.assertTrue(out.rstrip().endswith("401"), out)
+
+
+CURVE50 = {"kind": "interpolated", "points": [[i, 3 * math.sin(i / 5.0), 0.5 * i] for i in range(50)]}
+
+
+class DocumentTest(unittest.TestCase):
+    """Documents, entities, undo/redo, history, analysis and document events."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.server = Server(HULA, args=["--jobs", "1"])
+        cls.api = OpenApi(json.loads(cls.server.request("GET", "/api/openapi.json")[2]))
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.server.stop()
+
+    def call(self, method, path, body=None, expect=200, **kw):
+        status, headers, data = self.server.request(method, path, body=body, **kw)
+        self.assertEqual(status, expect, data)
+        self.api.validate(method, path, status, data, headers.get("content-type", ""))
+        return json.loads(data) if data else None
+
+    def new_document(self, name):
+        return self.call("POST", "/api/documents", {"name": name}, expect=201)
+
+    # checks create, list, get, conflict, missing and trash of documents
+    def test_document_lifecycle(self):
+        d = self.new_document("life.hula")
+        self.assertEqual((d["name"], d["revision"], d["entities"]), ("life.hula", 0, []))
+        self.assertIn({"name": "life.hula", "open": True}, self.call("GET", "/api/documents")["documents"])
+        self.call("POST", "/api/documents", {"name": "life.hula"}, expect=409)
+        self.call("GET", "/api/documents/missing.hula", expect=404)
+        self.call("POST", "/api/documents", {"name": "../up.hula"}, expect=400)
+        gone = self.call("DELETE", "/api/documents/life.hula")
+        self.assertTrue(os.path.exists(os.path.join(self.server.workspace, ".trash", gone["trash"])))
+        self.assertFalse(os.path.exists(os.path.join(self.server.workspace, "life.hula")))
+
+    # checks add, get, patch move (continue folds into one undo step), undo, redo, history and delete
+    def test_entities_undo_redo(self):
+        self.new_document("edit.hula")
+        base = "/api/documents/edit.hula"
+        added = self.call("POST", base + "/entities", {"curve": CURVE50, "name": "spine"}, expect=201)
+        label = added["label"]
+        self.assertEqual(added["changes"]["added"], [label])
+        e = self.call("GET", f"{base}/entities/{label}")
+        self.assertEqual(e["attributes"]["name"], "spine")
+        r1 = self.call("PATCH", f"{base}/entities/{label}", {"move": [{"index": 3, "to": [3, 9, 1]}]})
+        r2 = self.call("PATCH", f"{base}/entities/{label}", {"move": [{"index": 3, "to": [3, 10, 1]}], "continue": True})
+        self.assertEqual(r2["revision"], r1["revision"])
+        self.assertEqual(self.call("GET", f"{base}/entities/{label}")["points"][3], [3, 10, 1])
+        history = self.call("GET", base + "/history")["history"]
+        self.assertEqual([h["name"] for h in history], ["add curve", "move points"])
+        self.call("POST", base + "/undo")
+        self.assertEqual(self.call("GET", f"{base}/entities/{label}")["points"][3][1], CURVE50["points"][3][1])
+        self.call("POST", base + "/redo")
+        self.call("POST", base + "/redo", expect=400)
+        self.call("PATCH", f"{base}/entities/{label}", {"move": [{"index": 99, "to": [0, 0, 0]}]}, expect=400)
+        self.call("GET", f"{base}/entities/999", expect=404)
+        self.call("DELETE", f"{base}/entities/{label}")
+        self.call("GET", f"{base}/entities/{label}", expect=404)
+
+    # checks the analysis of a circle-like curve: curvature of a closed-form circle NURBS is 1/r
+    def test_analysis(self):
+        self.new_document("analysis.hula")
+        base = "/api/documents/analysis.hula"
+        label = self.call("POST", base + "/entities", {"curve": CURVE50}, expect=201)["label"]
+        a = self.call("POST", f"{base}/entities/{label}/analysis", {"samples": 100, "fins": ["curvature"], "scale": 2})
+        self.assertEqual(len(a["t"]), 100)
+        self.assertEqual(len(a["fins"][0]["tip"]), 100)
+        self.assertIn("inflections", a["features"])
+        self.call("POST", f"{base}/entities/{label}/analysis", {"by": "time"}, expect=400)
+
+    # checks a second client's stream receives every change set with its revision, in order
+    def test_document_events(self):
+        self.new_document("events.hula")
+        base = "/api/documents/events.hula"
+        conn, response = open_events(self.server, base + "/events")
+        events = read_events(response)
+        label = self.call("POST", base + "/entities", {"curve": CURVE50}, expect=201)["label"]
+        for k in range(5):
+            self.call("PATCH", f"{base}/entities/{label}", {"move": [{"index": 1, "to": [1, k, 0]}], "continue": k > 0})
+        self.call("POST", base + "/undo")
+        got = [next(events) for _ in range(7)]
+        conn.close()
+        self.assertEqual([e for e, _ in got], ["change"] * 7)
+        self.assertEqual([d["cause"] for _, d in got], ["commit"] * 6 + ["undo"])
+        self.assertEqual([d["revision"] for _, d in got], [1, 2, 2, 2, 2, 2, 1])
+
+
+class FaultTest(unittest.TestCase):
+    """kill -9 of the server during a job and during a stream of edits."""
+
+    # checks every document passes `hula doc check` after kill -9 mid-edit and holds the last committed revision
+    def test_kill_during_edits_and_job(self):
+        import subprocess
+        with tempfile.TemporaryDirectory() as ws:
+            server = Server(HULA, workspace=ws, args=["--jobs", "1"])
+            server.request("POST", "/api/documents", body={"name": "crash.hula"})
+            base = "/api/documents/crash.hula"
+            label = json.loads(server.request("POST", base + "/entities", body={"curve": CURVE50})[2])["label"]
+            server.request("POST", "/api/jobs", body={"problem": LONG, "generations": 100000, "population": 200})
+            last = 0
+            stop = threading.Event()
+
+            def edits():
+                nonlocal last
+                conn = server.connection()
+                k = 0
+                while not stop.is_set():
+                    try:
+                        status, _, data = server.request("PATCH", f"{base}/entities/{label}",
+                                                         body={"move": [{"index": 2, "to": [2, k, 0]}]}, conn=conn)
+                    except Exception:
+                        return
+                    if status == 200:
+                        last = json.loads(data)["revision"]
+                    k += 1
+
+            t = threading.Thread(target=edits)
+            t.start()
+            time.sleep(1.0)
+            server.process.send_signal(signal.SIGKILL)
+            server.process.wait()
+            stop.set()
+            t.join()
+            server.stop()
+            check = subprocess.run([HULA, "doc", "check", os.path.join(ws, "crash.hula")], capture_output=True, timeout=30)
+            self.assertEqual(check.returncode, 0, check.stdout + check.stderr)
+            with Server(HULA, workspace=ws) as again:
+                doc = json.loads(again.request("GET", base)[2])
+                self.assertIn(doc["revision"], (last, last + 1))
 
 
 if __name__ == "__main__":

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "hula/core/error.hpp"
+#include "hula/server/documents.hpp"
 #include "hula/server/events.hpp"
 #include "hula/server/jobs.hpp"
 #include "hula/server/router.hpp"
@@ -89,11 +90,14 @@ struct Server::Impl {
   net::steady_timer accept_retry{ioc};
   SecurityPolicy policy;
   JobPool jobs;
+  DocumentRegistry documents;
   Router router;
   net::steady_timer drain{ioc};
 
   explicit Impl(ServerOptions o)
-      : options(std::move(o)), jobs(JobPoolOptions{.workers = options.jobs, .queue_limit = options.queue_limit}) {}
+      : options(std::move(o)),
+        jobs(JobPoolOptions{.workers = options.jobs, .queue_limit = options.queue_limit}),
+        documents(options.workspace) {}
 
   void accept();
   void stop();
@@ -370,6 +374,7 @@ void Server::Impl::stop() {
     // Running jobs stop at their next generation and store their best so far; their final events
     // go to the subscribers, which close their streams once those are written.
     jobs.shutdown();
+    documents.close_all();
     net::post(ioc, [this] { stop_when_drained(std::chrono::steady_clock::now() + kDrainTime); });
   });
 }
@@ -410,12 +415,14 @@ Server::Server(ServerOptions options) {
   s.policy.allowed_hosts = allowed_hosts(s.options.host, port());
   s.policy.max_target = s.options.max_target;
   s.policy.max_body = s.options.max_body;
-  const routes::Context context{s.options.version, s.options.workspace, s.jobs};
+  const routes::Context context{s.options.version, s.options.workspace, s.jobs, s.documents};
   routes::add_health(s.router, context);
   routes::add_openapi(s.router, context);
   routes::add_law(s.router, context);
   routes::add_reconstruct(s.router, context);
   routes::add_jobs(s.router, context);
+  routes::add_documents(s.router, context);
+  routes::add_entities(s.router, context);
 }
 
 Server::~Server() {

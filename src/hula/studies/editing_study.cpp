@@ -33,11 +33,11 @@ diffgeom::Plane plane_member(const Json& body) {
 }
 
 // The curve a file describes, as the studies take it (law files: the stand-in NURBS).
-const nurbs::NurbsCurve& nurbs_of(const io::CurveFile& file) { return file.curve; }
+const nurbs::NurbsCurve& nurbs_of(const curve::Curve& c) { return c.nurbs(); }
 
 }  // namespace
 
-io::CurveFile read_curve_member(const Json& body, std::string_view name) {
+curve::Curve read_curve_member(const Json& body, std::string_view name) {
   const Json& value = json::require_member(body, kRoot, name);
   try {
     return io::curve_from_json(value);
@@ -106,7 +106,7 @@ EditProjectionStudy read_edit_projection_study(const StudyDocument& doc) {
   check_members(b, {"curve", "edited", "plane"});
   const diffgeom::Plane plane = plane_member(b);
   EditProjectionStudy s{doc.header, read_curve_member(b, "curve"), read_curve_member(b, "edited"), plane};
-  require_planar(s.edited.curve, plane, "edited");
+  require_planar(s.edited.nurbs(), plane, "edited");
   return s;
 }
 
@@ -115,13 +115,14 @@ HermiteStudy read_hermite_study(const StudyDocument& doc) {
   check_members(b, {"spline", "rebuild", "edits"});
   HermiteStudy s;
   s.header = doc.header;
-  const io::CurveFile spline = read_curve_member(b, "spline");
-  if (!spline.inputs)
+  const curve::Curve spline = read_curve_member(b, "spline");
+  const auto* inputs = std::get_if<curve::InterpolatedData>(&spline.data());
+  if (!inputs)
     throw Error(Errc::ParseError,
                 "spline: must be an \"interpolated\" curve document (points to interpolate), got kind \"" +
-                    std::string(io::curve_kind_name(spline.kind)) + "\"",
+                    std::string(spline.kind_name()) + "\"",
                 {.field = "spline"});
-  s.spline = *spline.inputs;
+  s.spline = *inputs;
   s.options.interpolation = s.spline.options();
   if (const Json* r = json::optional_member(b, "rebuild")) {
     const std::string name = json::get_string(*r, kRoot.member("rebuild"));

@@ -21,7 +21,7 @@ namespace hula::studies {
 /// "nurbs", "bezier", "interpolated" or "law").
 /// @throws hula::Error(Errc::ParseError) if it is missing; errors of io::curve_from_json with the
 ///   member name prefixed to the message and the field ("curve.control_points")
-[[nodiscard]] io::CurveFile read_curve_member(const Json& body, std::string_view name);
+[[nodiscard]] curve::Curve read_curve_member(const Json& body, std::string_view name);
 
 /// Which technique a "fin-compound" study runs.
 enum class FinCompoundMethod {
@@ -34,11 +34,11 @@ struct FinCompoundStudy {
   StudyHeader header{};
   FinCompoundMethod method = FinCompoundMethod::Projection;
   /// "curve": the original curve (projection: required; combescure: the parent, forward transform).
-  std::optional<io::CurveFile> curve{};
+  std::optional<curve::Curve> curve{};
   /// "compound": the edited / prescribed compound (projection: optional, without it only the compound
   /// is computed; combescure: the prescribed compound, inverse transform). One of curve/compound for
   /// combescure.
-  std::optional<io::CurveFile> compound{};
+  std::optional<curve::Curve> compound{};
   /// "plane", "scale", "samples", "min_stretch", "tolerance" (projection).
   NormalCompoundOptions projection{};
   /// "c", "samples", "tolerance" (combescure).
@@ -54,8 +54,8 @@ struct FinCompoundStudy {
 /// An "edit-projection" study.
 struct EditProjectionStudy {
   StudyHeader header{};
-  io::CurveFile curve;                          ///< "curve": the original 3-D curve
-  io::CurveFile edited;                         ///< "edited": the edited projection, planar in `plane`
+  curve::Curve curve;                           ///< "curve": the original 3-D curve
+  curve::Curve edited;                          ///< "edited": the edited projection, planar in `plane`
   diffgeom::Plane plane = diffgeom::Plane::XY;  ///< "plane"
 };
 
@@ -67,7 +67,7 @@ struct EditProjectionStudy {
 struct HermiteStudy {
   StudyHeader header{};
   /// "spline": an "interpolated" curve document (points, parameterisation or parameters, ends).
-  io::InterpolationInputs spline{};
+  curve::InterpolatedData spline{};
   /// The spline's interpolation options and "rebuild".
   HermiteEditOptions options{};
   /// "edits" (angles in the file in degrees, here in radians).

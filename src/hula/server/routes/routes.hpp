@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <string>
 
+#include "hula/oli/document.hpp"
+#include "hula/server/documents.hpp"
 #include "hula/server/jobs.hpp"
 #include "hula/server/router.hpp"
 
@@ -18,6 +20,7 @@ struct Context {
   std::string version;
   std::filesystem::path workspace;
   JobPool& jobs;
+  DocumentRegistry& documents;
 };
 
 /// GET /api/health.
@@ -30,6 +33,14 @@ void add_law(Router& router, const Context& context);
 void add_reconstruct(Router& router, const Context& context);
 /// POST /api/jobs, GET /api/jobs/{id}, GET /api/jobs/{id}/events, DELETE /api/jobs/{id}.
 void add_jobs(Router& router, const Context& context);
+
+/// GET|POST /api/documents, GET|DELETE /api/documents/{name}, undo, redo, history, events.
+void add_documents(Router& router, const Context& context);
+/// POST /api/documents/{name}/entities, GET|PUT|PATCH|DELETE .../entities/{label}, .../analysis.
+void add_entities(Router& router, const Context& context);
+
+/// {"revision", "changes"} of a committed outcome with `status`; a rolled-back one rethrows its error.
+[[nodiscard]] Response outcome_response(const oli::Outcome& outcome, unsigned status);
 
 /// The OpenAPI 3.1 document (openapi.json, embedded at build time).
 [[nodiscard]] const std::string& openapi_text();
