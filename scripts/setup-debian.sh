@@ -16,6 +16,7 @@ packages=(
   libpagmo-dev libboost-serialization-dev
   libsqlite3-dev sqlite3
   doxygen
+  python3 python3-jsonschema curl
 )
 
 missing=()
