@@ -1,0 +1,205 @@
+// JSON shapes of the `hula serve` API (issue 12, docs/server.md, GET /api/openapi.json).
+// These types mirror the OpenAPI document; the e2e tests exercise them
+// against the real server. No geometry is computed from them on the page.
+
+export type Point = number[];
+
+/** `{"error": {"code", "message", "where"}}` (docs/formats.md, Error JSON). */
+export interface ErrorWhere {
+  field?: string;
+  index?: number;
+  component?: number;
+  line?: number;
+  column?: number;
+}
+export interface ErrorBody {
+  code: string;
+  message: string;
+  where: ErrorWhere;
+}
+
+export interface Health {
+  status: 'ok';
+  version: string;
+}
+
+/** A curve file (docs/formats.md, Curve files). */
+export type CurveFile =
+  | {
+      kind: 'nurbs';
+      degree: number;
+      knots: number[];
+      control_points: Point[];
+      weights?: number[] | null;
+    }
+  | { kind: 'bezier'; control_points: Point[]; weights?: number[] | null }
+  | {
+      kind: 'interpolated';
+      points: Point[];
+      parameterisation?: Parameterisation;
+      parameters?: number[];
+      start?: EndCondition;
+      end?: EndCondition;
+    }
+  | { kind: 'law'; expression: string; parameter?: string; domain: [number, number] }
+  | { kind: 'hermite'; points: Point[]; tangents: Point[] };
+
+export type Parameterisation = 'uniform' | 'chord' | 'centripetal';
+export type EndCondition = 'natural' | 'bessel' | 'not-a-knot' | 'occt' | { tangent: Point };
+
+/** One entity of a document: a stable label, a kind, a name, attributes. */
+export interface Entity {
+  label: string;
+  kind: string;
+  name: string;
+  attributes: Record<string, unknown>;
+  /** The curve as a curve file, for curve entities. */
+  curve?: CurveFile;
+}
+
+export interface DocumentSummary {
+  name: string;
+  revision?: number;
+}
+
+export interface DocumentState {
+  name: string;
+  revision: number;
+  entities: Entity[];
+}
+
+/** What a change did, pushed to every client on the document's event stream. */
+export interface ChangeSet {
+  revision: number;
+  created?: Entity[];
+  modified?: Entity[];
+  deleted?: string[];
+  /** Name of the undo step (e.g. "move points"). */
+  step?: string;
+}
+
+/** The reply of every change: the new revision and its change set. */
+export interface ChangeReply {
+  revision: number;
+  changes: ChangeSet;
+  label?: string;
+}
+
+export interface HistoryStep {
+  revision: number;
+  name: string;
+}
+export interface History {
+  steps: HistoryStep[];
+  /** Index of the current step in `steps` (steps after it can be redone). */
+  current: number;
+}
+
+export type FinKind = 'curvature' | 'torsion' | 'normal' | 'binormal' | 'bishop';
+
+export interface AnalysisRequest {
+  samples: number;
+  by: 'parameter' | 'arclength';
+  fins?: FinKind[];
+  scale?: number;
+  frames?: 'frenet' | 'bishop' | 'none';
+  combescure?: boolean;
+}
+
+export interface Frame {
+  T: number[];
+  N: number[];
+  B: number[];
+}
+
+export interface Feature {
+  kind: string; // inflection | curvature-max | curvature-min | torsion-max | torsion-min | knot
+  t: number;
+  s?: number;
+  value?: number;
+  /** For knots: the continuity reached, e.g. "C2" or "G1". */
+  continuity?: string;
+}
+
+/** What a viewport draws for one curve (POST .../analysis). */
+export interface Analysis {
+  t: number[];
+  s: number[];
+  points: Point[];
+  kappa: (number | null)[];
+  tau: (number | null)[];
+  speed: number[];
+  planar?: boolean;
+  frames?: Frame[];
+  bishop?: Frame[];
+  fins?: Partial<Record<FinKind, Point[][]>>;
+  combescure?: Point[];
+  features?: Feature[];
+}
+
+export interface LawRequest {
+  expression: string;
+  parameter?: string;
+  at?: number[];
+  derivatives?: number;
+}
+export interface LawResponse {
+  expression: string;
+  parameter: string;
+  dimension: number;
+  results: { t: number; derivatives: number[][] }[];
+}
+
+export interface ReconstructRequest {
+  kappa: string;
+  tau: string;
+  length: number;
+  start_point?: number[];
+  start_frame?: { tangent: number[]; normal: number[] };
+  tolerance?: number;
+  at?: number[];
+}
+export interface FramePoint {
+  s: number;
+  position: number[];
+  T: number[];
+  N: number[];
+  B: number[];
+}
+export interface ReconstructResponse {
+  points: FramePoint[];
+  curve: CurveFile;
+  max_deviation: number;
+}
+
+export type JobState = 'queued' | 'running' | 'done' | 'failed' | 'cancelled';
+export interface Solution {
+  variables: number[];
+  objectives: (number | null)[];
+  violation: number | null;
+  curve?: CurveFile;
+}
+export interface JobReport {
+  termination: string;
+  message: string;
+  generations: number;
+  evaluations: number;
+  seconds: number;
+  seed: number;
+  algorithm: string;
+}
+export interface Job {
+  job: string;
+  kind: string;
+  state: JobState;
+  report: JobReport | null;
+  result: { best?: Solution; front?: Solution[]; curve?: CurveFile } | null;
+  error: ErrorBody | null;
+}
+export interface GenerationEvent {
+  generation: number;
+  evaluations: number;
+  best: (number | null)[];
+  front?: (number | null)[][];
+  elapsed: number;
+}
