@@ -78,7 +78,9 @@ test('drag a point of a 100-control-point curve with fins and the κ graph', asy
   await idle(page);
   await page.keyboard.press('1'); // the top view alone, as a designer drags
   await idle(page);
-  await page.evaluate(() => { window.__hula.app.fitAll(); });
+  await page.evaluate(() => {
+    window.__hula.app.fitAll();
+  });
   await idle(page);
   const start = await pixelOf(page, 'top', cps[50] as [number, number, number]);
   await page.mouse.move(start.x, start.y);
