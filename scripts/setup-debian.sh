@@ -13,7 +13,12 @@ packages=(
   libgtest-dev libgmock-dev librapidcheck-dev libbenchmark-dev
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
   libpagmo-dev libboost-serialization-dev
+  chromium
 )
+# The web workbench (web/) needs Node.js >= 20 and npm; Debian's nodejs/npm
+# are installed only when no node is on the PATH (a newer one is kept).
+if ! command -v node >/dev/null 2>&1; then packages+=(nodejs); fi
+if ! command -v npm >/dev/null 2>&1; then packages+=(npm); fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -133,6 +133,7 @@ export class App {
       }
     });
     this.setTool('select');
+    this.panels.update();
   }
 
   // ---- document ------------------------------------------------------------

@@ -56,7 +56,7 @@ export class Panels {
   private readonly historyBox: HTMLElement;
   readonly designBox: HTMLElement;
   readonly optimiseBox: HTMLElement;
-  private propsKey = '';
+  private propsKey = '-';
 
   constructor(
     private readonly app: App,

@@ -7,7 +7,9 @@ import * as THREE from 'three';
 import type { Analysis, FinKind, Point } from '../api/types';
 import {
   bounds,
+  fromPlane,
   gridSpacing,
+  toPlane,
   intersectPlane,
   snapToGrid,
   workingPlane,
@@ -133,10 +135,12 @@ export class Viewports {
     const plane = workingPlane(name);
     const grid = new THREE.GridHelper(1, 1, 0x3c4656, 0x2b323d);
     // GridHelper lies in X-Z; turn it into the view's working plane.
+    // GridHelper lies in its local X-Z plane: X → u, Y → normal, Z → −v is a
+    // proper rotation (determinant +1) onto the plane spanned by u and v.
     const m = new THREE.Matrix4().makeBasis(
       new THREE.Vector3(...plane.u),
       new THREE.Vector3(...plane.normal),
-      new THREE.Vector3(...plane.v),
+      new THREE.Vector3(...plane.v).negate(),
     );
     grid.quaternion.setFromRotationMatrix(m);
     grid.visible = false;
@@ -327,7 +331,10 @@ export class Viewports {
   ): Vec3 | null {
     const hit = intersectPlane(this.ray(name, px, py), plane);
     if (!hit) return null;
-    return snap ? snapToGrid(hit, plane, this.view(name).gridStep) : hit;
+    // Exactly on the plane (no rounding noise along the normal), then snapped in it.
+    const [u, v] = toPlane(hit, plane);
+    const onPlane = fromPlane(u, v, plane);
+    return snap ? snapToGrid(onPlane, plane, this.view(name).gridStep) : onPlane;
   }
 
   // ---- camera navigation -------------------------------------------------
