@@ -49,12 +49,11 @@ export const analysis = (
   );
 
 export async function addCurve(doc: string, name: string, curve: CurveFile): Promise<string> {
-  const r = await api<{ label?: string; changes: { created?: Entity[] } }>(
-    'POST',
-    `/api/documents/${encodeURIComponent(doc)}/entities`,
-    { name, curve },
-  );
-  return r.label ?? r.changes.created![0]!.label;
+  const r = await api<{
+    label?: string | number;
+    changes: { created?: Entity[]; added?: (string | number)[] };
+  }>('POST', `/api/documents/${encodeURIComponent(doc)}/entities`, { name, curve });
+  return String(r.label ?? r.changes.created?.[0]?.label ?? r.changes.added?.[0]);
 }
 
 /** A fresh document per test, so tests do not see each other's curves. */

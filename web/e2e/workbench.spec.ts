@@ -69,7 +69,7 @@ test('draw a spline by clicks in the top view', async ({ page }) => {
   await idle(page);
   const cs = await curves(doc);
   expect(cs).toHaveLength(1);
-  const a = await analysis(doc, cs[0]!.label);
+  const a = await analysis(doc, String(cs[0]!.label));
   const step = await page.evaluate(() => window.__hula.app.viewports.gridStep('top'));
   for (const p of world) expect(distanceToPolyline(p, a.points)).toBeLessThan(step);
   for (const q of a.points) expect(Math.abs(q[2] ?? 0)).toBeLessThan(1e-9);
@@ -120,7 +120,7 @@ test('drag a control point, then undo and redo', async ({ page }) => {
   await page.mouse.up();
   await idle(page);
   const moved = (
-    (await getDoc(doc)).entities.find((e) => e.label === label)!.curve as {
+    (await getDoc(doc)).entities.find((e) => String(e.label) === label)!.curve as {
       control_points: number[][];
     }
   ).control_points[1]!;
@@ -137,7 +137,7 @@ test('drag a control point, then undo and redo', async ({ page }) => {
   await page.keyboard.press('Control+z');
   await idle(page);
   let cps = (
-    (await getDoc(doc)).entities.find((e) => e.label === label)!.curve as {
+    (await getDoc(doc)).entities.find((e) => String(e.label) === label)!.curve as {
       control_points: number[][];
     }
   ).control_points;
@@ -145,7 +145,7 @@ test('drag a control point, then undo and redo', async ({ page }) => {
   await page.keyboard.press('Control+Shift+z');
   await idle(page);
   cps = (
-    (await getDoc(doc)).entities.find((e) => e.label === label)!.curve as {
+    (await getDoc(doc)).entities.find((e) => String(e.label) === label)!.curve as {
       control_points: number[][];
     }
   ).control_points;

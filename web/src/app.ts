@@ -3,7 +3,7 @@
 // replies and document events; the page draws, picks and snaps.
 
 import { ApiError, Client } from './api/client';
-import type { Analysis, CurveFile, Entity, FinKind } from './api/types';
+import type { Analysis, ChangeReply, ChangeSet, CurveFile, Entity, FinKind } from './api/types';
 import { DocumentStore } from './store/store';
 import { Graph, type Abscissa, type Quantity } from './graphs/graph';
 import { Viewports, toVec3 } from './viewport/viewports';
@@ -48,6 +48,7 @@ export function handlesOf(curve: CurveFile | undefined): Vec3[] {
     case 'hermite':
       return curve.points.map(toVec3);
     case 'law':
+    case 'natural':
       return [];
   }
 }
@@ -167,15 +168,7 @@ export class App {
     });
     const onChange = (ev: MessageEvent<string>): void => {
       try {
-        const changes = JSON.parse(ev.data) as import('./api/types').ChangeSet;
-        if (changes.revision > this.store.revision + 1 && this.store.revision >= 0) {
-          void this.reload();
-        } else if (changes.revision < this.store.revision) {
-          // Undo from another tab: the revision moved to an older state; reload to be exact.
-          void this.reload();
-        } else {
-          this.store.apply(changes);
-        }
+        this.applyChanges(JSON.parse(ev.data) as ChangeSet);
       } catch (e) {
         this.toast(e);
       }
@@ -273,44 +266,68 @@ export class App {
   async createCurve(name: string, curve: CurveFile): Promise<string | undefined> {
     const reply = await this.run(() => this.client.createEntity(this.store.name, name, curve));
     if (!reply) return undefined;
-    this.store.applyReply(reply);
-    const label = reply.label ?? reply.changes.created?.[0]?.label;
+    this.applyReply(reply);
+    const made = reply.label ?? reply.changes.created?.[0]?.label ?? reply.changes.added?.[0];
+    const label = made === undefined ? undefined : String(made);
     if (label) this.select(label);
     return label;
   }
 
+  /** Apply a change reply; entities named by label only are fetched. */
+  applyReply(reply: ChangeReply): void {
+    this.fetchStale(this.store.applyReply(reply));
+  }
+
+  applyChanges(changes: ChangeSet): void {
+    this.fetchStale(this.store.apply(changes));
+  }
+
+  private fetchStale(labels: string[]): void {
+    for (const label of labels) {
+      void this.client
+        .getEntity(this.store.name, label)
+        .then((e) => {
+          this.store.put(e);
+        })
+        .catch((e: unknown) => {
+          if (e instanceof ApiError && e.status === 404) this.store.remove(label);
+          else if (!(e instanceof ApiError && e.offline)) this.toast(e);
+        });
+    }
+  }
+
   async replaceCurve(label: string, curve: CurveFile): Promise<void> {
     const reply = await this.run(() => this.client.putEntity(this.store.name, label, curve));
-    if (reply) this.store.applyReply(reply);
+    if (reply) this.applyReply(reply);
   }
 
   async patch(label: string, body: Record<string, unknown>): Promise<void> {
     const reply = await this.run(() => this.client.patchEntity(this.store.name, label, body));
-    if (reply) this.store.applyReply(reply);
+    if (reply) this.applyReply(reply);
   }
 
   async movePoint(label: string, index: number, to: Vec3): Promise<void> {
     const reply = await this.run(() =>
       this.client.movePoints(this.store.name, label, [{ index, to: [...to] }], false),
     );
-    if (reply) this.store.applyReply(reply);
+    if (reply) this.applyReply(reply);
   }
 
   async undo(): Promise<void> {
     const reply = await this.run(() => this.client.undo(this.store.name));
-    if (reply) this.store.applyReply(reply);
+    if (reply) this.applyReply(reply);
   }
 
   async redo(): Promise<void> {
     const reply = await this.run(() => this.client.redo(this.store.name));
-    if (reply) this.store.applyReply(reply);
+    if (reply) this.applyReply(reply);
   }
 
   async deleteSelected(): Promise<void> {
     const label = this.selected;
     if (!label) return;
     const reply = await this.run(() => this.client.deleteEntity(this.store.name, label));
-    if (reply) this.store.applyReply(reply);
+    if (reply) this.applyReply(reply);
   }
 
   refreshHistory(): void {
@@ -670,7 +687,7 @@ export class App {
     this.client
       .movePoints(this.store.name, d.label, [{ index: d.index, to: [...to] }], continued)
       .then((reply) => {
-        this.store.applyReply(reply);
+        this.applyReply(reply);
       })
       .catch((e: unknown) => {
         this.toast(e);

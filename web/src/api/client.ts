@@ -9,6 +9,7 @@ import type {
   CurveFile,
   DocumentState,
   DocumentSummary,
+  Entity,
   ErrorBody,
   Health,
   History as DocHistory,
@@ -143,6 +144,9 @@ export class Client {
     return this.request('DELETE', this.doc(name));
   }
 
+  getEntity(doc: string, label: string): Promise<Entity> {
+    return this.request('GET', `${this.doc(doc)}/entities/${encodeURIComponent(label)}`);
+  }
   createEntity(doc: string, name: string, curve: CurveFile): Promise<ChangeReply> {
     return this.request('POST', `${this.doc(doc)}/entities`, { name, curve });
   }

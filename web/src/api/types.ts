@@ -42,14 +42,28 @@ export type CurveFile =
       end?: EndCondition;
     }
   | { kind: 'law'; expression: string; parameter?: string; domain: [number, number] }
-  | { kind: 'hermite'; points: Point[]; tangents: Point[] };
+  | {
+      kind: 'hermite';
+      points: Point[];
+      tangents: Point[];
+      second_derivatives?: Point[];
+      parameters?: number[];
+    }
+  | {
+      kind: 'natural';
+      curvature: string;
+      torsion?: string;
+      parameter?: string;
+      length: number;
+      start?: { point?: Point; tangent?: Point; normal?: Point };
+    };
 
 export type Parameterisation = 'uniform' | 'chord' | 'centripetal';
 export type EndCondition = 'natural' | 'bessel' | 'not-a-knot' | 'occt' | { tangent: Point };
 
 /** One entity of a document: a stable label, a kind, a name, attributes. */
 export interface Entity {
-  label: string;
+  label: Label;
   kind: string;
   name: string;
   attributes: Record<string, unknown>;
@@ -68,31 +82,46 @@ export interface DocumentState {
   entities: Entity[];
 }
 
-/** What a change did, pushed to every client on the document's event stream. */
+/**
+ * What a change did, pushed to every client on the document's event stream.
+ * Entities may come whole (`created`, `modified`) or as labels to fetch
+ * (`added`, `changed`, `attributes_changed`: the Oli change set's form).
+ */
 export interface ChangeSet {
   revision: number;
   created?: Entity[];
   modified?: Entity[];
-  deleted?: string[];
-  /** Name of the undo step (e.g. "move points"). */
-  step?: string;
+  deleted?: Label[];
+  added?: Label[];
+  changed?: Label[];
+  removed?: Label[];
+  attributes_changed?: Label[];
+  cause?: 'commit' | 'undo' | 'redo';
+  /** Name of the step (e.g. "move points"). */
+  name?: string;
 }
+
+/** Oli labels are integers; the page keys entities by their decimal text. */
+export type Label = string | number;
 
 /** The reply of every change: the new revision and its change set. */
 export interface ChangeReply {
   revision: number;
   changes: ChangeSet;
-  label?: string;
+  label?: Label;
 }
 
 export interface HistoryStep {
   revision: number;
   name: string;
+  time?: string;
+  /** False for a step that was undone (it can be redone). */
+  applied?: boolean;
 }
 export interface History {
   steps: HistoryStep[];
-  /** Index of the current step in `steps` (steps after it can be redone). */
-  current: number;
+  /** Index of the current step in `steps` (steps after it can be redone), when the server gives it. */
+  current?: number;
 }
 
 export type FinKind = 'curvature' | 'torsion' | 'normal' | 'binormal' | 'bishop';

@@ -90,6 +90,7 @@ export class Panels {
       return;
     }
     const c = e.curve;
+    const label = String(e.label);
     box.appendChild(
       el(
         'div',
@@ -116,7 +117,7 @@ export class Panels {
         input.addEventListener('change', () => {
           const to: [number, number, number] = [p[0], p[1], p[2]];
           to[k] = Number(input.value);
-          if (Number.isFinite(to[k])) void this.app.movePoint(e.label, i, to);
+          if (Number.isFinite(to[k])) void this.app.movePoint(label, i, to);
         });
         td.appendChild(input);
         tr.appendChild(td);
@@ -133,7 +134,7 @@ export class Panels {
           title: 'weight',
         });
         input.addEventListener('change', () => {
-          void this.app.patch(e.label, { weights: [{ index: i, value: Number(input.value) }] });
+          void this.app.patch(label, { weights: [{ index: i, value: Number(input.value) }] });
         });
         td.appendChild(input);
         tr.appendChild(td);
@@ -151,11 +152,11 @@ export class Panels {
       });
       const ins = el('button', { 'aria-label': 'Insert knot' }, 'Insert knot');
       ins.addEventListener('click', () => {
-        void this.app.patch(e.label, { insert_knot: { t: Number(t.value) } });
+        void this.app.patch(label, { insert_knot: { t: Number(t.value) } });
       });
       const elev = el('button', { 'aria-label': 'Elevate degree' }, 'Elevate degree');
       elev.addEventListener('click', () => {
-        void this.app.patch(e.label, { elevate_degree: 1 });
+        void this.app.patch(label, { elevate_degree: 1 });
       });
       row.append(t, ins, elev);
       box.appendChild(row);
@@ -168,7 +169,7 @@ export class Panels {
           ),
         );
     }
-    if (c.kind === 'interpolated') this.interpolatedControls(e.label, c, box);
+    if (c.kind === 'interpolated') this.interpolatedControls(label, c, box);
   }
 
   private interpolatedControls(
@@ -343,10 +344,11 @@ export class Panels {
     box.appendChild(row);
     if (!h) return;
     const ol = el('ol', { 'aria-label': 'Undo history' });
+    const current = h.current ?? h.steps.reduce((c, s, i) => (s.applied === false ? c : i), -1);
     h.steps.forEach((s, i) => {
       const li = el('li', { 'data-revision': String(s.revision) }, `${s.revision}: ${s.name}`);
-      if (i === h.current) li.classList.add('current');
-      if (i > h.current) li.classList.add('redo');
+      if (i === current) li.classList.add('current');
+      if (i > current) li.classList.add('redo');
       ol.appendChild(li);
     });
     box.appendChild(ol);

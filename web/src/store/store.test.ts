@@ -10,25 +10,34 @@ const curve = {
 };
 
 describe('DocumentStore', () => {
-  // Change sets apply in revision order; a duplicate (reply then event) changes nothing.
-  it('applies change sets once, in order', () => {
+  // Whole entities are stored (twice is the same as once); deletions remove; revision follows the change set.
+  it('applies change sets idempotently', () => {
     const s = new DocumentStore('a.hula');
     s.load({ name: 'a.hula', revision: 1, entities: [] });
     const events: string[] = [];
     s.subscribe((e) => events.push(e.type));
-    s.apply({
+    const set = {
       revision: 2,
-      created: [{ label: 'c1', kind: 'curve', name: 'c', attributes: {}, curve }],
-    });
-    s.apply({
-      revision: 2,
-      created: [{ label: 'c1', kind: 'curve', name: 'dup', attributes: {}, curve }],
-    });
-    expect(s.entities.get('c1')?.name).toBe('c');
-    s.apply({ revision: 3, deleted: ['c1'] });
+      created: [{ label: 7, kind: 'curve', name: 'c', attributes: {}, curve }],
+    };
+    s.apply(set);
+    s.apply(set);
+    expect([...s.entities.keys()]).toEqual(['7']);
+    expect(s.entities.get('7')?.label).toBe('7');
+    s.apply({ revision: 1, removed: [7], cause: 'undo' });
     expect(s.entities.size).toBe(0);
-    expect(s.revision).toBe(3);
-    expect(events).toEqual(['entity', 'removed']);
+    expect(s.revision).toBe(1);
+    expect(events).toEqual(['entity', 'entity', 'removed']);
+  });
+
+  // Oli-style change sets name labels only: they come back to be fetched.
+  it('returns the labels to fetch for label-only change sets', () => {
+    const s = new DocumentStore('a.hula');
+    expect(s.apply({ revision: 3, added: [4], changed: [5, 4], attributes_changed: [6] })).toEqual([
+      '4',
+      '5',
+      '6',
+    ]);
   });
 
   // A full reload drops entities the server no longer has.

@@ -8,6 +8,7 @@ import type {
   DocumentState,
   Entity,
   History,
+  Label,
 } from '../api/types';
 
 export type StoreListener = (what: StoreEvent) => void;
@@ -17,6 +18,9 @@ export type StoreEvent =
   | { type: 'removed'; label: string }
   | { type: 'analysis'; label: string }
   | { type: 'history' };
+
+/** Labels are keyed by their decimal text (Oli labels are integers on the wire). */
+export const key = (label: Label): string => String(label);
 
 export class DocumentStore {
   name: string;
@@ -45,8 +49,9 @@ export class DocumentStore {
     this.revision = doc.revision;
     const seen = new Set<string>();
     for (const e of doc.entities) {
-      seen.add(e.label);
-      this.entities.set(e.label, e);
+      const k = key(e.label);
+      seen.add(k);
+      this.entities.set(k, { ...e, label: k });
     }
     for (const label of [...this.entities.keys()]) {
       if (!seen.has(label)) {
@@ -57,33 +62,46 @@ export class DocumentStore {
     this.emit({ type: 'document' });
   }
 
-  /**
-   * Apply a change set (a reply or an event). Returns false when it cannot be
-   * applied in order (a gap in revisions): the caller reloads the document.
-   * A change set at or below the current revision was already applied.
-   */
-  apply(changes: ChangeSet): boolean {
-    if (changes.revision <= this.revision && this.revision >= 0) {
-      // Undo may go back to an older revision number only through a newer
-      // change set, so an old revision here is a duplicate (reply + event).
-      return true;
-    }
-    for (const e of [...(changes.created ?? []), ...(changes.modified ?? [])]) {
-      this.entities.set(e.label, e);
-      this.analyses.delete(e.label);
-      this.emit({ type: 'entity', label: e.label });
-    }
-    for (const label of changes.deleted ?? []) {
-      this.entities.delete(label);
-      this.analyses.delete(label);
-      this.emit({ type: 'removed', label });
-    }
-    this.revision = changes.revision;
-    return true;
+  /** Set one entity (a change set's entity, or one fetched after a label-only change). */
+  put(e: Entity): void {
+    const k = key(e.label);
+    this.entities.set(k, { ...e, label: k });
+    this.analyses.delete(k);
+    this.emit({ type: 'entity', label: k });
   }
 
-  applyReply(reply: ChangeReply): void {
-    this.apply({ ...reply.changes, revision: reply.revision });
+  remove(label: Label): void {
+    const k = key(label);
+    if (!this.entities.delete(k)) return;
+    this.analyses.delete(k);
+    this.emit({ type: 'removed', label: k });
+  }
+
+  /**
+   * Apply a change set (a reply or an event; applying one twice changes
+   * nothing). Whole entities are stored; labels that changed without their
+   * entity are returned for the caller to fetch.
+   */
+  apply(changes: ChangeSet): string[] {
+    for (const e of [...(changes.created ?? []), ...(changes.modified ?? [])]) this.put(e);
+    for (const label of [...(changes.deleted ?? []), ...(changes.removed ?? [])])
+      this.remove(label);
+    const whole = new Set(
+      [...(changes.created ?? []), ...(changes.modified ?? [])].map((e) => key(e.label)),
+    );
+    const stale = [
+      ...(changes.added ?? []),
+      ...(changes.changed ?? []),
+      ...(changes.attributes_changed ?? []),
+    ]
+      .map(key)
+      .filter((k) => !whole.has(k));
+    this.revision = changes.revision;
+    return [...new Set(stale)];
+  }
+
+  applyReply(reply: ChangeReply): string[] {
+    return this.apply({ ...reply.changes, revision: reply.revision });
   }
 
   setAnalysis(label: string, a: Analysis): void {
