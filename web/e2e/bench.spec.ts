@@ -114,6 +114,8 @@ test('drag a point of a 100-control-point curve with fins and the κ graph', asy
     return { frames: p.frames, maxGap: p.maxGap };
   });
   const lat = await page.evaluate(() => [...window.__hula.app.latencies]);
+  const curveLat = await page.evaluate(() => [...window.__hula.app.curveLatencies]);
+  curveLat.sort((a, b) => a - b);
   await page.mouse.up();
   await idle(page);
   lat.sort((a, b) => a - b);
@@ -125,6 +127,9 @@ test('drag a point of a 100-control-point curve with fins and the κ graph', asy
   results['drag_moves_per_second'] = moves / elapsed;
   results['pointer_to_redraw_ms_p50'] = lat[Math.floor(lat.length * 0.5)] ?? NaN;
   results['pointer_to_redraw_ms_p95'] = lat[Math.floor(lat.length * 0.95)] ?? NaN;
+  results['pointer_to_server_curve_ms_p50'] = curveLat[Math.floor(curveLat.length * 0.5)] ?? NaN;
+  results['pointer_to_server_curve_ms_p95'] = curveLat[Math.floor(curveLat.length * 0.95)] ?? NaN;
+  results['server_curves_drawn_during_drag'] = curveLat.length;
   results['server_updates_during_drag'] = await page.evaluate(
     () => window.__hula.app.store.revision,
   );

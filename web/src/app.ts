@@ -60,6 +60,7 @@ interface Drag {
   first: boolean;
   inFlight: boolean;
   pending: Vec3 | null;
+  pendingStamp: number;
   handles: Vec3[];
 }
 
@@ -84,7 +85,11 @@ export class App {
   private hoverIndex: number | null = null;
   /** Timestamps of pointer events of the current drag, for the latency benchmark. */
   readonly latencies: number[] = [];
+  /** Pointer event to the frame that draws the server's curve for that position. */
+  readonly curveLatencies: number[] = [];
   private pointerStamp = 0;
+  private sentStamp = 0;
+  private curveStamp = 0;
 
   constructor(
     readonly client: Client,
@@ -116,6 +121,10 @@ export class App {
           this.refreshHistory();
           break;
         case 'analysis':
+          if (this.drag?.label === e.label && this.sentStamp) {
+            this.curveStamp = this.sentStamp;
+            this.sentStamp = 0;
+          }
           this.redrawCurve(e.label);
           if (e.label === this.selected) this.updateGraphs();
           break;
@@ -128,9 +137,14 @@ export class App {
       this.goOffline();
     };
     this.viewports.afterFrame.add(() => {
+      const now = performance.now();
       if (this.pointerStamp) {
-        this.latencies.push(performance.now() - this.pointerStamp);
+        this.latencies.push(now - this.pointerStamp);
         this.pointerStamp = 0;
+      }
+      if (this.curveStamp) {
+        this.curveLatencies.push(now - this.curveStamp);
+        this.curveStamp = 0;
       }
     });
     this.setTool('select');
@@ -395,7 +409,8 @@ export class App {
     const s = this.settingsOf(label);
     this.viewports.drawCurve(label, {
       analysis: a,
-      handles: handlesOverride ?? handlesOf(e.curve),
+      handles:
+        handlesOverride ?? (this.drag?.label === label ? this.drag.handles : handlesOf(e.curve)),
       polygon:
         e.curve?.kind === 'nurbs' || e.curve?.kind === 'bezier' || e.curve?.kind === 'hermite',
       selected: label === this.selected,
@@ -636,9 +651,11 @@ export class App {
           first: true,
           inFlight: false,
           pending: null,
+          pendingStamp: 0,
           handles: handles.slice(),
         };
         this.latencies.length = 0;
+        this.curveLatencies.length = 0;
         this.setStatus(`Dragging point ${hit.index}`);
         return;
       }
@@ -670,6 +687,7 @@ export class App {
     if (!p) return;
     d.handles[d.index] = p;
     this.pointerStamp = performance.now();
+    d.pendingStamp = this.pointerStamp;
     this.redrawCurve(d.label, d.handles);
     d.pending = p;
     this.flushDrag();
@@ -681,6 +699,7 @@ export class App {
     if (!d || d.inFlight || !d.pending) return;
     const to = d.pending;
     d.pending = null;
+    this.sentStamp = d.pendingStamp;
     d.inFlight = true;
     const continued = !d.first;
     d.first = false;
