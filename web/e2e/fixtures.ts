@@ -3,6 +3,12 @@
 import { expect, type Page } from '@playwright/test';
 import type { Analysis, CurveFile, DocumentState, Entity, History } from '../src/api/types';
 import type { Vec3, ViewName } from '../src/viewport/math';
+import {
+  analysisFromServer,
+  entityFromServer,
+  historyFromServer,
+  isCurveKind,
+} from '../src/api/adapt';
 
 export const base = (): string => process.env['HULA_E2E_BASE']!;
 export const token = (): string => process.env['HULA_E2E_TOKEN']!;
@@ -27,26 +33,44 @@ export async function api<T>(
 export const getDoc = (doc: string): Promise<DocumentState> =>
   api<DocumentState>('GET', `/api/documents/${encodeURIComponent(doc)}`);
 
-export const curves = async (doc: string): Promise<Entity[]> =>
-  (await getDoc(doc)).entities.filter((e) => e.curve !== undefined);
+/** The document's curve entities, each with its curve file. */
+export async function curves(doc: string): Promise<Entity[]> {
+  const summary = await getDoc(doc);
+  return Promise.all(
+    summary.entities.filter((e) => isCurveKind(e.kind)).map((e) => entity(doc, String(e.label))),
+  );
+}
 
-export const history = (doc: string): Promise<History> =>
-  api<History>('GET', `/api/documents/${encodeURIComponent(doc)}/history`);
+export async function history(doc: string): Promise<History> {
+  return historyFromServer(
+    await api<Record<string, unknown>>('GET', `/api/documents/${encodeURIComponent(doc)}/history`),
+  );
+}
 
-export const analysis = (
+/** The server's analysis of an entity, regrouped as the page does (arc-length samples by default). */
+export async function analysis(
   doc: string,
   label: string,
   body: Record<string, unknown> = {},
-): Promise<Analysis> =>
-  api<Analysis>(
+): Promise<Analysis> {
+  const req = { samples: 200, by: 'arclength', ...body };
+  const j = await api<Record<string, unknown>>(
     'POST',
     `/api/documents/${encodeURIComponent(doc)}/entities/${encodeURIComponent(label)}/analysis`,
-    {
-      samples: 200,
-      by: 'arclength',
-      ...body,
-    },
+    req,
   );
+  return analysisFromServer(j, req.by === 'parameter' ? 'parameter' : 'arclength');
+}
+
+/** A curve entity with its curve file (GET …/entities/{label}). */
+export async function entity(doc: string, label: string): Promise<Entity> {
+  return entityFromServer(
+    await api<Record<string, unknown>>(
+      'GET',
+      `/api/documents/${encodeURIComponent(doc)}/entities/${encodeURIComponent(label)}`,
+    ),
+  );
+}
 
 export async function addCurve(doc: string, name: string, curve: CurveFile): Promise<string> {
   const r = await api<{

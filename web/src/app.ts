@@ -31,11 +31,17 @@ export interface ViewSettings {
   fins: FinKind[];
   scale: number;
   samples: number;
-  frames: 'none' | 'frenet' | 'bishop';
-  combescure: boolean;
+  frames: boolean;
 }
 
-export const ALL_FINS: FinKind[] = ['curvature', 'torsion', 'normal', 'binormal', 'bishop'];
+export const ALL_FINS: FinKind[] = [
+  'curvature',
+  'torsion',
+  'normal',
+  'binormal',
+  'bishop-u',
+  'bishop-v',
+];
 
 /** Handles (control points or data points) of a curve file: what a drag moves. */
 export function handlesOf(curve: CurveFile | undefined): Vec3[] {
@@ -355,7 +361,7 @@ export class App {
   settingsOf(label: string): ViewSettings {
     let s = this.settings.get(label);
     if (!s) {
-      s = { fins: [], scale: 1, samples: 200, frames: 'none', combescure: false };
+      s = { fins: [], scale: 1, samples: 200, frames: false };
       this.settings.set(label, s);
     }
     return s;
@@ -374,10 +380,8 @@ export class App {
       .analysis(this.store.name, label, {
         samples: s.samples,
         by: this.abscissa === 's' ? 'arclength' : 'parameter',
-        fins: s.fins.length > 0 ? s.fins : [],
+        fins: s.fins,
         scale: s.scale,
-        frames: s.frames,
-        combescure: s.combescure,
       })
       .then((a) => {
         this.store.setAnalysis(label, a);
@@ -416,7 +420,6 @@ export class App {
       selected: label === this.selected,
       fins: this.shownFins(label, a),
       frames: s.frames,
-      combescure: s.combescure,
     });
     const root = this.viewports.root;
     root.dataset['fins'] = this.selected

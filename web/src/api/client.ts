@@ -19,6 +19,7 @@ import type {
   ReconstructRequest,
   ReconstructResponse,
 } from './types';
+import { analysisFromServer, entityFromServer, historyFromServer, isCurveKind } from './adapt';
 
 /** An error answer of the server, or a network failure (status 0). */
 export class ApiError extends Error {
@@ -137,15 +138,26 @@ export class Client {
   createDocument(name: string): Promise<DocumentState> {
     return this.request('POST', '/api/documents', { name });
   }
-  getDocument(name: string): Promise<DocumentState> {
-    return this.request('GET', this.doc(name));
+  /** The document with every curve entity's curve file (the summary names them; each is fetched). */
+  async getDocument(name: string): Promise<DocumentState> {
+    const summary = await this.request<DocumentState>('GET', this.doc(name));
+    const entities = await Promise.all(
+      summary.entities.map((e) =>
+        isCurveKind(e.kind)
+          ? this.getEntity(name, String(e.label))
+          : Promise.resolve({ ...e, label: String(e.label) }),
+      ),
+    );
+    return { name: summary.name, revision: summary.revision, entities };
   }
   deleteDocument(name: string): Promise<unknown> {
     return this.request('DELETE', this.doc(name));
   }
 
-  getEntity(doc: string, label: string): Promise<Entity> {
-    return this.request('GET', `${this.doc(doc)}/entities/${encodeURIComponent(label)}`);
+  async getEntity(doc: string, label: string): Promise<Entity> {
+    return entityFromServer(
+      await this.request('GET', `${this.doc(doc)}/entities/${encodeURIComponent(label)}`),
+    );
   }
   createEntity(doc: string, name: string, curve: CurveFile): Promise<ChangeReply> {
     return this.request('POST', `${this.doc(doc)}/entities`, { name, curve });
@@ -177,21 +189,22 @@ export class Client {
   redo(doc: string): Promise<ChangeReply> {
     return this.request('POST', `${this.doc(doc)}/redo`);
   }
-  history(doc: string): Promise<DocHistory> {
-    return this.request('GET', `${this.doc(doc)}/history`);
+  async history(doc: string): Promise<DocHistory> {
+    return historyFromServer(await this.request('GET', `${this.doc(doc)}/history`));
   }
-  analysis(
+  async analysis(
     doc: string,
     label: string,
     req: AnalysisRequest,
     signal?: AbortSignal,
   ): Promise<Analysis> {
-    return this.request(
+    const j = await this.request<Record<string, unknown>>(
       'POST',
       `${this.doc(doc)}/entities/${encodeURIComponent(label)}/analysis`,
       req,
       signal,
     );
+    return analysisFromServer(j, req.by);
   }
 
   law(req: LawRequest): Promise<LawResponse> {

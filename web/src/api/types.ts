@@ -124,15 +124,14 @@ export interface History {
   current?: number;
 }
 
-export type FinKind = 'curvature' | 'torsion' | 'normal' | 'binormal' | 'bishop';
+export type FinKind = 'curvature' | 'torsion' | 'normal' | 'binormal' | 'bishop-u' | 'bishop-v';
 
 export interface AnalysisRequest {
   samples: number;
   by: 'parameter' | 'arclength';
   fins?: FinKind[];
   scale?: number;
-  frames?: 'frenet' | 'bishop' | 'none';
-  combescure?: boolean;
+  features?: boolean;
 }
 
 export interface Frame {
@@ -150,20 +149,20 @@ export interface Feature {
   continuity?: string;
 }
 
-/** What a viewport draws for one curve (POST .../analysis). */
+/** What a viewport draws for one curve (POST .../analysis, regrouped by api/adapt.ts). */
 export interface Analysis {
   t: number[];
+  /** Arc length at each sample (empty when the samples are by parameter and the server sends none). */
   s: number[];
   points: Point[];
   kappa: (number | null)[];
   tau: (number | null)[];
   speed: number[];
-  planar?: boolean;
-  frames?: Frame[];
-  bishop?: Frame[];
-  fins?: Partial<Record<FinKind, Point[][]>>;
-  combescure?: Point[];
-  features?: Feature[];
+  planar: boolean;
+  frames: Frame[];
+  /** Per fin kind: the hairs (base → tip) and the envelope through the tips, as polylines. */
+  fins: Partial<Record<FinKind, Point[][]>>;
+  features: Feature[];
 }
 
 export interface LawRequest {

@@ -94,22 +94,25 @@ export class Graph {
       this.xs = new Float64Array();
       this.ys = new Float64Array();
     } else {
-      this.xs = Float64Array.from(this.abscissa === 's' ? a.s : a.t);
+      this.xs = Float64Array.from(this.abscissa === 's' && a.s.length === a.t.length ? a.s : a.t);
       this.ys = quantityValues(a, this.quantity);
     }
     this.overlay = null;
     if (a && overlay && overlay.points.length > 0) {
       // Overlay on the same abscissa range: resampled by index onto the main xs.
       const oy = quantityValues(overlay, this.quantity);
-      const ox = Float64Array.from(this.abscissa === 's' ? overlay.s : overlay.t);
+      const ox = Float64Array.from(
+        this.abscissa === 's' && overlay.s.length === overlay.t.length ? overlay.s : overlay.t,
+      );
       const scaleX =
         (ox[ox.length - 1]! - ox[0]!) / (this.xs[this.xs.length - 1]! - this.xs[0]! || 1);
       this.overlay = this.xs.map((x) => oy[nearestIndex(ox, ox[0]! + (x - this.xs[0]!) * scaleX)]!);
     }
     this.markers = [];
-    if (a?.features) {
+    if (a) {
+      const byS = this.abscissa === 's' && a.s.length === a.t.length;
       for (const f of a.features) {
-        const x = this.abscissa === 's' ? (f.s ?? NaN) : f.t;
+        const x = byS ? (f.s ?? NaN) : f.t;
         if (!Number.isFinite(x) || this.xs.length === 0) continue;
         const i = nearestIndex(this.xs, x);
         this.markers.push({ x, y: this.ys[i]!, kind: f.kind });

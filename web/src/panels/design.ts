@@ -132,9 +132,12 @@ export class DesignByCurvature {
     length: number,
   ): Promise<void> {
     const p0 = a.points[0]!;
-    const f0 = a.frames?.[0];
-    const tangent = f0?.T ?? direction(a.points[0]!, a.points[1]!);
-    const normal = f0?.N && f0.N.every(Number.isFinite) ? f0.N : perpendicular(tangent);
+    // The server's start frame; where it is undefined (a straight start), the
+    // chord direction and a perpendicular in the X-Y plane stand in.
+    const f0 = a.frames[0];
+    const tangent =
+      f0 && f0.T.every(Number.isFinite) ? f0.T : direction(a.points[0]!, a.points[1]!);
+    const normal = f0 && f0.N.every(Number.isFinite) ? f0.N : perpendicular(tangent);
     this.busy = true;
     try {
       const r = await this.app.run(() =>

@@ -134,7 +134,10 @@ export class Panels {
           title: 'weight',
         });
         input.addEventListener('change', () => {
-          void this.app.patch(label, { weights: [{ index: i, value: Number(input.value) }] });
+          // A weight is construction data: the curve file with this weight replaces the curve.
+          const weights = c.control_points.map((_, k) => c.weights?.[k] ?? 1);
+          weights[i] = Number(input.value);
+          void this.app.replaceCurve(label, { ...c, weights });
         });
         td.appendChild(input);
         tr.appendChild(td);
@@ -143,23 +146,6 @@ export class Panels {
     });
     box.appendChild(table);
     if (c.kind === 'nurbs' || c.kind === 'bezier') {
-      const row = el('div', { class: 'row' });
-      const t = el('input', {
-        type: 'number',
-        step: 'any',
-        value: '0.5',
-        'aria-label': 'Knot to insert',
-      });
-      const ins = el('button', { 'aria-label': 'Insert knot' }, 'Insert knot');
-      ins.addEventListener('click', () => {
-        void this.app.patch(label, { insert_knot: { t: Number(t.value) } });
-      });
-      const elev = el('button', { 'aria-label': 'Elevate degree' }, 'Elevate degree');
-      elev.addEventListener('click', () => {
-        void this.app.patch(label, { elevate_degree: 1 });
-      });
-      row.append(t, ins, elev);
-      box.appendChild(row);
       if (c.kind === 'nurbs')
         box.appendChild(
           el(
@@ -216,8 +202,7 @@ export class Panels {
   private readonly finBoxes = new Map<FinKind, HTMLInputElement>();
   private scaleInput!: HTMLInputElement;
   private samplesInput!: HTMLInputElement;
-  private framesSel!: HTMLSelectElement;
-  private combescure!: HTMLInputElement;
+  private framesBox!: HTMLInputElement;
   private badges!: HTMLElement;
 
   private buildInterrogate(): void {
@@ -258,15 +243,15 @@ export class Panels {
     );
     box.appendChild(r2);
     const r3 = el('div', { class: 'row' });
-    this.framesSel = el('select', { 'aria-label': 'Frames drawn along the curve' });
-    this.framesSel.innerHTML =
-      '<option value="none">no frames</option><option value="frenet">Frenet frames</option><option value="bishop">Bishop frames</option>';
     const cl = el('label', { class: 'inline' });
-    this.combescure = el('input', { type: 'checkbox', 'aria-label': 'Combescure compound' });
-    cl.append(this.combescure, document.createTextNode('Combescure'));
-    r3.append(this.framesSel, cl);
+    this.framesBox = el('input', {
+      type: 'checkbox',
+      'aria-label': 'Frenet frames along the curve',
+    });
+    cl.append(this.framesBox, document.createTextNode('Frenet frames (T N B)'));
+    r3.append(cl);
     box.appendChild(r3);
-    for (const i of [this.scaleInput, this.samplesInput, this.framesSel, this.combescure]) {
+    for (const i of [this.scaleInput, this.samplesInput, this.framesBox]) {
       i.addEventListener('change', () => {
         this.applySettings();
       });
@@ -288,8 +273,7 @@ export class Panels {
     const samples = Math.round(Number(this.samplesInput.value));
     if (Number.isFinite(scale) && scale > 0) s.scale = scale;
     if (samples >= 2 && samples <= 5000) s.samples = samples;
-    s.frames = this.framesSel.value as 'none' | 'frenet' | 'bishop';
-    s.combescure = this.combescure.checked;
+    s.frames = this.framesBox.checked;
     this.app.refreshAnalysis(label);
   }
 
@@ -305,8 +289,7 @@ export class Panels {
       }
       this.scaleInput.value = String(s.scale);
       this.samplesInput.value = String(s.samples);
-      this.framesSel.value = s.frames;
-      this.combescure.checked = s.combescure;
+      this.framesBox.checked = s.frames;
     }
     this.badges.replaceChildren();
     for (const f of a?.features ?? []) {

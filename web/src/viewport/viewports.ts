@@ -25,7 +25,8 @@ export const FIN_COLOURS: Record<FinKind, number> = {
   torsion: 0x3cbf5a,
   normal: 0xf28c28,
   binormal: 0x2bb5d6,
-  bishop: 0xe0c020,
+  'bishop-u': 0xe0c020,
+  'bishop-v': 0x9a7fe0,
 };
 
 interface View {
@@ -46,7 +47,6 @@ interface CurveView {
   handles: THREE.Points;
   fins: THREE.LineSegments;
   frames: THREE.LineSegments;
-  combescure: THREE.Line;
 }
 
 export interface CurveDrawing {
@@ -56,9 +56,8 @@ export interface CurveDrawing {
   polygon: boolean;
   selected: boolean;
   fins: readonly FinKind[];
-  frames: 'none' | 'frenet' | 'bishop';
-  combescure: boolean;
-  /** Fin length multiplier applied by the page to server fin vectors? No: fins come scaled from the server. */
+  /** Frenet frames (T, N, B from the server) drawn along the curve. */
+  frames: boolean;
 }
 
 const VIEW_LABELS: Record<ViewName, string> = {
@@ -434,13 +433,9 @@ export class Viewports {
           new THREE.BufferGeometry(),
           new THREE.LineBasicMaterial({ vertexColors: true }),
         ),
-        combescure: new THREE.Line(
-          new THREE.BufferGeometry(),
-          new THREE.LineBasicMaterial({ color: 0xff6b6b }),
-        ),
       };
       cv.curve.userData['label'] = label;
-      this.scene.add(cv.curve, cv.polygon, cv.handles, cv.fins, cv.frames, cv.combescure);
+      this.scene.add(cv.curve, cv.polygon, cv.handles, cv.fins, cv.frames);
       this.curves.set(label, cv);
     }
     return cv;
@@ -460,7 +455,7 @@ export class Viewports {
     const segs: number[] = [];
     const cols: number[] = [];
     for (const kind of d.fins) {
-      const lines = a?.fins?.[kind] ?? [];
+      const lines = a?.fins[kind] ?? [];
       const col = new THREE.Color(FIN_COLOURS[kind]);
       for (const line of lines) pushStrip(line, col, segs, cols);
     }
@@ -468,8 +463,7 @@ export class Viewports {
     // Frames: short T (red), N (green), B (blue) axes every few samples.
     const fsegs: number[] = [];
     const fcols: number[] = [];
-    const frames =
-      d.frames === 'bishop' ? a?.bishop : d.frames === 'frenet' ? a?.frames : undefined;
+    const frames = d.frames ? a?.frames : undefined;
     if (a && frames && frames.length === a.points.length) {
       const b = bounds(a.points.map(toVec3));
       const len = b ? 0.06 * Math.max(...b.max.map((m, i) => m - b.min[i]!)) : 1;
@@ -495,14 +489,13 @@ export class Viewports {
       }
     }
     setSegments(cv.frames.geometry, fsegs, fcols);
-    setPositions(cv.combescure.geometry, d.combescure && a?.combescure ? a.combescure : []);
     this.requestRender();
   }
 
   removeCurve(label: string): void {
     const cv = this.curves.get(label);
     if (!cv) return;
-    for (const o of [cv.curve, cv.polygon, cv.handles, cv.fins, cv.frames, cv.combescure]) {
+    for (const o of [cv.curve, cv.polygon, cv.handles, cv.fins, cv.frames]) {
       this.scene.remove(o);
       o.geometry.dispose();
     }
