@@ -55,6 +55,26 @@ export function studyTemplate(
   }
 }
 
+/**
+ * An `optimise` job request (POST /api/jobs): a problem file (docs/formats.md
+ * "Problem files") with the algorithm and its budget; two objectives so the
+ * Pareto explorer has a front to show.
+ */
+export const PROBLEM_TEMPLATE = {
+  problem: {
+    name: 'two-objective',
+    variables: [
+      { name: 'x', lower: -2, upper: 2 },
+      { name: 'y', lower: -2, upper: 2 },
+    ],
+    objectives: ['x^2 + y^2', '(x - 1)^2 + (y - 1)^2'],
+  },
+  algorithm: 'nsga2',
+  population: 40,
+  generations: 40,
+  seed: 1,
+};
+
 export class OptimisePanel {
   private readonly kind: HTMLSelectElement;
   private readonly method: HTMLSelectElement;
@@ -129,7 +149,10 @@ export class OptimisePanel {
       e?.curve && isPlanar(e.curve) ? [p[0], p[1]] : [...p],
     );
     const kind = this.kind.value;
-    if (kind === 'problem') return;
+    if (kind === 'problem') {
+      this.text.value = JSON.stringify(PROBLEM_TEMPLATE, null, 1);
+      return;
+    }
     this.text.value = JSON.stringify(
       studyTemplate(
         kind as StudyKind,
@@ -154,7 +177,7 @@ export class OptimisePanel {
       const parsed = JSON.parse(this.text.value) as Record<string, unknown>;
       body =
         this.kind.value === 'problem'
-          ? { problem: parsed, document: this.app.store.name }
+          ? parsed
           : {
               study: parsed,
               document: this.app.store.name,
@@ -329,6 +352,18 @@ export class OptimisePanel {
     });
   }
 
+  /** Page coordinates of Pareto point i (tests, keyboard users' focus ring). */
+  paretoPixel(i: number): { x: number; y: number } | null {
+    const u = this.pareto;
+    const sol = this.front[i];
+    if (!u || !sol) return null;
+    const r = u.over.getBoundingClientRect();
+    return {
+      x: r.left + u.valToPos(sol.objectives[0] ?? NaN, 'x'),
+      y: r.top + u.valToPos(sol.objectives[1] ?? NaN, 'y'),
+    };
+  }
+
   /** Hover: show the candidate's curve handles as a preview polygon. */
   private preview(i: number | null): void {
     const c = i === null ? undefined : this.front[i]?.curve;
@@ -340,8 +375,10 @@ export class OptimisePanel {
   async apply(i: number): Promise<void> {
     const s = this.front[i];
     const label = this.label ?? this.app.selected;
-    if (!s?.curve || !label) {
-      this.info.textContent = 'this point carries no curve';
+    if (!s) return;
+    this.paretoEl.dataset['picked'] = String(i);
+    if (!s.curve || !label) {
+      this.info.textContent = `Pareto point ${i}: objectives ${s.objectives.map((o) => (o ?? NaN).toExponential(3)).join(', ')}; variables ${s.variables.map((v) => v.toPrecision(5)).join(', ')}`;
       return;
     }
     this.app.viewports.setPreview([]);
