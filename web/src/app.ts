@@ -849,6 +849,8 @@ export class App {
   }
 
   private key(ev: KeyboardEvent): void {
+    // A dialog owns the keyboard (Escape closes it natively).
+    if ((document.getElementById('dialog') as HTMLDialogElement).open) return;
     const target = ev.target as HTMLElement | null;
     if (
       target &&
