@@ -278,7 +278,7 @@ test('reload finds everything persisted', async ({ page }) => {
   await selectCurve(page, label);
   const cps = [20, 10, 5];
   await page.locator('input[data-point="2"][data-axis="0"]').fill(String(cps[0]));
-  await page.locator('input[data-point="2"][data-axis="0"]').press('Enter');
+  await page.locator('input[data-point="2"][data-axis="0"]').press('Tab');
   await idle(page);
   await page.reload();
   await idle(page);
@@ -303,7 +303,7 @@ test('a second tab follows edits', async ({ browser }) => {
     .toBe(true);
   await selectCurve(one, label);
   await one.locator('input[data-point="1"][data-axis="2"]').fill('33');
-  await one.locator('input[data-point="1"][data-axis="2"]').press('Enter');
+  await one.locator('input[data-point="1"][data-axis="2"]').press('Tab');
   await expect
     .poll(() =>
       two.evaluate(

@@ -127,6 +127,10 @@ export class App {
           this.refreshHistory();
           break;
         case 'analysis':
+          if (this.fitPending && !this.analysisPending) {
+            this.fitPending = false;
+            this.fitAll();
+          }
           if (this.drag?.label === e.label && this.sentStamp) {
             this.curveStamp = this.sentStamp;
             this.sentStamp = 0;
@@ -179,7 +183,11 @@ export class App {
     location.hash = `doc=${encodeURIComponent(name)}`;
     this.subscribe();
     this.fitAll();
+    // Fit again once the curves' analyses are in (law and natural curves have no handles).
+    this.fitPending = true;
   }
+
+  private fitPending = false;
 
   /** Follow the document's change sets (other tabs, other clients, jobs). */
   private subscribe(): void {

@@ -9,7 +9,7 @@ import type { Graph } from '../graphs/graph';
 import { bumpProfile } from '../graphs/scale';
 
 /** Nodes of the piecewise-linear profile law built from samples. */
-const NODES = 32;
+const NODES = 64;
 
 /**
  * A law of s (docs/formats.md grammar) interpolating (xs, ys) linearly at
