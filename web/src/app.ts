@@ -127,10 +127,6 @@ export class App {
           this.refreshHistory();
           break;
         case 'analysis':
-          if (this.fitPending && !this.analysisPending) {
-            this.fitPending = false;
-            this.fitAll();
-          }
           if (this.drag?.label === e.label && this.sentStamp) {
             this.curveStamp = this.sentStamp;
             this.sentStamp = 0;
@@ -400,6 +396,10 @@ export class App {
       .finally(() => {
         this.analysisBusy.delete(label);
         if (this.analysisDirty.delete(label)) this.refreshAnalysis(label);
+        if (this.fitPending && !this.analysisPending) {
+          this.fitPending = false;
+          this.fitAll();
+        }
       });
   }
 
