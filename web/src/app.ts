@@ -180,7 +180,7 @@ export class App {
     this.subscribe();
     this.fitAll();
     // Fit again once the curves' analyses are in (law and natural curves have no handles).
-    this.fitPending = true;
+    this.fitPending = this.store.entities.size > 0;
   }
 
   private fitPending = false;
