@@ -13,6 +13,7 @@ packages=(
   libgtest-dev libgmock-dev librapidcheck-dev libbenchmark-dev
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
   libpagmo-dev libboost-serialization-dev
+  python3 python3-jsonschema
   chromium
 )
 # The web workbench (web/) needs Node.js >= 20 and npm; Debian's nodejs/npm

@@ -98,13 +98,8 @@ struct Command {
 [[nodiscard]] Command add_analyse(CLI::App& app);
 /// `hula law`: evaluate, differentiate and analyse a law expression.
 [[nodiscard]] Command add_law(CLI::App& app);
-/// Values and derivatives 0..order of a law at parameters: result[i][k * dimension + c].
-/// @throws hula::Error(Errc::OutOfDomain) naming `parameter[i]` where a value is undefined
-[[nodiscard]] std::vector<std::vector<double>> law_derivatives(const law::Law& law, const std::string& parameter,
-                                                               std::span<const double> ts, int order);
-/// {"t", "derivatives": [[...], ...]} entries (the `hula eval` shape; scalars as one-element arrays).
-[[nodiscard]] Json law_results_to_json(std::span<const double> ts, const std::vector<std::vector<double>>& values,
-                                       int dimension, int order);
+/// `hula serve`: the local HTTP JSON API.
+[[nodiscard]] Command add_serve(CLI::App& app);
 /// `hula reconstruct`: a curve from its curvature and torsion laws (natural equations).
 [[nodiscard]] Command add_reconstruct(CLI::App& app);
 /// `hula info`: the analysis of a curve file.

@@ -6,6 +6,7 @@
 
 #include "commands/common.hpp"
 #include "hula/core/error.hpp"
+#include "hula/io/law_values.hpp"
 
 namespace hula::cli {
 
@@ -49,8 +50,8 @@ int run_eval(const EvalArgs& a) {
                   ErrorWhere{.field = "t", .index = i});
     }
     Json doc = Json::object();
-    doc["results"] = law_results_to_json(ts, law_derivatives(lc.law, lc.parameter, us, a.derivatives),
-                                         lc.law.dimension(), a.derivatives);
+    doc["results"] = io::law_results_to_json(ts, io::law_derivatives(lc.law, lc.parameter, us, a.derivatives),
+                                             lc.law.dimension(), a.derivatives);
     print_json(doc);
     return kExitOk;
   }

@@ -4,69 +4,19 @@
 // at --at have the shape of `hula eval` ({"results": [{"t", "derivatives":
 // [[value], [first], ...]}]}, scalars as one-element arrays); also, on request,
 // the printed N-th derivative, all roots, the extrema and the integral on an
-// interval. Shared with `hula eval` for law curve files: law_derivatives().
+// interval (io/law_values.hpp, shared with `hula eval` and the HTTP API).
 #include <memory>
 #include <string>
 
 #include "commands/common.hpp"
 #include "hula/core/error.hpp"
+#include "hula/io/law_values.hpp"
 #include "hula/law/antiderivative.hpp"
 #include "hula/law/derive.hpp"
 #include "hula/law/parser.hpp"
 #include "hula/law/roots.hpp"
-#include "hula/law/singularities.hpp"
-#include "hula/law/tape.hpp"
 
 namespace hula::cli {
-
-std::vector<std::vector<double>> law_derivatives(const law::Law& l, const std::string& parameter,
-                                                 std::span<const double> ts, int order) {
-  const std::vector<law::Law> laws = law::derivatives(l, parameter, order);
-  const std::string in[1] = {parameter};
-  const law::Tape tape = law::Tape::compile(laws, in);
-  std::vector<std::vector<double>> out;
-  law::Workspace w = tape.make_workspace();
-  for (std::size_t i = 0; i < ts.size(); ++i) {
-    std::vector<double> v(tape.output_count());
-    if (!tape.evaluate(ts.subspan(i, 1), v, w)) {
-      // Name the innermost undefined subexpression (of the law or of the derivative that failed).
-      std::string why;
-      for (const law::Law& d : laws)
-        if (auto cause = law::explain_undefined(d, parameter, ts[i])) {
-          why = " (" + cause->expression + ": " + cause->reason + ")";
-          break;
-        }
-      throw Error(Errc::OutOfDomain,
-                  parameter + "[" + std::to_string(i) + "] = " + format_number(ts[i]) +
-                      (order == 0 ? std::string(": the law is undefined there")
-                                  : ": the law or one of its first " + std::to_string(order) +
-                                        " derivatives is undefined there") +
-                      why,
-                  ErrorWhere{.field = parameter, .index = i});
-    }
-    out.push_back(std::move(v));
-  }
-  return out;
-}
-
-Json law_results_to_json(std::span<const double> ts, const std::vector<std::vector<double>>& values, int dimension,
-                         int order) {
-  Json results = Json::array();
-  const auto d = static_cast<std::size_t>(dimension);
-  for (std::size_t i = 0; i < ts.size(); ++i) {
-    Json ders = Json::array();
-    for (std::size_t k = 0; k <= static_cast<std::size_t>(order); ++k) {
-      Json v = Json::array();
-      for (std::size_t c = 0; c < d; ++c) v.push_back(values[i][k * d + c]);
-      ders.push_back(std::move(v));
-    }
-    Json r = Json::object();
-    r["t"] = ts[i];
-    r["derivatives"] = std::move(ders);
-    results.push_back(std::move(r));
-  }
-  return results;
-}
 
 namespace {
 
@@ -127,8 +77,8 @@ int run_law(const LawArgs& a) {
   doc["dimension"] = l.dimension();
   if (!a.at.empty()) {
     const std::vector<double> ts = parse_number_list(a.at, a.parameter);
-    doc["results"] =
-        law_results_to_json(ts, law_derivatives(l, a.parameter, ts, a.derivatives), l.dimension(), a.derivatives);
+    doc["results"] = io::law_results_to_json(ts, io::law_derivatives(l, a.parameter, ts, a.derivatives), l.dimension(),
+                                             a.derivatives);
   }
   if (a.print_derivative >= 0) {
     Json d = Json::object();
