@@ -1,9 +1,9 @@
-// Entry point: take the token, open the document named in the address
+// Entry point: open the document named in the address
 // (#doc=NAME, default workbench.hula) and expose window.__hula for tests.
 
 import './style.css';
 import { App, waitIdle } from './app';
-import { Client, takeToken } from './api/client';
+import { Client } from './api/client';
 
 declare global {
   interface Window {
@@ -15,8 +15,8 @@ declare global {
   }
 }
 
-const token = takeToken(location, sessionStorage, history);
-const client = new Client(location.origin, token);
+// Authorised by the cookie `hula serve` sets when the page is opened with ?token=.
+const client = new Client(location.origin);
 const hash = new URLSearchParams(location.hash.slice(1));
 const docName = hash.get('doc') ?? 'workbench.hula';
 const app = new App(client, docName);

@@ -1,5 +1,5 @@
 // The HTTP client of the workbench: one place that talks to `hula serve`.
-// Every request carries the token (Bearer); errors become ApiError with the
+// Requests are authorised by the server's HttpOnly cookie; errors become ApiError with the
 // server's code, message and where; the pending count feeds __hula.idle().
 
 import type {
@@ -51,9 +51,14 @@ export class Client {
   /** Called when a request fails because the server is unreachable. */
   onOffline: (() => void) | null = null;
 
+  /**
+   * `token` is sent as a Bearer token when given; the page itself gives none:
+   * `hula serve` turns `?token=` into an HttpOnly cookie and redirects, so
+   * the token never reaches script.
+   */
   constructor(
     readonly base: string,
-    readonly token: string,
+    readonly token = '',
   ) {}
 
   get pending(): number {
@@ -80,7 +85,7 @@ export class Client {
         const init: RequestInit = {
           method,
           headers: {
-            Authorization: `Bearer ${this.token}`,
+            ...(this.token ? { Authorization: `Bearer ${this.token}` } : {}),
             ...(body === undefined ? {} : { 'Content-Type': 'application/json' }),
           },
           credentials: 'same-origin',
@@ -234,24 +239,4 @@ export class Client {
   jobEventsUrl(id: string): string {
     return this.eventsUrl(`/api/jobs/${encodeURIComponent(id)}/events`);
   }
-}
-
-/**
- * The token the page was opened with (`?token=`), kept in sessionStorage so a
- * reload without the query still authorises; the query is removed from the
- * address bar so it is not copied around.
- */
-export function takeToken(loc: Location, storage: Storage, history: History | null): string {
-  const params = new URLSearchParams(loc.search);
-  const fromUrl = params.get('token');
-  if (fromUrl) {
-    storage.setItem('hula.token', fromUrl);
-    if (history) {
-      params.delete('token');
-      const q = params.toString();
-      history.replaceState(null, '', loc.pathname + (q ? `?${q}` : '') + loc.hash);
-    }
-    return fromUrl;
-  }
-  return storage.getItem('hula.token') ?? '';
 }
