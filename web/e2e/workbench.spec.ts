@@ -7,7 +7,6 @@ import type { Vec3 } from '../src/viewport/math';
 import {
   addCurve,
   analysis,
-  api,
   curves,
   distanceToPolyline,
   expect,
@@ -247,8 +246,7 @@ test('run a curvature-matching study', async ({ page }) => {
 // NSGA-II on a two-objective problem: the Pareto explorer shows the front; hovering a point
 // previews it, clicking picks it (the point's objectives are those of the job's front).
 test('pick a Pareto point', async ({ page }) => {
-  const doc = await newDoc('pareto');
-  await openApp(page, doc);
+  await openApp(page, 'pareto.hula');
   await page.locator('#opt-kind').selectOption('problem');
   await page.locator('#opt-start').click();
   await expect(page.locator('#opt-info')).toHaveAttribute('data-state', 'done', {
@@ -259,6 +257,7 @@ test('pick a Pareto point', async ({ page }) => {
   const n = Number(await pareto.getAttribute('data-points'));
   expect(n).toBeGreaterThan(5);
   const k = Math.floor(n / 2);
+  await pareto.scrollIntoViewIfNeeded();
   const at = await page.evaluate((i) => window.__hula.app.optimise.paretoPixel(i), k);
   await page.mouse.move(at!.x, at!.y);
   await expect(pareto).toHaveAttribute('data-hover', String(k));
@@ -317,17 +316,22 @@ test('a second tab follows edits', async ({ browser }) => {
   await ctx.close();
 });
 
-// An error from the server reaches the user with its code and field.
+// An error from the server reaches the user with its code and field: a curvature law with an
+// unclosed parenthesis sent to the natural-equation route.
 test('error toasts carry the server message and field', async ({ page }) => {
-  const doc = await newDoc('errors');
-  await openApp(page, doc);
-  await page.keyboard.press('l');
-  await page.locator('dialog input[name="expression"]').fill('vec(cos(t), sin(t)');
+  await openApp(page, 'errors.hula');
+  await page.locator('.toast').evaluateAll((ts) => {
+    ts.forEach((t) => {
+      t.remove();
+    });
+  });
+  await page.keyboard.press('k');
+  await page.locator('dialog input[name="kappa"]').fill('0.02*sin(s');
   await page.locator('dialog button[value="ok"]').click();
   const toast = page.locator('.toast').first();
   await expect(toast).toBeVisible();
   await expect(toast).toHaveAttribute('data-code', 'ParseError');
-  await expect(toast).toContainText('expression');
-  const h = await api<{ status: string }>('GET', '/api/health');
-  expect(h.status).toBe('ok');
+  await expect(toast).toHaveAttribute('data-field', 'kappa');
+  await expect(toast).toContainText('kappa');
+  await shot(page, 'error-toast');
 });

@@ -322,8 +322,8 @@ export class OptimisePanel {
         legend: { show: false },
         scales: { x: { time: false, range: [xr.min, xr.max] }, y: { range: [yr.min, yr.max] } },
         axes: [
-          { stroke: '#aab4c3', label: 'curvature error', size: 30 },
-          { stroke: '#aab4c3', label: 'torsion error', size: 55 },
+          { stroke: '#aab4c3', label: this.objectiveNames[0], size: 30 },
+          { stroke: '#aab4c3', label: this.objectiveNames[1], size: 55 },
         ],
         series: [
           {},
@@ -350,6 +350,13 @@ export class OptimisePanel {
       const i = this.pareto?.cursor.idx;
       if (i !== null && i !== undefined) void this.apply(i);
     });
+  }
+
+  /** Axis names of the Pareto explorer: the study's errors, or the problem's objectives. */
+  private get objectiveNames(): [string, string] {
+    return this.kind.value === 'match-curvature-torsion'
+      ? ['curvature error', 'torsion error']
+      : ['objective 1', 'objective 2'];
   }
 
   /** Page coordinates of Pareto point i (tests, keyboard users' focus ring). */
