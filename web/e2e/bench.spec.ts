@@ -8,7 +8,17 @@ import { test } from '@playwright/test';
 import { readdirSync, readFileSync, writeFileSync, mkdirSync } from 'node:fs';
 import { join } from 'node:path';
 import { gzipSync } from 'node:zlib';
-import { addCurve, base, expect, idle, newDoc, openApp, pixelOf, token } from './fixtures';
+import {
+  addCurve,
+  base,
+  expect,
+  idle,
+  needsDocuments,
+  newDoc,
+  openApp,
+  pixelOf,
+  token,
+} from './fixtures';
 
 const results: Record<string, number> = {};
 
@@ -45,6 +55,7 @@ test('first load', async ({ page }) => {
 });
 
 test('drag a point of a 100-control-point curve with fins and the κ graph', async ({ page }) => {
+  needsDocuments();
   const doc = await newDoc('perf');
   const n = 100;
   const cps = Array.from({ length: n }, (_, i) => [i * 2, 20 * Math.sin(i / 7), 0]);

@@ -5,10 +5,11 @@ import { mkdtempSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { randomBytes } from 'node:crypto';
-import { expect, idle, openApp } from './fixtures';
+import { expect, idle, needsDocuments, openApp } from './fixtures';
 import { startServer, stopServer } from './server';
 
 test('the page survives a server restart', async ({ page }) => {
+  needsDocuments();
   const workspace = mkdtempSync(join(tmpdir(), 'hula-e2e-restart-'));
   const tokenFile = join(workspace, '..', `hula-e2e-restart-token-${process.pid}`);
   writeFileSync(tokenFile, randomBytes(32).toString('hex'), { mode: 0o600 });

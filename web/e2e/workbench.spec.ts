@@ -13,6 +13,7 @@ import {
   entity,
   history,
   idle,
+  needsDocuments,
   newDoc,
   openApp,
   pixelOf,
@@ -49,6 +50,7 @@ async function selectCurve(page: import('@playwright/test').Page, label: string)
 
 // Appendix 8.1: clicks in the top view make an interpolated spline through those points in X-Y.
 test('draw a spline by clicks in the top view', async ({ page }) => {
+  needsDocuments();
   const doc = await newDoc('spline');
   await openApp(page, doc);
   await page.keyboard.press('s');
@@ -77,6 +79,7 @@ test('draw a spline by clicks in the top view', async ({ page }) => {
 
 // Appendix 8.2: three Bézier points in the top view (z = 0) and the fourth in the front view (y = 0).
 test('draw a 3-D Bézier across the top and front views', async ({ page }) => {
+  needsDocuments();
   const doc = await newDoc('bezier');
   await openApp(page, doc);
   await page.keyboard.press('b');
@@ -106,6 +109,7 @@ test('draw a 3-D Bézier across the top and front views', async ({ page }) => {
 
 // Drag a control point: new position on the server, κ graph changed, exactly one new history step; undo and redo.
 test('drag a control point, then undo and redo', async ({ page }) => {
+  needsDocuments();
   const doc = await newDoc('drag');
   const label = await addCurve(doc, 'b', spaceBezier);
   await openApp(page, doc);
@@ -153,6 +157,7 @@ test('drag a control point, then undo and redo', async ({ page }) => {
 
 // Appendix 8.4/8.6: a planar curve shows only curvature and normal fins; a space curve all of them.
 test('fins on a planar and a space curve', async ({ page }) => {
+  needsDocuments();
   const doc = await newDoc('fins');
   const planar = await addCurve(doc, 'planar', planarSpline);
   const space = await addCurve(doc, 'space', spaceBezier);
@@ -179,6 +184,7 @@ test('fins on a planar and a space curve', async ({ page }) => {
 
 // Design by curvature: drag the κ(s) graph up at mid-length; the server's κ there follows the edit.
 test('edit the curvature graph', async ({ page }) => {
+  needsDocuments();
   const doc = await newDoc('design');
   const label = await addCurve(doc, 'arc', {
     kind: 'interpolated',
@@ -219,6 +225,7 @@ test('edit the curvature graph', async ({ page }) => {
 
 // A curvature-matching study: progress events arrive, the result appears, the run is listed.
 test('run a curvature-matching study', async ({ page }) => {
+  needsDocuments();
   const doc = await newDoc('study');
   const label = await addCurve(doc, 'pts', {
     kind: 'interpolated',
@@ -271,6 +278,7 @@ test('pick a Pareto point', async ({ page }) => {
 
 // Reload: the document (persisted by the server) comes back as it was.
 test('reload finds everything persisted', async ({ page }) => {
+  needsDocuments();
   const doc = await newDoc('reload');
   const label = await addCurve(doc, 'b', spaceBezier);
   await openApp(page, doc);
@@ -290,6 +298,7 @@ test('reload finds everything persisted', async ({ page }) => {
 
 // Two tabs on one document stay in step through the document events.
 test('a second tab follows edits', async ({ browser }) => {
+  needsDocuments();
   const doc = await newDoc('tabs');
   const ctx = await browser.newContext();
   const one = await ctx.newPage();
