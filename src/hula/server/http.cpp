@@ -72,7 +72,10 @@ unsigned http_status(Errc code) noexcept {
     case Errc::OutOfDomain:
     case Errc::NumericalFailure:
     case Errc::ScaleOutOfRange:
+    case Errc::HelperFailure:  // the exchange helper failed on the file the request named
       return 422;
+    case Errc::Unsupported:  // the document's kernel backend has no such operation
+      return 501;
     case Errc::IoError:
       return 500;
   }
