@@ -13,8 +13,6 @@ namespace hula::io {
 
 using namespace studies;  // NOLINT(google-build-using-namespace): this file is the studies' codec
 
-
-
 namespace {
 
 const json::JsonPath kRoot = json::root_path("");

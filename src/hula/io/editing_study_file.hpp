@@ -10,10 +10,10 @@
 #include <vector>
 
 #include "hula/io/json_curve.hpp"
+#include "hula/io/study_file.hpp"
 #include "hula/studies/fin_compound.hpp"
 #include "hula/studies/hermite_edit.hpp"
 #include "hula/studies/projection_edit.hpp"
-#include "hula/io/study_file.hpp"
 
 namespace hula::io {
 

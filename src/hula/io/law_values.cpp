@@ -4,9 +4,8 @@
 // first undefined point is named.
 #include "hula/io/law_values.hpp"
 
-#include <limits>
-
 #include <cmath>
+#include <limits>
 
 #include "hula/core/error.hpp"
 #include "hula/law/derive.hpp"
@@ -84,6 +83,5 @@ Json law_results_to_json(std::span<const double> ts, const LawValues& values, in
   }
   return results;
 }
-
 
 }  // namespace hula::io

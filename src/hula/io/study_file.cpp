@@ -23,8 +23,7 @@ StudyDocument parse_study_json(std::string_view text, std::string_view expected_
   out.body = json::parse_json_text(text, "study file");
   const Json& doc = out.body;
   if (!doc.is_object()) json::type_error(doc, root_path(""), "a JSON object (a study file)");
-  const std::string format =
-      json::get_string(json::require_member(doc, root_path(""), "format"), root_path("format"));
+  const std::string format = json::get_string(json::require_member(doc, root_path(""), "format"), root_path("format"));
   if (format != "hula-study")
     throw Error(Errc::ParseError, "format = \"" + format + "\": a study file must have \"format\": \"hula-study\"",
                 root_path("format").where);
@@ -35,8 +34,8 @@ StudyDocument parse_study_json(std::string_view text, std::string_view expected_
                 "study = \"" + out.header.kind + "\": this command runs \"" + std::string(expected_kind) + "\" studies",
                 root_path("study").where);
   if (const Json* s = json::optional_member(doc, "seed"))
-    out.header.seed = static_cast<std::uint64_t>(
-        json::get_integer(*s, root_path("seed"), 0, std::numeric_limits<long long>::max()));
+    out.header.seed =
+        static_cast<std::uint64_t>(json::get_integer(*s, root_path("seed"), 0, std::numeric_limits<long long>::max()));
   if (const Json* t = json::optional_member(doc, "threads"))
     out.header.threads = static_cast<std::size_t>(json::get_integer(*t, root_path("threads"), 0, 1024));
   return out;

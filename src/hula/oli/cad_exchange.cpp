@@ -26,9 +26,8 @@ std::vector<ExportCurve> export_items(const Document& document, std::span<const 
   return out;
 }
 
-ExportReport export_entities(const Document& document, std::span<const Label> labels,
-                             const std::filesystem::path& path, ExchangeFormat format,
-                             const ExchangeOptions& options) {
+ExportReport export_entities(const Document& document, std::span<const Label> labels, const std::filesystem::path& path,
+                             ExchangeFormat format, const ExchangeOptions& options) {
   const auto items = export_items(document, labels);
   return export_curves(path, items, format, options);
 }

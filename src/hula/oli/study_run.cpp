@@ -8,10 +8,10 @@
 #include "hula/core/error.hpp"
 #include "hula/curve/curve.hpp"
 #include "hula/io/json_curve.hpp"
-#include "hula/oli/detail/entity_codec.hpp"
 #include "hula/io/match_study_file.hpp"
 #include "hula/io/path_resolver.hpp"
 #include "hula/io/study_file.hpp"
+#include "hula/oli/detail/entity_codec.hpp"
 #include "hula/studies/match_study.hpp"
 
 #ifndef HULA_VERSION
