@@ -45,7 +45,7 @@ TEST(Features, EllipseCurvatureExtrema) {
     EXPECT_EQ(f[i].kind, i % 2 == 0 ? FeatureKind::CurvatureMinimum : FeatureKind::CurvatureMaximum);
     EXPECT_NEAR(f[i].curvature, i % 2 == 0 ? 1.25 / 9.0 : 3.0 / (1.25 * 1.25), 1e-12);
   }
-  EXPECT_TRUE(inflections(e, dom).empty());  // convex
+  EXPECT_TRUE(inflections(e).empty());  // convex
 }
 
 // checks the twisted cubic (t, t², t³) on [−1, 1] (Bézier by blossoms): τ = 3/(9t⁴ + 9t² + 1) has its only
