@@ -44,13 +44,14 @@ TEST(Fins, HelixTorsion) {
   FinOptions o;
   o.kind = FinKind::Torsion;
   o.scale = 10.0;
-  const Fins f = fins(curve::Curve::from_law("vec(2*cos(t), 2*sin(t), 0.5*t)", "t", {0.0, 6.0}), o);
+  const curve::Curve helix = curve::Curve::from_law("vec(2*cos(t), 2*sin(t), 0.5*t)", "t", {0.0, 6.0});
+  const Fins f = fins(helix, o);
   for (std::size_t i = 0; i < f.tip.size(); ++i) {
     const FrenetPoint p = h.at(f.t[i]);
     EXPECT_LT(norm(f.tip[i] - f.base[i] - p.binormal * (10.0 * 0.5 / 4.25)), 1e-12);
   }
   o.kind = FinKind::BishopU;
-  const Fins b = fins(h, {0.0, 6.0}, o);
+  const Fins b = fins(helix, o);
   for (std::size_t i = 0; i < b.tip.size(); ++i) {
     EXPECT_NEAR(dot(b.tip[i] - b.base[i], h.at(b.t[i]).tangent), 0.0, 1e-12);
     EXPECT_NEAR(norm(b.tip[i] - b.base[i]), 10.0, 1e-12);
