@@ -13,6 +13,7 @@ packages=(
   libgtest-dev libgmock-dev librapidcheck-dev libbenchmark-dev
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
   libpagmo-dev libboost-serialization-dev
+  help2man util-linux
 )
 
 missing=()

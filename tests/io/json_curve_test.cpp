@@ -134,7 +134,8 @@ TEST(JsonCurveErrors, UnknownKindNamesTheKind) {
   HULA_EXPECT_ERROR(parse_curve_json(R"({"kind": "clothoid"})"), Errc::ParseError, "kind = \"clothoid\"");
   EXPECT_EQ(parse_error_of(R"({"kind": "clothoid"})").where().field, "kind");
   HULA_EXPECT_ERROR(parse_curve_json(R"({"kind": 7})"), Errc::ParseError, "kind = 7 must be a string");
-  HULA_EXPECT_ERROR(parse_curve_json(R"([1, 2])"), Errc::ParseError, "document = [1,2] must be a JSON object");
+  HULA_EXPECT_ERROR(parse_curve_json(R"([1, 2])"), Errc::ParseError,
+                    "document = an array of 2 elements must be a JSON object");
 }
 
 // checks: a missing member is named.

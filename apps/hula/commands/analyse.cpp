@@ -12,6 +12,7 @@
 #include <numbers>
 
 #include "commands/common.hpp"
+#include "commands/study_common.hpp"
 #include "hula/core/error.hpp"
 #include "hula/diffgeom/bishop.hpp"
 #include "hula/diffgeom/continuity.hpp"
@@ -363,6 +364,7 @@ void write_svgs(const std::filesystem::path& dir, const io::CurveFile& file, con
 }
 
 int run_analyse(const AnalyseArgs& a) {
+  if (!a.svg.empty()) check_svg_directory(a.svg);  // before the computation, not after
   const io::CurveFile file = io::read_curve_file(a.curve);
   const Subject subject(file);
   const nurbs::Interval dom = subject.domain();

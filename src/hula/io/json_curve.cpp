@@ -12,6 +12,7 @@
 #include "hula/core/error.hpp"
 #include "hula/io/atomic_file.hpp"
 #include "hula/io/json_read.hpp"
+#include "hula/io/json_write.hpp"
 #include "hula/law/convert.hpp"
 #include "hula/law/parser.hpp"
 
@@ -107,7 +108,9 @@ CurveFile read_nurbs(const Json& doc) {
   json::PointArray cps =
       json::get_points(json::require_member(doc, root, "control_points"), root_path("control_points"));
   std::vector<double> weights;
-  if (const Json* w = json::optional_member(doc, "weights")) weights = json::get_number_array(*w, root_path("weights"));
+  if (const Json* w = json::optional_member(doc, "weights"))
+    weights = json::get_nonempty_number_array(
+        *w, root_path("weights"), "give one weight per control point, or leave \"weights\" out for a polynomial curve");
   nurbs::NurbsCurve curve(static_cast<int>(degree), std::move(knots), std::move(cps.points), std::move(weights),
                           cps.dimension);
   return CurveFile{std::move(curve), CurveKind::Nurbs, std::nullopt, std::nullopt};
@@ -123,7 +126,9 @@ CurveFile read_bezier(const Json& doc) {
                 "control_points has " + std::to_string(n) + " point(s); a Bézier curve needs at least 2",
                 {.field = "control_points"});
   std::vector<double> weights;
-  if (const Json* w = json::optional_member(doc, "weights")) weights = json::get_number_array(*w, root_path("weights"));
+  if (const Json* w = json::optional_member(doc, "weights"))
+    weights = json::get_nonempty_number_array(
+        *w, root_path("weights"), "give one weight per control point, or leave \"weights\" out for a polynomial curve");
   // Degree n - 1 on [0, 1]: n zeros followed by n ones (the Bernstein basis).
   std::vector<double> knots(2 * n, 0.0);
   for (std::size_t i = n; i < 2 * n; ++i) knots[i] = 1.0;
@@ -148,8 +153,11 @@ CurveFile read_interpolated(const Json& doc) {
   std::vector<double> parameters, knots;
   const Json* jp = json::optional_member(doc, "parameters");
   const Json* jk = json::optional_member(doc, "knots");
-  if (jp) parameters = json::get_number_array(*jp, root_path("parameters"));
-  if (jk) knots = json::get_number_array(*jk, root_path("knots"));
+  if (jp)
+    parameters = json::get_nonempty_number_array(*jp, root_path("parameters"),
+                                                 "give one parameter per point, or leave \"parameters\" out");
+  if (jk)
+    knots = json::get_nonempty_number_array(*jk, root_path("knots"), "give one knot per point, or leave \"knots\" out");
   if (jp && jk) {
     // "knots" is the thesis's interpolate-knots: the same quantity as "parameters".
     if (knots.size() != parameters.size())
@@ -314,9 +322,7 @@ Json interpolated_to_json(const InterpolationInputs& inputs) {
   return doc;
 }
 
-std::string to_file_text(const Json& document) {
-  return document.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
-}
+std::string to_file_text(const Json& document) { return format_json(document); }
 
 void write_curve_file(const std::filesystem::path& path, const nurbs::NurbsCurve& curve) {
   write_file_atomically(path, to_file_text(curve_to_json(curve)));

@@ -153,7 +153,8 @@ struct CurveFile {
 [[nodiscard]] Json interpolated_to_json(const InterpolationInputs& inputs);
 /// The "law" kind document of a law curve: kind, expression, parameter, domain.
 [[nodiscard]] Json law_to_json(const LawCurve& curve);
-/// Serialises a document as the files are written: 2-space indentation, final newline.
+/// Serialises a document as the files are written (format_json: 2-space indentation, arrays of
+/// numbers on one line, final newline).
 [[nodiscard]] std::string to_file_text(const Json& document);
 /// Writes a curve as a "nurbs" file, atomically.
 /// @throws hula::Error(Errc::IoError) naming the path

@@ -1,12 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include "hula/studies/study_file.hpp"
 
-#include <fstream>
 #include <limits>
-#include <sstream>
 #include <vector>
 
 #include "hula/core/error.hpp"
+#include "hula/io/atomic_file.hpp"
 #include "hula/io/json_read.hpp"
 
 namespace hula::studies {
@@ -43,12 +42,7 @@ StudyDocument parse_study_json(std::string_view text, std::string_view expected_
 }
 
 StudyDocument read_study_file(const std::filesystem::path& path, std::string_view expected_kind) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(Errc::IoError, "cannot read study file '" + path.string() + "'");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw Error(Errc::IoError, "cannot read study file '" + path.string() + "'");
-  return parse_study_json(text.str(), expected_kind);
+  return parse_study_json(io::read_text_file(path), expected_kind);
 }
 
 void check_members(const Json& body, std::initializer_list<std::string_view> kind_members) {
