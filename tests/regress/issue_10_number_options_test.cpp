@@ -27,10 +27,10 @@ TEST(Issue10NumberOptions, IntegersAreSigned64BitAndRangeChecked) {
       {{"--population=-5"}, "--population -5: must be an integer in [1, 1000000]"},
       {{"--population", "99999999999999999999"}, "--population 99999999999999999999: outside the signed 64-bit range"},
       {{"--population", "7"}, "--population 7: must be an even number in [2, 1000000]"},
-      {{"--seed", "-1"}, "--seed -1: must be an integer in [0, 9223372036854775807]"},
+      {{"--seed", "-1"}, "--seed -1: must be an integer >= 0"},
       {{"--threads", "-1"}, "--threads -1: must be an integer in [0, 1024]"},
       {{"--dimension", "0"}, "--dimension 0: must be an integer in [1, 100000]"},
-      {{"--generations", "1e3"}, "--generations 1e3: not an integer"},
+      {{"--evaluations", "1e3"}, "--evaluations 1e3: not an integer"},
       {{"--time", "0"}, "--time 0: must be a number > 0"},
       {{"--crossover", "nan"}, "--crossover nan: must be a number in [0, 1]"},
   };
@@ -46,7 +46,7 @@ TEST(Issue10NumberOptions, StudyThreadsAndSeedAreRangeChecked) {
   for (const std::string& flag : {std::string("--threads"), std::string("--seed")}) {
     const ProcessResult r = hula({"fair-knots", "study.json", flag, "-1"});
     EXPECT_EQ(r.exit_code, 2) << r.err;
-    EXPECT_NE(message_of(r).find(flag + " -1: must be an integer in [0, "), std::string::npos) << r.err;
+    EXPECT_NE(message_of(r).find(flag + " -1: must be an integer"), std::string::npos) << r.err;
   }
 }
 

@@ -18,7 +18,7 @@ std::string long_match_study() {
   return R"({"format": "hula-study", "version": 1, "study": "match-curvature", "seed": 1, "threads": 1,
     "points": [[0, 0], [5, 20], [40, 0]], "lower": [[0, 0], [30, 30], [0, 0]], "upper": [[0, 0], [35, 30], [0, 0]],
     "target": {"of_points": [[0, 0], [5, 20], [40, 0]], "mirror": true}, "samples": 200, "method": "ga",
-    "ga": {"algorithm": "binary", "population": 50, "generations": 100000000}})";
+    "ga": {"algorithm": "binary", "population": 50, "generations": 1000000}})";
 }
 
 // checks: --time ends the GA with its best so far: exit 0, termination WallTime, a curve in the result.

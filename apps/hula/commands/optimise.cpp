@@ -327,6 +327,14 @@ int run_optimise(const OptimiseArgs& a) {
     reference = std::vector<double>(problem.objectives, 1.1);
   }
   apply_bounds(problem, a);
+  // Binary coding needs a resolution per variable; a built-in problem has none unless --precision gives it.
+  if (algorithm.kind == Algorithm::BinaryGa)
+    for (std::size_t i = 0; i < problem.variables.size(); ++i)
+      if (!(problem.variables[i].precision > 0.0))
+        throw Error(Errc::InvalidOption,
+                    "--precision: ga-binary needs the binary-coding resolution of the variables (variable " +
+                        std::to_string(i) + " has none), e.g. --precision 1e-6",
+                    {.field = "precision", .index = i});
   if (a.reference) {
     if (problem.objectives == 1) {
       throw Error(Errc::InvalidOption,

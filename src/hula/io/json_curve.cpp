@@ -52,8 +52,8 @@ nurbs::Parameterisation parameterisation_from_name(std::string_view name, std::s
   if (name == "chord") return nurbs::Parameterisation::ChordLength;
   if (name == "centripetal") return nurbs::Parameterisation::Centripetal;
   throw Error(Errc::ParseError,
-              std::string(field) + " = \"" + std::string(name) +
-                  "\" is not a parameterisation (expected \"uniform\", \"chord\" or \"centripetal\")",
+              std::string(field) + " = " + json::quote(std::string(name)) +
+                  " is not a parameterisation (expected \"uniform\", \"chord\" or \"centripetal\")",
               {.field = std::string(field)});
 }
 
@@ -291,10 +291,10 @@ CurveFile curve_from_json(const Json& document) {
   if (kind == "bezier") return read_bezier(document);
   if (kind == "interpolated") return read_interpolated(document);
   if (kind == "law") return read_law(document);
-  throw Error(
-      Errc::ParseError,
-      "kind = \"" + kind + "\" is not a known curve kind (expected \"nurbs\", \"bezier\", \"interpolated\" or \"law\")",
-      {.field = "kind"});
+  throw Error(Errc::ParseError,
+              "kind = " + json::quote(kind) +
+                  " is not a known curve kind (expected \"nurbs\", \"bezier\", \"interpolated\" or \"law\")",
+              {.field = "kind"});
 }
 
 CurveFile parse_curve_json(std::string_view text) { return curve_from_json(json::parse_json_text(text, "curve file")); }

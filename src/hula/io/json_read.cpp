@@ -51,6 +51,8 @@ std::string describe(const Json& value) {
   return value.dump(-1, ' ', false, Json::error_handler_t::replace);  // a number, true, false or null
 }
 
+std::string quote(std::string_view text) { return describe(Json(std::string(text))); }
+
 void check_json_shape(std::string_view text, std::string_view what, std::size_t max_depth) {
   // One pass over the bytes, strings skipped: the nesting depth is known
   // before nlohmann builds (and later destroys and prints) the value.
@@ -111,9 +113,14 @@ Json parse_json_text(std::string_view text, std::string_view what) {
                 std::string(what) + " is not valid JSON at line " + std::to_string(line) + ", column " +
                     std::to_string(column) + ": " + reason,
                 {.line = line, .column = column});
-  } catch (const Json::out_of_range&) {
-    // nlohmann refuses literals that overflow a double (e.g. 1e999) before any path is known.
-    throw Error(Errc::NonFiniteInput, std::string(what) + " holds a number that is not a finite double");
+  } catch (const Json::out_of_range& e) {
+    // nlohmann refuses literals that overflow a double (e.g. 1e999) before any path is known; its
+    // message quotes the literal, which is a number: kept, cut to a few characters.
+    std::string reason = e.what();
+    if (const auto bracket = reason.find("] "); bracket != std::string::npos) reason = reason.substr(bracket + 2);
+    constexpr std::size_t kMaxReason = 48;
+    if (reason.size() > kMaxReason) reason = reason.substr(0, kMaxReason) + "...";
+    throw Error(Errc::NonFiniteInput, std::string(what) + " holds a number that is not a finite double: " + reason);
   } catch (const Json::exception&) {
     throw Error(Errc::ParseError, std::string(what) + " cannot be read as JSON");
   }

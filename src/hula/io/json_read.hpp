@@ -44,6 +44,10 @@ inline constexpr std::size_t kMaxJsonDepth = 64;
 /// object by its size only (never stringified, whatever its depth or size).
 [[nodiscard]] std::string describe(const Json& value);
 
+/// A string for a message: quoted, cut to its first 16 characters (the length
+/// is given when longer), so a value typed into a file is never echoed whole.
+[[nodiscard]] std::string quote(std::string_view text);
+
 /// Refuses text whose arrays and objects nest deeper than `max_depth` (one
 /// pass over the bytes, strings skipped), before any parser recurses into it.
 /// @throws hula::Error(Errc::ParseError) naming the limit, the line and the column

@@ -81,7 +81,7 @@ FairKnotsStudy fair_knots_study_from_json(const StudyDocument& document) {
     } else if (name == "variation") {
       study.setup.energy = FairingEnergy::Variation;
     } else {
-      throw Error(Errc::ParseError, "energy = \"" + name + "\" must be \"bending\" or \"variation\"",
+      throw Error(Errc::ParseError, "energy = " + io::json::quote(name) + " must be \"bending\" or \"variation\"",
                   root_path("energy").where);
     }
   }
@@ -96,7 +96,8 @@ FairKnotsStudy fair_knots_study_from_json(const StudyDocument& document) {
     } else if (name == "both") {
       study.method = FairingMethod::Both;
     } else {
-      throw Error(Errc::ParseError, "method = \"" + name + "\" must be \"ga\", \"deterministic\", \"both\" or \"none\"",
+      throw Error(Errc::ParseError,
+                  "method = " + io::json::quote(name) + " must be \"ga\", \"deterministic\", \"both\" or \"none\"",
                   root_path("method").where);
     }
   }
@@ -118,7 +119,7 @@ FairKnotsStudy fair_knots_study_from_json(const StudyDocument& document) {
       } else if (name == "binary") {
         ga.algorithm = FairingGa::Binary;
       } else {
-        throw Error(Errc::ParseError, "ga.algorithm = \"" + name + "\" must be \"real\" or \"binary\"",
+        throw Error(Errc::ParseError, "ga.algorithm = " + io::json::quote(name) + " must be \"real\" or \"binary\"",
                     p.member("algorithm").where);
       }
     }

@@ -29,9 +29,10 @@ MatchMethod match_method_from_name(std::string_view name, std::string_view field
   if (name == "ga") return MatchMethod::Ga;
   if (name == "hybrid") return MatchMethod::Hybrid;
   if (name == "direct") return MatchMethod::Direct;
-  throw Error(Errc::ParseError,
-              std::string(field) + " = \"" + std::string(name) + "\" must be \"ga\", \"hybrid\" or \"direct\"",
-              {.field = std::string(field)});
+  throw Error(
+      Errc::ParseError,
+      std::string(field) + " = " + io::json::quote(std::string(name)) + " must be \"ga\", \"hybrid\" or \"direct\"",
+      {.field = std::string(field)});
 }
 
 namespace {
@@ -260,7 +261,7 @@ MatchGaSettings read_ga(const Json& g, const jr::JsonPath& path) {
     else if (name == "real")
       s.algorithm = MatchGaSettings::Algorithm::Real;
     else
-      throw Error(Errc::ParseError, "ga.algorithm = \"" + name + "\" must be \"binary\" or \"real\"",
+      throw Error(Errc::ParseError, "ga.algorithm = " + io::json::quote(name) + " must be \"binary\" or \"real\"",
                   {.field = "ga.algorithm"});
   }
   if (const Json* a = jr::optional_member(g, "selection")) {
@@ -270,7 +271,8 @@ MatchGaSettings read_ga(const Json& g, const jr::JsonPath& path) {
     else if (name == "tournament")
       s.selection = optim::Selection::Tournament;
     else
-      throw Error(Errc::ParseError, "ga.selection = \"" + name + "\" must be \"roulette\" or \"tournament\"",
+      throw Error(Errc::ParseError,
+                  "ga.selection = " + io::json::quote(name) + " must be \"roulette\" or \"tournament\"",
                   {.field = "ga.selection"});
   }
   if (const Json* v = jr::optional_member(g, "population")) {

@@ -38,8 +38,9 @@ ProfileAbscissa profile_abscissa_from_name(std::string_view name, std::string_vi
   if (name == "arclength") return ProfileAbscissa::ArcLength;
   ErrorWhere w;
   w.field = std::string(field);
-  throw Error(Errc::ParseError,
-              std::string(field) + " = \"" + std::string(name) + "\": expected \"parameter\" or \"arclength\"", w);
+  throw Error(
+      Errc::ParseError,
+      std::string(field) + " = " + io::json::quote(std::string(name)) + ": expected \"parameter\" or \"arclength\"", w);
 }
 
 Profile::Profile(law::Law f, std::string variable) : law_(std::move(f)), variable_(std::move(variable)) {

@@ -25,13 +25,15 @@ StudyDocument parse_study_json(std::string_view text, std::string_view expected_
   const std::string format =
       io::json::get_string(io::json::require_member(doc, root_path(""), "format"), root_path("format"));
   if (format != "hula-study")
-    throw Error(Errc::ParseError, "format = \"" + format + "\": a study file must have \"format\": \"hula-study\"",
+    throw Error(Errc::ParseError,
+                "format = " + io::json::quote(format) + ": a study file must have \"format\": \"hula-study\"",
                 root_path("format").where);
   (void)io::json::get_integer(io::json::require_member(doc, root_path(""), "version"), root_path("version"), 1, 1);
   out.header.kind = io::json::get_string(io::json::require_member(doc, root_path(""), "study"), root_path("study"));
   if (out.header.kind != expected_kind)
     throw Error(Errc::ParseError,
-                "study = \"" + out.header.kind + "\": this command runs \"" + std::string(expected_kind) + "\" studies",
+                "study = " + io::json::quote(out.header.kind) + ": this command runs \"" + std::string(expected_kind) +
+                    "\" studies",
                 root_path("study").where);
   if (const Json* s = io::json::optional_member(doc, "seed"))
     out.header.seed = static_cast<std::uint64_t>(
