@@ -170,7 +170,7 @@ TEST(JsonCurveErrors, WrongTypeNamesPathAndValue) {
   HULA_EXPECT_ERROR(parse_curve_json(R"({"kind": "bezier", "control_points": [[0, 0], [1, 1]], "weights": "yes"})"),
                     Errc::ParseError, "weights = \"yes\" must be an array");
   HULA_EXPECT_ERROR(parse_curve_json(R"({"kind": "bezier", "control_points": [[0, 0], [1, 1, 2, 3]]})"),
-                    Errc::ParseError, "control_points[1] = [1,1,2,3] must be an array of 2 or 3 numbers");
+                    Errc::ParseError, "control_points[1] = an array of 4 elements must be an array of 2 or 3 numbers");
   {
     // Parsing 1e999 overflows inside strtod (FE_OVERFLOW): untrap it in Debug test builds.
     const testing::FpeGuard overflow_is_expected;
