@@ -5,10 +5,12 @@
 #   hula_add_test(nurbs_knot_vector SOURCES knot_vector_test.cpp DEPS hula::nurbs LABELS unit)
 #   hula_add_bench(nurbs_eval SOURCES evaluate_bench.cpp DEPS hula::nurbs)
 #
+# Modules other than `testing` are installed and exported as HulaHoops::<name>.
+#
 # The DEPS list of a module *is* the layering of DESIGN.md: a module may only
 # depend on modules below it, and hula_add_module refuses an upward edge.
 
-set(HULA_MODULE_ORDER core nurbs law diffgeom intrinsic optim io studies oli server testing)
+set(HULA_MODULE_ORDER core nurbs law curve diffgeom intrinsic optim studies io oli_store oli_kernel oli_exchange oli server testing)
 
 function(hula_add_module name)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPS;PUBLIC_LIBS;PRIVATE_LIBS" ${ARGN})
@@ -22,12 +24,26 @@ function(hula_add_module name)
   endforeach()
   add_library(hula_${name} ${ARG_SOURCES})
   add_library(hula::${name} ALIAS hula_${name})
-  target_include_directories(hula_${name} PUBLIC ${PROJECT_SOURCE_DIR}/src)
+  # The source tree and the generated hula/version.hpp in the build; include/ once installed.
+  target_include_directories(hula_${name} PUBLIC
+    $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/src>
+    $<BUILD_INTERFACE:${PROJECT_BINARY_DIR}/include>
+    $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
   target_compile_features(hula_${name} PUBLIC cxx_std_20)
+  # Warnings and sanitizers are our build's business, not a consumer's: build interface only.
   target_link_libraries(hula_${name}
     PUBLIC ${ARG_DEPS} ${ARG_PUBLIC_LIBS}
-    PRIVATE hula::warnings hula::sanitize ${ARG_PRIVATE_LIBS})
-  set_target_properties(hula_${name} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+    PRIVATE $<BUILD_INTERFACE:hula::warnings> $<BUILD_INTERFACE:hula::sanitize> ${ARG_PRIVATE_LIBS})
+  set_target_properties(hula_${name} PROPERTIES POSITION_INDEPENDENT_CODE ON EXPORT_NAME ${name})
+  # Every library module is installed and exported as HulaHoops::<name> (cmake/HulaInstall.cmake);
+  # the test-support library is not part of the package.
+  if(NOT name STREQUAL "testing")
+    install(TARGETS hula_${name} EXPORT HulaHoopsTargets
+      ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+      LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+      INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+    set_property(GLOBAL APPEND PROPERTY HULA_INSTALLED_MODULES ${name})
+  endif()
 endfunction()
 
 function(hula_add_test name)

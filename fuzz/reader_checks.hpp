@@ -16,17 +16,17 @@
 #include <string_view>
 
 #include "hula/core/error.hpp"
+#include "hula/io/editing_study_file.hpp"
+#include "hula/io/fair_knots_study_file.hpp"
 #include "hula/io/json_curve.hpp"
 #include "hula/io/json_read.hpp"
+#include "hula/io/match_study_file.hpp"
+#include "hula/io/path_resolver.hpp"
 #include "hula/io/points_file.hpp"
 #include "hula/io/problem_file.hpp"
+#include "hula/io/profile_file.hpp"
+#include "hula/io/study_file.hpp"
 #include "hula/law/expr.hpp"
-#include "hula/studies/curvature_torsion_match.hpp"
-#include "hula/studies/editing_study.hpp"
-#include "hula/studies/fair_knots_study.hpp"
-#include "hula/studies/match_study.hpp"
-#include "hula/studies/profile.hpp"
-#include "hula/studies/study_file.hpp"
 
 namespace hula::fuzz {
 
@@ -48,9 +48,9 @@ inline bool check_reader_input(Reader reader, std::string_view text) {
     switch (reader) {
       case Reader::Curve: {
         name = "curve";
-        const io::CurveFile file = io::parse_curve_json(text);
-        const io::CurveFile back = io::parse_curve_json(io::to_file_text(io::curve_to_json(file.curve)));
-        (void)back.curve.evaluate(back.curve.domain().start);
+        const curve::Curve file = io::parse_curve_json(text);
+        const curve::Curve back = io::parse_curve_json(io::to_file_text(io::curve_to_json(file)));
+        (void)back.point(back.domain().start);
         return true;
       }
       case Reader::Points: {
@@ -72,19 +72,19 @@ inline bool check_reader_input(Reader reader, std::string_view text) {
         std::string kind = "match-curvature";
         if (doc.is_object() && doc.contains("study") && doc["study"].is_string())
           kind = doc["study"].get<std::string>();
-        const studies::StudyDocument study = studies::parse_study_json(text, kind);
+        const io::StudyDocument study = io::parse_study_json(text, kind);
         if (kind == "fair-knots")
-          (void)studies::fair_knots_study_from_json(study);
+          (void)io::fair_knots_study_from_json(study);
         else if (kind == "fin-compound")
-          (void)studies::read_fin_compound_study(study);
+          (void)io::read_fin_compound_study(study);
         else if (kind == "edit-projection")
-          (void)studies::read_edit_projection_study(study);
+          (void)io::read_edit_projection_study(study);
         else if (kind == "hermite")
-          (void)studies::read_hermite_study(study);
+          (void)io::read_hermite_study(study);
         else if (kind == "match-curvature-torsion")
-          (void)studies::torsion_match_study_from_json(study, kNoBase);
+          (void)io::torsion_match_study_from_json(study, io::relative_to(kNoBase));
         else
-          (void)studies::match_study_from_json(study, kNoBase);
+          (void)io::match_study_from_json(study, io::relative_to(kNoBase));
         return true;
       }
       case Reader::Profile: {
@@ -92,7 +92,7 @@ inline bool check_reader_input(Reader reader, std::string_view text) {
         const io::json::Json doc = io::json::parse_json_text(text, "profile");
         law::Context context;
         const studies::Profile profile =
-            studies::profile_from_json(doc, io::json::root_path("target"), kNoBase, context);
+            io::profile_from_json(doc, io::json::root_path("target"), io::relative_to(kNoBase), context);
         for (double u : {0.0, 0.25, 1.0}) (void)profile(u);
         return true;
       }

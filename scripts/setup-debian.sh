@@ -6,13 +6,16 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake ninja-build pkg-config git
+  build-essential cmake ninja-build pkg-config git python3
   clang-format-14 clang-14 libclang-rt-14-dev
   libeigen3-dev libboost-dev libboost-math-dev libtbb-dev
   nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev librapidcheck-dev libbenchmark-dev
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
+  libocct-data-exchange-dev libocct-ocaf-dev
   libpagmo-dev libboost-serialization-dev
+  libsqlite3-dev sqlite3
+  doxygen
   help2man util-linux
 )
 

@@ -30,6 +30,7 @@
 #include <vector>
 
 #include "commands/common.hpp"
+#include "commands/doc.hpp"
 #include "hula/core/error.hpp"
 #include "hula/io/error_json.hpp"
 #include "hula/io/json_write.hpp"
@@ -141,6 +142,13 @@ int main(int argc, char** argv) {
         hula::cli::add_hermite(app),
         hula::cli::add_match_curvature(app),
         hula::cli::add_match_curvature_torsion(app),
+        hula::cli::add_doc(app),
+        hula::cli::add_edit(app),
+        hula::cli::add_approximate(app),
+        hula::cli::add_closest(app),
+        hula::cli::add_deviation(app),
+        hula::cli::add_continuity(app),
+        hula::cli::add_energy(app),
     };
     commands.push_back(hula::cli::add_completion(app));
     try {

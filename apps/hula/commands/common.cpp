@@ -143,6 +143,16 @@ nurbs::EndCondition parse_end_condition(std::string_view text, std::string_view 
   if (text == "bessel") return nurbs::EndCondition::bessel();
   if (text == "not-a-knot") return nurbs::EndCondition::not_a_knot();
   if (text == "occt") return nurbs::EndCondition::occt();
+  constexpr std::string_view kDirection = "direction:";
+  if (text.substr(0, kDirection.size()) == kDirection) {
+    const std::vector<double> d = parse_number_list(text.substr(kDirection.size()), std::string(field) + ".direction");
+    if ((d.size() == 2 || d.size() == 3) && norm(Vec3{d[0], d[1], d.size() == 3 ? d[2] : 0.0}) > 0.0)
+      return nurbs::EndCondition::direction({d[0], d[1], d.size() == 3 ? d[2] : 0.0});
+    throw Error(Errc::ParseError,
+                "--" + std::string(field) + " " + std::string(text) +
+                    ": a direction needs 2 or 3 numbers, not all zero, got " + std::to_string(d.size()),
+                {.field = std::string(field)});
+  }
   constexpr std::string_view kClamped = "clamped:";
   if (text.substr(0, kClamped.size()) == kClamped) {
     const std::vector<double> d = parse_number_list(text.substr(kClamped.size()), std::string(field) + ".tangent");
@@ -154,7 +164,8 @@ nurbs::EndCondition parse_end_condition(std::string_view text, std::string_view 
   }
   throw Error(Errc::ParseError,
               std::string(field) + " = \"" + std::string(text) +
-                  "\" is not an end condition (expected natural, bessel, not-a-knot, occt or clamped:x,y,z)",
+                  "\" is not an end condition (expected natural, bessel, not-a-knot, occt, direction:x,y,z or "
+                  "clamped:x,y,z)",
               {.field = std::string(field)});
 }
 

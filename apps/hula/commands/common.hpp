@@ -19,6 +19,7 @@
 #include "hula/core/vec.hpp"
 #include "hula/io/json_curve.hpp"
 #include "hula/law/expr.hpp"
+#include "hula/law/singularities.hpp"
 #include "hula/nurbs/interpolate.hpp"
 #include "hula/nurbs/nurbs_curve.hpp"
 
@@ -155,13 +156,22 @@ struct Command {
 [[nodiscard]] Command add_analyse(CLI::App& app);
 /// `hula law`: evaluate, differentiate and analyse a law expression.
 [[nodiscard]] Command add_law(CLI::App& app);
-/// Values and derivatives 0..order of a law at parameters: result[i][k * dimension + c].
+/// Values and derivatives of a law at parameters (law_derivatives()).
+struct LawValues {
+  /// values[i][k * dimension + c]: component c of derivative k at ts[i]; NaN from kink->order on.
+  std::vector<std::vector<double>> values;
+  /// Per point: where the derivatives stop existing (law::nonsmooth_at), if they do.
+  std::vector<std::optional<law::NonSmoothPoint>> kinks;
+};
+/// Values and derivatives 0..order of a law at parameters. Derivatives at a kink, jump or join
+/// that law::nonsmooth_at reports are NaN, with the reason in `kinks`.
 /// @throws hula::Error(Errc::OutOfDomain) naming `parameter[i]` where a value is undefined
-[[nodiscard]] std::vector<std::vector<double>> law_derivatives(const law::Law& law, const std::string& parameter,
-                                                               std::span<const double> ts, int order);
-/// {"t", "derivatives": [[...], ...]} entries (the `hula eval` shape; scalars as one-element arrays).
-[[nodiscard]] Json law_results_to_json(std::span<const double> ts, const std::vector<std::vector<double>>& values,
-                                       int dimension, int order);
+/// @throws hula::Error(Errc::NumericalFailure) naming `parameter[i]` and the subexpression that overflows
+[[nodiscard]] LawValues law_derivatives(const law::Law& law, const std::string& parameter, std::span<const double> ts,
+                                        int order);
+/// {"t", "derivatives": [[...], ...]} entries (the `hula eval` shape; scalars as one-element arrays;
+/// undefined derivatives null, with "undefined": {"order", "kind", "expression", "reason"}).
+[[nodiscard]] Json law_results_to_json(std::span<const double> ts, const LawValues& values, int dimension, int order);
 /// `hula reconstruct`: a curve from its curvature and torsion laws (natural equations).
 [[nodiscard]] Command add_reconstruct(CLI::App& app);
 /// `hula info`: the analysis of a curve file.
@@ -182,6 +192,18 @@ struct Command {
 [[nodiscard]] Command add_match_curvature(CLI::App& app);
 /// `hula match-curvature-torsion`: curvature and torsion profiles as two objectives (NSGA-II).
 [[nodiscard]] Command add_match_curvature_torsion(CLI::App& app);
+/// `hula edit insert-knot|refine|elevate|split|reverse|reparam`: kernel edits of a NURBS curve file.
+[[nodiscard]] Command add_edit(CLI::App& app);
+/// `hula approximate`: least-squares fit within a tolerance (fewest control points).
+[[nodiscard]] Command add_approximate(CLI::App& app);
+/// `hula closest`: nearest points of a curve.
+[[nodiscard]] Command add_closest(CLI::App& app);
+/// `hula deviation`: distance between two curves.
+[[nodiscard]] Command add_deviation(CLI::App& app);
+/// `hula continuity`: continuity of the join of two curves.
+[[nodiscard]] Command add_continuity(CLI::App& app);
+/// `hula energy`: bending and curvature-variation energies.
+[[nodiscard]] Command add_energy(CLI::App& app);
 /// `hula completion bash`: a completion script generated from the registered commands.
 [[nodiscard]] Command add_completion(CLI::App& app);
 /// Runs the demo and prints its JSON.

@@ -16,8 +16,8 @@
 #include "commands/study_common.hpp"
 #include "hula/diffgeom/fins.hpp"
 #include "hula/io/atomic_file.hpp"
+#include "hula/io/fair_knots_study_file.hpp"
 #include "hula/io/json_curve.hpp"
-#include "hula/studies/fair_knots_study.hpp"
 
 namespace hula::cli {
 
@@ -109,8 +109,8 @@ std::string fmt(double v) {
 }
 
 int run_fair_knots(const StudyArgs& args) {
-  const studies::StudyDocument doc = load_study(args, "fair-knots");
-  studies::FairKnotsStudy study = studies::fair_knots_study_from_json(doc);
+  const io::StudyDocument doc = load_study(args, "fair-knots");
+  studies::FairKnotsStudy study = io::fair_knots_study_from_json(doc);
   // --time and Ctrl-C end each optimiser with its best so far ("stopped": true).
   for (optim::StopCriteria* stop : {&study.ga.binary.run.stop, &study.ga.real.run.stop}) {
     stop->wall_time_seconds = doc.header.wall_time_seconds;
@@ -124,7 +124,7 @@ int run_fair_knots(const StudyArgs& args) {
   const std::vector<double> chord = studies::chord_length_parameters(setup);
   const studies::ParameterEvaluation before = studies::evaluate_parameters(setup, chord);
   Json out = Json::object();
-  out["study"] = studies::fair_knots_study_to_json(study);
+  out["study"] = io::fair_knots_study_to_json(study);
   out["energy"] = studies::fairing_energy_name(setup.energy);
   out["chord_length"] = evaluation_to_json(before);
   if (study.parameters) out["given"] = evaluation_to_json(studies::evaluate_parameters(setup, *study.parameters));
@@ -223,7 +223,7 @@ int run_fair_knots(const StudyArgs& args) {
         }
         write_svg(dir, "energy_sections", sec_fig);
       }
-      io::write_file_atomically(dir / "energy_map.csv", studies::energy_map_csv(*map));
+      io::write_file_atomically(dir / "energy_map.csv", io::energy_map_csv(*map));
     }
   }
   print_json(out);

@@ -25,16 +25,17 @@ struct InterpolateArgs {
 int run_interpolate(const InterpolateArgs& a) {
   io::check_output_path(a.output, "--output");
   io::PointSet set = io::read_points_file(a.points);
-  io::InterpolationInputs in;
+  curve::InterpolatedData in;
   in.points = std::move(set.points);
   in.dimension = set.dimension;
   in.parameterisation = io::parameterisation_from_name(a.parameterisation, "parameterisation");
   if (!a.knots.empty()) in.parameters = parse_number_list(a.knots, "knots");
   in.start = parse_end_condition(a.start, "start");
   in.end = parse_end_condition(a.end, "end");
-  const nurbs::NurbsCurve curve = io::resolve(in, "knots");
+  const curve::Curve resolved = io::interpolated_curve(in, "knots");
+  const nurbs::NurbsCurve& curve = resolved.nurbs();
   if (a.keep_inputs)
-    io::write_interpolated_file(a.output, in);
+    io::write_curve_file(a.output, resolved);
   else
     io::write_curve_file(a.output, curve);
 
@@ -62,8 +63,10 @@ Command add_interpolate(CLI::App& app) {
   sub->add_option("--points", args->points, "Points file: JSON [[x,y,z],...] or CSV lines x,y[,z]; - reads stdin")
       ->required();
   sub->add_option("--parameterisation", args->parameterisation, "uniform | chord | centripetal (default chord)");
-  sub->add_option("--start", args->start, "Start condition: natural | bessel | not-a-knot | occt | clamped:x,y,z");
-  sub->add_option("--end", args->end, "End condition: natural | bessel | not-a-knot | occt | clamped:x,y,z");
+  sub->add_option("--start", args->start,
+                  "Start condition: natural | bessel | not-a-knot | occt | direction:x,y,z | clamped:x,y,z");
+  sub->add_option("--end", args->end,
+                  "End condition: natural | bessel | not-a-knot | occt | direction:x,y,z | clamped:x,y,z");
   sub->add_option("--knots", args->knots,
                   "Given data parameters k0,k1,... (one per point, strictly increasing; mapped to [0, 1])");
   sub->add_option("-o,--output", args->output,

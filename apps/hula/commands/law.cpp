@@ -5,12 +5,16 @@
 // [[value], [first], ...]}]}, scalars as one-element arrays); also, on request,
 // the printed N-th derivative, all roots, the extrema and the integral on an
 // interval. Shared with `hula eval` for law curve files: law_derivatives().
+#include <cmath>
+#include <limits>
 #include <memory>
 #include <string>
 
 #include "commands/common.hpp"
 #include "hula/core/error.hpp"
+#include "hula/io/json_curve.hpp"
 #include "hula/law/antiderivative.hpp"
+#include "hula/law/convert.hpp"
 #include "hula/law/derive.hpp"
 #include "hula/law/parser.hpp"
 #include "hula/law/roots.hpp"
@@ -19,50 +23,71 @@
 
 namespace hula::cli {
 
-std::vector<std::vector<double>> law_derivatives(const law::Law& l, const std::string& parameter,
-                                                 std::span<const double> ts, int order) {
+LawValues law_derivatives(const law::Law& l, const std::string& parameter, std::span<const double> ts, int order) {
   const std::vector<law::Law> laws = law::derivatives(l, parameter, order);
   const std::string in[1] = {parameter};
   const law::Tape tape = law::Tape::compile(laws, in);
-  std::vector<std::vector<double>> out;
+  LawValues out;
   law::Workspace w = tape.make_workspace();
   for (std::size_t i = 0; i < ts.size(); ++i) {
     std::vector<double> v(tape.output_count());
-    if (!tape.evaluate(ts.subspan(i, 1), v, w)) {
-      // Name the innermost undefined subexpression (of the law or of the derivative that failed).
-      std::string why;
-      for (const law::Law& d : laws)
-        if (auto cause = law::explain_undefined(d, parameter, ts[i])) {
-          why = " (" + cause->expression + ": " + cause->reason + ")";
-          break;
-        }
+    (void)tape.evaluate(ts.subspan(i, 1), v, w);
+    const std::string at = parameter + "[" + std::to_string(i) + "] = " + format_number(ts[i]);
+    // The kink check comes first: past a kink the derivatives are not numbers, whatever the tape says.
+    std::optional<law::NonSmoothPoint> kink = law::nonsmooth_at(l, parameter, ts[i], order);
+    const std::size_t valid = static_cast<std::size_t>(kink ? kink->order : order + 1) * laws.front().dimension();
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      if (k >= valid) {
+        v[k] = std::numeric_limits<double>::quiet_NaN();
+        continue;
+      }
+      if (std::isfinite(v[k])) continue;
+      // Name the innermost failing subexpression of the law or of the derivative that failed.
+      const law::Law& failed = laws[k / static_cast<std::size_t>(laws.front().dimension())];
+      const auto cause = law::explain_non_finite(failed, parameter, ts[i]);
+      const std::string why = cause ? " (" + cause->expression + ": " + cause->reason + ")" : "";
+      if (cause && cause->overflow)
+        throw Error(Errc::NumericalFailure,
+                    at + ": the law" + (failed == l ? std::string() : " derivative") + " overflows there" + why,
+                    ErrorWhere{.field = parameter, .index = i});
       throw Error(Errc::OutOfDomain,
-                  parameter + "[" + std::to_string(i) + "] = " + format_number(ts[i]) +
+                  at +
                       (order == 0 ? std::string(": the law is undefined there")
                                   : ": the law or one of its first " + std::to_string(order) +
                                         " derivatives is undefined there") +
                       why,
                   ErrorWhere{.field = parameter, .index = i});
     }
-    out.push_back(std::move(v));
+    out.values.push_back(std::move(v));
+    out.kinks.push_back(std::move(kink));
   }
   return out;
 }
 
-Json law_results_to_json(std::span<const double> ts, const std::vector<std::vector<double>>& values, int dimension,
-                         int order) {
+Json law_results_to_json(std::span<const double> ts, const LawValues& values, int dimension, int order) {
   Json results = Json::array();
   const auto d = static_cast<std::size_t>(dimension);
   for (std::size_t i = 0; i < ts.size(); ++i) {
     Json ders = Json::array();
     for (std::size_t k = 0; k <= static_cast<std::size_t>(order); ++k) {
       Json v = Json::array();
-      for (std::size_t c = 0; c < d; ++c) v.push_back(values[i][k * d + c]);
+      for (std::size_t c = 0; c < d; ++c) {
+        const double x = values.values[i][k * d + c];
+        v.push_back(std::isnan(x) ? Json(nullptr) : Json(x));
+      }
       ders.push_back(std::move(v));
     }
     Json r = Json::object();
     r["t"] = ts[i];
     r["derivatives"] = std::move(ders);
+    if (const auto& kink = values.kinks[i]) {
+      Json u = Json::object();
+      u["order"] = kink->order;
+      u["kind"] = law::singularity_kind_name(kink->kind);
+      u["expression"] = kink->expression;
+      u["reason"] = kink->reason;
+      r["undefined"] = std::move(u);
+    }
     results.push_back(std::move(r));
   }
   return results;
@@ -79,6 +104,11 @@ struct LawArgs {
   std::string roots;
   std::string extrema;
   std::string integrate;
+  bool allow_unconverged = false;
+  std::string singularities;
+  std::string to_nurbs;
+  double tolerance = 1e-6;
+  std::string output;
 };
 
 std::pair<double, double> interval(const std::string& text, const char* field) {
@@ -133,7 +163,26 @@ int run_law(const LawArgs& a) {
   if (a.print_derivative >= 0) {
     Json d = Json::object();
     d["order"] = a.print_derivative;
-    d["expression"] = law::print(law::derivative(l, a.parameter, a.print_derivative));
+    // A derivative's text writes each shared subexpression once per use and can grow
+    // exponentially with the order: up to the parser's input limit it is printed whole (it reads
+    // back), beyond it with its shared subexpressions named once.
+    const law::Law der = law::derivative(l, a.parameter, a.print_derivative);
+    const std::size_t length = law::printed_length(der);
+    if (length <= law::ParseOptions{}.max_length) {
+      d["expression"] = law::print(der);
+    } else {
+      law::SharedPrint shared = law::print_shared(der);
+      d["expression"] = std::move(shared.expression);
+      Json defs = Json::array();
+      for (auto& def : shared.definitions) {
+        Json j = Json::object();
+        j["name"] = std::move(def.name);
+        j["expression"] = std::move(def.expression);
+        defs.push_back(std::move(j));
+      }
+      d["definitions"] = std::move(defs);
+      d["printed_length"] = length;
+    }
     doc["derivative"] = std::move(d);
   }
   if (!a.roots.empty()) {
@@ -141,9 +190,20 @@ int run_law(const LawArgs& a) {
     const auto [lo, hi] = interval(a.roots, "roots");
     Json r = Json::object();
     r["interval"] = Json::array({lo, hi});
+    const law::RootReport found = law::find_roots(l, a.parameter, lo, hi);
+    if (!found.converged() && !a.allow_unconverged)
+      throw Error(Errc::NumericalFailure,
+                  "--roots " + a.roots + ": the sign change at " + a.parameter + " = " +
+                      format_number(found.unresolved.front()) +
+                      " did not converge to a root (a pole or a jump); pass --allow-unconverged to list it",
+                  ErrorWhere{.field = "roots"});
     Json list = Json::array();
-    for (double t : law::roots(l, a.parameter, lo, hi)) list.push_back(t);
+    for (double t : found.roots) list.push_back(t);
     r["roots"] = std::move(list);
+    Json unresolved = Json::array();
+    for (double t : found.unresolved) unresolved.push_back(t);
+    r["unresolved"] = std::move(unresolved);
+    r["converged"] = found.converged();
     doc["roots"] = std::move(r);
   }
   if (!a.extrema.empty()) {
@@ -163,6 +223,12 @@ int run_law(const LawArgs& a) {
     require_scalar(l, "integrate");
     const auto [lo, hi] = interval(a.integrate, "integrate");
     const law::DefiniteIntegralResult r = law::definite_integral(l, a.parameter, lo, hi);
+    if (!r.converged && !a.allow_unconverged)
+      throw Error(Errc::NumericalFailure,
+                  "--integrate " + a.integrate + ": the quadrature did not converge (error estimate " +
+                      format_number(r.error_estimate) + " for the value " + format_number(r.value) +
+                      "; divergent or unresolved integrand); pass --allow-unconverged to print it",
+                  ErrorWhere{.field = "integrate"});
     Json j = Json::object();
     j["interval"] = Json::array({lo, hi});
     j["value"] = r.value;
@@ -171,6 +237,44 @@ int run_law(const LawArgs& a) {
     j["converged"] = r.converged;
     if (r.method == law::IntegralMethod::Symbolic) j["antiderivative"] = law::print(r.antiderivative);
     doc["integral"] = std::move(j);
+  }
+  if (!a.singularities.empty()) {
+    const auto [lo, hi] = interval(a.singularities, "singularities");
+    const law::SingularityReport rep = law::singularities(l, a.parameter, lo, hi);
+    Json j = Json::object();
+    j["interval"] = Json::array({lo, hi});
+    Json pts = Json::array();
+    for (const law::Singularity& p : rep.points) {
+      Json e = Json::object();
+      e[a.parameter] = p.t;
+      e["kind"] = law::singularity_kind_name(p.kind);
+      e["expression"] = p.expression;
+      pts.push_back(std::move(e));
+    }
+    j["points"] = std::move(pts);
+    Json und = Json::array();
+    for (const law::UndefinedInterval& u : rep.undefined) und.push_back(Json::array({u.start, u.end}));
+    j["undefined"] = std::move(und);
+    j["smooth"] = rep.smooth();
+    doc["singularities"] = std::move(j);
+  }
+  if (!a.to_nurbs.empty()) {
+    const auto [lo, hi] = interval(a.to_nurbs, "to-nurbs");
+    if (a.output.empty())
+      throw Error(Errc::InvalidArgument, "--to-nurbs needs -o FILE for the curve file", ErrorWhere{.field = "output"});
+    law::ToNurbsOptions o;
+    o.tolerance = a.tolerance;
+    const law::ToNurbsResult n = law::to_nurbs(l, a.parameter, lo, hi, o);
+    io::write_curve_file(a.output, n.curve);
+    Json j = Json::object();
+    j["output"] = a.output;
+    j["domain"] = Json::array({lo, hi});
+    j["tolerance"] = a.tolerance;
+    j["max_deviation"] = n.max_deviation;
+    j["degree"] = n.curve.degree();
+    j["control_points"] = n.control_points;
+    j["segments"] = n.segments;
+    doc["nurbs"] = std::move(j);
   }
   print_json(doc);
   return kExitOk;
@@ -191,6 +295,14 @@ Command add_law(CLI::App& app) {
   sub->add_option("--roots", args->roots, "All roots on a,b (scalar laws)");
   sub->add_option("--extrema", args->extrema, "Extrema on a,b (scalar laws)");
   sub->add_option("--integrate", args->integrate, "Integral over a,b (scalar laws): symbolic when possible");
+  sub->add_flag("--allow-unconverged", args->allow_unconverged,
+                "Print a non-converged integral or unresolved root sign changes instead of failing (exit 4)");
+  sub->add_option("--singularities", args->singularities,
+                  "Where the law is undefined or not smooth on a,b (kinks, jumps, poles, knots)");
+  sub->add_option("--to-nurbs", args->to_nurbs, "Convert the vector law on a,b to a NURBS curve file (-o)");
+  sub->add_option("--tolerance", args->tolerance, "Largest distance law-NURBS for --to-nurbs (default 1e-6)")
+      ->check(CLI::PositiveNumber);
+  sub->add_option("-o,--output", args->output, "Curve file written by --to-nurbs");
   return {sub, [args] { return run_law(*args); }};
 }
 

@@ -70,11 +70,11 @@ void check_svg_directory(const std::filesystem::path& dir) {
     throw Error(Errc::IoError, "--svg: cannot create the directory '" + dir.string() + "'", {.field = "svg"});
 }
 
-studies::StudyDocument load_study(const StudyArgs& args, std::string_view kind) {
+io::StudyDocument load_study(const StudyArgs& args, std::string_view kind) {
   // Every output is checked before the study runs, not after.
   if (args.log) io::check_output_path(*args.log, "--log");
   if (args.svg) check_svg_directory(*args.svg);
-  studies::StudyDocument doc = studies::read_study_file(args.study, kind);
+  io::StudyDocument doc = io::read_study_file(args.study, kind);
   if (args.seed) doc.header.seed = *args.seed;
   if (args.threads) doc.header.threads = *args.threads;
   if (args.time) doc.header.wall_time_seconds = *args.time;

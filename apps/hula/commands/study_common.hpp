@@ -17,9 +17,9 @@
 
 #include "commands/common.hpp"
 #include "hula/io/atomic_file.hpp"
+#include "hula/io/study_file.hpp"
 #include "hula/io/svg.hpp"
 #include "hula/optim/run_log.hpp"
-#include "hula/studies/study_file.hpp"
 
 namespace hula::cli {
 
@@ -65,8 +65,8 @@ void add_study_options(CLI::App* sub, StudyArgs& args, bool has_optimiser = true
 
 /// Checks the outputs (--log, --svg), reads the study file and applies the
 /// --seed / --threads overrides, --time and the SIGINT token to its header.
-/// @throws hula::Error as studies::read_study_file
-[[nodiscard]] studies::StudyDocument load_study(const StudyArgs& args, std::string_view kind);
+/// @throws hula::Error as io::read_study_file
+[[nodiscard]] io::StudyDocument load_study(const StudyArgs& args, std::string_view kind);
 
 /// Writes `figure` as `<dir>/<name>.svg` atomically, creating `dir` first.
 /// @throws hula::Error(Errc::IoError) naming the path if it cannot be written

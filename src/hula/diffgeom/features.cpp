@@ -174,8 +174,8 @@ std::vector<Feature> curvature_extrema(const nurbs::NurbsCurve& curve, const Fea
   return out;
 }
 
-std::vector<Feature> inflections(const LawFrenet& curve, nurbs::Interval domain, const FeatureOptions& options) {
-  options.validate();
+namespace {
+std::vector<Feature> law_inflections(const LawFrenet& curve, Interval domain, const FeatureOptions& options) {
   std::vector<Feature> out;
   const Eval eval = [&curve](double t) { return curve.at(t); };
   search(
@@ -184,14 +184,27 @@ std::vector<Feature> inflections(const LawFrenet& curve, nurbs::Interval domain,
   return out;
 }
 
-std::vector<Feature> curvature_extrema(const LawFrenet& curve, nurbs::Interval domain, const FeatureOptions& options) {
-  options.validate();
+std::vector<Feature> law_curvature_extrema(const LawFrenet& curve, Interval domain, const FeatureOptions& options) {
   std::vector<Feature> out;
   const Eval eval = [&curve](double t) { return curve.at(t); };
   search(
       eval, [&](double t) { return kappa_prime(eval(t)); }, law_cuts(domain), options.samples_per_span,
       FeatureKind::CurvatureMaximum, FeatureKind::CurvatureMinimum, out);
   return out;
+}
+}  // namespace
+
+std::vector<Feature> inflections(const curve::Curve& curve, const FeatureOptions& options) {
+  options.validate();
+  if (!curve.law()) return inflections(curve.nurbs(), options);
+  return law_inflections(LawFrenet(*curve.law_evaluator(3), curve.domain(), options.frenet), curve.domain(), options);
+}
+
+std::vector<Feature> curvature_extrema(const curve::Curve& curve, const FeatureOptions& options) {
+  options.validate();
+  if (!curve.law()) return curvature_extrema(curve.nurbs(), options);
+  return law_curvature_extrema(LawFrenet(*curve.law_evaluator(3), curve.domain(), options.frenet), curve.domain(),
+                               options);
 }
 
 std::vector<Feature> torsion_extrema(const nurbs::NurbsCurve& curve, const FeatureOptions& options) {
@@ -266,7 +279,12 @@ std::vector<Feature> inflections(const law::Law& curve, std::string_view paramet
   const Vec3 n = options.frenet.plane_normal / norm(options.frenet.plane_normal);
   const law::Law r1 = law::derivative(r, parameter, 1);
   const law::Law g = law::dot(law::cross(r1, law::derivative(r, parameter, 2)), r.context().constant(n));
-  const std::vector<double> zeros = law::roots(g, parameter, domain.start, domain.end, roots);
+  // Every sign change of g: its roots and, since a curvature that changes sign through a jump (a
+  // join of two arcs turning opposite ways) is an inflection too, the sign changes without a root.
+  const law::RootReport found = law::find_roots(g, parameter, domain.start, domain.end, roots);
+  std::vector<double> zeros = found.roots;
+  zeros.insert(zeros.end(), found.unresolved.begin(), found.unresolved.end());
+  std::sort(zeros.begin(), zeros.end());
   const LawFrenet frenet(r, std::string(parameter), domain, options.frenet);
   // Keep the roots where g changes sign: compare g half-way to the neighbouring roots (or ends).
   const std::string name(parameter);
@@ -312,6 +330,12 @@ std::vector<Feature> torsion_extrema(const law::Law& curve, std::string_view par
   const LawFrenet frenet(r, std::string(parameter), domain, options.frenet);
   return law_extrema(laws.torsion, frenet, parameter, domain, roots, FeatureKind::TorsionMaximum,
                      FeatureKind::TorsionMinimum);
+}
+
+std::vector<Feature> torsion_extrema(const curve::Curve& curve, const FeatureOptions& options) {
+  options.validate();
+  if (!curve.law()) return torsion_extrema(curve.nurbs(), options);
+  return torsion_extrema(*curve.law(), curve.law_parameter(), curve.domain(), options);
 }
 
 }  // namespace hula::diffgeom

@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: MIT
+// `hula closest CURVE --point x,y,z ...`: the point of the curve nearest to
+// each given point (nurbs::closest_point: global search, Newton foot), as
+// {"results": [{"point", "t", "closest", "distance"}]}.
+#include <memory>
+
+#include "commands/common.hpp"
+#include "hula/core/error.hpp"
+#include "hula/nurbs/closest_point.hpp"
+
+namespace hula::cli {
+
+namespace {
+
+struct ClosestArgs {
+  std::string curve;
+  std::vector<std::string> points;
+};
+
+int run_closest(const ClosestArgs& a) {
+  const curve::Curve file = io::read_curve_file(a.curve);
+  const int dim = file.nurbs().dimension();
+  Json results = Json::array();
+  for (std::size_t i = 0; i < a.points.size(); ++i) {
+    const std::vector<double> p = parse_number_list(a.points[i], "point");
+    if (p.size() != 2 && p.size() != 3)
+      throw Error(Errc::InvalidArgument, "--point " + a.points[i] + ": needs 2 or 3 numbers",
+                  ErrorWhere{.field = "point", .index = i});
+    const Vec3 q{p[0], p[1], p.size() == 3 ? p[2] : 0.0};
+    const nurbs::ClosestPointResult r = nurbs::closest_point(file.nurbs(), q);
+    Json j = Json::object();
+    j["point"] = vec_to_json(q, static_cast<int>(p.size()));
+    j["t"] = r.t;
+    j["closest"] = vec_to_json(r.point, dim);
+    j["distance"] = r.distance;
+    results.push_back(std::move(j));
+  }
+  Json doc = Json::object();
+  doc["curve"] = a.curve;
+  if (file.law() != nullptr) doc["law_stand_in_deviation"] = file.approximation_deviation();
+  doc["results"] = std::move(results);
+  print_json(doc);
+  return kExitOk;
+}
+
+}  // namespace
+
+Command add_closest(CLI::App& app) {
+  auto a = std::make_shared<ClosestArgs>();
+  CLI::App* sub = app.add_subcommand("closest", "The point of a curve nearest to given points");
+  sub->add_option("curve", a->curve, "Curve file (JSON)")->required();
+  sub->add_option("--point", a->points, "A point x,y[,z] (repeat the option for several)")->required();
+  return {sub, [a] { return run_closest(*a); }};
+}
+
+}  // namespace hula::cli

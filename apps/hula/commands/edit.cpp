@@ -1,0 +1,135 @@
+// SPDX-License-Identifier: MIT
+// `hula edit OPERATION CURVE -o OUT`: the kernel's shape-preserving and
+// splitting operations on a NURBS curve file (thesis 5.5, The NURBS Book ch. 5):
+// insert-knot (Boehm, A5.1), refine (A5.4), elevate (degree elevation),
+// split (knot insertion to multiplicity p), reverse and reparam (affine map of
+// the knots). Each writes curve files and prints a JSON summary of the result.
+#include <memory>
+
+#include "commands/common.hpp"
+#include "hula/core/error.hpp"
+#include "hula/nurbs/elevate.hpp"
+#include "hula/nurbs/refine.hpp"
+#include "hula/nurbs/reparam.hpp"
+
+namespace hula::cli {
+
+namespace {
+
+struct EditArgs {
+  std::string curve;
+  std::string output;
+  std::string second;  // split: the curve after the split point
+  double at = 0.0;     // insert-knot, split
+  int times = 1;       // insert-knot, elevate
+  std::string knots;   // refine
+  std::string domain;  // reparam
+};
+
+// The curve of a file; edits need the NURBS itself, not the stand-in of a law curve.
+nurbs::NurbsCurve read_nurbs(const std::string& path) {
+  curve::Curve file = io::read_curve_file(path);
+  if (file.law() != nullptr)
+    throw Error(Errc::InvalidArgument,
+                path + " is a law curve: edit its NURBS form (hula law EXPR --to-nurbs a,b -o FILE) instead",
+                ErrorWhere{.field = "curve"});
+  return file.nurbs();
+}
+
+Json summary(const std::string& path, const nurbs::NurbsCurve& c) {
+  Json j = Json::object();
+  j["output"] = path;
+  j["degree"] = c.degree();
+  j["control_points"] = c.control_points().size();
+  Json knots = Json::array();
+  for (double u : c.knots().values()) knots.push_back(u);
+  j["knots"] = std::move(knots);
+  j["domain"] = Json::array({c.domain().start, c.domain().end});
+  return j;
+}
+
+int write_one(const EditArgs& a, const char* operation, const nurbs::NurbsCurve& result) {
+  io::write_curve_file(a.output, result);
+  Json doc = Json::object();
+  doc["operation"] = operation;
+  doc["curve"] = summary(a.output, result);
+  print_json(doc);
+  return kExitOk;
+}
+
+int run_insert_knot(const EditArgs& a) {
+  return write_one(a, "insert-knot", nurbs::insert_knot(read_nurbs(a.curve), a.at, a.times));
+}
+
+int run_refine(const EditArgs& a) {
+  const std::vector<double> x = parse_number_list(a.knots, "knots");
+  return write_one(a, "refine", nurbs::refine_knots(read_nurbs(a.curve), x));
+}
+
+int run_elevate(const EditArgs& a) {
+  return write_one(a, "elevate", nurbs::elevate_degree(read_nurbs(a.curve), a.times));
+}
+
+int run_reverse(const EditArgs& a) { return write_one(a, "reverse", nurbs::reverse(read_nurbs(a.curve))); }
+
+int run_reparam(const EditArgs& a) {
+  const std::vector<double> d = parse_number_list(a.domain, "domain");
+  if (d.size() != 2)
+    throw Error(Errc::InvalidArgument, "--domain " + a.domain + ": needs two numbers a,b",
+                ErrorWhere{.field = "domain"});
+  return write_one(a, "reparam", nurbs::reparameterise(read_nurbs(a.curve), nurbs::Interval{d[0], d[1]}));
+}
+
+int run_split(const EditArgs& a) {
+  const nurbs::SplitResult s = nurbs::split(read_nurbs(a.curve), a.at);
+  io::write_curve_file(a.output, s.before);
+  io::write_curve_file(a.second, s.after);
+  Json doc = Json::object();
+  doc["operation"] = "split";
+  doc["at"] = a.at;
+  doc["curves"] = Json::array({summary(a.output, s.before), summary(a.second, s.after)});
+  print_json(doc);
+  return kExitOk;
+}
+
+CLI::App* operation(CLI::App* edit, const char* name, const char* help, EditArgs& a, const char* output_help) {
+  CLI::App* op = edit->add_subcommand(name, help);
+  op->add_option("curve", a.curve, "NURBS curve file (JSON)")->required();
+  op->add_option("-o,--output", a.output, output_help)->required();
+  return op;
+}
+
+}  // namespace
+
+Command add_edit(CLI::App& app) {
+  auto a = std::make_shared<EditArgs>();
+  CLI::App* edit =
+      app.add_subcommand("edit", "Edit a NURBS curve: insert-knot, refine, elevate, split, reverse, reparam");
+  edit->require_subcommand(1);
+  const char* out = "Curve file to write (atomically)";
+  CLI::App* insert = operation(edit, "insert-knot", "Insert a knot (the curve is unchanged)", *a, out);
+  insert->add_option("--at", a->at, "Knot value u inside the domain")->required();
+  insert->add_option("--times", a->times, "Insertions r >= 1 (default 1); multiplicity stays <= degree")
+      ->check(CLI::Range(1, 64));
+  CLI::App* refine = operation(edit, "refine", "Insert several knots at once (the curve is unchanged)", *a, out);
+  refine->add_option("--knots", a->knots, "Knot values u0,u1,... (non-decreasing, inside the domain)")->required();
+  CLI::App* elevate = operation(edit, "elevate", "Raise the degree (the curve is unchanged)", *a, out);
+  elevate->add_option("--times", a->times, "Degree increase >= 1 (default 1)")->check(CLI::Range(1, 64));
+  CLI::App* split =
+      operation(edit, "split", "Split at a parameter into two curve files", *a, "Curve file of the part before --at");
+  split->add_option("--at", a->at, "Parameter strictly inside the domain")->required();
+  split->add_option("--second", a->second, "Curve file of the part after --at")->required();
+  CLI::App* reverse = operation(edit, "reverse", "Traverse the curve backwards on the same domain", *a, out);
+  CLI::App* reparam = operation(edit, "reparam", "Map the curve's domain affinely onto a,b (same shape)", *a, out);
+  reparam->add_option("--domain", a->domain, "New domain a,b with a < b")->required();
+  return {edit, [a, insert, refine, elevate, split, reverse, reparam] {
+            if (insert->parsed()) return run_insert_knot(*a);
+            if (refine->parsed()) return run_refine(*a);
+            if (elevate->parsed()) return run_elevate(*a);
+            if (split->parsed()) return run_split(*a);
+            if (reverse->parsed()) return run_reverse(*a);
+            return reparam->parsed() ? run_reparam(*a) : kExitUsage;
+          }};
+}
+
+}  // namespace hula::cli

@@ -1,0 +1,210 @@
+// SPDX-License-Identifier: MIT
+// Property tests (seeded random curves) of the kernel commands of `hula`
+// (issue 10, item 6), run as a process and checked against the library:
+// edit insert-knot / refine / elevate / reparam leave the curve unchanged to
+// 1e-12 and equal the library's result; split gives halves that join with
+// C^(p−m) at the split; approximate meets its tolerance with the fewest
+// control points its search finds; deviation of a curve with itself is 0;
+// closest, continuity and energy against closed forms (circle) and the library.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "hula/diffgeom/continuity.hpp"
+#include "hula/io/atomic_file.hpp"
+#include "hula/io/json_curve.hpp"
+#include "hula/nurbs/approximate.hpp"
+#include "hula/nurbs/closest_point.hpp"
+#include "hula/nurbs/elevate.hpp"
+#include "hula/nurbs/refine.hpp"
+#include "hula/nurbs/reparam.hpp"
+#include "hula/testing/curve_generators.hpp"
+#include "hula/testing/run_process.hpp"
+#include "hula/testing/temp_dir.hpp"
+
+#ifndef HULA_CLI_PATH
+#error "HULA_CLI_PATH must name the hula binary"
+#endif
+
+namespace hula {
+namespace {
+
+using nlohmann::json;
+using nurbs::NurbsCurve;
+using testing::ProcessResult;
+
+constexpr int kCases = 6;  // random curves per property (each case runs the binary)
+
+json run_ok(const std::vector<std::string>& args) {
+  const ProcessResult r = testing::run_process(HULA_CLI_PATH, args);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  try {
+    return json::parse(r.out);
+  } catch (const std::exception&) {
+    ADD_FAILURE() << "stdout is not JSON: " << r.out << r.err;
+    return json::object();
+  }
+}
+
+struct Case {
+  testing::TempDir dir;
+  NurbsCurve curve;
+  std::string in;
+  std::string out;
+  explicit Case(std::uint64_t seed, testing::RandomCurveSpec spec = {})
+      : curve([&] {
+          Rng rng(seed);
+          spec.rational = seed % 2 == 1;
+          spec.degree = 1 + static_cast<int>(seed % 5);
+          return testing::random_curve(rng, spec);
+        }()),
+        in((dir / "in.json").string()),
+        out((dir / "out.json").string()) {
+    io::write_curve_file(in, curve);
+  }
+  [[nodiscard]] NurbsCurve result() const { return io::read_curve_file(out).nurbs(); }
+};
+
+// checks: `edit insert-knot` equals nurbs::insert_knot and leaves the curve unchanged (≤ 1e-12 × size).
+TEST(KernelCli, InsertKnotLeavesCurveUnchanged) {
+  for (std::uint64_t seed = 1; seed <= kCases; ++seed) {
+    Case c(seed);
+    const nurbs::Interval d = c.curve.domain();
+    const double u = d.start + 0.37 * d.length();
+    const int times = std::max(1, c.curve.degree() - c.curve.knots().multiplicity(u));
+    run_ok({"edit", "insert-knot", c.in, "--at", std::to_string(u), "--times", std::to_string(times), "-o", c.out});
+    const NurbsCurve got = c.result();
+    const double used = std::stod(std::to_string(u));
+    EXPECT_EQ(got, nurbs::insert_knot(c.curve, used, times)) << seed;
+    EXPECT_LE(testing::max_deviation(c.curve, got), 1e-12 * c.curve.model_size()) << seed;
+  }
+}
+
+// checks: `edit refine` and `edit elevate` equal the library and leave the curve unchanged.
+TEST(KernelCli, RefineAndElevateLeaveCurveUnchanged) {
+  for (std::uint64_t seed = 1; seed <= kCases; ++seed) {
+    Case c(seed);
+    const nurbs::Interval d = c.curve.domain();
+    const std::vector<double> x = {d.start + 0.125 * d.length(), d.start + 0.5 * d.length(),
+                                   d.start + 0.875 * d.length()};
+    std::string list;
+    for (double v : x) list += (list.empty() ? "" : ",") + io::Json(v).dump();
+    run_ok({"edit", "refine", c.in, "--knots", list, "-o", c.out});
+    EXPECT_EQ(c.result(), nurbs::refine_knots(c.curve, x)) << seed;
+    EXPECT_LE(testing::max_deviation(c.curve, c.result()), 1e-12 * c.curve.model_size()) << seed;
+    run_ok({"edit", "elevate", c.in, "--times", "2", "-o", c.out});
+    EXPECT_EQ(c.result().degree(), c.curve.degree() + 2);
+    EXPECT_LE(testing::max_deviation(c.curve, c.result()), 1e-12 * c.curve.model_size()) << seed;
+  }
+}
+
+// checks: `edit reparam --domain -2,5` maps the domain affinely: R(−2 + 7 s) = C(a + L s) to 1e-12,
+// and `edit reverse` traverses it backwards: R(t) = C(a + b − t).
+TEST(KernelCli, ReparamAndReverseKeepThePointSet) {
+  for (std::uint64_t seed = 1; seed <= kCases; ++seed) {
+    Case c(seed);
+    run_ok({"edit", "reparam", c.in, "--domain", "-2,5", "-o", c.out});
+    const NurbsCurve r = c.result();
+    EXPECT_EQ(r.domain().start, -2.0);
+    EXPECT_EQ(r.domain().end, 5.0);
+    const nurbs::Interval d = c.curve.domain();
+    for (int i = 0; i <= 100; ++i) {
+      const double s = i / 100.0;
+      EXPECT_LE(distance(r.evaluate(-2 + 7 * s), c.curve.evaluate(d.start + d.length() * s)),
+                1e-12 * c.curve.model_size());
+    }
+    run_ok({"edit", "reverse", c.in, "-o", c.out});
+    const NurbsCurve b = c.result();
+    for (int i = 0; i <= 100; ++i) {
+      const double t = d.start + d.length() * i / 100.0;
+      const double mirrored = std::clamp(d.start + d.end - t, d.start, d.end);  // a + b − t may round outside
+      EXPECT_LE(distance(b.evaluate(t), c.curve.evaluate(mirrored)), 1e-12 * c.curve.model_size());
+    }
+  }
+}
+
+// checks: `edit split --at t` gives halves equal to the curve on [a, t] and [t, b] whose join is
+// C^(p−m) (m = multiplicity of t in the curve), judged by diffgeom::join_continuity.
+TEST(KernelCli, SplitHalvesJoinWithTheCurvesContinuity) {
+  for (std::uint64_t seed = 1; seed <= kCases; ++seed) {
+    Case c(seed);
+    const nurbs::Interval d = c.curve.domain();
+    const double t = d.start + 0.41 * d.length();
+    const std::string second = (c.dir / "second.json").string();
+    const json j = run_ok({"edit", "split", c.in, "--at", io::Json(t).dump(), "-o", c.out, "--second", second});
+    ASSERT_EQ(j["curves"].size(), 2U);
+    const NurbsCurve a = c.result();
+    const NurbsCurve b = io::read_curve_file(second).nurbs();
+    EXPECT_EQ(a.domain().end, t);
+    EXPECT_EQ(b.domain().start, t);
+    EXPECT_LE(testing::max_deviation(a, c.curve), 1e-12 * c.curve.model_size()) << seed;
+    EXPECT_LE(testing::max_deviation(b, c.curve), 1e-12 * c.curve.model_size()) << seed;
+    const int expected = std::min(3, c.curve.degree() - c.curve.knots().multiplicity(t));
+    EXPECT_GE(diffgeom::join_continuity(a, b).parametric, expected) << seed;
+    const json cont = run_ok({"continuity", c.out, second});
+    EXPECT_EQ(cont["parametric"], "C" + std::to_string(diffgeom::join_continuity(a, b).parametric)) << seed;
+  }
+}
+
+// checks: `approximate --tolerance` meets the tolerance at the data points (re-measured from the
+// written curve), one control point fewer misses it (library fit), and the same count comes out of
+// nurbs::approximate_to_tolerance.
+TEST(KernelCli, ApproximateMeetsToleranceWithFewestControlPoints) {
+  testing::TempDir dir;
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    Rng rng(seed);
+    std::vector<Vec3> pts;
+    json arr = json::array();
+    for (int i = 0; i < 80; ++i) {
+      const double u = i / 79.0;
+      pts.push_back({10 * std::cos(2 * u) + rng.uniform(-0.02, 0.02), 5 * std::sin(3 * u), u * u});
+      arr.push_back({pts.back().x, pts.back().y, pts.back().z});
+    }
+    const std::string pfile = (dir / "pts.json").string(), out = (dir / "fit.json").string();
+    io::write_file_atomically(pfile, arr.dump());
+    const double tol = 0.05;
+    const json j = run_ok({"approximate", "--points", pfile, "--tolerance", "0.05", "-o", out});
+    const NurbsCurve c = io::read_curve_file(out).nurbs();
+    const nurbs::ToleranceFitResult lib = nurbs::approximate_to_tolerance(pts, tol);
+    EXPECT_EQ(c, lib.fit.curve) << seed;
+    for (std::size_t i = 0; i < pts.size(); ++i) EXPECT_LE(distance(c.evaluate(lib.fit.parameters[i]), pts[i]), tol);
+    nurbs::ApproximationOptions fewer;
+    fewer.control_points = c.control_points().size() - 1;
+    EXPECT_GT(nurbs::approximate(pts, fewer).max_deviation, tol) << seed;
+    EXPECT_EQ(j["control_points"], c.control_points().size());
+  }
+}
+
+// checks: `deviation A A` is 0 in every statistic; `closest` equals nurbs::closest_point.
+TEST(KernelCli, DeviationWithItselfIsZeroAndClosestMatchesLibrary) {
+  for (std::uint64_t seed = 1; seed <= kCases; ++seed) {
+    Case c(seed);
+    const json j = run_ok({"deviation", c.in, c.in, "--samples", "513"});
+    EXPECT_EQ(j["max"], 0.0);
+    EXPECT_EQ(j["mean"], 0.0);
+    EXPECT_EQ(j["mean_axis"], json::array({0.0, 0.0, 0.0}));
+    const json k = run_ok({"closest", c.in, "--point", "1,2,3"});
+    const nurbs::ClosestPointResult r = nurbs::closest_point(c.curve, {1, 2, 3});
+    EXPECT_EQ(k["results"][0]["t"].get<double>(), r.t) << seed;
+    EXPECT_EQ(k["results"][0]["distance"].get<double>(), r.distance) << seed;
+  }
+}
+
+// checks: `energy` of the rational circle of radius R = 2: ∫κ² ds = (1/R²)·2πR = π and
+// ∫(dκ/ds)² ds = 0, the closed forms.
+TEST(KernelCli, EnergyOfCircleIsClosedForm) {
+  testing::TempDir dir;
+  const std::string in = (dir / "circle.json").string();
+  io::write_curve_file(in, testing::rational_circle(2.0));
+  const json j = run_ok({"energy", in});
+  EXPECT_NEAR(j["bending"]["value"].get<double>(), std::numbers::pi, 1e-9);
+  EXPECT_NEAR(j["curvature_variation"]["value"].get<double>(), 0.0, 1e-9);
+}
+
+}  // namespace
+}  // namespace hula

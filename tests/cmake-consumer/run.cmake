@@ -1,0 +1,47 @@
+# SPDX-License-Identifier: MIT
+# ctest driver of the consumer test: installs the build tree into a fresh
+# prefix, configures, builds and runs tests/cmake-consumer against it with
+# find_package(HulaHoops), then compiles the same program with the flags of
+# hulahoops.pc (pkg-config) and runs it too.
+#   cmake -DBUILD_DIR=... -DSOURCE_DIR=... -DWORK_DIR=... -DCXX=... -P run.cmake
+foreach(var BUILD_DIR SOURCE_DIR WORK_DIR CXX)
+  if(NOT DEFINED ${var})
+    message(FATAL_ERROR "run.cmake needs -D${var}=...")
+  endif()
+endforeach()
+file(REMOVE_RECURSE ${WORK_DIR})
+set(prefix ${WORK_DIR}/prefix)
+
+function(run)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  message(STATUS "${out}")
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "failed (${rc}): ${ARGN}\n${out}\n${err}")
+  endif()
+endfunction()
+
+run(${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
+foreach(f include/hula/version.hpp include/hula/nurbs/nurbs_curve.hpp lib/cmake/HulaHoops/HulaHoopsConfig.cmake
+          lib/cmake/HulaHoops/HulaHoopsConfigVersion.cmake lib/pkgconfig/hulahoops.pc)
+  if(NOT EXISTS ${prefix}/${f})
+    message(FATAL_ERROR "the install tree lacks ${f}")
+  endif()
+endforeach()
+
+# find_package route.
+run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/cmake-consumer -B ${WORK_DIR}/build -G Ninja
+    -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_CXX_COMPILER=${CXX} -DCMAKE_BUILD_TYPE=Release)
+run(${CMAKE_COMMAND} --build ${WORK_DIR}/build)
+run(${WORK_DIR}/build/consumer)
+
+# pkg-config route (the .pc finds its prefix from its own directory: relocatable).
+find_program(PKG_CONFIG pkg-config REQUIRED)
+set(ENV{PKG_CONFIG_PATH} ${prefix}/lib/pkgconfig)
+execute_process(COMMAND ${PKG_CONFIG} --cflags --libs hulahoops
+  RESULT_VARIABLE rc OUTPUT_VARIABLE flags OUTPUT_STRIP_TRAILING_WHITESPACE)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "pkg-config does not know hulahoops")
+endif()
+separate_arguments(flags UNIX_COMMAND "${flags}")
+run(${CXX} ${SOURCE_DIR}/tests/cmake-consumer/main.cpp -o ${WORK_DIR}/consumer-pc ${flags})
+run(${WORK_DIR}/consumer-pc)
