@@ -16,8 +16,14 @@ packages=(
   libpagmo-dev libboost-serialization-dev
   libsqlite3-dev sqlite3
   doxygen
+  python3 python3-jsonschema curl
+  chromium
   help2man util-linux
 )
+# The web workbench (web/) needs Node.js >= 20 and npm; Debian's nodejs/npm
+# are installed only when no node is on the PATH (a newer one is kept).
+if ! command -v node >/dev/null 2>&1; then packages+=(nodejs); fi
+if ! command -v npm >/dev/null 2>&1; then packages+=(npm); fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -149,6 +149,7 @@ int main(int argc, char** argv) {
         hula::cli::add_deviation(app),
         hula::cli::add_continuity(app),
         hula::cli::add_energy(app),
+        hula::cli::add_serve(app),
     };
     commands.push_back(hula::cli::add_completion(app));
     try {

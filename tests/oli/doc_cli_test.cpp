@@ -72,42 +72,49 @@ bool matches(const Json& expected, const Json& actual) {
 ProcessResult run_in(const std::filesystem::path& dir, std::vector<std::string> args) {
   // The binary runs with its paths relative to `dir`: give it absolute ones.
   for (std::string& a : args)
-    if (a.ends_with(".hula") || a.ends_with(".json")) a = (dir / a).string();
+    if (a.ends_with(".hula") || a.ends_with(".json") || a.ends_with(".step") || a.ends_with(".igs"))
+      a = (dir / a).string();
   return testing::run_process(HULA_CLI_PATH, args);
 }
 
-// Checks the docs/cli.md `hula doc` example prints what the page shows, line by line.
+// Checks the docs/cli.md `hula doc` examples (every console block of the section, each in a fresh
+// directory) print what the page shows, line by line.
 TEST(DocCli, DocsExampleRunsAsShown) {
   const std::string page = io::read_text_file("docs/cli.md");
   const std::size_t section = page.find("## `hula doc`");
   ASSERT_NE(section, std::string::npos);
-  const std::size_t begin = page.find("```console\n", section);
-  ASSERT_NE(begin, std::string::npos);
-  const std::size_t end = page.find("```", begin + 10);
-  std::istringstream block(page.substr(begin + 11, end - begin - 11));
-  testing::TempDir dir;
-  std::filesystem::copy_file("examples/curves/spine.json", dir / "spine.json");
-  std::vector<std::pair<std::string, std::string>> steps;  // command, expected output
-  for (std::string line; std::getline(block, line);) {
-    if (line.rfind("$ ", 0) == 0)
-      steps.emplace_back(line.substr(2), "");
-    else if (!steps.empty())
-      steps.back().second += line + "\n";
+  const std::size_t section_end = page.find("\n## ", section + 3);
+  std::size_t blocks = 0;
+  for (std::size_t begin = page.find("```console\n", section); begin < section_end;
+       begin = page.find("```console\n", begin + 10)) {
+    ++blocks;
+    const std::size_t end = page.find("```", begin + 10);
+    std::istringstream block(page.substr(begin + 11, end - begin - 11));
+    testing::TempDir dir;
+    std::filesystem::copy_file("examples/curves/spine.json", dir / "spine.json");
+    std::vector<std::pair<std::string, std::string>> steps;  // command, expected output
+    for (std::string line; std::getline(block, line);) {
+      if (line.rfind("$ ", 0) == 0)
+        steps.emplace_back(line.substr(2), "");
+      else if (!steps.empty())
+        steps.back().second += line + "\n";
+    }
+    ASSERT_GE(steps.size(), 4u);
+    for (const auto& [command, expected_text] : steps) {
+      std::vector<std::string> args = split(command);
+      ASSERT_EQ(args.front(), "hula");
+      args.erase(args.begin());
+      const ProcessResult r = run_in(dir.path(), args);
+      ASSERT_EQ(r.exit_code, 0) << command << "\n" << r.err;
+      Json actual = Json::parse(r.out);
+      // Paths printed are the absolute ones the test passed: compare their file names.
+      if (actual.contains("file")) actual["file"] = std::filesystem::path(actual["file"].get<std::string>()).filename();
+      const Json expected = Json::parse(expected_text);
+      EXPECT_TRUE(matches(expected, actual))
+          << command << "\nexpected " << expected.dump() << "\nactual   " << actual.dump();
+    }
   }
-  ASSERT_GE(steps.size(), 10u);
-  for (const auto& [command, expected_text] : steps) {
-    std::vector<std::string> args = split(command);
-    ASSERT_EQ(args.front(), "hula");
-    args.erase(args.begin());
-    const ProcessResult r = run_in(dir.path(), args);
-    ASSERT_EQ(r.exit_code, 0) << command << "\n" << r.err;
-    Json actual = Json::parse(r.out);
-    // Paths printed are the absolute ones the test passed: compare their file names.
-    if (actual.contains("file")) actual["file"] = std::filesystem::path(actual["file"].get<std::string>()).filename();
-    const Json expected = Json::parse(expected_text);
-    EXPECT_TRUE(matches(expected, actual))
-        << command << "\nexpected " << expected.dump() << "\nactual   " << actual.dump();
-  }
+  EXPECT_GE(blocks, 2u);  // the document example and the STEP/IGES one
 }
 
 // Checks each failing subcommand exits non-zero with an error JSON and leaves the file byte-identical.
@@ -116,6 +123,7 @@ TEST(DocCli, FailingSubcommandsLeaveTheFileUnchanged) {
   std::filesystem::copy_file("examples/curves/spine.json", dir / "spine.json");
   io::write_file_atomically(dir / "bad.json", R"({"kind": "bezier", "control_points": [[0, 0, 0]]})");
   io::write_file_atomically(dir / "garbage.json", "{not json");
+  io::write_file_atomically(dir / "garbage.step", "solid cube\nendsolid\n");
   ASSERT_EQ(run_in(dir.path(), {"doc", "new", "a.hula"}).exit_code, 0);
   ASSERT_EQ(run_in(dir.path(), {"doc", "add", "a.hula", "--curve", "spine.json"}).exit_code, 0);
   ASSERT_EQ(run_in(dir.path(), {"doc", "add", "a.hula", "--curve", "spine.json", "--name", "locked"}).exit_code, 0);
@@ -143,6 +151,12 @@ TEST(DocCli, FailingSubcommandsLeaveTheFileUnchanged) {
       {{"doc", "import", "a.hula", "bad.json"}, 3, "TooFewPoints"},
       {{"doc", "show", "a.hula", "5"}, 3, "InvalidArgument"},
       {{"doc", "export", "a.hula", "5", "-o", "out.json"}, 3, "InvalidArgument"},
+      // STEP and IGES (through the isolated exchange helper) and the kernel backend.
+      {{"doc", "import", "a.hula", "garbage.step"}, 3, "ParseError"},
+      {{"doc", "import", "a.hula", "missing.igs"}, 3, "IoError"},
+      {{"doc", "export", "a.hula", "5", "--format", "iges", "-o", "out.igs"}, 3, "InvalidArgument"},
+      {{"doc", "export", "a.hula", "1", "--format", "dxf", "-o", "out.json"}, 2, "UsageError"},
+      {{"doc", "new", "b.hula", "--backend", "acis"}, 3, "InvalidOption"},
   };
   for (const Case& c : cases) {
     const ProcessResult r = run_in(dir.path(), c.args);
@@ -156,6 +170,8 @@ TEST(DocCli, FailingSubcommandsLeaveTheFileUnchanged) {
     EXPECT_EQ(io::read_text_file(dir / "a.hula"), before) << line;
   }
   EXPECT_FALSE(std::filesystem::exists(dir / "out.json"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.igs"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "b.hula"));
   const ProcessResult check = run_in(dir.path(), {"doc", "check", "a.hula"});
   EXPECT_EQ(check.exit_code, 0) << check.out;
 }

@@ -188,12 +188,12 @@ TEST_F(Exchange, IgesExportReadBackByOcctEqualsTheCurves) {
 // checks a law curve exported through its NURBS approximation carries the approximation's
 // deviation (io's law → NURBS) into the IGES resolution
 TEST_F(Exchange, LawCurveExportCarriesItsApproximationDeviation) {
-  const auto file = io::parse_curve_json(
+  const curve::Curve helix = io::parse_curve_json(
       R"json({"kind": "law", "expression": "vec(2*cos(t), 2*sin(t), 0.5*t)", "parameter": "t", "domain": [0, 3]})json");
-  ASSERT_TRUE(file.law.has_value());
-  const double deviation = file.law->approximation_deviation;
+  const double deviation = helix.approximation_deviation();
   EXPECT_GT(deviation, 0.0);
-  const std::vector<ExportCurve> curves{{"helix", file.curve, deviation}};
+  const std::vector<ExportCurve> curves{export_curve("helix", helix)};
+  EXPECT_EQ(curves[0].deviation, deviation);
   const auto report = export_curves(dir / "helix.iges", curves, ExchangeFormat::Iges);
   EXPECT_EQ(report.max_deviation, deviation);
   IGESControl_Reader reader;

@@ -156,22 +156,8 @@ struct Command {
 [[nodiscard]] Command add_analyse(CLI::App& app);
 /// `hula law`: evaluate, differentiate and analyse a law expression.
 [[nodiscard]] Command add_law(CLI::App& app);
-/// Values and derivatives of a law at parameters (law_derivatives()).
-struct LawValues {
-  /// values[i][k * dimension + c]: component c of derivative k at ts[i]; NaN from kink->order on.
-  std::vector<std::vector<double>> values;
-  /// Per point: where the derivatives stop existing (law::nonsmooth_at), if they do.
-  std::vector<std::optional<law::NonSmoothPoint>> kinks;
-};
-/// Values and derivatives 0..order of a law at parameters. Derivatives at a kink, jump or join
-/// that law::nonsmooth_at reports are NaN, with the reason in `kinks`.
-/// @throws hula::Error(Errc::OutOfDomain) naming `parameter[i]` where a value is undefined
-/// @throws hula::Error(Errc::NumericalFailure) naming `parameter[i]` and the subexpression that overflows
-[[nodiscard]] LawValues law_derivatives(const law::Law& law, const std::string& parameter, std::span<const double> ts,
-                                        int order);
-/// {"t", "derivatives": [[...], ...]} entries (the `hula eval` shape; scalars as one-element arrays;
-/// undefined derivatives null, with "undefined": {"order", "kind", "expression", "reason"}).
-[[nodiscard]] Json law_results_to_json(std::span<const double> ts, const LawValues& values, int dimension, int order);
+/// `hula serve`: the local HTTP JSON API.
+[[nodiscard]] Command add_serve(CLI::App& app);
 /// `hula reconstruct`: a curve from its curvature and torsion laws (natural equations).
 [[nodiscard]] Command add_reconstruct(CLI::App& app);
 /// `hula info`: the analysis of a curve file.

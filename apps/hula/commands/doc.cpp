@@ -6,14 +6,20 @@
 // subcommand leaves the file unchanged. Thin: every operation is an oli call.
 #include "commands/doc.hpp"
 
+#include <cctype>
 #include <charconv>
+#include <filesystem>
 #include <memory>
+#include <optional>
 
 #include "hula/io/atomic_file.hpp"
 #include "hula/io/json_read.hpp"
 #include "hula/oli/document.hpp"
 #include "hula/oli/json_exchange.hpp"
 #include "hula/oli/study_run.hpp"
+#ifdef HULA_WITH_OCCT
+#include "hula/oli/cad_exchange.hpp"
+#endif
 
 namespace hula::cli {
 
@@ -183,28 +189,66 @@ int run_history(const Options& o) {
   return kExitOk;
 }
 
+// True for the STEP and IGES names of --format and the .step/.stp/.iges/.igs extensions.
+bool is_cad_format(const std::string& format) { return format != "json"; }
+
+bool is_cad_file(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".step" || ext == ".stp" || ext == ".iges" || ext == ".igs";
+}
+
+#ifndef HULA_WITH_OCCT
+[[noreturn]] void no_occt(const std::string& what) {
+  throw Error(Errc::Unsupported, what + " needs Open CASCADE, and this hula was built without it (HULA_WITH_OCCT=OFF)",
+              {.field = "format"});
+}
+#endif
+
 int run_export(const Options& o) {
   std::vector<oli::Label> labels;
   for (const std::string& l : o.labels) labels.push_back(parse_label(l));
   const oli::Document doc = oli::Document::open(o.file, oli::OpenMode::ReadOnly);
-  // One exporter per format; the STEP and IGES exporters (oli/exchange) join this table.
-  if (o.format == "json") io::write_file_atomically(o.output, io::to_file_text(oli::export_json(doc, labels)));
   Json out = Json::object();
   out["file"] = o.output;
   out["format"] = o.format;
   out["labels"] = labels_json(labels);
+  if (!is_cad_format(o.format)) {
+    io::write_file_atomically(o.output, io::to_file_text(oli::export_json(doc, labels)));
+  } else {
+#ifdef HULA_WITH_OCCT
+    // STEP and IGES are written by the isolated Open CASCADE helper (oli/exchange).
+    const auto report = oli::export_entities(doc, labels, o.output, oli::exchange_format_from_name(o.format));
+    out["format"] = std::string(oli::exchange_format_name(report.format));
+    out["max_deviation"] = report.max_deviation;
+#else
+    no_occt("--format " + o.format);
+#endif
+  }
   print_json(out);
   return kExitOk;
 }
 
 int run_import(const Options& o) {
-  const Json input = io::json::parse_json_text(io::read_text_file(o.input), "import file");
-  oli::Document doc = oli::Document::open(o.file);
   std::vector<oli::Label> labels;
-  commit(doc, "import", [&](oli::Edit& e) { labels = oli::import_json(e, input, o.input); });
+  std::optional<oli::Document> doc;
+  if (is_cad_file(o.input)) {
+#ifdef HULA_WITH_OCCT
+    // Read in the helper process first: a reader crash or hang leaves the document unopened.
+    const oli::ImportReport report = oli::import_curves(o.input);
+    doc.emplace(oli::Document::open(o.file));
+    commit(*doc, "import", [&](oli::Edit& e) { labels = oli::add_imported(e, report, o.input); });
+#else
+    no_occt("importing " + o.input);
+#endif
+  } else {
+    const Json input = io::json::parse_json_text(io::read_text_file(o.input), "import file");
+    doc.emplace(oli::Document::open(o.file));
+    commit(*doc, "import", [&](oli::Edit& e) { labels = oli::import_json(e, input, o.input); });
+  }
   Json out = Json::object();
   out["labels"] = labels_json(labels);
-  out["revision"] = doc.revision();
+  out["revision"] = doc->revision();
   print_json(out);
   return kExitOk;
 }
@@ -287,11 +331,13 @@ Command add_doc(CLI::App& app) {
   CLI::App* exp = doc->add_subcommand("export", "Write entities to a file");
   file(exp);
   exp->add_option("labels", o->labels, "Entity labels")->required();
-  exp->add_option("--format", o->format, "json")->check(CLI::IsMember({"json"}));
+  exp->add_option("--format", o->format, "json | step (= step-ap214) | step-ap242 | iges")
+      ->check(CLI::IsMember({"json", "step", "step-ap214", "step-ap242", "iges"}));
   exp->add_option("-o,--output", o->output, "Output file")->required();
-  CLI::App* imp = doc->add_subcommand("import", "Add the curves of a JSON curve or document file as new entities");
+  CLI::App* imp = doc->add_subcommand(
+      "import", "Add the curves of a JSON curve or document file, or of a STEP or IGES file, as new entities");
   file(imp);
-  imp->add_option("input", o->input, "Curve file or hula-document JSON")->required();
+  imp->add_option("input", o->input, "Curve file, hula-document JSON, or .step/.stp/.iges/.igs file")->required();
 
   CLI::App* run = doc->add_subcommand("run", "Run a study file (values {\"entity\": L} name entities) and store it");
   file(run);

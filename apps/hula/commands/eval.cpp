@@ -7,6 +7,7 @@
 #include "commands/common.hpp"
 #include "hula/core/error.hpp"
 #include "hula/io/json_write.hpp"
+#include "hula/io/law_values.hpp"
 
 namespace hula::cli {
 
@@ -106,8 +107,8 @@ int run_eval(const EvalArgs& a) {
                       format_number(dom.start) + ", " + format_number(dom.end) + "]",
                   ErrorWhere{.field = "t", .index = i});
     }
-    print_results(law_results_to_json(ts, law_derivatives(*c.law(), c.law_parameter(), us, a.derivatives),
-                                      c.law()->dimension(), a.derivatives),
+    print_results(io::law_results_to_json(ts, io::law_derivatives(*c.law(), c.law_parameter(), us, a.derivatives),
+                                          c.law()->dimension(), a.derivatives),
                   static_cast<int>(c.law()->dimension()), a.derivatives, output_format_from_name(a.format));
     return kExitOk;
   }

@@ -4,94 +4,20 @@
 // at --at have the shape of `hula eval` ({"results": [{"t", "derivatives":
 // [[value], [first], ...]}]}, scalars as one-element arrays); also, on request,
 // the printed N-th derivative, all roots, the extrema and the integral on an
-// interval. Shared with `hula eval` for law curve files: law_derivatives().
-#include <cmath>
-#include <limits>
+// interval (io/law_values.hpp, shared with `hula eval` and the HTTP API).
 #include <memory>
 #include <string>
 
 #include "commands/common.hpp"
 #include "hula/core/error.hpp"
-#include "hula/io/json_curve.hpp"
+#include "hula/io/law_values.hpp"
 #include "hula/law/antiderivative.hpp"
 #include "hula/law/convert.hpp"
 #include "hula/law/derive.hpp"
 #include "hula/law/parser.hpp"
 #include "hula/law/roots.hpp"
-#include "hula/law/singularities.hpp"
-#include "hula/law/tape.hpp"
 
 namespace hula::cli {
-
-LawValues law_derivatives(const law::Law& l, const std::string& parameter, std::span<const double> ts, int order) {
-  const std::vector<law::Law> laws = law::derivatives(l, parameter, order);
-  const std::string in[1] = {parameter};
-  const law::Tape tape = law::Tape::compile(laws, in);
-  LawValues out;
-  law::Workspace w = tape.make_workspace();
-  for (std::size_t i = 0; i < ts.size(); ++i) {
-    std::vector<double> v(tape.output_count());
-    (void)tape.evaluate(ts.subspan(i, 1), v, w);
-    const std::string at = parameter + "[" + std::to_string(i) + "] = " + format_number(ts[i]);
-    // The kink check comes first: past a kink the derivatives are not numbers, whatever the tape says.
-    std::optional<law::NonSmoothPoint> kink = law::nonsmooth_at(l, parameter, ts[i], order);
-    const std::size_t valid = static_cast<std::size_t>(kink ? kink->order : order + 1) * laws.front().dimension();
-    for (std::size_t k = 0; k < v.size(); ++k) {
-      if (k >= valid) {
-        v[k] = std::numeric_limits<double>::quiet_NaN();
-        continue;
-      }
-      if (std::isfinite(v[k])) continue;
-      // Name the innermost failing subexpression of the law or of the derivative that failed.
-      const law::Law& failed = laws[k / static_cast<std::size_t>(laws.front().dimension())];
-      const auto cause = law::explain_non_finite(failed, parameter, ts[i]);
-      const std::string why = cause ? " (" + cause->expression + ": " + cause->reason + ")" : "";
-      if (cause && cause->overflow)
-        throw Error(Errc::NumericalFailure,
-                    at + ": the law" + (failed == l ? std::string() : " derivative") + " overflows there" + why,
-                    ErrorWhere{.field = parameter, .index = i});
-      throw Error(Errc::OutOfDomain,
-                  at +
-                      (order == 0 ? std::string(": the law is undefined there")
-                                  : ": the law or one of its first " + std::to_string(order) +
-                                        " derivatives is undefined there") +
-                      why,
-                  ErrorWhere{.field = parameter, .index = i});
-    }
-    out.values.push_back(std::move(v));
-    out.kinks.push_back(std::move(kink));
-  }
-  return out;
-}
-
-Json law_results_to_json(std::span<const double> ts, const LawValues& values, int dimension, int order) {
-  Json results = Json::array();
-  const auto d = static_cast<std::size_t>(dimension);
-  for (std::size_t i = 0; i < ts.size(); ++i) {
-    Json ders = Json::array();
-    for (std::size_t k = 0; k <= static_cast<std::size_t>(order); ++k) {
-      Json v = Json::array();
-      for (std::size_t c = 0; c < d; ++c) {
-        const double x = values.values[i][k * d + c];
-        v.push_back(std::isnan(x) ? Json(nullptr) : Json(x));
-      }
-      ders.push_back(std::move(v));
-    }
-    Json r = Json::object();
-    r["t"] = ts[i];
-    r["derivatives"] = std::move(ders);
-    if (const auto& kink = values.kinks[i]) {
-      Json u = Json::object();
-      u["order"] = kink->order;
-      u["kind"] = law::singularity_kind_name(kink->kind);
-      u["expression"] = kink->expression;
-      u["reason"] = kink->reason;
-      r["undefined"] = std::move(u);
-    }
-    results.push_back(std::move(r));
-  }
-  return results;
-}
 
 namespace {
 
@@ -157,8 +83,8 @@ int run_law(const LawArgs& a) {
   doc["dimension"] = l.dimension();
   if (!a.at.empty()) {
     const std::vector<double> ts = parse_number_list(a.at, a.parameter);
-    doc["results"] =
-        law_results_to_json(ts, law_derivatives(l, a.parameter, ts, a.derivatives), l.dimension(), a.derivatives);
+    doc["results"] = io::law_results_to_json(ts, io::law_derivatives(l, a.parameter, ts, a.derivatives), l.dimension(),
+                                             a.derivatives);
   }
   if (a.print_derivative >= 0) {
     Json d = Json::object();

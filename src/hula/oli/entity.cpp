@@ -9,6 +9,7 @@
 #include "hula/oli/detail/entity_codec.hpp"
 #include "hula/oli/detail/entity_state.hpp"
 #include "hula/oli/document.hpp"
+#include "hula/oli/kernel/kernel.hpp"
 
 namespace hula::oli {
 
@@ -47,9 +48,12 @@ void Attributes::validate() const {
 void DocumentOptions::validate() const {
   if (undo_limit && *undo_limit == 0)
     throw Error(Errc::InvalidOption, "undo_limit = 0: give at least 1, or none for unbounded", {.field = "undo_limit"});
-  if (backend != "native" && backend != "occt")
-    throw Error(Errc::InvalidOption, "backend \"" + backend + "\" is unknown (expected native or occt)",
-                {.field = "backend"});
+  // The kernel registry knows which backends this build has (occt only with Open CASCADE).
+  try {
+    (void)make_kernel(backend);
+  } catch (const Error& e) {
+    throw Error(Errc::InvalidOption, e.message(), {.field = "backend"});
+  }
 }
 
 void Outcome::throw_if_failed() const {

@@ -145,6 +145,10 @@ ExchangeFormat exchange_format_for_path(const std::filesystem::path& path) {
               {.field = "path"});
 }
 
+ExportCurve export_curve(std::string name, const curve::Curve& curve) {
+  return {std::move(name), curve.nurbs(), curve.approximation_deviation()};
+}
+
 void ExchangeOptions::validate() const {
   if (!(time_limit > 0.0) || !std::isfinite(time_limit))
     throw Error(Errc::InvalidOption, "time_limit = " + format_number(time_limit) + " must be a finite number > 0",

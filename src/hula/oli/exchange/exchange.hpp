@@ -32,6 +32,7 @@
 #include <string_view>
 #include <vector>
 
+#include "hula/curve/curve.hpp"
 #include "hula/nurbs/nurbs_curve.hpp"
 
 namespace hula::oli {
@@ -63,6 +64,10 @@ struct ExportCurve {
   /// the curve itself.
   double deviation = 0.0;
 };
+
+/// The export item of a curve value: its NURBS (for a law or natural-equation curve, the NURBS
+/// approximation) with the approximation's maximum deviation (curve::Curve::approximation_deviation).
+[[nodiscard]] ExportCurve export_curve(std::string name, const curve::Curve& curve);
 
 /// Limits and location of the helper process.
 struct ExchangeOptions {

@@ -33,7 +33,8 @@ io::Json request_to_json(const Request& request) {
     out["path"] = e->path.string();
     io::Json curves = io::Json::array();
     for (const auto& c : e->curves)
-      curves.push_back({{"name", c.name}, {"deviation", c.deviation}, {"curve", io::curve_to_json(c.curve)}});
+      curves.push_back(
+          {{"name", c.name}, {"deviation", c.deviation}, {"curve", io::curve_to_json(curve::Curve(c.curve))}});
     out["curves"] = std::move(curves);
   } else {
     out["operation"] = "import";
@@ -60,7 +61,7 @@ Request request_from_json(const io::Json& document) {
   for (std::size_t i = 0; i < curves.size(); ++i) {
     const auto p = root.member("curves").element(i);
     r.curves.push_back({js::get_string(js::require_member(curves[i], p, "name"), p.member("name")),
-                        io::curve_from_json(js::require_member(curves[i], p, "curve")).curve,
+                        io::curve_from_json(js::require_member(curves[i], p, "curve")).nurbs(),
                         js::get_number(js::require_member(curves[i], p, "deviation"), p.member("deviation"))});
   }
   return r;
@@ -73,7 +74,10 @@ io::Json export_answer_to_json(const ExportReport& report) {
 io::Json import_answer_to_json(const ImportReport& report) {
   io::Json curves = io::Json::array();
   for (const auto& c : report.curves)
-    curves.push_back({{"name", c.name}, {"source", c.source}, {"type", c.type}, {"curve", io::curve_to_json(c.curve)}});
+    curves.push_back({{"name", c.name},
+                      {"source", c.source},
+                      {"type", c.type},
+                      {"curve", io::curve_to_json(curve::Curve(c.curve))}});
   return {{"ok", {{"curves", std::move(curves)}, {"skipped", report.skipped}}}};
 }
 
@@ -111,7 +115,7 @@ ImportReport import_answer_from_json(const io::Json& ok) {
     ImportReport report;
     for (const auto& c : ok.at("curves"))
       report.curves.push_back({c.at("name").get<std::string>(), c.at("source").get<std::string>(),
-                               c.at("type").get<std::string>(), io::curve_from_json(c.at("curve")).curve});
+                               c.at("type").get<std::string>(), io::curve_from_json(c.at("curve")).nurbs()});
     report.skipped = ok.at("skipped").get<std::size_t>();
     return report;
   } catch (const nlohmann::json::exception& e) {

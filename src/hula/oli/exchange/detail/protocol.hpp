@@ -7,7 +7,9 @@
 //             |  {"ok": {"curves": [{"name", "source", "type", "curve": CURVE}],
 //                        "skipped": n}}                                          (import)
 //             |  {"error": {"code", "message", "where"}}                        (io/error_json.hpp)
-// CURVE is the "nurbs" curve-file document of io/json_curve.hpp (bit-exact doubles).
+// CURVE is the curve-file document of the one curve value type (curve::Curve, io/json_curve.hpp),
+// here always of kind "nurbs": a law or natural-equation curve crosses as its NURBS stand-in with
+// its deviation, so the helper never re-fits it (bit-exact doubles).
 #pragma once
 
 #include <filesystem>

@@ -1,0 +1,93 @@
+// SPDX-License-Identifier: MIT
+// The documents the server has open (oli::Document, one per workspace file).
+// An oli::Document is not thread-safe, so each open document has one
+// shared_mutex: a transaction, undo or redo holds it exclusively (one writer
+// at a time), readers hold it shared and take immutable Entity snapshots,
+// which they may read after releasing it — no reader sees a half-applied
+// change, and a long analysis never blocks an edit. Every committed change
+// set is appended to the document's event log (SSE of
+// /api/documents/{name}/events), so every client sees every change.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <shared_mutex>
+#include <string>
+#include <vector>
+
+#include "hula/oli/document.hpp"
+#include "hula/server/events.hpp"
+#include "hula/server/http.hpp"
+
+namespace hula::server {
+
+/// A change set as JSON: {"cause": "commit"|"undo"|"redo", "name", "revision", "added", "changed",
+/// "removed", "attributes_changed"} (labels as integers).
+[[nodiscard]] Json change_set_to_json(const oli::ChangeSet& changes);
+
+/// One open document.
+class OpenDocument {
+ public:
+  OpenDocument(std::string name, oli::Document document);
+
+  [[nodiscard]] const std::string& name() const noexcept { return name_; }
+  [[nodiscard]] std::shared_ptr<EventLog> events() const noexcept { return events_; }
+
+  /// Runs `read` under the shared lock.
+  template <class F>
+  auto read(F&& read) const {
+    std::shared_lock lock(mutex_);
+    return read(document_);
+  }
+
+  /// Runs `write` (a transaction, undo or redo) under the exclusive lock; the change set of a
+  /// committed outcome reaches the event log through the document's observer.
+  template <class F>
+  auto write(F&& write) {
+    std::unique_lock lock(mutex_);
+    return write(document_);
+  }
+
+ private:
+  std::string name_;
+  mutable std::shared_mutex mutex_;
+  oli::Document document_;
+  std::shared_ptr<EventLog> events_ = std::make_shared<EventLog>();
+};
+
+/// The open documents of a workspace.
+class DocumentRegistry {
+ public:
+  explicit DocumentRegistry(std::filesystem::path workspace);
+
+  /// The *.hula files of the workspace (sorted), with whether each is open.
+  [[nodiscard]] Json list() const;
+
+  /// Creates a new document file and opens it.
+  /// @throws hula::Error(InvalidArgument) for a bad name (security.hpp), HttpError(409, "Conflict")
+  ///   if the file exists, hula::Error(InvalidOption) for an unknown backend
+  std::shared_ptr<OpenDocument> create(const std::string& name, const std::string& backend);
+
+  /// The open document, opening the file on first use.
+  /// @throws HttpError(404, "NotFound") if there is no such file; hula::Error(IoError) if it is
+  ///   not a readable document or another process writes it
+  std::shared_ptr<OpenDocument> get(const std::string& name);
+
+  /// Closes the document and moves its file to the workspace's .trash folder (never unlinked).
+  /// @returns the trash path
+  /// @throws HttpError(404) as get
+  std::filesystem::path trash(const std::string& name);
+
+  /// Closes every document (on shutdown).
+  void close_all();
+
+ private:
+  std::filesystem::path workspace_;
+  mutable std::mutex mutex_;
+  std::map<std::string, std::shared_ptr<OpenDocument>> open_;
+};
+
+}  // namespace hula::server

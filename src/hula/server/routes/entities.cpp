@@ -1,0 +1,160 @@
+// SPDX-License-Identifier: MIT
+// Entities of a document: POST /api/documents/{name}/entities {"curve": curve
+// file, "name"?, "attributes"?} (201), GET|PUT|PATCH|DELETE
+// /api/documents/{name}/entities/{label}, and POST .../{label}/analysis
+// (analysis.hpp, read-only). A PATCH {"move": [{"index", "to"}],
+// "continue": true} continues the previous "move points" step, so a drag is
+// one undo step (oli::TransactMode::Continue). Every change answers
+// {"revision", "changes"} (the change set, also pushed to the document's
+// event stream).
+#include "hula/curve/curve.hpp"
+#include "hula/io/json_curve.hpp"
+#include "hula/io/json_read.hpp"
+#include "hula/server/analysis.hpp"
+#include "hula/server/documents.hpp"
+#include "hula/server/routes/routes.hpp"
+
+namespace hula::server::routes {
+
+namespace {
+
+namespace json = io::json;
+
+constexpr std::string_view kMoveStep = "move points";
+
+oli::Label parse_label(const std::string& text) {
+  std::uint64_t value = 0;
+  bool ok = !text.empty() && text.size() <= 19;
+  for (const char c : text) {
+    if (c < '0' || c > '9') ok = false;
+    if (ok) value = value * 10 + static_cast<std::uint64_t>(c - '0');
+  }
+  if (!ok || value == 0)
+    throw Error(Errc::InvalidArgument, "entity label '" + text + "' is not a positive integer",
+                ErrorWhere{.field = "label"});
+  return oli::Label{value};
+}
+
+// The document and the label of an entity route, 404 when the entity is not there.
+std::pair<std::shared_ptr<OpenDocument>, oli::Label> entity_of(DocumentRegistry& docs, const Request& request) {
+  auto doc = docs.get(request.params.at(0));
+  const oli::Label label = parse_label(request.params.at(1));
+  if (!doc->read([&](const oli::Document& d) { return d.contains(label); }))
+    throw HttpError(404, "NotFound", "document '" + doc->name() + "' has no entity " + request.params.at(1));
+  return {std::move(doc), label};
+}
+
+oli::Attributes read_attributes(const Json& body, oli::Attributes attributes) {
+  if (const Json* a = json::optional_member(body, "attributes")) attributes = oli::attributes_from_json(*a);
+  if (const Json* n = json::optional_member(body, "name"))
+    attributes.name = json::get_string(*n, json::root_path("name"));
+  return attributes;
+}
+
+struct Move {
+  std::size_t index;
+  Vec3 to;
+};
+
+std::vector<Move> read_moves(const Json& list) {
+  const json::JsonPath path = json::root_path("move");
+  const Json& moves = json::get_array(list, path);
+  std::vector<Move> out;
+  for (std::size_t i = 0; i < moves.size(); ++i) {
+    const json::JsonPath p = path.element(i);
+    json::reject_unknown_members(moves[i], p, {"index", "to"});
+    const auto index = static_cast<std::size_t>(
+        json::get_integer(json::require_member(moves[i], p, "index"), p.member("index"), 0, 1ll << 40));
+    out.push_back({index, json::get_point(json::require_member(moves[i], p, "to"), p.member("to")).first});
+  }
+  return out;
+}
+
+}  // namespace
+
+void add_entities(Router& router, const Context& context) {
+  DocumentRegistry& docs = context.documents;
+  router.add("POST", "/api/documents/{name}/entities", [&docs](const Request& request) {
+    const Json body = request.json();
+    json::reject_unknown_members(body, json::JsonPath(), {"curve", "name", "attributes"});
+    const curve::Curve c = io::curve_from_json(json::require_member(body, json::JsonPath(), "curve"));
+    const oli::Attributes attributes = read_attributes(body, {});
+    const auto doc = docs.get(request.params.at(0));
+    oli::Label label;
+    const oli::Outcome o = doc->write([&](oli::Document& d) {
+      return d.transact("add curve", [&](oli::Edit& e) { label = e.add_curve(c, attributes); });
+    });
+    Response r = outcome_response(o, 201);
+    Json out = Json::parse(r.body);
+    Json with_label = Json::object();
+    with_label["label"] = label.value;
+    with_label.update(out);
+    return json_response(201, with_label);
+  });
+  router.add("GET", "/api/documents/{name}/entities/{label}", [&docs](const Request& request) {
+    const auto [doc, label] = entity_of(docs, request);
+    const oli::Entity e = doc->read([&](const oli::Document& d) { return d.get(label); });
+    return json_response(200, oli::entity_to_json(e));  // encoded outside the lock: the entity is a snapshot
+  });
+  router.add("PUT", "/api/documents/{name}/entities/{label}", [&docs](const Request& request) {
+    const Json body = request.json();
+    json::reject_unknown_members(body, json::JsonPath(), {"curve", "name", "attributes"});
+    const curve::Curve c = io::curve_from_json(json::require_member(body, json::JsonPath(), "curve"));
+    const auto [doc, label] = entity_of(docs, request);
+    const bool has_attributes = body.contains("attributes") || body.contains("name");
+    return outcome_response(doc->write([&](oli::Document& d) {
+      return d.transact("replace curve", [&](oli::Edit& e) {
+        e.set_curve(label, c);
+        if (has_attributes) e.set_attributes(label, read_attributes(body, e.get(label).attributes()));
+      });
+    }),
+                            200);
+  });
+  router.add("PATCH", "/api/documents/{name}/entities/{label}", [&docs](const Request& request) {
+    const Json body = request.json();
+    const json::JsonPath root;
+    json::reject_unknown_members(body, root, {"move", "continue", "attributes"});
+    std::vector<Move> moves;
+    if (const Json* m = json::optional_member(body, "move")) moves = read_moves(*m);
+    bool continue_step = false;
+    if (const Json* c = json::optional_member(body, "continue")) {
+      if (!c->is_boolean()) json::type_error(*c, json::root_path("continue"), "true or false");
+      continue_step = c->get<bool>();
+    }
+    const Json* attributes = json::optional_member(body, "attributes");
+    if (attributes && !attributes->is_object())
+      json::type_error(*attributes, json::root_path("attributes"), "an object");
+    if (moves.empty() && !attributes)
+      throw Error(Errc::InvalidArgument, "a PATCH needs \"move\" or \"attributes\"", ErrorWhere{.field = "move"});
+    const auto [doc, label] = entity_of(docs, request);
+    const std::string step = moves.empty() ? std::string("edit attributes") : std::string(kMoveStep);
+    return outcome_response(doc->write([&](oli::Document& d) {
+      return d.transact(
+          step,
+          [&](oli::Edit& e) {
+            for (const Move& m : moves) e.move_point(label, m.index, m.to);
+            if (attributes)
+              for (const auto& [key, value] : attributes->items()) e.set_attribute(label, key, value);
+          },
+          continue_step ? oli::TransactMode::Continue : oli::TransactMode::New);
+    }),
+                            200);
+  });
+  router.add("DELETE", "/api/documents/{name}/entities/{label}", [&docs](const Request& request) {
+    const auto [doc, label] = entity_of(docs, request);
+    return outcome_response(
+        doc->write([&](oli::Document& d) { return d.transact("remove", [&](oli::Edit& e) { e.remove(label); }); }),
+        200);
+  });
+  router.add("POST", "/api/documents/{name}/entities/{label}/analysis", [&docs](const Request& request) {
+    const AnalysisRequest options = analysis_request_from_json(request.body.empty() ? Json::object() : request.json());
+    const auto [doc, label] = entity_of(docs, request);
+    const auto [e, revision] = doc->read([&](const oli::Document& d) { return std::pair(d.get(label), d.revision()); });
+    // Computed outside the lock from the immutable snapshot: edits go on meanwhile.
+    Json out = analyse(e.curve().nurbs(), options);
+    out["revision"] = revision;
+    return json_response(200, out);
+  });
+}
+
+}  // namespace hula::server::routes

@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: MIT
+// Jobs: POST /api/jobs {"problem": ...} → 202 {"job": id, ...};
+// GET /api/jobs/{id} → state, report, result, error; GET /api/jobs/{id}/events
+// → Server-Sent Events (one "generation" event per generation, then one of
+// "done", "failed", "cancelled" carrying the job); DELETE /api/jobs/{id}
+// cancels, keeping the best so far (jobs.hpp, problem_job.hpp).
+// POST /api/jobs {"document": name, "study": study file} runs the study in one
+// transaction of the document (oli::run_study): the study entity, its run and
+// its result curves are stored in the document, or nothing is if it fails.
+#include "hula/io/json_read.hpp"
+#include "hula/oli/study_run.hpp"
+#include "hula/server/problem_job.hpp"
+#include "hula/server/routes/routes.hpp"
+
+namespace hula::server::routes {
+
+namespace {
+
+std::shared_ptr<Job> find_job(JobPool& jobs, const Request& request) {
+  auto job = jobs.find(request.params.at(0));
+  if (!job) throw HttpError(404, "NotFound", "no job '" + request.params.at(0) + "'");
+  return job;
+}
+
+// The work of a study job: one transaction of the document, holding its writer lock while it runs.
+JobWork study_job(std::shared_ptr<OpenDocument> doc, Json study, std::filesystem::path workspace) {
+  return [doc = std::move(doc), study = std::move(study), workspace = std::move(workspace)](JobContext&) {
+    oli::StudyRunResult run;
+    const oli::Outcome o = doc->write([&](oli::Document& d) {
+      return d.transact("run study", [&](oli::Edit& e) { run = oli::run_study(e, study, workspace); });
+    });
+    o.throw_if_failed();
+    JobOutcome out;
+    Json curves = Json::array();
+    for (const oli::Label l : run.curves) curves.push_back(l.value);
+    out.result = Json::object();
+    out.result["document"] = doc->name();
+    out.result["study"] = run.study.value;
+    out.result["curves"] = std::move(curves);
+    out.result["revision"] = o.revision;
+    out.result["result"] = run.result;
+    return out;
+  };
+}
+
+}  // namespace
+
+void add_jobs(Router& router, const Context& context) {
+  JobPool& jobs = context.jobs;
+  DocumentRegistry& docs = context.documents;
+  router.add("POST", "/api/jobs", [&jobs, &docs, workspace = context.workspace](const Request& request) {
+    const Json body = request.json();
+    if (body.is_object() && body.contains("document")) {
+      namespace json = io::json;
+      json::reject_unknown_members(body, json::JsonPath(), {"document", "study"});
+      const std::string name =
+          json::get_string(json::require_member(body, json::JsonPath(), "document"), json::root_path("document"));
+      const Json& study = json::require_member(body, json::JsonPath(), "study");
+      if (!study.is_object()) json::type_error(study, json::root_path("study"), "a study file object");
+      const auto job = jobs.submit("study", study_job(docs.get(name), study, workspace));
+      return json_response(202, job->to_json());
+    }
+    if (!body.is_object() || !body.contains("problem"))
+      throw Error(Errc::ParseError,
+                  "request body: a job needs a \"problem\" member (an optimisation problem) or \"document\" and "
+                  "\"study\"",
+                  ErrorWhere{.field = "problem"});
+    JobWork work = problem_job(body);
+    const auto job = jobs.submit("problem", std::move(work));
+    return json_response(202, job->to_json());
+  });
+  router.add("GET", "/api/jobs/{id}",
+             [&jobs](const Request& request) { return json_response(200, find_job(jobs, request)->to_json()); });
+  router.add("GET", "/api/jobs/{id}/events", [&jobs](const Request& request) {
+    Response r;
+    r.events = find_job(jobs, request)->events();
+    return r;
+  });
+  router.add("DELETE", "/api/jobs/{id}", [&jobs](const Request& request) {
+    const auto job = find_job(jobs, request);
+    jobs.cancel(*job);
+    return json_response(200, job->to_json());
+  });
+}
+
+}  // namespace hula::server::routes

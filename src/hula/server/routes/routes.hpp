@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: MIT
+// The routes of the HTTP API, one file per resource (docs/server.md lists
+// them; the OpenAPI document, openapi.json, is their contract). A route reads
+// the request's JSON with the io readers, calls the module that does the
+// work and encodes the result; it holds no logic of its own.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "hula/oli/document.hpp"
+#include "hula/server/documents.hpp"
+#include "hula/server/jobs.hpp"
+#include "hula/server/router.hpp"
+
+namespace hula::server::routes {
+
+/// What the routes share.
+struct Context {
+  std::string version;
+  std::filesystem::path workspace;
+  JobPool& jobs;
+  DocumentRegistry& documents;
+};
+
+/// GET /api/health.
+void add_health(Router& router, const Context& context);
+/// GET /api/openapi.json.
+void add_openapi(Router& router, const Context& context);
+/// POST /api/law.
+void add_law(Router& router, const Context& context);
+/// POST /api/reconstruct.
+void add_reconstruct(Router& router, const Context& context);
+/// POST /api/jobs, GET /api/jobs/{id}, GET /api/jobs/{id}/events, DELETE /api/jobs/{id}.
+void add_jobs(Router& router, const Context& context);
+
+/// GET|POST /api/documents, GET|DELETE /api/documents/{name}, undo, redo, history, events.
+void add_documents(Router& router, const Context& context);
+/// POST /api/documents/{name}/entities, GET|PUT|PATCH|DELETE .../entities/{label}, .../analysis.
+void add_entities(Router& router, const Context& context);
+
+/// {"revision", "changes"} of a committed outcome with `status`; a rolled-back one rethrows its error.
+[[nodiscard]] Response outcome_response(const oli::Outcome& outcome, unsigned status);
+
+/// The OpenAPI 3.1 document (openapi.json, embedded at build time).
+[[nodiscard]] const std::string& openapi_text();
+
+}  // namespace hula::server::routes

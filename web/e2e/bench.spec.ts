@@ -1,0 +1,148 @@
+// Performance figures of issue 13, measured in chromium against the real
+// server and written to test-results/bench.json (docs/benchmarks.md quotes
+// them): drag frame rate and pointer-to-redraw latency with a 100-control-
+// point curve, 200-sample curvature fins and the κ graph; first load; the
+// gzipped bundle size. No pass/fail thresholds here (STYLE.md: no timing
+// assertions); the figures are recorded.
+import { test } from '@playwright/test';
+import { readdirSync, readFileSync, writeFileSync, mkdirSync } from 'node:fs';
+import { join } from 'node:path';
+import { gzipSync } from 'node:zlib';
+import {
+  addCurve,
+  base,
+  expect,
+  idle,
+  needsDocuments,
+  newDoc,
+  openApp,
+  pixelOf,
+  token,
+} from './fixtures';
+
+const results: Record<string, number> = {};
+
+test.afterAll(() => {
+  mkdirSync('test-results', { recursive: true });
+  writeFileSync('test-results/bench.json', JSON.stringify(results, null, 2));
+  console.log('bench', JSON.stringify(results));
+});
+
+test('bundle size, gzipped', () => {
+  const dir = join('dist', 'assets');
+  let total = 0;
+  for (const f of readdirSync(dir))
+    total += gzipSync(readFileSync(join(dir, f)), { level: 9 }).length;
+  total += gzipSync(readFileSync(join('dist', 'index.html')), { level: 9 }).length;
+  results['bundle_gzip_bytes'] = total;
+  expect(total).toBeGreaterThan(0);
+});
+
+test('first load', async ({ page }) => {
+  const doc = 'load.hula';
+  // Warm the server once, then measure navigation start to the idle document.
+  await openApp(page, doc);
+  const times: number[] = [];
+  for (let i = 0; i < 5; i++) {
+    const t0 = Date.now();
+    await page.goto(`${base()}/?token=${token()}#doc=${doc}`);
+    await idle(page);
+    times.push(Date.now() - t0);
+  }
+  times.sort((a, b) => a - b);
+  results['first_load_ms_median'] = times[2]!;
+  results['first_load_ms_max'] = times[4]!;
+});
+
+test('drag a point of a 100-control-point curve with fins and the κ graph', async ({ page }) => {
+  needsDocuments();
+  const doc = await newDoc('perf');
+  const n = 100;
+  const cps = Array.from({ length: n }, (_, i) => [i * 2, 20 * Math.sin(i / 7), 0]);
+  const knots = [
+    0,
+    0,
+    0,
+    0,
+    ...Array.from({ length: n - 4 }, (_, i) => (i + 1) / (n - 3)),
+    1,
+    1,
+    1,
+    1,
+  ];
+  const label = await addCurve(doc, 'c100', {
+    kind: 'nurbs',
+    degree: 3,
+    knots,
+    control_points: cps,
+    weights: null,
+  });
+  await openApp(page, doc);
+  await page.evaluate((l) => {
+    const app = window.__hula.app;
+    app.select(l);
+    const s = app.settingsOf(l);
+    s.fins = ['curvature'];
+    s.samples = 200;
+    app.refreshAnalysis(l);
+  }, label);
+  await idle(page);
+  await page.keyboard.press('1'); // the top view alone, as a designer drags
+  await idle(page);
+  await page.evaluate(() => {
+    window.__hula.app.fitAll();
+  });
+  await idle(page);
+  const start = await pixelOf(page, 'top', cps[50] as [number, number, number]);
+  await page.mouse.move(start.x, start.y);
+  await page.mouse.down();
+  // A rAF probe counts the frames the page manages while the drag runs (the
+  // display rate is the ceiling) and the longest gap between two frames.
+  await page.evaluate(() => {
+    const probe = { frames: 0, maxGap: 0, last: performance.now(), on: true };
+    (window as unknown as { __probe: typeof probe }).__probe = probe;
+    const tick = (t: number): void => {
+      if (!probe.on) return;
+      probe.frames++;
+      probe.maxGap = Math.max(probe.maxGap, t - probe.last);
+      probe.last = t;
+      requestAnimationFrame(tick);
+    };
+    requestAnimationFrame(tick);
+  });
+  const frames0 = await page.evaluate(() => window.__hula.app.viewports.frames);
+  const t0 = Date.now();
+  const moves = 180;
+  for (let i = 1; i <= moves; i++) {
+    await page.mouse.move(start.x + 60 * Math.sin(i / 15), start.y + 40 * Math.sin(i / 9));
+  }
+  const elapsed = (Date.now() - t0) / 1000;
+  const frames1 = await page.evaluate(() => window.__hula.app.viewports.frames);
+  const probe = await page.evaluate(() => {
+    const p = (window as unknown as { __probe: { frames: number; maxGap: number; on: boolean } })
+      .__probe;
+    p.on = false;
+    return { frames: p.frames, maxGap: p.maxGap };
+  });
+  const lat = await page.evaluate(() => [...window.__hula.app.latencies]);
+  const curveLat = await page.evaluate(() => [...window.__hula.app.curveLatencies]);
+  curveLat.sort((a, b) => a - b);
+  await page.mouse.up();
+  await idle(page);
+  lat.sort((a, b) => a - b);
+  results['drag_moves'] = moves;
+  results['drag_seconds'] = elapsed;
+  results['drag_frames_per_second'] = probe.frames / elapsed;
+  results['drag_longest_frame_gap_ms'] = probe.maxGap;
+  results['drag_redraws_per_second'] = (frames1 - frames0) / elapsed;
+  results['drag_moves_per_second'] = moves / elapsed;
+  results['pointer_to_redraw_ms_p50'] = lat[Math.floor(lat.length * 0.5)] ?? NaN;
+  results['pointer_to_redraw_ms_p95'] = lat[Math.floor(lat.length * 0.95)] ?? NaN;
+  results['pointer_to_server_curve_ms_p50'] = curveLat[Math.floor(curveLat.length * 0.5)] ?? NaN;
+  results['pointer_to_server_curve_ms_p95'] = curveLat[Math.floor(curveLat.length * 0.95)] ?? NaN;
+  results['server_curves_drawn_during_drag'] = curveLat.length;
+  results['server_updates_during_drag'] = await page.evaluate(
+    () => window.__hula.app.store.revision,
+  );
+  expect(lat.length).toBeGreaterThan(10);
+});

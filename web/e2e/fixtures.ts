@@ -1,0 +1,166 @@
+// Shared helpers of the e2e tests: the server's API over HTTP (Node's fetch,
+// with the token) and the page's own hooks (window.__hula).
+import { expect, test, type Page } from '@playwright/test';
+import type { Analysis, CurveFile, DocumentState, Entity, History } from '../src/api/types';
+import type { Vec3, ViewName } from '../src/viewport/math';
+import {
+  analysisFromServer,
+  entityFromServer,
+  historyFromServer,
+  isCurveKind,
+} from '../src/api/adapt';
+
+export const base = (): string => process.env['HULA_E2E_BASE']!;
+export const token = (): string => process.env['HULA_E2E_TOKEN']!;
+
+export async function api<T>(
+  method: string,
+  path: string,
+  body?: unknown,
+  at = base(),
+): Promise<T> {
+  const init: RequestInit = {
+    method,
+    headers: { Authorization: `Bearer ${token()}`, 'Content-Type': 'application/json' },
+  };
+  if (body !== undefined) init.body = JSON.stringify(body);
+  const r = await fetch(at + path, init);
+  const text = await r.text();
+  if (!r.ok) throw new Error(`${method} ${path} → ${r.status}: ${text}`);
+  return (text ? JSON.parse(text) : null) as T;
+}
+
+export const getDoc = (doc: string): Promise<DocumentState> =>
+  api<DocumentState>('GET', `/api/documents/${encodeURIComponent(doc)}`);
+
+/** The document's curve entities, each with its curve file. */
+export async function curves(doc: string): Promise<Entity[]> {
+  const summary = await getDoc(doc);
+  return Promise.all(
+    summary.entities.filter((e) => isCurveKind(e.kind)).map((e) => entity(doc, String(e.label))),
+  );
+}
+
+export async function history(doc: string): Promise<History> {
+  return historyFromServer(
+    await api<Record<string, unknown>>('GET', `/api/documents/${encodeURIComponent(doc)}/history`),
+  );
+}
+
+/** The server's analysis of an entity, regrouped as the page does (arc-length samples by default). */
+export async function analysis(
+  doc: string,
+  label: string,
+  body: Record<string, unknown> = {},
+): Promise<Analysis> {
+  const req = { samples: 200, by: 'arclength', ...body };
+  const j = await api<Record<string, unknown>>(
+    'POST',
+    `/api/documents/${encodeURIComponent(doc)}/entities/${encodeURIComponent(label)}/analysis`,
+    req,
+  );
+  return analysisFromServer(j, req.by === 'parameter' ? 'parameter' : 'arclength');
+}
+
+/** A curve entity with its curve file (GET …/entities/{label}). */
+export async function entity(doc: string, label: string): Promise<Entity> {
+  return entityFromServer(
+    await api<Record<string, unknown>>(
+      'GET',
+      `/api/documents/${encodeURIComponent(doc)}/entities/${encodeURIComponent(label)}`,
+    ),
+  );
+}
+
+export async function addCurve(doc: string, name: string, curve: CurveFile): Promise<string> {
+  const r = await api<{
+    label?: string | number;
+    changes: { created?: Entity[]; added?: (string | number)[] };
+  }>('POST', `/api/documents/${encodeURIComponent(doc)}/entities`, { name, curve });
+  return String(r.label ?? r.changes.created?.[0]?.label ?? r.changes.added?.[0]);
+}
+
+/** A fresh document per test, so tests do not see each other's curves. */
+export async function newDoc(prefix: string): Promise<string> {
+  const name = `${prefix}-${Date.now().toString(36)}.hula`;
+  await api('POST', '/api/documents', { name });
+  return name;
+}
+
+/** Open the workbench on a document and wait until it is idle. */
+export async function openApp(page: Page, doc: string, at = base(), tok = token()): Promise<void> {
+  await page.goto(`${at}/?token=${tok}#doc=${encodeURIComponent(doc)}`);
+  await idle(page);
+}
+
+export async function idle(page: Page): Promise<void> {
+  await page.waitForFunction(() => typeof window.__hula === 'object');
+  await page.evaluate(() => window.__hula.idle());
+}
+
+/** Client (page) pixel of a world point in a view, through the page's camera. */
+export async function pixelOf(
+  page: Page,
+  view: ViewName,
+  p: Vec3,
+): Promise<{ x: number; y: number }> {
+  return page.evaluate(
+    ([view, p]) => {
+      const vp = window.__hula.app.viewports;
+      const v = vp.view(view);
+      const m = vp.viewProj(view);
+      const x = m[0]! * p[0] + m[4]! * p[1] + m[8]! * p[2] + m[12]!;
+      const y = m[1]! * p[0] + m[5]! * p[1] + m[9]! * p[2] + m[13]!;
+      const w = m[3]! * p[0] + m[7]! * p[1] + m[11]! * p[2] + m[15]!;
+      const r = v.el.getBoundingClientRect();
+      return { x: r.left + ((x / w + 1) / 2) * r.width, y: r.top + ((1 - y / w) / 2) * r.height };
+    },
+    [view, p] as const,
+  );
+}
+
+/** Distance from a point to the nearest sample of a polyline. */
+export function distanceToPolyline(p: readonly number[], pts: readonly number[][]): number {
+  let best = Infinity;
+  for (let i = 0; i + 1 < pts.length; i++) {
+    const a = pts[i]!;
+    const b = pts[i + 1]!;
+    const d = [0, 1, 2].map((k) => (b[k] ?? 0) - (a[k] ?? 0));
+    const len2 = d.reduce((s, x) => s + x * x, 0);
+    const t =
+      len2 === 0
+        ? 0
+        : Math.max(
+            0,
+            Math.min(
+              1,
+              [0, 1, 2].reduce((s, k) => s + ((p[k] ?? 0) - (a[k] ?? 0)) * d[k]!, 0) / len2,
+            ),
+          );
+    const q = [0, 1, 2].map((k) => (a[k] ?? 0) + t * d[k]!);
+    best = Math.min(best, Math.hypot(...[0, 1, 2].map((k) => (p[k] ?? 0) - q[k]!)));
+  }
+  return best;
+}
+
+export async function shot(
+  page: Page,
+  name: string,
+  clip?: { x: number; y: number; width: number; height: number },
+): Promise<void> {
+  await idle(page);
+  await page.screenshot({
+    path: `../docs/figures/workbench/${name}.png`,
+    ...(clip ? { clip } : {}),
+  });
+}
+
+export { expect };
+
+/** Skip (reported, by name) a test that needs the document routes when the server has none yet. */
+export function needsDocuments(): void {
+  test.skip(
+    process.env['HULA_E2E_DOCUMENTS'] === '0',
+    'hula serve has no /api/documents routes yet (issue 12)',
+  );
+}

@@ -1,0 +1,100 @@
+import { describe, expect, it } from 'vitest';
+import { analysisFromServer, entityFromServer, historyFromServer } from './adapt';
+
+describe('server JSON adapters', () => {
+  // A curve entity (curve file members + label/attributes) splits into entity and curve file.
+  it('splits an entity into its curve file', () => {
+    const e = entityFromServer({
+      format: 'hula-curve',
+      version: 1,
+      kind: 'bezier',
+      control_points: [
+        [0, 0],
+        [1, 1],
+      ],
+      label: 3,
+      attributes: { name: 'b', colour: '#1f77b4' },
+      provenance: null,
+      constraints: [],
+    });
+    expect(e.label).toBe('3');
+    expect(e.name).toBe('b');
+    expect(e.curve).toEqual({
+      format: 'hula-curve',
+      version: 1,
+      kind: 'bezier',
+      control_points: [
+        [0, 0],
+        [1, 1],
+      ],
+    });
+  });
+
+  // Analysis columns of a straight segment of length 2 sampled by arc length: s = 0, 1, 2 (no s column sent);
+  // fins become hairs plus an envelope split at undefined tips; knots become C/G badges.
+  it('regroups the analysis columns', () => {
+    const a = analysisFromServer(
+      {
+        t: [0, 0.5, 1],
+        points: [
+          [0, 0, 0],
+          [1, 0, 0],
+          [2, 0, 0],
+        ],
+        frames: {
+          T: [
+            [1, 0, 0],
+            [1, 0, 0],
+            [1, 0, 0],
+          ],
+          N: [null, null, null],
+          B: [null, null, null],
+        },
+        curvature: [0, 0, 0],
+        torsion: [null, null, null],
+        speed: [2, 2, 2],
+        fins: [
+          {
+            kind: 'curvature',
+            t: [0, 0.5, 1],
+            base: [
+              [0, 0, 0],
+              [1, 0, 0],
+              [2, 0, 0],
+            ],
+            tip: [[0, 1, 0], null, [2, 1, 0]],
+          },
+        ],
+        features: {
+          inflections: [],
+          curvature_extrema: [],
+          knots: [{ t: 0.5, multiplicity: 1, parametric: 2, geometric: 2, tangent_angle: 0 }],
+        },
+      },
+      'arclength',
+    );
+    expect(a.s).toEqual([0, 1, 2]);
+    expect(a.planar).toBe(true);
+    expect(a.frames[1]!.N.every(Number.isNaN)).toBe(true);
+    expect(a.fins.curvature).toEqual([
+      [
+        [0, 0, 0],
+        [0, 1, 0],
+      ],
+      [
+        [2, 0, 0],
+        [2, 1, 0],
+      ],
+    ]);
+    expect(a.features).toEqual([{ kind: 'knot', t: 0.5, continuity: 'C2/G2', s: 1 }]);
+  });
+
+  // History entries keep revision, name and applied.
+  it('reads the history list', () => {
+    const h = historyFromServer({
+      revision: 2,
+      history: [{ revision: 1, name: 'add curve', time: 'x', changed: [1], applied: true }],
+    });
+    expect(h.steps).toEqual([{ revision: 1, name: 'add curve', time: 'x', applied: true }]);
+  });
+});

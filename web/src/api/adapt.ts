@@ -1,0 +1,163 @@
+// The server's JSON (docs/server.md, /api/openapi.json) turned into the
+// page's shapes: entities with their curve file, the analysis columns as
+// drawable polylines, the history list. Renaming and regrouping only.
+
+import type { Analysis, CurveFile, Entity, Feature, FinKind, Frame, History, Point } from './types';
+
+type Json = Record<string, unknown>;
+
+const CURVE_KINDS = new Set(['nurbs', 'bezier', 'interpolated', 'hermite', 'law', 'natural']);
+const ENTITY_MEMBERS = new Set(['label', 'attributes', 'provenance', 'constraints', 'name']);
+
+/** GET …/entities/{label}: the curve file's members with label, attributes, provenance, constraints. */
+export function entityFromServer(j: Json): Entity {
+  const attributes = (j['attributes'] ?? {}) as Record<string, unknown>;
+  const kind = typeof j['kind'] === 'string' ? j['kind'] : 'unknown';
+  const e: Entity = {
+    label: String(j['label']),
+    kind,
+    name:
+      typeof attributes['name'] === 'string'
+        ? attributes['name']
+        : typeof j['name'] === 'string'
+          ? j['name']
+          : '',
+    attributes,
+  };
+  if (CURVE_KINDS.has(kind)) {
+    const curve: Json = {};
+    for (const [k, v] of Object.entries(j)) if (!ENTITY_MEMBERS.has(k)) curve[k] = v;
+    e.curve = curve as unknown as CurveFile;
+  }
+  return e;
+}
+
+/** Whether a document summary's entity is a curve (its kind is "curve" or a curve file kind). */
+export function isCurveKind(kind: string): boolean {
+  return kind === 'curve' || CURVE_KINDS.has(kind);
+}
+
+function column(j: Json, name: string): (number | null)[] {
+  const c = j[name];
+  return Array.isArray(c) ? (c as (number | null)[]) : [];
+}
+
+function points(c: unknown): Point[] {
+  return Array.isArray(c) ? (c as Point[]) : [];
+}
+
+const nan3 = [NaN, NaN, NaN];
+
+/**
+ * POST …/analysis: columns t, points, frames {T, N, B}, curvature, torsion,
+ * speed (null where undefined), fins [{kind, t, base, tip}], features
+ * {inflections, curvature_extrema, knots}. `by` is what was asked: with
+ * arclength samples the abscissa s is the server's `s` column when given.
+ */
+export function analysisFromServer(j: Json, by: 'parameter' | 'arclength'): Analysis {
+  const t = column(j, 't').map((v) => v ?? NaN);
+  const pts = points(j['points']);
+  const framesJ = (j['frames'] ?? {}) as Json;
+  const T = points(framesJ['T']);
+  const N = points(framesJ['N']);
+  const B = points(framesJ['B']);
+  const frames: Frame[] = pts.map((_, i) => ({
+    T: T[i] ?? nan3,
+    N: N[i] ?? nan3,
+    B: B[i] ?? nan3,
+  }));
+  const kappa = column(j, 'curvature');
+  const tau = column(j, 'torsion');
+  const speed = column(j, 'speed').map((v) => v ?? NaN);
+  const s = arcLength(j, pts, by);
+  const fins: Partial<Record<FinKind, Point[][]>> = {};
+  const finList = Array.isArray(j['fins']) ? (j['fins'] as Json[]) : [];
+  for (const comb of finList) {
+    const kind = comb['kind'] as FinKind;
+    const base = points(comb['base']);
+    const tip = points(comb['tip']);
+    const lines: Point[][] = [];
+    let envelope: Point[] = [];
+    base.forEach((b, i) => {
+      const q = tip[i] as Point | null | undefined;
+      if (!q) {
+        if (envelope.length > 1) lines.push(envelope);
+        envelope = [];
+        return;
+      }
+      lines.push([b, q]);
+      envelope.push(q);
+    });
+    if (envelope.length > 1) lines.push(envelope);
+    fins[kind] = lines;
+  }
+  const features: Feature[] = [];
+  const f = (j['features'] ?? {}) as Json;
+  for (const x of (f['inflections'] ?? []) as Json[])
+    features.push({ kind: 'inflection', t: x['t'] as number });
+  for (const x of (f['curvature_extrema'] ?? []) as Json[]) {
+    features.push({
+      kind: `curvature-${String(x['kind']).includes('max') ? 'max' : 'min'}`,
+      t: x['t'] as number,
+      value: x['curvature'] as number,
+    });
+  }
+  for (const x of (f['knots'] ?? []) as Json[]) {
+    const c = x['parametric'] as number;
+    const g = x['geometric'] as number;
+    features.push({
+      kind: 'knot',
+      t: x['t'] as number,
+      continuity: `${c < 0 ? 'C–' : `C${c}`}/${g < 0 ? 'G–' : `G${g}`}`,
+    });
+  }
+  // Feature abscissae in s: the sample nearest in t (for the graph markers).
+  for (const feat of features) {
+    let best = 0;
+    for (let i = 1; i < t.length; i++)
+      if (Math.abs(t[i]! - feat.t) < Math.abs(t[best]! - feat.t)) best = i;
+    if (s.length) feat.s = s[best]!;
+  }
+  // A curve is planar when its torsion is zero (or undefined) at every sample.
+  const kmax = Math.max(1e-300, ...kappa.map((k) => Math.abs(k ?? 0)));
+  const planar = tau.every((v) => v === null || Math.abs(v) <= 1e-9 * Math.max(1, kmax));
+  return { t, s, points: pts, kappa, tau, speed, planar, frames, fins, features };
+}
+
+/**
+ * Arc length at each sample: the server's `s` column when it sends one; else,
+ * for samples equally spaced in arc length, i/(n−1) of the server's `length`,
+ * or of the sampled polygon's length (within the sampling's chord error) when
+ * no length is sent. Parameter samples without `s` get no arc length.
+ */
+function arcLength(j: Json, pts: Point[], by: 'parameter' | 'arclength'): number[] {
+  const s = column(j, 's');
+  if (s.length === pts.length && s.length > 0) return s.map((v) => v ?? NaN);
+  if (by !== 'arclength' || pts.length < 2) return [];
+  let length = typeof j['length'] === 'number' ? j['length'] : 0;
+  if (!(length > 0)) {
+    for (let i = 1; i < pts.length; i++) {
+      const a = pts[i - 1]!;
+      const b = pts[i]!;
+      length += Math.hypot(
+        (b[0] ?? 0) - (a[0] ?? 0),
+        (b[1] ?? 0) - (a[1] ?? 0),
+        (b[2] ?? 0) - (a[2] ?? 0),
+      );
+    }
+  }
+  return pts.map((_, i) => (length * i) / (pts.length - 1));
+}
+
+/** GET …/history: {revision, history: [{revision, name, time, changed, applied}]}. */
+export function historyFromServer(j: Json): History {
+  const list = (j['history'] ?? j['steps'] ?? []) as Json[];
+  return {
+    steps: list.map((h) => ({
+      revision: h['revision'] as number,
+      name: h['name'] as string,
+      ...(typeof h['time'] === 'string' ? { time: h['time'] } : {}),
+      ...(typeof h['applied'] === 'boolean' ? { applied: h['applied'] } : {}),
+    })),
+  };
+}

@@ -1,0 +1,242 @@
+// The HTTP client of the workbench: one place that talks to `hula serve`.
+// Requests are authorised by the server's HttpOnly cookie; errors become ApiError with the
+// server's code, message and where; the pending count feeds __hula.idle().
+
+import type {
+  Analysis,
+  AnalysisRequest,
+  ChangeReply,
+  CurveFile,
+  DocumentState,
+  DocumentSummary,
+  Entity,
+  ErrorBody,
+  Health,
+  History as DocHistory,
+  Job,
+  LawRequest,
+  LawResponse,
+  ReconstructRequest,
+  ReconstructResponse,
+} from './types';
+import { analysisFromServer, entityFromServer, historyFromServer, isCurveKind } from './adapt';
+
+/** An error answer of the server, or a network failure (status 0). */
+export class ApiError extends Error {
+  readonly status: number;
+  readonly body: ErrorBody;
+  constructor(status: number, body: ErrorBody) {
+    super(`${body.code}: ${body.message}`);
+    this.name = 'ApiError';
+    this.status = status;
+    this.body = body;
+  }
+  /** True when the server could not be reached (restart, network). */
+  get offline(): boolean {
+    return this.status === 0;
+  }
+}
+
+function isErrorBody(x: unknown): x is { error: ErrorBody } {
+  if (typeof x !== 'object' || x === null || !('error' in x)) return false;
+  const e = x.error;
+  return typeof e === 'object' && e !== null && 'code' in e && 'message' in e;
+}
+
+export type Listener = () => void;
+
+export class Client {
+  private pendingCount = 0;
+  private readonly listeners = new Set<Listener>();
+  /** Called when a request fails because the server is unreachable. */
+  onOffline: (() => void) | null = null;
+
+  /**
+   * `token` is sent as a Bearer token when given; the page itself gives none:
+   * `hula serve` turns `?token=` into an HttpOnly cookie and redirects, so
+   * the token never reaches script.
+   */
+  constructor(
+    readonly base: string,
+    readonly token = '',
+  ) {}
+
+  get pending(): number {
+    return this.pendingCount;
+  }
+
+  /** Subscribe to changes of the pending count. */
+  watch(listener: Listener): () => void {
+    this.listeners.add(listener);
+    return () => this.listeners.delete(listener);
+  }
+
+  private bump(delta: number): void {
+    this.pendingCount += delta;
+    for (const l of this.listeners) l();
+  }
+
+  /** One JSON request; resolves to the parsed body or throws ApiError. */
+  async request<T>(method: string, path: string, body?: unknown, signal?: AbortSignal): Promise<T> {
+    this.bump(1);
+    try {
+      let response: Response;
+      try {
+        const init: RequestInit = {
+          method,
+          headers: {
+            ...(this.token ? { Authorization: `Bearer ${this.token}` } : {}),
+            ...(body === undefined ? {} : { 'Content-Type': 'application/json' }),
+          },
+          credentials: 'same-origin',
+        };
+        if (body !== undefined) init.body = JSON.stringify(body);
+        if (signal) init.signal = signal;
+        response = await fetch(this.base + path, init);
+      } catch (e) {
+        if (e instanceof DOMException && e.name === 'AbortError') throw e;
+        this.onOffline?.();
+        throw new ApiError(0, {
+          code: 'Offline',
+          message: `the server did not answer ${method} ${path}`,
+          where: {},
+        });
+      }
+      const text = await response.text();
+      let parsed: unknown = null;
+      if (text.length > 0) {
+        try {
+          parsed = JSON.parse(text);
+        } catch {
+          throw new ApiError(response.status, {
+            code: 'BadResponse',
+            message: `${method} ${path}: the server answered ${response.status} with non-JSON text`,
+            where: {},
+          });
+        }
+      }
+      if (!response.ok) {
+        if (isErrorBody(parsed)) throw new ApiError(response.status, parsed.error);
+        throw new ApiError(response.status, {
+          code: `Http${response.status}`,
+          message: `${method} ${path}: HTTP ${response.status}`,
+          where: {},
+        });
+      }
+      return parsed as T;
+    } finally {
+      this.bump(-1);
+    }
+  }
+
+  health(): Promise<Health> {
+    return this.request('GET', '/api/health');
+  }
+
+  private doc(name: string): string {
+    return `/api/documents/${encodeURIComponent(name)}`;
+  }
+
+  listDocuments(): Promise<{ documents: DocumentSummary[] }> {
+    return this.request('GET', '/api/documents');
+  }
+  createDocument(name: string): Promise<DocumentState> {
+    return this.request('POST', '/api/documents', { name });
+  }
+  /** The document with every curve entity's curve file (the summary names them; each is fetched). */
+  async getDocument(name: string): Promise<DocumentState> {
+    const summary = await this.request<DocumentState>('GET', this.doc(name));
+    const entities = await Promise.all(
+      summary.entities.map((e) =>
+        isCurveKind(e.kind)
+          ? this.getEntity(name, String(e.label))
+          : Promise.resolve({ ...e, label: String(e.label) }),
+      ),
+    );
+    return { name: summary.name, revision: summary.revision, entities };
+  }
+  deleteDocument(name: string): Promise<unknown> {
+    return this.request('DELETE', this.doc(name));
+  }
+
+  async getEntity(doc: string, label: string): Promise<Entity> {
+    return entityFromServer(
+      await this.request('GET', `${this.doc(doc)}/entities/${encodeURIComponent(label)}`),
+    );
+  }
+  createEntity(doc: string, name: string, curve: CurveFile): Promise<ChangeReply> {
+    return this.request('POST', `${this.doc(doc)}/entities`, { name, curve });
+  }
+  putEntity(doc: string, label: string, curve: CurveFile): Promise<ChangeReply> {
+    return this.request('PUT', `${this.doc(doc)}/entities/${encodeURIComponent(label)}`, { curve });
+  }
+  /** Move points; `continued` folds the move into the previous step (one drag, one undo step). */
+  movePoints(
+    doc: string,
+    label: string,
+    moves: { index: number; to: number[] }[],
+    continued: boolean,
+  ): Promise<ChangeReply> {
+    return this.request('PATCH', `${this.doc(doc)}/entities/${encodeURIComponent(label)}`, {
+      move: moves,
+      continue: continued,
+    });
+  }
+  patchEntity(doc: string, label: string, patch: Record<string, unknown>): Promise<ChangeReply> {
+    return this.request('PATCH', `${this.doc(doc)}/entities/${encodeURIComponent(label)}`, patch);
+  }
+  deleteEntity(doc: string, label: string): Promise<ChangeReply> {
+    return this.request('DELETE', `${this.doc(doc)}/entities/${encodeURIComponent(label)}`);
+  }
+  undo(doc: string): Promise<ChangeReply> {
+    return this.request('POST', `${this.doc(doc)}/undo`);
+  }
+  redo(doc: string): Promise<ChangeReply> {
+    return this.request('POST', `${this.doc(doc)}/redo`);
+  }
+  async history(doc: string): Promise<DocHistory> {
+    return historyFromServer(await this.request('GET', `${this.doc(doc)}/history`));
+  }
+  async analysis(
+    doc: string,
+    label: string,
+    req: AnalysisRequest,
+    signal?: AbortSignal,
+  ): Promise<Analysis> {
+    const j = await this.request<Record<string, unknown>>(
+      'POST',
+      `${this.doc(doc)}/entities/${encodeURIComponent(label)}/analysis`,
+      req,
+      signal,
+    );
+    return analysisFromServer(j, req.by);
+  }
+
+  law(req: LawRequest): Promise<LawResponse> {
+    return this.request('POST', '/api/law', req);
+  }
+  reconstruct(req: ReconstructRequest): Promise<ReconstructResponse> {
+    return this.request('POST', '/api/reconstruct', req);
+  }
+
+  startJob(body: Record<string, unknown>): Promise<Job> {
+    return this.request('POST', '/api/jobs', body);
+  }
+  getJob(id: string): Promise<Job> {
+    return this.request('GET', `/api/jobs/${encodeURIComponent(id)}`);
+  }
+  cancelJob(id: string): Promise<Job> {
+    return this.request('DELETE', `/api/jobs/${encodeURIComponent(id)}`);
+  }
+
+  /** URL of an SSE stream (authorised by the HttpOnly cookie set on page open). */
+  eventsUrl(path: string): string {
+    return this.base + path;
+  }
+  documentEventsUrl(doc: string): string {
+    return this.eventsUrl(`${this.doc(doc)}/events`);
+  }
+  jobEventsUrl(id: string): string {
+    return this.eventsUrl(`/api/jobs/${encodeURIComponent(id)}/events`);
+  }
+}

@@ -1,0 +1,233 @@
+// JSON shapes of the `hula serve` API (issue 12, docs/server.md, GET /api/openapi.json).
+// These types mirror the OpenAPI document; the e2e tests exercise them
+// against the real server. No geometry is computed from them on the page.
+
+export type Point = number[];
+
+/** `{"error": {"code", "message", "where"}}` (docs/formats.md, Error JSON). */
+export interface ErrorWhere {
+  field?: string;
+  index?: number;
+  component?: number;
+  line?: number;
+  column?: number;
+}
+export interface ErrorBody {
+  code: string;
+  message: string;
+  where: ErrorWhere;
+}
+
+export interface Health {
+  status: 'ok';
+  version: string;
+}
+
+/** A curve file (docs/formats.md, Curve files). */
+export type CurveFile =
+  | {
+      kind: 'nurbs';
+      degree: number;
+      knots: number[];
+      control_points: Point[];
+      weights?: number[] | null;
+    }
+  | { kind: 'bezier'; control_points: Point[]; weights?: number[] | null }
+  | {
+      kind: 'interpolated';
+      points: Point[];
+      parameterisation?: Parameterisation;
+      parameters?: number[];
+      start?: EndCondition;
+      end?: EndCondition;
+    }
+  | { kind: 'law'; expression: string; parameter?: string; domain: [number, number] }
+  | {
+      kind: 'hermite';
+      points: Point[];
+      tangents: Point[];
+      second_derivatives?: Point[];
+      parameters?: number[];
+    }
+  | {
+      kind: 'natural';
+      curvature: string;
+      torsion?: string;
+      parameter?: string;
+      length: number;
+      start?: { point?: Point; tangent?: Point; normal?: Point };
+    };
+
+export type Parameterisation = 'uniform' | 'chord' | 'centripetal';
+export type EndCondition = 'natural' | 'bessel' | 'not-a-knot' | 'occt' | { tangent: Point };
+
+/** One entity of a document: a stable label, a kind, a name, attributes. */
+export interface Entity {
+  label: Label;
+  kind: string;
+  name: string;
+  attributes: Record<string, unknown>;
+  /** The curve as a curve file, for curve entities. */
+  curve?: CurveFile;
+}
+
+export interface DocumentSummary {
+  name: string;
+  revision?: number;
+}
+
+export interface DocumentState {
+  name: string;
+  revision: number;
+  entities: Entity[];
+}
+
+/**
+ * What a change did, pushed to every client on the document's event stream.
+ * Entities may come whole (`created`, `modified`) or as labels to fetch
+ * (`added`, `changed`, `attributes_changed`: the Oli change set's form).
+ */
+export interface ChangeSet {
+  revision: number;
+  created?: Entity[];
+  modified?: Entity[];
+  deleted?: Label[];
+  added?: Label[];
+  changed?: Label[];
+  removed?: Label[];
+  attributes_changed?: Label[];
+  cause?: 'commit' | 'undo' | 'redo';
+  /** Name of the step (e.g. "move points"). */
+  name?: string;
+}
+
+/** Oli labels are integers; the page keys entities by their decimal text. */
+export type Label = string | number;
+
+/** The reply of every change: the new revision and its change set. */
+export interface ChangeReply {
+  revision: number;
+  changes: ChangeSet;
+  label?: Label;
+}
+
+export interface HistoryStep {
+  revision: number;
+  name: string;
+  time?: string;
+  /** False for a step that was undone (it can be redone). */
+  applied?: boolean;
+}
+export interface History {
+  steps: HistoryStep[];
+  /** Index of the current step in `steps` (steps after it can be redone), when the server gives it. */
+  current?: number;
+}
+
+export type FinKind = 'curvature' | 'torsion' | 'normal' | 'binormal' | 'bishop-u' | 'bishop-v';
+
+export interface AnalysisRequest {
+  samples: number;
+  by: 'parameter' | 'arclength';
+  fins?: FinKind[];
+  scale?: number;
+  features?: boolean;
+}
+
+export interface Frame {
+  T: number[];
+  N: number[];
+  B: number[];
+}
+
+export interface Feature {
+  kind: string; // inflection | curvature-max | curvature-min | torsion-max | torsion-min | knot
+  t: number;
+  s?: number;
+  value?: number;
+  /** For knots: the continuity reached, e.g. "C2" or "G1". */
+  continuity?: string;
+}
+
+/** What a viewport draws for one curve (POST .../analysis, regrouped by api/adapt.ts). */
+export interface Analysis {
+  t: number[];
+  /** Arc length at each sample (empty when the samples are by parameter and the server sends none). */
+  s: number[];
+  points: Point[];
+  kappa: (number | null)[];
+  tau: (number | null)[];
+  speed: number[];
+  planar: boolean;
+  frames: Frame[];
+  /** Per fin kind: the hairs (base → tip) and the envelope through the tips, as polylines. */
+  fins: Partial<Record<FinKind, Point[][]>>;
+  features: Feature[];
+}
+
+export interface LawRequest {
+  expression: string;
+  parameter?: string;
+  at?: number[];
+  derivatives?: number;
+}
+export interface LawResponse {
+  expression: string;
+  parameter: string;
+  dimension: number;
+  results: { t: number; derivatives: number[][] }[];
+}
+
+export interface ReconstructRequest {
+  kappa: string;
+  tau: string;
+  length: number;
+  start_point?: number[];
+  start_frame?: { tangent: number[]; normal: number[] };
+  tolerance?: number;
+  at?: number[];
+}
+export interface FramePoint {
+  s: number;
+  position: number[];
+  T: number[];
+  N: number[];
+  B: number[];
+}
+export interface ReconstructResponse {
+  points: FramePoint[];
+  curve: CurveFile;
+  max_deviation: number;
+}
+
+export type JobState = 'queued' | 'running' | 'done' | 'failed' | 'cancelled';
+export interface Solution {
+  variables: number[];
+  objectives: (number | null)[];
+  violation: number | null;
+  curve?: CurveFile;
+}
+export interface JobReport {
+  termination: string;
+  message: string;
+  generations: number;
+  evaluations: number;
+  seconds: number;
+  seed: number;
+  algorithm: string;
+}
+export interface Job {
+  job: string;
+  kind: string;
+  state: JobState;
+  report: JobReport | null;
+  result: { best?: Solution; front?: Solution[]; curve?: CurveFile } | null;
+  error: ErrorBody | null;
+}
+export interface GenerationEvent {
+  generation: number;
+  evaluations: number;
+  best: (number | null)[];
+  front?: (number | null)[][];
+  elapsed: number;
+}

@@ -1,0 +1,944 @@
+// The workbench: wires the client, the document store, the viewports, the
+// tools, the graphs and the panels. State changes only through server
+// replies and document events; the page draws, picks and snaps.
+
+import { ApiError, Client } from './api/client';
+import type { Analysis, ChangeReply, ChangeSet, CurveFile, Entity, FinKind } from './api/types';
+import { DocumentStore } from './store/store';
+import { Graph, type Abscissa, type Quantity } from './graphs/graph';
+import { Viewports, toVec3 } from './viewport/viewports';
+import {
+  dragPlane,
+  pickNearest,
+  pickPolyline,
+  workingPlane,
+  type Vec3,
+  type ViewName,
+} from './viewport/math';
+import {
+  ControlPointTool,
+  HermiteTool,
+  SplineTool,
+  type Tool,
+  type ToolHost,
+  type ToolName,
+} from './tools/tools';
+import { Panels } from './panels/panels';
+import { DesignByCurvature } from './panels/design';
+import { OptimisePanel } from './panels/optimise';
+
+export interface ViewSettings {
+  fins: FinKind[];
+  scale: number;
+  samples: number;
+  frames: boolean;
+}
+
+export const ALL_FINS: FinKind[] = [
+  'curvature',
+  'torsion',
+  'normal',
+  'binormal',
+  'bishop-u',
+  'bishop-v',
+];
+
+/** Handles (control points or data points) of a curve file: what a drag moves. */
+export function handlesOf(curve: CurveFile | undefined): Vec3[] {
+  if (!curve) return [];
+  switch (curve.kind) {
+    case 'nurbs':
+    case 'bezier':
+      return curve.control_points.map(toVec3);
+    case 'interpolated':
+    case 'hermite':
+      return curve.points.map(toVec3);
+    case 'law':
+    case 'natural':
+      return [];
+  }
+}
+
+interface Drag {
+  label: string;
+  index: number;
+  view: ViewName;
+  first: boolean;
+  inFlight: boolean;
+  pending: Vec3 | null;
+  pendingStamp: number;
+  handles: Vec3[];
+}
+
+export class App {
+  readonly store: DocumentStore;
+  readonly viewports: Viewports;
+  readonly graphs: Graph[] = [];
+  readonly panels: Panels;
+  readonly design: DesignByCurvature;
+  readonly optimise: OptimisePanel;
+  selected: string | null = null;
+  tool: Tool | null = null;
+  toolName: ToolName = 'select';
+  abscissa: Abscissa = 's';
+  readonly settings = new Map<string, ViewSettings>();
+  private readonly analysisBusy = new Set<string>();
+  private readonly analysisDirty = new Set<string>();
+  private drag: Drag | null = null;
+  private events: EventSource | null = null;
+  private offline = false;
+  private navigating: { view: ViewName; x: number; y: number; mode: 'pan' | 'orbit' } | null = null;
+  private hoverIndex: number | null = null;
+  /** Timestamps of pointer events of the current drag, for the latency benchmark. */
+  readonly latencies: number[] = [];
+  /** Pointer event to the frame that draws the server's curve for that position. */
+  readonly curveLatencies: number[] = [];
+  private pointerStamp = 0;
+  private sentStamp = 0;
+  private curveStamp = 0;
+
+  constructor(
+    readonly client: Client,
+    docName: string,
+  ) {
+    this.store = new DocumentStore(docName);
+    this.viewports = new Viewports(document.getElementById('viewports')!);
+    this.panels = new Panels(this, document.getElementById('side')!);
+    this.design = new DesignByCurvature(this);
+    this.optimise = new OptimisePanel(this);
+    this.makeGraphs();
+    this.bindViews();
+    this.bindToolbar();
+    this.store.subscribe((e) => {
+      switch (e.type) {
+        case 'document':
+          for (const label of this.store.entities.keys()) this.refreshAnalysis(label);
+          this.redrawAll();
+          this.refreshHistory();
+          break;
+        case 'entity':
+          if (this.drag?.label !== e.label) this.redrawCurve(e.label);
+          this.refreshAnalysis(e.label);
+          this.refreshHistory();
+          break;
+        case 'removed':
+          this.viewports.removeCurve(e.label);
+          if (this.selected === e.label) this.select(null);
+          this.refreshHistory();
+          break;
+        case 'analysis':
+          if (this.drag?.label === e.label && this.sentStamp) {
+            this.curveStamp = this.sentStamp;
+            this.sentStamp = 0;
+          }
+          this.redrawCurve(e.label);
+          if (e.label === this.selected) this.updateGraphs();
+          break;
+        case 'history':
+          break;
+      }
+      this.panels.update();
+    });
+    client.onOffline = () => {
+      this.goOffline();
+    };
+    this.viewports.afterFrame.add(() => {
+      const now = performance.now();
+      if (this.pointerStamp) {
+        this.latencies.push(now - this.pointerStamp);
+        this.pointerStamp = 0;
+      }
+      if (this.curveStamp) {
+        this.curveLatencies.push(now - this.curveStamp);
+        this.curveStamp = 0;
+      }
+    });
+    this.setTool('select');
+    this.panels.update();
+  }
+
+  // ---- document ------------------------------------------------------------
+
+  async open(name: string): Promise<void> {
+    this.events?.close();
+    this.events = null;
+    this.select(null);
+    for (const label of this.store.entities.keys()) this.viewports.removeCurve(label);
+    this.store.entities.clear();
+    this.store.revision = -1;
+    this.store.name = name;
+    let doc;
+    try {
+      doc = await this.client.getDocument(name);
+    } catch (e) {
+      if (e instanceof ApiError && e.status === 404) doc = await this.client.createDocument(name);
+      else throw e;
+    }
+    this.store.load(doc);
+    document.getElementById('doc-name')!.textContent = name;
+    location.hash = `doc=${encodeURIComponent(name)}`;
+    this.subscribe();
+    this.fitAll();
+    // Fit again once the curves' analyses are in (law and natural curves have no handles).
+    this.fitPending = this.store.entities.size > 0;
+  }
+
+  private fitPending = false;
+
+  /** Follow the document's change sets (other tabs, other clients, jobs). */
+  private subscribe(): void {
+    const es = new EventSource(this.client.documentEventsUrl(this.store.name), {
+      withCredentials: true,
+    });
+    const onChange = (ev: MessageEvent<string>): void => {
+      try {
+        this.applyChanges(JSON.parse(ev.data) as ChangeSet);
+      } catch (e) {
+        this.toast(e);
+      }
+    };
+    es.addEventListener('change', onChange);
+    es.onmessage = onChange;
+    es.onerror = () => {
+      if (es.readyState === EventSource.CLOSED || !this.offline) void this.checkServer();
+    };
+    this.events = es;
+  }
+
+  async reload(): Promise<void> {
+    const doc = await this.client.getDocument(this.store.name);
+    this.store.load(doc);
+  }
+
+  private goOffline(): void {
+    if (this.offline) return;
+    this.offline = true;
+    this.setStatus('Server unreachable: reconnecting…', true);
+    void this.reconnect();
+  }
+
+  private async checkServer(): Promise<void> {
+    try {
+      await this.client.health();
+    } catch {
+      this.goOffline();
+    }
+  }
+
+  /** Poll the health route until the server is back, then reload the document's revision. */
+  private async reconnect(): Promise<void> {
+    this.events?.close();
+    this.events = null;
+    for (let attempt = 0; attempt < 600; attempt++) {
+      await new Promise((r) => setTimeout(r, Math.min(2000, 200 + attempt * 100)));
+      try {
+        await this.client.health();
+        this.offline = false;
+        await this.reload();
+        this.subscribe();
+        this.setStatus(`Reconnected at revision ${this.store.revision}`);
+        return;
+      } catch {
+        // still down
+      }
+    }
+    this.setStatus('Server unreachable: reload the page once it runs again', true);
+  }
+
+  setStatus(text: string, error = false): void {
+    const el = document.getElementById('status')!;
+    el.textContent = text;
+    el.classList.toggle('offline', error);
+  }
+
+  /** An error toast carrying the server's code, message and field. */
+  toast(e: unknown): void {
+    const box = document.getElementById('toasts')!;
+    const t = document.createElement('div');
+    t.className = 'toast';
+    if (e instanceof ApiError) {
+      const where = Object.entries(e.body.where)
+        .map(([k, v]) => `${k} ${String(v)}`)
+        .join(', ');
+      t.innerHTML = '<code></code> <span></span> <em></em>';
+      t.children[0]!.textContent = e.body.code;
+      t.children[1]!.textContent = e.body.message;
+      t.children[2]!.textContent = where ? `(${where})` : '';
+      t.dataset['code'] = e.body.code;
+      if (e.body.where.field) t.dataset['field'] = e.body.where.field;
+    } else {
+      t.textContent = e instanceof Error ? e.message : String(e);
+    }
+    box.appendChild(t);
+    setTimeout(() => {
+      t.remove();
+    }, 8000);
+  }
+
+  /** Run a server call, turning a failure into a toast. */
+  async run<T>(f: () => Promise<T>): Promise<T | undefined> {
+    try {
+      return await f();
+    } catch (e) {
+      if (!(e instanceof ApiError && e.offline)) this.toast(e);
+      return undefined;
+    }
+  }
+
+  // ---- editing ---------------------------------------------------------------
+
+  async createCurve(name: string, curve: CurveFile): Promise<string | undefined> {
+    const reply = await this.run(() => this.client.createEntity(this.store.name, name, curve));
+    if (!reply) return undefined;
+    this.applyReply(reply);
+    const made = reply.label ?? reply.changes.created?.[0]?.label ?? reply.changes.added?.[0];
+    const label = made === undefined ? undefined : String(made);
+    if (label) this.select(label);
+    return label;
+  }
+
+  /** Apply a change reply; entities named by label only are fetched. */
+  applyReply(reply: ChangeReply): void {
+    this.fetchStale(this.store.applyReply(reply));
+  }
+
+  applyChanges(changes: ChangeSet): void {
+    this.fetchStale(this.store.apply(changes));
+  }
+
+  private fetchStale(labels: string[]): void {
+    for (const label of labels) {
+      void this.client
+        .getEntity(this.store.name, label)
+        .then((e) => {
+          this.store.put(e);
+        })
+        .catch((e: unknown) => {
+          if (e instanceof ApiError && e.status === 404) this.store.remove(label);
+          else if (!(e instanceof ApiError && e.offline)) this.toast(e);
+        });
+    }
+  }
+
+  async replaceCurve(label: string, curve: CurveFile): Promise<void> {
+    const reply = await this.run(() => this.client.putEntity(this.store.name, label, curve));
+    if (reply) this.applyReply(reply);
+  }
+
+  async patch(label: string, body: Record<string, unknown>): Promise<void> {
+    const reply = await this.run(() => this.client.patchEntity(this.store.name, label, body));
+    if (reply) this.applyReply(reply);
+  }
+
+  async movePoint(label: string, index: number, to: Vec3): Promise<void> {
+    const reply = await this.run(() =>
+      this.client.movePoints(this.store.name, label, [{ index, to: [...to] }], false),
+    );
+    if (reply) this.applyReply(reply);
+  }
+
+  async undo(): Promise<void> {
+    const reply = await this.run(() => this.client.undo(this.store.name));
+    if (reply) this.applyReply(reply);
+  }
+
+  async redo(): Promise<void> {
+    const reply = await this.run(() => this.client.redo(this.store.name));
+    if (reply) this.applyReply(reply);
+  }
+
+  async deleteSelected(): Promise<void> {
+    const label = this.selected;
+    if (!label) return;
+    const reply = await this.run(() => this.client.deleteEntity(this.store.name, label));
+    if (reply) this.applyReply(reply);
+  }
+
+  refreshHistory(): void {
+    void this.run(async () => {
+      this.store.setHistory(await this.client.history(this.store.name));
+    });
+  }
+
+  // ---- interrogation -------------------------------------------------------
+
+  settingsOf(label: string): ViewSettings {
+    let s = this.settings.get(label);
+    if (!s) {
+      s = { fins: [], scale: 1, samples: 200, frames: false };
+      this.settings.set(label, s);
+    }
+    return s;
+  }
+
+  /** Ask the server for what the views draw; one request per curve in flight, the latest wins. */
+  refreshAnalysis(label: string): void {
+    if (!this.store.entities.has(label)) return;
+    if (this.analysisBusy.has(label)) {
+      this.analysisDirty.add(label);
+      return;
+    }
+    this.analysisBusy.add(label);
+    const s = this.settingsOf(label);
+    void this.client
+      .analysis(this.store.name, label, {
+        samples: s.samples,
+        by: this.abscissa === 's' ? 'arclength' : 'parameter',
+        fins: s.fins,
+        scale: s.scale,
+      })
+      .then((a) => {
+        this.store.setAnalysis(label, a);
+      })
+      .catch((e: unknown) => {
+        if (!(e instanceof ApiError && (e.offline || e.status === 404))) this.toast(e);
+      })
+      .finally(() => {
+        this.analysisBusy.delete(label);
+        if (this.analysisDirty.delete(label)) this.refreshAnalysis(label);
+        if (this.fitPending && !this.analysisPending) {
+          this.fitPending = false;
+          this.fitAll();
+        }
+      });
+  }
+
+  get analysisPending(): boolean {
+    return this.analysisBusy.size > 0;
+  }
+
+  /** The fins drawn for a curve: planar curves show only the meaningful ones (8.4, 8.6). */
+  shownFins(label: string, a: Analysis | undefined): FinKind[] {
+    const s = this.settingsOf(label);
+    if (a?.planar) return s.fins.filter((f) => f !== 'torsion' && f !== 'binormal');
+    return s.fins;
+  }
+
+  redrawCurve(label: string, handlesOverride?: Vec3[]): void {
+    const e = this.store.entities.get(label);
+    if (!e) return;
+    const a = this.store.analyses.get(label);
+    const s = this.settingsOf(label);
+    this.viewports.drawCurve(label, {
+      analysis: a,
+      handles:
+        handlesOverride ?? (this.drag?.label === label ? this.drag.handles : handlesOf(e.curve)),
+      polygon:
+        e.curve?.kind === 'nurbs' || e.curve?.kind === 'bezier' || e.curve?.kind === 'hermite',
+      selected: label === this.selected,
+      fins: this.shownFins(label, a),
+      frames: s.frames,
+    });
+    const root = this.viewports.root;
+    root.dataset['fins'] = this.selected
+      ? this.shownFins(this.selected, this.store.analyses.get(this.selected)).join(' ')
+      : '';
+  }
+
+  redrawAll(): void {
+    for (const label of this.store.entities.keys()) this.redrawCurve(label);
+  }
+
+  select(label: string | null): void {
+    const previous = this.selected;
+    this.selected = label;
+    if (previous) this.redrawCurve(previous);
+    if (label) this.redrawCurve(label);
+    this.updateGraphs();
+    this.panels.update();
+  }
+
+  get selectedEntity(): Entity | undefined {
+    return this.selected ? this.store.entities.get(this.selected) : undefined;
+  }
+
+  // ---- graphs ----------------------------------------------------------------
+
+  private makeGraphs(): void {
+    const root = document.getElementById('graphs')!;
+    const defaults: Quantity[] = ['kappa', 'tau'];
+    defaults.forEach((q, i) => {
+      const box = document.createElement('div');
+      box.className = 'graph-box';
+      const row = document.createElement('div');
+      row.className = 'row';
+      const sel = document.createElement('select');
+      sel.setAttribute('aria-label', `Quantity of graph ${i + 1}`);
+      for (const [value, text] of Object.entries({
+        kappa: 'κ curvature',
+        radius: 'radius of curvature',
+        tau: 'τ torsion',
+        speed: 'speed',
+        logkappa: 'log curvature',
+        logtau: 'log torsion',
+      })) {
+        const o = document.createElement('option');
+        o.value = value;
+        o.textContent = text;
+        sel.appendChild(o);
+      }
+      sel.value = q;
+      row.appendChild(sel);
+      if (i === 0) {
+        const ab = document.createElement('select');
+        ab.id = 'abscissa';
+        ab.setAttribute('aria-label', 'Graph abscissa');
+        ab.innerHTML =
+          '<option value="s">against arc length s</option><option value="t">against parameter t</option>';
+        ab.addEventListener('change', () => {
+          this.abscissa = ab.value as Abscissa;
+          for (const g of this.graphs) g.abscissa = this.abscissa;
+          for (const label of this.store.entities.keys()) this.refreshAnalysis(label);
+        });
+        row.appendChild(ab);
+      }
+      box.appendChild(row);
+      root.appendChild(box);
+      const g = new Graph(box, q, `g${i}`);
+      sel.addEventListener('change', () => {
+        g.quantity = sel.value as Quantity;
+        this.updateGraphs();
+      });
+      g.onHover = (index) => {
+        this.hoverSample(index, g);
+      };
+      this.graphs.push(g);
+    });
+    this.design.attach(this.graphs[0]!);
+  }
+
+  updateGraphs(): void {
+    const a = this.selected ? this.store.analyses.get(this.selected) : undefined;
+    for (const g of this.graphs) g.show(a);
+  }
+
+  /** Linked hover: a sample index from a graph or the curve highlights both. */
+  hoverSample(index: number | null, from?: Graph): void {
+    this.hoverIndex = index;
+    const a = this.selected ? this.store.analyses.get(this.selected) : undefined;
+    const p = index !== null && a ? a.points[index] : undefined;
+    this.viewports.setMarker(p ? toVec3(p) : null);
+    for (const g of this.graphs) if (g !== from) g.highlight(index);
+    this.viewports.root.dataset['hover'] = index === null ? '' : String(index);
+  }
+
+  get hovered(): number | null {
+    return this.hoverIndex;
+  }
+
+  // ---- viewport input ----------------------------------------------------
+
+  setTool(name: ToolName): void {
+    this.tool?.cancel();
+    this.toolName = name;
+    const host: ToolHost = {
+      pointAt: (view, ev) => this.pointAt(view, ev),
+      preview: (pts) => {
+        this.viewports.setPreview(pts);
+      },
+      create: (n, c) => {
+        void this.createCurve(n, c);
+      },
+      status: (t) => {
+        this.setStatus(t);
+      },
+    };
+    this.tool =
+      name === 'spline'
+        ? new SplineTool(host)
+        : name === 'bezier' || name === 'nurbs'
+          ? new ControlPointTool(name, host)
+          : name === 'hermite'
+            ? new HermiteTool(host)
+            : null;
+    if (!this.tool)
+      this.setStatus(
+        'Select: click a curve; drag its points; wheel zooms, middle drag pans, Alt-drag orbits',
+      );
+    for (const b of document.querySelectorAll<HTMLButtonElement>('[data-tool]')) {
+      b.classList.toggle('on', b.dataset['tool'] === name);
+      b.setAttribute('aria-pressed', String(b.dataset['tool'] === name));
+    }
+  }
+
+  private local(view: ViewName, ev: PointerEvent | MouseEvent): [number, number] {
+    const r = this.viewports.view(view).el.getBoundingClientRect();
+    return [ev.clientX - r.left, ev.clientY - r.top];
+  }
+
+  pointAt(view: ViewName, ev: PointerEvent): Vec3 | null {
+    const [x, y] = this.local(view, ev);
+    return this.viewports.pointOn(view, x, y, workingPlane(view));
+  }
+
+  private bindViews(): void {
+    for (const v of this.viewports.views) {
+      const el = v.el;
+      el.addEventListener('contextmenu', (ev) => {
+        ev.preventDefault();
+      });
+      el.addEventListener('pointerdown', (ev) => {
+        el.focus();
+        this.viewports.active = v.name;
+        if (
+          ev.button === 1 ||
+          (ev.button === 0 && (ev.shiftKey || ev.altKey)) ||
+          (ev.button === 0 && this.navMode)
+        ) {
+          const mode = ev.altKey || this.navMode === 'orbit' ? 'orbit' : 'pan';
+          this.navigating = { view: v.name, x: ev.clientX, y: ev.clientY, mode };
+          el.setPointerCapture(ev.pointerId);
+          return;
+        }
+        if (ev.button === 2) {
+          this.tool?.rightClick(v.name, ev);
+          if (!this.tool && this.navMode) this.navMode = null;
+          return;
+        }
+        if (ev.button !== 0) return;
+        if (this.tool) {
+          this.tool.click(v.name, ev);
+          return;
+        }
+        this.selectOrDrag(v.name, ev);
+        if (this.drag) el.setPointerCapture(ev.pointerId);
+      });
+      el.addEventListener('pointermove', (ev) => {
+        if (this.navigating) {
+          const dx = ev.clientX - this.navigating.x;
+          const dy = ev.clientY - this.navigating.y;
+          this.navigating.x = ev.clientX;
+          this.navigating.y = ev.clientY;
+          if (this.navigating.mode === 'orbit' && v.name === 'persp')
+            this.viewports.orbit(v.name, dx, dy);
+          else this.viewports.pan(v.name, dx, dy);
+          return;
+        }
+        if (this.drag) {
+          this.dragTo(v.name, ev);
+          return;
+        }
+        if (this.tool) {
+          this.tool.move(v.name, ev);
+          return;
+        }
+        this.hoverCurve(v.name, ev);
+      });
+      const up = (ev: PointerEvent): void => {
+        if (this.navigating) {
+          this.navigating = null;
+          return;
+        }
+        if (this.drag && ev.button === 0) this.endDrag();
+      };
+      el.addEventListener('pointerup', up);
+      el.addEventListener('pointercancel', up);
+      el.addEventListener(
+        'wheel',
+        (ev) => {
+          ev.preventDefault();
+          this.viewports.zoom(v.name, Math.exp(ev.deltaY * 0.0015));
+        },
+        { passive: false },
+      );
+    }
+  }
+
+  navMode: 'pan' | 'orbit' | null = null;
+
+  private selectOrDrag(view: ViewName, ev: PointerEvent): void {
+    const [x, y] = this.local(view, ev);
+    const { w, h } = this.viewports.size(view);
+    const vp = this.viewports.viewProj(view);
+    // A handle of the selected curve first (drag), then any curve (select).
+    if (this.selected) {
+      const handles = handlesOf(this.store.entities.get(this.selected)?.curve);
+      const hit = pickNearest([x, y], handles, vp, w, h, 8);
+      if (hit) {
+        this.drag = {
+          label: this.selected,
+          index: hit.index,
+          view,
+          first: true,
+          inFlight: false,
+          pending: null,
+          pendingStamp: 0,
+          handles: handles.slice(),
+        };
+        this.latencies.length = 0;
+        this.curveLatencies.length = 0;
+        this.setStatus(`Dragging point ${hit.index}`);
+        return;
+      }
+    }
+    let best: { label: string; d: number } | null = null;
+    for (const [label, a] of this.store.analyses) {
+      const hit = pickPolyline([x, y], a.points.map(toVec3), vp, w, h, 6);
+      if (hit && (!best || hit.distance < best.d)) best = { label, d: hit.distance };
+    }
+    this.select(best?.label ?? null);
+  }
+
+  private hoverCurve(view: ViewName, ev: PointerEvent): void {
+    if (!this.selected) return;
+    const a = this.store.analyses.get(this.selected);
+    if (!a) return;
+    const [x, y] = this.local(view, ev);
+    const { w, h } = this.viewports.size(view);
+    const hit = pickPolyline([x, y], a.points.map(toVec3), this.viewports.viewProj(view), w, h, 8);
+    if ((hit?.index ?? null) !== this.hoverIndex) this.hoverSample(hit?.index ?? null);
+  }
+
+  /** Move the dragged point on the plane through it parallel to the view (the page's drawing). */
+  private dragTo(view: ViewName, ev: PointerEvent): void {
+    const d = this.drag!;
+    const [x, y] = this.local(view, ev);
+    const start = d.handles[d.index]!;
+    const p = this.viewports.pointOn(view, x, y, dragPlane(view, start));
+    if (!p) return;
+    d.handles[d.index] = p;
+    this.pointerStamp = performance.now();
+    d.pendingStamp = this.pointerStamp;
+    this.redrawCurve(d.label, d.handles);
+    d.pending = p;
+    this.flushDrag();
+  }
+
+  /** Send the latest drag position; one PATCH in flight, `continue` after the first. */
+  private flushDrag(): void {
+    const d = this.drag;
+    if (!d || d.inFlight || !d.pending) return;
+    const to = d.pending;
+    d.pending = null;
+    this.sentStamp = d.pendingStamp;
+    d.inFlight = true;
+    const continued = !d.first;
+    d.first = false;
+    this.client
+      .movePoints(this.store.name, d.label, [{ index: d.index, to: [...to] }], continued)
+      .then((reply) => {
+        this.applyReply(reply);
+      })
+      .catch((e: unknown) => {
+        this.toast(e);
+      })
+      .finally(() => {
+        d.inFlight = false;
+        if (this.drag === d) this.flushDrag();
+        else if (d.pending) {
+          this.drag = d;
+          this.flushDrag();
+          this.drag = null;
+        }
+      });
+  }
+
+  private endDrag(): void {
+    const d = this.drag;
+    this.drag = null;
+    if (!d) return;
+    if (d.pending && !d.inFlight) {
+      this.drag = d;
+      this.flushDrag();
+      this.drag = null;
+    }
+    this.setStatus(`Moved point ${d.index}`);
+    this.redrawCurve(d.label);
+  }
+
+  get dragging(): boolean {
+    return this.drag !== null;
+  }
+
+  fitAll(): void {
+    const pts: Vec3[] = [];
+    for (const [label, a] of this.store.analyses) {
+      pts.push(...a.points.map(toVec3));
+      pts.push(...handlesOf(this.store.entities.get(label)?.curve));
+    }
+    for (const e of this.store.entities.values()) pts.push(...handlesOf(e.curve));
+    if (pts.length === 0) pts.push([0, -50, -50], [120, 50, 50]);
+    this.viewports.fit(pts);
+  }
+
+  // ---- toolbar and keys ----------------------------------------------------
+
+  private bindToolbar(): void {
+    for (const b of document.querySelectorAll<HTMLButtonElement>('[data-tool]')) {
+      b.addEventListener('click', () => {
+        this.setTool(b.dataset['tool'] as ToolName);
+      });
+    }
+    for (const b of document.querySelectorAll<HTMLButtonElement>('[data-action]')) {
+      b.addEventListener('click', () => {
+        this.action(b.dataset['action']!);
+      });
+    }
+    const snap = document.getElementById('snap') as HTMLInputElement;
+    snap.addEventListener('change', () => {
+      this.viewports.snap = snap.checked;
+    });
+    document.getElementById('import-file')!.addEventListener('change', (ev) => {
+      const input = ev.target as HTMLInputElement;
+      const file = input.files?.[0];
+      input.value = '';
+      if (file) void this.importFile(file);
+    });
+    window.addEventListener('keydown', (ev) => {
+      this.key(ev);
+    });
+  }
+
+  action(name: string): void {
+    switch (name) {
+      case 'undo':
+        void this.undo();
+        break;
+      case 'redo':
+        void this.redo();
+        break;
+      case 'delete':
+        void this.deleteSelected();
+        break;
+      case 'fit':
+        this.fitAll();
+        break;
+      case 'layout':
+        this.viewports.setLayout(this.viewports.layout === 'quad' ? 'single' : 'quad');
+        break;
+      case 'law':
+        this.panels.lawDialog();
+        break;
+      case 'natural':
+        this.panels.naturalDialog();
+        break;
+      case 'import':
+        document.getElementById('import-file')!.click();
+        break;
+      case 'open':
+        void this.panels.openDialog();
+        break;
+      case 'export':
+        this.exportSelected();
+        break;
+      case 'help':
+        this.panels.helpDialog();
+        break;
+    }
+  }
+
+  async importFile(file: File): Promise<void> {
+    const text = await file.text();
+    let curve: CurveFile;
+    try {
+      curve = JSON.parse(text) as CurveFile;
+    } catch (e) {
+      this.toast(
+        new Error(`${file.name}: not JSON (${e instanceof Error ? e.message : String(e)})`),
+      );
+      return;
+    }
+    await this.createCurve(file.name.replace(/\.[^.]*$/, ''), curve);
+    this.fitAll();
+  }
+
+  exportSelected(): void {
+    const e = this.selectedEntity;
+    if (!e?.curve) {
+      this.setStatus('Export: select a curve first');
+      return;
+    }
+    const blob = new Blob([JSON.stringify(e.curve, null, 1)], { type: 'application/json' });
+    const a = document.createElement('a');
+    a.href = URL.createObjectURL(blob);
+    a.download = `${e.name || e.label}.json`;
+    a.click();
+    URL.revokeObjectURL(a.href);
+  }
+
+  private key(ev: KeyboardEvent): void {
+    // A dialog owns the keyboard (Escape closes it natively).
+    if ((document.getElementById('dialog') as HTMLDialogElement).open) return;
+    const target = ev.target as HTMLElement | null;
+    if (
+      target &&
+      (target.tagName === 'INPUT' || target.tagName === 'TEXTAREA' || target.tagName === 'SELECT')
+    )
+      return;
+    if (this.tool?.key(ev)) {
+      ev.preventDefault();
+      return;
+    }
+    const k = ev.key.toLowerCase();
+    if ((ev.ctrlKey || ev.metaKey) && k === 'z') {
+      ev.preventDefault();
+      void (ev.shiftKey ? this.redo() : this.undo());
+      return;
+    }
+    if ((ev.ctrlKey || ev.metaKey) && k === 'y') {
+      ev.preventDefault();
+      void this.redo();
+      return;
+    }
+    if (ev.ctrlKey || ev.metaKey || ev.altKey) return;
+    const tools: Record<string, ToolName> = {
+      v: 'select',
+      s: 'spline',
+      b: 'bezier',
+      n: 'nurbs',
+      h: 'hermite',
+    };
+    const actions: Record<string, string> = {
+      l: 'law',
+      k: 'natural',
+      i: 'import',
+      f: 'fit',
+      q: 'layout',
+      o: 'open',
+      e: 'export',
+      '?': 'help',
+      delete: 'delete',
+      backspace: 'delete',
+    };
+    const views: Record<string, ViewName> = { '1': 'top', '2': 'front', '3': 'side', '4': 'persp' };
+    if (tools[k]) this.setTool(tools[k]);
+    else if (actions[k]) this.action(actions[k]);
+    else if (views[k]) this.viewports.setLayout('single', views[k]);
+    else if (k === 'g') {
+      const snap = document.getElementById('snap') as HTMLInputElement;
+      snap.checked = !snap.checked;
+      this.viewports.snap = snap.checked;
+    } else if (k === 'p') this.navMode = this.navMode === 'pan' ? null : 'pan';
+    else if (k === 'r') this.navMode = this.navMode === 'orbit' ? null : 'orbit';
+    else if (k === 'escape') {
+      this.navMode = null;
+      this.select(null);
+    } else return;
+    ev.preventDefault();
+  }
+
+  /** Quiet: no request in flight, no analysis queued, no frame scheduled, no drag. */
+  isIdle(): boolean {
+    return (
+      this.client.pending === 0 &&
+      !this.analysisPending &&
+      !this.viewports.renderPending &&
+      !this.drag &&
+      !this.design.busy &&
+      !this.optimise.running
+    );
+  }
+}
+
+/** Wait for two consecutive idle animation frames. */
+export function waitIdle(app: App): Promise<void> {
+  return new Promise((resolve) => {
+    let quiet = 0;
+    const check = (): void => {
+      quiet = app.isIdle() ? quiet + 1 : 0;
+      if (quiet >= 2) resolve();
+      else setTimeout(check, 16);
+    };
+    check();
+  });
+}

@@ -1,0 +1,262 @@
+// The linked graphs (κ, radius, τ, speed, log κ, log τ against t or s) drawn
+// with uPlot from the server's analysis, with min/max/inflection markers and
+// hover linking; the κ graph can be dragged to design by curvature.
+
+import uPlot from 'uplot';
+import 'uplot/dist/uPlot.min.css';
+import type { Analysis } from '../api/types';
+import { logMagnitude, nearestIndex, paddedRange, radius, type Range } from './scale';
+
+export type Quantity = 'kappa' | 'radius' | 'tau' | 'speed' | 'logkappa' | 'logtau';
+export type Abscissa = 't' | 's';
+
+export const QUANTITY_LABELS: Record<Quantity, string> = {
+  kappa: 'curvature κ',
+  radius: 'radius 1/κ',
+  tau: 'torsion τ',
+  speed: 'speed |C′|',
+  logkappa: 'log10 |κ|',
+  logtau: 'log10 |τ|',
+};
+
+function nums(xs: readonly (number | null)[]): Float64Array {
+  const out = new Float64Array(xs.length);
+  xs.forEach((v, i) => (out[i] = v ?? NaN));
+  return out;
+}
+
+/** The plotted values of a quantity from an analysis (no geometry: a change of units). */
+export function quantityValues(a: Analysis, q: Quantity): Float64Array {
+  switch (q) {
+    case 'kappa':
+      return nums(a.kappa);
+    case 'radius':
+      return radius(nums(a.kappa));
+    case 'tau':
+      return nums(a.tau);
+    case 'speed':
+      return nums(a.speed);
+    case 'logkappa':
+      return logMagnitude(nums(a.kappa));
+    case 'logtau':
+      return logMagnitude(nums(a.tau));
+  }
+}
+
+export interface Marker {
+  x: number;
+  y: number;
+  kind: string;
+}
+
+export class Graph {
+  readonly el: HTMLElement;
+  private plot: uPlot | null = null;
+  quantity: Quantity;
+  abscissa: Abscissa = 's';
+  xs: Float64Array = new Float64Array();
+  ys: Float64Array = new Float64Array();
+  overlay: Float64Array | null = null;
+  markers: Marker[] = [];
+  /** Hover on the graph: the sample index, or null when the pointer leaves. */
+  onHover: ((index: number | null) => void) | null = null;
+  /** Drag on the graph (design by curvature): abscissa and value at the pointer. */
+  onDrag: ((phase: 'start' | 'move' | 'end', x: number, y: number) => void) | null = null;
+  private yRange: Range = { min: 0, max: 1 };
+  private dragging = false;
+
+  constructor(
+    parent: HTMLElement,
+    quantity: Quantity,
+    readonly id: string,
+  ) {
+    this.quantity = quantity;
+    this.el = document.createElement('div');
+    this.el.className = 'graph';
+    this.el.dataset['graph'] = id;
+    this.el.setAttribute('role', 'img');
+    parent.appendChild(this.el);
+    new ResizeObserver(() => {
+      this.plot?.setSize(this.sizeOf());
+    }).observe(this.el);
+  }
+
+  private sizeOf(): { width: number; height: number } {
+    return {
+      width: Math.max(120, this.el.clientWidth),
+      height: Math.max(80, this.el.clientHeight - 4),
+    };
+  }
+
+  /** Show an analysis (and optionally an overlay series, e.g. the fairing ghost). */
+  show(a: Analysis | undefined, overlay?: Analysis): void {
+    if (!a) {
+      this.xs = new Float64Array();
+      this.ys = new Float64Array();
+    } else {
+      this.xs = Float64Array.from(this.abscissa === 's' && a.s.length === a.t.length ? a.s : a.t);
+      this.ys = quantityValues(a, this.quantity);
+    }
+    this.overlay = null;
+    if (a && overlay && overlay.points.length > 0) {
+      // Overlay on the same abscissa range: resampled by index onto the main xs.
+      const oy = quantityValues(overlay, this.quantity);
+      const ox = Float64Array.from(
+        this.abscissa === 's' && overlay.s.length === overlay.t.length ? overlay.s : overlay.t,
+      );
+      const scaleX =
+        (ox[ox.length - 1]! - ox[0]!) / (this.xs[this.xs.length - 1]! - this.xs[0]! || 1);
+      this.overlay = this.xs.map((x) => oy[nearestIndex(ox, ox[0]! + (x - this.xs[0]!) * scaleX)]!);
+    }
+    this.markers = [];
+    if (a) {
+      const byS = this.abscissa === 's' && a.s.length === a.t.length;
+      for (const f of a.features) {
+        const x = byS ? (f.s ?? NaN) : f.t;
+        if (!Number.isFinite(x) || this.xs.length === 0) continue;
+        const i = nearestIndex(this.xs, x);
+        this.markers.push({ x, y: this.ys[i]!, kind: f.kind });
+      }
+    }
+    this.el.setAttribute(
+      'aria-label',
+      `${QUANTITY_LABELS[this.quantity]} against ${this.abscissa}`,
+    );
+    this.el.dataset['samples'] = String(this.xs.length);
+    this.redraw();
+  }
+
+  /** Replace the plotted values only (live profile editing). */
+  setValues(ys: Float64Array): void {
+    this.ys = ys;
+    this.redraw();
+  }
+
+  private redraw(): void {
+    this.yRange = paddedRange(
+      this.overlay ? Float64Array.from([...this.ys, ...this.overlay]) : this.ys,
+    );
+    const data: uPlot.AlignedData = [this.xs, this.ys, ...(this.overlay ? [this.overlay] : [])];
+    const seriesCount = this.overlay ? 3 : 2;
+    if (this.plot && this.plot.series.length === seriesCount) {
+      this.plot.setData(data);
+      return;
+    }
+    this.plot?.destroy();
+    this.plot = new uPlot(this.options(seriesCount), data, this.el);
+    this.attachDrag();
+  }
+
+  private options(seriesCount: number): uPlot.Options {
+    const series: uPlot.Series[] = [
+      { label: this.abscissa },
+      { label: QUANTITY_LABELS[this.quantity], stroke: '#d64bd6', width: 1.5, spanGaps: false },
+    ];
+    if (seriesCount === 3)
+      series.push({ label: 'ghost', stroke: '#7fe3a0', width: 1, dash: [4, 3] });
+    return {
+      ...this.sizeOf(),
+      legend: { show: false },
+      scales: {
+        x: { time: false },
+        y: { range: () => [this.yRange.min, this.yRange.max] },
+      },
+      axes: [
+        {
+          stroke: '#aab4c3',
+          grid: { stroke: '#2b323d' },
+          label: this.abscissa,
+          labelSize: 14,
+          size: 30,
+        },
+        { stroke: '#aab4c3', grid: { stroke: '#2b323d' }, size: 50 },
+      ],
+      series,
+      cursor: { drag: { x: false, y: false }, points: { size: 6 } },
+      hooks: {
+        setCursor: [
+          (u) => {
+            if (this.dragging) return;
+            const i = u.cursor.idx;
+            this.onHover?.(i ?? null);
+          },
+        ],
+        draw: [
+          (u) => {
+            this.drawMarkers(u);
+          },
+        ],
+      },
+    };
+  }
+
+  private drawMarkers(u: uPlot): void {
+    const ctx = u.ctx;
+    ctx.save();
+    for (const m of this.markers) {
+      if (!Number.isFinite(m.y)) continue;
+      const x = u.valToPos(m.x, 'x', true);
+      const y = u.valToPos(m.y, 'y', true);
+      ctx.fillStyle =
+        m.kind === 'inflection'
+          ? '#ffe14d'
+          : m.kind.endsWith('max')
+            ? '#ff6b6b'
+            : m.kind.endsWith('min')
+              ? '#4da3ff'
+              : '#aab4c3';
+      ctx.beginPath();
+      if (m.kind === 'knot') ctx.rect(x - 3, u.bbox.top + u.bbox.height - 6, 6, 6);
+      else ctx.arc(x, y, 4 * devicePixelRatio, 0, 2 * Math.PI);
+      ctx.fill();
+    }
+    ctx.restore();
+  }
+
+  private attachDrag(): void {
+    const over = this.plot?.over;
+    if (!over) return;
+    const at = (ev: PointerEvent): [number, number] => {
+      const r = over.getBoundingClientRect();
+      return [
+        this.plot!.posToVal(ev.clientX - r.left, 'x'),
+        this.plot!.posToVal(ev.clientY - r.top, 'y'),
+      ];
+    };
+    over.addEventListener('pointerdown', (ev) => {
+      if (!this.onDrag || ev.button !== 0) return;
+      this.dragging = true;
+      over.setPointerCapture(ev.pointerId);
+      this.onDrag('start', ...at(ev));
+    });
+    over.addEventListener('pointermove', (ev) => {
+      if (this.dragging) this.onDrag?.('move', ...at(ev));
+    });
+    const end = (ev: PointerEvent): void => {
+      if (!this.dragging) return;
+      this.dragging = false;
+      this.onDrag?.('end', ...at(ev));
+    };
+    over.addEventListener('pointerup', end);
+    over.addEventListener('pointercancel', end);
+  }
+
+  /** Show the cursor at a sample (hover on the curve). */
+  highlight(index: number | null): void {
+    if (!this.plot) return;
+    if (index === null || index >= this.xs.length) {
+      this.plot.setCursor({ left: -10, top: -10 }, false);
+      return;
+    }
+    const left = this.plot.valToPos(this.xs[index]!, 'x');
+    const top = Number.isFinite(this.ys[index]) ? this.plot.valToPos(this.ys[index]!, 'y') : 0;
+    this.plot.setCursor({ left, top }, false);
+  }
+
+  /** Pixel position of a value pair inside the plotting area (tests, drag). */
+  toPixels(x: number, y: number): { left: number; top: number } | null {
+    if (!this.plot) return null;
+    const r = this.plot.over.getBoundingClientRect();
+    return { left: r.left + this.plot.valToPos(x, 'x'), top: r.top + this.plot.valToPos(y, 'y') };
+  }
+}

@@ -1,0 +1,121 @@
+// Plot scaling for the linked graphs: ranges, ticks, log axes, hover lookup,
+// and the profile edit of the design-by-curvature graph. Pure functions.
+
+/** A closed range [min, max] with min < max. */
+export interface Range {
+  readonly min: number;
+  readonly max: number;
+}
+
+/**
+ * The range of the finite values of `values`, padded by `pad` of its span on
+ * each side. A constant series gets ±(|v|·pad or 1); no finite value gives [0, 1].
+ * NaN marks undefined samples (torsion where κ = 0) and is skipped.
+ */
+export function paddedRange(values: ArrayLike<number>, pad = 0.05): Range {
+  let min = Infinity;
+  let max = -Infinity;
+  for (let i = 0; i < values.length; i++) {
+    const v = values[i]!;
+    if (!Number.isFinite(v)) continue;
+    if (v < min) min = v;
+    if (v > max) max = v;
+  }
+  if (min === Infinity) return { min: 0, max: 1 };
+  if (min === max) {
+    const h = Math.abs(min) * pad || 1;
+    return { min: min - h, max: max + h };
+  }
+  const h = (max - min) * pad;
+  return { min: min - h, max: max + h };
+}
+
+/**
+ * "Nice" tick positions (1, 2 or 5 × 10^k apart) covering a range with about
+ * `count` ticks; every tick lies within the range.
+ */
+export function niceTicks(range: Range, count = 5): number[] {
+  if (!(range.max > range.min)) throw new RangeError(`range [${range.min}, ${range.max}] is empty`);
+  const raw = (range.max - range.min) / Math.max(1, count);
+  const exp = Math.floor(Math.log10(raw));
+  const base = 10 ** exp;
+  const frac = raw / base;
+  const step = (frac <= 1 ? 1 : frac <= 2 ? 2 : frac <= 5 ? 5 : 10) * base;
+  const first = Math.ceil(range.min / step - 1e-9);
+  const ticks: number[] = [];
+  for (let k = first; k * step <= range.max * (1 + 1e-12) + 1e-300; k++) {
+    // Multiply rather than accumulate, so 0.1·3 prints as 0.3.
+    ticks.push(Number((k * step).toPrecision(12)));
+  }
+  return ticks;
+}
+
+/**
+ * log10 of |v| for the log-curvature / log-torsion graphs (thesis 6.3): zero
+ * and undefined values become NaN (a gap in the plot), never −∞.
+ */
+export function logMagnitude(values: ArrayLike<number>): Float64Array {
+  const out = new Float64Array(values.length);
+  for (let i = 0; i < values.length; i++) {
+    const a = Math.abs(values[i]!);
+    out[i] = a > 0 && Number.isFinite(a) ? Math.log10(a) : NaN;
+  }
+  return out;
+}
+
+/** Radius of curvature 1/κ; infinite radius (κ = 0) is NaN, a gap. */
+export function radius(kappa: ArrayLike<number>): Float64Array {
+  const out = new Float64Array(kappa.length);
+  for (let i = 0; i < kappa.length; i++) {
+    const k = Math.abs(kappa[i]!);
+    out[i] = k > 0 && Number.isFinite(k) ? 1 / k : NaN;
+  }
+  return out;
+}
+
+/**
+ * Index of the sample whose abscissa is nearest `x` in a non-decreasing array
+ * (binary search): links a hover on the graph to a point of the curve.
+ */
+export function nearestIndex(xs: ArrayLike<number>, x: number): number {
+  const n = xs.length;
+  if (n === 0) throw new RangeError('no samples');
+  let lo = 0;
+  let hi = n - 1;
+  if (x <= xs[0]!) return 0;
+  if (x >= xs[hi]!) return hi;
+  while (hi - lo > 1) {
+    const mid = (lo + hi) >> 1;
+    if (xs[mid]! <= x) lo = mid;
+    else hi = mid;
+  }
+  return x - xs[lo]! <= xs[hi]! - x ? lo : hi;
+}
+
+/** Map a pixel coordinate along an axis of `pixels` length to a value of `range`. */
+export function pixelToValue(px: number, pixels: number, range: Range, flip = false): number {
+  const f = px / pixels;
+  return range.min + (flip ? 1 - f : f) * (range.max - range.min);
+}
+
+/**
+ * Drag a profile (design by curvature): add `delta` at abscissa `at` with a
+ * smooth cos² bump of half-width `width`, so the edited profile stays C1 and
+ * untouched outside [at − width, at + width]. Returns new values.
+ */
+export function bumpProfile(
+  xs: ArrayLike<number>,
+  values: ArrayLike<number>,
+  at: number,
+  delta: number,
+  width: number,
+): Float64Array {
+  if (!(width > 0)) throw new RangeError(`bump width ${width} must be positive`);
+  const out = new Float64Array(values.length);
+  for (let i = 0; i < values.length; i++) {
+    const d = Math.abs(xs[i]! - at) / width;
+    const w = d < 1 ? Math.cos((d * Math.PI) / 2) ** 2 : 0;
+    out[i] = values[i]! + delta * w;
+  }
+  return out;
+}

@@ -1,0 +1,466 @@
+// Side panels: properties with numeric entry (points, weights, knots, degree,
+// end conditions), interrogation (fins, frames, Combescure, continuity
+// badges), history; and the dialogs (law curve, natural equations, open/new, help).
+
+import type { App } from '../app';
+import { ALL_FINS, handlesOf } from '../app';
+import type { CurveFile, EndCondition, FinKind, Parameterisation } from '../api/types';
+
+function el<K extends keyof HTMLElementTagNameMap>(
+  tag: K,
+  attrs: Record<string, string> = {},
+  text?: string,
+): HTMLElementTagNameMap[K] {
+  const e = document.createElement(tag);
+  for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, v);
+  if (text !== undefined) e.textContent = text;
+  return e;
+}
+
+function section(parent: HTMLElement, title: string, id: string): HTMLElement {
+  const d = el('details', { id, open: '' });
+  d.appendChild(el('summary', {}, title));
+  const body = el('div', { class: 'body' });
+  d.appendChild(body);
+  parent.appendChild(d);
+  return body;
+}
+
+export const SHORTCUTS: [string, string][] = [
+  ['V', 'select / modify: click a curve, drag its points'],
+  ['S', 'interpolated spline: left-click points, right-click to finish, then tangents'],
+  ['B', 'Bézier by control points (any view)'],
+  ['N', 'NURBS by control points (cubic, uniform clamped knots)'],
+  ['H', 'Hermite: point, tangent handle, … right-click to finish'],
+  ['L', 'law curve from an expression'],
+  ['K', 'curve from κ(s), τ(s) (natural equations)'],
+  ['I', 'import a curve file (JSON)'],
+  ['Enter / right-click', 'finish the current tool'],
+  ['Escape', 'cancel the tool, clear the selection'],
+  ['Ctrl+Z / Ctrl+Shift+Z', 'undo / redo'],
+  ['Delete', 'delete the selected curve'],
+  ['F', 'fit all'],
+  ['Q', 'single / four views'],
+  ['1 2 3 4', 'top, front, side, 3-D view alone'],
+  ['G', 'grid snapping on/off'],
+  ['P / R', 'pan / orbit with the left button (right-click ends)'],
+  ['Wheel, middle drag, Alt-drag', 'zoom, pan, orbit (3-D view)'],
+  ['O', 'open or create a document'],
+  ['E', 'export the selected curve'],
+  ['?', 'this help'],
+];
+
+export class Panels {
+  private readonly props: HTMLElement;
+  private readonly interrogate: HTMLElement;
+  private readonly historyBox: HTMLElement;
+  readonly designBox: HTMLElement;
+  readonly optimiseBox: HTMLElement;
+  private propsKey = '-';
+
+  constructor(
+    private readonly app: App,
+    root: HTMLElement,
+  ) {
+    this.props = section(root, 'Curve', 'panel-curve');
+    this.interrogate = section(root, 'Interrogate', 'panel-interrogate');
+    this.designBox = section(root, 'Design by curvature', 'panel-design');
+    this.optimiseBox = section(root, 'Optimise', 'panel-optimise');
+    this.historyBox = section(root, 'History', 'panel-history');
+    this.buildInterrogate();
+  }
+
+  update(): void {
+    this.updateProps();
+    this.updateInterrogate();
+    this.updateHistory();
+  }
+
+  // ---- properties ---------------------------------------------------------
+
+  private updateProps(): void {
+    const e = this.app.selectedEntity;
+    const key = e ? `${e.label}@${JSON.stringify(e.curve)}` : '';
+    if (key === this.propsKey) return;
+    this.propsKey = key;
+    const box = this.props;
+    box.replaceChildren();
+    if (!e) {
+      box.appendChild(el('p', {}, 'No curve selected. Click a curve in a view (V).'));
+      return;
+    }
+    const c = e.curve;
+    const label = String(e.label);
+    box.appendChild(
+      el(
+        'div',
+        { class: 'row', 'data-testid': 'curve-info' },
+        `${e.name} · ${e.label} · ${c?.kind ?? e.kind}`,
+      ),
+    );
+    if (!c) return;
+    const pts = handlesOf(c);
+    const table = el('table', { 'aria-label': 'Point coordinates' });
+    pts.forEach((p, i) => {
+      const tr = el('tr');
+      tr.appendChild(el('td', {}, String(i)));
+      p.forEach((v, k) => {
+        const td = el('td');
+        const input = el('input', {
+          type: 'number',
+          step: 'any',
+          value: String(v),
+          'aria-label': `point ${i} ${'xyz'[k]!}`,
+          'data-point': String(i),
+          'data-axis': String(k),
+        });
+        input.addEventListener('change', () => {
+          const to: [number, number, number] = [p[0], p[1], p[2]];
+          to[k] = Number(input.value);
+          if (Number.isFinite(to[k])) void this.app.movePoint(label, i, to);
+        });
+        td.appendChild(input);
+        tr.appendChild(td);
+      });
+      if (c.kind === 'nurbs' || c.kind === 'bezier') {
+        const td = el('td');
+        const w = c.weights?.[i] ?? 1;
+        const input = el('input', {
+          type: 'number',
+          step: 'any',
+          min: '0',
+          value: String(w),
+          'aria-label': `weight ${i}`,
+          title: 'weight',
+        });
+        input.addEventListener('change', () => {
+          // A weight is construction data: the curve file with this weight replaces the curve.
+          const weights = c.control_points.map((_, k) => c.weights?.[k] ?? 1);
+          weights[i] = Number(input.value);
+          void this.app.replaceCurve(label, { ...c, weights });
+        });
+        td.appendChild(input);
+        tr.appendChild(td);
+      }
+      table.appendChild(tr);
+    });
+    box.appendChild(table);
+    if (c.kind === 'nurbs' || c.kind === 'bezier') {
+      if (c.kind === 'nurbs')
+        box.appendChild(
+          el(
+            'div',
+            { class: 'row' },
+            `degree ${c.degree}, knots ${c.knots.map((k) => Number(k.toFixed(4))).join(' ')}`,
+          ),
+        );
+    }
+    if (c.kind === 'interpolated') this.interpolatedControls(label, c, box);
+  }
+
+  private interpolatedControls(
+    label: string,
+    c: Extract<CurveFile, { kind: 'interpolated' }>,
+    box: HTMLElement,
+  ): void {
+    const row = el('div', { class: 'row' });
+    const par = el('select', { 'aria-label': 'Parameterisation' });
+    for (const p of ['uniform', 'chord', 'centripetal'])
+      par.appendChild(el('option', { value: p }, p));
+    par.value = c.parameterisation ?? 'chord';
+    const endSel = (which: 'start' | 'end'): HTMLSelectElement => {
+      const s = el('select', { 'aria-label': `${which} condition` });
+      const cur = c[which];
+      for (const p of ['natural', 'bessel', 'not-a-knot', 'occt'])
+        s.appendChild(el('option', { value: p }, `${which}: ${p}`));
+      if (typeof cur === 'object')
+        s.appendChild(el('option', { value: 'tangent' }, `${which}: tangent`));
+      s.value = typeof cur === 'object' ? 'tangent' : (cur ?? 'natural');
+      return s;
+    };
+    const start = endSel('start');
+    const end = endSel('end');
+    const apply = (): void => {
+      const cond = (s: HTMLSelectElement, cur: EndCondition | undefined): EndCondition =>
+        s.value === 'tangent' && typeof cur === 'object' ? cur : (s.value as EndCondition);
+      const next: CurveFile = {
+        kind: 'interpolated',
+        points: c.points,
+        parameterisation: par.value as Parameterisation,
+        start: cond(start, c.start),
+        end: cond(end, c.end),
+      };
+      void this.app.replaceCurve(label, next);
+    };
+    for (const s of [par, start, end]) s.addEventListener('change', apply);
+    row.append(par, start, end);
+    box.appendChild(row);
+  }
+
+  // ---- interrogation ------------------------------------------------------
+
+  private readonly finBoxes = new Map<FinKind, HTMLInputElement>();
+  private scaleInput!: HTMLInputElement;
+  private samplesInput!: HTMLInputElement;
+  private framesBox!: HTMLInputElement;
+  private badges!: HTMLElement;
+
+  private buildInterrogate(): void {
+    const box = this.interrogate;
+    const row = el('div', { class: 'row', role: 'group', 'aria-label': 'Fins' });
+    for (const f of ALL_FINS) {
+      const label = el('label', { class: 'inline' });
+      const cb = el('input', { type: 'checkbox', 'data-fin': f, 'aria-label': `${f} fins` });
+      cb.addEventListener('change', () => {
+        this.applySettings();
+      });
+      label.append(cb, document.createTextNode(f));
+      row.appendChild(label);
+      this.finBoxes.set(f, cb);
+    }
+    box.appendChild(row);
+    const r2 = el('div', { class: 'row' });
+    this.scaleInput = el('input', {
+      type: 'number',
+      step: 'any',
+      value: '1',
+      min: '0',
+      'aria-label': 'Fin scale',
+    });
+    this.samplesInput = el('input', {
+      type: 'number',
+      step: '1',
+      value: '200',
+      min: '2',
+      max: '5000',
+      'aria-label': 'Fin density (samples)',
+    });
+    r2.append(
+      el('span', {}, 'scale'),
+      this.scaleInput,
+      el('span', {}, 'samples'),
+      this.samplesInput,
+    );
+    box.appendChild(r2);
+    const r3 = el('div', { class: 'row' });
+    const cl = el('label', { class: 'inline' });
+    this.framesBox = el('input', {
+      type: 'checkbox',
+      'aria-label': 'Frenet frames along the curve',
+    });
+    cl.append(this.framesBox, document.createTextNode('Frenet frames (T N B)'));
+    r3.append(cl);
+    box.appendChild(r3);
+    for (const i of [this.scaleInput, this.samplesInput, this.framesBox]) {
+      i.addEventListener('change', () => {
+        this.applySettings();
+      });
+    }
+    this.badges = el('div', {
+      class: 'row',
+      'aria-label': 'Continuity at knots',
+      'data-testid': 'continuity',
+    });
+    box.appendChild(this.badges);
+  }
+
+  private applySettings(): void {
+    const label = this.app.selected;
+    if (!label) return;
+    const s = this.app.settingsOf(label);
+    s.fins = ALL_FINS.filter((f) => this.finBoxes.get(f)!.checked);
+    const scale = Number(this.scaleInput.value);
+    const samples = Math.round(Number(this.samplesInput.value));
+    if (Number.isFinite(scale) && scale > 0) s.scale = scale;
+    if (samples >= 2 && samples <= 5000) s.samples = samples;
+    s.frames = this.framesBox.checked;
+    this.app.refreshAnalysis(label);
+  }
+
+  private updateInterrogate(): void {
+    const label = this.app.selected;
+    const a = label ? this.app.store.analyses.get(label) : undefined;
+    if (label) {
+      const s = this.app.settingsOf(label);
+      for (const [f, cb] of this.finBoxes) {
+        cb.checked = s.fins.includes(f);
+        // Planar curves: torsion and binormal fins carry nothing (8.4, 8.6).
+        cb.disabled = a?.planar === true && (f === 'torsion' || f === 'binormal');
+      }
+      this.scaleInput.value = String(s.scale);
+      this.samplesInput.value = String(s.samples);
+      this.framesBox.checked = s.frames;
+    }
+    this.badges.replaceChildren();
+    for (const f of a?.features ?? []) {
+      if (f.kind !== 'knot' || !f.continuity) continue;
+      const b = el(
+        'span',
+        {
+          class: `badge ${f.continuity.split(/[ /]/)[0]!.toLowerCase()}`,
+          title: `knot t = ${f.t}`,
+        },
+        `t=${Number(f.t.toFixed(3))} ${f.continuity}`,
+      );
+      this.badges.appendChild(b);
+    }
+    const infl = (a?.features ?? []).filter((f) => f.kind === 'inflection').length;
+    if (a)
+      this.badges.appendChild(
+        el('span', { class: 'badge' }, `${a.planar ? 'planar' : 'space'} · ${infl} inflection(s)`),
+      );
+  }
+
+  // ---- history --------------------------------------------------------------
+
+  private updateHistory(): void {
+    const h = this.app.store.history;
+    const box = this.historyBox;
+    box.replaceChildren();
+    box.classList.add('history');
+    const row = el('div', { class: 'row' });
+    const u = el('button', { 'aria-label': 'Undo' }, 'Undo');
+    u.addEventListener('click', () => void this.app.undo());
+    const r = el('button', { 'aria-label': 'Redo' }, 'Redo');
+    r.addEventListener('click', () => void this.app.redo());
+    row.append(u, r, el('span', {}, `revision ${this.app.store.revision}`));
+    box.appendChild(row);
+    if (!h) return;
+    const ol = el('ol', { 'aria-label': 'Undo history' });
+    const current = h.current ?? h.steps.reduce((c, s, i) => (s.applied === false ? c : i), -1);
+    h.steps.forEach((s, i) => {
+      const li = el('li', { 'data-revision': String(s.revision) }, `${s.revision}: ${s.name}`);
+      if (i === current) li.classList.add('current');
+      if (i > current) li.classList.add('redo');
+      ol.appendChild(li);
+    });
+    box.appendChild(ol);
+  }
+
+  // ---- dialogs ----------------------------------------------------------------
+
+  private dialog(
+    title: string,
+    build: (form: HTMLFormElement) => void,
+    onOk: (form: HTMLFormElement) => void,
+  ): void {
+    const d = document.getElementById('dialog') as HTMLDialogElement;
+    d.replaceChildren();
+    const form = el('form', { method: 'dialog', 'aria-label': title });
+    form.appendChild(el('h3', {}, title));
+    build(form);
+    const row = el('div', { class: 'row' });
+    const ok = el('button', { value: 'ok', type: 'submit' }, 'OK');
+    const cancel = el('button', { value: 'cancel', type: 'button' }, 'Cancel');
+    cancel.addEventListener('click', () => {
+      d.close();
+    });
+    row.append(ok, cancel);
+    form.appendChild(row);
+    form.addEventListener('submit', (ev) => {
+      ev.preventDefault();
+      d.close();
+      onOk(form);
+    });
+    d.appendChild(form);
+    d.showModal();
+  }
+
+  private field(
+    form: HTMLFormElement,
+    label: string,
+    name: string,
+    value: string,
+    textarea = false,
+  ): void {
+    const l = el('label', {}, label);
+    const i = textarea ? el('textarea', { name }) : el('input', { name, value });
+    if (textarea) i.textContent = value;
+    i.setAttribute('aria-label', label);
+    l.appendChild(i);
+    form.appendChild(l);
+  }
+
+  lawDialog(): void {
+    this.dialog(
+      'Law curve',
+      (f) => {
+        this.field(
+          f,
+          'Expression vec(x, y[, z]) of the parameter',
+          'expression',
+          'vec(30*cos(t), 30*sin(t), 8*t)',
+        );
+        this.field(f, 'Parameter', 'parameter', 't');
+        this.field(f, 'Domain start', 'from', '0');
+        this.field(f, 'Domain end', 'to', '12.566370614359172');
+      },
+      (f) => {
+        const v = (n: string): string => (f.elements.namedItem(n) as HTMLInputElement).value;
+        void this.app
+          .createCurve('law', {
+            kind: 'law',
+            expression: v('expression'),
+            parameter: v('parameter'),
+            domain: [Number(v('from')), Number(v('to'))],
+          })
+          .then(() => {
+            this.app.fitAll();
+          });
+      },
+    );
+  }
+
+  naturalDialog(): void {
+    this.dialog(
+      'Curve from natural equations κ(s), τ(s)',
+      (f) => {
+        this.field(f, 'Curvature κ(s)', 'kappa', '0.02 + 0.0004*s');
+        this.field(f, 'Torsion τ(s)', 'tau', '0');
+        this.field(f, 'Length', 'length', '120');
+      },
+      (f) => {
+        const v = (n: string): string => (f.elements.namedItem(n) as HTMLInputElement).value;
+        void this.app.design.createNatural(v('kappa'), v('tau'), Number(v('length')));
+      },
+    );
+  }
+
+  async openDialog(): Promise<void> {
+    const list = await this.app.run(() => this.app.client.listDocuments());
+    this.dialog(
+      'Open or create a document',
+      (f) => {
+        const sel = el('select', { name: 'existing', 'aria-label': 'Existing documents' });
+        sel.appendChild(el('option', { value: '' }, '(new document)'));
+        for (const d of list?.documents ?? [])
+          sel.appendChild(el('option', { value: d.name }, d.name));
+        const l = el('label', {}, 'Document');
+        l.appendChild(sel);
+        f.appendChild(l);
+        this.field(f, 'New document name', 'name', 'untitled.hula');
+      },
+      (f) => {
+        const existing = (f.elements.namedItem('existing') as HTMLSelectElement).value;
+        const name = existing || (f.elements.namedItem('name') as HTMLInputElement).value;
+        void this.app.run(() => this.app.open(name));
+      },
+    );
+  }
+
+  helpDialog(): void {
+    this.dialog(
+      'Keyboard shortcuts',
+      (f) => {
+        const t = el('table', { class: 'help-table' });
+        for (const [k, what] of SHORTCUTS) {
+          const tr = el('tr');
+          tr.append(el('td', {}, k), el('td', {}, what));
+          t.appendChild(tr);
+        }
+        f.appendChild(t);
+      },
+      () => undefined,
+    );
+  }
+}

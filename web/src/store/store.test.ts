@@ -1,0 +1,54 @@
+import { describe, expect, it } from 'vitest';
+import { DocumentStore } from './store';
+
+const curve = {
+  kind: 'bezier' as const,
+  control_points: [
+    [0, 0, 0],
+    [1, 1, 0],
+  ],
+};
+
+describe('DocumentStore', () => {
+  // Whole entities are stored (twice is the same as once); deletions remove; revision follows the change set.
+  it('applies change sets idempotently', () => {
+    const s = new DocumentStore('a.hula');
+    s.load({ name: 'a.hula', revision: 1, entities: [] });
+    const events: string[] = [];
+    s.subscribe((e) => events.push(e.type));
+    const set = {
+      revision: 2,
+      created: [{ label: 7, kind: 'curve', name: 'c', attributes: {}, curve }],
+    };
+    s.apply(set);
+    s.apply(set);
+    expect([...s.entities.keys()]).toEqual(['7']);
+    expect(s.entities.get('7')?.label).toBe('7');
+    s.apply({ revision: 1, removed: [7], cause: 'undo' });
+    expect(s.entities.size).toBe(0);
+    expect(s.revision).toBe(1);
+    expect(events).toEqual(['entity', 'entity', 'removed']);
+  });
+
+  // Oli-style change sets name labels only: they come back to be fetched.
+  it('returns the labels to fetch for label-only change sets', () => {
+    const s = new DocumentStore('a.hula');
+    expect(s.apply({ revision: 3, added: [4], changed: [5, 4], attributes_changed: [6] })).toEqual([
+      '4',
+      '5',
+      '6',
+    ]);
+  });
+
+  // A full reload drops entities the server no longer has.
+  it('load replaces the entity set', () => {
+    const s = new DocumentStore('a.hula');
+    s.load({
+      name: 'a.hula',
+      revision: 4,
+      entities: [{ label: 'x', kind: 'curve', name: 'x', attributes: {} }],
+    });
+    s.load({ name: 'a.hula', revision: 5, entities: [] });
+    expect([...s.entities.keys()]).toEqual([]);
+  });
+});
