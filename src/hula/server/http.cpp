@@ -72,8 +72,10 @@ unsigned http_status(Errc code) noexcept {
     case Errc::OutOfDomain:
     case Errc::NumericalFailure:
     case Errc::ScaleOutOfRange:
+    case Errc::Unsupported:  // the document's kernel backend has no such operation
       return 422;
     case Errc::IoError:
+    case Errc::HelperFailure:  // the exchange helper crashed, hung or ran out of memory: our failure
       return 500;
   }
   return 500;
