@@ -66,6 +66,7 @@ int main(int argc, char** argv) {
       hula::cli::add_hermite(app),
       hula::cli::add_match_curvature(app),
       hula::cli::add_match_curvature_torsion(app),
+      hula::cli::add_batch(app),
   };
   try {
     try {
