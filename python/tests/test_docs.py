@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# docs/python.md and examples/python/: every ```python block of the page runs,
+# docs/python.md, the README and examples/python/: every ```python block runs,
 # in order, in one namespace (from the source tree, in a scratch directory for
 # files), and every example script runs to completion.
 import os
@@ -21,6 +21,14 @@ def test_python_md_blocks_run(tmp_path, monkeypatch):
     namespace = {}
     for i, block in enumerate(blocks):
         exec(compile(block, f"docs/python.md block {i}", "exec"), namespace)  # noqa: S102 - our own docs
+
+
+def test_readme_python_block_runs():
+    # checks the README's Python example executes
+    text = (SOURCE / "README.md").read_text(encoding="utf-8")
+    blocks = re.findall(r"```python\n(.*?)```", text, flags=re.S)
+    assert len(blocks) == 1
+    exec(compile(blocks[0], "README.md", "exec"), {})  # noqa: S102 - our own docs
 
 
 def test_example_scripts_run(tmp_path):
