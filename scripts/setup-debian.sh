@@ -6,15 +6,17 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake ninja-build pkg-config git
+  build-essential cmake ninja-build pkg-config git python3
   clang-format-14 clang-14 libclang-rt-14-dev
   libeigen3-dev libboost-dev libboost-math-dev libtbb-dev
   nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev librapidcheck-dev libbenchmark-dev
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
+  libocct-data-exchange-dev libocct-ocaf-dev
   libpagmo-dev libboost-serialization-dev
   pybind11-dev python3-dev python3-numpy python3-pytest
   libopenmpi-dev openmpi-bin
+  libsqlite3-dev sqlite3
 )
 
 missing=()

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "commands/common.hpp"
+#include "commands/doc.hpp"
 #include "hula/core/error.hpp"
 #include "hula/io/error_json.hpp"
 
@@ -67,6 +68,7 @@ int main(int argc, char** argv) {
       hula::cli::add_match_curvature(app),
       hula::cli::add_match_curvature_torsion(app),
       hula::cli::add_batch(app),
+      hula::cli::add_doc(app),
   };
   try {
     try {

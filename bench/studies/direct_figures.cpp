@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "hula/io/match_study_file.hpp"
 #include "hula/io/svg.hpp"
 #include "hula/law/parser.hpp"
 #include "hula/studies/direct_reconstruction.hpp"
@@ -63,8 +64,8 @@ int main(int argc, char** argv) {
   const DirectReconstructionResult ivp = reconstruct_direct({.curvature = target, .length = L});
   const DirectReconstructionResult bvp =
       reconstruct_direct({.curvature = target, .length = L, .end_point = end, .end_tangent = end_tangent});
-  std::cout << "perturbed arc, IVP: " << direct_reconstruction_summary(ivp).dump() << "\n";
-  std::cout << "perturbed arc, BVP: " << direct_reconstruction_summary(bvp).dump() << "\n";
+  std::cout << "perturbed arc, IVP: " << io::direct_reconstruction_summary(ivp).dump() << "\n";
+  std::cout << "perturbed arc, BVP: " << io::direct_reconstruction_summary(bvp).dump() << "\n";
   {
     io::SvgFigure fig(900, 520);
     fig.set_title("kappa* = 0.5 + 0.1 sin(2 pi u), L = 5: free end vs held to the arc's end");
@@ -110,8 +111,8 @@ int main(int argc, char** argv) {
                                                               .start = start,
                                                               .end_point = point(Ls),
                                                               .end_tangent = tangent(Ls)});
-  std::cout << "perturbed helix, IVP: " << direct_reconstruction_summary(hivp).dump() << "\n";
-  std::cout << "perturbed helix, BVP: " << direct_reconstruction_summary(hbvp).dump() << "\n";
+  std::cout << "perturbed helix, IVP: " << io::direct_reconstruction_summary(hivp).dump() << "\n";
+  std::cout << "perturbed helix, BVP: " << io::direct_reconstruction_summary(hbvp).dump() << "\n";
   {
     io::SvgFigure fig(900, 520);
     fig.set_title("helix kappa = 0.8, tau = 0.4 perturbed, L = 10 (x-z view)");

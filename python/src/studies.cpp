@@ -15,10 +15,12 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "hula/io/fair_knots_study_file.hpp"
 #include "hula/io/json_curve.hpp"
-#include "hula/studies/fair_knots_study.hpp"
+#include "hula/io/match_study_file.hpp"
+#include "hula/io/path_resolver.hpp"
+#include "hula/io/study_file.hpp"
 #include "hula/studies/knot_fairing.hpp"
-#include "hula/studies/match_study.hpp"
 
 namespace hula::python {
 
@@ -52,8 +54,8 @@ py::dict fairing(const studies::FairingResult& r, double chord_energy) {
 }
 
 py::dict fair_knots(const py::handle& setup) {
-  const studies::StudyDocument doc = studies::parse_study_json(json_text(setup), "fair-knots");
-  const studies::FairKnotsStudy study = studies::fair_knots_study_from_json(doc);
+  const io::StudyDocument doc = io::parse_study_json(json_text(setup), "fair-knots");
+  const studies::FairKnotsStudy study = io::fair_knots_study_from_json(doc);
   const studies::KnotFairingSetup& s = study.setup;
   std::optional<studies::ParameterEvaluation> chord, given;
   std::optional<studies::EnergyMap> map;
@@ -71,7 +73,7 @@ py::dict fair_knots(const py::handle& setup) {
     if (run_det) det = studies::fair_knots_deterministic(s, start, study.deterministic);
   }
   py::dict out;
-  out["study"] = py::module_::import("json").attr("loads")(studies::fair_knots_study_to_json(study).dump());
+  out["study"] = py::module_::import("json").attr("loads")(io::fair_knots_study_to_json(study).dump());
   out["energy"] = std::string(studies::fairing_energy_name(s.energy));
   out["chord_length"] = evaluation(*chord);
   if (given) out["given"] = evaluation(*given);
@@ -92,15 +94,17 @@ py::dict fair_knots(const py::handle& setup) {
   return out;
 }
 
-// The match result as the CLI prints it (studies::match_result_to_json), handed to Python as JSON text.
+// The match result as the CLI prints it (io::match_result_to_json), handed to Python as JSON text. Profile
+// files named in the setup are read relative to `base`, as the CLI reads them relative to the study file.
 std::string match_curvature(const py::handle& setup, const std::string& base, std::optional<std::string> method) {
-  const studies::StudyDocument doc = studies::parse_study_json(json_text(setup), "match-curvature");
-  studies::MatchStudy study = studies::match_study_from_json(doc, std::filesystem::path(base));
+  const io::StudyDocument doc = io::parse_study_json(json_text(setup), "match-curvature");
+  io::MatchStudyFile file = io::match_study_from_json(doc, io::relative_to(std::filesystem::path(base)));
+  studies::MatchStudy& study = file.study;
   if (method) study.method = studies::match_method_from_name(*method, "method");
   const py::gil_scoped_release release;
   const studies::CurvatureMatch match(study.setup);
   const studies::MatchResult result = studies::run_curvature_match(match, study, false);
-  return studies::match_result_to_json(match, study, result).dump();
+  return io::match_result_to_json(match, file, result).dump();
 }
 
 }  // namespace

@@ -25,10 +25,8 @@ TEST(Features, SCurveInflection) {
   ASSERT_EQ(f.size(), 1U);
   EXPECT_EQ(f[0].kind, FeatureKind::Inflection);
   EXPECT_NEAR(f[0].t, 0.5, 1e-14);
-  law::Context ctx;
-  const nurbs::Interval dom{-1.0, 2.0};
-  const LawFrenet s(law::parse("vec(t, t^3 - t)", ctx), "t", dom);
-  const std::vector<Feature> g = inflections(s, dom);
+  const curve::Curve s = curve::Curve::from_law("vec(t, t^3 - t)", "t", {-1.0, 2.0});
+  const std::vector<Feature> g = inflections(s);
   ASSERT_EQ(g.size(), 1U);
   // Between samples the bisection stops at the curvature resolution (κ · size ≤ angular = 1e-10).
   EXPECT_NEAR(g[0].t, 0.0, 1e-10);
@@ -37,10 +35,8 @@ TEST(Features, SCurveInflection) {
 
 // checks curvature maxima at π, 2π (κ = a/b²) and minima at π/2, 3π/2 (κ = b/a²) of an ellipse.
 TEST(Features, EllipseCurvatureExtrema) {
-  law::Context ctx;
-  const nurbs::Interval dom{0.1, 2 * std::numbers::pi + 0.1};
-  const LawFrenet e(law::parse("vec(3*cos(t), 1.25*sin(t))", ctx), "t", dom);
-  const std::vector<Feature> f = curvature_extrema(e, dom);
+  const curve::Curve e = curve::Curve::from_law("vec(3*cos(t), 1.25*sin(t))", "t", {0.1, 2 * std::numbers::pi + 0.1});
+  const std::vector<Feature> f = curvature_extrema(e);
   ASSERT_EQ(f.size(), 4U);
   const double pi = std::numbers::pi;
   const double want[4] = {pi / 2, pi, 3 * pi / 2, 2 * pi};

@@ -44,7 +44,7 @@ TEST(Fins, HelixTorsion) {
   FinOptions o;
   o.kind = FinKind::Torsion;
   o.scale = 10.0;
-  const Fins f = fins(h, {0.0, 6.0}, o);
+  const Fins f = fins(curve::Curve::from_law("vec(2*cos(t), 2*sin(t), 0.5*t)", "t", {0.0, 6.0}), o);
   for (std::size_t i = 0; i < f.tip.size(); ++i) {
     const FrenetPoint p = h.at(f.t[i]);
     EXPECT_LT(norm(f.tip[i] - f.base[i] - p.binormal * (10.0 * 0.5 / 4.25)), 1e-12);
@@ -110,8 +110,7 @@ TEST(Fins, HelixCurvatureFinAsNurbs) {
     const Vec3 want{radius * std::cos(t), radius * std::sin(t), 0.5 * t};
     EXPECT_LT(norm(r.curve.evaluate(t) - want), 1e-8) << t;
   }
-  const LawFrenet frenet(helix, "t", dom);
-  EXPECT_LT(deviation_from_comb(r, fins(frenet, dom, o)), 1e-8);
+  EXPECT_LT(deviation_from_comb(r, fins(curve::Curve::from_law(law::print(helix), "t", dom), o)), 1e-8);
 }
 
 // checks the torsion fin P + s τB of the twisted cubic (t, t², t³) and the curvature fin of the planar
@@ -128,7 +127,7 @@ TEST(Fins, TwistedCubicTorsionAndSCurveCurvatureFinsAsNurbs) {
   const law::Law cubic = law::parse("vec(t, t^2, t^3)", ctx);
   const law::ToNurbsResult tor = fin_nurbs(cubic, "t", dom, o, fit);
   EXPECT_LE(tor.max_deviation, 1e-7);
-  EXPECT_LT(deviation_from_comb(tor, fins(LawFrenet(cubic, "t", dom), dom, o)), 1e-7);
+  EXPECT_LT(deviation_from_comb(tor, fins(curve::Curve::from_law("vec(t, t^2, t^3)", "t", dom), o)), 1e-7);
   // At t = 0: P = 0, τ = 3, B = (0, 0, 1).
   EXPECT_LT(norm(tor.curve.evaluate(0.0) - Vec3{0, 0, 0.6}), 1e-7);
   o.kind = FinKind::Curvature;
@@ -136,7 +135,7 @@ TEST(Fins, TwistedCubicTorsionAndSCurveCurvatureFinsAsNurbs) {
   const law::Law s_curve = law::parse("vec(t, t^3 - t)", ctx);
   const law::ToNurbsResult cur = fin_nurbs(s_curve, "t", dom, o, fit);
   EXPECT_LE(cur.max_deviation, 1e-7);
-  EXPECT_LT(deviation_from_comb(cur, fins(LawFrenet(s_curve, "t", dom), dom, o)), 1e-7);
+  EXPECT_LT(deviation_from_comb(cur, fins(curve::Curve::from_law("vec(t, t^3 - t)", "t", dom), o)), 1e-7);
 }
 
 // checks the errors name the input: Bishop fins ("kind"), log scale ("log_scale"), a scalar law ("law").

@@ -71,11 +71,11 @@ TEST(ReconstructCli, DefaultSamplesAndOutputFile) {
   EXPECT_EQ(j["points"][0]["s"].get<double>(), 0.0);
   EXPECT_EQ(j["points"][2]["s"].get<double>(), 1.0);
   EXPECT_EQ(j["points"][4]["s"].get<double>(), 2.0);
-  const io::CurveFile f = io::read_curve_file(out);
-  EXPECT_EQ(f.kind, io::CurveKind::Nurbs);
-  EXPECT_EQ(f.curve.degree(), 5);
-  EXPECT_EQ(f.curve.domain().end, 2.0);
-  EXPECT_EQ(f.curve.control_points().size(), j["fit"]["control_points"].get<std::size_t>());
+  const curve::Curve f = io::read_curve_file(out);
+  EXPECT_EQ(f.kind(), curve::Kind::Nurbs);
+  EXPECT_EQ(f.nurbs().degree(), 5);
+  EXPECT_EQ(f.nurbs().domain().end, 2.0);
+  EXPECT_EQ(f.nurbs().control_points().size(), j["fit"]["control_points"].get<std::size_t>());
 }
 
 // checks: a bad expression exits 3 with ParseError naming the option, the expression and the column.

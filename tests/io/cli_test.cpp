@@ -152,27 +152,27 @@ TEST(Cli, InterpolateWritesCurve) {
   EXPECT_EQ(summary["output"], out.string());
   EXPECT_EQ(summary["degree"], 3);
   EXPECT_EQ(summary["control_points"], 6);
-  const CurveFile f = read_curve_file(out);
-  EXPECT_EQ(f.kind, CurveKind::Nurbs);
+  const curve::Curve f = read_curve_file(out);
+  EXPECT_EQ(f.kind(), curve::Kind::Nurbs);
   nurbs::InterpolationOptions o;
   o.start = nurbs::EndCondition::bessel();
   o.end = nurbs::EndCondition::clamped({100, 0, 0});
   const std::vector<Vec3> pts = {{0, 0, 0}, {40, 25, 0}, {80, -25, 0}, {120, 0, 0}};
-  EXPECT_EQ(f.curve, nurbs::interpolate_cubic(pts, o));
+  EXPECT_EQ(f.nurbs(), nurbs::interpolate_cubic(pts, o));
   EXPECT_EQ(dir.names(), std::vector<std::string>{"curve.json"});
 
   const ProcessResult k = hula({"interpolate", "--points", data("thesis_points.csv"), "--keep-inputs",
                                 "--parameterisation", "centripetal", "-o", out.string()});
   ASSERT_EQ(k.exit_code, 0) << k.err;
-  const CurveFile g = read_curve_file(out);
-  EXPECT_EQ(g.kind, CurveKind::Interpolated);
-  EXPECT_EQ(g.inputs->parameterisation, nurbs::Parameterisation::Centripetal);
+  const curve::Curve g = read_curve_file(out);
+  EXPECT_EQ(g.kind(), curve::Kind::Interpolated);
+  EXPECT_EQ(std::get<curve::InterpolatedData>(g.data()).parameterisation, nurbs::Parameterisation::Centripetal);
 
   write_file_atomically(dir / "p2.csv", "0,0\n1,1\n2,0\n");
   const ProcessResult t = hula(
       {"interpolate", "--points", (dir / "p2.csv").string(), "--knots", "0,1,3", "-o", (dir / "c2.json").string()});
   ASSERT_EQ(t.exit_code, 0) << t.err;
-  EXPECT_EQ(read_curve_file(dir / "c2.json").curve.dimension(), 2);
+  EXPECT_EQ(read_curve_file(dir / "c2.json").nurbs().dimension(), 2);
   const json c2 = json::parse(read_text_file(dir / "c2.json"));
   for (const auto& p : c2["control_points"]) EXPECT_EQ(p.size(), 2u);
 }

@@ -30,13 +30,13 @@ json load(const std::string& name) { return json::parse(read_text_file(data(name
 
 // checks: circle_rational.json evaluated by the library matches the closed form of the unit circle.
 TEST(IoGolden, RationalCircleMatchesClosedForm) {
-  const CurveFile f = read_curve_file(data("circle_rational.json"));
+  const curve::Curve f = read_curve_file(data("circle_rational.json"));
   const json expected = load("circle_eval_expected.json");
   const double tol = expected["tolerance"], dtol = expected["derivative_tolerance"];
-  EXPECT_EQ(f.curve.dimension(), 2);
+  EXPECT_EQ(f.nurbs().dimension(), 2);
   for (const auto& c : expected["cases"]) {
     const double t = c["t"];
-    const auto d = f.curve.derivatives(t, 1);
+    const auto d = f.nurbs().derivatives(t, 1);
     EXPECT_NEAR(d[0].x, c["position"][0].get<double>(), tol) << "t = " << t;
     EXPECT_NEAR(d[0].y, c["position"][1].get<double>(), tol) << "t = " << t;
     if (c.contains("first_derivative")) {
@@ -46,7 +46,7 @@ TEST(IoGolden, RationalCircleMatchesClosedForm) {
     }
   }
   const double L = expected["length"];
-  EXPECT_NEAR(nurbs::arc_length(f.curve), L, expected["length_tolerance"].get<double>() * L);
+  EXPECT_NEAR(nurbs::arc_length(f.nurbs()), L, expected["length_tolerance"].get<double>() * L);
 }
 
 // checks: `hula eval` on circle_rational.json prints the closed-form circle points as [x, y].
@@ -92,19 +92,19 @@ TEST(IoGolden, ThesisChordLengths) {
 // checks: the format samples load with their documented values (bezier midpoint (1,1) by de Casteljau;
 // the interpolated sample passes through its end points with the clamped end derivative).
 TEST(IoGolden, FormatSamples) {
-  const CurveFile b = read_curve_file(data("bezier_2d.json"));
-  EXPECT_EQ(b.kind, CurveKind::Bezier);
-  EXPECT_NEAR(b.curve.evaluate(0.5).x, 1.0, 1e-15);
-  EXPECT_NEAR(b.curve.evaluate(0.5).y, 1.0, 1e-15);
+  const curve::Curve b = read_curve_file(data("bezier_2d.json"));
+  EXPECT_EQ(b.kind(), curve::Kind::Bezier);
+  EXPECT_NEAR(b.nurbs().evaluate(0.5).x, 1.0, 1e-15);
+  EXPECT_NEAR(b.nurbs().evaluate(0.5).y, 1.0, 1e-15);
   // The parabola (2t, 4t(1 - t)) has length ∫₀² √(1 + u²) du = √5 + asinh(2) / 2.
   const double parabola = std::sqrt(5.0) + std::asinh(2.0) / 2.0;
-  EXPECT_NEAR(nurbs::arc_length(b.curve), parabola, 1e-12 * parabola);
+  EXPECT_NEAR(nurbs::arc_length(b.nurbs()), parabola, 1e-12 * parabola);
 
-  const CurveFile s = read_curve_file(data("interpolated_thesis.json"));
-  EXPECT_EQ(s.kind, CurveKind::Interpolated);
-  EXPECT_NEAR(distance(s.curve.evaluate(0.0), Vec3{0, 0, 0}), 0.0, 1e-12);
-  EXPECT_NEAR(distance(s.curve.evaluate(1.0), Vec3{120, 0, 0}), 0.0, 1e-12);
-  EXPECT_NEAR(distance(s.curve.derivatives(1.0, 1)[1], Vec3{100, 0, 0}), 0.0, 1e-9 * 100);
+  const curve::Curve s = read_curve_file(data("interpolated_thesis.json"));
+  EXPECT_EQ(s.kind(), curve::Kind::Interpolated);
+  EXPECT_NEAR(distance(s.nurbs().evaluate(0.0), Vec3{0, 0, 0}), 0.0, 1e-12);
+  EXPECT_NEAR(distance(s.nurbs().evaluate(1.0), Vec3{120, 0, 0}), 0.0, 1e-12);
+  EXPECT_NEAR(distance(s.nurbs().derivatives(1.0, 1)[1], Vec3{100, 0, 0}), 0.0, 1e-9 * 100);
 }
 
 }  // namespace

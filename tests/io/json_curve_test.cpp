@@ -36,47 +36,47 @@ const char* const kCubic = R"({
 
 // checks: the nurbs kind parses to the curve built directly from the same arrays.
 TEST(JsonCurve, NurbsKindParses) {
-  const CurveFile f = parse_curve_json(kCubic);
-  EXPECT_EQ(f.kind, CurveKind::Nurbs);
-  EXPECT_FALSE(f.inputs);
+  const curve::Curve f = parse_curve_json(kCubic);
+  EXPECT_EQ(f.kind(), curve::Kind::Nurbs);
+  EXPECT_FALSE(std::get_if<curve::InterpolatedData>(&f.data()));
   const nurbs::NurbsCurve expected(3, {0, 0, 0, 0, 0.5, 1, 1, 1, 1},
                                    {{0, 0, 0}, {1, 2, 0}, {2, 2, 1}, {3, 0, 1}, {4, 1, 0}});
-  EXPECT_EQ(f.curve, expected);
-  EXPECT_EQ(f.curve.dimension(), 3);
-  EXPECT_FALSE(f.curve.is_rational());
+  EXPECT_EQ(f.nurbs(), expected);
+  EXPECT_EQ(f.nurbs().dimension(), 3);
+  EXPECT_FALSE(f.nurbs().is_rational());
 }
 
 // checks: absent weights mean non-rational; given weights make the curve rational.
 TEST(JsonCurve, WeightsAbsentOrGiven) {
-  const CurveFile a = parse_curve_json(R"({"kind": "nurbs", "degree": 1, "knots": [0, 0, 1, 1],
+  const curve::Curve a = parse_curve_json(R"({"kind": "nurbs", "degree": 1, "knots": [0, 0, 1, 1],
                                            "control_points": [[0, 0], [1, 1]]})");
-  EXPECT_FALSE(a.curve.is_rational());
-  const CurveFile b = parse_curve_json(R"({"kind": "nurbs", "degree": 1, "knots": [0, 0, 1, 1],
+  EXPECT_FALSE(a.nurbs().is_rational());
+  const curve::Curve b = parse_curve_json(R"({"kind": "nurbs", "degree": 1, "knots": [0, 0, 1, 1],
                                            "control_points": [[0, 0], [1, 1]], "weights": [1, 2]})");
-  ASSERT_TRUE(b.curve.is_rational());
-  EXPECT_EQ(b.curve.weights()[1], 2.0);
+  ASSERT_TRUE(b.nurbs().is_rational());
+  EXPECT_EQ(b.nurbs().weights()[1], 2.0);
 }
 
 // checks: 2-D control points give a 2-D curve, written back as [x, y].
 TEST(JsonCurve, TwoDimensionalFilesGiveTwoDimensionalCurvesAndOutput) {
-  const CurveFile f = parse_curve_json(R"({"kind": "bezier", "control_points": [[0, 0], [1, 2], [2, 0]]})");
-  EXPECT_EQ(f.curve.dimension(), 2);
-  const Json out = curve_to_json(f.curve);
+  const curve::Curve f = parse_curve_json(R"({"kind": "bezier", "control_points": [[0, 0], [1, 2], [2, 0]]})");
+  EXPECT_EQ(f.nurbs().dimension(), 2);
+  const Json out = curve_to_json(f.nurbs());
   ASSERT_EQ(out["control_points"].size(), 3u);
   for (const auto& p : out["control_points"]) EXPECT_EQ(p.size(), 2u);
-  EXPECT_EQ(parse_curve_json(out.dump()).curve, f.curve);
+  EXPECT_EQ(parse_curve_json(out.dump()).nurbs(), f.nurbs());
 }
 
 // checks: the bezier kind has degree n - 1 and knots 0..0 1..1; midpoint of the
 // quadratic (0,0),(1,2),(2,0) is (1,1) (de Casteljau by hand).
 TEST(JsonCurve, BezierKindParses) {
-  const CurveFile f = parse_curve_json(R"({"kind": "bezier", "control_points": [[0, 0], [1, 2], [2, 0]],
+  const curve::Curve f = parse_curve_json(R"({"kind": "bezier", "control_points": [[0, 0], [1, 2], [2, 0]],
                                            "weights": null})");
-  EXPECT_EQ(f.kind, CurveKind::Bezier);
-  EXPECT_EQ(f.curve.degree(), 2);
-  const std::vector<double> knots(f.curve.knots().values().begin(), f.curve.knots().values().end());
+  EXPECT_EQ(f.kind(), curve::Kind::Bezier);
+  EXPECT_EQ(f.nurbs().degree(), 2);
+  const std::vector<double> knots(f.nurbs().knots().values().begin(), f.nurbs().knots().values().end());
   EXPECT_EQ(knots, (std::vector<double>{0, 0, 0, 1, 1, 1}));
-  const Vec3 mid = f.curve.evaluate(0.5);
+  const Vec3 mid = f.nurbs().evaluate(0.5);
   EXPECT_DOUBLE_EQ(mid.x, 1.0);
   EXPECT_DOUBLE_EQ(mid.y, 1.0);
 }
@@ -84,24 +84,25 @@ TEST(JsonCurve, BezierKindParses) {
 // checks: the interpolated kind resolves through interpolate_cubic (the curve
 // passes through its points) and keeps its inputs, which round-trip.
 TEST(JsonCurve, InterpolatedKindParsesAndKeepsInputs) {
-  const CurveFile f = parse_curve_json(R"({"kind": "interpolated",
+  const curve::Curve f = parse_curve_json(R"({"kind": "interpolated",
       "points": [[0, 0, 0], [40, 25, 0], [80, -25, 0], [120, 0, 0]],
       "parameterisation": "centripetal", "start": "bessel", "end": {"tangent": [1, 0, 0]}})");
-  EXPECT_EQ(f.kind, CurveKind::Interpolated);
-  ASSERT_TRUE(f.inputs);
-  EXPECT_EQ(f.inputs->parameterisation, nurbs::Parameterisation::Centripetal);
-  EXPECT_EQ(f.inputs->start.kind, nurbs::EndCondition::Kind::Bessel);
-  EXPECT_EQ(f.inputs->end.kind, nurbs::EndCondition::Kind::Clamped);
-  EXPECT_EQ(f.inputs->end.derivative, (Vec3{1, 0, 0}));
-  EXPECT_EQ(f.curve, nurbs::interpolate_cubic(f.inputs->points, f.inputs->options()));
-  EXPECT_NEAR(distance(f.curve.evaluate(0.0), Vec3{0, 0, 0}), 0.0, 1e-12);
-  EXPECT_NEAR(distance(f.curve.evaluate(1.0), Vec3{120, 0, 0}), 0.0, 1e-12);
-  EXPECT_NEAR(distance(f.curve.derivatives(1.0, 1)[1], Vec3{1, 0, 0}), 0.0, 1e-9);
+  EXPECT_EQ(f.kind(), curve::Kind::Interpolated);
+  ASSERT_TRUE(std::get_if<curve::InterpolatedData>(&f.data()));
+  const auto& in = std::get<curve::InterpolatedData>(f.data());
+  EXPECT_EQ(in.parameterisation, nurbs::Parameterisation::Centripetal);
+  EXPECT_EQ(in.start.kind, nurbs::EndCondition::Kind::Bessel);
+  EXPECT_EQ(in.end.kind, nurbs::EndCondition::Kind::Clamped);
+  EXPECT_EQ(in.end.derivative, (Vec3{1, 0, 0}));
+  EXPECT_EQ(f.nurbs(), nurbs::interpolate_cubic(in.points, in.options()));
+  EXPECT_NEAR(distance(f.nurbs().evaluate(0.0), Vec3{0, 0, 0}), 0.0, 1e-12);
+  EXPECT_NEAR(distance(f.nurbs().evaluate(1.0), Vec3{120, 0, 0}), 0.0, 1e-12);
+  EXPECT_NEAR(distance(f.nurbs().derivatives(1.0, 1)[1], Vec3{1, 0, 0}), 0.0, 1e-9);
 
-  const CurveFile again = parse_curve_json(interpolated_to_json(*f.inputs).dump());
-  ASSERT_TRUE(again.inputs);
-  EXPECT_EQ(again.inputs->points, f.inputs->points);
-  EXPECT_EQ(again.curve, f.curve);
+  const curve::Curve again = parse_curve_json(curve_to_json(f).dump());
+  ASSERT_TRUE(std::get_if<curve::InterpolatedData>(&again.data()));
+  EXPECT_EQ(std::get<curve::InterpolatedData>(again.data()).points, std::get<curve::InterpolatedData>(f.data()).points);
+  EXPECT_EQ(again.nurbs(), f.nurbs());
 }
 
 // checks: every END name and both parameterisation spellings parse; "knots" means "parameters".
@@ -110,23 +111,23 @@ TEST(JsonCurve, InterpolatedEndNamesAndKnots) {
     const std::string text = std::string(R"({"kind": "interpolated", "points": [[0, 0], [1, 1], [2, 0], [3, 1]],
         "parameterisation": "uniform", "start": ")") +
                              end + R"(", "end": ")" + end + R"("})";
-    const CurveFile f = parse_curve_json(text);
-    EXPECT_EQ(f.curve.dimension(), 2) << end;
-    EXPECT_EQ(end_condition_to_json(f.inputs->start), Json(end));
+    const curve::Curve f = parse_curve_json(text);
+    EXPECT_EQ(f.nurbs().dimension(), 2) << end;
+    EXPECT_EQ(end_condition_to_json(std::get<curve::InterpolatedData>(f.data()).start), Json(end));
   }
-  const CurveFile k = parse_curve_json(R"({"kind": "interpolated", "points": [[0, 0], [1, 1], [2, 0]],
+  const curve::Curve k = parse_curve_json(R"({"kind": "interpolated", "points": [[0, 0], [1, 1], [2, 0]],
                                            "knots": [0, 1, 3]})");
-  const CurveFile p = parse_curve_json(R"({"kind": "interpolated", "points": [[0, 0], [1, 1], [2, 0]],
+  const curve::Curve p = parse_curve_json(R"({"kind": "interpolated", "points": [[0, 0], [1, 1], [2, 0]],
                                            "parameters": [0, 1, 3], "knots": [0, 1, 3]})");
-  EXPECT_EQ(k.inputs->parameters, (std::vector<double>{0, 1, 3}));
-  EXPECT_EQ(k.curve, p.curve);
+  EXPECT_EQ(std::get<curve::InterpolatedData>(k.data()).parameters, (std::vector<double>{0, 1, 3}));
+  EXPECT_EQ(k.nurbs(), p.nurbs());
 }
 
 // checks: unknown members are ignored (forward compatibility).
 TEST(JsonCurve, UnknownMembersAreIgnored) {
-  const CurveFile f = parse_curve_json(R"({"kind": "bezier", "control_points": [[0, 0], [1, 1]],
+  const curve::Curve f = parse_curve_json(R"({"kind": "bezier", "control_points": [[0, 0], [1, 1]],
                                            "colour": "red", "meta": {"author": "x"}})");
-  EXPECT_EQ(f.curve.degree(), 1);
+  EXPECT_EQ(f.nurbs().degree(), 1);
 }
 
 // checks: an unknown kind names the kind.
@@ -253,21 +254,21 @@ const char* const kHelixLaw =
         "domain": [0, 12.566370614359172]})j";
 
 // checks: a "law" curve file reads to the law (exact values) plus a stand-in NURBS within
-// kLawCurveTolerance, and writes back the same members.
+// curve::kApproximationTolerance, and writes back the same members.
 TEST(JsonCurveLaw, ReadsLawKind) {
-  const CurveFile f = parse_curve_json(kHelixLaw);
-  EXPECT_EQ(f.kind, CurveKind::Law);
-  ASSERT_TRUE(f.law.has_value());
-  EXPECT_EQ(f.law->law.dimension(), 3);
-  EXPECT_LE(f.law->approximation_deviation, kLawCurveTolerance);
-  EXPECT_NEAR(f.curve.evaluate(1.0).x, 2 * std::cos(1.0), 1e-6);
-  const Json back = law_to_json(*f.law);
+  const curve::Curve f = parse_curve_json(kHelixLaw);
+  EXPECT_EQ(f.kind(), curve::Kind::Law);
+  ASSERT_NE(f.law(), nullptr);
+  EXPECT_EQ(f.law()->dimension(), 3);
+  EXPECT_LE(f.approximation_deviation(), curve::kApproximationTolerance);
+  EXPECT_NEAR(f.nurbs().evaluate(1.0).x, 2 * std::cos(1.0), 1e-6);
+  const Json back = curve_to_json(f);
   EXPECT_EQ(back["kind"], "law");
   EXPECT_EQ(back["expression"], "vec(2*cos(t), 2*sin(t), 0.5*t)");
   EXPECT_EQ(back["domain"][1], 12.566370614359172);
-  const CurveFile g =
+  const curve::Curve g =
       parse_curve_json(R"j({"kind": "law", "expression": "vec(u, u^2)", "parameter": "u", "domain": [0, 1]})j");
-  EXPECT_EQ(g.curve.dimension(), 2);
+  EXPECT_EQ(g.nurbs().dimension(), 2);
 }
 
 // checks: bad law files: expression errors keep line/column under field "expression"; scalar laws,

@@ -98,3 +98,30 @@ TEST(LawRoots, Errors) {
 
 }  // namespace
 }  // namespace hula::law
+
+namespace hula::law {
+namespace {
+
+// checks: a sign change through a pole (1/(t − 1)) or a jump (sign(t − 1)) is no root: find_roots
+// lists it as unresolved at t = 1 and roots() leaves it out (old code returned 1 as a root), while
+// a steep genuine root (tanh(1e8 (t − 1)), slope 1e8) still converges.
+TEST(LawRoots, PoleAndJumpAreUnresolvedNotRoots) {
+  testing::FpeGuard guard;
+  Context ctx;
+  RootReport r = find_roots(parse("1/(t - 1)", ctx), "t", 0, 2.3);
+  EXPECT_TRUE(r.roots.empty());
+  ASSERT_EQ(r.unresolved.size(), 1U);
+  EXPECT_NEAR(r.unresolved[0], 1.0, 1e-12);
+  EXPECT_FALSE(r.converged());
+  r = find_roots(parse("sign(t - 1)", ctx), "t", 0, 2.3);
+  EXPECT_TRUE(r.roots.empty());
+  ASSERT_EQ(r.unresolved.size(), 1U);
+  EXPECT_TRUE(roots(parse("1/(t - 1)", ctx), "t", 0, 2.3).empty());
+  r = find_roots(parse("tanh(1e8*(t - 1))", ctx), "t", 0, 2.3);
+  ASSERT_EQ(r.roots.size(), 1U);
+  EXPECT_NEAR(r.roots[0], 1.0, 1e-12);
+  EXPECT_TRUE(r.converged());
+}
+
+}  // namespace
+}  // namespace hula::law

@@ -102,3 +102,75 @@ TEST(LawSingularities, ExplainUndefined) {
 
 }  // namespace
 }  // namespace hula::law
+
+namespace hula::law {
+namespace {
+
+// checks: explain_non_finite names the subexpression that overflows (exp(1000 t) at t = 1, whose
+// value exceeds DBL_MAX ≈ 1.8e308 since 1000 > log(DBL_MAX) ≈ 709.8), finds the overflow under an
+// inf − inf that became NaN, and still explains undefined values as explain_undefined does.
+TEST(LawSingularities, ExplainNonFiniteNamesTheOverflow) {
+  testing::FpeGuard guard;
+  Context ctx;
+  auto cause = explain_non_finite(parse("vec(exp(1000*t), 0, 0)", ctx), "t", 1.0);
+  ASSERT_TRUE(cause.has_value());
+  EXPECT_TRUE(cause->overflow);
+  EXPECT_EQ(cause->expression, "exp(1000*t)");
+  cause = explain_non_finite(parse("exp(1000*t) - exp(1000*t)*2", ctx), "t", 1.0);
+  ASSERT_TRUE(cause.has_value());
+  EXPECT_TRUE(cause->overflow);
+  EXPECT_EQ(cause->expression, "exp(1000*t)");
+  cause = explain_non_finite(parse("sin(t) + 1/t", ctx), "t", 0.0);
+  ASSERT_TRUE(cause.has_value());
+  EXPECT_FALSE(cause->overflow);
+  EXPECT_EQ(cause->reason, "division by zero");
+  EXPECT_FALSE(explain_non_finite(parse("exp(1000*t)", ctx), "t", 0.5).has_value());    // e^500 is finite
+  EXPECT_FALSE(explain_non_finite(parse("1/exp(1000*t)", ctx), "t", 1.0).has_value());  // 1/inf = 0 is finite
+}
+
+// checks: nonsmooth_at against the kinks known in closed form: |t| at 0 (first derivative), |sin t|
+// at π (sin(π) rounds to 1.2e-16), min/max ties, a piecewise join, t·|t|·|t| (= t³, smooth, but the
+// kink condition of abs is met: the report is conservative), and no report away from the kink,
+// below the order asked, or for a smooth law.
+TEST(LawSingularities, NonsmoothAtKnownKinks) {
+  testing::FpeGuard guard;
+  Context ctx;
+  auto k = nonsmooth_at(parse("abs(t)", ctx), "t", 0.0, 1);
+  ASSERT_TRUE(k.has_value());
+  EXPECT_EQ(k->order, 1);
+  EXPECT_EQ(k->kind, SingularityKind::AbsKink);
+  EXPECT_EQ(k->expression, "abs(t)");
+  EXPECT_FALSE(nonsmooth_at(parse("abs(t)", ctx), "t", 0.0, 0).has_value());
+  EXPECT_FALSE(nonsmooth_at(parse("abs(t)", ctx), "t", 1e-3, 4).has_value());
+  k = nonsmooth_at(parse("abs(sin(t))", ctx), "t", std::numbers::pi, 2);  // sin(pi) = 1.2e-16, not 0
+  ASSERT_TRUE(k.has_value());
+  EXPECT_EQ(k->order, 1);
+  k = nonsmooth_at(parse("max(t, 1 - t)", ctx), "t", 0.5, 1);
+  ASSERT_TRUE(k.has_value());
+  EXPECT_EQ(k->kind, SingularityKind::MinMaxSwitch);
+  k = nonsmooth_at(parse("piecewise(t < 1, t^2, 2*t - 1)", ctx), "t", 1.0, 3);
+  ASSERT_TRUE(k.has_value());
+  EXPECT_EQ(k->order, 1);  // conservative: a join is a join, even a C1 one
+  k = nonsmooth_at(parse("t*abs(t)*abs(t)", ctx), "t", 0.0, 3);
+  ASSERT_TRUE(k.has_value());
+  EXPECT_EQ(k->order, 1);  // the kink condition of abs(t) in f itself
+  EXPECT_FALSE(nonsmooth_at(parse("t^3", ctx), "t", 0.0, 5).has_value());
+}
+
+// checks: a NURBS leaf at a simple interior knot of a cubic (C2 there) keeps its first and second
+// derivatives and loses the third, as the B-spline continuity p − m = 2 says.
+TEST(LawSingularities, NonsmoothAtNurbsKnotFollowsContinuity) {
+  const nurbs::NurbsCurve curve =
+      nurbs::interpolate_cubic(std::vector<Vec3>{{0, 0, 0}, {1, 1, 0}, {2, 0, 1}, {3, 1, 1}, {4, 2, 0}});
+  Context ctx;
+  const Law c = ctx.curve(curve, ctx.parameter("t"));
+  const double knot = curve.knots().breakpoints()[1];
+  EXPECT_FALSE(nonsmooth_at(c, "t", knot, 2).has_value());
+  const auto k = nonsmooth_at(c, "t", knot, 3);
+  ASSERT_TRUE(k.has_value());
+  EXPECT_EQ(k->order, 3);
+  EXPECT_EQ(k->kind, SingularityKind::CurveKnot);
+}
+
+}  // namespace
+}  // namespace hula::law

@@ -146,3 +146,39 @@ TEST(Approximate, ErrorsNameTheInput) {
 
 }  // namespace
 }  // namespace hula::nurbs
+
+namespace hula::nurbs {
+namespace {
+
+// checks: approximate_to_tolerance meets each tolerance at the data points (re-measured here
+// from the curve, not taken from the result), and one control point fewer misses it (the count
+// is the fewest the documented search can stand on), for a range of tolerances.
+TEST(ApproximateToTolerance, MeetsToleranceWithFewestControlPoints) {
+  const auto pts = noisy_curve_points(200, 77);
+  for (double tol : {0.2, 0.05, 0.02}) {
+    const ToleranceFitResult r = approximate_to_tolerance(pts, tol);
+    const NurbsCurve& c = r.fit.curve;
+    double worst = 0.0;
+    for (std::size_t i = 0; i < pts.size(); ++i)
+      worst = std::max(worst, distance(c.evaluate(r.fit.parameters[i]), pts[i]));
+    EXPECT_LE(worst, tol) << tol;
+    EXPECT_NEAR(worst, r.fit.max_deviation, 1e-12) << tol;
+    const std::size_t n = c.control_points().size();
+    if (n > 4) {
+      ApproximationOptions o;
+      o.control_points = n - 1;
+      EXPECT_GT(approximate(pts, o).max_deviation, tol) << tol;
+    }
+    EXPECT_LT(r.fits, 30U) << tol;  // O(log N) fits, not a scan of all counts
+  }
+}
+
+// checks: a tolerance that is not positive, or below the rounding of interpolation, is refused.
+TEST(ApproximateToTolerance, ErrorsNameTheTolerance) {
+  const auto pts = noisy_curve_points(20, 3);
+  HULA_EXPECT_ERROR(approximate_to_tolerance(pts, 0.0), Errc::InvalidArgument, "tolerance = 0");
+  HULA_EXPECT_ERROR(approximate_to_tolerance(pts, 1e-300), Errc::NumericalFailure, "rounding");
+}
+
+}  // namespace
+}  // namespace hula::nurbs

@@ -544,3 +544,62 @@ TEST(Hermite, ErrorsNameTheInput) {
 
 }  // namespace
 }  // namespace hula::nurbs
+
+namespace hula::nurbs {
+namespace {
+
+double end_curvature(const NurbsCurve& c, double t) {
+  const std::vector<Vec3> d = c.derivatives(t, 2);
+  return norm(cross(d[1], d[2])) / std::pow(norm(d[1]), 3);
+}
+
+// checks: a direction end has the sense of the given vector and the magnitude of the Bessel end
+// derivative (the quadratic through the three end points), whatever length the vector has.
+TEST(InterpolateCubic, DirectionEndTakesBesselMagnitude) {
+  for (std::size_t n : {3u, 4u, 10u}) {
+    const auto pts = random_points(n, 19 * n, 5.0);
+    const auto t = parameterise(pts, Parameterisation::ChordLength);
+    const Vec3 a = lagrange_derivative(pts, t, 0, 3, 0.0);
+    const Vec3 b = lagrange_derivative(pts, t, n - 3, 3, 1.0);
+    const Vec3 u{0.3, -2, 1}, v{-4, 0.5, 0.25};
+    const NurbsCurve c =
+        interpolate_cubic(pts, {.start = EndCondition::direction(u), .end = EndCondition::direction(1e-3 * v)});
+    const Vec3 want0 = (norm(a) / norm(u)) * u;
+    const Vec3 want1 = (norm(b) / norm(v)) * v;
+    EXPECT_LE(distance(c.derivatives(0.0, 1)[1], want0), kRel * norm(want0)) << n;
+    EXPECT_LE(distance(c.derivatives(1.0, 1)[1], want1), kRel * norm(want1)) << n;
+  }
+  // Two points: the Bessel derivative is the chord Q1 − Q0 (t from 0 to 1), so its length.
+  const std::vector<Vec3> two{{0, 0, 0}, {3, 4, 0}};
+  const NurbsCurve c = interpolate_cubic(two, {.start = EndCondition::direction({0, 1, 0})});
+  EXPECT_NEAR(c.derivatives(0.0, 1)[1].y, 5.0, 1e-12);
+}
+
+// checks (issue 10 defect): the README's `--end clamped:1,0,0` on the thesis's points imposes
+// |C'(1)| = 1 where the natural spline runs at ~150, bending the end into a hook (end curvature
+// hundreds of times the natural spline's); the direction end along the same vector keeps the
+// Bessel speed, and its end curvature stays within a few times the natural spline's.
+TEST(InterpolateCubic, DirectionEndMakesNoHookWhereClampedDoes) {
+  const auto pts = thesis_points();
+  const NurbsCurve natural = interpolate_cubic(pts);
+  const NurbsCurve clamped = interpolate_cubic(pts, {.end = EndCondition::clamped({1, 0, 0})});
+  const NurbsCurve direction = interpolate_cubic(pts, {.end = EndCondition::direction({1, 0, 0})});
+  double kappa_natural = 0.0;
+  for (int i = 0; i <= 100; ++i) kappa_natural = std::max(kappa_natural, end_curvature(natural, i / 100.0));
+  EXPECT_GT(end_curvature(clamped, 1.0), 100 * kappa_natural);
+  EXPECT_LT(end_curvature(direction, 1.0), 3 * kappa_natural);
+  EXPECT_GT(norm(direction.derivatives(1.0, 1)[1]), 100.0);
+  EXPECT_NEAR(direction.derivatives(1.0, 1)[1].y, 0.0, 1e-12);
+}
+
+// checks: a zero or non-finite direction is refused by name before any work.
+TEST(InterpolateCubic, DirectionEndErrorsNameTheEnd) {
+  const auto pts = thesis_points();
+  HULA_EXPECT_ERROR(interpolate_cubic(pts, {.start = EndCondition::direction({0, 0, 0})}), Errc::InvalidOption,
+                    "start.derivative is a zero direction");
+  HULA_EXPECT_ERROR(interpolate_cubic(pts, {.end = EndCondition::direction({std::nan(""), 1, 0})}), Errc::InvalidOption,
+                    "end.derivative[0] = nan");
+}
+
+}  // namespace
+}  // namespace hula::nurbs

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "hula/io/match_study_file.hpp"
 #include "hula/law/parser.hpp"
 #include "hula/testing/curvature_target.hpp"
 #include "hula/testing/expect_error.hpp"
@@ -265,7 +266,7 @@ TEST(DirectReconstruction, SummaryJson) {
   Laws l;
   const DirectReconstructionResult r = reconstruct_direct(
       {.curvature = l.profile("0.5"), .length = 5.0, .end_point = arc_point(2.0, 5.0)}, DirectReconstructionOptions{});
-  const io::json::Json j = direct_reconstruction_summary(r);
+  const io::json::Json j = io::direct_reconstruction_summary(r);
   EXPECT_EQ(j.at("planar").get<bool>(), true);
   EXPECT_EQ(j.at("end_point_error").get<double>(), r.end_point_error);
   EXPECT_EQ(j.at("curvature_correction").size(), 6U);

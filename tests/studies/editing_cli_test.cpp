@@ -83,12 +83,12 @@ TEST(EditingCli, CombescureHelixIsShiftedHelix) {
   const fs::path q = dir.path() / "q.json";
   const json out = run_ok({"fin-compound", example("combescure-helix.json"), "-o", q.string()});
   EXPECT_LT(out["compound"]["round_trip_deviation"].get<double>(), 1e-12);
-  const io::CurveFile file = io::read_curve_file(q);
+  const curve::Curve file = io::read_curve_file(q);
   const double shift = 0.8 * std::sqrt(4.25) / 2.0;
   for (int i = 0; i <= 40; ++i) {
     const double t = 4.0 * std::numbers::pi * i / 40.0;
     const Vec3 expect{2.0 * std::cos(t), 2.0 * std::sin(t), 0.5 * t + shift};
-    EXPECT_LT(distance(file.curve.evaluate(t), expect), 1e-9) << "t = " << t;
+    EXPECT_LT(distance(file.nurbs().evaluate(t), expect), 1e-9) << "t = " << t;
   }
   const json inv = run_ok({"fin-compound", example("combescure-inverse.json")});
   EXPECT_LT(inv["parent"]["round_trip_deviation"].get<double>(), 1e-12);

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <vector>
 
+#include "hula/io/profile_file.hpp"
 #include "hula/law/parser.hpp"
 #include "hula/testing/expect_error.hpp"
 #include "hula/testing/temp_dir.hpp"
@@ -14,8 +15,8 @@
 namespace {
 
 using hula::Errc;
+using hula::io::profile_from_json;
 using hula::studies::Profile;
-using hula::studies::profile_from_json;
 
 const hula::io::json::JsonPath kTarget = hula::io::json::root_path("target");
 
@@ -75,7 +76,7 @@ TEST(Profile, JsonFormsAndTheirErrors) {
   hula::law::Context ctx;
   hula::testing::TempDir dir;
   const auto parse = [&](const char* text) {
-    return profile_from_json(hula::io::json::Json::parse(text), kTarget, dir.path(), ctx);
+    return profile_from_json(hula::io::json::Json::parse(text), kTarget, hula::io::relative_to(dir.path()), ctx);
   };
   EXPECT_NEAR(parse(R"({"law": "2*u"})")(0.25), 0.5, 1e-15);
   EXPECT_NEAR(parse(R"({"law": "2*t", "variable": "t"})")(0.25), 0.5, 1e-15);

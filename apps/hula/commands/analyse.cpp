@@ -18,9 +18,6 @@
 #include "hula/diffgeom/features.hpp"
 #include "hula/diffgeom/fins.hpp"
 #include "hula/io/atomic_file.hpp"
-#include "hula/law/derive.hpp"
-#include "hula/law/integrate.hpp"
-#include "hula/nurbs/arc_length.hpp"
 
 namespace hula::cli {
 
@@ -43,81 +40,16 @@ Json vec_or_null(const Vec3& v, bool defined) {
   return defined && is_finite(v) ? Json::array({v.x, v.y, v.z}) : Json(nullptr);
 }
 
-// The curve under analysis: a NURBS or an exact law, with arc length in both directions.
-class Subject {
- public:
-  explicit Subject(const io::CurveFile& file) : file_(file) {
-    if (file.law) {
-      law_.emplace(file.law->law, file.law->parameter, file.law->domain);
-      speed_ = law::norm(law::derivative(file.law->law, file.law->parameter));
-    }
-  }
-  [[nodiscard]] nurbs::Interval domain() const { return file_.law ? file_.law->domain : file_.curve.domain(); }
-  // Arc length from the domain start to t.
-  [[nodiscard]] double length_to(double t) const {
-    const double a = domain().start;
-    if (t == a) return 0.0;
-    if (!file_.law) return nurbs::arc_length(file_.curve, a, t);
-    return law::integrate(speed_, file_.law->parameter, a, t).value;
-  }
-  // The parameter at arc length s from the start (safeguarded Newton for laws).
-  [[nodiscard]] double parameter_at(double s) const {
-    if (!file_.law) return nurbs::parameter_at_length(file_.curve, s);
-    const nurbs::Interval d = domain();
-    double lo = d.start, hi = d.end;
-    double t = file_.curve.domain().contains(s) ? nurbs::parameter_at_length(file_.curve, s) : d.start;
-    for (int it = 0; it < 60; ++it) {
-      const double f = length_to(t) - s;
-      if (f > 0)
-        hi = t;
-      else
-        lo = t;
-      const double v = law_->at(t).speed;
-      double next = v > 0 ? t - f / v : 0.5 * (lo + hi);
-      if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-      if (std::fabs(next - t) <= 1e-15 * (1.0 + std::fabs(t))) return next;
-      t = next;
-    }
-    return t;
-  }
-  [[nodiscard]] const diffgeom::LawFrenet* law() const { return law_ ? &*law_ : nullptr; }
-  [[nodiscard]] double total_length() const { return length_to(domain().end); }
-  void frenet(std::span<const double> ts, std::span<diffgeom::FrenetPoint> out) const {
-    if (law_) {
-      for (std::size_t i = 0; i < ts.size(); ++i)
-        if (!domain().contains(ts[i]))
-          throw Error(Errc::OutOfDomain,
-                      "t[" + std::to_string(i) + "] = " + format_number(ts[i]) + " is outside the domain [" +
-                          format_number(domain().start) + ", " + format_number(domain().end) + "]",
-                      ErrorWhere{.field = "t", .index = i});
-      law_->at(ts, out);
-    } else {
-      diffgeom::frenet(file_.curve, ts, out);
-    }
-  }
-
- private:
-  const io::CurveFile& file_;
-  std::optional<diffgeom::LawFrenet> law_;
-  law::Law speed_{};
-};
-
 // {"inflections", "curvature_extrema", "knots"}: inflections only for planar curves (about their
 // plane's normal; [] for space curves), extrema of κ, and the continuity at every interior knot
 // (NURBS only; a law has no knots).
-Json features_to_json(const io::CurveFile& file, const Subject& subject) {
-  const Planarity plane = planarity(file.curve);
+Json features_to_json(const curve::Curve& c) {
+  const Planarity plane = planarity(c.nurbs());
   diffgeom::FeatureOptions fo;
   if (plane.normal) fo.frenet.plane_normal = *plane.normal;
-  const nurbs::Interval dom = subject.domain();
-  std::vector<diffgeom::Feature> infl, ext;
-  if (subject.law()) {
-    if (plane.planar) infl = diffgeom::inflections(*subject.law(), dom, fo);
-    ext = diffgeom::curvature_extrema(*subject.law(), dom, fo);
-  } else {
-    if (plane.planar) infl = diffgeom::inflections(file.curve, fo);
-    ext = diffgeom::curvature_extrema(file.curve, fo);
-  }
+  std::vector<diffgeom::Feature> infl;
+  if (plane.planar) infl = diffgeom::inflections(c, fo);
+  const std::vector<diffgeom::Feature> ext = diffgeom::curvature_extrema(c, fo);
   auto vec = [](const Vec3& v) { return Json::array({v.x, v.y, v.z}); };
   Json j = Json::object();
   Json ji = Json::array();
@@ -129,23 +61,23 @@ Json features_to_json(const io::CurveFile& file, const Subject& subject) {
                       {"kappa", f.curvature},
                       {"position", vec(f.position)}});
   Json jt = Json::array();
-  if (!subject.law())
-    for (const auto& f : diffgeom::torsion_extrema(file.curve, fo))
-      jt.push_back(Json{{"t", f.t},
-                        {"kind", f.kind == diffgeom::FeatureKind::TorsionMaximum ? "maximum" : "minimum"},
-                        {"tau", f.torsion},
-                        {"position", vec(f.position)}});
+  for (const auto& f : diffgeom::torsion_extrema(c, fo))
+    jt.push_back(Json{{"t", f.t},
+                      {"kind", f.kind == diffgeom::FeatureKind::TorsionMaximum ? "maximum" : "minimum"},
+                      {"tau", f.torsion},
+                      {"position", vec(f.position)}});
   Json jk = Json::array();
-  if (!subject.law()) {
-    for (const diffgeom::Continuity& c : diffgeom::knot_continuity(file.curve)) {
+  // Knots are features of the exact NURBS kinds only (a law has none; a natural curve's are its fit's).
+  if (c.kind() != curve::Kind::Law && c.kind() != curve::Kind::Natural) {
+    for (const diffgeom::Continuity& k : diffgeom::knot_continuity(c.nurbs())) {
       Json left = Json::array(), right = Json::array();
-      for (const Vec3& v : c.left) left.push_back(vec(v));
-      for (const Vec3& v : c.right) right.push_back(vec(v));
-      jk.push_back(Json{{"t", c.t},
-                        {"multiplicity", c.multiplicity},
-                        {"parametric", c.parametric < 0 ? Json(nullptr) : Json("C" + std::to_string(c.parametric))},
-                        {"geometric", c.geometric < 0 ? Json(nullptr) : Json("G" + std::to_string(c.geometric))},
-                        {"tangent_angle", std::isfinite(c.tangent_angle) ? Json(c.tangent_angle) : Json(nullptr)},
+      for (const Vec3& v : k.left) left.push_back(vec(v));
+      for (const Vec3& v : k.right) right.push_back(vec(v));
+      jk.push_back(Json{{"t", k.t},
+                        {"multiplicity", k.multiplicity},
+                        {"parametric", k.parametric < 0 ? Json(nullptr) : Json("C" + std::to_string(k.parametric))},
+                        {"geometric", k.geometric < 0 ? Json(nullptr) : Json("G" + std::to_string(k.geometric))},
+                        {"tangent_angle", std::isfinite(k.tangent_angle) ? Json(k.tangent_angle) : Json(nullptr)},
                         {"left", std::move(left)},
                         {"right", std::move(right)}});
     }
@@ -198,15 +130,15 @@ std::string svg_document(const std::vector<Polyline>& lines, const std::string& 
   return out + "</svg>\n";
 }
 
-void write_svgs(const std::filesystem::path& dir, const io::CurveFile& file, const Subject& subject) {
+void write_svgs(const std::filesystem::path& dir, const curve::Curve& subject) {
   std::filesystem::create_directories(dir);
-  const nurbs::Interval dom = subject.domain();
+  const Interval dom = subject.domain();
   constexpr int kSamples = 400;
   std::vector<double> ts(kSamples);
   for (int i = 0; i < kSamples; ++i) ts[static_cast<std::size_t>(i)] = dom.start + dom.length() * i / (kSamples - 1);
   ts.back() = dom.end;
   std::vector<diffgeom::FrenetPoint> pts(ts.size());
-  subject.frenet(ts, pts);
+  diffgeom::frenet(subject, ts, pts);
   // Fin scale: the largest fin is a fifth of the curve's size (less for coiling curves, below).
   Box3 box;
   double kmax = 0.0, tmax = 0.0;
@@ -234,7 +166,7 @@ void write_svgs(const std::filesystem::path& dir, const io::CurveFile& file, con
     fo.kind = kind;
     fo.density = 120;
     fo.scale = qmax > 0 ? longest / qmax : 1.0;
-    const diffgeom::Fins f = subject.law() ? diffgeom::fins(*subject.law(), dom, fo) : diffgeom::fins(file.curve, fo);
+    const diffgeom::Fins f = diffgeom::fins(subject, fo);
     for (std::size_t i = 0; i < f.tip.size(); ++i)
       if (f.defined[i]) out.push_back({{f.base[i], f.tip[i]}, colour, 0.5});
     out.push_back({f.tip, colour, 1.0});
@@ -363,23 +295,22 @@ void write_svgs(const std::filesystem::path& dir, const io::CurveFile& file, con
 }
 
 int run_analyse(const AnalyseArgs& a) {
-  const io::CurveFile file = io::read_curve_file(a.curve);
-  const Subject subject(file);
-  const nurbs::Interval dom = subject.domain();
+  const curve::Curve subject = io::read_curve_file(a.curve);
+  const Interval dom = subject.domain();
   const bool by_length = a.by == "arclength";
   // The requested abscissae, in parameter or arc length.
   std::vector<double> xs;
   if (!a.at.empty()) {
     xs = parse_number_list(a.at, by_length ? "s" : "t");
   } else {
-    const double end = by_length ? subject.total_length() : dom.end;
+    const double end = by_length ? subject.length() : dom.end;
     const double start = by_length ? 0.0 : dom.start;
     for (int i = 0; i < a.samples; ++i)
       xs.push_back(a.samples == 1 ? start : start + (end - start) * i / (a.samples - 1));
   }
   std::vector<double> ts(xs.size()), ss(xs.size());
   if (by_length) {
-    const double total = subject.total_length();
+    const double total = subject.length();
     for (std::size_t i = 0; i < xs.size(); ++i) {
       if (!(xs[i] >= 0.0 && xs[i] <= total * (1 + 1e-14)))
         throw Error(
@@ -387,13 +318,13 @@ int run_analyse(const AnalyseArgs& a) {
             "s[" + std::to_string(i) + "] = " + format_number(xs[i]) + " is outside [0, " + format_number(total) + "]",
             ErrorWhere{.field = "s", .index = i});
       ss[i] = xs[i];
-      ts[i] = subject.parameter_at(std::min(xs[i], total));
+      ts[i] = subject.parameter_at_length(std::min(xs[i], total));
     }
   } else {
     ts = xs;
   }
   std::vector<diffgeom::FrenetPoint> points(ts.size());
-  subject.frenet(ts, points);  // validates the parameters (names t[i])
+  diffgeom::frenet(subject, ts, points);  // validates the parameters (names t[i])
   if (!by_length)
     for (std::size_t i = 0; i < ts.size(); ++i) ss[i] = subject.length_to(ts[i]);
 
@@ -405,7 +336,7 @@ int run_analyse(const AnalyseArgs& a) {
   std::sort(grid.begin(), grid.end());
   grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
   std::vector<diffgeom::FrenetPoint> grid_points(grid.size());
-  subject.frenet(grid, grid_points);
+  diffgeom::frenet(subject, grid, grid_points);
   const diffgeom::BishopResult bishop = diffgeom::bishop_frame(grid_points);
 
   Json list = Json::array();
@@ -432,8 +363,8 @@ int run_analyse(const AnalyseArgs& a) {
   }
   Json doc = Json::object();
   doc["points"] = std::move(list);
-  if (a.features) doc["features"] = features_to_json(file, subject);
-  if (!a.svg.empty()) write_svgs(a.svg, file, subject);
+  if (a.features) doc["features"] = features_to_json(subject);
+  if (!a.svg.empty()) write_svgs(a.svg, subject);
   print_json(doc);
   return kExitOk;
 }

@@ -9,8 +9,8 @@
 
 #include "commands/common.hpp"
 #include "commands/editing_common.hpp"
+#include "hula/io/editing_study_file.hpp"
 #include "hula/io/json_curve.hpp"
-#include "hula/studies/editing_study.hpp"
 
 namespace hula::cli {
 
@@ -22,9 +22,9 @@ struct EditProjectionArgs {
 };
 
 int run_edit_projection(const EditProjectionArgs& a) {
-  const studies::StudyDocument doc = load_study(a.study, "edit-projection");
-  const studies::EditProjectionStudy s = studies::read_edit_projection_study(doc);
-  const studies::ProjectionEditResult r = studies::edit_projection(s.curve.curve, s.edited.curve, s.plane);
+  const io::StudyDocument doc = load_study(a.study, "edit-projection");
+  const io::EditProjectionStudy s = io::read_edit_projection_study(doc);
+  const studies::ProjectionEditResult r = studies::edit_projection(s.curve.nurbs(), s.edited.nurbs(), s.plane);
   Json out = Json::object();
   out["study"] = "edit-projection";
   out["plane"] = std::string(diffgeom::plane_name(s.plane));
@@ -34,11 +34,11 @@ int run_edit_projection(const EditProjectionArgs& a) {
   Json changed = Json::array();
   for (std::size_t k = 0; k < 3; ++k) {
     double m = 0.0;
-    const nurbs::Interval dr = r.curve.domain(), dc = s.curve.curve.domain();
+    const nurbs::Interval dr = r.curve.domain(), dc = s.curve.nurbs().domain();
     for (int i = 0; i <= 1000; ++i) {
       const double u = i / 1000.0;
       m = std::max(m, std::abs(r.curve.evaluate(dr.start * (1 - u) + dr.end * u)[k] -
-                               s.curve.curve.evaluate(dc.start * (1 - u) + dc.end * u)[k]));
+                               s.curve.nurbs().evaluate(dc.start * (1 - u) + dc.end * u)[k]));
     }
     changed.push_back(m);
   }
@@ -48,8 +48,8 @@ int run_edit_projection(const EditProjectionArgs& a) {
     for (diffgeom::Plane plane : {diffgeom::Plane::XY, diffgeom::Plane::YZ, diffgeom::Plane::ZX}) {
       const std::string name(diffgeom::plane_name(plane));
       io::SvgFigure f = plane_figure("projection on " + name + (plane == s.plane ? " (edited)" : ""), plane);
-      draw_curve(f, s.curve.curve, plane, {.stroke = "#999999", .dash = "6 4"}, "original");
-      if (plane == s.plane) draw_curve(f, s.edited.curve, plane, {.stroke = "#1f77b4", .width = 4.0}, "edited");
+      draw_curve(f, s.curve.nurbs(), plane, {.stroke = "#999999", .dash = "6 4"}, "original");
+      if (plane == s.plane) draw_curve(f, s.edited.nurbs(), plane, {.stroke = "#1f77b4", .width = 4.0}, "edited");
       draw_curve(f, r.curve, plane, {.stroke = "#d62728"}, "rebuilt");
       write_svg(*a.study.svg, "projection-" + name, f);
     }

@@ -20,7 +20,7 @@ struct EvalArgs {
 };
 
 int run_eval(const EvalArgs& a) {
-  const io::CurveFile file = io::read_curve_file(a.curve);
+  const curve::Curve c = io::read_curve_file(a.curve);
   const std::vector<double> ts = parse_number_list(a.at, "t");
   nurbs::EvalOptions options;
   options.side = a.side == "left" ? nurbs::Side::Left : nurbs::Side::Right;
@@ -28,33 +28,31 @@ int run_eval(const EvalArgs& a) {
       a.extrapolate ? nurbs::Domain::Extrapolate : (a.clamp ? nurbs::Domain::Clamp : nurbs::Domain::Strict);
   const auto per_t = static_cast<std::size_t>(a.derivatives) + 1;
   std::vector<Vec3> out(ts.size() * per_t);
-  if (!file.law) {
+  if (!c.law()) {
     // The batch form names the index of a bad parameter ("t[2] = 1.5 is outside ...").
-    file.curve.derivatives(ts, a.derivatives, out, options);
-  }
-
-  if (file.law) {
-    // Law curves are evaluated exactly from the law, not from their stand-in NURBS.
-    const io::LawCurve& lc = *file.law;
+    c.derivatives(ts, a.derivatives, out, options);
+  } else {
+    // Law curves are evaluated exactly from the law, not from their stand-in NURBS, to any order.
     std::vector<double> us = ts;
+    const Interval dom = c.domain();
     for (std::size_t i = 0; i < us.size(); ++i) {
-      if (lc.domain.contains(us[i]) || options.domain == nurbs::Domain::Extrapolate) continue;
+      if (dom.contains(us[i]) || options.domain == nurbs::Domain::Extrapolate) continue;
       if (options.domain == nurbs::Domain::Clamp) {
-        us[i] = std::clamp(us[i], lc.domain.start, lc.domain.end);
+        us[i] = std::clamp(us[i], dom.start, dom.end);
         continue;
       }
       throw Error(Errc::OutOfDomain,
                   "t[" + std::to_string(i) + "] = " + format_number(us[i]) + " is outside the domain [" +
-                      format_number(lc.domain.start) + ", " + format_number(lc.domain.end) + "]",
+                      format_number(dom.start) + ", " + format_number(dom.end) + "]",
                   ErrorWhere{.field = "t", .index = i});
     }
     Json doc = Json::object();
-    doc["results"] = law_results_to_json(ts, law_derivatives(lc.law, lc.parameter, us, a.derivatives),
-                                         lc.law.dimension(), a.derivatives);
+    doc["results"] = law_results_to_json(ts, law_derivatives(*c.law(), c.law_parameter(), us, a.derivatives),
+                                         c.law()->dimension(), a.derivatives);
     print_json(doc);
     return kExitOk;
   }
-  const int dim = file.curve.dimension();
+  const int dim = c.dimension();
   Json results = Json::array();
   for (std::size_t i = 0; i < ts.size(); ++i) {
     Json ders = Json::array();

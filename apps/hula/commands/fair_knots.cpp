@@ -16,8 +16,8 @@
 #include "commands/study_common.hpp"
 #include "hula/diffgeom/fins.hpp"
 #include "hula/io/atomic_file.hpp"
+#include "hula/io/fair_knots_study_file.hpp"
 #include "hula/io/json_curve.hpp"
-#include "hula/studies/fair_knots_study.hpp"
 
 namespace hula::cli {
 
@@ -108,14 +108,14 @@ std::string fmt(double v) {
 }
 
 int run_fair_knots(const StudyArgs& args) {
-  const studies::StudyDocument doc = load_study(args, "fair-knots");
-  const studies::FairKnotsStudy study = studies::fair_knots_study_from_json(doc);
+  const io::StudyDocument doc = load_study(args, "fair-knots");
+  const studies::FairKnotsStudy study = io::fair_knots_study_from_json(doc);
   const studies::KnotFairingSetup& setup = study.setup;
 
   const std::vector<double> chord = studies::chord_length_parameters(setup);
   const studies::ParameterEvaluation before = studies::evaluate_parameters(setup, chord);
   Json out = Json::object();
-  out["study"] = studies::fair_knots_study_to_json(study);
+  out["study"] = io::fair_knots_study_to_json(study);
   out["energy"] = studies::fairing_energy_name(setup.energy);
   out["chord_length"] = evaluation_to_json(before);
   if (study.parameters) out["given"] = evaluation_to_json(studies::evaluate_parameters(setup, *study.parameters));
@@ -214,7 +214,7 @@ int run_fair_knots(const StudyArgs& args) {
         }
         write_svg(dir, "energy_sections", sec_fig);
       }
-      io::write_file_atomically(dir / "energy_map.csv", studies::energy_map_csv(*map));
+      io::write_file_atomically(dir / "energy_map.csv", io::energy_map_csv(*map));
     }
   }
   print_json(out);

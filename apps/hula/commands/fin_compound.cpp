@@ -12,9 +12,9 @@
 #include "commands/editing_common.hpp"
 #include "hula/core/error.hpp"
 #include "hula/diffgeom/combescure.hpp"
+#include "hula/io/editing_study_file.hpp"
 #include "hula/io/json_curve.hpp"
 #include "hula/law/tape.hpp"
-#include "hula/studies/editing_study.hpp"
 
 namespace hula::cli {
 
@@ -59,9 +59,9 @@ double law_deviation(const law::Law& a, const law::Law& b, const std::string& pa
   return d;
 }
 
-int run_projection(const studies::FinCompoundStudy& s, const FinCompoundArgs& a, Json& out) {
+int run_projection(const io::FinCompoundStudy& s, const FinCompoundArgs& a, Json& out) {
   const studies::NormalCompoundOptions& o = s.projection;
-  const nurbs::NurbsCurve& curve = s.curve->curve;
+  const nurbs::NurbsCurve& curve = s.curve->nurbs();
   out["plane"] = std::string(diffgeom::plane_name(o.plane));
   out["scale"] = o.scale;
   const nurbs::NurbsCurve projection = diffgeom::project(curve, o.plane);
@@ -70,7 +70,7 @@ int run_projection(const studies::FinCompoundStudy& s, const FinCompoundArgs& a,
   out["compound"] = fit_json(compound);
   std::optional<studies::CompoundEditResult> edit;
   if (s.compound) {
-    edit = studies::edit_normal_compound(curve, s.compound->curve, o);
+    edit = studies::edit_normal_compound(curve, s.compound->nurbs(), o);
     Json e = Json::object();
     e["planar"] = fit_json(edit->planar);
     e["curve"] = io::curve_to_json(edit->curve);
@@ -108,12 +108,12 @@ int run_projection(const studies::FinCompoundStudy& s, const FinCompoundArgs& a,
     if (edit) {
       base.clear();
       tip.clear();
-      fin_points(edit->planar.curve, s.compound->curve, base, tip);
+      fin_points(edit->planar.curve, s.compound->nurbs(), base, tip);
       io::SvgFigure after = plane_figure("prescribed compound and its curve (after)", o.plane);
       draw_curve(after, projection, o.plane, {.stroke = "#999999", .dash = "6 4"}, "original projection");
       draw_segments(after, base, tip, o.plane, {.stroke = "#bbbbbb", .width = 0.8}, "fins");
       draw_curve(after, edit->planar.curve, o.plane, {.stroke = "#d62728"}, "new projection");
-      draw_curve(after, s.compound->curve, o.plane, {.stroke = "#1f77b4"}, "prescribed compound");
+      draw_curve(after, s.compound->nurbs(), o.plane, {.stroke = "#1f77b4"}, "prescribed compound");
       write_svg(*a.study.svg, "after", after);
       for (diffgeom::Plane other : {diffgeom::Plane::XY, diffgeom::Plane::YZ, diffgeom::Plane::ZX}) {
         if (other == o.plane) continue;
@@ -129,19 +129,20 @@ int run_projection(const studies::FinCompoundStudy& s, const FinCompoundArgs& a,
   return kExitOk;
 }
 
-int run_combescure(const studies::FinCompoundStudy& s, const FinCompoundArgs& a, Json& out) {
+int run_combescure(const io::FinCompoundStudy& s, const FinCompoundArgs& a, Json& out) {
   const studies::CombescureOptions& o = s.combescure;
   out["c"] = o.c;
   const bool forward = s.curve.has_value();
-  const io::CurveFile& input = forward ? *s.curve : *s.compound;
+  const curve::Curve& input = forward ? *s.curve : *s.compound;
   // Law curves are transformed exactly; NURBS curves as laws of "t".
-  const std::string parameter = input.law ? input.law->parameter : std::string("t");
-  const nurbs::Interval domain = input.law ? input.law->domain : input.curve.domain();
-  const law::Law input_law = input.law ? input.law->law : law::from_nurbs(input.curve, law::Context(), "t");
+  const std::string parameter = input.law() ? input.law_parameter() : std::string("t");
+  const Interval domain = input.domain();
+  const law::Law input_law = input.law() ? *input.law() : law::from_nurbs(input.nurbs(), law::Context(), "t");
   const studies::LawCurveFit result =
-      input.law ? (forward ? studies::combescure_compound(input_law, parameter, domain, o)
-                           : studies::combescure_parent(input_law, parameter, domain, o))
-                : (forward ? studies::combescure_compound(input.curve, o) : studies::combescure_parent(input.curve, o));
+      input.law()
+          ? (forward ? studies::combescure_compound(input_law, parameter, domain, o)
+                     : studies::combescure_parent(input_law, parameter, domain, o))
+          : (forward ? studies::combescure_compound(input.nurbs(), o) : studies::combescure_parent(input.nurbs(), o));
   // The check: transforming back (with −C, resp. +C) must give the input.
   const law::Law back = diffgeom::combescure_law(result.law, parameter, forward ? -o.c : o.c);
   Json r = fit_json(result);
@@ -149,8 +150,8 @@ int run_combescure(const studies::FinCompoundStudy& s, const FinCompoundArgs& a,
   out[forward ? "compound" : "parent"] = std::move(r);
   if (!a.output.empty()) io::write_curve_file(a.output, result.curve);
   if (a.study.svg) {
-    const nurbs::NurbsCurve& p = forward ? input.curve : result.curve;
-    const nurbs::NurbsCurve& q = forward ? result.curve : input.curve;
+    const nurbs::NurbsCurve& p = forward ? input.nurbs() : result.curve;
+    const nurbs::NurbsCurve& q = forward ? result.curve : input.nurbs();
     std::vector<Vec3> base, tip;
     fin_points(p, q, base, tip);
     for (diffgeom::Plane plane : {diffgeom::Plane::XY, diffgeom::Plane::ZX}) {
@@ -167,13 +168,13 @@ int run_combescure(const studies::FinCompoundStudy& s, const FinCompoundArgs& a,
 }
 
 int run_fin_compound(const FinCompoundArgs& a) {
-  const studies::StudyDocument doc = load_study(a.study, "fin-compound");
-  const studies::FinCompoundStudy s = studies::read_fin_compound_study(doc);
+  const io::StudyDocument doc = load_study(a.study, "fin-compound");
+  const io::FinCompoundStudy s = io::read_fin_compound_study(doc);
   Json out = Json::object();
   out["study"] = "fin-compound";
-  out["method"] = s.method == studies::FinCompoundMethod::Projection ? "projection" : "combescure";
+  out["method"] = s.method == io::FinCompoundMethod::Projection ? "projection" : "combescure";
   const int code =
-      s.method == studies::FinCompoundMethod::Projection ? run_projection(s, a, out) : run_combescure(s, a, out);
+      s.method == io::FinCompoundMethod::Projection ? run_projection(s, a, out) : run_combescure(s, a, out);
   record_run(out, s.header, a.study);
   print_json(out);
   return code;

@@ -11,8 +11,8 @@
 
 #include "commands/common.hpp"
 #include "commands/editing_common.hpp"
+#include "hula/io/editing_study_file.hpp"
 #include "hula/io/json_curve.hpp"
-#include "hula/studies/editing_study.hpp"
 
 namespace hula::cli {
 
@@ -57,8 +57,8 @@ void draw_handles(io::SvgFigure& f, const studies::HermiteHandles& h, double sca
 }
 
 int run_hermite(const HermiteArgs& a) {
-  const studies::StudyDocument doc = load_study(a.study, "hermite");
-  const studies::HermiteStudy s = studies::read_hermite_study(doc);
+  const io::StudyDocument doc = load_study(a.study, "hermite");
+  const io::HermiteStudy s = io::read_hermite_study(doc);
   const studies::HermiteEditResult r = studies::hermite_edit(s.spline.points, s.edits, s.options);
   const int dim = s.spline.dimension;
   Json out = Json::object();

@@ -10,19 +10,31 @@ namespace hula::cli {
 
 namespace {
 int run_info(const std::string& path) {
-  const io::CurveFile file = io::read_curve_file(path);
+  const curve::Curve c = io::read_curve_file(path);
   Json doc = Json::object();
   doc["file"] = path;
-  doc["kind"] = std::string(io::curve_kind_name(file.kind));
-  const Json analysis = analyse(file.curve);
+  doc["kind"] = std::string(c.kind_name());
+  const Json analysis = analyse(c.nurbs());
   for (const auto& [key, value] : analysis.items()) doc[key] = value;
-  if (file.inputs) doc["inputs"] = io::interpolated_to_json(*file.inputs);
-  if (file.law) {
-    // The analysis above is of the stand-in NURBS; say what it stands for and how closely.
-    Json l = io::law_to_json(*file.law);
-    l.erase("kind");
-    l["approximation_deviation"] = file.law->approximation_deviation;
-    doc["law"] = std::move(l);
+  // The construction data (without the file's format tag) of the kinds that are more than a NURBS.
+  Json data = io::curve_to_json(c);
+  data.erase("format");
+  data.erase("version");
+  switch (c.kind()) {
+    case curve::Kind::Nurbs:
+    case curve::Kind::Bezier:
+      break;
+    case curve::Kind::Interpolated:
+    case curve::Kind::Hermite:
+      doc["inputs"] = std::move(data);
+      break;
+    case curve::Kind::Law:
+    case curve::Kind::Natural:
+      // The analysis above is of the stand-in NURBS; say what it stands for and how closely.
+      data.erase("kind");
+      data["approximation_deviation"] = c.approximation_deviation();
+      doc[c.kind() == curve::Kind::Law ? "law" : "natural"] = std::move(data);
+      break;
   }
   print_json(doc);
   return kExitOk;

@@ -23,16 +23,17 @@ struct InterpolateArgs {
 
 int run_interpolate(const InterpolateArgs& a) {
   io::PointSet set = io::read_points_file(a.points);
-  io::InterpolationInputs in;
+  curve::InterpolatedData in;
   in.points = std::move(set.points);
   in.dimension = set.dimension;
   in.parameterisation = io::parameterisation_from_name(a.parameterisation, "parameterisation");
   if (!a.knots.empty()) in.parameters = parse_number_list(a.knots, "knots");
   in.start = parse_end_condition(a.start, "start");
   in.end = parse_end_condition(a.end, "end");
-  const nurbs::NurbsCurve curve = io::resolve(in, "knots");
+  const curve::Curve resolved = io::interpolated_curve(in, "knots");
+  const nurbs::NurbsCurve& curve = resolved.nurbs();
   if (a.keep_inputs)
-    io::write_interpolated_file(a.output, in);
+    io::write_curve_file(a.output, resolved);
   else
     io::write_curve_file(a.output, curve);
 

@@ -21,6 +21,7 @@
 #include "commands/common.hpp"
 #include "commands/study_common.hpp"
 #include "hula/diffgeom/frenet.hpp"
+#include "hula/io/match_study_file.hpp"
 #include "hula/studies/curvature_torsion_match.hpp"
 #include "hula/studies/match_study.hpp"
 
@@ -157,15 +158,16 @@ void write_figures(const std::filesystem::path& dir, const studies::CurvatureMat
 }
 
 int run_match(const MatchArgs& a) {
-  const studies::StudyDocument doc = load_study(a.study, "match-curvature");
+  const io::StudyDocument doc = load_study(a.study, "match-curvature");
   const std::filesystem::path base = std::filesystem::path(a.study.study).parent_path();
-  studies::MatchStudy study = studies::match_study_from_json(doc, base);
+  io::MatchStudyFile file = io::match_study_from_json(doc, io::relative_to(base));
+  studies::MatchStudy& study = file.study;
   if (a.method) study.method = studies::match_method_from_name(*a.method, "--method");
   const studies::CurvatureMatch match(study.setup);
   const studies::MatchResult result = studies::run_curvature_match(match, study, a.study.log.has_value());
   if (a.study.log) write_run_log(result.log, *a.study.log);
   if (a.study.svg) write_figures(*a.study.svg, match, result);
-  print_json(studies::match_result_to_json(match, study, result));
+  print_json(io::match_result_to_json(match, file, result));
   return kExitOk;
 }
 
@@ -243,15 +245,16 @@ void write_torsion_figures(const std::filesystem::path& dir, const studies::Curv
 }
 
 int run_match_torsion(const StudyArgs& a) {
-  const studies::StudyDocument doc = load_study(a, "match-curvature-torsion");
+  const io::StudyDocument doc = load_study(a, "match-curvature-torsion");
   const std::filesystem::path base = std::filesystem::path(a.study).parent_path();
-  const studies::TorsionMatchStudy study = studies::torsion_match_study_from_json(doc, base);
-  const studies::CurvatureMatch match(study.setup.setup);
+  const io::TorsionMatchStudyFile file = io::torsion_match_study_from_json(doc, io::relative_to(base));
+  const studies::TorsionMatchStudy& study = file.study;
+  const studies::CurvatureMatch match(study.setup);
   const studies::TorsionMatchResult result = studies::run_curvature_torsion_match(
       match, study.settings, study.header.seed, study.header.threads, a.log.has_value());
   if (a.log) write_run_log(result.log, *a.log);
   if (a.svg) write_torsion_figures(*a.svg, match, result);
-  print_json(studies::torsion_match_result_to_json(match, study, result));
+  print_json(io::torsion_match_result_to_json(match, file, result));
   return kExitOk;
 }
 

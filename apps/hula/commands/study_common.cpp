@@ -18,8 +18,8 @@ void add_study_options(CLI::App* sub, StudyArgs& args) {
   sub->add_option("--svg", args.svg, "Write the before/after figures and convergence graphs into this directory");
 }
 
-studies::StudyDocument load_study(const StudyArgs& args, std::string_view kind) {
-  studies::StudyDocument doc = studies::read_study_file(args.study, kind);
+io::StudyDocument load_study(const StudyArgs& args, std::string_view kind) {
+  io::StudyDocument doc = io::read_study_file(args.study, kind);
   if (args.seed) doc.header.seed = *args.seed;
   if (args.threads) doc.header.threads = *args.threads;
   return doc;

@@ -14,9 +14,9 @@
 #include <string_view>
 
 #include "commands/common.hpp"
+#include "hula/io/study_file.hpp"
 #include "hula/io/svg.hpp"
 #include "hula/optim/run_log.hpp"
-#include "hula/studies/study_file.hpp"
 
 namespace hula::cli {
 
@@ -38,8 +38,8 @@ struct StudyArgs {
 void add_study_options(CLI::App* sub, StudyArgs& args);
 
 /// Reads the study file and applies the --seed / --threads overrides.
-/// @throws hula::Error as studies::read_study_file
-[[nodiscard]] studies::StudyDocument load_study(const StudyArgs& args, std::string_view kind);
+/// @throws hula::Error as io::read_study_file
+[[nodiscard]] io::StudyDocument load_study(const StudyArgs& args, std::string_view kind);
 
 /// Writes `figure` as `<dir>/<name>.svg` atomically, creating `dir` first.
 /// @throws hula::Error(Errc::IoError) naming the path if it cannot be written

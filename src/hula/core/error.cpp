@@ -34,6 +34,10 @@ std::string_view errc_name(Errc code) noexcept {
       return "NumericalFailure";
     case Errc::ScaleOutOfRange:
       return "ScaleOutOfRange";
+    case Errc::Unsupported:
+      return "Unsupported";
+    case Errc::HelperFailure:
+      return "HelperFailure";
   }
   return "Unknown";
 }

@@ -31,6 +31,8 @@ enum class Errc : std::uint8_t {
   IoError,           ///< a file cannot be read or written
   NumericalFailure,  ///< the computation overflowed or did not converge
   ScaleOutOfRange,   ///< model coordinates too large or too small to handle
+  Unsupported,       ///< the selected kernel backend has no such operation (where.field names it)
+  HelperFailure,     ///< an isolated helper process (STEP/IGES exchange) crashed, hung or ran out of memory
 };
 
 /// The stable name of a code, e.g. "InvalidKnots".

@@ -174,8 +174,8 @@ std::vector<Feature> curvature_extrema(const nurbs::NurbsCurve& curve, const Fea
   return out;
 }
 
-std::vector<Feature> inflections(const LawFrenet& curve, nurbs::Interval domain, const FeatureOptions& options) {
-  options.validate();
+namespace {
+std::vector<Feature> law_inflections(const LawFrenet& curve, Interval domain, const FeatureOptions& options) {
   std::vector<Feature> out;
   const Eval eval = [&curve](double t) { return curve.at(t); };
   search(
@@ -184,14 +184,27 @@ std::vector<Feature> inflections(const LawFrenet& curve, nurbs::Interval domain,
   return out;
 }
 
-std::vector<Feature> curvature_extrema(const LawFrenet& curve, nurbs::Interval domain, const FeatureOptions& options) {
-  options.validate();
+std::vector<Feature> law_curvature_extrema(const LawFrenet& curve, Interval domain, const FeatureOptions& options) {
   std::vector<Feature> out;
   const Eval eval = [&curve](double t) { return curve.at(t); };
   search(
       eval, [&](double t) { return kappa_prime(eval(t)); }, law_cuts(domain), options.samples_per_span,
       FeatureKind::CurvatureMaximum, FeatureKind::CurvatureMinimum, out);
   return out;
+}
+}  // namespace
+
+std::vector<Feature> inflections(const curve::Curve& curve, const FeatureOptions& options) {
+  options.validate();
+  if (!curve.law()) return inflections(curve.nurbs(), options);
+  return law_inflections(LawFrenet(*curve.law_evaluator(3), curve.domain(), options.frenet), curve.domain(), options);
+}
+
+std::vector<Feature> curvature_extrema(const curve::Curve& curve, const FeatureOptions& options) {
+  options.validate();
+  if (!curve.law()) return curvature_extrema(curve.nurbs(), options);
+  return law_curvature_extrema(LawFrenet(*curve.law_evaluator(3), curve.domain(), options.frenet), curve.domain(),
+                               options);
 }
 
 std::vector<Feature> torsion_extrema(const nurbs::NurbsCurve& curve, const FeatureOptions& options) {
@@ -312,6 +325,12 @@ std::vector<Feature> torsion_extrema(const law::Law& curve, std::string_view par
   const LawFrenet frenet(r, std::string(parameter), domain, options.frenet);
   return law_extrema(laws.torsion, frenet, parameter, domain, roots, FeatureKind::TorsionMaximum,
                      FeatureKind::TorsionMinimum);
+}
+
+std::vector<Feature> torsion_extrema(const curve::Curve& curve, const FeatureOptions& options) {
+  options.validate();
+  if (!curve.law()) return torsion_extrema(curve.nurbs(), options);
+  return torsion_extrema(*curve.law(), curve.law_parameter(), curve.domain(), options);
 }
 
 }  // namespace hula::diffgeom

@@ -60,12 +60,16 @@ struct Feature {
 /// τ only jumps are not reported. Uses unscaled derivatives: meant for curves of ordinary scale.
 /// @throws hula::Error(Errc::InvalidOption) for bad options
 [[nodiscard]] std::vector<Feature> torsion_extrema(const nurbs::NurbsCurve& curve, const FeatureOptions& options = {});
-/// Inflections of a law curve on [domain.start, domain.end].
-[[nodiscard]] std::vector<Feature> inflections(const LawFrenet& curve, nurbs::Interval domain,
-                                               const FeatureOptions& options = {});
-/// Curvature extrema of a law curve on [domain.start, domain.end].
-[[nodiscard]] std::vector<Feature> curvature_extrema(const LawFrenet& curve, nurbs::Interval domain,
-                                                     const FeatureOptions& options = {});
+/// Inflections of a curve value over its domain: sampled as the NURBS form (per knot span of
+/// nurbs(); law curves: per 1/64 of the domain, evaluated exactly from the law).
+/// @throws hula::Error(Errc::InvalidOption) for bad options
+[[nodiscard]] std::vector<Feature> inflections(const curve::Curve& curve, const FeatureOptions& options = {});
+/// Curvature extrema of a curve value in its open domain (sampled as inflections(Curve)).
+/// @throws hula::Error(Errc::InvalidOption) for bad options
+[[nodiscard]] std::vector<Feature> curvature_extrema(const curve::Curve& curve, const FeatureOptions& options = {});
+/// Torsion extrema of a curve value: of its NURBS, or of its exact law (torsion_extrema(law, ...)).
+/// @throws hula::Error(Errc::InvalidOption) for bad options
+[[nodiscard]] std::vector<Feature> torsion_extrema(const curve::Curve& curve, const FeatureOptions& options = {});
 
 /// Inflections of a law curve without sampling the curve: the roots (law::roots) of the exact law
 /// g = (r' × r'') · n, n = FeatureOptions::frenet.plane_normal, kept where g changes sign. 2-vector

@@ -116,11 +116,12 @@ Fins fins(const nurbs::NurbsCurve& curve, const FinOptions& options) {
   return build(pts, options);
 }
 
-Fins fins(const LawFrenet& curve, nurbs::Interval domain, const FinOptions& options) {
+Fins fins(const curve::Curve& curve, const FinOptions& options) {
   options.validate();
-  const std::vector<double> ts = grid(domain, options.density);
+  if (!curve.law()) return fins(curve.nurbs(), options);
+  const std::vector<double> ts = grid(curve.domain(), options.density);
   std::vector<FrenetPoint> pts(ts.size());
-  curve.at(ts, pts);
+  LawFrenet(*curve.law_evaluator(3), curve.domain(), options.frenet).at(ts, pts);
   return build(pts, options);
 }
 

@@ -61,9 +61,9 @@ struct Fins {
 /// The fins of a NURBS curve.
 /// @throws hula::Error(Errc::InvalidOption) for bad options
 [[nodiscard]] Fins fins(const nurbs::NurbsCurve& curve, const FinOptions& options = {});
-/// The fins of a law curve over `domain`.
+/// The fins of a curve value over its domain, exactly from its law when it has one.
 /// @throws hula::Error(Errc::InvalidOption) for bad options
-[[nodiscard]] Fins fins(const LawFrenet& curve, nurbs::Interval domain, const FinOptions& options = {});
+[[nodiscard]] Fins fins(const curve::Curve& curve, const FinOptions& options = {});
 
 /// The fin curve (the comb's envelope) of a law curve as an exact law of `parameter`:
 /// Curvature P − s κN, built as P − s ((r'·r') r'' − (r'·r'') r') / |r'|⁴ so it stays defined through

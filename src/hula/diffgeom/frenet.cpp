@@ -8,6 +8,8 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <string>
+#include <utility>
 
 #include "hula/core/error.hpp"
 
@@ -212,9 +214,16 @@ void curvature_torsion(const nurbs::NurbsCurve& curve, std::span<const double> t
 
 LawFrenet::LawFrenet(const law::Law& curve, const std::string& parameter, nurbs::Interval domain,
                      const FrenetOptions& options)
-    : evaluator_(curve, parameter, 3), options_(options) {
+    : LawFrenet(law::CurveEvaluator(curve, parameter, 3), domain, options) {}
+
+LawFrenet::LawFrenet(law::CurveEvaluator evaluator, Interval domain, const FrenetOptions& options)
+    : evaluator_(std::move(evaluator)), options_(options) {
   options_.validate();
-  if (curve.dimension() < 2)
+  if (evaluator_.order() < 3)
+    throw Error(Errc::InvalidArgument,
+                "the curve law is compiled to order " + std::to_string(evaluator_.order()) + "; Frenet needs 3",
+                {.field = "law"});
+  if (evaluator_.dimension() < 2)
     throw Error(Errc::InvalidArgument, "the curve law must be a 2- or 3-vector, not a scalar", {.field = "law"});
   if (!std::isfinite(domain.start) || !std::isfinite(domain.end) || !(domain.start < domain.end))
     throw Error(Errc::InvalidArgument,
@@ -247,6 +256,23 @@ void LawFrenet::at(std::span<const double> ts, std::span<FrenetPoint> out) const
       out[i0 + i] =
           frenet_from_derivatives(ts[i0 + i], std::span<const Vec3, 4>(d.data() + 4 * i, 4), scale_, options_);
   }
+}
+
+void frenet(const curve::Curve& curve, std::span<const double> ts, std::span<FrenetPoint> out,
+            const FrenetOptions& options) {
+  if (!curve.law()) {
+    frenet(curve.nurbs(), ts, out, options);
+    return;
+  }
+  check_sizes(ts.size(), out.size(), "out");
+  const Interval d = curve.domain();
+  for (std::size_t i = 0; i < ts.size(); ++i)
+    if (!d.contains(ts[i]))
+      throw Error(Errc::OutOfDomain,
+                  "t[" + std::to_string(i) + "] = " + format_number(ts[i]) + " is outside the curve domain [" +
+                      format_number(d.start) + ", " + format_number(d.end) + "]",
+                  {.field = "t", .index = i});
+  LawFrenet(*curve.law_evaluator(3), d, options).at(ts, out);
 }
 
 }  // namespace hula::diffgeom

@@ -21,6 +21,7 @@
 
 #include "hula/core/tolerance.hpp"
 #include "hula/core/vec.hpp"
+#include "hula/curve/curve.hpp"
 #include "hula/law/tape.hpp"
 #include "hula/nurbs/nurbs_curve.hpp"
 
@@ -110,6 +111,13 @@ struct FrenetScale {
 void frenet(const nurbs::NurbsCurve& curve, std::span<const double> ts, std::span<FrenetPoint> out,
             const FrenetOptions& options = {});
 
+/// Frenet frame and curvatures of a curve value at ts[i]: exactly from its law when it has one
+/// (LawFrenet), else from its NURBS.
+/// @throws hula::Error(Errc::OutOfDomain) naming "t" and the index of the first parameter outside
+///   the domain; as the NURBS form otherwise
+void frenet(const curve::Curve& curve, std::span<const double> ts, std::span<FrenetPoint> out,
+            const FrenetOptions& options = {});
+
 /// A law curve prepared for Frenet evaluation: the law with its derivatives to order 3, compiled.
 class LawFrenet {
  public:
@@ -121,6 +129,9 @@ class LawFrenet {
   ///   domain is empty or not finite; hula::Error(Errc::InvalidOption) for bad options
   LawFrenet(const law::Law& curve, const std::string& parameter, nurbs::Interval domain,
             const FrenetOptions& options = {});
+  /// The same from a compiled law (order ≥ 3) of a curve on `domain`.
+  /// @throws as above; hula::Error(Errc::InvalidArgument) naming "law" if the order is below 3
+  LawFrenet(law::CurveEvaluator evaluator, Interval domain, const FrenetOptions& options = {});
   /// The quantities at t (the law is evaluated exactly, also outside the domain).
   [[nodiscard]] FrenetPoint at(double t) const;
   /// Batch form; no allocation. @throws hula::Error(Errc::InvalidArgument) if the sizes differ.

@@ -8,31 +8,17 @@
 
 #include <climits>
 #include <utility>
+#include <variant>
 
 #include "hula/core/error.hpp"
+#include "hula/intrinsic/natural_curve.hpp"
 #include "hula/io/atomic_file.hpp"
 #include "hula/io/json_read.hpp"
-#include "hula/law/convert.hpp"
-#include "hula/law/parser.hpp"
 
 namespace hula::io {
 
 using json::JsonPath;
 using json::root_path;
-
-std::string_view curve_kind_name(CurveKind kind) noexcept {
-  switch (kind) {
-    case CurveKind::Nurbs:
-      return "nurbs";
-    case CurveKind::Bezier:
-      return "bezier";
-    case CurveKind::Interpolated:
-      return "interpolated";
-    case CurveKind::Law:
-      return "law";
-  }
-  return "nurbs";
-}
 
 std::string_view parameterisation_name(nurbs::Parameterisation rule) noexcept {
   switch (rule) {
@@ -67,16 +53,25 @@ nurbs::EndCondition end_condition_from_json(const Json& value, std::string_view 
     if (name == "occt") return {K::Occt, {}};
     throw Error(Errc::ParseError,
                 path.text + " = " + json::describe(value) +
-                    " is not an end condition (expected \"natural\", \"bessel\", \"not-a-knot\", \"occt\" or "
-                    "{\"tangent\": [x, y, z]})",
+                    " is not an end condition (expected \"natural\", \"bessel\", \"not-a-knot\", \"occt\", "
+                    "{\"tangent\": [x, y, z]} or {\"direction\": [x, y, z]})",
                 path.where);
   }
   if (value.is_object()) {
+    if (const Json* direction = json::optional_member(value, "direction")) {
+      const Vec3 d = json::get_point(*direction, path.member("direction")).first;
+      if (!(norm(d) > 0.0))
+        throw Error(Errc::InvalidArgument,
+                    path.member("direction").text + " is a zero vector (a direction needs a length)",
+                    path.member("direction").where);
+      return {K::Direction, d};
+    }
     const Json& tangent = json::require_member(value, path, "tangent");
     return {K::Clamped, json::get_point(tangent, path.member("tangent")).first};
   }
   json::type_error(value, path,
-                   "an end condition (\"natural\", \"bessel\", \"not-a-knot\", \"occt\" or {\"tangent\": [x, y, z]})");
+                   "an end condition (\"natural\", \"bessel\", \"not-a-knot\", \"occt\", {\"tangent\": [x, y, z]} or "
+                   "{\"direction\": [x, y, z]})");
 }
 
 namespace {
@@ -99,7 +94,7 @@ Json numbers_to_json(std::span<const double> values) {
   return a;
 }
 
-CurveFile read_nurbs(const Json& doc) {
+curve::Curve read_nurbs(const Json& doc) {
   const JsonPath root;
   const auto degree =
       json::get_integer(json::require_member(doc, root, "degree"), root_path("degree"), INT_MIN, INT_MAX);
@@ -107,39 +102,33 @@ CurveFile read_nurbs(const Json& doc) {
   json::PointArray cps =
       json::get_points(json::require_member(doc, root, "control_points"), root_path("control_points"));
   std::vector<double> weights;
-  if (const Json* w = json::optional_member(doc, "weights")) weights = json::get_number_array(*w, root_path("weights"));
-  nurbs::NurbsCurve curve(static_cast<int>(degree), std::move(knots), std::move(cps.points), std::move(weights),
-                          cps.dimension);
-  return CurveFile{std::move(curve), CurveKind::Nurbs, std::nullopt, std::nullopt};
+  if (const Json* w = json::optional_member(doc, "weights"); w && !w->is_null())
+    weights = json::get_number_array(*w, root_path("weights"));
+  return nurbs::NurbsCurve(static_cast<int>(degree), std::move(knots), std::move(cps.points), std::move(weights),
+                           cps.dimension);
 }
 
-CurveFile read_bezier(const Json& doc) {
+curve::Curve read_bezier(const Json& doc) {
   const JsonPath root;
   json::PointArray cps =
       json::get_points(json::require_member(doc, root, "control_points"), root_path("control_points"));
-  const std::size_t n = cps.points.size();
-  if (n < 2)
-    throw Error(Errc::TooFewPoints,
-                "control_points has " + std::to_string(n) + " point(s); a Bézier curve needs at least 2",
-                {.field = "control_points"});
-  std::vector<double> weights;
-  if (const Json* w = json::optional_member(doc, "weights")) weights = json::get_number_array(*w, root_path("weights"));
-  // Degree n - 1 on [0, 1]: n zeros followed by n ones (the Bernstein basis).
-  std::vector<double> knots(2 * n, 0.0);
-  for (std::size_t i = n; i < 2 * n; ++i) knots[i] = 1.0;
-  if (n - 1 > static_cast<std::size_t>(nurbs::kMaxDegree))
-    throw Error(Errc::InvalidDegree,
-                "control_points has " + std::to_string(n) + " points: degree " + std::to_string(n - 1) +
-                    " exceeds the largest supported degree " + std::to_string(nurbs::kMaxDegree),
-                {.field = "control_points"});
-  nurbs::NurbsCurve curve(static_cast<int>(n - 1), std::move(knots), std::move(cps.points), std::move(weights),
-                          cps.dimension);
-  return CurveFile{std::move(curve), CurveKind::Bezier, std::nullopt, std::nullopt};
+  curve::BezierData data;
+  data.control_points = std::move(cps.points);
+  data.dimension = cps.dimension;
+  if (const Json* w = json::optional_member(doc, "weights"); w && !w->is_null())
+    data.weights = json::get_number_array(*w, root_path("weights"));
+  return curve::Curve::bezier(std::move(data));
 }
 
-CurveFile read_interpolated(const Json& doc) {
+std::vector<double> optional_parameters(const Json& doc) {
+  if (const Json* p = json::optional_member(doc, "parameters"))
+    return json::get_number_array(*p, root_path("parameters"));
+  return {};
+}
+
+curve::Curve read_interpolated(const Json& doc) {
   const JsonPath root;
-  InterpolationInputs in;
+  curve::InterpolatedData in;
   json::PointArray pts = json::get_points(json::require_member(doc, root, "points"), root_path("points"));
   in.points = std::move(pts.points);
   in.dimension = pts.dimension;
@@ -169,8 +158,72 @@ CurveFile read_interpolated(const Json& doc) {
   in.parameters = from_knots ? std::move(knots) : std::move(parameters);
   if (const Json* s = json::optional_member(doc, "start")) in.start = end_condition_from_json(*s, "start");
   if (const Json* e = json::optional_member(doc, "end")) in.end = end_condition_from_json(*e, "end");
-  nurbs::NurbsCurve curve = resolve(in, from_knots ? "knots" : "parameters");
-  return CurveFile{std::move(curve), CurveKind::Interpolated, std::move(in), std::nullopt};
+  return interpolated_curve(std::move(in), from_knots ? "knots" : "parameters");
+}
+
+curve::Curve read_hermite(const Json& doc) {
+  const JsonPath root;
+  curve::HermiteData h;
+  json::PointArray pts = json::get_points(json::require_member(doc, root, "points"), root_path("points"));
+  h.points = std::move(pts.points);
+  h.dimension = pts.dimension;
+  h.tangents = json::get_points(json::require_member(doc, root, "tangents"), root_path("tangents")).points;
+  if (const Json* d2 = json::optional_member(doc, "second_derivatives"); d2 && !d2->is_null())
+    h.second_derivatives = json::get_points(*d2, root_path("second_derivatives")).points;
+  h.parameters = optional_parameters(doc);
+  return curve::Curve::hermite(std::move(h));
+}
+
+curve::Curve read_law(const Json& doc) {
+  const JsonPath root;
+  std::string expression = json::get_string(json::require_member(doc, root, "expression"), root_path("expression"));
+  std::string parameter = "t";
+  if (const Json* p = json::optional_member(doc, "parameter")) parameter = json::get_string(*p, root_path("parameter"));
+  const std::vector<double> dom =
+      json::get_number_array(json::require_member(doc, root, "domain"), root_path("domain"));
+  if (dom.size() != 2 || !(dom[0] < dom[1]))
+    throw Error(Errc::ParseError, "domain must be [start, end] with start < end, got " + json::describe(doc["domain"]),
+                {.field = "domain"});
+  return curve::Curve::from_law(std::move(expression), std::move(parameter), {dom[0], dom[1]});
+}
+
+curve::Curve read_natural(const Json& doc) {
+  const JsonPath root;
+  curve::NaturalData n;
+  n.curvature = json::get_string(json::require_member(doc, root, "curvature"), root_path("curvature"));
+  if (const Json* t = json::optional_member(doc, "torsion")) n.torsion = json::get_string(*t, root_path("torsion"));
+  if (const Json* p = json::optional_member(doc, "parameter"))
+    n.parameter = json::get_string(*p, root_path("parameter"));
+  n.length = json::get_number(json::require_member(doc, root, "length"), root_path("length"));
+  if (const Json* start = json::optional_member(doc, "start")) {
+    const JsonPath sp = root_path("start");
+    if (!start->is_object()) json::type_error(*start, sp, "an object {\"point\", \"tangent\", \"normal\"}");
+    if (const Json* v = json::optional_member(*start, "point"))
+      n.start_point = json::get_point(*v, sp.member("point")).first;
+    if (const Json* v = json::optional_member(*start, "tangent"))
+      n.start_tangent = json::get_point(*v, sp.member("tangent")).first;
+    if (const Json* v = json::optional_member(*start, "normal"))
+      n.start_normal = json::get_point(*v, sp.member("normal")).first;
+  }
+  return intrinsic::natural_curve(n, curve::kApproximationTolerance);
+}
+
+void check_format(const Json& doc) {
+  if (const Json* f = json::optional_member(doc, "format")) {
+    const std::string name = json::get_string(*f, root_path("format"));
+    if (name != kCurveFormat)
+      throw Error(
+          Errc::ParseError,
+          "format = " + json::describe(*f) + " is not a curve file (expected \"" + std::string(kCurveFormat) + "\")",
+          {.field = "format"});
+  }
+  if (const Json* v = json::optional_member(doc, "version")) {
+    if (!v->is_number_integer() || v->get<long long>() < 1 || v->get<long long>() > kCurveFormatVersion)
+      throw Error(Errc::ParseError,
+                  "version = " + json::describe(*v) + " is not a curve-file version this build reads (1 to " +
+                      std::to_string(kCurveFormatVersion) + ")",
+                  {.field = "version"});
+  }
 }
 
 }  // namespace
@@ -191,23 +244,18 @@ Json end_condition_to_json(const nurbs::EndCondition& end, int dimension) {
       o["tangent"] = point_to_json(end.derivative, dimension == 2 && end.derivative.z == 0.0 ? 2 : 3);
       return o;
     }
+    case K::Direction: {
+      Json o = Json::object();
+      o["direction"] = point_to_json(end.derivative, dimension == 2 && end.derivative.z == 0.0 ? 2 : 3);
+      return o;
+    }
   }
   return "natural";
 }
 
-nurbs::InterpolationOptions InterpolationInputs::options() const {
-  nurbs::InterpolationOptions o;
-  o.parameterisation = parameterisation;
-  o.parameters = parameters;
-  o.start = start;
-  o.end = end;
-  o.dimension = dimension;
-  return o;
-}
-
-nurbs::NurbsCurve resolve(const InterpolationInputs& inputs, std::string_view parameters_field) {
+curve::Curve interpolated_curve(curve::InterpolatedData data, std::string_view parameters_field) {
   try {
-    return nurbs::interpolate_cubic(inputs.points, inputs.options());
+    return curve::Curve::interpolated(std::move(data));
   } catch (const Error& e) {
     if (e.where().field != "parameters" || parameters_field == "parameters") throw;
     // Rename the member in the message and location so it names what the user wrote.
@@ -221,96 +269,82 @@ nurbs::NurbsCurve resolve(const InterpolationInputs& inputs, std::string_view pa
   }
 }
 
-namespace {
-CurveFile read_law(const Json& doc) {
-  const JsonPath root;
-  LawCurve lc;
-  lc.expression = json::get_string(json::require_member(doc, root, "expression"), root_path("expression"));
-  if (const Json* p = json::optional_member(doc, "parameter"))
-    lc.parameter = json::get_string(*p, root_path("parameter"));
-  const std::vector<double> dom =
-      json::get_number_array(json::require_member(doc, root, "domain"), root_path("domain"));
-  if (dom.size() != 2 || !(dom[0] < dom[1]))
-    throw Error(Errc::ParseError, "domain must be [start, end] with start < end, got " + json::describe(doc["domain"]),
-                {.field = "domain"});
-  lc.domain = {dom[0], dom[1]};
-  law::ParseOptions options;
-  options.parameters = {lc.parameter};
-  law::Context ctx;
-  try {
-    options.validate();
-    lc.law = law::parse(lc.expression, ctx, options);
-  } catch (const Error& e) {
-    ErrorWhere where = e.where();
-    where.field = "expression";
-    throw Error(Errc::ParseError, "expression: " + e.message(), where);
-  }
-  if (lc.law.dimension() == 1)
-    throw Error(Errc::ParseError, "expression: a law curve must be a 2- or 3-vector (vec(x, y[, z])), got a scalar",
-                {.field = "expression"});
-  law::ToNurbsOptions to;
-  to.tolerance = kLawCurveTolerance;
-  law::ToNurbsResult approx = [&] {
-    try {
-      return law::to_nurbs(lc.law, lc.parameter, lc.domain.start, lc.domain.end, to);
-    } catch (const Error& e) {
-      // A law undefined inside its own domain is a bad file, not a numerical failure.
-      if (e.code() != Errc::NumericalFailure || e.message().find("undefined") == std::string::npos) throw;
-      throw Error(Errc::InvalidArgument,
-                  "domain: " + e.message() + " (inside the domain [" + format_number(lc.domain.start) + ", " +
-                      format_number(lc.domain.end) + "])",
-                  {.field = "domain"});
-    }
-  }();
-  lc.approximation_deviation = approx.max_deviation;
-  return CurveFile{std::move(approx.curve), CurveKind::Law, std::nullopt, std::move(lc)};
-}
-}  // namespace
-
-Json law_to_json(const LawCurve& curve) {
-  Json doc = Json::object();
-  doc["kind"] = "law";
-  doc["expression"] = curve.expression;
-  doc["parameter"] = curve.parameter;
-  doc["domain"] = Json::array({curve.domain.start, curve.domain.end});
-  return doc;
-}
-
-CurveFile curve_from_json(const Json& document) {
+curve::Curve curve_from_json(const Json& document) {
   if (!document.is_object()) json::type_error(document, JsonPath{}, "a JSON object with a \"kind\" member");
+  check_format(document);
   const std::string kind = json::get_string(json::require_member(document, JsonPath{}, "kind"), root_path("kind"));
   if (kind == "nurbs") return read_nurbs(document);
   if (kind == "bezier") return read_bezier(document);
   if (kind == "interpolated") return read_interpolated(document);
+  if (kind == "hermite") return read_hermite(document);
   if (kind == "law") return read_law(document);
-  throw Error(
-      Errc::ParseError,
-      "kind = \"" + kind + "\" is not a known curve kind (expected \"nurbs\", \"bezier\", \"interpolated\" or \"law\")",
-      {.field = "kind"});
+  if (kind == "natural") return read_natural(document);
+  throw Error(Errc::ParseError,
+              "kind = \"" + kind +
+                  "\" is not a known curve kind (expected \"nurbs\", \"bezier\", \"interpolated\", \"hermite\", "
+                  "\"law\" or \"natural\")",
+              {.field = "kind"});
 }
 
-CurveFile parse_curve_json(std::string_view text) { return curve_from_json(json::parse_json_text(text, "curve file")); }
-
-CurveFile read_curve_file(const std::filesystem::path& path) { return parse_curve_json(read_text_file(path)); }
-
-Json curve_to_json(const nurbs::NurbsCurve& curve) {
-  Json doc = Json::object();
-  doc["kind"] = "nurbs";
-  doc["degree"] = curve.degree();
-  doc["knots"] = numbers_to_json(curve.knots().values());
-  doc["control_points"] = points_to_json(curve.control_points(), curve.dimension());
-  doc["weights"] = curve.is_rational() ? numbers_to_json(curve.weights()) : Json(nullptr);
-  return doc;
+curve::Curve parse_curve_json(std::string_view text) {
+  return curve_from_json(json::parse_json_text(text, "curve file"));
 }
 
-Json interpolated_to_json(const InterpolationInputs& inputs) {
+curve::Curve read_curve_file(const std::filesystem::path& path) { return parse_curve_json(read_text_file(path)); }
+
+namespace {
+struct DataWriter {
+  Json& doc;
+  int dimension;
+  void operator()(const curve::NurbsData& d) const {
+    const nurbs::NurbsCurve& c = d.curve;
+    doc["degree"] = c.degree();
+    doc["knots"] = numbers_to_json(c.knots().values());
+    doc["control_points"] = points_to_json(c.control_points(), c.dimension());
+    doc["weights"] = c.is_rational() ? numbers_to_json(c.weights()) : Json(nullptr);
+  }
+  void operator()(const curve::BezierData& d) const {
+    doc["control_points"] = points_to_json(d.control_points, d.dimension);
+    doc["weights"] = d.weights.empty() ? Json(nullptr) : numbers_to_json(d.weights);
+  }
+  void operator()(const curve::InterpolatedData& d) const {
+    doc["points"] = points_to_json(d.points, d.dimension);
+    doc["parameterisation"] = std::string(parameterisation_name(d.parameterisation));
+    if (!d.parameters.empty()) doc["parameters"] = numbers_to_json(d.parameters);
+    doc["start"] = end_condition_to_json(d.start, d.dimension);
+    doc["end"] = end_condition_to_json(d.end, d.dimension);
+  }
+  void operator()(const curve::HermiteData& d) const {
+    doc["points"] = points_to_json(d.points, d.dimension);
+    doc["tangents"] = points_to_json(d.tangents, d.dimension);
+    if (!d.second_derivatives.empty()) doc["second_derivatives"] = points_to_json(d.second_derivatives, d.dimension);
+    if (!d.parameters.empty()) doc["parameters"] = numbers_to_json(d.parameters);
+  }
+  void operator()(const curve::LawData& d) const {
+    doc["expression"] = d.expression;
+    doc["parameter"] = d.parameter;
+    doc["domain"] = Json::array({d.domain.start, d.domain.end});
+  }
+  void operator()(const curve::NaturalData& d) const {
+    doc["curvature"] = d.curvature;
+    doc["torsion"] = d.torsion;
+    doc["parameter"] = d.parameter;
+    doc["length"] = d.length;
+    Json start = Json::object();
+    start["point"] = point_to_json(d.start_point, 3);
+    start["tangent"] = point_to_json(d.start_tangent, 3);
+    start["normal"] = point_to_json(d.start_normal, 3);
+    doc["start"] = std::move(start);
+  }
+};
+}  // namespace
+
+Json curve_to_json(const curve::Curve& curve) {
   Json doc = Json::object();
-  doc["kind"] = "interpolated";
-  doc["points"] = points_to_json(inputs.points, inputs.dimension);
-  doc["parameterisation"] = std::string(parameterisation_name(inputs.parameterisation));
-  if (!inputs.parameters.empty()) doc["parameters"] = numbers_to_json(inputs.parameters);
-  doc["start"] = end_condition_to_json(inputs.start, inputs.dimension);
-  doc["end"] = end_condition_to_json(inputs.end, inputs.dimension);
+  doc["format"] = std::string(kCurveFormat);
+  doc["version"] = kCurveFormatVersion;
+  doc["kind"] = std::string(curve.kind_name());
+  std::visit(DataWriter{doc, curve.dimension()}, curve.data());
   return doc;
 }
 
@@ -318,12 +352,8 @@ std::string to_file_text(const Json& document) {
   return document.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }
 
-void write_curve_file(const std::filesystem::path& path, const nurbs::NurbsCurve& curve) {
+void write_curve_file(const std::filesystem::path& path, const curve::Curve& curve) {
   write_file_atomically(path, to_file_text(curve_to_json(curve)));
-}
-
-void write_interpolated_file(const std::filesystem::path& path, const InterpolationInputs& inputs) {
-  write_file_atomically(path, to_file_text(interpolated_to_json(inputs)));
 }
 
 }  // namespace hula::io

@@ -12,6 +12,7 @@
 #include <cstring>
 #include <limits>
 #include <unordered_map>
+#include <utility>
 
 #include "hula/core/error.hpp"
 #include "hula/law/detail/graph.hpp"
@@ -350,6 +351,8 @@ Law operator-(const Law& a) {
   const auto& g = graph_of(a, "-");
   if (a.op() == Op::Neg) return a.arg(0);  // −(−x) = x
   if (a.dimension() > 1 && a.is_zero()) return a;
+  // −(c·x) = (−c)·x: exact (negation only flips the sign bit).
+  if (a.op() == Op::Mul && a.arg(0).is_constant()) return constant_in(g, -a.arg(0).node().value) * a.arg(1);
   Law out;
   if (a.dimension() == 1 && fold(g, Op::Neg, a, nullptr, out)) return out;
   return make(g, Op::Neg, a.dimension(), {a.id()});
@@ -361,6 +364,8 @@ Law operator+(const Law& a, const Law& b) {
     fail("'+': cannot add " + dim_name(a.dimension()) + " and " + dim_name(b.dimension()));
   if (a.is_zero()) return b;
   if (b.is_zero()) return a;
+  if (b.op() == Op::Neg) return a - b.arg(0);  // a + (−b) = a − b (exact)
+  if (a == b) return constant_in(g, 2.0) * a;  // x + x = 2·x (exact: doubling does not round)
   Law out;
   if (a.dimension() == 1 && fold(g, Op::Add, a, &b, out)) return out;
   return make(g, Op::Add, a.dimension(), {a.id(), b.id()});
@@ -373,6 +378,7 @@ Law operator-(const Law& a, const Law& b) {
   if (b.is_zero()) return a;
   if (a.is_zero()) return -b;
   if (a == b && a.node().total) return zero_of(g, a.dimension());
+  if (b.op() == Op::Neg) return a + b.arg(0);  // a − (−b) = a + b (exact)
   Law out;
   if (a.dimension() == 1 && fold(g, Op::Sub, a, &b, out)) return out;
   return make(g, Op::Sub, a.dimension(), {a.id(), b.id()});
@@ -392,6 +398,29 @@ Law operator*(const Law& a, const Law& b) {
   if (is_const(b, -1.0)) return -a;
   Law out;
   if (d == 1 && fold(g, Op::Mul, a, &b, out)) return out;
+  // Normal form of products (each step exact or one rounding of a constant, so values stay
+  // within an ulp): signs outside, (−a)·b = −(a·b); constants first, x·c = c·x; constants
+  // collected, c1·(c2·x) = (c1 c2)·x when finite; repeated factors as powers, x·x = x²,
+  // x^m·x^n = x^(m+n) for positive integers m, n (total for finite x, like the product).
+  if (a.op() == Op::Neg) return -(a.arg(0) * b);
+  if (b.op() == Op::Neg) return -(a * b.arg(0));
+  if (b.is_constant() && !a.is_constant()) return b * a;
+  if (a.is_constant() && b.op() == Op::Mul && b.arg(0).is_constant()) {
+    const double k = a.node().value * b.arg(0).node().value;
+    if (std::isfinite(k)) return constant_in(g, k) * b.arg(1);
+  }
+  if (d == 1) {
+    auto power_of = [](const Law& e) -> std::pair<Law, double> {
+      if (e.op() == Op::Pow && e.arg(1).is_constant()) {
+        const double m = e.arg(1).node().value;
+        if (m >= 1.0 && m <= 64.0 && m == std::floor(m)) return {e.arg(0), m};
+      }
+      return {e, 1.0};
+    };
+    const auto [base_a, m] = power_of(a);
+    const auto [base_b, n] = power_of(b);
+    if (base_a == base_b && !base_a.is_constant() && m + n <= 64.0) return pow(base_a, constant_in(g, m + n));
+  }
   return make(g, Op::Mul, d, {a.id(), b.id()});
 }
 

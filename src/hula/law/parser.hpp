@@ -46,6 +46,32 @@ struct ParseOptions {
 
 /// Prints a law in the grammar of parse(): minimal parentheses, constants with 17 significant
 /// digits (so they read back bit-exact), NURBS leaves by their curve names.
+/// @note The text writes a shared subexpression once per use: its length can grow exponentially
+///   with the DAG (high derivatives). Check printed_length() first, or use print_shared().
 [[nodiscard]] std::string print(const Law& expression);
+
+/// The length in characters of print(expression), computed on the DAG (each node once per
+/// parenthesisation level) without building the text; saturates at SIZE_MAX.
+/// Complexity O(DAG size).
+[[nodiscard]] std::size_t printed_length(const Law& expression);
+
+/// A law printed with its shared subexpressions named (the DAG as a list of definitions).
+struct SharedPrint {
+  /// Named subexpression: `name` stands for `expression`, which may use earlier names.
+  struct Definition {
+    std::string name;
+    std::string expression;
+  };
+  /// In dependency order (each uses only names defined before it). Names are _q1, _q2, ….
+  std::vector<Definition> definitions;
+  /// The law, using the names.
+  std::string expression;
+};
+
+/// Prints a law with every subexpression that is used more than once and whose own text
+/// (print() of it) is longer than 24 characters named once: the text is then O(DAG size).
+/// Substituting the definitions back (last first, parenthesised where the grammar needs it)
+/// gives the law.
+[[nodiscard]] SharedPrint print_shared(const Law& expression);
 
 }  // namespace hula::law

@@ -4,9 +4,17 @@
 // is parenthesised when its level is below the level its position requires,
 // which mirrors the parser's grammar exactly (left-associative + − × ÷,
 // right-associative ^ whose base is a primary and whose exponent is a unary).
+//
+// One walker serves three outputs: the text (print), its length without the
+// text (printed_length: memoised per node and required level, so O(DAG) even
+// when the text is exponential), and the text with named shared
+// subexpressions (print_shared: a named node prints as its name, a primary).
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <type_traits>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "hula/law/detail/graph.hpp"
 #include "hula/law/detail/names.hpp"
@@ -44,45 +52,93 @@ int level(const Node& n) {
   }
 }
 
+/// Text output: appends.
+struct TextOut {
+  std::string text;
+  void put(std::string_view s) { text += s; }
+};
+
+/// Length output: counts, saturating.
+struct LengthOut {
+  std::size_t length = 0;
+  void put(std::string_view s) { add(s.size()); }
+  void add(std::size_t n) {
+    length =
+        length > std::numeric_limits<std::size_t>::max() - n ? std::numeric_limits<std::size_t>::max() : length + n;
+  }
+};
+
+template <class Out>
 class Printer {
  public:
-  explicit Printer(const Law& root) : ctx_(root.context()) {}
+  explicit Printer(const Law& root, const std::unordered_map<NodeId, std::string>* names = nullptr)
+      : ctx_(root.context()), names_(names) {}
 
-  void emit(const Law& e, int required, std::string& out) {
-    const Node& n = e.node();
-    const bool paren = level(n) < required;
-    if (paren) out += '(';
-    body(e, n, out);
-    if (paren) out += ')';
+  void emit(const Law& e, int required, Out& out) {
+    if (names_ != nullptr) {
+      if (auto it = names_->find(e.id()); it != names_->end() && e.id() != defining_) {
+        out.put(it->second);
+        return;
+      }
+    }
+    if constexpr (std::is_same_v<Out, LengthOut>) {
+      // Memoised: the length of a node at a required level does not depend on where it sits.
+      const std::uint64_t key = (static_cast<std::uint64_t>(e.id()) << 3) | static_cast<std::uint64_t>(required);
+      if (auto it = memo_.find(key); it != memo_.end()) {
+        out.add(it->second);
+        return;
+      }
+      LengthOut sub;
+      emit_node(e, required, sub);
+      memo_.emplace(key, sub.length);
+      out.add(sub.length);
+    } else {
+      emit_node(e, required, out);
+    }
+  }
+
+  /// The node printed in full even if it is named (the right-hand side of its definition).
+  void define(const Law& e, Out& out) {
+    defining_ = e.id();
+    emit(e, 0, out);
+    defining_ = kNoNode;
   }
 
  private:
-  void call(const char* name, const Law& e, std::size_t arity, std::string& out) {
-    out += name;
-    out += '(';
-    for (std::size_t i = 0; i < arity; ++i) {
-      if (i > 0) out += ", ";
-      emit(e.arg(i), 0, out);
-    }
-    out += ')';
+  void emit_node(const Law& e, int required, Out& out) {
+    const Node& n = e.node();
+    const bool paren = level(n) < required;
+    if (paren) out.put("(");
+    body(e, n, out);
+    if (paren) out.put(")");
   }
 
-  void binary(const Law& e, const char* op, int left, int right, std::string& out) {
+  void call(const char* name, const Law& e, std::size_t arity, Out& out) {
+    out.put(name);
+    out.put("(");
+    for (std::size_t i = 0; i < arity; ++i) {
+      if (i > 0) out.put(", ");
+      emit(e.arg(i), 0, out);
+    }
+    out.put(")");
+  }
+
+  void binary(const Law& e, const char* op, int left, int right, Out& out) {
     emit(e.arg(0), left, out);
-    out += op;
+    out.put(op);
     emit(e.arg(1), right, out);
   }
 
-  void body(const Law& e, const Node& n, std::string& out) {
+  void body(const Law& e, const Node& n, Out& out) {
     switch (n.op) {
       case Op::Constant:
-        out += number(n.value);
+        out.put(number(n.value));
         return;
       case Op::Parameter:
-        out += ctx_.parameter_name(n.index);
+        out.put(ctx_.parameter_name(n.index));
         return;
       case Op::Neg:
-        out += '-';
+        out.put("-");
         emit(e.arg(0), 3, out);
         return;
       case Op::Add:
@@ -107,16 +163,16 @@ class Printer {
         binary(e, " <= ", 1, 1, out);
         return;
       case Op::Term:
-        out += "term(";
+        out.put("term(");
         emit(e.arg(0), 0, out);
-        out += ", " + std::to_string(n.index) + ")";
+        out.put(", " + std::to_string(n.index) + ")");
         return;
       case Op::Curve:
-        out += ctx_.curve_name(n.index);
-        out += '(';
+        out.put(ctx_.curve_name(n.index));
+        out.put("(");
         emit(e.arg(0), 0, out);
-        if (n.order > 0) out += ", " + std::to_string(n.order);
-        out += ')';
+        if (n.order > 0) out.put(", " + std::to_string(n.order));
+        out.put(")");
         return;
       default:
         call(detail::function_name(n.op), e, n.arity, out);
@@ -125,14 +181,68 @@ class Printer {
   }
 
   Context ctx_;
+  const std::unordered_map<NodeId, std::string>* names_;
+  NodeId defining_ = kNoNode;
+  std::unordered_map<std::uint64_t, std::size_t> memo_;
 };
+
+/// Threshold of print_shared: a shared node is named when its own text is longer than this.
+constexpr std::size_t kNameAbove = 24;
 
 }  // namespace
 
 std::string print(const Law& expression) {
-  Printer p(expression);
-  std::string out;
+  Printer<TextOut> p(expression);
+  TextOut out;
   p.emit(expression, 0, out);
+  return std::move(out.text);
+}
+
+std::size_t printed_length(const Law& expression) {
+  Printer<LengthOut> p(expression);
+  LengthOut out;
+  p.emit(expression, 0, out);
+  return out.length;
+}
+
+SharedPrint print_shared(const Law& expression) {
+  // Post-order of the DAG (iterative) and the number of parents of each node.
+  std::vector<Law> order;
+  std::unordered_map<NodeId, std::size_t> uses;
+  std::unordered_set<NodeId> seen;
+  std::vector<std::pair<Law, bool>> stack{{expression, false}};
+  while (!stack.empty()) {
+    auto [e, expanded] = stack.back();
+    stack.pop_back();
+    if (expanded) {
+      order.push_back(e);
+      continue;
+    }
+    if (!seen.insert(e.id()).second) continue;
+    stack.push_back({e, true});
+    for (std::size_t i = 0; i < e.node().arity; ++i) {
+      ++uses[e.node().args[i]];
+      stack.push_back({e.arg(i), false});
+    }
+  }
+  Printer<LengthOut> sizer(expression);
+  std::unordered_map<NodeId, std::string> names;
+  SharedPrint out;
+  Printer<TextOut> printer(expression, &names);
+  for (const Law& e : order) {
+    if (e == expression || uses[e.id()] < 2 || e.node().arity == 0) continue;
+    LengthOut len;
+    sizer.emit(e, 0, len);
+    if (len.length <= kNameAbove) continue;
+    TextOut text;
+    printer.define(e, text);
+    std::string name = "_q" + std::to_string(out.definitions.size() + 1);
+    names.emplace(e.id(), name);
+    out.definitions.push_back({std::move(name), std::move(text.text)});
+  }
+  TextOut text;
+  printer.emit(expression, 0, text);
+  out.expression = std::move(text.text);
   return out;
 }
 

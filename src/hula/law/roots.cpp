@@ -77,8 +77,10 @@ double refine(Derivs& d, int k, double lo, double hi, double flo, double tol) {
 
 void add_root(std::vector<double>& out, double t) { out.push_back(t); }
 
-/// Roots of f^(k) on [a, b] (see roots.hpp).
-std::vector<double> find(Derivs& d, int k, int levels, double a, double b, const RootOptions& o, double scale) {
+/// Roots of f^(k) on [a, b] (see roots.hpp); sign changes that are not roots go to `unresolved`
+/// when it is given (only for the top level: a pole of a derivative is no business of f's roots).
+std::vector<double> find(Derivs& d, int k, int levels, double a, double b, const RootOptions& o, double scale,
+                         std::vector<double>* unresolved = nullptr) {
   // Cuts: a uniform grid (which also isolates undefined regions) refined by the roots of the next
   // derivative, so f^(k) is monotone between consecutive cuts whenever k < levels.
   std::vector<double> cuts{a};
@@ -115,8 +117,24 @@ std::vector<double> find(Derivs& d, int k, int levels, double a, double b, const
     if (i + 1 == cuts.size()) break;
     const double n = cuts[i + 1];
     const double fn = d.value(k, n);
+    // An isolated undefined cut between values of opposite signs (a cut landing exactly on the
+    // pole of 1/(t − 1)) is a sign change without a root.
+    if (unresolved != nullptr && std::isnan(fc) && interior_cut && !std::isnan(fn) && fn != 0.0) {
+      const double fp = d.value(k, cuts[i - 1]);
+      if (!std::isnan(fp) && fp != 0.0 && (fp < 0) != (fn < 0)) unresolved->push_back(c);
+    }
     if (std::isnan(fc) || std::isnan(fn) || fc == 0.0 || fn == 0.0) continue;
-    if ((fc < 0) != (fn < 0)) add_root(out, refine(d, k, c, n, fc, o.tolerance));
+    if ((fc < 0) != (fn < 0)) {
+      const double x = refine(d, k, c, n, fc, o.tolerance);
+      const double fx = std::fabs(d.value(k, x));
+      // A root makes |f| fall: to the value tolerance, or well below both bracket ends. A pole
+      // (|f| grows) or a jump (|f| stays) keeps a sign change without a root. Inner levels keep
+      // every sign change: a jump of f^(k+1) is still a cut that makes f^(k) monotone between cuts.
+      if (unresolved == nullptr || fx <= vt || fx <= 1e-3 * std::min(std::fabs(fc), std::fabs(fn)))
+        add_root(out, x);
+      else
+        unresolved->push_back(x);
+    }
   }
   std::sort(out.begin(), out.end());
   std::vector<double> merged;
@@ -136,11 +154,18 @@ void check_args(const Law& f, double a, double b, const char* what) {
 
 }  // namespace
 
-std::vector<double> roots(const Law& f, std::string_view parameter, double a, double b, const RootOptions& options) {
+RootReport find_roots(const Law& f, std::string_view parameter, double a, double b, const RootOptions& options) {
   options.validate();
   check_args(f, a, b, "roots");
   Derivs d(f, parameter, options.derivative_levels);
-  return find(d, 0, options.derivative_levels, a, b, options, 1.0);
+  RootReport r;
+  r.roots = find(d, 0, options.derivative_levels, a, b, options, 1.0, &r.unresolved);
+  std::sort(r.unresolved.begin(), r.unresolved.end());
+  return r;
+}
+
+std::vector<double> roots(const Law& f, std::string_view parameter, double a, double b, const RootOptions& options) {
+  return find_roots(f, parameter, a, b, options).roots;
 }
 
 ExtremaResult extrema(const Law& f, std::string_view parameter, double a, double b, const RootOptions& options) {

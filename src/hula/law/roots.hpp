@@ -35,11 +35,30 @@ struct RootOptions {
   void validate() const;
 };
 
-/// All roots of the scalar law f(parameter) in [a, b], increasing, without duplicates
-/// (roots closer than tolerance are merged). Points where f is undefined are skipped.
+/// Result of find_roots().
+struct RootReport {
+  /// Converged roots, increasing, without duplicates (roots closer than tolerance are merged).
+  std::vector<double> roots;
+  /// Sign changes that did not converge to a root: the bracket shrank to the tolerance but
+  /// |f| did not vanish there (a pole such as 1/(t − 1), a jump such as sign(t − 1), or an
+  /// undefined point inside the bracket). Increasing. f has no root there.
+  std::vector<double> unresolved;
+  /// True when every sign change converged to a root.
+  [[nodiscard]] bool converged() const { return unresolved.empty(); }
+};
+
+/// All roots of the scalar law f(parameter) in [a, b], with the sign changes that are not roots.
+/// A refined sign change is a root when |f(x)| ≤ value_tolerance × (max |f| sampled) or
+/// |f(x)| ≤ 1e-3 × min(|f|) at the two ends of its bracket (f fell towards zero); otherwise it is
+/// unresolved. Points where f is undefined are skipped.
 /// @throws hula::Error(Errc::InvalidArgument) if f is not a scalar or depends on another parameter,
 ///   or unless a < b, both finite
 /// @throws hula::Error(Errc::InvalidOption) if options are invalid
+[[nodiscard]] RootReport find_roots(const Law& f, std::string_view parameter, double a, double b,
+                                    const RootOptions& options = {});
+
+/// The converged roots of find_roots() (poles and jumps, which are no roots, left out).
+/// @throws as find_roots()
 [[nodiscard]] std::vector<double> roots(const Law& f, std::string_view parameter, double a, double b,
                                         const RootOptions& options = {});
 

@@ -10,6 +10,7 @@
 #include <unordered_set>
 
 #include "hula/core/error.hpp"
+#include "hula/law/derive.hpp"
 #include "hula/law/parser.hpp"
 #include "hula/law/tape.hpp"
 
@@ -249,17 +250,37 @@ const char* undefined_reason(Op op) {
 }
 }  // namespace
 
-std::optional<UndefinedCause> explain_undefined(const Law& f, std::string_view parameter, double t) {
-  if (!f.valid()) throw Error(Errc::InvalidArgument, "explain_undefined: empty law");
-  // Every reachable node in post-order (arguments before the node), all compiled as outputs.
+namespace {
+
+/// Every node reachable from f, arguments before the node, evaluated at t.
+struct AllValues {
   std::vector<Law> order;
+  std::unordered_map<NodeId, std::size_t> offset;  // first component of a node in out
+  std::vector<double> out;
+  [[nodiscard]] bool finite(NodeId id, int dimension) const {
+    const std::size_t k = offset.at(id);
+    for (int c = 0; c < dimension; ++c)
+      if (!std::isfinite(out[k + static_cast<std::size_t>(c)])) return false;
+    return true;
+  }
+  [[nodiscard]] bool defined(NodeId id, int dimension) const {
+    const std::size_t k = offset.at(id);
+    for (int c = 0; c < dimension; ++c)
+      if (std::isnan(out[k + static_cast<std::size_t>(c)])) return false;
+    return true;
+  }
+  [[nodiscard]] double first(NodeId id) const { return out[offset.at(id)]; }
+};
+
+AllValues evaluate_all(const Law& f, std::string_view parameter, double t) {
+  AllValues v;
   std::unordered_set<NodeId> seen;
   std::vector<std::pair<Law, bool>> stack{{f, false}};
   while (!stack.empty()) {
     auto [e, expanded] = stack.back();
     stack.pop_back();
     if (expanded) {
-      order.push_back(e);
+      v.order.push_back(e);
       continue;
     }
     if (!seen.insert(e.id()).second) continue;
@@ -268,43 +289,155 @@ std::optional<UndefinedCause> explain_undefined(const Law& f, std::string_view p
       if (!seen.count(e.node().args[i])) stack.push_back({e.arg(i), false});
   }
   const std::string in[1] = {std::string(parameter)};
-  const Tape tape = Tape::compile(order, in);
-  std::vector<double> out(tape.output_count());
-  if (tape.evaluate(std::span<const double>(&t, 1), out)) return std::nullopt;
-  // Other outputs may be undefined in an unselected piecewise branch: only f itself (the last
-  // node of the post-order) decides.
-  bool f_defined = true;
-  for (std::size_t c = out.size() - static_cast<std::size_t>(f.dimension()); c < out.size(); ++c)
-    f_defined = f_defined && !std::isnan(out[c]);
-  if (f_defined) return std::nullopt;
-  std::unordered_map<NodeId, bool> defined;
+  const Tape tape = Tape::compile(v.order, in);
+  v.out.resize(tape.output_count());
+  (void)tape.evaluate(std::span<const double>(&t, 1), v.out);
   std::size_t k = 0;
-  for (const Law& e : order) {
-    bool ok = true;
-    for (int c = 0; c < e.dimension(); ++c) ok = ok && !std::isnan(out[k++]);
-    defined[e.id()] = ok;
-  }
-  std::unordered_map<NodeId, double> first_value;  // first component, for piecewise conditions
-  k = 0;
-  for (const Law& e : order) {
-    first_value[e.id()] = out[k];
+  for (const Law& e : v.order) {
+    v.offset[e.id()] = k;
     k += static_cast<std::size_t>(e.dimension());
   }
-  // Descend from f through undefined arguments (into the selected branch of a piecewise) to the
-  // innermost node that is undefined although its arguments are defined.
+  return v;
+}
+
+/// Descends from f through arguments failing `bad` (into the selected branch of a piecewise whose
+/// condition is fine) to the innermost failing node whose arguments are all fine.
+template <class Bad>
+Law innermost(const Law& f, const AllValues& v, Bad bad) {
   Law e = f;
   for (;;) {
     const Node n = e.node();
     std::optional<Law> next;
-    if (n.op == Op::Piecewise && defined[n.args[0]]) {
-      next = first_value[n.args[0]] != 0.0 ? e.arg(1) : e.arg(2);
+    if (n.op == Op::Piecewise && !bad(e.arg(0))) {
+      next = v.first(n.args[0]) != 0.0 ? e.arg(1) : e.arg(2);
     } else {
       for (std::size_t i = 0; i < n.arity && !next; ++i)
-        if (!defined[n.args[i]]) next = e.arg(i);
+        if (bad(e.arg(i))) next = e.arg(i);
     }
-    if (!next || defined[next->id()]) return UndefinedCause{short_print(e), undefined_reason(n.op)};
+    if (!next || !bad(*next)) return e;
     e = *next;
   }
+}
+
+}  // namespace
+
+std::optional<UndefinedCause> explain_undefined(const Law& f, std::string_view parameter, double t) {
+  if (!f.valid()) throw Error(Errc::InvalidArgument, "explain_undefined: empty law");
+  const AllValues v = evaluate_all(f, parameter, t);
+  // Other nodes may be undefined in an unselected piecewise branch: only f itself decides.
+  if (v.defined(f.id(), f.dimension())) return std::nullopt;
+  const Law e = innermost(f, v, [&v](const Law& a) { return !v.defined(a.id(), a.dimension()); });
+  return UndefinedCause{short_print(e), undefined_reason(e.node().op)};
+}
+
+std::optional<NonFiniteCause> explain_non_finite(const Law& f, std::string_view parameter, double t) {
+  if (!f.valid()) throw Error(Errc::InvalidArgument, "explain_non_finite: empty law");
+  const AllValues v = evaluate_all(f, parameter, t);
+  if (v.finite(f.id(), f.dimension())) return std::nullopt;
+  const Law e = innermost(f, v, [&v](const Law& a) { return !v.finite(a.id(), a.dimension()); });
+  if (v.defined(e.id(), e.dimension()))
+    return NonFiniteCause{true, short_print(e), "overflow (the value exceeds 1.8e308)"};
+  return NonFiniteCause{false, short_print(e), undefined_reason(e.node().op)};
+}
+
+namespace {
+
+const char* kink_reason(SingularityKind kind) {
+  switch (kind) {
+    case SingularityKind::AbsKink:
+      return "abs has a kink where its argument changes sign";
+    case SingularityKind::SignJump:
+      return "sign jumps where its argument changes sign";
+    case SingularityKind::MinMaxSwitch:
+      return "min/max switches between its arguments (a kink)";
+    case SingularityKind::ComparisonJump:
+      return "a comparison changes value (a jump)";
+    case SingularityKind::PiecewiseSwitch:
+      return "a piecewise law switches branch (a join)";
+    case SingularityKind::NormKink:
+      return "the norm of a vector through zero has a kink";
+    case SingularityKind::CurveKnot:
+      return "a NURBS curve's derivative of this order is not continuous at the knot";
+    default:
+      return "not differentiable";
+  }
+}
+
+bool is_kink(SingularityKind kind) {
+  switch (kind) {
+    case SingularityKind::AbsKink:
+    case SingularityKind::SignJump:
+    case SingularityKind::MinMaxSwitch:
+    case SingularityKind::ComparisonJump:
+    case SingularityKind::PiecewiseSwitch:
+    case SingularityKind::NormKink:
+      return true;
+    default:
+      return false;  // undefined points are NaN and reported as such; knots are filtered below
+  }
+}
+
+/// The kink conditions of every node of e: those of conditions() that break differentiability
+/// without making the value undefined, and NURBS knots where the leaf's order reaches the
+/// curve's continuity (the leaf of order o is differentiable at a knot of multiplicity m when
+/// o < degree − m).
+std::vector<Condition> kink_conditions(const Law& e0) {
+  std::vector<Condition> out;
+  std::unordered_set<NodeId> seen;
+  std::vector<Law> stack{e0};
+  while (!stack.empty()) {
+    const Law e = stack.back();
+    stack.pop_back();
+    if (!seen.insert(e.id()).second) continue;
+    const Node n = e.node();
+    if (n.op == Op::Curve) {
+      Context ctx = e.context();
+      const auto& curve = ctx.curve_at(n.index);
+      const auto bp = curve.knots().breakpoints();
+      for (std::size_t i = 1; i + 1 < bp.size(); ++i) {
+        const int m = static_cast<int>(curve.knots().multiplicity(bp[i]));
+        if (static_cast<int>(n.order) >= curve.degree() - m)
+          out.push_back({e.arg(0) - bp[i], SingularityKind::CurveKnot, e});
+      }
+    } else {
+      std::vector<Condition> all;
+      conditions(e, all);
+      for (auto& c : all)
+        if (is_kink(c.kind)) out.push_back(std::move(c));
+    }
+    for (std::size_t i = 0; i < n.arity; ++i) stack.push_back(e.arg(i));
+  }
+  return out;
+}
+
+}  // namespace
+
+std::optional<NonSmoothPoint> nonsmooth_at(const Law& f, std::string_view parameter, double t, int max_order) {
+  if (!f.valid()) throw Error(Errc::InvalidArgument, "nonsmooth_at: empty law");
+  if (max_order < 0) throw Error(Errc::InvalidArgument, "nonsmooth_at: max_order must be >= 0");
+  if (max_order == 0) return std::nullopt;
+  const std::vector<Law> laws = derivatives(f, parameter, max_order - 1);
+  const std::string in[1] = {std::string(parameter)};
+  const double scale = kKinkTolerance * std::max(1.0, std::fabs(t));
+  for (int k = 0; k < max_order; ++k) {
+    const std::vector<Condition> conds = kink_conditions(laws[static_cast<std::size_t>(k)]);
+    if (conds.empty()) continue;
+    std::vector<Law> outs;  // g, g' per condition
+    for (const Condition& c : conds) {
+      outs.push_back(c.law);
+      outs.push_back(derivative(c.law, parameter, 1));
+    }
+    const Tape tape = Tape::compile(outs, in);
+    std::vector<double> v(tape.output_count());
+    (void)tape.evaluate(std::span<const double>(&t, 1), v);
+    for (std::size_t i = 0; i < conds.size(); ++i) {
+      const double g = v[2 * i];
+      const double dg = v[2 * i + 1];
+      if (g == 0.0 || std::fabs(g) <= scale * std::fabs(dg))
+        return NonSmoothPoint{k + 1, conds[i].kind, short_print(conds[i].source), kink_reason(conds[i].kind)};
+    }
+  }
+  return std::nullopt;
 }
 
 }  // namespace hula::law

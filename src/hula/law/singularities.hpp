@@ -97,4 +97,50 @@ struct UndefinedCause {
 /// @throws hula::Error(Errc::InvalidArgument) if the law uses another parameter
 [[nodiscard]] std::optional<UndefinedCause> explain_undefined(const Law& f, std::string_view parameter, double t);
 
+/// Why a law is not finite at one parameter value: undefined or overflowed.
+struct NonFiniteCause {
+  /// True when a subexpression overflowed (its value is ±inf although its arguments are finite);
+  /// false when one is undefined (NaN, see explain_undefined). An overflow found under an
+  /// undefined result (inf − inf) is reported as the overflow: it is the first thing that failed.
+  bool overflow = false;
+  /// The innermost failing subexpression, printed (truncated to 120 characters).
+  std::string expression;
+  /// "overflow (the value exceeds 1.8e308)" or the reason of explain_undefined.
+  std::string reason;
+};
+
+/// Explains a non-finite value of f at parameter = t: descends from f through non-finite
+/// arguments (the selected branch of a piecewise) to the innermost subexpression that is
+/// non-finite although its arguments are finite.
+/// @returns nullopt when every component of f is finite at t
+/// @throws hula::Error(Errc::InvalidArgument) if the law uses another parameter
+[[nodiscard]] std::optional<NonFiniteCause> explain_non_finite(const Law& f, std::string_view parameter, double t);
+
+/// Relative parametric tolerance of nonsmooth_at(): t is on a kink when one Newton step of the
+/// kink's condition law g from t is at most kKinkTolerance × max(1, |t|) long, i.e.
+/// |g(t)| ≤ kKinkTolerance × max(1, |t|) × |g'(t)| (or g(t) = 0). 1e-14 covers the rounding of
+/// g at a root given in decimal (sin(pi) = 1.2e-16) and no more.
+inline constexpr double kKinkTolerance = 1e-14;
+
+/// Where the derivative of a given order stops existing at one parameter value.
+struct NonSmoothPoint {
+  /// The lowest derivative order that is undefined at t (1 for a kink of f itself).
+  int order = 1;
+  SingularityKind kind = SingularityKind::AbsKink;
+  /// The subexpression of f^(order − 1) responsible, printed (truncated to 120 characters).
+  std::string expression;
+  /// A sentence for people, e.g. "abs(t) has a kink (its argument changes sign)".
+  std::string reason;
+};
+
+/// Whether the derivatives 1 … max_order of f exist at t, judged by the same conditions as
+/// singularities(): f^(k) is reported undefined when f^(k−1) has, at t, a kink or jump of abs,
+/// sign, min/max, a comparison, a piecewise switch, a norm through zero, or a NURBS leaf at a knot
+/// where the leaf's derivative order reaches the curve's continuity there (degree − multiplicity).
+/// Conservative: a piecewise join that happens to be smooth is still a join.
+/// @returns the lowest failing order, or nullopt when every derivative up to max_order is smooth at t
+/// @throws hula::Error(Errc::InvalidArgument) if max_order < 0 or the law uses another parameter
+[[nodiscard]] std::optional<NonSmoothPoint> nonsmooth_at(const Law& f, std::string_view parameter, double t,
+                                                         int max_order);
+
 }  // namespace hula::law

@@ -134,4 +134,46 @@ ApproximationResult approximate(std::span<const Vec3> points, const Approximatio
   return result;
 }
 
+ToleranceFitResult approximate_to_tolerance(std::span<const Vec3> points, double tolerance,
+                                            ApproximationOptions options) {
+  if (!(tolerance > 0.0 && std::isfinite(tolerance)))
+    throw Error(Errc::InvalidArgument, "tolerance = " + format_number(tolerance) + " must be positive and finite",
+                ErrorWhere{.field = "tolerance"});
+  std::size_t fits = 0;
+  auto fit = [&](std::size_t count) {
+    options.control_points = count;
+    ++fits;
+    return approximate(points, options);
+  };
+  const std::size_t lowest = static_cast<std::size_t>(std::max(options.degree, 1)) + 1;
+  // The interpolating count always meets the tolerance (up to rounding, which the caller's
+  // tolerance must exceed): it is the upper end of the search and the fallback answer.
+  std::size_t hi = points.size();
+  ApproximationResult best = fit(hi);
+  if (!(best.max_deviation <= tolerance))
+    throw Error(Errc::NumericalFailure,
+                "tolerance = " + format_number(tolerance) + " is below the interpolation's own rounding (" +
+                    format_number(best.max_deviation) + ")",
+                ErrorWhere{.field = "tolerance"});
+  std::size_t lo = std::min(lowest, hi);  // invariant: counts < lo fail, hi meets
+  while (lo < hi) {
+    const std::size_t mid = lo + (hi - lo) / 2;
+    ApproximationResult r = fit(mid);
+    if (r.max_deviation <= tolerance) {
+      hi = mid;
+      best = std::move(r);
+    } else {
+      lo = mid + 1;
+    }
+  }
+  // Downward steps past a non-monotone dip: stop at the first count that fails.
+  while (hi > lowest) {
+    ApproximationResult r = fit(hi - 1);
+    if (!(r.max_deviation <= tolerance)) break;
+    --hi;
+    best = std::move(r);
+  }
+  return ToleranceFitResult{std::move(best), fits};
+}
+
 }  // namespace hula::nurbs

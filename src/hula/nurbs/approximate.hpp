@@ -53,4 +53,25 @@ struct ApproximationResult {
 /// @throws hula::Error(Errc::TooFewPoints / NonFiniteInput / CoincidentPoints) as parameterise
 [[nodiscard]] ApproximationResult approximate(std::span<const Vec3> points, const ApproximationOptions& options);
 
+/// Result of approximate_to_tolerance().
+struct ToleranceFitResult {
+  /// The fit with the fewest control points found (its max_deviation ≤ tolerance).
+  ApproximationResult fit;
+  /// Number of least-squares fits the search ran.
+  std::size_t fits = 0;
+};
+
+/// Least-squares fit with the fewest control points whose max_deviation (at the data points)
+/// meets `tolerance`. Search: n + 1 = N control points interpolates (deviation at rounding
+/// level), so the answer exists; a binary search over [degree + 1, N] finds the smallest count
+/// that meets the tolerance assuming the deviation does not grow with the count, then counts
+/// below it are tried one by one for as long as a smaller one still meets the tolerance (the
+/// deviation of averaged-knot fits is not strictly monotone). `options.control_points` is ignored.
+/// @param tolerance > 0, model units
+/// @throws hula::Error(Errc::InvalidArgument) if tolerance is not positive and finite
+/// @throws as approximate()
+/// Complexity O(log N) fits plus the downward steps, each O(N p²).
+[[nodiscard]] ToleranceFitResult approximate_to_tolerance(std::span<const Vec3> points, double tolerance,
+                                                          ApproximationOptions options = {});
+
 }  // namespace hula::nurbs

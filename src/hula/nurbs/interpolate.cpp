@@ -199,6 +199,14 @@ EndRow resolve_end(const EndCondition& ec, bool at_start, bool both_not_a_knot, 
       return lagrange_end(2);
     case EndCondition::Kind::Occt:
       return lagrange_end(3);
+    case EndCondition::Kind::Direction: {
+      double m = norm(lagrange_end(2).derivative);
+      if (!(m > 0.0)) {
+        const std::size_t i = at_start ? 0 : N - 2;
+        m = distance(q[i], q[i + 1]) / (t[i + 1] - t[i]);
+      }
+      return {EndRow::Kind::FirstDerivative, (m / norm(ec.derivative)) * ec.derivative};
+    }
     case EndCondition::Kind::NotAKnot:
       if (N == 2 || (N == 3 && both_not_a_knot)) return lagrange_end(2);
       return {EndRow::Kind::ThirdDerivativeJump, {}};
@@ -313,17 +321,22 @@ void InterpolationOptions::validate() const {
   const std::array<std::pair<const EndCondition*, const char*>, 2> ends{{{&start, "start"}, {&end, "end"}}};
   for (const auto& [ec, name] : ends) {
     const auto k = static_cast<int>(ec->kind);
-    if (k < 0 || k > static_cast<int>(EndCondition::Kind::Occt))
+    if (k < 0 || k > static_cast<int>(EndCondition::Kind::Direction))
       throw Error(Errc::InvalidOption,
                   std::string(name) + ".kind = " + std::to_string(k) + " is not an EndCondition::Kind value",
                   {.field = std::string(name) + ".kind"});
-    if (ec->kind != EndCondition::Kind::Clamped) continue;
+    if (ec->kind != EndCondition::Kind::Clamped && ec->kind != EndCondition::Kind::Direction) continue;
     for (std::size_t c = 0; c < 3; ++c)
       if (!std::isfinite(ec->derivative[c]))
         throw Error(Errc::InvalidOption,
                     std::string(name) + ".derivative[" + std::to_string(c) + "] = " + format_number(ec->derivative[c]) +
                         " is not finite",
                     {.field = std::string(name) + ".derivative", .component = c});
+    // A direction is scaled by 1/|d|: it must have a length (and one that does not overflow).
+    if (ec->kind == EndCondition::Kind::Direction &&
+        !(norm(ec->derivative) > 0.0 && std::isfinite(norm(ec->derivative))))
+      throw Error(Errc::InvalidOption, std::string(name) + ".derivative is a zero direction (it needs a length)",
+                  {.field = std::string(name) + ".derivative"});
     if (dimension == 2 && ec->derivative.z != 0.0)
       throw Error(Errc::InvalidOption,
                   std::string(name) + ".derivative has z = " + format_number(ec->derivative.z) +

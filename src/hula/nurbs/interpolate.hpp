@@ -34,6 +34,12 @@ struct EndCondition {
     Bessel,    ///< C'(end) from the quadratic through the 3 end points at their parameters
     NotAKnot,  ///< C''' continuous at the second (last but one) data parameter
     Occt,      ///< C'(end) from the cubic through the 4 end points (Open CASCADE GeomAPI_Interpolate)
+    /// C'(end) along `derivative` (a direction: only its sense counts) with the magnitude the
+    /// Bessel end would have, |B| for B = the derivative of the quadratic through the 3 end points
+    /// at their parameters (thesis 10.2.1's "tangent direction" end; the study files' use). When
+    /// B vanishes (the end points fold back on themselves) the magnitude is the end chord's
+    /// speed |Q1 − Q0| / (t1 − t0) (|Q_{N−1} − Q_{N−2}| / (t_{N−1} − t_{N−2}) at the end).
+    Direction,
   };
   // Small N (documented fallbacks, never an error): Bessel uses the Lagrange
   // polynomial of degree min(2, N - 1) through the end points and Occt of
@@ -44,7 +50,8 @@ struct EndCondition {
   // Bessel; with N = 3 at both ends (one interior knot for two conditions)
   // both ends fall back to Bessel, which gives the parabola.
   Kind kind = Kind::Natural;
-  /// dC/dt at the end for Kind::Clamped; ignored otherwise.
+  /// dC/dt at the end for Kind::Clamped; the direction (any non-zero length) for Kind::Direction;
+  /// ignored otherwise.
   Vec3 derivative{};
 
   [[nodiscard]] static EndCondition natural() { return {Kind::Natural, {}}; }
@@ -52,6 +59,7 @@ struct EndCondition {
   [[nodiscard]] static EndCondition bessel() { return {Kind::Bessel, {}}; }
   [[nodiscard]] static EndCondition not_a_knot() { return {Kind::NotAKnot, {}}; }
   [[nodiscard]] static EndCondition occt() { return {Kind::Occt, {}}; }
+  [[nodiscard]] static EndCondition direction(const Vec3& d) { return {Kind::Direction, d}; }
 };
 
 /// Options of interpolate_cubic.
@@ -74,8 +82,8 @@ struct InterpolationOptions {
   /// Checks the options before any work.
   /// @throws hula::Error(Errc::InvalidOption) naming the bad field
   /// (non-finite clamped derivative, e.g. "start.derivative[1] = nan"; a clamped
-  /// derivative with z ≠ 0 when dimension = 2; dimension not 2/3; an unknown
-  /// enum value; bad tolerance).
+  /// derivative with z ≠ 0 when dimension = 2; a zero direction; dimension not 2/3;
+  /// an unknown enum value; bad tolerance).
   void validate() const;
 };
 

@@ -12,6 +12,8 @@
 #include <span>
 #include <vector>
 
+#include "hula/core/interval.hpp"
+
 namespace hula::nurbs {
 
 /// Which one-sided limit to take at a knot where the curve may be discontinuous.
@@ -20,13 +22,8 @@ enum class Side {
   Left,   ///< limit from below (t → u⁻); at the domain start, the only side there is
 };
 
-/// Parameter interval [start, end].
-struct Interval {
-  double start = 0.0;
-  double end = 1.0;
-  [[nodiscard]] double length() const { return end - start; }
-  [[nodiscard]] bool contains(double t) const { return t >= start && t <= end; }
-};
+/// The parameter interval of core (hula::Interval), also reachable by its former name.
+using hula::Interval;
 
 /// Largest degree accepted by the kernel. Higher degrees lose accuracy in
 /// double precision long before they become useful in design.

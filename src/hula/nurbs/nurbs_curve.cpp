@@ -31,7 +31,18 @@ struct SpanCache {
   // True when no derivative of a non-rational curve can overflow inside the
   // domain (bounded at build time), so the evaluators skip the finiteness probe.
   bool derivatives_bounded = false;
+  // Exact ends (issue 10, item 9): at a breakpoint of multiplicity ≥ p (the clamped ends, C0
+  // joins) one basis function is 1 and the curve passes through a control point. exact[b] = 1
+  // marks breaks[b] as such a point and exact_point[b] holds that control point, returned as is
+  // instead of the rounded sum of the span polynomial.
+  std::vector<std::uint8_t> exact;
+  std::vector<Vec3> exact_point;
 };
+
+// Replaces a position computed at breakpoint b by its exact control point, when it has one.
+inline void snap_exact(const SpanCache& c, std::size_t b, Vec3& position) {
+  if (c.exact[b] != 0) position = c.exact_point[b];
+}
 
 std::string where_t(const char* name, double t) { return std::string(name) + " = " + format_number(t); }
 
@@ -57,6 +68,12 @@ struct NurbsCurve::Data {
   }
   void build_cache() const;
   void eval_direct(double t, int order, Side side, Vec3* out, BasisWorkspace& work) const;
+  // snap_exact for the direct path (binary search over the breakpoints).
+  void snap_direct(double u, Vec3& position) const {
+    const auto& b = cache.breaks;
+    const auto it = std::lower_bound(b.begin(), b.end(), u);
+    if (it != b.end() && *it == u) snap_exact(cache, static_cast<std::size_t>(it - b.begin()), position);
+  }
 };
 
 namespace {
@@ -249,6 +266,8 @@ void eval_batch(const SpanCache& c, std::span<const double> ts, int order, Vec3*
     const double x = (u - c.mid[s]) * c.inv_half[s];
     Vec3* o = out + i * stride;
     eval_span<P, R>(c.coef.data() + s * block, x, c.inv_half[s], order, o);
+    if (u == c.breaks[s]) snap_exact(c, s, o[0]);
+    if (u == c.breaks[s + 1]) snap_exact(c, s + 1, o[0]);
     if (check)
       for (std::size_t k = 0; k < stride; ++k) probe += (o[k].x - o[k].x) + (o[k].y - o[k].y) + (o[k].z - o[k].z);
   }
@@ -290,6 +309,19 @@ void NurbsCurve::Data::build_cache() const {
   const std::size_t S = cache.breaks.size() - 1;
   cache.mid.resize(S);
   cache.inv_half.resize(S);
+  cache.exact.assign(S + 1, 0);
+  cache.exact_point.assign(S + 1, Vec3{});
+  for (std::size_t b = 0; b <= S; ++b) {
+    // The run U[k] = … = U[k+m−1] = breaks[b]; with m ≥ p the curve there is P[k−1] (P[0] for a
+    // clamped start, k = 0 with m = p + 1; P[n] for a clamped end, k = n + 1).
+    const double u = cache.breaks[b];
+    const auto first = std::lower_bound(U.begin(), U.end(), u);
+    const auto k = static_cast<std::size_t>(first - U.begin());
+    const auto m = static_cast<std::size_t>(std::upper_bound(first, U.end(), u) - first);
+    if (m < P) continue;
+    cache.exact[b] = 1;
+    cache.exact_point[b] = points[k == 0 ? 0 : k - 1];
+  }
   if (p > kCachedDegreeLimit) return;  // direct evaluation only
   cache.coef.assign(S * (P + 1) * 4, 0.0);
   BasisWorkspace work;
@@ -446,6 +478,7 @@ void NurbsCurve::derivatives(double t, int order, std::span<Vec3> out, const Eva
     const double u = resolve_parameter(t, domain(), options.domain, "t", 0, false);
     BasisWorkspace& work = direct_workspace();
     d.eval_direct(u, order, options.side, out.data(), work);
+    d.snap_direct(u, out[0]);
   } else {
     kernel_for(p, d.rational())(c, std::span<const double>(&t, 1), order, out.data(), domain(), options, false);
     return;
@@ -478,6 +511,7 @@ void NurbsCurve::derivatives(std::span<const double> ts, int order, std::span<Ve
     for (std::size_t i = 0; i < ts.size(); ++i) {
       const double u = resolve_parameter(ts[i], dom, options.domain, "t", i, true);
       d.eval_direct(u, order, options.side, out.data() + i * stride, work);
+      d.snap_direct(u, out[i * stride]);
     }
   } else {
     kernel_for(p, d.rational())(c, ts, order, out.data(), dom, options, true);

@@ -7,7 +7,6 @@
 #include <limits>
 
 #include "hula/core/error.hpp"
-#include "hula/io/json_curve.hpp"
 #include "hula/optim/pareto.hpp"
 
 namespace hula::studies {
@@ -155,121 +154,6 @@ TorsionMatchResult run_curvature_torsion_match(const CurvatureMatch& match, cons
     if (worst(result.front[i]) < worst(result.front[result.compromise])) result.compromise = i;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
   return result;
-}
-
-namespace {
-
-namespace jr = io::json;
-
-Json points_of(const CurvatureMatch& match, std::span<const double> x) {
-  std::vector<Vec3> pts(match.setup().points.size());
-  match.points_from(x, pts);
-  Json a = Json::array();
-  for (const Vec3& p : pts) a.push_back(Json::array({p.x, p.y, p.z}));
-  return a;
-}
-
-Json number_or_null(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
-
-}  // namespace
-
-TorsionMatchStudy torsion_match_study_from_json(const StudyDocument& document, const std::filesystem::path& base) {
-  const Json& body = document.body;
-  check_members(body, {"points", "lower", "upper", "start_tangent", "end_tangent", "target", "torsion_target",
-                       "abscissa", "samples", "nsga2", "polish", "torsion_weight", "lm"});
-  TorsionMatchStudy study;
-  study.header = document.header;
-  TorsionMatchSettings& t = study.settings;
-  if (const Json* g = jr::optional_member(body, "nsga2")) {
-    const jr::JsonPath path = jr::root_path("nsga2");
-    jr::reject_unknown_members(*g, path,
-                               {"population", "generations", "crossover_probability", "crossover_eta", "mutation_eta",
-                                "mutation_probability"});
-    if (const Json* v = jr::optional_member(*g, "population"))
-      t.population = static_cast<std::size_t>(jr::get_integer(*v, path.member("population"), 0, 100000));
-    if (const Json* v = jr::optional_member(*g, "generations"))
-      t.generations = static_cast<std::size_t>(jr::get_integer(*v, path.member("generations"), 0, 1000000));
-    if (const Json* v = jr::optional_member(*g, "crossover_probability"))
-      t.crossover_probability = jr::get_number(*v, path.member("crossover_probability"));
-    if (const Json* v = jr::optional_member(*g, "crossover_eta"))
-      t.crossover_eta = jr::get_number(*v, path.member("crossover_eta"));
-    if (const Json* v = jr::optional_member(*g, "mutation_eta"))
-      t.mutation_eta = jr::get_number(*v, path.member("mutation_eta"));
-    if (const Json* v = jr::optional_member(*g, "mutation_probability"))
-      t.mutation_probability = jr::get_number(*v, path.member("mutation_probability"));
-  }
-  if (const Json* v = jr::optional_member(body, "polish")) {
-    if (!v->is_boolean()) jr::type_error(*v, jr::root_path("polish"), "true or false");
-    t.polish = v->get<bool>();
-  }
-  if (const Json* v = jr::optional_member(body, "torsion_weight"))
-    t.torsion_weight = jr::get_number(*v, jr::root_path("torsion_weight"));
-  if (const Json* v = jr::optional_member(body, "lm")) t.lm = lm_options_from_json(*v, jr::root_path("lm"));
-  t.validate();
-  study.setup = match_setup_from_json(body, base, true);
-  return study;
-}
-
-Json torsion_match_study_to_json(const TorsionMatchStudy& study) {
-  Json out = header_to_json(study.header);
-  match_setup_to_json(study.setup, out);
-  const TorsionMatchSettings& t = study.settings;
-  Json g = Json::object();
-  g["population"] = t.population;
-  g["generations"] = t.generations;
-  g["crossover_probability"] = t.crossover_probability;
-  g["crossover_eta"] = t.crossover_eta;
-  g["mutation_eta"] = t.mutation_eta;
-  if (t.mutation_probability) g["mutation_probability"] = *t.mutation_probability;
-  out["nsga2"] = g;
-  out["polish"] = t.polish;
-  out["torsion_weight"] = t.torsion_weight;
-  out["lm"] = lm_options_to_json(t.lm);
-  return out;
-}
-
-Json torsion_match_result_to_json(const CurvatureMatch& match, const TorsionMatchStudy& study,
-                                  const TorsionMatchResult& result) {
-  Json out = Json::object();
-  out["variables"] = Json::array();
-  for (const auto& v : match.variables()) out["variables"].push_back(v.name);
-  out["start"] = {{"curvature", number_or_null(result.start_curvature)},
-                  {"torsion", number_or_null(result.start_torsion)},
-                  {"points", points_of(match, match.start_variables())}};
-  const auto members = [&](const std::vector<TorsionFrontMember>& set) {
-    Json front = Json::array();
-    for (const TorsionFrontMember& m : set)
-      front.push_back({{"curvature", m.curvature},
-                       {"torsion", m.torsion},
-                       {"polished", m.polished},
-                       {"points", points_of(match, m.variables)}});
-    return front;
-  };
-  out["front"] = members(result.front);
-  out["nsga2_front"] = members(result.nsga2_front);
-  if (!result.front.empty()) {
-    const TorsionFrontMember& best = result.front[result.compromise];
-    std::vector<Vec3> pts(match.setup().points.size());
-    match.points_from(best.variables, pts);
-    out["compromise"] = {{"index", result.compromise},
-                         {"curvature", best.curvature},
-                         {"torsion", best.torsion},
-                         {"curve", io::curve_to_json(match.sampler().curve(pts))}};
-  }
-  out["nsga2"] = {{"generations", result.report.generations},
-                  {"evaluations", result.report.evaluations},
-                  {"failed_evaluations", result.report.failed_evaluations},
-                  {"termination", std::string(optim::termination_name(result.report.termination))},
-                  {"seconds", result.report.seconds}};
-  if (result.lm)
-    out["polish"] = {{"iterations", result.lm->iterations},
-                     {"evaluations", result.lm->evaluations},
-                     {"termination", result.lm->termination},
-                     {"seconds", result.lm->seconds}};
-  out["evaluations"] = result.report.evaluations + (result.lm ? result.lm->evaluations : 0);
-  out["seconds"] = result.seconds;
-  out["study"] = torsion_match_study_to_json(study);
-  return out;
 }
 
 }  // namespace hula::studies

@@ -26,7 +26,7 @@
 #include "hula/studies/curvature_match.hpp"
 #include "hula/studies/hybrid_refine.hpp"
 #include "hula/studies/match_study.hpp"
-#include "hula/studies/study_file.hpp"
+#include "hula/studies/study.hpp"
 
 namespace hula::studies {
 
@@ -108,22 +108,9 @@ struct TorsionMatchStudy {
   /// Envelope: seed and threads.
   StudyHeader header{};
   /// Points, bounds, tangents, both targets, samples (3-D only).
-  MatchSetupJson setup{};
+  CurvatureMatchSetup setup{};
   /// NSGA-II and polish settings.
   TorsionMatchSettings settings{};
 };
-
-/// Reads a "match-curvature-torsion" study; everything is checked before any run.
-/// @param document the parsed study file; @param base directory of the study file (relative CSV paths)
-/// @throws hula::Error as match_setup_from_json (with torsion) and Errc::ParseError / InvalidOption naming
-///   `nsga2.<field>`, `polish`, `torsion_weight` or `lm.<field>`
-[[nodiscard]] TorsionMatchStudy torsion_match_study_from_json(const StudyDocument& document,
-                                                              const std::filesystem::path& base);
-/// The resolved study as a study file (seed included).
-[[nodiscard]] Json torsion_match_study_to_json(const TorsionMatchStudy& study);
-/// The run's report: both start errors, the Pareto set (points and both errors of every curve, the best
-/// compromise marked, its curve as io curve JSON), NSGA-II and polish reports, and the resolved study.
-[[nodiscard]] Json torsion_match_result_to_json(const CurvatureMatch& match, const TorsionMatchStudy& study,
-                                                const TorsionMatchResult& result);
 
 }  // namespace hula::studies

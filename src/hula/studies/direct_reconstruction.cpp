@@ -546,33 +546,4 @@ DirectReconstructionResult reconstruct_direct(const DirectReconstructionProblem&
   return result;
 }
 
-io::json::Json direct_reconstruction_summary(const DirectReconstructionResult& r) {
-  io::json::Json j;
-  j["planar"] = r.planar;
-  j["length"] = r.length;
-  j["end_point_error"] = r.end_point_error;
-  j["end_tangent_error"] = r.end_tangent_error;
-  j["mean_curvature_deviation"] = r.mean_curvature_deviation;
-  j["max_curvature_deviation"] = r.max_curvature_deviation;
-  if (!r.planar) {
-    j["mean_torsion_deviation"] = r.mean_torsion_deviation;
-    j["max_torsion_deviation"] = r.max_torsion_deviation;
-  }
-  j["iterations"] = r.iterations;
-  j["reconstructions"] = r.reconstructions;
-  j["seconds"] = r.seconds;
-  j["curvature_correction"] = r.curvature_correction;
-  if (!r.torsion_correction.empty()) j["torsion_correction"] = r.torsion_correction;
-  if (r.nurbs) {
-    io::json::Json n;
-    n["degree"] = r.nurbs->curve.degree();
-    n["control_points"] = r.nurbs->curve.control_points().size();
-    n["segments"] = r.nurbs->segments;
-    n["max_deviation"] = r.nurbs->max_deviation;
-    n["converged"] = r.nurbs->converged;
-    j["nurbs"] = n;
-  }
-  return j;
-}
-
 }  // namespace hula::studies

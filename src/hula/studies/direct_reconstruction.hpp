@@ -51,7 +51,6 @@
 
 #include "hula/core/vec.hpp"
 #include "hula/intrinsic/natural_equations.hpp"
-#include "hula/io/json_read.hpp"
 #include "hula/law/expr.hpp"
 #include "hula/studies/profile.hpp"
 
@@ -182,10 +181,5 @@ struct DirectReconstructionResult {
 /// Complexity: per iteration one reconstruction plus O(nodes × 8 × unknowns) for the Jacobian.
 [[nodiscard]] DirectReconstructionResult reconstruct_direct(const DirectReconstructionProblem& problem,
                                                             const DirectReconstructionOptions& options = {});
-
-/// A JSON summary of a result for the CLI and study logs: planar, length, end errors, profile
-/// deviations, iterations, reconstructions, seconds, the correction coefficients, and the NURBS
-/// (degree, control point count, max_deviation, converged) when fitted.
-[[nodiscard]] io::json::Json direct_reconstruction_summary(const DirectReconstructionResult& result);
 
 }  // namespace hula::studies

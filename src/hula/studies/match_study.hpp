@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The "match-curvature" study (thesis 8.2.1, appendix 5; issue 6 items 2-3):
-// settings of the GA and hybrid routes, the run, and the study file kind
-// "match-curvature" (docs/formats.md) read and written as JSON.
+// settings of the GA, hybrid and direct routes and the run. The study file kind
+// "match-curvature" (docs/formats.md) is read and written by io/match_study_file.hpp.
 //
 // Methods: "ga" runs Flexo's binary GA (thesis: roulette, single-point
 // crossover, power boost 3 -> 5, appendix 5) or the real-coded GA; "hybrid"
@@ -11,7 +11,6 @@
 #pragma once
 
 #include <cstddef>
-#include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -22,7 +21,7 @@
 #include "hula/studies/curvature_match.hpp"
 #include "hula/studies/direct_reconstruction.hpp"
 #include "hula/studies/hybrid_refine.hpp"
-#include "hula/studies/study_file.hpp"
+#include "hula/studies/study.hpp"
 
 namespace hula::studies {
 
@@ -101,8 +100,6 @@ struct MatchStudy {
   LmOptions lm{};
   /// Direct-method settings.
   MatchDirectSettings direct{};
-  /// The target member as written in the file (echoed in the resolved setup).
-  Json target_json{};
 };
 
 /// Outcome of a run.
@@ -135,42 +132,5 @@ struct MatchResult {
 /// @throws hula::Error(Errc::NumericalFailure) if no candidate could be evaluated
 [[nodiscard]] MatchResult run_curvature_match(const CurvatureMatch& match, const MatchStudy& study,
                                               bool keep_log = false);
-
-/// The members of a curvature-matching setup, shared by the "match-curvature" and
-/// "match-curvature-torsion" study kinds, with the targets as written (echoed in the resolved setup).
-struct MatchSetupJson {
-  CurvatureMatchSetup setup{};
-  Json target{};
-  Json torsion_target{};
-};
-/// Reads points, lower, upper, start_tangent, end_tangent, samples, abscissa, target and (with_torsion)
-/// torsion_target; the caller checks the members. Bounds are checked before any target is evaluated.
-/// @throws hula::Error as match_study_from_json; with_torsion also refuses planar points and a known-curve
-///   torsion target whose torsion is undefined at a sample (Errc::OutOfDomain)
-[[nodiscard]] MatchSetupJson match_setup_from_json(const Json& body, const std::filesystem::path& base,
-                                                   bool with_torsion);
-/// Writes the setup's members into `out` (a study document).
-void match_setup_to_json(const MatchSetupJson& setup, Json& out);
-/// Reads the "lm" settings object.
-/// @throws hula::Error(Errc::ParseError / InvalidOption) naming `lm.<field>`
-[[nodiscard]] LmOptions lm_options_from_json(const Json& value, const io::json::JsonPath& path);
-/// The "lm" settings object.
-[[nodiscard]] Json lm_options_to_json(const LmOptions& options);
-/// Reads a "match-curvature" study (docs/formats.md). Everything is checked before any run.
-/// @param document the parsed study file (parse_study_json with kind "match-curvature")
-/// @param base directory of the study file (relative CSV paths)
-/// @throws hula::Error(Errc::ParseError) naming the member for unknown members, wrong types and names
-/// @throws hula::Error(Errc::NonFiniteInput / InvalidArgument / TooFewPoints) as CurvatureMatchSetup::validate
-///   and for a target that is not finite at a sample
-/// @throws hula::Error(Errc::InvalidOption) naming `ga.<field>` or `lm.<field>` for settings out of range
-[[nodiscard]] MatchStudy match_study_from_json(const StudyDocument& document, const std::filesystem::path& base);
-
-/// The resolved study as a study file (seed included), so the run can be repeated exactly.
-[[nodiscard]] Json match_study_to_json(const MatchStudy& study);
-
-/// The run's report: start/best points, distances before/after (after GA / after LM for hybrid), evaluations,
-/// time, the curve as io curve JSON and the resolved setup under "study".
-[[nodiscard]] Json match_result_to_json(const CurvatureMatch& match, const MatchStudy& study,
-                                        const MatchResult& result);
 
 }  // namespace hula::studies

@@ -2,11 +2,8 @@
 #include "hula/studies/profile.hpp"
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include "hula/core/error.hpp"
-#include "hula/io/points_file.hpp"
 #include "hula/law/parser.hpp"
 #include "hula/nurbs/nurbs_curve.hpp"
 
@@ -121,66 +118,6 @@ void Profile::sample(std::span<const double> u, std::span<double> out) const {
   if (tape_->evaluate(u, out, std::span<std::uint8_t>{}) == 0) return;
   for (std::size_t i = 0; i < u.size(); ++i)
     if (std::isnan(out[i])) throw Error(Errc::OutOfDomain, "the profile is undefined at u = " + std::to_string(u[i]));
-}
-
-Profile profile_from_json(const io::json::Json& value, const io::json::JsonPath& path,
-                          const std::filesystem::path& base, const law::Context& context) {
-  namespace json = io::json;
-  if (!value.is_object()) json::type_error(value, path, "an object with one of law, samples, csv, bspline");
-  if (const io::json::Json* text = json::optional_member(value, "law")) {
-    json::reject_unknown_members(value, path, {"law", "variable"});
-    std::string variable = "u";
-    if (const io::json::Json* v = json::optional_member(value, "variable"))
-      variable = json::get_string(*v, path.member("variable"));
-    const std::string expr = json::get_string(*text, path.member("law"));
-    try {
-      law::ParseOptions options;
-      options.parameters = {variable};
-      return Profile::from_law(law::parse(expr, context, options), variable);
-    } catch (const Error& e) {
-      throw Error(e.code(), path.member("law").text + ": " + e.message(), path.member("law").where);
-    }
-  }
-  if (const io::json::Json* samples = json::optional_member(value, "samples")) {
-    json::reject_unknown_members(value, path, {"samples"});
-    const json::PointArray pts = json::get_points(*samples, path.member("samples"));
-    std::vector<double> u(pts.points.size()), v(pts.points.size());
-    for (std::size_t i = 0; i < u.size(); ++i) {
-      if (pts.dimension != 2) json::type_error(*samples, path.member("samples"), "an array of [u, value] pairs");
-      u[i] = pts.points[i].x;
-      v[i] = pts.points[i].y;
-    }
-    return Profile::from_samples(u, v, context);
-  }
-  if (const io::json::Json* csv = json::optional_member(value, "csv")) {
-    json::reject_unknown_members(value, path, {"csv"});
-    std::filesystem::path file = json::get_string(*csv, path.member("csv"));
-    if (file.is_relative()) file = base / file;
-    const io::PointSet pts = io::read_points_file(file);
-    if (pts.dimension != 2)
-      throw Error(Errc::ParseError,
-                  path.member("csv").text + ": '" + file.string() + "' must have two columns (u, value)",
-                  path.member("csv").where);
-    std::vector<double> u(pts.points.size()), v(pts.points.size());
-    for (std::size_t i = 0; i < u.size(); ++i) {
-      u[i] = pts.points[i].x;
-      v[i] = pts.points[i].y;
-    }
-    return Profile::from_samples(u, v, context);
-  }
-  if (const io::json::Json* b = json::optional_member(value, "bspline")) {
-    json::reject_unknown_members(value, path, {"bspline"});
-    const json::JsonPath bp = path.member("bspline");
-    json::reject_unknown_members(*b, bp, {"degree", "knots", "coefficients"});
-    const int degree =
-        static_cast<int>(json::get_integer(json::require_member(*b, bp, "degree"), bp.member("degree"), 1, 64));
-    const auto knots = json::get_number_array(json::require_member(*b, bp, "knots"), bp.member("knots"));
-    const auto coefficients =
-        json::get_number_array(json::require_member(*b, bp, "coefficients"), bp.member("coefficients"));
-    return Profile::from_bspline(degree, knots, coefficients, context);
-  }
-  throw Error(Errc::ParseError, path.text + ": a profile needs one of \"law\", \"samples\", \"csv\", \"bspline\"",
-              path.where);
 }
 
 }  // namespace hula::studies

@@ -11,16 +11,14 @@
 //   - a B-spline function sum_i N_i,p(u) c_i (a "NURBS function").
 // Study files write them as {"law": "..."}, {"samples": [[u, v], ...]},
 // {"csv": "path"} (two columns u, v) or {"bspline": {"degree", "knots",
-// "coefficients"}}.
+// "coefficients"}}; io/profile_file.hpp reads them.
 #pragma once
 
-#include <filesystem>
 #include <memory>
 #include <span>
 #include <string>
 #include <vector>
 
-#include "hula/io/json_read.hpp"
 #include "hula/law/expr.hpp"
 #include "hula/law/tape.hpp"
 
@@ -82,16 +80,5 @@ class Profile {
   std::string variable_;
   std::shared_ptr<const law::Tape> tape_;
 };
-
-/// Reads a profile member of a study file (see the file comment for the forms).
-/// @param value the JSON value; @param path its path for messages (e.g. `target`)
-/// @param base directory against which a relative "csv" path is resolved
-/// @param context the law context for a "law" form
-/// @throws hula::Error(Errc::ParseError) naming the path for an unknown form or member,
-///   a law the parser refuses, a CSV that is not two columns
-/// @throws hula::Error(Errc::NonFiniteInput) for NaN or infinite samples (CSV "nan" included)
-/// @throws hula::Error(Errc::IoError) if the CSV cannot be read
-[[nodiscard]] Profile profile_from_json(const io::json::Json& value, const io::json::JsonPath& path,
-                                        const std::filesystem::path& base, const law::Context& context);
 
 }  // namespace hula::studies

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Study files of the editing studies; see editing_study.hpp and docs/formats.md.
-#include "hula/studies/editing_study.hpp"
+#include "hula/io/editing_study_file.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -9,9 +9,11 @@
 #include "hula/core/error.hpp"
 #include "hula/io/json_read.hpp"
 
-namespace hula::studies {
+namespace hula::io {
 
-namespace json = io::json;
+using namespace studies;  // NOLINT(google-build-using-namespace): this file is the studies' codec
+
+
 
 namespace {
 
@@ -33,14 +35,14 @@ diffgeom::Plane plane_member(const Json& body) {
 }
 
 // The curve a file describes, as the studies take it (law files: the stand-in NURBS).
-const nurbs::NurbsCurve& nurbs_of(const io::CurveFile& file) { return file.curve; }
+const nurbs::NurbsCurve& nurbs_of(const curve::Curve& c) { return c.nurbs(); }
 
 }  // namespace
 
-io::CurveFile read_curve_member(const Json& body, std::string_view name) {
+curve::Curve read_curve_member(const Json& body, std::string_view name) {
   const Json& value = json::require_member(body, kRoot, name);
   try {
-    return io::curve_from_json(value);
+    return curve_from_json(value);
   } catch (const Error& e) {
     ErrorWhere where = e.where();
     where.field = where.field.empty() ? std::string(name) : std::string(name) + "." + where.field;
@@ -106,7 +108,7 @@ EditProjectionStudy read_edit_projection_study(const StudyDocument& doc) {
   check_members(b, {"curve", "edited", "plane"});
   const diffgeom::Plane plane = plane_member(b);
   EditProjectionStudy s{doc.header, read_curve_member(b, "curve"), read_curve_member(b, "edited"), plane};
-  require_planar(s.edited.curve, plane, "edited");
+  require_planar(s.edited.nurbs(), plane, "edited");
   return s;
 }
 
@@ -115,13 +117,14 @@ HermiteStudy read_hermite_study(const StudyDocument& doc) {
   check_members(b, {"spline", "rebuild", "edits"});
   HermiteStudy s;
   s.header = doc.header;
-  const io::CurveFile spline = read_curve_member(b, "spline");
-  if (!spline.inputs)
+  const curve::Curve spline = read_curve_member(b, "spline");
+  const auto* inputs = std::get_if<curve::InterpolatedData>(&spline.data());
+  if (!inputs)
     throw Error(Errc::ParseError,
                 "spline: must be an \"interpolated\" curve document (points to interpolate), got kind \"" +
-                    std::string(io::curve_kind_name(spline.kind)) + "\"",
+                    std::string(spline.kind_name()) + "\"",
                 {.field = "spline"});
-  s.spline = *spline.inputs;
+  s.spline = *inputs;
   s.options.interpolation = s.spline.options();
   if (const Json* r = json::optional_member(b, "rebuild")) {
     const std::string name = json::get_string(*r, kRoot.member("rebuild"));
@@ -169,4 +172,4 @@ HermiteStudy read_hermite_study(const StudyDocument& doc) {
   return s;
 }
 
-}  // namespace hula::studies
+}  // namespace hula::io

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Readers of the editing study kinds: defaults and values as documented in
 // docs/formats.md, and every refusal naming its member before any work.
-#include "hula/studies/editing_study.hpp"
+#include "hula/io/editing_study_file.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 
 #include "hula/testing/expect_error.hpp"
 
-namespace hula::studies {
+namespace hula::io {
 namespace {
 
 const std::string kCurve = R"({"kind": "interpolated", "points": [[0, 0, 0], [1, 1, 1], [2, 0, 2], [3, 1, 0]]})";
@@ -80,7 +80,7 @@ TEST(EditingStudy, Hermite) {
   EXPECT_DOUBLE_EQ(s.edits[0].tangent_angle, std::numbers::pi / 2.0);
   EXPECT_EQ(s.edits[0].normal_scale, 2.0);
   EXPECT_EQ(s.edits[0].tangent_scale, 1.0);
-  EXPECT_EQ(s.options.rebuild, HermiteRebuild::Quintic);
+  EXPECT_EQ(s.options.rebuild, studies::HermiteRebuild::Quintic);
   EXPECT_EQ(s.options.interpolation.dimension, 2);
   HULA_EXPECT_ERROR(
       read_hermite_study(doc("hermite", R"("spline": {"kind": "bezier", "control_points": [[0, 0], [1, 1]]})")),
@@ -95,4 +95,4 @@ TEST(EditingStudy, Hermite) {
 }
 
 }  // namespace
-}  // namespace hula::studies
+}  // namespace hula::io

@@ -2,7 +2,7 @@
 // Tests of the "fair-knots" study reader: defaults, the resolved document
 // round-trips, every bad member is refused with its name before any run, and
 // the energy-map CSV.
-#include "hula/studies/fair_knots_study.hpp"
+#include "hula/io/fair_knots_study_file.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,8 +12,10 @@
 
 #include "hula/testing/expect_error.hpp"
 
-namespace hula::studies {
+namespace hula::io {
 namespace {
+
+using namespace studies;  // NOLINT(google-build-using-namespace)
 
 FairKnotsStudy read(const std::string& members) {
   const std::string text =
@@ -101,4 +103,4 @@ TEST(StudiesFairKnotsStudy, EnergyMapCsv) {
 }
 
 }  // namespace
-}  // namespace hula::studies
+}  // namespace hula::io

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "hula/studies/study_file.hpp"
+#include "hula/io/study_file.hpp"
 
 #include <fstream>
 #include <limits>
@@ -9,10 +9,10 @@
 #include "hula/core/error.hpp"
 #include "hula/io/json_read.hpp"
 
-namespace hula::studies {
+namespace hula::io {
 namespace {
 
-using io::json::root_path;
+using json::root_path;
 
 constexpr std::string_view kEnvelope[] = {"format", "version", "study", "seed", "threads", "comment"};
 
@@ -20,25 +20,25 @@ constexpr std::string_view kEnvelope[] = {"format", "version", "study", "seed", 
 
 StudyDocument parse_study_json(std::string_view text, std::string_view expected_kind) {
   StudyDocument out;
-  out.body = io::json::parse_json_text(text, "study file");
+  out.body = json::parse_json_text(text, "study file");
   const Json& doc = out.body;
-  if (!doc.is_object()) io::json::type_error(doc, root_path(""), "a JSON object (a study file)");
+  if (!doc.is_object()) json::type_error(doc, root_path(""), "a JSON object (a study file)");
   const std::string format =
-      io::json::get_string(io::json::require_member(doc, root_path(""), "format"), root_path("format"));
+      json::get_string(json::require_member(doc, root_path(""), "format"), root_path("format"));
   if (format != "hula-study")
     throw Error(Errc::ParseError, "format = \"" + format + "\": a study file must have \"format\": \"hula-study\"",
                 root_path("format").where);
-  (void)io::json::get_integer(io::json::require_member(doc, root_path(""), "version"), root_path("version"), 1, 1);
-  out.header.kind = io::json::get_string(io::json::require_member(doc, root_path(""), "study"), root_path("study"));
+  (void)json::get_integer(json::require_member(doc, root_path(""), "version"), root_path("version"), 1, 1);
+  out.header.kind = json::get_string(json::require_member(doc, root_path(""), "study"), root_path("study"));
   if (out.header.kind != expected_kind)
     throw Error(Errc::ParseError,
                 "study = \"" + out.header.kind + "\": this command runs \"" + std::string(expected_kind) + "\" studies",
                 root_path("study").where);
-  if (const Json* s = io::json::optional_member(doc, "seed"))
+  if (const Json* s = json::optional_member(doc, "seed"))
     out.header.seed = static_cast<std::uint64_t>(
-        io::json::get_integer(*s, root_path("seed"), 0, std::numeric_limits<long long>::max()));
-  if (const Json* t = io::json::optional_member(doc, "threads"))
-    out.header.threads = static_cast<std::size_t>(io::json::get_integer(*t, root_path("threads"), 0, 1024));
+        json::get_integer(*s, root_path("seed"), 0, std::numeric_limits<long long>::max()));
+  if (const Json* t = json::optional_member(doc, "threads"))
+    out.header.threads = static_cast<std::size_t>(json::get_integer(*t, root_path("threads"), 0, 1024));
   return out;
 }
 
@@ -54,10 +54,10 @@ StudyDocument read_study_file(const std::filesystem::path& path, std::string_vie
 void check_members(const Json& body, std::initializer_list<std::string_view> kind_members) {
   std::vector<std::string_view> allowed(std::begin(kEnvelope), std::end(kEnvelope));
   allowed.insert(allowed.end(), kind_members.begin(), kind_members.end());
-  io::json::reject_unknown_members(body, root_path(""), allowed);
+  json::reject_unknown_members(body, root_path(""), allowed);
 }
 
-Json header_to_json(const StudyHeader& header) {
+Json header_to_json(const studies::StudyHeader& header) {
   Json out = Json::object();
   out["format"] = "hula-study";
   out["version"] = 1;
@@ -67,4 +67,4 @@ Json header_to_json(const StudyHeader& header) {
   return out;
 }
 
-}  // namespace hula::studies
+}  // namespace hula::io

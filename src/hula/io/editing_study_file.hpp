@@ -13,15 +13,15 @@
 #include "hula/studies/fin_compound.hpp"
 #include "hula/studies/hermite_edit.hpp"
 #include "hula/studies/projection_edit.hpp"
-#include "hula/studies/study_file.hpp"
+#include "hula/io/study_file.hpp"
 
-namespace hula::studies {
+namespace hula::io {
 
 /// Reads member `name` of a study body as an inline curve document (docs/formats.md curve files:
 /// "nurbs", "bezier", "interpolated" or "law").
 /// @throws hula::Error(Errc::ParseError) if it is missing; errors of io::curve_from_json with the
 ///   member name prefixed to the message and the field ("curve.control_points")
-[[nodiscard]] io::CurveFile read_curve_member(const Json& body, std::string_view name);
+[[nodiscard]] curve::Curve read_curve_member(const Json& body, std::string_view name);
 
 /// Which technique a "fin-compound" study runs.
 enum class FinCompoundMethod {
@@ -31,18 +31,18 @@ enum class FinCompoundMethod {
 
 /// A "fin-compound" study.
 struct FinCompoundStudy {
-  StudyHeader header{};
+  studies::StudyHeader header{};
   FinCompoundMethod method = FinCompoundMethod::Projection;
   /// "curve": the original curve (projection: required; combescure: the parent, forward transform).
-  std::optional<io::CurveFile> curve{};
+  std::optional<curve::Curve> curve{};
   /// "compound": the edited / prescribed compound (projection: optional, without it only the compound
   /// is computed; combescure: the prescribed compound, inverse transform). One of curve/compound for
   /// combescure.
-  std::optional<io::CurveFile> compound{};
+  std::optional<curve::Curve> compound{};
   /// "plane", "scale", "samples", "min_stretch", "tolerance" (projection).
-  NormalCompoundOptions projection{};
+  studies::NormalCompoundOptions projection{};
   /// "c", "samples", "tolerance" (combescure).
-  CombescureOptions combescure{};
+  studies::CombescureOptions combescure{};
 };
 
 /// Reads a "fin-compound" study body.
@@ -53,9 +53,9 @@ struct FinCompoundStudy {
 
 /// An "edit-projection" study.
 struct EditProjectionStudy {
-  StudyHeader header{};
-  io::CurveFile curve;                          ///< "curve": the original 3-D curve
-  io::CurveFile edited;                         ///< "edited": the edited projection, planar in `plane`
+  studies::StudyHeader header{};
+  curve::Curve curve;                           ///< "curve": the original 3-D curve
+  curve::Curve edited;                          ///< "edited": the edited projection, planar in `plane`
   diffgeom::Plane plane = diffgeom::Plane::XY;  ///< "plane"
 };
 
@@ -65,13 +65,13 @@ struct EditProjectionStudy {
 
 /// A "hermite" study.
 struct HermiteStudy {
-  StudyHeader header{};
+  studies::StudyHeader header{};
   /// "spline": an "interpolated" curve document (points, parameterisation or parameters, ends).
-  io::InterpolationInputs spline{};
+  curve::InterpolatedData spline{};
   /// The spline's interpolation options and "rebuild".
-  HermiteEditOptions options{};
+  studies::HermiteEditOptions options{};
   /// "edits" (angles in the file in degrees, here in radians).
-  std::vector<HandleEdit> edits;
+  std::vector<studies::HandleEdit> edits;
 };
 
 /// Reads a "hermite" study body.
@@ -81,4 +81,4 @@ struct HermiteStudy {
 ///   for a bad edit (hermite_edit's checks, run here before any work)
 [[nodiscard]] HermiteStudy read_hermite_study(const StudyDocument& doc);
 
-}  // namespace hula::studies
+}  // namespace hula::io

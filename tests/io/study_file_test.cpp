@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "hula/studies/study_file.hpp"
+#include "hula/io/study_file.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 namespace {
 
 using hula::Errc;
-using hula::studies::parse_study_json;
+using hula::io::parse_study_json;
 
 TEST(StudyFile, EnvelopeIsReadWithDefaults) {
   const auto doc = parse_study_json(R"({"format": "hula-study", "version": 1, "study": "fair-knots"})", "fair-knots");
@@ -19,7 +19,7 @@ TEST(StudyFile, EnvelopeIsReadWithDefaults) {
       R"({"format": "hula-study", "version": 1, "study": "hermite", "seed": 42, "threads": 0})", "hermite");
   EXPECT_EQ(seeded.header.seed, 42u);
   EXPECT_EQ(seeded.header.threads, 0u);
-  const auto back = hula::studies::header_to_json(seeded.header);
+  const auto back = hula::io::header_to_json(seeded.header);
   EXPECT_EQ(back["seed"], 42);
   EXPECT_EQ(back["study"], "hermite");
 }
@@ -40,9 +40,9 @@ TEST(StudyFile, BadEnvelopesNameTheMember) {
 
 TEST(StudyFile, UnknownMembersAreRefused) {
   const auto doc = parse_study_json(R"({"format": "hula-study", "version": 1, "study": "x", "pointz": []})", "x");
-  HULA_EXPECT_ERROR(hula::studies::check_members(doc.body, {"points", "target"}), Errc::ParseError,
+  HULA_EXPECT_ERROR(hula::io::check_members(doc.body, {"points", "target"}), Errc::ParseError,
                     "pointz: unknown member");
-  EXPECT_NO_THROW(hula::studies::check_members(
+  EXPECT_NO_THROW(hula::io::check_members(
       parse_study_json(R"({"format": "hula-study", "version": 1, "study": "x", "points": []})", "x").body,
       {"points", "target"}));
 }

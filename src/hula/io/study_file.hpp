@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The common envelope of study files (docs/formats.md "Study files"): one JSON
+// The codec of the common envelope of study files (docs/formats.md "Study files"): one JSON
 // document holds the whole setup of a curve-optimisation study (curve,
 // target, variables and bounds, algorithm and settings) so that a run can be
 // repeated exactly. Every study file has
@@ -18,25 +18,17 @@
 #include <string>
 #include <string_view>
 
-#include "hula/io/json_curve.hpp"
+#include "hula/io/json_read.hpp"
+#include "hula/studies/study.hpp"
 
-namespace hula::studies {
+namespace hula::io {
 
-using Json = io::Json;
-
-/// The envelope members every study file may hold.
-struct StudyHeader {
-  /// The "study" member: which study the file sets up.
-  std::string kind{};
-  /// Seed of the run's random streams. Default 1.
-  std::uint64_t seed = 1;
-  /// Worker threads (0 = all cores). Results never depend on it. Default 1.
-  std::size_t threads = 1;
-};
+/// The JSON value type of the io module.
+using Json = nlohmann::ordered_json;
 
 /// A parsed study document and its header.
 struct StudyDocument {
-  StudyHeader header{};
+  studies::StudyHeader header{};
   Json body{};
 };
 
@@ -59,6 +51,6 @@ void check_members(const Json& body, std::initializer_list<std::string_view> kin
 
 /// The envelope as JSON, to which a kind adds its members when it writes the
 /// resolved setup of a run (so the run can be repeated exactly).
-[[nodiscard]] Json header_to_json(const StudyHeader& header);
+[[nodiscard]] Json header_to_json(const studies::StudyHeader& header);
 
-}  // namespace hula::studies
+}  // namespace hula::io

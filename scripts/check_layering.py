@@ -1,0 +1,79 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+"""Include-level layering check (DESIGN.md: "a module depends only on the
+modules below it, checked at include level, not only by target dependencies").
+
+Scans every C++ source and header under src/hula/<module>/ and apps/ for
+`#include "hula/<other>/..."` and refuses
+  - an include of a module that is not below the including module in
+    HULA_MODULE_ORDER (read from cmake/HulaModule.cmake, the one list), and
+  - an include of another module's detail/ headers.
+apps/ sit above every module; `testing` (test support) may include any module.
+
+Usage: check_layering.py [--root DIR]   (DIR holds cmake/, src/ and apps/)
+Exit 0 when clean; 1 with one line per violation:
+  layering violation: src/hula/nurbs/x.hpp:12 includes "hula/io/json_curve.hpp" (io is not below nurbs)
+"""
+import argparse
+import pathlib
+import re
+import sys
+
+INCLUDE = re.compile(r'^\s*#\s*include\s*"hula/([a-z_]+)/([^"]+)"')
+SOURCES = {".hpp", ".cpp", ".h", ".cc"}
+
+
+def module_order(root: pathlib.Path) -> list[str]:
+    text = (root / "cmake" / "HulaModule.cmake").read_text()
+    m = re.search(r"set\(HULA_MODULE_ORDER\s+([^)]*)\)", text)
+    if not m:
+        sys.exit("check_layering: no set(HULA_MODULE_ORDER ...) in cmake/HulaModule.cmake")
+    return m.group(1).split()
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--root", default=pathlib.Path(__file__).resolve().parent.parent, type=pathlib.Path)
+    root = parser.parse_args().root.resolve()
+    order = module_order(root)
+    rank = {name: i for i, name in enumerate(order)}
+    violations = []
+    scanned = 0
+    for base in (root / "src" / "hula", root / "apps"):
+        if not base.is_dir():
+            continue
+        for path in sorted(base.rglob("*")):
+            if path.suffix not in SOURCES or not path.is_file():
+                continue
+            rel = path.relative_to(root)
+            owner = rel.parts[2] if rel.parts[0] == "src" else "apps"
+            if owner != "apps" and owner not in rank:
+                violations.append(f"layering violation: {rel}: module '{owner}' is not in HULA_MODULE_ORDER")
+                continue
+            scanned += 1
+            for line_no, line in enumerate(path.read_text(errors="replace").splitlines(), 1):
+                m = INCLUDE.match(line)
+                if not m:
+                    continue
+                target, rest = m.group(1), m.group(2)
+                shown = f'"hula/{target}/{rest}"'
+                if target not in rank:
+                    violations.append(f"layering violation: {rel}:{line_no} includes {shown} (no module '{target}')")
+                elif target != owner and rest.startswith("detail/"):
+                    violations.append(
+                        f"layering violation: {rel}:{line_no} includes {shown} (detail/ is private to {target})")
+                elif owner not in ("apps", "testing", target) and rank[target] >= rank[owner]:
+                    violations.append(
+                        f"layering violation: {rel}:{line_no} includes {shown} ({target} is not below {owner})")
+    for v in violations:
+        print(v)
+    if violations:
+        print(f"check_layering: {len(violations)} violation(s) in {scanned} files "
+              f"(order: {' < '.join(order)})")
+        return 1
+    print(f"check_layering: {scanned} files, no violation (order: {' < '.join(order)})")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

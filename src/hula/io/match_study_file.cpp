@@ -1,0 +1,532 @@
+// SPDX-License-Identifier: MIT
+// The codecs of the curvature-matching study kinds (match_study_file.hpp).
+#include "hula/io/match_study_file.hpp"
+
+#include <cmath>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "hula/core/error.hpp"
+#include "hula/io/json_curve.hpp"
+#include "hula/io/profile_file.hpp"
+
+namespace hula::io {
+
+using namespace studies;  // NOLINT(google-build-using-namespace): this file is the studies' codec
+namespace jr = json;
+
+namespace {
+
+Vec3 read_vector(const Json& v, const jr::JsonPath& path, int dimension) {
+  const auto [p, count] = jr::get_point(v, path);
+  if (count != dimension)
+    throw Error(
+        Errc::ParseError,
+        path.text + " has " + std::to_string(count) + " components but the points have " + std::to_string(dimension),
+        path.where);
+  return p;
+}
+
+std::vector<Vec3> read_offsets(const Json& body, std::string_view name, std::size_t count, int dimension) {
+  const jr::JsonPath path = jr::root_path(name);
+  const Json& arr = jr::require_member(body, jr::root_path(""), name);
+  const jr::PointArray pa = jr::get_points(arr, path);
+  if (pa.points.size() != count)
+    throw Error(Errc::ParseError,
+                std::string(name) + " has " + std::to_string(pa.points.size()) + " entries but there are " +
+                    std::to_string(count) + " points",
+                {.field = std::string(name)});
+  if (!pa.points.empty() && pa.dimension != dimension)
+    throw Error(Errc::ParseError,
+                std::string(name) + " entries have " + std::to_string(pa.dimension) +
+                    " components but the points have " + std::to_string(dimension),
+                {.field = std::string(name)});
+  return pa.points;
+}
+
+// The "known curve" target form: the curvature profile of the spline through `of_points`, optionally mirrored
+// (κ(1 − u)), symmetrised ((κ(u) + κ(1 − u)) / 2) and multiplied by a factor profile.
+Profile known_curve_target(const Json& t, const jr::JsonPath& path, const CurvatureMatchSetup& setup,
+                           const PathResolver& resolver, const law::Context& context, bool torsion) {
+  jr::reject_unknown_members(t, path, {"of_points", "mirror", "symmetrise", "factor"});
+  const jr::PointArray pa = jr::get_points(jr::require_member(t, path, "of_points"), path.member("of_points"));
+  if (pa.dimension != setup.dimension)
+    throw Error(Errc::ParseError, path.text + ".of_points must have as many components as the points", path.where);
+  std::vector<double> kappa;
+  try {
+    kappa = torsion
+                ? torsion_profile_of(pa.points, setup.samples, setup.start_tangent, setup.end_tangent, setup.abscissa)
+                : curvature_profile_of(pa.points, setup.dimension, setup.samples, setup.start_tangent,
+                                       setup.end_tangent, setup.abscissa);
+  } catch (const Error& e) {
+    throw Error(e.code(), path.text + ".of_points: " + e.message(), path.where);
+  }
+  const std::size_t N = kappa.size();
+  auto flag = [&](std::string_view name) {
+    const Json* v = jr::optional_member(t, name);
+    if (v == nullptr) return false;
+    if (!v->is_boolean()) jr::type_error(*v, path.member(name), "true or false");
+    return v->get<bool>();
+  };
+  std::vector<double> v = kappa;
+  if (flag("mirror"))
+    for (std::size_t i = 0; i < N; ++i) v[i] = kappa[N - 1 - i];
+  if (flag("symmetrise")) {
+    const std::vector<double> w = v;
+    for (std::size_t i = 0; i < N; ++i) v[i] = 0.5 * (w[i] + w[N - 1 - i]);
+  }
+  const std::vector<double> u = uniform_abscissae(N);
+  if (const Json* f = jr::optional_member(t, "factor")) {
+    const Profile factor = profile_from_json(*f, path.member("factor"), resolver, context);
+    std::vector<double> fv(N);
+    factor.sample(u, fv);
+    for (std::size_t i = 0; i < N; ++i) v[i] *= fv[i];
+  }
+  return Profile::from_samples(u, v, context);
+}
+
+double read_positive(const Json& obj, const jr::JsonPath& path, std::string_view name, double current) {
+  const Json* v = jr::optional_member(obj, name);
+  if (v == nullptr) return current;
+  const double x = jr::get_number(*v, path.member(name));
+  if (!(x > 0.0))
+    throw Error(Errc::InvalidOption, path.member(name).text + " = " + format_number(x) + " must be > 0",
+                path.member(name).where);
+  return x;
+}
+
+double read_probability(const Json& obj, const jr::JsonPath& path, std::string_view name, double current) {
+  const Json* v = jr::optional_member(obj, name);
+  if (v == nullptr) return current;
+  const double x = jr::get_number(*v, path.member(name));
+  if (!(x >= 0.0 && x <= 1.0))
+    throw Error(Errc::InvalidOption, path.member(name).text + " = " + format_number(x) + " must be in [0, 1]",
+                path.member(name).where);
+  return x;
+}
+
+MatchGaSettings read_ga(const Json& g, const jr::JsonPath& path) {
+  jr::reject_unknown_members(g, path,
+                             {"algorithm", "population", "generations", "boost_start", "boost_end",
+                              "crossover_probability", "mutation_probability", "precision", "selection"});
+  MatchGaSettings s;
+  if (const Json* a = jr::optional_member(g, "algorithm")) {
+    const std::string name = jr::get_string(*a, path.member("algorithm"));
+    if (name == "binary")
+      s.algorithm = MatchGaSettings::Algorithm::Binary;
+    else if (name == "real")
+      s.algorithm = MatchGaSettings::Algorithm::Real;
+    else
+      throw Error(Errc::ParseError, "ga.algorithm = \"" + name + "\" must be \"binary\" or \"real\"",
+                  {.field = "ga.algorithm"});
+  }
+  if (const Json* a = jr::optional_member(g, "selection")) {
+    const std::string name = jr::get_string(*a, path.member("selection"));
+    if (name == "roulette")
+      s.selection = optim::Selection::Roulette;
+    else if (name == "tournament")
+      s.selection = optim::Selection::Tournament;
+    else
+      throw Error(Errc::ParseError, "ga.selection = \"" + name + "\" must be \"roulette\" or \"tournament\"",
+                  {.field = "ga.selection"});
+  }
+  if (const Json* v = jr::optional_member(g, "population")) {
+    s.population = static_cast<std::size_t>(jr::get_integer(*v, path.member("population"), 2, 100000));
+    if (s.population % 2 != 0)
+      throw Error(Errc::InvalidOption, "ga.population = " + std::to_string(s.population) + " must be even",
+                  {.field = "ga.population"});
+  }
+  if (const Json* v = jr::optional_member(g, "generations"))
+    s.generations = static_cast<std::size_t>(jr::get_integer(*v, path.member("generations"), 0, 1000000));
+  s.boost_start = read_positive(g, path, "boost_start", s.boost_start);
+  s.boost_end = read_positive(g, path, "boost_end", s.boost_end);
+  s.precision = read_positive(g, path, "precision", s.precision);
+  s.crossover_probability = read_probability(g, path, "crossover_probability", s.crossover_probability);
+  if (jr::optional_member(g, "mutation_probability") != nullptr)
+    s.mutation_probability = read_probability(g, path, "mutation_probability", 0.0);
+  return s;
+}
+
+}  // namespace
+
+LmOptions lm_options_from_json(const Json& g, const io::json::JsonPath& path) {
+  jr::reject_unknown_members(
+      g, path, {"max_iterations", "target_mean", "relative_tolerance", "initial_lambda", "difference_step"});
+  LmOptions o;
+  if (const Json* v = jr::optional_member(g, "max_iterations"))
+    o.max_iterations = static_cast<std::size_t>(jr::get_integer(*v, path.member("max_iterations"), 1, 1000000));
+  if (const Json* v = jr::optional_member(g, "target_mean"))
+    o.target_mean = jr::get_number(*v, path.member("target_mean"));
+  if (const Json* v = jr::optional_member(g, "relative_tolerance"))
+    o.relative_tolerance = jr::get_number(*v, path.member("relative_tolerance"));
+  if (const Json* v = jr::optional_member(g, "initial_lambda"))
+    o.initial_lambda = jr::get_number(*v, path.member("initial_lambda"));
+  if (const Json* v = jr::optional_member(g, "difference_step"))
+    o.difference_step = jr::get_number(*v, path.member("difference_step"));
+  o.validate();
+  return o;
+}
+
+Json lm_options_to_json(const LmOptions& o) {
+  Json lm = Json::object();
+  lm["max_iterations"] = o.max_iterations;
+  lm["target_mean"] = o.target_mean;
+  lm["relative_tolerance"] = o.relative_tolerance;
+  lm["initial_lambda"] = o.initial_lambda;
+  lm["difference_step"] = o.difference_step;
+  return lm;
+}
+
+namespace {
+
+Json point_json(const Vec3& p, int dimension) {
+  Json a = Json::array({p.x, p.y});
+  if (dimension == 3) a.push_back(p.z);
+  return a;
+}
+
+Json points_json(std::span<const Vec3> pts, int dimension) {
+  Json a = Json::array();
+  for (const Vec3& p : pts) a.push_back(point_json(p, dimension));
+  return a;
+}
+
+Json distances_json(const MatchDistances& d) {
+  Json o = Json::object();
+  auto num = [](double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); };
+  o["mean"] = num(d.mean);
+  o["max"] = num(d.max);
+  if (std::isfinite(d.torsion_mean)) o["torsion_mean"] = d.torsion_mean;
+  return o;
+}
+
+}  // namespace
+
+MatchSetupJson match_setup_from_json(const Json& body, const PathResolver& resolver, bool with_torsion) {
+  const jr::JsonPath root = jr::root_path("");
+  MatchSetupJson out;
+  CurvatureMatchSetup& s = out.setup;
+  const jr::PointArray pa = jr::get_points(jr::require_member(body, root, "points"), jr::root_path("points"));
+  s.points = pa.points;
+  s.dimension = pa.dimension;
+  if (s.points.size() < 2)
+    throw Error(Errc::TooFewPoints, "points: at least 2 data points are needed, got " + std::to_string(s.points.size()),
+                {.field = "points"});
+  if (with_torsion && s.dimension != 3)
+    throw Error(Errc::InvalidArgument, "points: matching torsion needs 3-D points ([x, y, z]); planar curves have none",
+                {.field = "points"});
+  s.lower = read_offsets(body, "lower", s.points.size(), s.dimension);
+  s.upper = read_offsets(body, "upper", s.points.size(), s.dimension);
+  if (const Json* v = jr::optional_member(body, "start_tangent"))
+    s.start_tangent = read_vector(*v, jr::root_path("start_tangent"), s.dimension);
+  if (const Json* v = jr::optional_member(body, "end_tangent"))
+    s.end_tangent = read_vector(*v, jr::root_path("end_tangent"), s.dimension);
+  if (const Json* v = jr::optional_member(body, "samples"))
+    s.samples = static_cast<std::size_t>(jr::get_integer(*v, jr::root_path("samples"), 0, 1000000));
+  if (s.samples < 2)
+    throw Error(Errc::InvalidArgument, "samples = " + std::to_string(s.samples) + " must be at least 2",
+                {.field = "samples"});
+  if (const Json* v = jr::optional_member(body, "abscissa"))
+    s.abscissa = profile_abscissa_from_name(jr::get_string(*v, jr::root_path("abscissa")), "abscissa");
+  // Bounds before the targets: a bad bound is reported without evaluating anything.
+  s.target = Profile::from_samples(std::vector<double>{0.0, 1.0}, std::vector<double>{0.0, 0.0});
+  s.validate();
+  const law::Context context{};
+  const auto read_target = [&](std::string_view name, bool torsion, Json& echo) {
+    const Json& t = jr::require_member(body, root, name);
+    echo = t;
+    const jr::JsonPath tpath = jr::root_path(name);
+    if (t.is_object() && t.contains("of_points")) return known_curve_target(t, tpath, s, resolver, context, torsion);
+    return profile_from_json(t, tpath, resolver, context);
+  };
+  s.target = read_target("target", false, out.target);
+  if (with_torsion) s.torsion_target = read_target("torsion_target", true, out.torsion_target);
+  return out;
+}
+
+void match_setup_to_json(const MatchSetupJson& setup, Json& out) {
+  const CurvatureMatchSetup& s = setup.setup;
+  out["points"] = points_json(s.points, s.dimension);
+  out["lower"] = points_json(s.lower, s.dimension);
+  out["upper"] = points_json(s.upper, s.dimension);
+  if (s.start_tangent) out["start_tangent"] = point_json(*s.start_tangent, s.dimension);
+  if (s.end_tangent) out["end_tangent"] = point_json(*s.end_tangent, s.dimension);
+  out["target"] = setup.target;
+  if (s.torsion_target) out["torsion_target"] = setup.torsion_target;
+  out["abscissa"] = std::string(profile_abscissa_name(s.abscissa));
+  out["samples"] = s.samples;
+}
+
+MatchStudyFile match_study_from_json(const StudyDocument& document, const PathResolver& resolver) {
+  const Json& body = document.body;
+  check_members(body, {"points", "lower", "upper", "start_tangent", "end_tangent", "target", "abscissa", "samples",
+                       "method", "ga", "lm", "direct"});
+  MatchStudy study;
+  study.header = document.header;
+  if (const Json* v = jr::optional_member(body, "method"))
+    study.method = match_method_from_name(jr::get_string(*v, jr::root_path("method")), "method");
+  if (const Json* v = jr::optional_member(body, "ga")) study.ga = read_ga(*v, jr::root_path("ga"));
+  if (const Json* v = jr::optional_member(body, "lm")) study.lm = lm_options_from_json(*v, jr::root_path("lm"));
+  if (const Json* v = jr::optional_member(body, "direct")) {
+    const jr::JsonPath path = jr::root_path("direct");
+    jr::reject_unknown_members(
+        *v, path,
+        {"length", "end_point", "end_tangent", "correction_degree", "vary_length", "length_weight", "end_tolerance"});
+    MatchDirectSettings& d = study.direct;
+    if (const Json* l = jr::optional_member(*v, "length")) {
+      d.length = jr::get_number(*l, path.member("length"));
+      if (!(*d.length > 0.0))
+        throw Error(Errc::InvalidOption, "direct.length = " + format_number(*d.length) + " must be > 0",
+                    path.member("length").where);
+    }
+    for (auto [flag, target] : {std::pair{"end_point", &d.end_point}, std::pair{"end_tangent", &d.end_tangent},
+                                std::pair{"vary_length", &d.vary_length}})
+      if (const Json* b = jr::optional_member(*v, flag)) {
+        if (!b->is_boolean()) jr::type_error(*b, path.member(flag), "true or false");
+        *target = b->get<bool>();
+      }
+    if (const Json* e = jr::optional_member(*v, "end_tolerance"))
+      d.end_tolerance = jr::get_number(*e, path.member("end_tolerance"));
+    if (const Json* w = jr::optional_member(*v, "length_weight")) {
+      d.length_weight = jr::get_number(*w, path.member("length_weight"));
+      if (!(d.length_weight > 0.0))
+        throw Error(Errc::InvalidOption, "direct.length_weight = " + format_number(d.length_weight) + " must be > 0",
+                    path.member("length_weight").where);
+    }
+    if (const Json* c = jr::optional_member(*v, "correction_degree"))
+      d.correction_degree = static_cast<int>(jr::get_integer(*c, path.member("correction_degree"), 1, 20));
+  }
+  MatchSetupJson setup = match_setup_from_json(body, resolver, false);
+  study.setup = std::move(setup.setup);
+  return {std::move(study), std::move(setup.target)};
+}
+
+Json match_study_to_json(const MatchStudyFile& file) {
+  const MatchStudy& study = file.study;
+  Json out = header_to_json(study.header);
+  match_setup_to_json({study.setup, file.target, {}}, out);
+  out["method"] = std::string(match_method_name(study.method));
+  Json ga = Json::object();
+  ga["algorithm"] = study.ga.algorithm == MatchGaSettings::Algorithm::Binary ? "binary" : "real";
+  ga["selection"] = study.ga.selection == optim::Selection::Roulette ? "roulette" : "tournament";
+  ga["population"] = study.ga.population;
+  ga["generations"] = study.ga.generations;
+  ga["boost_start"] = study.ga.boost_start;
+  ga["boost_end"] = study.ga.boost_end;
+  ga["crossover_probability"] = study.ga.crossover_probability;
+  if (study.ga.mutation_probability) ga["mutation_probability"] = *study.ga.mutation_probability;
+  ga["precision"] = study.ga.precision;
+  out["ga"] = ga;
+  out["lm"] = lm_options_to_json(study.lm);
+  Json direct = Json::object();
+  if (study.direct.length) direct["length"] = *study.direct.length;
+  direct["end_point"] = study.direct.end_point;
+  direct["end_tangent"] = study.direct.end_tangent;
+  direct["correction_degree"] = study.direct.correction_degree;
+  direct["vary_length"] = study.direct.vary_length;
+  direct["length_weight"] = study.direct.length_weight;
+  direct["end_tolerance"] = study.direct.end_tolerance;
+  out["direct"] = direct;
+  return out;
+}
+
+Json match_result_to_json(const CurvatureMatch& match, const MatchStudyFile& file, const MatchResult& result) {
+  const MatchStudy& study = file.study;
+  const int dim = study.setup.dimension;
+  std::vector<Vec3> pts(study.setup.points.size());
+  Json out = Json::object();
+  out["method"] = std::string(match_method_name(study.method));
+  out["variables"] = Json::array();
+  for (const auto& v : match.variables()) out["variables"].push_back(v.name);
+  match.points_from(result.start, pts);
+  out["start_points"] = points_json(pts, dim);
+  match.points_from(result.best, pts);
+  out["best_points"] = points_json(pts, dim);
+  out["before"] = distances_json(result.before);
+  out["after_ga"] = distances_json(result.after_ga);
+  if (result.lm) {
+    out["after_lm"] = distances_json(result.after);
+    Json lm = Json::object();
+    lm["iterations"] = result.lm->iterations;
+    lm["evaluations"] = result.lm->evaluations;
+    lm["termination"] = result.lm->termination;
+    lm["seconds"] = result.lm->seconds;
+    out["lm"] = lm;
+  }
+  out["after"] = distances_json(result.after);
+  if (result.direct) {
+    // The direct curve matches the profile by construction (up to the correction that holds its end); its
+    // distance from the target and where its end lands are what to compare with the GA routes.
+    const DirectReconstructionResult& d = *result.direct;
+    out["after"] = {{"mean", d.mean_curvature_deviation}, {"max", d.max_curvature_deviation}};
+    out["direct"] = direct_reconstruction_summary(d);
+    if (d.nurbs) {
+      const nurbs::NurbsCurve& c = d.nurbs->curve;
+      out["direct"]["end_miss"] = norm(c.evaluate(c.domain().end) - study.setup.points.back());
+      out["curve"] = curve_to_json(c);
+    }
+    out["seconds"] = result.seconds;
+    out["study"] = match_study_to_json(file);
+    return out;
+  }
+  Json ga = Json::object();
+  ga["generations"] = result.ga_report.generations;
+  ga["evaluations"] = result.ga_report.evaluations;
+  ga["failed_evaluations"] = result.ga_report.failed_evaluations;
+  ga["termination"] = std::string(optim::termination_name(result.ga_report.termination));
+  ga["seconds"] = result.ga_report.seconds;
+  out["ga"] = ga;
+  out["evaluations"] = result.ga_report.evaluations + (result.lm ? result.lm->evaluations : 0);
+  out["seconds"] = result.seconds;
+  out["curve"] = curve_to_json(match.sampler().curve(pts));
+  out["study"] = match_study_to_json(file);
+  return out;
+}
+
+namespace {
+
+Json points_of(const CurvatureMatch& match, std::span<const double> x) {
+  std::vector<Vec3> pts(match.setup().points.size());
+  match.points_from(x, pts);
+  Json a = Json::array();
+  for (const Vec3& p : pts) a.push_back(Json::array({p.x, p.y, p.z}));
+  return a;
+}
+
+Json number_or_null(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
+
+}  // namespace
+
+TorsionMatchStudyFile torsion_match_study_from_json(const StudyDocument& document, const PathResolver& resolver) {
+  const Json& body = document.body;
+  check_members(body, {"points", "lower", "upper", "start_tangent", "end_tangent", "target", "torsion_target",
+                       "abscissa", "samples", "nsga2", "polish", "torsion_weight", "lm"});
+  TorsionMatchStudy study;
+  study.header = document.header;
+  TorsionMatchSettings& t = study.settings;
+  if (const Json* g = jr::optional_member(body, "nsga2")) {
+    const jr::JsonPath path = jr::root_path("nsga2");
+    jr::reject_unknown_members(*g, path,
+                               {"population", "generations", "crossover_probability", "crossover_eta", "mutation_eta",
+                                "mutation_probability"});
+    if (const Json* v = jr::optional_member(*g, "population"))
+      t.population = static_cast<std::size_t>(jr::get_integer(*v, path.member("population"), 0, 100000));
+    if (const Json* v = jr::optional_member(*g, "generations"))
+      t.generations = static_cast<std::size_t>(jr::get_integer(*v, path.member("generations"), 0, 1000000));
+    if (const Json* v = jr::optional_member(*g, "crossover_probability"))
+      t.crossover_probability = jr::get_number(*v, path.member("crossover_probability"));
+    if (const Json* v = jr::optional_member(*g, "crossover_eta"))
+      t.crossover_eta = jr::get_number(*v, path.member("crossover_eta"));
+    if (const Json* v = jr::optional_member(*g, "mutation_eta"))
+      t.mutation_eta = jr::get_number(*v, path.member("mutation_eta"));
+    if (const Json* v = jr::optional_member(*g, "mutation_probability"))
+      t.mutation_probability = jr::get_number(*v, path.member("mutation_probability"));
+  }
+  if (const Json* v = jr::optional_member(body, "polish")) {
+    if (!v->is_boolean()) jr::type_error(*v, jr::root_path("polish"), "true or false");
+    t.polish = v->get<bool>();
+  }
+  if (const Json* v = jr::optional_member(body, "torsion_weight"))
+    t.torsion_weight = jr::get_number(*v, jr::root_path("torsion_weight"));
+  if (const Json* v = jr::optional_member(body, "lm")) t.lm = lm_options_from_json(*v, jr::root_path("lm"));
+  t.validate();
+  MatchSetupJson setup = match_setup_from_json(body, resolver, true);
+  study.setup = std::move(setup.setup);
+  return {std::move(study), std::move(setup.target), std::move(setup.torsion_target)};
+}
+
+Json torsion_match_study_to_json(const TorsionMatchStudyFile& file) {
+  const TorsionMatchStudy& study = file.study;
+  Json out = header_to_json(study.header);
+  match_setup_to_json({study.setup, file.target, file.torsion_target}, out);
+  const TorsionMatchSettings& t = study.settings;
+  Json g = Json::object();
+  g["population"] = t.population;
+  g["generations"] = t.generations;
+  g["crossover_probability"] = t.crossover_probability;
+  g["crossover_eta"] = t.crossover_eta;
+  g["mutation_eta"] = t.mutation_eta;
+  if (t.mutation_probability) g["mutation_probability"] = *t.mutation_probability;
+  out["nsga2"] = g;
+  out["polish"] = t.polish;
+  out["torsion_weight"] = t.torsion_weight;
+  out["lm"] = lm_options_to_json(t.lm);
+  return out;
+}
+
+Json torsion_match_result_to_json(const CurvatureMatch& match, const TorsionMatchStudyFile& file,
+                                  const TorsionMatchResult& result) {
+  Json out = Json::object();
+  out["variables"] = Json::array();
+  for (const auto& v : match.variables()) out["variables"].push_back(v.name);
+  out["start"] = {{"curvature", number_or_null(result.start_curvature)},
+                  {"torsion", number_or_null(result.start_torsion)},
+                  {"points", points_of(match, match.start_variables())}};
+  const auto members = [&](const std::vector<TorsionFrontMember>& set) {
+    Json front = Json::array();
+    for (const TorsionFrontMember& m : set)
+      front.push_back({{"curvature", m.curvature},
+                       {"torsion", m.torsion},
+                       {"polished", m.polished},
+                       {"points", points_of(match, m.variables)}});
+    return front;
+  };
+  out["front"] = members(result.front);
+  out["nsga2_front"] = members(result.nsga2_front);
+  if (!result.front.empty()) {
+    const TorsionFrontMember& best = result.front[result.compromise];
+    std::vector<Vec3> pts(match.setup().points.size());
+    match.points_from(best.variables, pts);
+    out["compromise"] = {{"index", result.compromise},
+                         {"curvature", best.curvature},
+                         {"torsion", best.torsion},
+                         {"curve", curve_to_json(match.sampler().curve(pts))}};
+  }
+  out["nsga2"] = {{"generations", result.report.generations},
+                  {"evaluations", result.report.evaluations},
+                  {"failed_evaluations", result.report.failed_evaluations},
+                  {"termination", std::string(optim::termination_name(result.report.termination))},
+                  {"seconds", result.report.seconds}};
+  if (result.lm)
+    out["polish"] = {{"iterations", result.lm->iterations},
+                     {"evaluations", result.lm->evaluations},
+                     {"termination", result.lm->termination},
+                     {"seconds", result.lm->seconds}};
+  out["evaluations"] = result.report.evaluations + (result.lm ? result.lm->evaluations : 0);
+  out["seconds"] = result.seconds;
+  out["study"] = torsion_match_study_to_json(file);
+  return out;
+}
+
+Json direct_reconstruction_summary(const studies::DirectReconstructionResult& r) {
+  Json j;
+  j["planar"] = r.planar;
+  j["length"] = r.length;
+  j["end_point_error"] = r.end_point_error;
+  j["end_tangent_error"] = r.end_tangent_error;
+  j["mean_curvature_deviation"] = r.mean_curvature_deviation;
+  j["max_curvature_deviation"] = r.max_curvature_deviation;
+  if (!r.planar) {
+    j["mean_torsion_deviation"] = r.mean_torsion_deviation;
+    j["max_torsion_deviation"] = r.max_torsion_deviation;
+  }
+  j["iterations"] = r.iterations;
+  j["reconstructions"] = r.reconstructions;
+  j["seconds"] = r.seconds;
+  j["curvature_correction"] = r.curvature_correction;
+  if (!r.torsion_correction.empty()) j["torsion_correction"] = r.torsion_correction;
+  if (r.nurbs) {
+    Json n;
+    n["degree"] = r.nurbs->curve.degree();
+    n["control_points"] = r.nurbs->curve.control_points().size();
+    n["segments"] = r.nurbs->segments;
+    n["max_deviation"] = r.nurbs->max_deviation;
+    n["converged"] = r.nurbs->converged;
+    j["nurbs"] = n;
+  }
+  return j;
+}
+
+}  // namespace hula::io

@@ -1,0 +1,128 @@
+// SPDX-License-Identifier: MIT
+// STEP (AP214, AP242) and IGES 5.3 exchange of curves through Open CASCADE,
+// run in a separate process (issue 11 item 9, thesis 9.1.2: the modeller's
+// readers are someone else's code). OCCT's readers crash on some malformed
+// files, so the caller never loads them: export_curves and import_curves write
+// a JSON request to a private temporary directory, spawn the `hula-exchange`
+// helper with a time limit and an address-space limit (RLIMIT_AS), and read
+// its JSON answer. A crash, a hang or an out-of-memory stop becomes
+// hula::Error(Errc::HelperFailure) naming the file; nothing in the caller's
+// process has changed. Curves cross the boundary in the curve-file JSON format
+// (io/json_curve.hpp), doubles bit-exact.
+//
+// Export writes B-spline curves (IGES entity 126, STEP
+// B_SPLINE_CURVE_WITH_KNOTS, rational ones as the complex rational entity)
+// with their names (STEP: the curve entity's name; IGES: the 8-character
+// label and a Name property, 406 form 15). Curves that are NURBS
+// approximations of law or natural-equation curves carry their maximum
+// deviation; the largest is written into the file's metadata: STEP's
+// FILE_DESCRIPTION and the model's uncertainty, IGES's global-section
+// resolution (field 19) and its start section.
+//
+// Import reads the edges of every transferred shape whose geometry is a
+// B-spline, Bézier, line, circle, ellipse, parabola or hyperbola, bounded by
+// the edge, as NURBS (conics exactly, as rational quadratics), with the name
+// the file gives the curve entity.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "hula/nurbs/nurbs_curve.hpp"
+
+namespace hula::oli {
+
+/// A file format of the exchange.
+enum class ExchangeFormat {
+  StepAp214,  ///< ISO 10303-21 file, AP214 (AUTOMOTIVE_DESIGN) schema; ".step" / ".stp"
+  StepAp242,  ///< ISO 10303-21 file, AP242 schema
+  Iges,       ///< IGES 5.3; ".iges" / ".igs"
+};
+
+/// "step-ap214", "step-ap242" or "iges".
+[[nodiscard]] std::string_view exchange_format_name(ExchangeFormat format) noexcept;
+/// Parses a format name: "step" (= "step-ap214"), "step-ap214", "step-ap242", "iges".
+/// @throws hula::Error(Errc::InvalidArgument) with field "format" naming the value and the choices
+[[nodiscard]] ExchangeFormat exchange_format_from_name(std::string_view name);
+/// The format of a file from its extension (case-insensitive): .step/.stp → AP214 (a reader
+/// accepts any STEP schema), .iges/.igs → IGES.
+/// @throws hula::Error(Errc::InvalidArgument) with field "path" naming the file and the extensions
+[[nodiscard]] ExchangeFormat exchange_format_for_path(const std::filesystem::path& path);
+
+/// One curve to export.
+struct ExportCurve {
+  /// The name written into the file (may be empty).
+  std::string name;
+  /// The curve written (for a law or natural-equation curve, its NURBS approximation).
+  nurbs::NurbsCurve curve;
+  /// Maximum distance of `curve` from the curve it stands for, in model units; 0 when `curve` is
+  /// the curve itself.
+  double deviation = 0.0;
+};
+
+/// Limits and location of the helper process.
+struct ExchangeOptions {
+  /// The helper executable. Empty: default_exchange_helper().
+  std::filesystem::path helper{};
+  /// Wall-clock limit in seconds, after which the helper is killed (SIGKILL). Default 60; > 0.
+  double time_limit = 60.0;
+  /// Address-space limit of the helper (RLIMIT_AS) in bytes. Default 4 GiB; ≥ 256 MiB, since
+  /// Open CASCADE's libraries alone map about 150 MiB.
+  std::size_t memory_limit = std::size_t{4} << 30;
+  /// @throws hula::Error(Errc::InvalidOption) naming the bad field
+  void validate() const;
+};
+
+/// What an export wrote.
+struct ExportReport {
+  std::filesystem::path path;      ///< the file written
+  ExchangeFormat format{};         ///< its format
+  std::size_t curves = 0;          ///< number of curves written
+  double max_deviation = 0.0;      ///< the largest ExportCurve::deviation, written into the metadata
+};
+
+/// One curve read from a file.
+struct ImportedCurve {
+  /// The name the file gives the curve (STEP entity name, IGES name property or label), or empty.
+  std::string name;
+  /// Where it came from: "#12" (STEP entity), "DE 7" (IGES directory entry).
+  std::string source;
+  /// The file's geometry: "b-spline", "bezier", "line", "circle", "ellipse", "parabola", "hyperbola".
+  std::string type;
+  /// The curve as NURBS on the edge's bounds (3-D).
+  nurbs::NurbsCurve curve;
+};
+
+/// What an import read.
+struct ImportReport {
+  std::vector<ImportedCurve> curves;  ///< in the file's order
+  std::size_t skipped = 0;            ///< edges of other geometry (offset curves, …), not imported
+};
+
+/// The helper used when ExchangeOptions::helper is empty: $HULA_EXCHANGE_HELPER if set, else
+/// `hula-exchange` next to the running executable if it exists, else the build tree's helper.
+[[nodiscard]] std::filesystem::path default_exchange_helper();
+
+/// Writes curves to a STEP or IGES file (replaced atomically: the helper writes a temporary file
+/// that is renamed over `path` only when complete).
+/// @param path the output file
+/// @param curves ≥ 1 curves
+/// @throws hula::Error(Errc::InvalidArgument) if curves is empty or a deviation is negative or not finite
+/// @throws hula::Error(Errc::IoError) naming the path if it cannot be written
+/// @throws hula::Error(Errc::Unsupported) if a curve's degree exceeds Open CASCADE's limit (25)
+/// @throws hula::Error(Errc::HelperFailure) naming the path if the helper crashed, hung or ran out of memory
+[[nodiscard]] ExportReport export_curves(const std::filesystem::path& path, std::span<const ExportCurve> curves,
+                                         ExchangeFormat format, const ExchangeOptions& options = {});
+
+/// Reads the curves of a STEP or IGES file (format from the extension).
+/// @throws hula::Error(Errc::IoError) naming the path if it cannot be read
+/// @throws hula::Error(Errc::ParseError) naming the path if it is not a STEP/IGES file, the reader
+///   refuses it, or it holds no importable curve
+/// @throws hula::Error(Errc::HelperFailure) naming the path if the reader crashed, hung or ran out of memory
+[[nodiscard]] ImportReport import_curves(const std::filesystem::path& path, const ExchangeOptions& options = {});
+
+}  // namespace hula::oli

@@ -1,0 +1,386 @@
+// SPDX-License-Identifier: MIT
+// STEP: STEPControl_Writer in GeometricCurveSet mode (one GEOMETRIC_CURVE_SET
+// of B-spline curves, no topology), the schema from "write.step.schema", the
+// curve names set on the written StepGeom_BSplineCurve entities, the maximum
+// deviation in FILE_DESCRIPTION and as the model uncertainty
+// ("write.precision.val"). IGES: each curve through GeomToIGES_GeomCurve
+// (entity 126), its label and a Name property (406/15), version 11 (5.3) and
+// the resolution (global field 19) set to the maximum deviation.
+// Reading: the file's header is checked first (so a file that is not STEP or
+// IGES at all is refused before OCCT parses it), then every root is
+// transferred and each distinct edge's 3-D curve becomes a NURBS.
+#include "hula/oli/exchange/occt_exchange.hpp"
+
+#include <APIHeaderSection_MakeHeader.hxx>
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <GeomConvert.hxx>
+#include <GeomToIGES_GeomCurve.hxx>
+#include <Geom_BezierCurve.hxx>
+#include <Geom_Circle.hxx>
+#include <Geom_Ellipse.hxx>
+#include <Geom_Hyperbola.hxx>
+#include <Geom_Line.hxx>
+#include <Geom_Parabola.hxx>
+#include <Geom_TrimmedCurve.hxx>
+#include <IGESBasic_Name.hxx>
+#include <IGESControl_Controller.hxx>
+#include <IGESControl_Reader.hxx>
+#include <IGESControl_Writer.hxx>
+#include <IGESData_GlobalSection.hxx>
+#include <IGESData_IGESModel.hxx>
+#include <IGESData_IGESWriter.hxx>
+#include <IGESSelect_WorkLibrary.hxx>
+#include <Interface_Check.hxx>
+#include <Interface_CheckIterator.hxx>
+#include <Interface_HArray1OfHAsciiString.hxx>
+#include <Interface_Static.hxx>
+#include <STEPControl_Controller.hxx>
+#include <STEPControl_Reader.hxx>
+#include <STEPControl_Writer.hxx>
+#include <StepData_Protocol.hxx>
+#include <StepData_StepModel.hxx>
+#include <StepData_StepWriter.hxx>
+#include <StepGeom_BSplineCurve.hxx>
+#include <StepGeom_TrimmedCurve.hxx>
+#include <StepRepr_RepresentationItem.hxx>
+#include <StepShape_EdgeCurve.hxx>
+#include <TCollection_HAsciiString.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
+#include <TopoDS_Edge.hxx>
+#include <Transfer_TransientProcess.hxx>
+#include <XSControl_TransferReader.hxx>
+#include <XSControl_WorkSession.hxx>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <unistd.h>
+
+#include "hula/core/error.hpp"
+#include "hula/oli/kernel/occt_convert.hpp"
+
+namespace hula::oli::detail {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The deviation rounded up to 3 significant digits: what a header field printed with few digits
+// keeps, still a bound (never below the true maximum deviation).
+double rounded_up(double deviation) {
+  if (!(deviation > 0.0)) return deviation;
+  const double unit = std::pow(10.0, std::floor(std::log10(deviation)) - 2.0);
+  const double up = std::ceil(deviation / unit) * unit;
+  return up >= deviation ? up : std::nextafter(up, HUGE_VAL);
+}
+
+// The first failure OCCT recorded while reading or transferring the file ("entity #12:
+// Unresolved reference"), or empty. IGES entities are named by their directory-entry line.
+std::string first_failure(const Handle(XSControl_WorkSession)& session, bool iges) {
+  const Interface_CheckIterator checks = session->ModelCheckList(Standard_True);
+  for (checks.Start(); checks.More(); checks.Next()) {
+    const Handle(Interface_Check)& check = checks.Value();
+    if (!check->HasFailed()) continue;
+    const int n = checks.Number();
+    const std::string where = n <= 0 ? std::string("the file") : iges ? "DE " + std::to_string(2 * n - 1) : "entity #" + std::to_string(n);
+    return where + ": " + check->CFail(1, Standard_True);
+  }
+  return {};
+}
+
+std::string deviation_note(double max_deviation) {
+  return "HulaHoops: maximum deviation of NURBS approximations from their law or natural-equation curves: " +
+         format_number(max_deviation) + " model units";
+}
+
+// The temporary file beside `path` that is renamed over it when complete.
+fs::path temporary_beside(const fs::path& path) {
+  return path.parent_path() / ("." + path.filename().string() + ".hula-" + std::to_string(::getpid()) + ".tmp");
+}
+
+void commit_file(const fs::path& temporary, const fs::path& path) {
+  std::error_code ec;
+  fs::rename(temporary, path, ec);
+  if (ec) {
+    fs::remove(temporary, ec);
+    throw Error(Errc::IoError, "cannot write '" + path.string() + "': " + ec.message(), {.field = "path"});
+  }
+}
+
+[[noreturn]] void write_failed(const fs::path& path, const std::string& why) {
+  throw Error(Errc::IoError, "cannot write '" + path.string() + "': " + why, {.field = "path"});
+}
+
+// Reals with 17 significant digits and always an exponent (so always a decimal point, as STEP requires).
+constexpr const char* kRealFormat = "%.16E";
+
+// Prints a file through an OCCT writer's Print(ostream&), checking every step.
+template <class Print>
+void print_file(const fs::path& temporary, const fs::path& path, Print&& print) {
+  std::ofstream stream(temporary, std::ios::binary | std::ios::trunc);
+  if (!stream) write_failed(path, "cannot create '" + temporary.string() + "'");
+  const bool printed = print(stream);
+  stream.close();
+  if (!printed || !stream) write_failed(path, "writing '" + temporary.string() + "' failed");
+}
+
+void write_step(const ExportRequest& r, const fs::path& temporary, double max_deviation) {
+  STEPControl_Controller::Init();
+  Interface_Static::SetCVal("write.step.schema", r.format == ExchangeFormat::StepAp242 ? "AP242DIS" : "AP214IS");
+  Interface_Static::SetCVal("write.step.unit", "MM");
+  if (max_deviation > 0.0) {
+    // The model uncertainty (UNCERTAINTY_MEASURE_WITH_UNIT): mode 2 = the value given here.
+    Interface_Static::SetIVal("write.precision.mode", 2);
+    Interface_Static::SetRVal("write.precision.val", rounded_up(max_deviation));
+  }
+  STEPControl_Writer writer;
+  TopoDS_Compound compound;
+  BRep_Builder builder;
+  builder.MakeCompound(compound);
+  for (const auto& c : r.curves) builder.Add(compound, BRepBuilderAPI_MakeEdge(to_occt(c.curve)).Edge());
+  if (writer.Transfer(compound, STEPControl_GeometricCurveSet) != IFSelect_RetDone)
+    write_failed(r.path, "the STEP translator refused the curves");
+  // Name the written curves: the writer adds, per edge and in order, one B-spline entity and, in
+  // the GEOMETRIC_CURVE_SET, one TRIMMED_CURVE of it (both are named, as other systems read either).
+  const Handle(StepData_StepModel) model = writer.Model();
+  std::size_t next_bspline = 0, next_trimmed = 0;
+  for (int i = 1; i <= model->NbEntities(); ++i) {
+    const Handle(Standard_Transient) entity = model->Value(i);
+    std::size_t* next = nullptr;
+    if (entity->IsKind(STANDARD_TYPE(StepGeom_BSplineCurve))) next = &next_bspline;
+    if (entity->IsKind(STANDARD_TYPE(StepGeom_TrimmedCurve))) next = &next_trimmed;
+    if (next == nullptr || *next >= r.curves.size()) continue;
+    Handle(StepRepr_RepresentationItem)::DownCast(entity)->SetName(
+        new TCollection_HAsciiString(r.curves[(*next)++].name.c_str()));
+  }
+  if (next_bspline != r.curves.size())
+    throw InternalError("STEP export: " + std::to_string(next_bspline) + " B-spline entities for " +
+                        std::to_string(r.curves.size()) + " curves");
+  APIHeaderSection_MakeHeader header(model);
+  Handle(Interface_HArray1OfHAsciiString) description = new Interface_HArray1OfHAsciiString(1, 2);
+  description->SetValue(1, new TCollection_HAsciiString("HulaHoops curves"));
+  description->SetValue(2, new TCollection_HAsciiString(deviation_note(max_deviation).c_str()));
+  header.SetDescription(description);
+  header.SetOriginatingSystem(new TCollection_HAsciiString("HulaHoops"));
+  // Written by hand rather than by writer.Write, whose reals carry 12 significant digits: 17
+  // digits ("%.16E") make every double read back bit-exactly.
+  StepData_StepWriter out(model);
+  out.FloatWriter().SetFormat(kRealFormat);
+  out.SendModel(Handle(StepData_Protocol)::DownCast(writer.WS()->Protocol()));
+  print_file(temporary, r.path, [&](std::ostream& stream) { return out.Print(stream); });
+}
+
+void write_iges(const ExportRequest& r, const fs::path& temporary, double max_deviation) {
+  IGESControl_Controller::Init();
+  IGESControl_Writer writer("MM", 0);
+  const Handle(IGESData_IGESModel) model = writer.Model();
+  IGESData_GlobalSection global = model->GlobalSection();
+  global.SetIGESVersion(11);  // IGES 5.3
+  if (max_deviation > 0.0) global.SetResolution(rounded_up(max_deviation));
+  global.SetSystemId(new TCollection_HAsciiString("HulaHoops"));
+  model->SetGlobalSection(global);
+  model->AddStartLine("HulaHoops curves");
+  model->AddStartLine(deviation_note(max_deviation).c_str());
+  GeomToIGES_GeomCurve translator;
+  translator.SetModel(model);
+  for (const auto& c : r.curves) {
+    const auto occt = to_occt(c.curve);
+    const Handle(IGESData_IGESEntity) entity = translator.TransferCurve(occt, occt->FirstParameter(), occt->LastParameter());
+    if (entity.IsNull()) write_failed(r.path, "the IGES translator refused curve '" + c.name + "'");
+    if (!c.name.empty()) {
+      // The directory-entry label holds 8 characters; the Name property holds the whole name.
+      entity->SetLabel(new TCollection_HAsciiString(c.name.substr(0, 8).c_str()));
+      Handle(IGESBasic_Name) name = new IGESBasic_Name;
+      name->Init(1, new TCollection_HAsciiString(c.name.c_str()));
+      entity->AddProperty(name);
+    }
+    writer.AddEntity(entity);
+  }
+  writer.ComputeModel();
+  // As for STEP, 17 significant digits instead of the writer's default 9.
+  IGESData_IGESWriter out(model);
+  out.FloatWriter().SetFormat(kRealFormat);
+  out.SendModel(IGESSelect_WorkLibrary::DefineProtocol());
+  print_file(temporary, r.path, [&](std::ostream& stream) { return out.Print(stream); });
+}
+
+// The curve types imported, by the basis of a trimmed curve; empty for any other geometry.
+std::string curve_type(const Handle(Geom_Curve)& curve) {
+  Handle(Geom_Curve) c = curve;
+  while (const auto trimmed = Handle(Geom_TrimmedCurve)::DownCast(c)) c = trimmed->BasisCurve();
+  if (c->IsKind(STANDARD_TYPE(Geom_BSplineCurve))) return "b-spline";
+  if (c->IsKind(STANDARD_TYPE(Geom_BezierCurve))) return "bezier";
+  if (c->IsKind(STANDARD_TYPE(Geom_Line))) return "line";
+  if (c->IsKind(STANDARD_TYPE(Geom_Circle))) return "circle";
+  if (c->IsKind(STANDARD_TYPE(Geom_Ellipse))) return "ellipse";
+  if (c->IsKind(STANDARD_TYPE(Geom_Parabola))) return "parabola";
+  if (c->IsKind(STANDARD_TYPE(Geom_Hyperbola))) return "hyperbola";
+  return {};
+}
+
+// The name a STEP file gives the entity an edge came from (itself, or the curve of an edge or
+// the basis of a trimmed curve when those are unnamed).
+std::string step_name(const Handle(Standard_Transient)& entity) {
+  auto name_of = [](const Handle(Standard_Transient)& e) -> std::string {
+    const auto item = Handle(StepRepr_RepresentationItem)::DownCast(e);
+    return item.IsNull() || item->Name().IsNull() ? std::string() : std::string(item->Name()->ToCString());
+  };
+  std::string name = name_of(entity);
+  if (!name.empty()) return name;
+  if (const auto edge = Handle(StepShape_EdgeCurve)::DownCast(entity)) return step_name(edge->EdgeGeometry());
+  if (const auto trimmed = Handle(StepGeom_TrimmedCurve)::DownCast(entity)) return name_of(trimmed->BasisCurve());
+  return {};
+}
+
+// The first bytes of the file, to recognise its format before OCCT parses it.
+std::string file_head(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(Errc::IoError, "cannot open '" + path.string() + "'", {.field = "path"});
+  std::string head(160, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  return head;
+}
+
+[[noreturn]] void not_readable(const fs::path& path, const std::string& why) {
+  throw Error(Errc::ParseError, "cannot import '" + path.string() + "': " + why, {.field = "path"});
+}
+
+ImportedCurve edge_curve(const TopoDS_Edge& edge, std::string name, std::string source, const std::string& type) {
+  double first = 0.0, last = 0.0;
+  const Handle(Geom_Curve) curve = BRep_Tool::Curve(edge, first, last);
+  // Conics exactly as rational quadratics; B-splines keep their parameterisation on [first, last].
+  Handle(Geom_BSplineCurve) bspline = Handle(Geom_BSplineCurve)::DownCast(curve);
+  if (bspline.IsNull() || first != bspline->FirstParameter() || last != bspline->LastParameter())
+    bspline = GeomConvert::CurveToBSplineCurve(new Geom_TrimmedCurve(curve, first, last));
+  return {std::move(name), std::move(source), type, from_occt(bspline, 3)};
+}
+
+ImportReport read_step(const fs::path& path) {
+  STEPControl_Controller::Init();
+  STEPControl_Reader reader;
+  if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) not_readable(path, "the STEP reader refuses the file");
+  reader.TransferRoots();
+  // Checked after the transfer: OCCT records unresolved references and wrong entity types as
+  // failures and carries on with what it could read; a file with failures is refused whole.
+  if (const auto failure = first_failure(reader.WS(), false); !failure.empty()) not_readable(path, failure);
+  const Handle(XSControl_TransferReader) transfer = reader.WS()->TransferReader();
+  const Handle(StepData_StepModel) model = reader.StepModel();
+  ImportReport report;
+  TopTools_IndexedMapOfShape edges;
+  for (int i = 1; i <= reader.NbShapes(); ++i) TopExp::MapShapes(reader.Shape(i), TopAbs_EDGE, edges);
+  for (int i = 1; i <= edges.Extent(); ++i) {
+    const TopoDS_Edge& edge = TopoDS::Edge(edges(i));
+    double first = 0.0, last = 0.0;
+    const Handle(Geom_Curve) curve = BRep_Tool::Curve(edge, first, last);
+    const std::string type = curve.IsNull() ? std::string() : curve_type(curve);
+    if (type.empty()) {
+      ++report.skipped;
+      continue;
+    }
+    // Mode -1: search the whole transfer process (the edges of a GEOMETRIC_CURVE_SET are not bound
+    // to their curve entity directly).
+    const Handle(Standard_Transient) entity = transfer->EntityFromShapeResult(edge, -1);
+    const int number = entity.IsNull() ? 0 : model->Number(entity);
+    report.curves.push_back(
+        edge_curve(edge, entity.IsNull() ? std::string() : step_name(entity), number > 0 ? "#" + std::to_string(number) : "", type));
+  }
+  return report;
+}
+
+ImportReport read_iges(const fs::path& path) {
+  IGESControl_Controller::Init();
+  // Keep each B-spline whole: by default the reader splits curves at C0 knots into several edges.
+  Interface_Static::SetIVal("read.iges.bspline.continuity", 0);
+  IGESControl_Reader reader;
+  if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) not_readable(path, "the IGES reader refuses the file");
+  if (const auto failure = first_failure(reader.WS(), true); !failure.empty()) not_readable(path, failure);
+  const Handle(IGESData_IGESModel) model = reader.IGESModel();
+  ImportReport report;
+  // Curve entities one by one, so each keeps its name and directory entry; physically dependent
+  // ones (subordinate status 1: members of a composite curve, boundaries) belong to another entity.
+  for (int i = 1; i <= model->NbEntities(); ++i) {
+    const Handle(IGESData_IGESEntity) entity = model->Entity(i);
+    const int type = entity->TypeNumber();
+    const bool curve = type == 100 || type == 104 || type == 110 || type == 126;
+    if (!curve || entity->SubordinateStatus() == 1) continue;
+    if (!reader.TransferEntity(entity)) {
+      ++report.skipped;
+      continue;
+    }
+    TopTools_IndexedMapOfShape edges;
+    TopExp::MapShapes(reader.Shape(reader.NbShapes()), TopAbs_EDGE, edges);
+    const std::string name = entity->HasName() ? std::string(entity->NameValue()->ToCString()) : std::string();
+    const std::string source = "DE " + std::to_string(2 * model->Number(entity) - 1);
+    for (int e = 1; e <= edges.Extent(); ++e) {
+      const TopoDS_Edge& edge = TopoDS::Edge(edges(e));
+      double first = 0.0, last = 0.0;
+      const Handle(Geom_Curve) c = BRep_Tool::Curve(edge, first, last);
+      const std::string kind = c.IsNull() ? std::string() : curve_type(c);
+      if (kind.empty()) {
+        ++report.skipped;
+        continue;
+      }
+      report.curves.push_back(edge_curve(edge, name, source, kind));
+    }
+  }
+  return report;
+}
+
+}  // namespace
+
+ExportReport write_exchange_file(const ExportRequest& request) {
+  if (request.curves.empty())
+    throw Error(Errc::InvalidArgument, "nothing to export to '" + request.path.string() + "': no curves",
+                {.field = "curves"});
+  double max_deviation = 0.0;
+  for (const auto& c : request.curves) max_deviation = std::max(max_deviation, c.deviation);
+  const fs::path temporary = temporary_beside(request.path);
+  try {
+    if (request.format == ExchangeFormat::Iges)
+      write_iges(request, temporary, max_deviation);
+    else
+      write_step(request, temporary, max_deviation);
+  } catch (const Standard_Failure& f) {
+    std::error_code ec;
+    fs::remove(temporary, ec);
+    write_failed(request.path, std::string("Open CASCADE raised ") + f.DynamicType()->Name() + ": " + f.GetMessageString());
+  } catch (...) {
+    std::error_code ec;
+    fs::remove(temporary, ec);
+    throw;
+  }
+  commit_file(temporary, request.path);
+  return {request.path, request.format, request.curves.size(), max_deviation};
+}
+
+ImportReport read_exchange_file(const fs::path& path) {
+  const ExchangeFormat format = exchange_format_for_path(path);
+  const std::string head = file_head(path);
+  ImportReport report;
+  try {
+    if (format == ExchangeFormat::Iges) {
+      // An IGES file is 80-column records; the first is a Start ('S') or, in compressed form, 'C' line.
+      if (head.size() < 80 || (head[72] != 'S' && head[72] != 'C'))
+        not_readable(path, "not an IGES file (the first record has no 'S' in column 73)");
+      report = read_iges(path);
+    } else {
+      if (head.rfind("ISO-10303-21;", 0) != 0)
+        not_readable(path, "not a STEP file (it does not start with \"ISO-10303-21;\")");
+      report = read_step(path);
+    }
+  } catch (const Standard_Failure& f) {
+    not_readable(path, std::string("Open CASCADE raised ") + f.DynamicType()->Name() + ": " + f.GetMessageString());
+  }
+  if (report.curves.empty())
+    not_readable(path, "it holds no B-spline, line, circle or conic curve" +
+                           (report.skipped > 0 ? " (" + std::to_string(report.skipped) + " curves of other kinds)"
+                                               : std::string()));
+  return report;
+}
+
+}  // namespace hula::oli::detail

@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: MIT
+// JSON export and import of entities: the lossless exchange path (issue 11
+// item 9). One entity is written in its own file format — a curve as its curve
+// file, a point set as a points file, a study as its study file — so any
+// `hula` command reads it; several entities as a "hula-document" JSON file
+// (docs/formats.md "Document JSON"). Import reads any of these and adds new
+// entities (new labels) with provenance "import:json".
+#pragma once
+
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "hula/oli/document.hpp"
+
+namespace hula::oli {
+
+/// The kind shown to users: the curve's kind name ("nurbs", "bezier", "interpolated",
+/// "hermite", "law", "natural"), "point-set" or "study".
+[[nodiscard]] std::string entity_display_kind(const Entity& entity);
+
+/// The JSON to write for `labels`: one entity in its own format, several as a hula-document.
+/// @throws hula::Error(Errc::InvalidArgument) naming a label that is not in the document, or for no labels
+[[nodiscard]] Json export_json(const Document& document, std::span<const Label> labels);
+
+/// Adds the entities of `input` (a curve file, a points array, or a hula-document) inside a
+/// transaction; returns their new labels in file order.
+/// @param source the file name recorded in the provenance
+/// @throws hula::Error(Errc::ParseError) naming the member for anything else; the codecs' errors
+std::vector<Label> import_json(Edit& edit, const Json& input, std::string_view source);
+
+}  // namespace hula::oli

@@ -1,0 +1,23 @@
+// SPDX-License-Identifier: MIT
+// What every study setup carries besides its own members: which study it is,
+// the seed of its random streams and the number of worker threads (results
+// never depend on it). The file form is io/study_file.hpp's envelope.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+namespace hula::studies {
+
+/// The envelope of a study setup.
+struct StudyHeader {
+  /// Which study ("match-curvature", "fair-knots", ...).
+  std::string kind{};
+  /// Seed of the run's random streams. Default 1.
+  std::uint64_t seed = 1;
+  /// Worker threads (0 = all cores). Results never depend on it. Default 1.
+  std::size_t threads = 1;
+};
+
+}  // namespace hula::studies

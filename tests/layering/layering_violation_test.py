@@ -1,0 +1,49 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+"""Checks scripts/check_layering.py against deliberate violations: a copy of the
+real tree passes; the same copy with an upward include (nurbs including io), a
+header-only upward include (a curve header including diffgeom) and a foreign
+detail/ include fails, naming each file, line and included header."""
+import pathlib
+import shutil
+import subprocess
+import sys
+import tempfile
+
+root = pathlib.Path(sys.argv[1]).resolve()
+checker = root / "scripts" / "check_layering.py"
+
+
+def run(tree: pathlib.Path) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, str(checker), "--root", str(tree)], capture_output=True, text=True,
+                          timeout=120)
+
+
+def append(path: pathlib.Path, line: str) -> int:
+    text = path.read_text()
+    path.write_text(text + line + "\n")
+    return text.count("\n") + 1
+
+
+with tempfile.TemporaryDirectory() as tmp:
+    tree = pathlib.Path(tmp)
+    shutil.copytree(root / "cmake", tree / "cmake")
+    shutil.copytree(root / "src", tree / "src")
+    shutil.copytree(root / "apps", tree / "apps")
+    clean = run(tree)
+    assert clean.returncode == 0, "the real tree must pass:\n" + clean.stdout + clean.stderr
+
+    l1 = append(tree / "src/hula/nurbs/knot_vector.cpp", '#include "hula/io/json_curve.hpp"')
+    l2 = append(tree / "src/hula/curve/curve.hpp", '#include "hula/diffgeom/frenet.hpp"')
+    l3 = append(tree / "src/hula/studies/knot_fairing.cpp", '#include "hula/nurbs/detail/homogeneous.hpp"')
+    bad = run(tree)
+    assert bad.returncode == 1, "violations must fail the check:\n" + bad.stdout
+    expected = [
+        f'src/hula/nurbs/knot_vector.cpp:{l1} includes "hula/io/json_curve.hpp" (io is not below nurbs)',
+        f'src/hula/curve/curve.hpp:{l2} includes "hula/diffgeom/frenet.hpp" (diffgeom is not below curve)',
+        f'src/hula/studies/knot_fairing.cpp:{l3} includes "hula/nurbs/detail/homogeneous.hpp" (detail/ is private to nurbs)',
+    ]
+    for e in expected:
+        assert ("layering violation: " + e) in bad.stdout, f"missing: {e}\n--- output:\n{bad.stdout}"
+    assert bad.stdout.count("layering violation:") == 3, bad.stdout
+print("layering check: clean tree passes, 3 deliberate violations reported")
