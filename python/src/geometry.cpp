@@ -140,7 +140,7 @@ NurbsCurve from_json(py::handle value) {
   } else {
     throw Error(Errc::InvalidArgument, "document must be a JSON string or a dict", {.field = "document"});
   }
-  return io::parse_curve_json(text).curve;
+  return io::parse_curve_json(text).nurbs();
 }
 
 nurbs::EndCondition end_condition(py::handle value, const std::string& name) {
@@ -349,13 +349,13 @@ void register_geometry(py::module_& m) {
       .def("to_json", &to_json_text)
       .def_static("from_json", &from_json, py::arg("document"))
       .def_static(
-          "load", [](const std::string& path) { return io::read_curve_file(path).curve; }, py::arg("path"))
+          "load", [](const std::string& path) { return io::read_curve_file(path).nurbs(); }, py::arg("path"))
       .def(
           "save", [](const NurbsCurve& c, const std::string& path) { io::write_curve_file(path, c); },
           py::arg("path"))
       .def(py::self == py::self)  // NOLINT(misc-redundant-expression)
       .def(py::pickle([](const NurbsCurve& c) { return to_json_text(c); },
-                      [](const std::string& text) { return io::parse_curve_json(text).curve; }))
+                      [](const std::string& text) { return io::parse_curve_json(text).nurbs(); }))
       .def("__repr__", [](const NurbsCurve& c) {
         return "NurbsCurve(degree=" + std::to_string(c.degree()) +
                ", control_points=" + std::to_string(c.control_points().size()) +
