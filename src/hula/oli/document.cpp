@@ -236,6 +236,22 @@ std::unique_ptr<Document::Impl> load_snapshot(const store::Snapshot& snap, const
   return impl;
 }
 
+// The outcome of a committed step, after every observer has seen its change set.
+// Observers cannot undo a commit; their failure is theirs (document.hpp).
+Outcome committed(const Document::Impl& m, ChangeSet changes) {
+  for (const auto& [id, observer] : m.observers) {
+    try {
+      observer(changes);
+    } catch (...) {
+    }
+  }
+  Outcome out;
+  out.committed = true;
+  out.revision = m.revision;
+  out.changes = std::move(changes);
+  return out;
+}
+
 }  // namespace
 
 Document Document::open(const std::filesystem::path& path, OpenMode mode, std::optional<std::size_t> undo_limit) {
@@ -424,18 +440,7 @@ Outcome Document::transact(std::string_view name, const std::function<void(Edit&
     m.revision += 1;
   }
   changes.revision = m.revision;
-  Outcome out;
-  out.committed = true;
-  out.revision = m.revision;
-  out.changes = changes;
-  for (const auto& [id, observer] : m.observers) {
-    try {
-      observer(changes);
-    } catch (...) {
-      // Observers cannot undo a commit; their failure is theirs (document.hpp).
-    }
-  }
-  return out;
+  return committed(m, std::move(changes));
 }
 
 namespace {
@@ -484,17 +489,7 @@ Outcome cross_step(Document::Impl& m, bool undoing) {
     m.redo.pop_back();
   }
   m.revision = new_revision;
-  Outcome out;
-  out.committed = true;
-  out.revision = m.revision;
-  out.changes = changes;
-  for (const auto& [id, observer] : m.observers) {
-    try {
-      observer(changes);
-    } catch (...) {
-    }
-  }
-  return out;
+  return committed(m, std::move(changes));
 }
 
 }  // namespace
