@@ -1,18 +1,30 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # Builds the libFuzzer targets with the `fuzz` preset (clang-14, ASan + UBSan)
-# and runs each for a short time on its corpus. New crashers are written to
+# and runs each for a bounded time on its corpus: the law parser and every
+# reader (curve, points, problem, study, profile). New crashers are written to
 # fuzz/corpus/<target>/ (-artifact_prefix), where the corpus regression tests
 # replay them with the ordinary build; the run fails if a crash is found.
-#   scripts/fuzz.sh [seconds per target, default 30]
+#   scripts/fuzz.sh [seconds per target, default 20]
+# Six targets at 20 s keep the whole fuzz step near two minutes of CI time.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-seconds="${1:-30}"
+seconds="${1:-20}"
+targets=(law_parser curve_reader points_reader problem_reader study_reader profile_reader)
 cmake --preset fuzz
-cmake --build --preset fuzz --target fuzz_law_parser
+cmake --build --preset fuzz --target "${targets[@]/#/fuzz_}"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
-# Explore into a scratch corpus seeded from the tracked one, so the repository only gains crashers.
-cp fuzz/corpus/law_parser/* "$work/"
-./build/fuzz/fuzz/fuzz_law_parser "$work" fuzz/corpus/law_parser -max_total_time="$seconds" -max_len=4096 \
-  -timeout=10 -artifact_prefix=fuzz/corpus/law_parser/ -print_final_stats=1
+status=0
+for t in "${targets[@]}"; do
+  # Explore into a scratch corpus seeded from the tracked one, so the repository only gains crashers.
+  mkdir -p "$work/$t"
+  cp fuzz/corpus/"$t"/* "$work/$t/"
+  # -rss_limit_mb: an input must never need more than 2 GB (sizes are capped by the readers).
+  if ! ./build/fuzz/fuzz/fuzz_"$t" "$work/$t" -max_total_time="$seconds" -max_len=65536 -timeout=10 \
+      -rss_limit_mb=2048 -artifact_prefix=fuzz/corpus/"$t"/ -print_final_stats=1; then
+    echo "fuzz: $t found a failing input (saved under fuzz/corpus/$t/)" >&2
+    status=1
+  fi
+done
+exit "$status"

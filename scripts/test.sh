@@ -3,19 +3,19 @@
 # Quick start, part 2: install what is missing, build the `ci` configuration
 # (RelWithDebInfo, -Werror, _GLIBCXX_ASSERTIONS, Open CASCADE required) and
 # check that the tracked C++ sources are clang-format clean, fuzz the law
-# parser for 30 s when clang-14 is installed, and run every test label
-# (unit, property, oracle, golden), then the web workbench's checks, unit
-# tests, build and end-to-end tests (scripts/web.sh --e2e), and last ctest,
-# so ctest's summary closes the output.
+# parser and every reader for 20 s each (about two minutes) when clang-14 is
+# installed, and run every test label (unit, property, oracle, golden), then
+# the web workbench's checks, unit tests, build and end-to-end tests
+# (scripts/web.sh --e2e), and last ctest, so ctest's summary closes the output.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup-debian.sh
 cmake --preset ci
 cmake --build --preset ci
 scripts/format.sh --check
-# The parser fuzzer, briefly (STYLE.md CI step 7); HULA_CI_FUZZ_SECONDS=0 skips it.
-if [ "${HULA_CI_FUZZ_SECONDS:-30}" != "0" ] && command -v clang++-14 >/dev/null 2>&1; then
-  scripts/fuzz.sh "${HULA_CI_FUZZ_SECONDS:-30}"
+# The fuzzers, briefly (STYLE.md CI step 7; seconds per target); HULA_CI_FUZZ_SECONDS=0 skips them.
+if [ "${HULA_CI_FUZZ_SECONDS:-20}" != "0" ] && command -v clang++-14 >/dev/null 2>&1; then
+  scripts/fuzz.sh "${HULA_CI_FUZZ_SECONDS:-20}"
 fi
 # The web workbench: lint, format, types, unit tests, build, and the e2e
 # tests in chromium against this build's `hula serve` (a build without the

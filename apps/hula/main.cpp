@@ -1,21 +1,39 @@
 // SPDX-License-Identifier: MIT
 // `hula`: the HulaHoops command line. Thin: parses the command line (CLI11),
-// calls the pure kernel and io functions, prints machine-readable JSON on
-// stdout, and turns errors into an exit code plus the error JSON on stderr
-// (DESIGN.md "Errors": boundaries turn hula::Error into a status).
+// calls the pure kernel and io functions, prints JSON on stdout, and turns
+// errors into an exit code plus a message on stderr (DESIGN.md "Errors":
+// boundaries turn hula::Error into a status). Errors are one readable line
+// when stderr is a terminal and the error JSON otherwise, or as chosen with
+// --error-format text|json.
 //
-// Exit codes: 0 ok; 2 usage (command-line errors); 3 invalid input (any
-// hula::Error except NumericalFailure, including IoError); 4 numerical
-// failure (hula::Error NumericalFailure); 5 internal error (a bug).
+// Exit codes: 0 ok; 2 usage (command-line errors, numbers out of range);
+// 3 invalid input (any hula::Error except NumericalFailure, including
+// IoError and a standard output that cannot be written); 4 numerical failure
+// (hula::Error NumericalFailure); 5 internal error (a bug); 6 out of memory.
+//
+// SIGPIPE and SIGXFSZ are ignored so that a closed pipe or a file-size limit
+// turns into a failed write(2) that is reported (exit 3), not a silent death.
+// A closed standard descriptor (`>&-`) is reserved with /dev/null opened
+// read-only, so that no file hula opens can take its number (output meant for
+// stdout must never land in a curve file) and writes to it fail with EBADF.
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
+#include <csignal>
+#include <cstring>
 #include <exception>
 #include <iostream>
+#include <new>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "commands/common.hpp"
 #include "commands/doc.hpp"
 #include "hula/core/error.hpp"
 #include "hula/io/error_json.hpp"
+#include "hula/io/json_write.hpp"
 
 #ifndef HULA_VERSION
 #define HULA_VERSION "unknown"
@@ -25,8 +43,38 @@ namespace {
 
 using hula::cli::Json;
 
+enum class ErrorFormat { Text, JsonDocument };
+
+ErrorFormat g_error_format = ErrorFormat::JsonDocument;
+
+// The --error-format value, read from argv before CLI11 parses (usage errors
+// are reported in the chosen format too); default: text on a terminal.
+ErrorFormat error_format_from_argv(int argc, char** argv) {
+  ErrorFormat format = ::isatty(STDERR_FILENO) == 1 ? ErrorFormat::Text : ErrorFormat::JsonDocument;
+  for (int i = 1; i < argc; ++i) {
+    std::string_view arg = argv[i];
+    std::string_view value;
+    if (arg == "--error-format" && i + 1 < argc)
+      value = argv[i + 1];
+    else if (arg.starts_with("--error-format="))
+      value = arg.substr(std::string_view("--error-format=").size());
+    if (value == "text") format = ErrorFormat::Text;
+    if (value == "json") format = ErrorFormat::JsonDocument;
+  }
+  return format;
+}
+
+// Writes the error on stderr; a failing stderr leaves nothing else to report to.
 void print_error(const Json& error) {
-  std::cerr << error.dump(2, ' ', false, Json::error_handler_t::replace) << '\n';
+  std::string text;
+  if (g_error_format == ErrorFormat::JsonDocument) {
+    text = hula::io::format_json(error);
+  } else {
+    const Json& body = error["error"];
+    text = "hula: error: " + body.value("message", std::string()) + " [" + body.value("code", std::string()) + "]\n";
+  }
+  std::cout.flush();
+  std::cerr << text;
   std::cerr.flush();
 }
 
@@ -41,42 +89,69 @@ Json plain_error(const std::string& code, const std::string& message) {
 }
 
 constexpr const char* kFooter =
-    "Output: JSON on stdout. Errors: {\"error\": {\"code\", \"message\", \"where\"}} on stderr.\n"
-    "Exit codes: 0 ok, 2 usage error, 3 invalid input (including unreadable or unwritable files),\n"
-    "4 numerical failure, 5 internal error.";
+    "Files: every input file may be - (standard input) and every -o/--output - (standard output).\n"
+    "Output: JSON on stdout. Errors: one line on a terminal, else {\"error\": {\"code\", \"message\", \"where\"}}\n"
+    "on stderr (--error-format text|json chooses).\n"
+    "Exit codes: 0 ok, 2 usage error, 3 invalid input (including unreadable or unwritable files and a failing\n"
+    "standard output), 4 numerical failure, 5 internal error, 6 out of memory.";
+
+// Prints the help text (plain `hula`, `hula --help`), checked like any output.
+int print_help(const CLI::App& app) {
+  hula::cli::print_text(app.help());
+  return hula::cli::kExitOk;
+}
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"hula: HulaHoops NURBS curve workbench (default command: demo)", "hula"};
+  for (int fd = STDIN_FILENO; fd <= STDERR_FILENO; ++fd) {
+    if (::fcntl(fd, F_GETFD) == -1) {
+      const int reserved = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
+      if (reserved >= 0 && reserved != fd) {
+        ::dup2(reserved, fd);
+        ::close(reserved);
+      }
+    }
+  }
+  std::signal(SIGPIPE, SIG_IGN);
+  std::signal(SIGXFSZ, SIG_IGN);
+  g_error_format = error_format_from_argv(argc, argv);
+
+  CLI::App app{"hula: HulaHoops NURBS curve workbench", "hula"};
   app.set_version_flag("--version", std::string("hula ") + HULA_VERSION);
   app.footer(kFooter);
   app.require_subcommand(0, 1);
-  std::vector<hula::cli::Command> commands = {
-      hula::cli::add_interpolate(app),
-      hula::cli::add_eval(app),
-      hula::cli::add_info(app),
-      hula::cli::add_demo(app),
-      hula::cli::add_law(app),
-      hula::cli::add_analyse(app),
-      hula::cli::add_reconstruct(app),
-      hula::cli::add_optimise(app),
-      hula::cli::add_fair_knots(app),
-      hula::cli::add_fin_compound(app),
-      hula::cli::add_edit_projection(app),
-      hula::cli::add_hermite(app),
-      hula::cli::add_match_curvature(app),
-      hula::cli::add_match_curvature_torsion(app),
-      hula::cli::add_doc(app),
-      hula::cli::add_edit(app),
-      hula::cli::add_approximate(app),
-      hula::cli::add_closest(app),
-      hula::cli::add_deviation(app),
-      hula::cli::add_continuity(app),
-      hula::cli::add_energy(app),
-      hula::cli::add_serve(app),
-  };
+  app.fallthrough();
+  std::string error_format_name;
+  app.add_option("--error-format", error_format_name,
+                 "How errors are printed on stderr: text (one line) or json (default: text on a terminal, else json)")
+      ->check(CLI::IsMember({"text", "json"}));
   try {
+    std::vector<hula::cli::Command> commands = {
+        hula::cli::add_interpolate(app),
+        hula::cli::add_eval(app),
+        hula::cli::add_info(app),
+        hula::cli::add_demo(app),
+        hula::cli::add_law(app),
+        hula::cli::add_analyse(app),
+        hula::cli::add_reconstruct(app),
+        hula::cli::add_optimise(app),
+        hula::cli::add_fair_knots(app),
+        hula::cli::add_fin_compound(app),
+        hula::cli::add_edit_projection(app),
+        hula::cli::add_hermite(app),
+        hula::cli::add_match_curvature(app),
+        hula::cli::add_match_curvature_torsion(app),
+        hula::cli::add_doc(app),
+        hula::cli::add_edit(app),
+        hula::cli::add_approximate(app),
+        hula::cli::add_closest(app),
+        hula::cli::add_deviation(app),
+        hula::cli::add_continuity(app),
+        hula::cli::add_energy(app),
+        hula::cli::add_serve(app),
+    };
+    commands.push_back(hula::cli::add_completion(app));
     try {
       app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -85,16 +160,26 @@ int main(int argc, char** argv) {
       return app.exit(e);
     } catch (const CLI::CallForVersion& e) {
       return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-      print_error(plain_error("UsageError", e.what()));
-      return hula::cli::kExitUsage;
     }
     for (const auto& command : commands)
       if (command.app->parsed()) return command.run();
-    return hula::cli::run_demo();
+    return print_help(app);
+  } catch (const CLI::ParseError& e) {
+    print_error(plain_error("UsageError", e.what()));
+    return hula::cli::kExitUsage;
   } catch (const hula::Error& e) {
     print_error(hula::io::error_to_json(e));
     return e.code() == hula::Errc::NumericalFailure ? hula::cli::kExitNumerical : hula::cli::kExitInvalidInput;
+  } catch (const std::bad_alloc&) {
+    // No allocation-heavy work here: the message is short and the stack is unwound.
+    print_error(plain_error("OutOfMemory",
+                            "out of memory: the run needs more memory than the system (or its address-space limit) "
+                            "allows; reduce --population, --dimension, --samples or the input size (docs/cli.md "
+                            "\"Limits\")"));
+    return hula::cli::kExitOutOfMemory;
+  } catch (const std::length_error&) {
+    print_error(plain_error("OutOfMemory", "out of memory: a requested size exceeds what can be allocated"));
+    return hula::cli::kExitOutOfMemory;
   } catch (const std::exception& e) {
     print_error(plain_error("InternalError", e.what()));
     return hula::cli::kExitInternal;

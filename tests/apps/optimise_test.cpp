@@ -126,10 +126,6 @@ TEST(CliOptimise, BadOptionsExit3NamingTheField) {
     std::string in_message;
   };
   const std::vector<Case> cases = {
-      {{"--problem", "sphere", "--algorithm", "ga-real", "--population", "0"}, "population", "population = 0"},
-      {{"--problem", "sphere", "--algorithm", "ga-real", "--crossover", "1.5"},
-       "crossover_probability",
-       "crossover_probability = 1.5"},
       {{"--problem", "sphere", "--dimension", "2", "--algorithm", "ga-real", "--lower", "0,1", "--upper", "1,0.5"},
        "variables[1].lower",
        "variables[1].lower = 1"},
@@ -137,10 +133,7 @@ TEST(CliOptimise, BadOptionsExit3NamingTheField) {
       {{"--problem", "zdt1", "--algorithm", "nsga2", "--reference", "1,1,1"}, "reference", "3 values"},
       {{"--problem", "sphere", "--algorithm", "ga-real", "--boost", "1,8"}, "boost", "ga-real"},
       {{"--problem", "sphere", "--algorithm", "ga-real", "--reference", "1"}, "reference", "several objectives"},
-      {{"--problem", "sphere", "--algorithm", "ga-binary"}, "variables[0].precision", "precision"},
-      {{"--problem", "sphere", "--algorithm", "ga-real", "--time", "-1"},
-       "stop.wall_time_seconds",
-       "wall_time_seconds = -1"},
+      {{"--problem", "sphere", "--algorithm", "ga-binary"}, "precision", "--precision"},
   };
   for (const Case& c : cases) {
     const ProcessResult r = hula(c.args);
@@ -154,7 +147,7 @@ TEST(CliOptimise, BadOptionsExit3NamingTheField) {
 }
 
 // checks: unknown problems and algorithms exit 3 (InvalidArgument naming the field); command-line
-// errors (no problem, both --generations and --evaluations, a non-number) exit 2.
+// errors (no problem, both --generations and --evaluations, a non-number, a number out of range) exit 2.
 TEST(CliOptimise, UnknownNamesExit3UsageErrorsExit2) {
   const ProcessResult p = hula({"--problem", "zdt5", "--algorithm", "nsga2"});
   EXPECT_EQ(p.exit_code, 3);
@@ -168,7 +161,11 @@ TEST(CliOptimise, UnknownNamesExit3UsageErrorsExit2) {
            {"--problem", "zdt1"},
            {"--problem", "zdt1", "--problem-file", "p.json", "--algorithm", "nsga2"},
            {"--problem", "zdt1", "--algorithm", "nsga2", "--generations", "3", "--evaluations", "300"},
-           {"--problem", "zdt1", "--algorithm", "nsga2", "--population", "many"}}) {
+           {"--problem", "zdt1", "--algorithm", "nsga2", "--population", "many"},
+           // Out-of-range numbers are usage errors quoting the flag (issue 10).
+           {"--problem", "sphere", "--algorithm", "ga-real", "--population", "0"},
+           {"--problem", "sphere", "--algorithm", "ga-real", "--crossover", "1.5"},
+           {"--problem", "sphere", "--algorithm", "ga-real", "--time", "-1"}}) {
     const ProcessResult r = hula(args);
     EXPECT_EQ(r.exit_code, 2) << r.err;
     EXPECT_EQ(error_of(r)["code"], "UsageError");
@@ -183,10 +180,10 @@ TEST(CliOptimise, EvaluationBudget) {
   EXPECT_LE(j["report"]["evaluations"].get<int>(), 200);
 }
 
-// checks: --time 0.2 on a run of a billion generations ends with WallTime and a best solution.
+// checks: --time 0.2 on a run of a hundred million generations ends with WallTime and a best solution.
 TEST(CliOptimise, WallTimeEndsTheRunWithTheBestSoFar) {
   const json j = output(hula({"--problem", "sphere", "--algorithm", "ga-real", "--population", "10", "--generations",
-                              "1000000000", "--time", "0.2"}));
+                              "100000000", "--time", "0.2"}));
   EXPECT_EQ(j["report"]["termination"], "WallTime");
   EXPECT_GE(j["report"]["seconds"].get<double>(), 0.2);
   ASSERT_EQ(j["best"]["objectives"].size(), 1u);
@@ -198,7 +195,7 @@ TEST(CliOptimise, WallTimeEndsTheRunWithTheBestSoFar) {
 TEST(CliOptimise, SigintCancelsWithTheBestSoFar) {
   hula::testing::RunningProcess p =
       hula::testing::start_process(HULA_CLI_PATH, {"optimise", "--problem", "zdt1", "--algorithm", "nsga2",
-                                                   "--population", "20", "--generations", "1000000000", "--progress"});
+                                                   "--population", "20", "--generations", "100000000", "--progress"});
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
   while (p.err_so_far().find("\"generation\"") == std::string::npos) {
     ASSERT_LT(std::chrono::steady_clock::now(), deadline) << "no progress line on stderr";

@@ -135,7 +135,8 @@ TEST(JsonCurveErrors, UnknownKindNamesTheKind) {
   HULA_EXPECT_ERROR(parse_curve_json(R"({"kind": "clothoid"})"), Errc::ParseError, "kind = \"clothoid\"");
   EXPECT_EQ(parse_error_of(R"({"kind": "clothoid"})").where().field, "kind");
   HULA_EXPECT_ERROR(parse_curve_json(R"({"kind": 7})"), Errc::ParseError, "kind = 7 must be a string");
-  HULA_EXPECT_ERROR(parse_curve_json(R"([1, 2])"), Errc::ParseError, "document = [1,2] must be a JSON object");
+  HULA_EXPECT_ERROR(parse_curve_json(R"([1, 2])"), Errc::ParseError,
+                    "document = an array of 2 elements must be a JSON object");
 }
 
 // checks: a missing member is named.
@@ -170,7 +171,7 @@ TEST(JsonCurveErrors, WrongTypeNamesPathAndValue) {
   HULA_EXPECT_ERROR(parse_curve_json(R"({"kind": "bezier", "control_points": [[0, 0], [1, 1]], "weights": "yes"})"),
                     Errc::ParseError, "weights = \"yes\" must be an array");
   HULA_EXPECT_ERROR(parse_curve_json(R"({"kind": "bezier", "control_points": [[0, 0], [1, 1, 2, 3]]})"),
-                    Errc::ParseError, "control_points[1] = [1,1,2,3] must be an array of 2 or 3 numbers");
+                    Errc::ParseError, "control_points[1] = an array of 4 elements must be an array of 2 or 3 numbers");
   {
     // Parsing 1e999 overflows inside strtod (FE_OVERFLOW): untrap it in Debug test builds.
     const testing::FpeGuard overflow_is_expected;

@@ -52,7 +52,7 @@ TEST(PointsFile, CsvWithCommentsAndBlanks) {
 // checks: a CSV field that is not a number names line and column (1-based).
 TEST(PointsFileErrors, CsvBadNumberNamesLineAndColumn) {
   const std::string text = "# header\n0,0,0\n1, 2x,3\n";
-  HULA_EXPECT_ERROR(parse_points(text), Errc::ParseError, "line 3, column 4: \"2x\" is not a number");
+  HULA_EXPECT_ERROR(parse_points(text), Errc::ParseError, "line 3, column 4: the 2-character field is not a number");
   const Error e = error_of(text);
   EXPECT_EQ(e.where().line, 3u);
   EXPECT_EQ(e.where().column, 4u);

@@ -12,6 +12,7 @@
 #include <numbers>
 
 #include "commands/common.hpp"
+#include "commands/study_common.hpp"
 #include "hula/core/error.hpp"
 #include "hula/diffgeom/bishop.hpp"
 #include "hula/diffgeom/continuity.hpp"
@@ -295,6 +296,7 @@ void write_svgs(const std::filesystem::path& dir, const curve::Curve& subject) {
 }
 
 int run_analyse(const AnalyseArgs& a) {
+  if (!a.svg.empty()) check_svg_directory(a.svg);  // before the computation, not after
   const curve::Curve subject = io::read_curve_file(a.curve);
   const Interval dom = subject.domain();
   const bool by_length = a.by == "arclength";

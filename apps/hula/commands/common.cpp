@@ -5,16 +5,90 @@
 #include <charconv>
 #include <cmath>
 #include <iostream>
+#include <limits>
 
 #include "hula/core/error.hpp"
 #include "hula/core/tolerance.hpp"
+#include "hula/io/atomic_file.hpp"
+#include "hula/io/json_write.hpp"
 #include "hula/nurbs/arc_length.hpp"
 
 namespace hula::cli {
 
-void print_json(const Json& document) {
-  std::cout << document.dump(2, ' ', false, Json::error_handler_t::replace) << '\n';
-  std::cout.flush();
+void print_json(const Json& document) { io::write_stdout(io::format_json(document)); }
+
+void print_result(const Json& document, std::string_view output) {
+  if (!io::is_std_stream(std::filesystem::path(output))) print_json(document);
+}
+
+void print_text(std::string_view text) { io::write_stdout(text); }
+
+OutputFormat output_format_from_name(std::string_view name) {
+  if (name == "json") return OutputFormat::JsonDocument;
+  if (name == "jsonl") return OutputFormat::JsonLines;
+  if (name == "csv") return OutputFormat::Csv;
+  if (name == "text") return OutputFormat::Text;
+  throw CLI::ValidationError("--format " + std::string(name), "must be json, jsonl, csv or text");
+}
+
+namespace {
+// At most a few characters of what the user typed, for messages.
+std::string shown(std::string_view text) {
+  constexpr std::size_t kMax = 24;
+  return text.size() <= kMax ? std::string(text) : std::string(text.substr(0, kMax)) + "...";
+}
+
+std::string range_text(long long lo, long long hi) {
+  if (hi == std::numeric_limits<long long>::max()) return ">= " + std::to_string(lo);
+  return "in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+}
+}  // namespace
+
+long long parse_integer_option(std::string_view text, std::string_view flag, long long lo, long long hi, bool even) {
+  const std::string rule = std::string("must be ") + (even ? "an even number " : "an integer ") + range_text(lo, hi);
+  std::string_view s = text;
+  if (s.size() > 1 && s.front() == '+') s.remove_prefix(1);
+  long long v = 0;
+  const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  const std::string head = std::string(flag) + " " + shown(text);
+  if (ec == std::errc::result_out_of_range)
+    throw CLI::ValidationError(head, "outside the signed 64-bit range; " + rule);
+  if (s.empty() || ec != std::errc() || ptr != s.data() + s.size())
+    throw CLI::ValidationError(head, "not an integer; " + rule);
+  if (v < lo || v > hi || (even && v % 2 != 0)) throw CLI::ValidationError(head, rule);
+  return v;
+}
+
+double parse_real_option(std::string_view text, std::string_view flag, double lo, double hi, bool lo_open) {
+  const auto fmt = [](double x) { return format_number(x); };
+  std::string rule;
+  if (hi == std::numeric_limits<double>::max())
+    rule = std::string("must be a number ") + (lo_open ? "> " : ">= ") + fmt(lo);
+  else
+    rule = std::string("must be a number in ") + (lo_open ? "(" : "[") + fmt(lo) + ", " + fmt(hi) + "]";
+  std::string_view s = text;
+  if (s.size() > 1 && s.front() == '+') s.remove_prefix(1);
+  double v = 0.0;
+  const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  const std::string head = std::string(flag) + " " + shown(text);
+  if (ec == std::errc::result_out_of_range) throw CLI::ValidationError(head, "outside the range of a double; " + rule);
+  if (s.empty() || ec != std::errc() || ptr != s.data() + s.size())
+    throw CLI::ValidationError(head, "not a number; " + rule);
+  if (!std::isfinite(v) || v < lo || v > hi || (lo_open && v == lo)) throw CLI::ValidationError(head, rule);
+  return v;
+}
+
+CLI::Option* add_real_option(CLI::App* sub, const std::string& flags, std::optional<double>& target, double lo,
+                             double hi, bool lo_open, const std::string& help) {
+  const std::string flag = "--" + flags.substr(flags.rfind("--") + 2);
+  return sub
+      ->add_option_function<std::string>(
+          flags,
+          [&target, flag, lo, hi, lo_open](const std::string& text) {
+            target = parse_real_option(text, flag, lo, hi, lo_open);
+          },
+          help)
+      ->type_name("NUMBER");
 }
 
 Json vec_to_json(const Vec3& v, int dimension) {

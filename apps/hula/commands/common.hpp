@@ -27,17 +27,74 @@ namespace hula::cli {
 
 using Json = io::Json;
 
-/// Exit codes of `hula` (documented in docs/cli.md and `hula --help`).
+/// Exit codes of `hula` (documented in docs/cli.md, docs/errors.md and `hula --help`).
 enum ExitCode : int {
   kExitOk = 0,            ///< success; the result JSON is on stdout
-  kExitUsage = 2,         ///< bad command line (unknown option, missing argument); error JSON on stderr
+  kExitUsage = 2,         ///< bad command line (unknown option, missing argument, a number out of range)
   kExitInvalidInput = 3,  ///< hula::Error other than NumericalFailure: bad file, bad value, I/O failure
+                          ///< (including a standard output that cannot be written)
   kExitNumerical = 4,     ///< hula::Error(NumericalFailure): overflow or no convergence
   kExitInternal = 5,      ///< a bug in hula (InternalError or an unexpected exception)
+  kExitOutOfMemory = 6,   ///< memory ran out (or an address-space limit was reached)
 };
 
-/// Prints a JSON document on stdout (2-space indentation, final newline).
+/// Documented upper bounds of the sizes the command line accepts (docs/cli.md
+/// "Limits"): within them a run needs at most a few GB; beyond them it is
+/// refused before it starts instead of running out of memory half-way.
+inline constexpr long long kMaxPopulation = 1'000'000;
+inline constexpr long long kMaxGenerations = 100'000'000;
+inline constexpr long long kMaxEvaluations = 1'000'000'000'000;
+inline constexpr long long kMaxDimension = 100'000;
+inline constexpr long long kMaxObjectives = 64;
+inline constexpr long long kMaxSamples = 1'000'000;
+inline constexpr long long kMaxThreads = 1024;
+/// The largest seed: seeds are signed 64-bit on the command line and in files.
+inline constexpr long long kMaxSeed = 9'223'372'036'854'775'807;
+
+/// Output shapes of commands that print records (--format).
+enum class OutputFormat { JsonDocument, JsonLines, Csv, Text };
+/// Parses json | jsonl | csv | text.
+/// @throws CLI::ValidationError naming --format
+[[nodiscard]] OutputFormat output_format_from_name(std::string_view name);
+
+/// Prints a JSON document on stdout (io::format_json: 2-space indentation,
+/// arrays of numbers on one line, no -0.0, final newline).
+/// @throws hula::Error(Errc::IoError) when standard output cannot be written (exit 3)
 void print_json(const Json& document);
+/// Prints the command's JSON result, unless its -o/--output is `-`: then the
+/// written file is what stdout carries (a pipe to the next command), alone.
+void print_result(const Json& document, std::string_view output);
+/// Prints text on stdout, checked like print_json.
+void print_text(std::string_view text);
+
+/// Parses an integer option as signed 64-bit and checks it is in [lo, hi]
+/// (and even when `even`). The message quotes the flag and what the user typed:
+/// "--population -5: must be an even number in [2, 1000000]".
+/// @throws CLI::ValidationError (exit 2, usage)
+[[nodiscard]] long long parse_integer_option(std::string_view text, std::string_view flag, long long lo, long long hi,
+                                             bool even = false);
+/// Parses a finite real option in [lo, hi] (lo excluded when `lo_open`).
+/// @throws CLI::ValidationError "--time 0: must be a number > 0" (exit 2, usage)
+[[nodiscard]] double parse_real_option(std::string_view text, std::string_view flag, double lo, double hi,
+                                       bool lo_open = false);
+
+/// Adds an integer option parsed by parse_integer_option into `target`.
+template <class T>
+CLI::Option* add_integer_option(CLI::App* sub, const std::string& flags, std::optional<T>& target, long long lo,
+                                long long hi, const std::string& help, bool even = false) {
+  const std::string flag = "--" + flags.substr(flags.rfind("--") + 2);
+  return sub
+      ->add_option_function<std::string>(
+          flags,
+          [&target, flag, lo, hi, even](const std::string& text) {
+            target = static_cast<T>(parse_integer_option(text, flag, lo, hi, even));
+          },
+          help)
+      ->type_name("INT");
+}
+/// Adds a real option parsed by parse_real_option into `target`.
+CLI::Option* add_real_option(CLI::App* sub, const std::string& flags, std::optional<double>& target, double lo,
+                             double hi, bool lo_open, const std::string& help);
 
 /// [x, y, z], or [x, y] when dimension is 2.
 [[nodiscard]] Json vec_to_json(const Vec3& v, int dimension);
@@ -133,6 +190,8 @@ struct Command {
 [[nodiscard]] Command add_continuity(CLI::App& app);
 /// `hula energy`: bending and curvature-variation energies.
 [[nodiscard]] Command add_energy(CLI::App& app);
+/// `hula completion bash`: a completion script generated from the registered commands.
+[[nodiscard]] Command add_completion(CLI::App& app);
 /// Runs the demo and prints its JSON.
 int run_demo();
 

@@ -9,6 +9,7 @@
 
 #include "commands/common.hpp"
 #include "commands/editing_common.hpp"
+#include "hula/io/atomic_file.hpp"
 #include "hula/io/editing_study_file.hpp"
 #include "hula/io/json_curve.hpp"
 
@@ -22,6 +23,7 @@ struct EditProjectionArgs {
 };
 
 int run_edit_projection(const EditProjectionArgs& a) {
+  if (!a.output.empty()) io::check_output_path(a.output, "--output");
   const io::StudyDocument doc = load_study(a.study, "edit-projection");
   const io::EditProjectionStudy s = io::read_edit_projection_study(doc);
   const studies::ProjectionEditResult r = studies::edit_projection(s.curve.nurbs(), s.edited.nurbs(), s.plane);
@@ -55,7 +57,7 @@ int run_edit_projection(const EditProjectionArgs& a) {
     }
   }
   record_run(out, s.header, a.study);
-  print_json(out);
+  print_result(out, a.output);
   return kExitOk;
 }
 
@@ -65,7 +67,7 @@ Command add_edit_projection(CLI::App& app) {
   auto args = std::make_shared<EditProjectionArgs>();
   CLI::App* sub = app.add_subcommand("edit-projection",
                                      "Replace one projection of a 3-D curve by an edited planar curve (thesis 8.1)");
-  add_study_options(sub, args->study);
+  add_study_options(sub, args->study, false);
   sub->add_option("-o,--output", args->output, "Write the rebuilt curve file, atomically");
   return {sub, [args] { return run_edit_projection(*args); }};
 }

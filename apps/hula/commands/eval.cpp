@@ -6,6 +6,7 @@
 
 #include "commands/common.hpp"
 #include "hula/core/error.hpp"
+#include "hula/io/json_write.hpp"
 #include "hula/io/law_values.hpp"
 
 namespace hula::cli {
@@ -18,7 +19,57 @@ struct EvalArgs {
   std::string side = "right";
   bool extrapolate = false;
   bool clamp = false;
+  std::string format = "json";
 };
+
+// Prints the results in the chosen --format: the JSON document, one JSON
+// record per line (jsonl), CSV rows "t,x,y[,z],dx,dy[,dz],..." under a
+// comment line "# t x y z dx ..." (no commas: it survives `cut -d, -f2-`,
+// after which the rows read back as a points file), or text lines
+// "t = 0.5: [x, y, z] [dx, dy, dz]".
+void print_results(const Json& results, int dimension, int derivatives, OutputFormat format) {
+  if (format == OutputFormat::JsonDocument) {
+    Json doc = Json::object();
+    doc["results"] = results;
+    print_json(doc);
+    return;
+  }
+  std::string out;
+  if (format == OutputFormat::Csv) {
+    static constexpr const char* kAxes[] = {"x", "y", "z"};
+    out += "# t";
+    for (int k = 0; k <= derivatives; ++k)
+      for (int c = 0; c < dimension; ++c)
+        out += " " + (k == 0 ? std::string() : "d" + (k == 1 ? std::string() : std::to_string(k))) + kAxes[c];
+    out += '\n';
+  }
+  for (const Json& r : results) {
+    if (format == OutputFormat::JsonLines) {
+      out += io::format_json_line(r);
+      continue;
+    }
+    const std::string t = r["t"].dump();
+    if (format == OutputFormat::Csv) {
+      out += t;
+      for (const Json& d : r["derivatives"])
+        for (const Json& c : d) {
+          std::string v = io::format_json_line(c);
+          v.pop_back();  // the newline
+          out += "," + v;
+        }
+      out += '\n';
+    } else {
+      out += "t = " + t + ":";
+      for (const Json& d : r["derivatives"]) {
+        std::string v = io::format_json_line(d);
+        v.pop_back();
+        out += " " + v;
+      }
+      out += '\n';
+    }
+  }
+  print_text(out);
+}
 
 int run_eval(const EvalArgs& a) {
   const curve::Curve c = io::read_curve_file(a.curve);
@@ -30,8 +81,17 @@ int run_eval(const EvalArgs& a) {
   const auto per_t = static_cast<std::size_t>(a.derivatives) + 1;
   std::vector<Vec3> out(ts.size() * per_t);
   if (!c.law()) {
-    // The batch form names the index of a bad parameter ("t[2] = 1.5 is outside ...").
-    c.derivatives(ts, a.derivatives, out, options);
+    // The batch form names the index of a bad parameter ("t[2] = 1.5 is outside ..."); its hint names
+    // the library's Domain values, which a CLI user asks for with --extrapolate or --clamp.
+    try {
+      c.derivatives(ts, a.derivatives, out, options);
+    } catch (const Error& e) {
+      std::string message = e.message();
+      constexpr std::string_view kLibraryHint = "(ask for Domain::Extrapolate or Domain::Clamp by name)";
+      if (const auto at = message.find(kLibraryHint); at != std::string::npos)
+        message.replace(at, kLibraryHint.size(), "(give --extrapolate or --clamp to evaluate outside it)");
+      throw Error(e.code(), message, e.where());
+    }
   } else {
     // Law curves are evaluated exactly from the law, not from their stand-in NURBS, to any order.
     std::vector<double> us = ts;
@@ -47,10 +107,9 @@ int run_eval(const EvalArgs& a) {
                       format_number(dom.start) + ", " + format_number(dom.end) + "]",
                   ErrorWhere{.field = "t", .index = i});
     }
-    Json doc = Json::object();
-    doc["results"] = io::law_results_to_json(ts, io::law_derivatives(*c.law(), c.law_parameter(), us, a.derivatives),
-                                             c.law()->dimension(), a.derivatives);
-    print_json(doc);
+    print_results(io::law_results_to_json(ts, io::law_derivatives(*c.law(), c.law_parameter(), us, a.derivatives),
+                                          c.law()->dimension(), a.derivatives),
+                  static_cast<int>(c.law()->dimension()), a.derivatives, output_format_from_name(a.format));
     return kExitOk;
   }
   const int dim = c.dimension();
@@ -63,9 +122,7 @@ int run_eval(const EvalArgs& a) {
     r["derivatives"] = std::move(ders);
     results.push_back(std::move(r));
   }
-  Json doc = Json::object();
-  doc["results"] = std::move(results);
-  print_json(doc);
+  print_results(results, dim, a.derivatives, output_format_from_name(a.format));
   return kExitOk;
 }
 }  // namespace
@@ -73,7 +130,7 @@ int run_eval(const EvalArgs& a) {
 Command add_eval(CLI::App& app) {
   auto args = std::make_shared<EvalArgs>();
   CLI::App* sub = app.add_subcommand("eval", "Evaluate a curve file: position and derivatives at parameters");
-  sub->add_option("curve", args->curve, "Curve file (JSON)")->required();
+  sub->add_option("curve", args->curve, "Curve file (JSON); - reads stdin")->required();
   sub->add_option("--at", args->at, "Parameters t0,t1,... inside the domain")->required();
   sub->add_option("--derivatives", args->derivatives,
                   "Highest derivative order N in [0, 1000] (default 0: position only)")
@@ -83,6 +140,9 @@ Command add_eval(CLI::App& app) {
   auto* ex = sub->add_flag("--extrapolate", args->extrapolate, "Continue the end pieces outside the domain");
   auto* cl = sub->add_flag("--clamp", args->clamp, "Evaluate outside parameters at the nearest domain end");
   ex->excludes(cl);
+  sub->add_option("--format", args->format,
+                  "json (default) | jsonl (one result per line) | csv (t,x,y,z,dx,... rows) | text")
+      ->check(CLI::IsMember({"json", "jsonl", "csv", "text"}));
   return {sub, [args] { return run_eval(*args); }};
 }
 

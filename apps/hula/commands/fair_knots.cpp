@@ -37,6 +37,7 @@ Json result_to_json(const studies::FairingResult& r, double chord_energy) {
   out["evaluations"] = r.evaluations;
   out["rounds"] = r.rounds;
   out["seconds"] = r.seconds;
+  out["stopped"] = r.stopped;
   if (!r.bounds.lower.empty()) out["bounds"] = Json{{"lower", r.bounds.lower}, {"upper", r.bounds.upper}};
   return out;
 }
@@ -109,7 +110,15 @@ std::string fmt(double v) {
 
 int run_fair_knots(const StudyArgs& args) {
   const io::StudyDocument doc = load_study(args, "fair-knots");
-  const studies::FairKnotsStudy study = io::fair_knots_study_from_json(doc);
+  studies::FairKnotsStudy study = io::fair_knots_study_from_json(doc);
+  // --time and Ctrl-C end each optimiser with its best so far ("stopped": true).
+  for (optim::StopCriteria* stop : {&study.ga.binary.run.stop, &study.ga.real.run.stop}) {
+    stop->wall_time_seconds = doc.header.wall_time_seconds;
+    stop->cancel = doc.header.cancel;
+  }
+  study.deterministic.wall_time_seconds = doc.header.wall_time_seconds;
+  study.deterministic.cancel = doc.header.cancel;
+  const InterruptGuard guard;
   const studies::KnotFairingSetup& setup = study.setup;
 
   const std::vector<double> chord = studies::chord_length_parameters(setup);

@@ -12,6 +12,7 @@
 #include "commands/editing_common.hpp"
 #include "hula/core/error.hpp"
 #include "hula/diffgeom/combescure.hpp"
+#include "hula/io/atomic_file.hpp"
 #include "hula/io/editing_study_file.hpp"
 #include "hula/io/json_curve.hpp"
 #include "hula/law/tape.hpp"
@@ -168,6 +169,7 @@ int run_combescure(const io::FinCompoundStudy& s, const FinCompoundArgs& a, Json
 }
 
 int run_fin_compound(const FinCompoundArgs& a) {
+  if (!a.output.empty()) io::check_output_path(a.output, "--output");
   const io::StudyDocument doc = load_study(a.study, "fin-compound");
   const io::FinCompoundStudy s = io::read_fin_compound_study(doc);
   Json out = Json::object();
@@ -176,7 +178,7 @@ int run_fin_compound(const FinCompoundArgs& a) {
   const int code =
       s.method == io::FinCompoundMethod::Projection ? run_projection(s, a, out) : run_combescure(s, a, out);
   record_run(out, s.header, a.study);
-  print_json(out);
+  print_result(out, a.output);
   return code;
 }
 
@@ -186,7 +188,7 @@ Command add_fin_compound(CLI::App& app) {
   auto args = std::make_shared<FinCompoundArgs>();
   CLI::App* sub = app.add_subcommand(
       "fin-compound", "Prescribed compound fins (thesis 8.3): projection technique or Combescure transform");
-  add_study_options(sub, args->study);
+  add_study_options(sub, args->study, false);
   sub->add_option("-o,--output", args->output,
                   "Write the resulting curve file (rebuilt 3-D curve, compound, or parent), atomically");
   return {sub, [args] { return run_fin_compound(*args); }};

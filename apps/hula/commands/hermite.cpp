@@ -11,6 +11,7 @@
 
 #include "commands/common.hpp"
 #include "commands/editing_common.hpp"
+#include "hula/io/atomic_file.hpp"
 #include "hula/io/editing_study_file.hpp"
 #include "hula/io/json_curve.hpp"
 
@@ -57,6 +58,7 @@ void draw_handles(io::SvgFigure& f, const studies::HermiteHandles& h, double sca
 }
 
 int run_hermite(const HermiteArgs& a) {
+  if (!a.output.empty()) io::check_output_path(a.output, "--output");
   const io::StudyDocument doc = load_study(a.study, "hermite");
   const io::HermiteStudy s = io::read_hermite_study(doc);
   const studies::HermiteEditResult r = studies::hermite_edit(s.spline.points, s.edits, s.options);
@@ -90,7 +92,7 @@ int run_hermite(const HermiteArgs& a) {
     write_svg(*a.study.svg, "after", after);
   }
   record_run(out, s.header, a.study);
-  print_json(out);
+  print_result(out, a.output);
   return kExitOk;
 }
 
@@ -100,7 +102,7 @@ Command add_hermite(CLI::App& app) {
   auto args = std::make_shared<HermiteArgs>();
   CLI::App* sub = app.add_subcommand(
       "hermite", "Hermite editing (thesis 7.5.2): rotate and scale the tangent/normal handles of a spline");
-  add_study_options(sub, args->study);
+  add_study_options(sub, args->study, false);
   sub->add_option("-o,--output", args->output, "Write the edited curve file, atomically");
   return {sub, [args] { return run_hermite(*args); }};
 }

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "commands/common.hpp"
+#include "hula/io/atomic_file.hpp"
 #include "hula/io/points_file.hpp"
 
 namespace hula::cli {
@@ -22,6 +23,7 @@ struct InterpolateArgs {
 };
 
 int run_interpolate(const InterpolateArgs& a) {
+  io::check_output_path(a.output, "--output");
   io::PointSet set = io::read_points_file(a.points);
   curve::InterpolatedData in;
   in.points = std::move(set.points);
@@ -50,7 +52,7 @@ int run_interpolate(const InterpolateArgs& a) {
       in.parameters.empty() ? std::string(io::parameterisation_name(in.parameterisation)) : std::string("given");
   summary["start"] = io::end_condition_to_json(in.start, in.dimension);
   summary["end"] = io::end_condition_to_json(in.end, in.dimension);
-  print_json(summary);
+  print_result(summary, a.output);
   return kExitOk;
 }
 }  // namespace
@@ -58,7 +60,8 @@ int run_interpolate(const InterpolateArgs& a) {
 Command add_interpolate(CLI::App& app) {
   auto args = std::make_shared<InterpolateArgs>();
   CLI::App* sub = app.add_subcommand("interpolate", "Fit a C2 cubic spline through points and write a curve file");
-  sub->add_option("--points", args->points, "Points file: JSON [[x,y,z],...] or CSV lines x,y[,z]")->required();
+  sub->add_option("--points", args->points, "Points file: JSON [[x,y,z],...] or CSV lines x,y[,z]; - reads stdin")
+      ->required();
   sub->add_option("--parameterisation", args->parameterisation, "uniform | chord | centripetal (default chord)");
   sub->add_option("--start", args->start,
                   "Start condition: natural | bessel | not-a-knot | occt | direction:x,y,z | clamped:x,y,z");
@@ -66,7 +69,9 @@ Command add_interpolate(CLI::App& app) {
                   "End condition: natural | bessel | not-a-knot | occt | direction:x,y,z | clamped:x,y,z");
   sub->add_option("--knots", args->knots,
                   "Given data parameters k0,k1,... (one per point, strictly increasing; mapped to [0, 1])");
-  sub->add_option("-o,--output", args->output, "Curve file to write (atomically)")->required();
+  sub->add_option("-o,--output", args->output,
+                  "Curve file to write (atomically); - writes it to stdout instead of the summary")
+      ->required();
   sub->add_flag("--keep-inputs", args->keep_inputs, "Write the \"interpolated\" kind (the inputs) instead of NURBS");
   return {sub, [args] { return run_interpolate(*args); }};
 }

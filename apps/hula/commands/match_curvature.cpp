@@ -164,6 +164,7 @@ int run_match(const MatchArgs& a) {
   studies::MatchStudy& study = file.study;
   if (a.method) study.method = studies::match_method_from_name(*a.method, "--method");
   const studies::CurvatureMatch match(study.setup);
+  const InterruptGuard guard;  // Ctrl-C ends the GA with its best so far, as --time does
   const studies::MatchResult result = studies::run_curvature_match(match, study, a.study.log.has_value());
   if (a.study.log) write_run_log(result.log, *a.study.log);
   if (a.study.svg) write_figures(*a.study.svg, match, result);
@@ -247,8 +248,11 @@ void write_torsion_figures(const std::filesystem::path& dir, const studies::Curv
 int run_match_torsion(const StudyArgs& a) {
   const io::StudyDocument doc = load_study(a, "match-curvature-torsion");
   const std::filesystem::path base = std::filesystem::path(a.study).parent_path();
-  const io::TorsionMatchStudyFile file = io::torsion_match_study_from_json(doc, io::relative_to(base));
-  const studies::TorsionMatchStudy& study = file.study;
+  io::TorsionMatchStudyFile file = io::torsion_match_study_from_json(doc, io::relative_to(base));
+  studies::TorsionMatchStudy& study = file.study;
+  study.settings.wall_time_seconds = doc.header.wall_time_seconds;
+  study.settings.cancel = doc.header.cancel;
+  const InterruptGuard guard;  // Ctrl-C ends NSGA-II with its front so far, as --time does
   const studies::CurvatureMatch match(study.setup);
   const studies::TorsionMatchResult result = studies::run_curvature_torsion_match(
       match, study.settings, study.header.seed, study.header.threads, a.log.has_value());

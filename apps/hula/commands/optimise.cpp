@@ -6,11 +6,11 @@
 // with its hypervolume (several objectives) and the run report (issue 5,
 // thesis appendix 1.5 "flexible optimisation wheel").
 //
-// Ctrl-C (SIGINT) sets a CancellationToken from an async-signal-safe handler
-// (one lock-free atomic store); the algorithm notices it between generations
-// and returns the best so far with termination "Cancelled". `--time` sets the
-// wall-time stop criterion the same way. The handler is installed with
-// SA_RESETHAND, so a second Ctrl-C ends the process at once.
+// Ctrl-C (SIGINT) sets a CancellationToken (InterruptGuard, study_common.hpp);
+// the algorithm notices it between generations and returns the best so far
+// with termination "Cancelled". `--time` sets the wall-time stop criterion the
+// same way. The --log file streams as the run goes and replaces its target
+// only when the run is done.
 #include <signal.h>
 
 #include <algorithm>
@@ -19,6 +19,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -49,14 +50,14 @@ using optim::Solution;
 struct OptimiseArgs {
   std::string problem;
   std::string problem_file;
-  std::size_t dimension = 0;
-  std::size_t objectives = 0;
+  std::optional<std::size_t> dimension;
+  std::optional<std::size_t> objectives;
   std::string algorithm;
   std::optional<std::size_t> population;
   std::optional<std::size_t> generations;
   std::optional<std::size_t> evaluations;
-  std::uint64_t seed = 0;
-  std::size_t threads = 1;
+  std::optional<std::uint64_t> seed;
+  std::optional<std::size_t> threads;
   std::optional<double> crossover;
   std::optional<double> mutation;
   std::optional<std::string> lower;
@@ -67,35 +68,6 @@ struct OptimiseArgs {
   std::optional<std::string> log;
   std::optional<std::string> reference;
   bool progress = false;
-};
-
-// The token the SIGINT handler sets. A lock-free atomic store is
-// async-signal-safe; a lock-based one would not be.
-static_assert(std::atomic<bool>::is_always_lock_free, "the SIGINT handler needs a lock-free atomic flag");
-optim::CancellationToken g_interrupt;
-
-extern "C" void on_sigint(int /*signal*/) { g_interrupt.cancel(); }
-
-// Installs on_sigint for the lifetime of a run and restores the previous
-// disposition afterwards.
-class SigintGuard {
- public:
-  SigintGuard() {
-    struct sigaction action {};
-    action.sa_handler = on_sigint;
-    sigemptyset(&action.sa_mask);
-    action.sa_flags = SA_RESETHAND;  // a second Ctrl-C is not caught: it ends the process
-    installed_ = ::sigaction(SIGINT, &action, &previous_) == 0;
-  }
-  ~SigintGuard() {
-    if (installed_) ::sigaction(SIGINT, &previous_, nullptr);
-  }
-  SigintGuard(const SigintGuard&) = delete;
-  SigintGuard& operator=(const SigintGuard&) = delete;
-
- private:
-  struct sigaction previous_ {};
-  bool installed_ = false;
 };
 
 enum class Algorithm { BinaryGa, RealGa, Nsga2, Pagmo };
@@ -138,7 +110,7 @@ void apply_bounds(Problem& problem, const OptimiseArgs& a) {
     const std::vector<double> values = parse_number_list(text, field);
     if (values.size() != problem.dimension()) {
       throw Error(Errc::InvalidOption,
-                  std::string(field) + " has " + std::to_string(values.size()) + " values but the problem has " +
+                  std::string("--") + field + " has " + std::to_string(values.size()) + " values but the problem has " +
                       std::to_string(problem.dimension()) + " variables",
                   {.field = field, .index = std::min(values.size(), problem.dimension())});
     }
@@ -148,13 +120,23 @@ void apply_bounds(Problem& problem, const OptimiseArgs& a) {
   if (a.upper) apply(*a.upper, "upper", &optim::Variable::upper);
   if (a.precision)
     for (optim::Variable& v : problem.variables) v.precision = *a.precision;
+  // The samplers draw lower + (upper - lower) * u: refuse bounds whose width
+  // overflows here, naming the options, before any individual is made.
+  for (std::size_t i = 0; i < problem.variables.size(); ++i) {
+    const optim::Variable& v = problem.variables[i];
+    if (std::isfinite(v.lower) && std::isfinite(v.upper) && !std::isfinite(v.upper - v.lower))
+      throw Error(Errc::InvalidOption,
+                  "--lower/--upper: variable " + std::to_string(i) + " has bounds [" + format_number(v.lower) + ", " +
+                      format_number(v.upper) + "] whose width overflows a double (at most ~1.8e308)",
+                  {.field = a.lower ? "lower" : "upper", .index = i});
+  }
 }
 
 std::vector<double> parse_boost(const std::string& text) {
   std::vector<double> b = parse_number_list(text, "boost");
   if (b.size() != 2) {
     throw Error(Errc::InvalidOption,
-                "boost = \"" + text + "\" must be two numbers start,end (got " + std::to_string(b.size()) + ")",
+                "--boost " + text + ": must be two numbers start,end (got " + std::to_string(b.size()) + ")",
                 {.field = "boost"});
   }
   return b;
@@ -177,15 +159,15 @@ optim::StopCriteria stop_criteria(const OptimiseArgs& a, std::size_t population)
     stop.generations = *a.evaluations / std::max<std::size_t>(population, 1);
   }
   if (a.time) stop.wall_time_seconds = *a.time;
-  stop.cancel = &g_interrupt;
+  stop.cancel = &interrupt_token();
   return stop;
 }
 
-// The per-generation callback: collects the run log and prints progress lines.
-optim::GenerationCallback generation_callback(const OptimiseArgs& a, optim::RunLog& log) {
-  if (!a.log && !a.progress) return {};
-  return [&a, &log](const optim::GenerationLog& g) {
-    if (a.log) log.append(g);
+// The per-generation callback: streams the run log to its file and prints progress lines.
+optim::GenerationCallback generation_callback(const OptimiseArgs& a, RunLogFile* log) {
+  if (!log && !a.progress) return {};
+  return [&a, log](const optim::GenerationLog& g) {
+    if (log) log->append(g);
     if (a.progress) {
       const optim::GenerationStatistics s = optim::statistics(g);
       Json line = Json::object();
@@ -199,18 +181,18 @@ optim::GenerationCallback generation_callback(const OptimiseArgs& a, optim::RunL
 }
 
 template <class Options>
-void fill_run(Options& o, const OptimiseArgs& a, optim::RunLog& log) {
+void fill_run(Options& o, const OptimiseArgs& a, RunLogFile* log) {
   if (a.population) o.population = *a.population;
-  o.run.seed = a.seed;
-  o.run.threads = a.threads;
+  o.run.seed = a.seed.value_or(0);
+  o.run.threads = a.threads.value_or(1);
   o.run.stop = stop_criteria(a, o.population);
   o.run.on_generation = generation_callback(a, log);
 }
 
-Outcome run_flexo(const Problem& problem, const OptimiseArgs& a, Algorithm kind, optim::RunLog& log) {
+Outcome run_flexo(const Problem& problem, const OptimiseArgs& a, Algorithm kind, RunLogFile* log) {
   Outcome out;
-  out.threads = a.threads;
-  const SigintGuard guard;
+  out.threads = a.threads.value_or(1);
+  const InterruptGuard guard;
   if (kind == Algorithm::RealGa) {
     optim::RealGaOptions o;
     fill_run(o, a, log);
@@ -253,12 +235,12 @@ Outcome run_pagmo(const Problem& problem, const OptimiseArgs& a, optim::PagmoAlg
   refuse(a.progress, "progress", a.algorithm);
   refuse(a.crossover.has_value(), "crossover", a.algorithm);
   refuse(a.mutation.has_value(), "mutation", a.algorithm);
-  refuse(a.threads != 1, "threads", a.algorithm);
+  refuse(a.threads.value_or(1) != 1, "threads", a.algorithm);
   optim::PagmoOptions o;
   o.algorithm = algorithm;
   if (a.population) o.population = *a.population;
   if (a.generations) o.generations = *a.generations;
-  o.seed = a.seed;
+  o.seed = a.seed.value_or(0);
   optim::PagmoResult r = optim::solve_with_pagmo(problem, o);
   Outcome out;
   if (problem.objectives == 1) {
@@ -286,7 +268,7 @@ Json report_json(const RunReport& r, const OptimiseArgs& a, const Problem& probl
   o["evaluations"] = r.evaluations;
   o["failed_evaluations"] = r.failed_evaluations;
   o["seconds"] = r.seconds;
-  o["seed"] = a.seed;
+  o["seed"] = a.seed.value_or(0);
   o["threads"] = threads;
   o["algorithm"] = a.algorithm;
   o["problem"] = problem.name;
@@ -327,9 +309,9 @@ Json front_json(std::vector<Solution> front, const Problem& problem, const std::
 
 int run_optimise(const OptimiseArgs& a) {
   const AlgorithmChoice algorithm = parse_algorithm(a.algorithm);
-  if (a.objectives != 0 && a.problem != "dtlz2") {
+  if (a.objectives && a.problem != "dtlz2") {
     throw Error(Errc::InvalidOption,
-                "objectives = " + std::to_string(a.objectives) + ": only dtlz2 takes a number of objectives",
+                "--objectives " + std::to_string(*a.objectives) + ": only dtlz2 takes a number of objectives",
                 {.field = "objectives"});
   }
   Problem problem;
@@ -339,33 +321,47 @@ int run_optimise(const OptimiseArgs& a) {
     problem = std::move(file.problem);
     reference = std::move(file.reference);
   } else {
-    problem = optim::test_problem(a.problem, a.dimension, a.objectives);
+    problem = optim::test_problem(a.problem, a.dimension.value_or(0), a.objectives.value_or(0));
     // Built-in test problems are normalised so that 1.1 per objective bounds
     // their Pareto fronts (the reference of the issue's benchmarks).
     reference = std::vector<double>(problem.objectives, 1.1);
   }
   apply_bounds(problem, a);
+  // Binary coding needs a resolution per variable; a built-in problem has none unless --precision gives it.
+  if (algorithm.kind == Algorithm::BinaryGa)
+    for (std::size_t i = 0; i < problem.variables.size(); ++i)
+      if (!(problem.variables[i].precision > 0.0))
+        throw Error(Errc::InvalidOption,
+                    "--precision: ga-binary needs the binary-coding resolution of the variables (variable " +
+                        std::to_string(i) + " has none), e.g. --precision 1e-6",
+                    {.field = "precision", .index = i});
   if (a.reference) {
     if (problem.objectives == 1) {
       throw Error(Errc::InvalidOption,
-                  "reference: a hypervolume reference applies to problems with several objectives; " + problem.name +
+                  "--reference: a hypervolume reference applies to problems with several objectives; " + problem.name +
                       " has one",
                   {.field = "reference"});
     }
     reference = parse_number_list(*a.reference, "reference");
     if (reference->size() != problem.objectives) {
       throw Error(Errc::InvalidOption,
-                  "reference has " + std::to_string(reference->size()) + " values but the problem has " +
+                  "--reference has " + std::to_string(reference->size()) + " values but the problem has " +
                       std::to_string(problem.objectives) + " objectives",
                   {.field = "reference"});
     }
   }
   if (algorithm.kind != Algorithm::BinaryGa) refuse(a.boost.has_value(), "boost", a.algorithm);
+  // The Flexo algorithms make offspring in pairs.
+  if (algorithm.kind != Algorithm::Pagmo && a.population)
+    (void)parse_integer_option(std::to_string(*a.population), "--population", 2, kMaxPopulation, true);
+  if (a.log) io::check_output_path(*a.log, "--log");
 
-  optim::RunLog log;
+  // The log streams to its temporary file as the run goes, and replaces the target only when the run is done.
+  std::optional<RunLogFile> log;
+  if (a.log && algorithm.kind != Algorithm::Pagmo) log.emplace(*a.log);
   const Outcome out = algorithm.kind == Algorithm::Pagmo ? run_pagmo(problem, a, algorithm.pagmo)
-                                                         : run_flexo(problem, a, algorithm.kind, log);
-  if (a.log) write_run_log(log, *a.log);
+                                                         : run_flexo(problem, a, algorithm.kind, log ? &*log : nullptr);
+  if (log) log->commit();
 
   Json doc = Json::object();
   if (problem.objectives == 1) {
@@ -392,28 +388,38 @@ Command add_optimise(CLI::App& app) {
       "zdt6, dtlz2");
   CLI::Option* file = source->add_option("--problem-file", a->problem_file, "Problem file (JSON, docs/formats.md)");
   source->require_option(1);
-  sub->add_option("--dimension", a->dimension, "Number of variables (default: the problem's own)")
+  add_integer_option(sub, "--dimension", a->dimension, 1, kMaxDimension,
+                     "Number of variables (default: the problem's own; at most 100000)")
       ->needs(problem)
       ->excludes(file);
-  sub->add_option("--objectives", a->objectives, "Number of objectives of dtlz2 (default 3)")
+  add_integer_option(sub, "--objectives", a->objectives, 2, kMaxObjectives,
+                     "Number of objectives of dtlz2 (default 3; at most 64)")
       ->needs(problem)
       ->excludes(file);
   sub->add_option("--algorithm", a->algorithm,
                   "ga-binary | ga-real | nsga2 | pagmo-<cmaes|de|sade|pso|sga|moead|nsga2>")
       ->required();
-  sub->add_option("--population", a->population, "Individuals per generation (default: the algorithm's own)");
-  CLI::Option* gens =
-      sub->add_option("--generations", a->generations, "Generations after the initial one (default 100)");
-  sub->add_option("--evaluations", a->evaluations, "Evaluation budget, initial population included")->excludes(gens);
-  sub->add_option("--seed", a->seed, "Seed (default 0); the same seed gives the same result on any thread count");
-  sub->add_option("--threads", a->threads, "Evaluation threads; 0 = all cores (default 1)");
-  sub->add_option("--crossover", a->crossover, "Crossover probability in [0, 1]");
-  sub->add_option("--mutation", a->mutation, "Mutation probability in [0, 1] (per variable, or per bit for ga-binary)");
+  add_integer_option(sub, "--population", a->population, 1, kMaxPopulation,
+                     "Individuals per generation (default: the algorithm's own; even for the Flexo algorithms; at "
+                     "most 1000000)");
+  CLI::Option* gens = add_integer_option(sub, "--generations", a->generations, 0, kMaxGenerations,
+                                         "Generations after the initial one (default 100)");
+  add_integer_option(sub, "--evaluations", a->evaluations, 1, kMaxEvaluations,
+                     "Evaluation budget, initial population included")
+      ->excludes(gens);
+  add_integer_option(sub, "--seed", a->seed, 0, kMaxSeed,
+                     "Seed in [0, 2^63-1] (default 0); the same seed gives the same result on any thread count");
+  add_integer_option(sub, "--threads", a->threads, 0, kMaxThreads, "Evaluation threads; 0 = all cores (default 1)");
+  add_real_option(sub, "--crossover", a->crossover, 0.0, 1.0, false, "Crossover probability in [0, 1]");
+  add_real_option(sub, "--mutation", a->mutation, 0.0, 1.0, false,
+                  "Mutation probability in [0, 1] (per variable, or per bit for ga-binary)");
   sub->add_option("--lower", a->lower, "Lower bounds l1,l2,... (one per variable)");
   sub->add_option("--upper", a->upper, "Upper bounds u1,u2,... (one per variable)");
-  sub->add_option("--precision", a->precision, "Binary-coding resolution of every variable (ga-binary)");
+  add_real_option(sub, "--precision", a->precision, 0.0, std::numeric_limits<double>::max(), true,
+                  "Binary-coding resolution of every variable (ga-binary), > 0");
   sub->add_option("--boost", a->boost, "ga-binary fitness power start,end (eq. 33; default 1,1)");
-  sub->add_option("--time", a->time, "Wall-time limit in seconds (0 = none); ends with the best so far");
+  add_real_option(sub, "--time", a->time, 0.0, std::numeric_limits<double>::max(), true,
+                  "Wall-time limit in seconds, > 0 (default: none); ends with the best so far");
   sub->add_option("--log", a->log, "Write the run log: CSV if FILE ends in .csv, else JSON");
   sub->add_option("--reference", a->reference, "Hypervolume reference r1,r2,... (default 1.1 per objective)");
   sub->add_flag("--progress", a->progress, "Print one JSON line per generation on stderr");

@@ -12,6 +12,7 @@
 #include "commands/common.hpp"
 #include "hula/core/error.hpp"
 #include "hula/intrinsic/natural_equations.hpp"
+#include "hula/io/atomic_file.hpp"
 #include "hula/io/json_curve.hpp"
 #include "hula/law/parser.hpp"
 
@@ -63,6 +64,7 @@ Json point_json(const intrinsic::FramePoint& p) {
 }
 
 int run_reconstruct(const ReconstructArgs& a) {
+  if (!a.output.empty()) io::check_output_path(a.output, "--output");
   law::Context ctx;
   const law::Law kappa = parse_law(a.kappa, ctx, "kappa");
   const law::Law tau = parse_law(a.tau, ctx, "tau");
@@ -97,7 +99,7 @@ int run_reconstruct(const ReconstructArgs& a) {
   Json doc = Json::object();
   doc["points"] = std::move(points);
   doc["fit"] = std::move(f);
-  print_json(doc);
+  print_result(doc, a.output);
   return kExitOk;
 }
 

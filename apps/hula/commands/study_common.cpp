@@ -1,7 +1,13 @@
 // SPDX-License-Identifier: MIT
 #include "commands/study_common.hpp"
 
-#include <sstream>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <limits>
 #include <system_error>
 
 #include "hula/core/error.hpp"
@@ -9,19 +15,70 @@
 
 namespace hula::cli {
 
-void add_study_options(CLI::App* sub, StudyArgs& args) {
+namespace {
+// The token the SIGINT handler sets. A lock-free atomic store is
+// async-signal-safe; a lock-based one would not be.
+static_assert(std::atomic<bool>::is_always_lock_free, "the SIGINT handler needs a lock-free atomic flag");
+optim::CancellationToken g_interrupt;
+
+extern "C" void on_sigint(int /*signal*/) { g_interrupt.cancel(); }
+}  // namespace
+
+const optim::CancellationToken& interrupt_token() { return g_interrupt; }
+
+InterruptGuard::InterruptGuard() {
+  struct sigaction action {};
+  action.sa_handler = on_sigint;
+  sigemptyset(&action.sa_mask);
+  action.sa_flags = SA_RESETHAND;  // a second Ctrl-C is not caught: it ends the process
+  installed_ = ::sigaction(SIGINT, &action, &previous_) == 0;
+}
+
+InterruptGuard::~InterruptGuard() {
+  if (installed_) ::sigaction(SIGINT, &previous_, nullptr);
+}
+
+void add_study_options(CLI::App* sub, StudyArgs& args, bool has_optimiser) {
   sub->add_option("study", args.study, "Study file (JSON, docs/formats.md \"Study files\")")->required();
-  sub->add_option("--seed", args.seed, "Seed of the random streams (overrides the study file's \"seed\")");
-  sub->add_option("--threads", args.threads,
-                  "Worker threads, 0 = all cores (overrides the file's \"threads\"; results do not depend on it)");
+  add_integer_option(sub, "--seed", args.seed, 0, kMaxSeed,
+                     "Seed of the random streams in [0, 2^63-1] (overrides the study file's \"seed\")");
+  add_integer_option(sub, "--threads", args.threads, 0, kMaxThreads,
+                     "Worker threads, 0 = all cores (overrides the file's \"threads\"; results do not depend on it)");
+  if (has_optimiser)
+    add_real_option(sub, "--time", args.time, 0.0, std::numeric_limits<double>::max(), true,
+                    "Wall-time limit of the optimiser in seconds, > 0 (default: none); ends with the best so far, "
+                    "as Ctrl-C does");
   sub->add_option("--log", args.log, "Write the per-generation run log here (CSV if it ends in .csv, else JSON)");
   sub->add_option("--svg", args.svg, "Write the before/after figures and convergence graphs into this directory");
 }
 
+void check_svg_directory(const std::filesystem::path& dir) {
+  struct stat st {};
+  if (::lstat(dir.c_str(), &st) == 0) {
+    if (!S_ISDIR(st.st_mode))
+      throw Error(Errc::IoError, "--svg: '" + dir.string() + "' exists and is not a directory", {.field = "svg"});
+    if (::access(dir.c_str(), W_OK | X_OK) != 0)
+      throw Error(Errc::IoError, "--svg: cannot create files in '" + dir.string() + "': " + std::strerror(errno),
+                  {.field = "svg"});
+    return;
+  }
+  // Absent: created later, so its nearest existing ancestor must be a writable directory.
+  std::filesystem::path parent = dir.has_parent_path() ? dir.parent_path() : std::filesystem::path(".");
+  while (::stat(parent.c_str(), &st) != 0 && parent.has_parent_path() && parent != parent.parent_path())
+    parent = parent.parent_path();
+  if (::stat(parent.c_str(), &st) != 0 || !S_ISDIR(st.st_mode) || ::access(parent.c_str(), W_OK | X_OK) != 0)
+    throw Error(Errc::IoError, "--svg: cannot create the directory '" + dir.string() + "'", {.field = "svg"});
+}
+
 io::StudyDocument load_study(const StudyArgs& args, std::string_view kind) {
+  // Every output is checked before the study runs, not after.
+  if (args.log) io::check_output_path(*args.log, "--log");
+  if (args.svg) check_svg_directory(*args.svg);
   io::StudyDocument doc = io::read_study_file(args.study, kind);
   if (args.seed) doc.header.seed = *args.seed;
   if (args.threads) doc.header.threads = *args.threads;
+  if (args.time) doc.header.wall_time_seconds = *args.time;
+  doc.header.cancel = &interrupt_token();
   return doc;
 }
 
@@ -32,14 +89,26 @@ void write_svg(const std::filesystem::path& dir, std::string_view name, const io
   io::write_file_atomically(dir / (std::string(name) + ".svg"), figure.render());
 }
 
+static optim::RunLogFormat run_log_format(const std::filesystem::path& path) {
+  return path.extension() == ".csv" ? optim::RunLogFormat::Csv : optim::RunLogFormat::Json;
+}
+
 void write_run_log(const optim::RunLog& log, const std::filesystem::path& path) {
-  std::ostringstream text;
-  if (path.extension() == ".csv") {
-    log.write_csv(text);
-  } else {
-    log.write_json(text);
-  }
-  io::write_file_atomically(path, text.str());
+  io::OutputFile file(path, "--log");
+  optim::RunLogWriter writer(file.stream(), run_log_format(path));
+  for (const optim::GenerationLog& g : log.generations()) writer.append(g);
+  writer.finish();
+  file.commit();
+}
+
+RunLogFile::RunLogFile(const std::filesystem::path& path)
+    : file_(path, "--log"), writer_(file_.stream(), run_log_format(path)) {}
+
+void RunLogFile::append(const optim::GenerationLog& generation) { writer_.append(generation); }
+
+void RunLogFile::commit() {
+  writer_.finish();
+  file_.commit();
 }
 
 }  // namespace hula::cli

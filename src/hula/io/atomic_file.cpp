@@ -1,15 +1,24 @@
 // SPDX-License-Identifier: MIT
-// POSIX implementation of read_text_file and write_file_atomically (mkstemp in
-// the target's directory, write loop, fsync, rename, directory fsync).
+// POSIX implementation of the checked reads and atomic writes (see
+// atomic_file.hpp): open with O_NONBLOCK + fstat so a FIFO or device is
+// refused before it can block or stream forever, a capped read loop, and for
+// writing an fd-backed streambuf whose every write(2) is checked, mkstemp in
+// the target's directory, fsync, lstat re-check, rename, directory fsync.
 #include "hula/io/atomic_file.hpp"
 
+#include <dirent.h>
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <array>
 #include <cerrno>
+#include <csignal>
 #include <cstring>
 #include <fstream>
+#include <iostream>
+#include <optional>
+#include <streambuf>
 #include <vector>
 
 #include "hula/core/error.hpp"
@@ -17,10 +26,25 @@
 namespace hula::io {
 namespace {
 
-[[noreturn]] void throw_io(const std::filesystem::path& path, const std::string& what, int err) {
+[[noreturn]] void throw_io(const std::filesystem::path& path, std::string_view option, const std::string& what,
+                           int err) {
   std::string message = what + " '" + path.string() + "'";
+  if (option != "path") message = std::string(option) + ": " + message;
   if (err != 0) message += ": " + std::string(std::strerror(err));
-  throw Error(Errc::IoError, message, {.field = "path"});
+  // ErrorWhere.field names the option without its dashes ("output" for --output).
+  const std::size_t name = option.find_first_not_of('-');
+  throw Error(Errc::IoError, message, {.field = std::string(option.substr(name == std::string_view::npos ? 0 : name))});
+}
+
+// What a non-regular file is, for messages.
+const char* file_kind(mode_t mode) {
+  if (S_ISDIR(mode)) return "a directory";
+  if (S_ISCHR(mode)) return "a character device";
+  if (S_ISBLK(mode)) return "a block device";
+  if (S_ISFIFO(mode)) return "a FIFO (named pipe)";
+  if (S_ISSOCK(mode)) return "a socket";
+  if (S_ISLNK(mode)) return "a symbolic link";
+  return "not a regular file";
 }
 
 // Closes a descriptor on scope exit unless released.
@@ -35,7 +59,7 @@ class FdGuard {
   [[nodiscard]] int get() const { return fd_; }
   // Closes now and reports the error of close() (it can report a deferred write error).
   int close_now() {
-    const int rc = ::close(fd_);
+    const int rc = fd_ >= 0 ? ::close(fd_) : 0;
     fd_ = -1;
     return rc;
   }
@@ -61,71 +85,260 @@ mode_t current_umask() {
   return 022;
 }
 
+// Writes all of [data, data + size) to fd; returns 0 or the errno of the failure.
+int write_all(int fd, const char* data, std::size_t size) {
+  while (size > 0) {
+    const ssize_t n = ::write(fd, data, size);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      return errno;
+    }
+    if (n == 0) return EIO;
+    data += n;
+    size -= static_cast<std::size_t>(n);
+  }
+  return 0;
+}
+
+// A buffered output streambuf over a descriptor that remembers the first
+// write error (the ostream only sees "failed").
+class FdStreambuf : public std::streambuf {
+ public:
+  explicit FdStreambuf(int fd) : fd_(fd) { setp(buffer_.data(), buffer_.data() + buffer_.size()); }
+  [[nodiscard]] int error() const { return error_; }
+
+ protected:
+  int_type overflow(int_type ch) override {
+    if (drain() != 0) return traits_type::eof();
+    if (!traits_type::eq_int_type(ch, traits_type::eof())) {
+      *pptr() = traits_type::to_char_type(ch);
+      pbump(1);
+    }
+    return traits_type::not_eof(ch);
+  }
+  int sync() override { return drain() == 0 ? 0 : -1; }
+  std::streamsize xsputn(const char* s, std::streamsize n) override {
+    // Large blocks bypass the buffer; small ones are copied into it.
+    if (n >= static_cast<std::streamsize>(buffer_.size())) {
+      if (drain() != 0) return 0;
+      error_ = write_all(fd_, s, static_cast<std::size_t>(n));
+      return error_ == 0 ? n : 0;
+    }
+    return std::streambuf::xsputn(s, n);
+  }
+
+ private:
+  int drain() {
+    if (error_ != 0) return error_;
+    const std::size_t n = static_cast<std::size_t>(pptr() - pbase());
+    if (n > 0) error_ = write_all(fd_, pbase(), n);
+    setp(buffer_.data(), buffer_.data() + buffer_.size());
+    return error_;
+  }
+
+  int fd_;
+  int error_ = 0;
+  std::array<char, std::size_t{1} << 16> buffer_{};
+};
+
+constexpr std::string_view kTempInfix = ".tmp-";
+
+// Removes `.<name>.tmp-<pid>-XXXXXX` files in `dir` whose writer process no
+// longer exists (a write killed before its rename). Temporaries of live
+// processes, and names that do not parse, are left alone.
+void remove_stale_temporaries(const std::filesystem::path& dir, const std::string& name) {
+  const std::string prefix = "." + name + std::string(kTempInfix);
+  DIR* d = ::opendir(dir.c_str());
+  if (d == nullptr) return;
+  std::vector<std::string> stale;
+  while (const dirent* e = ::readdir(d)) {
+    const std::string_view entry(e->d_name);
+    if (entry.size() <= prefix.size() || entry.substr(0, prefix.size()) != prefix) continue;
+    const std::string_view rest = entry.substr(prefix.size());
+    const std::size_t dash = rest.find('-');
+    if (dash == 0 || dash == std::string_view::npos || rest.size() - dash - 1 != 6) continue;
+    long long pid = 0;
+    bool digits = true;
+    for (const char c : rest.substr(0, dash)) {
+      if (c < '0' || c > '9' || pid > 100000000) {
+        digits = false;
+        break;
+      }
+      pid = pid * 10 + (c - '0');
+    }
+    if (!digits || pid <= 0 || pid == static_cast<long long>(::getpid())) continue;
+    if (::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) stale.emplace_back(entry);
+  }
+  ::closedir(d);
+  for (const std::string& s : stale) (void)::unlinkat(AT_FDCWD, (dir / s).c_str(), 0);
+}
+
+std::filesystem::path directory_of(const std::filesystem::path& path) {
+  return path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+}
+
 }  // namespace
 
-std::string read_text_file(const std::filesystem::path& path) {
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) throw_io(path, "cannot open file", errno);
-  FdGuard guard(fd);
-  struct stat st {};
-  if (::fstat(fd, &st) != 0) throw_io(path, "cannot stat file", errno);
-  if (S_ISDIR(st.st_mode)) throw_io(path, "cannot read a directory as a file:", 0);
+bool is_std_stream(const std::filesystem::path& path) { return path.native() == kStdStreamName; }
+
+std::string read_text_file(const std::filesystem::path& path, std::size_t max_bytes) {
+  const bool is_stdin = is_std_stream(path);
+  const std::string_view option = "path";
+  int fd = STDIN_FILENO;
+  std::optional<FdGuard> guard;
+  if (!is_stdin) {
+    // O_NONBLOCK: opening a FIFO without a writer must not hang before the type check.
+    fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
+    if (fd < 0) throw_io(path, option, "cannot open file", errno);
+    guard.emplace(fd);
+    struct stat st {};
+    if (::fstat(fd, &st) != 0) throw_io(path, option, "cannot stat file", errno);
+    if (!S_ISREG(st.st_mode))
+      throw_io(path, option,
+               std::string("cannot read ") + file_kind(st.st_mode) + " as a file (give - to read standard input):", 0);
+    if (static_cast<unsigned long long>(st.st_size) > max_bytes)
+      throw_io(path, option,
+               "the input is larger than the " + std::to_string(max_bytes) + "-byte limit on an input file:", 0);
+    const int flags = ::fcntl(fd, F_GETFL);
+    if (flags >= 0) (void)::fcntl(fd, F_SETFL, flags & ~O_NONBLOCK);
+  }
+  const std::filesystem::path shown = is_stdin ? std::filesystem::path("-") : path;
   std::string contents;
-  std::vector<char> buffer(1 << 16);
+  std::vector<char> buffer(std::size_t{1} << 16);
   for (;;) {
     const ssize_t n = ::read(fd, buffer.data(), buffer.size());
     if (n < 0) {
       if (errno == EINTR) continue;
-      throw_io(path, "cannot read file", errno);
+      throw_io(shown, option, is_stdin ? "cannot read standard input" : "cannot read file", errno);
     }
     if (n == 0) break;
+    if (contents.size() + static_cast<std::size_t>(n) > max_bytes)
+      throw_io(shown, option,
+               "the input is larger than the " + std::to_string(max_bytes) + "-byte limit on an input file:", 0);
     contents.append(buffer.data(), static_cast<std::size_t>(n));
   }
   return contents;
 }
 
-void write_file_atomically(const std::filesystem::path& path, std::string_view contents) {
-  if (path.empty() || !path.has_filename()) throw_io(path, "cannot write to a path without a file name:", 0);
-  const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
-  std::string temp = (dir / ("." + path.filename().string() + ".tmp-XXXXXX")).string();
-  const int fd = ::mkstemp(temp.data());
-  if (fd < 0) throw_io(path, "cannot create a temporary file next to", errno);
-  FdGuard guard(fd);
-  // From here on every failure removes the temporary file before throwing.
-  const auto fail = [&](const std::string& what, int err) {
-    const int saved = err;
-    if (guard.get() >= 0) guard.close_now();
-    ::unlink(temp.c_str());
-    throw_io(path, what, saved);
-  };
-
+void check_output_path(const std::filesystem::path& path, std::string_view option) {
+  if (is_std_stream(path)) return;
+  if (path.empty() || !path.has_filename() || path.filename() == "." || path.filename() == "..")
+    throw_io(path, option, "cannot write to a path without a file name:", 0);
   struct stat st {};
-  const mode_t mode =
-      ::stat(path.c_str(), &st) == 0 ? (st.st_mode & 07777) : static_cast<mode_t>(0666 & ~current_umask());
-  if (::fchmod(fd, mode) != 0) fail("cannot set permissions of the temporary file for", errno);
-
-  const char* data = contents.data();
-  std::size_t left = contents.size();
-  while (left > 0) {
-    const ssize_t n = ::write(fd, data, left);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      fail("cannot write", errno);
-    }
-    data += n;
-    left -= static_cast<std::size_t>(n);
+  if (::lstat(path.c_str(), &st) == 0) {
+    if (S_ISLNK(st.st_mode))
+      throw_io(path, option, "refusing to replace a symbolic link (name its target instead):", 0);
+    if (!S_ISREG(st.st_mode))
+      throw_io(path, option, std::string("refusing to replace ") + file_kind(st.st_mode) + ":", 0);
+  } else if (errno != ENOENT) {
+    throw_io(path, option, "cannot check", errno);
   }
-  if (::fsync(fd) != 0) fail("cannot flush", errno);
-  if (guard.close_now() != 0) fail("cannot close the temporary file for", errno);
-  if (::rename(temp.c_str(), path.c_str()) != 0) fail("cannot replace", errno);
+  const std::filesystem::path dir = directory_of(path);
+  struct stat ds {};
+  if (::stat(dir.c_str(), &ds) != 0) throw_io(path, option, "the directory of the output does not exist for", errno);
+  if (!S_ISDIR(ds.st_mode)) throw_io(path, option, "the parent of the output is not a directory:", 0);
+  if (::access(dir.c_str(), W_OK | X_OK) != 0) throw_io(path, option, "cannot create files in the directory of", errno);
+}
 
+struct OutputFile::State {
+  std::filesystem::path path;
+  std::string option;
+  std::string temp;  // empty for standard output
+  int fd = -1;
+  bool committed = false;
+  std::unique_ptr<FdStreambuf> buf;
+  std::unique_ptr<std::ostream> stream;
+
+  void discard() noexcept {
+    if (fd >= 0 && !temp.empty()) ::close(fd);
+    fd = -1;
+    if (!temp.empty()) ::unlink(temp.c_str());
+  }
+};
+
+OutputFile::OutputFile(const std::filesystem::path& path, std::string_view option) : state_(std::make_unique<State>()) {
+  State& s = *state_;
+  s.path = path;
+  s.option = std::string(option);
+  if (is_std_stream(path)) {
+    std::cout.flush();  // keep anything already printed in order
+    s.fd = STDOUT_FILENO;
+  } else {
+    check_output_path(path, option);
+    const std::filesystem::path dir = directory_of(path);
+    const std::string name = path.filename().string();
+    remove_stale_temporaries(dir, name);
+    s.temp = (dir / ("." + name + std::string(kTempInfix) + std::to_string(::getpid()) + "-XXXXXX")).string();
+    s.fd = ::mkstemp(s.temp.data());
+    if (s.fd < 0) {
+      const int err = errno;
+      s.temp.clear();
+      throw_io(path, option, "cannot create a temporary file next to", err);
+    }
+    struct stat st {};
+    const mode_t mode =
+        ::stat(path.c_str(), &st) == 0 ? (st.st_mode & 07777) : static_cast<mode_t>(0666 & ~current_umask());
+    if (::fchmod(s.fd, mode) != 0) {
+      const int err = errno;
+      s.discard();
+      throw_io(path, option, "cannot set permissions of the temporary file for", err);
+    }
+  }
+  s.buf = std::make_unique<FdStreambuf>(s.fd);
+  s.stream = std::make_unique<std::ostream>(s.buf.get());
+}
+
+OutputFile::~OutputFile() {
+  if (state_ && !state_->committed) state_->discard();
+}
+
+std::ostream& OutputFile::stream() { return *state_->stream; }
+
+void OutputFile::commit() {
+  State& s = *state_;
+  const bool is_stdout = s.temp.empty();
+  const auto fail = [&](const std::string& what, int err) {
+    s.discard();
+    s.committed = true;  // nothing left to clean up
+    if (is_stdout) {
+      std::string message = "cannot write to standard output";
+      if (err != 0) message += ": " + std::string(std::strerror(err));
+      throw Error(Errc::IoError, message, {.field = s.option});
+    }
+    throw_io(s.path, s.option, what, err);
+  };
+  s.stream->flush();
+  if (s.buf->error() != 0 || !*s.stream) fail("cannot write", s.buf->error());
+  if (is_stdout) {
+    s.committed = true;
+    return;
+  }
+  if (::fsync(s.fd) != 0) fail("cannot flush", errno);
+  const int fd = s.fd;
+  s.fd = -1;
+  if (::close(fd) != 0) fail("cannot close the temporary file for", errno);
+  // The target may have changed since the constructor checked it: check again
+  // so a symlink or device planted meanwhile is not replaced.
+  struct stat st {};
+  if (::lstat(s.path.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
+    fail(std::string("refusing to replace ") + file_kind(st.st_mode) + ":", 0);
+  if (::rename(s.temp.c_str(), s.path.c_str()) != 0) fail("cannot replace", errno);
+  s.committed = true;
   // Make the rename itself durable. A failure here leaves the new file in
   // place (the replacement has happened), so it is not reported.
-  const int dir_fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  const int dir_fd = ::open(directory_of(s.path).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
   if (dir_fd >= 0) {
     (void)::fsync(dir_fd);
     ::close(dir_fd);
   }
 }
+
+void write_file_atomically(const std::filesystem::path& path, std::string_view contents, std::string_view option) {
+  OutputFile out(path, option);
+  out.stream().write(contents.data(), static_cast<std::streamsize>(contents.size()));
+  out.commit();
+}
+
+void write_stdout(std::string_view contents) { write_file_atomically(std::filesystem::path("-"), contents, "stdout"); }
 
 }  // namespace hula::io

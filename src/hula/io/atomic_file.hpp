@@ -1,36 +1,98 @@
 // SPDX-License-Identifier: MIT
-// Whole-file text I/O for the io module and the CLI: reading a file into a
-// string, and replacing a file atomically (write a temporary file in the same
-// directory, fsync it, rename it over the target, fsync the directory), so a
-// reader or a crash never sees a half-written curve file and a failed write
-// leaves the previous file byte-identical (DESIGN.md "Errors": boundaries leave
-// the state exactly as it was). POSIX only.
+// Whole-file I/O for the io module and the CLI, safe against hostile paths and
+// faults (issue 10, items 1, 2 and 11):
+// - reading: a regular file or `-` (standard input), never a device, FIFO or
+//   directory, and never more than a stated number of bytes;
+// - writing: a regular file replaced atomically (a temporary file in the same
+//   directory, fsync, rename over the target, directory fsync), or `-`
+//   (standard output). Symlinks, devices, FIFOs and directories are refused by
+//   name; the target is checked before any computation (check_output_path) and
+//   again just before the rename. Every write, flush and close is checked: a
+//   short write is an error, never a truncated file. A reader or a crash never
+//   sees a half-written file, and a failed write leaves the previous file
+//   byte-identical (DESIGN.md "Errors").
+// Temporary files are named `.<name>.tmp-<pid>-XXXXXX`; a write removes the
+// temporaries of the same target left by processes that no longer exist (a
+// killed write). POSIX only.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
+#include <memory>
+#include <ostream>
 #include <string>
 #include <string_view>
 
 namespace hula::io {
 
-/// Reads a whole file as bytes (no newline translation).
-/// @param path file to read
-/// @returns the file's contents
-/// @throws hula::Error(Errc::IoError) naming the path and the system's reason
-///   (missing file, permission denied, a directory, a read error);
-///   ErrorWhere.field is "path"
-[[nodiscard]] std::string read_text_file(const std::filesystem::path& path);
+/// The file name that means standard input (for reading) or standard output (for writing).
+inline constexpr std::string_view kStdStreamName = "-";
 
-/// Replaces (or creates) `path` with `contents` atomically.
-///
-/// Writes a temporary file `.<name>.tmp-XXXXXX` next to the target, fsyncs
-/// it, renames it over `path` and fsyncs the directory. An existing target
-/// keeps its permission bits; a new one gets 0666 minus the process umask.
-/// On any failure the temporary file is removed and the target is untouched.
-/// @param path destination file; its directory must exist and be writable
+/// True when `path` is `-`.
+[[nodiscard]] bool is_std_stream(const std::filesystem::path& path);
+
+/// Largest input read into memory by default (64 MiB): a 300,000-point curve
+/// file is ~20 MB. Larger inputs are refused before they exhaust memory.
+inline constexpr std::size_t kMaxInputBytes = std::size_t{64} << 20;
+
+/// Reads a whole regular file, or standard input for `-`, as bytes.
+/// @param path file to read, or `-`
+/// @param max_bytes refuse inputs longer than this
+/// @returns the contents
+/// @throws hula::Error(Errc::IoError) naming the path and the reason: missing,
+///   permission denied, not a regular file (directory, device, FIFO, socket),
+///   longer than `max_bytes` (the cap is named), a read error; ErrorWhere.field is "path"
+[[nodiscard]] std::string read_text_file(const std::filesystem::path& path, std::size_t max_bytes = kMaxInputBytes);
+
+/// Checks that `path` can be written before a computation starts: `-`, or a
+/// name in an existing, writable directory that is either absent or a regular
+/// file (not a symlink, directory, device, FIFO or socket).
+/// @param path the output path
+/// @param option how the user gave it, for the message ("--output", "--log")
+/// @throws hula::Error(Errc::IoError) naming `option` and the path; ErrorWhere.field is `option`
+void check_output_path(const std::filesystem::path& path, std::string_view option);
+
+/// An output being written: a temporary file renamed over the target on
+/// commit(), or standard output for `-`. Memory stays bounded whatever is
+/// written (the stream is buffered in 64 KiB). Destroying an uncommitted
+/// OutputFile removes its temporary file and leaves the target untouched.
+class OutputFile {
+ public:
+  /// Checks the target (check_output_path), removes stale temporaries of the
+  /// same target and opens a new temporary file next to it.
+  /// @throws hula::Error(Errc::IoError) naming `option` and the path
+  explicit OutputFile(const std::filesystem::path& path, std::string_view option = "path");
+  ~OutputFile();
+  OutputFile(const OutputFile&) = delete;
+  OutputFile& operator=(const OutputFile&) = delete;
+
+  /// The stream to write to. A failed write sets its badbit; commit() reports it.
+  [[nodiscard]] std::ostream& stream();
+  /// Flushes, fsyncs and renames the temporary file over the target (or
+  /// flushes standard output).
+  /// @throws hula::Error(Errc::IoError) naming the path and the system's reason
+  ///   (a short write, a full disk, a file-size limit); the temporary file is removed
+  void commit();
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+/// Replaces (or creates) `path` with `contents` atomically, or writes them to
+/// standard output for `-`. An existing target keeps its permission bits; a
+/// new one gets 0666 minus the process umask.
+/// @param path destination; its directory must exist and be writable
 /// @param contents bytes to write
+/// @param option how the user gave the path, for messages
 /// @throws hula::Error(Errc::IoError) naming the path and the system's reason;
-///   ErrorWhere.field is "path"
-void write_file_atomically(const std::filesystem::path& path, std::string_view contents);
+///   ErrorWhere.field is `option`
+void write_file_atomically(const std::filesystem::path& path, std::string_view contents,
+                           std::string_view option = "path");
+
+/// Writes `contents` to standard output and flushes it.
+/// @throws hula::Error(Errc::IoError) "cannot write to standard output: <reason>"
+///   when the write or the flush fails (a full disk, a closed descriptor, a closed pipe)
+void write_stdout(std::string_view contents);
 
 }  // namespace hula::io

@@ -59,7 +59,7 @@ FinCompoundStudy read_fin_compound_study(const StudyDocument& doc) {
   } else if (method == "combescure") {
     s.method = FinCompoundMethod::Combescure;
   } else {
-    throw Error(Errc::ParseError, "method = \"" + method + "\" must be \"projection\" or \"combescure\"",
+    throw Error(Errc::ParseError, "method = " + io::json::quote(method) + " must be \"projection\" or \"combescure\"",
                 {.field = "method"});
   }
   auto refuse = [](const char* member, const char* method_name) {
@@ -131,7 +131,7 @@ HermiteStudy read_hermite_study(const StudyDocument& doc) {
     else if (name == "cubic")
       s.options.rebuild = HermiteRebuild::Cubic;
     else
-      throw Error(Errc::ParseError, "rebuild = \"" + name + "\" must be \"quintic\" or \"cubic\"",
+      throw Error(Errc::ParseError, "rebuild = " + io::json::quote(name) + " must be \"quintic\" or \"cubic\"",
                   {.field = "rebuild"});
   }
   if (const Json* e = json::optional_member(b, "edits")) {

@@ -68,7 +68,7 @@ FairKnotsStudy fair_knots_study_from_json(const StudyDocument& document) {
     } else if (name == "variation") {
       study.setup.energy = FairingEnergy::Variation;
     } else {
-      throw Error(Errc::ParseError, "energy = \"" + name + "\" must be \"bending\" or \"variation\"",
+      throw Error(Errc::ParseError, "energy = " + json::quote(name) + " must be \"bending\" or \"variation\"",
                   root_path("energy").where);
     }
   }
@@ -83,7 +83,8 @@ FairKnotsStudy fair_knots_study_from_json(const StudyDocument& document) {
     } else if (name == "both") {
       study.method = FairingMethod::Both;
     } else {
-      throw Error(Errc::ParseError, "method = \"" + name + "\" must be \"ga\", \"deterministic\", \"both\" or \"none\"",
+      throw Error(Errc::ParseError,
+                  "method = " + json::quote(name) + " must be \"ga\", \"deterministic\", \"both\" or \"none\"",
                   root_path("method").where);
     }
   }
@@ -104,7 +105,7 @@ FairKnotsStudy fair_knots_study_from_json(const StudyDocument& document) {
       } else if (name == "binary") {
         ga.algorithm = FairingGa::Binary;
       } else {
-        throw Error(Errc::ParseError, "ga.algorithm = \"" + name + "\" must be \"real\" or \"binary\"",
+        throw Error(Errc::ParseError, "ga.algorithm = " + json::quote(name) + " must be \"real\" or \"binary\"",
                     p.member("algorithm").where);
       }
     }

@@ -14,6 +14,7 @@
 #include "hula/intrinsic/natural_curve.hpp"
 #include "hula/io/atomic_file.hpp"
 #include "hula/io/json_read.hpp"
+#include "hula/io/json_write.hpp"
 
 namespace hula::io {
 
@@ -37,8 +38,8 @@ nurbs::Parameterisation parameterisation_from_name(std::string_view name, std::s
   if (name == "chord") return nurbs::Parameterisation::ChordLength;
   if (name == "centripetal") return nurbs::Parameterisation::Centripetal;
   throw Error(Errc::ParseError,
-              std::string(field) + " = \"" + std::string(name) +
-                  "\" is not a parameterisation (expected \"uniform\", \"chord\" or \"centripetal\")",
+              std::string(field) + " = " + json::quote(std::string(name)) +
+                  " is not a parameterisation (expected \"uniform\", \"chord\" or \"centripetal\")",
               {.field = std::string(field)});
 }
 
@@ -103,7 +104,8 @@ curve::Curve read_nurbs(const Json& doc) {
       json::get_points(json::require_member(doc, root, "control_points"), root_path("control_points"));
   std::vector<double> weights;
   if (const Json* w = json::optional_member(doc, "weights"); w && !w->is_null())
-    weights = json::get_number_array(*w, root_path("weights"));
+    weights = json::get_nonempty_number_array(
+        *w, root_path("weights"), "give one weight per control point, or leave \"weights\" out for a polynomial curve");
   return nurbs::NurbsCurve(static_cast<int>(degree), std::move(knots), std::move(cps.points), std::move(weights),
                            cps.dimension);
 }
@@ -116,7 +118,8 @@ curve::Curve read_bezier(const Json& doc) {
   data.control_points = std::move(cps.points);
   data.dimension = cps.dimension;
   if (const Json* w = json::optional_member(doc, "weights"); w && !w->is_null())
-    data.weights = json::get_number_array(*w, root_path("weights"));
+    data.weights = json::get_nonempty_number_array(
+        *w, root_path("weights"), "give one weight per control point, or leave \"weights\" out for a polynomial curve");
   return curve::Curve::bezier(std::move(data));
 }
 
@@ -137,8 +140,11 @@ curve::Curve read_interpolated(const Json& doc) {
   std::vector<double> parameters, knots;
   const Json* jp = json::optional_member(doc, "parameters");
   const Json* jk = json::optional_member(doc, "knots");
-  if (jp) parameters = json::get_number_array(*jp, root_path("parameters"));
-  if (jk) knots = json::get_number_array(*jk, root_path("knots"));
+  if (jp)
+    parameters = json::get_nonempty_number_array(*jp, root_path("parameters"),
+                                                 "give one parameter per point, or leave \"parameters\" out");
+  if (jk)
+    knots = json::get_nonempty_number_array(*jk, root_path("knots"), "give one knot per point, or leave \"knots\" out");
   if (jp && jk) {
     // "knots" is the thesis's interpolate-knots: the same quantity as "parameters".
     if (knots.size() != parameters.size())
@@ -280,8 +286,8 @@ curve::Curve curve_from_json(const Json& document) {
   if (kind == "law") return read_law(document);
   if (kind == "natural") return read_natural(document);
   throw Error(Errc::ParseError,
-              "kind = \"" + kind +
-                  "\" is not a known curve kind (expected \"nurbs\", \"bezier\", \"interpolated\", \"hermite\", "
+              "kind = " + json::quote(kind) +
+                  " is not a known curve kind (expected \"nurbs\", \"bezier\", \"interpolated\", \"hermite\", "
                   "\"law\" or \"natural\")",
               {.field = "kind"});
 }
@@ -348,9 +354,7 @@ Json curve_to_json(const curve::Curve& curve) {
   return doc;
 }
 
-std::string to_file_text(const Json& document) {
-  return document.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
-}
+std::string to_file_text(const Json& document) { return format_json(document); }
 
 void write_curve_file(const std::filesystem::path& path, const curve::Curve& curve) {
   write_file_atomically(path, to_file_text(curve_to_json(curve)));

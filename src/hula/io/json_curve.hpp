@@ -100,7 +100,8 @@ inline constexpr int kCurveFormatVersion = 1;
 /// (2-D curves write [x, y] points; weights are null for a non-rational NURBS). Doubles are
 /// written so that curve_from_json(curve_to_json(c)) == c bit for bit.
 [[nodiscard]] Json curve_to_json(const curve::Curve& curve);
-/// Serialises a document as the files are written: 2-space indentation, final newline.
+/// Serialises a document as the files are written (format_json: 2-space indentation, arrays of
+/// numbers on one line, final newline).
 [[nodiscard]] std::string to_file_text(const Json& document);
 /// Writes a curve file (curve_to_json), atomically.
 /// @throws hula::Error(Errc::IoError) naming the path

@@ -37,13 +37,59 @@ JsonPath root_path(std::string_view field) {
 }
 
 std::string describe(const Json& value) {
-  std::string s = value.dump(-1, ' ', false, Json::error_handler_t::replace);
-  constexpr std::size_t kMax = 60;
-  if (s.size() > kMax) s = s.substr(0, kMax) + "...";
-  return s;
+  // Containers are described by size, never stringified: a deeply nested or
+  // huge value must cost nothing to mention, and a file's content is not echoed.
+  if (value.is_array()) return "an array of " + std::to_string(value.size()) + " elements";
+  if (value.is_object()) return "an object of " + std::to_string(value.size()) + " members";
+  if (value.is_string()) {
+    const auto& s = value.get_ref<const std::string&>();
+    constexpr std::size_t kMaxQuoted = 16;
+    if (s.size() <= kMaxQuoted) return Json(s).dump(-1, ' ', false, Json::error_handler_t::replace);
+    return Json(s.substr(0, kMaxQuoted)).dump(-1, ' ', false, Json::error_handler_t::replace) + " (" +
+           std::to_string(s.size()) + " characters)";
+  }
+  return value.dump(-1, ' ', false, Json::error_handler_t::replace);  // a number, true, false or null
+}
+
+std::string quote(std::string_view text) { return describe(Json(std::string(text))); }
+
+void check_json_shape(std::string_view text, std::string_view what, std::size_t max_depth) {
+  // One pass over the bytes, strings skipped: the nesting depth is known
+  // before nlohmann builds (and later destroys and prints) the value.
+  std::size_t depth = 0, line = 1, column = 0;
+  bool in_string = false, escaped = false;
+  for (const char c : text) {
+    ++column;
+    if (c == '\n') {
+      ++line;
+      column = 0;
+    }
+    if (in_string) {
+      if (escaped)
+        escaped = false;
+      else if (c == '\\')
+        escaped = true;
+      else if (c == '"')
+        in_string = false;
+      continue;
+    }
+    if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > max_depth)
+        throw Error(Errc::ParseError,
+                    std::string(what) + " nests arrays and objects deeper than the limit of " +
+                        std::to_string(max_depth) + " levels (at line " + std::to_string(line) + ", column " +
+                        std::to_string(column) + ")",
+                    {.line = line, .column = column});
+    } else if ((c == ']' || c == '}') && depth > 0) {
+      --depth;
+    }
+  }
 }
 
 Json parse_json_text(std::string_view text, std::string_view what) {
+  check_json_shape(text, what, kMaxJsonDepth);
   try {
     return Json::parse(text.begin(), text.end());
   } catch (const Json::parse_error& e) {
@@ -59,19 +105,24 @@ Json parse_json_text(std::string_view text, std::string_view what) {
       }
     }
     std::string reason = e.what();
-    // nlohmann's message is "[json.exception.parse_error.101] parse error at line L, column C: <reason>".
+    // nlohmann's message is "[json.exception.parse_error.101] parse error at line L, column C: <reason>; last
+    // read: '<token>'". The token is the input's own text (a whole line of /etc/passwd, say): not echoed.
     if (const auto colon = reason.find(": "); colon != std::string::npos) reason = reason.substr(colon + 2);
+    if (const auto last = reason.find("; last read"); last != std::string::npos) reason.resize(last);
     throw Error(Errc::ParseError,
                 std::string(what) + " is not valid JSON at line " + std::to_string(line) + ", column " +
                     std::to_string(column) + ": " + reason,
                 {.line = line, .column = column});
   } catch (const Json::out_of_range& e) {
-    // nlohmann refuses literals that overflow a double (e.g. 1e999) before any path is known.
+    // nlohmann refuses literals that overflow a double (e.g. 1e999) before any path is known; its
+    // message quotes the literal, which is a number: kept, cut to a few characters.
     std::string reason = e.what();
     if (const auto bracket = reason.find("] "); bracket != std::string::npos) reason = reason.substr(bracket + 2);
+    constexpr std::size_t kMaxReason = 48;
+    if (reason.size() > kMaxReason) reason = reason.substr(0, kMaxReason) + "...";
     throw Error(Errc::NonFiniteInput, std::string(what) + " holds a number that is not a finite double: " + reason);
-  } catch (const Json::exception& e) {
-    throw Error(Errc::ParseError, std::string(what) + " cannot be read as JSON: " + e.what());
+  } catch (const Json::exception&) {
+    throw Error(Errc::ParseError, std::string(what) + " cannot be read as JSON");
   }
 }
 
@@ -124,6 +175,12 @@ std::vector<double> get_number_array(const Json& value, const JsonPath& path) {
   std::vector<double> out;
   out.reserve(array.size());
   for (std::size_t i = 0; i < array.size(); ++i) out.push_back(get_number(array[i], path.element(i)));
+  return out;
+}
+
+std::vector<double> get_nonempty_number_array(const Json& value, const JsonPath& path, std::string_view needed) {
+  std::vector<double> out = get_number_array(value, path);
+  if (out.empty()) throw Error(Errc::ParseError, path.text + " is empty: " + std::string(needed), path.where);
   return out;
 }
 

@@ -35,11 +35,28 @@ struct JsonPath {
 /// The root path named `field` (e.g. "control_points"), or "" for the document itself.
 [[nodiscard]] JsonPath root_path(std::string_view field);
 
-/// A short printable rendering of a JSON value for messages (at most ~60 characters).
+/// Deepest nesting of arrays and objects a document may have. Our formats
+/// need at most 6; the cap keeps recursion in nlohmann and in callers bounded.
+inline constexpr std::size_t kMaxJsonDepth = 64;
+
+/// A short printable rendering of a JSON value for messages: a number, true,
+/// false or null as written, a string's first 16 characters, and an array or
+/// object by its size only (never stringified, whatever its depth or size).
 [[nodiscard]] std::string describe(const Json& value);
 
+/// A string for a message: quoted, cut to its first 16 characters (the length
+/// is given when longer), so a value typed into a file is never echoed whole.
+[[nodiscard]] std::string quote(std::string_view text);
+
+/// Refuses text whose arrays and objects nest deeper than `max_depth` (one
+/// pass over the bytes, strings skipped), before any parser recurses into it.
+/// @throws hula::Error(Errc::ParseError) naming the limit, the line and the column
+void check_json_shape(std::string_view text, std::string_view what, std::size_t max_depth = kMaxJsonDepth);
+
 /// Parses JSON text; syntax errors become Errc::ParseError with line and column, a
-/// number literal that overflows a double (1e999) Errc::NonFiniteInput.
+/// number literal that overflows a double (1e999) Errc::NonFiniteInput. Nesting
+/// deeper than kMaxJsonDepth is refused first (check_json_shape). Messages never
+/// quote the input's text.
 /// @param what the kind of document for the message ("curve file")
 [[nodiscard]] Json parse_json_text(std::string_view text, std::string_view what);
 
@@ -56,6 +73,11 @@ struct JsonPath {
 [[nodiscard]] const Json& get_array(const Json& value, const JsonPath& path);
 /// An array of finite numbers at `path`.
 [[nodiscard]] std::vector<double> get_number_array(const Json& value, const JsonPath& path);
+/// A non-empty array of finite numbers at `path` (where a value is required,
+/// `[]` is refused by name rather than read as "absent").
+/// @throws hula::Error(Errc::ParseError) "<path> is empty: <needed>"
+[[nodiscard]] std::vector<double> get_nonempty_number_array(const Json& value, const JsonPath& path,
+                                                            std::string_view needed);
 /// Member `name` of object `object` (at `parent`), or throws ParseError "missing member".
 [[nodiscard]] const Json& require_member(const Json& object, const JsonPath& parent, std::string_view name);
 /// Member `name` or nullptr when absent or null.

@@ -119,7 +119,7 @@ MatchGaSettings read_ga(const Json& g, const jr::JsonPath& path) {
     else if (name == "real")
       s.algorithm = MatchGaSettings::Algorithm::Real;
     else
-      throw Error(Errc::ParseError, "ga.algorithm = \"" + name + "\" must be \"binary\" or \"real\"",
+      throw Error(Errc::ParseError, "ga.algorithm = " + json::quote(name) + " must be \"binary\" or \"real\"",
                   {.field = "ga.algorithm"});
   }
   if (const Json* a = jr::optional_member(g, "selection")) {
@@ -129,7 +129,7 @@ MatchGaSettings read_ga(const Json& g, const jr::JsonPath& path) {
     else if (name == "tournament")
       s.selection = optim::Selection::Tournament;
     else
-      throw Error(Errc::ParseError, "ga.selection = \"" + name + "\" must be \"roulette\" or \"tournament\"",
+      throw Error(Errc::ParseError, "ga.selection = " + json::quote(name) + " must be \"roulette\" or \"tournament\"",
                   {.field = "ga.selection"});
   }
   if (const Json* v = jr::optional_member(g, "population")) {

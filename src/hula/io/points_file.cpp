@@ -15,10 +15,9 @@ namespace {
 
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
-std::string quoted(std::string_view s) {
-  constexpr std::size_t kMax = 40;
-  return "\"" + std::string(s.substr(0, kMax)) + (s.size() > kMax ? "...\"" : "\"");
-}
+// A field is described by its length, never quoted: the "CSV" may be any file
+// a study names (/etc/passwd), and its content must not reach a message.
+std::string field_text(std::string_view s) { return "the " + std::to_string(s.size()) + "-character field"; }
 
 }  // namespace
 
@@ -71,11 +70,17 @@ PointSet parse_points_csv(std::string_view text) {
       const auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
       if (field.empty()) throw Error(Errc::ParseError, at + ": empty field where a number is expected", where);
       if (ec == std::errc::result_out_of_range)
-        throw Error(Errc::NonFiniteInput, at + ": " + quoted(field) + " is outside the range of a double", where);
+        throw Error(Errc::NonFiniteInput, at + ": " + field_text(field) + " is outside the range of a double", where);
       if (ec != std::errc() || ptr != digits.data() + digits.size())
-        throw Error(Errc::ParseError, at + ": " + quoted(field) + " is not a number", where);
+        throw Error(Errc::ParseError, at + ": " + field_text(field) + " is not a number", where);
       if (!std::isfinite(v))
-        throw Error(Errc::NonFiniteInput, at + ": " + quoted(field) + " is not a finite number", where);
+        throw Error(Errc::NonFiniteInput,
+                    at + ": the field reads as " +
+                        (std::isnan(v) ? "nan"
+                         : v > 0       ? "inf"
+                                       : "-inf") +
+                        " where a finite number is expected",
+                    where);
       p[static_cast<std::size_t>(count)] = v;
       ++count;
       if (last) break;

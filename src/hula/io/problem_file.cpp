@@ -29,11 +29,12 @@ optim::Variable read_variable(const Json& value, const JsonPath& path, law::Cont
   try {
     (void)context.parameter(v.name);  // refuses non-identifiers, function names, pi and e
   } catch (const Error& e) {
-    throw Error(Errc::ParseError, name_path.text + " = \"" + v.name + "\" cannot name a variable: " + e.message(),
+    throw Error(Errc::ParseError,
+                name_path.text + " = " + json::quote(v.name) + " cannot name a variable: " + e.message(),
                 name_path.where);
   }
   if (!names.insert(v.name).second)
-    throw Error(Errc::ParseError, name_path.text + " = \"" + v.name + "\" repeats an earlier variable name",
+    throw Error(Errc::ParseError, name_path.text + " = " + json::quote(v.name) + " repeats an earlier variable name",
                 name_path.where);
   v.lower = json::get_number(json::require_member(value, path, "lower"), path.member("lower"));
   v.upper = json::get_number(json::require_member(value, path, "upper"), path.member("upper"));
@@ -106,10 +107,10 @@ ProblemFile parse_problem_json(std::string_view text) {
       std::string type = "inequality";
       if (const Json* t = json::optional_member(list[i], "type")) type = json::get_string(*t, path.member("type"));
       if (type != "inequality" && type != "equality")
-        throw Error(
-            Errc::ParseError,
-            path.member("type").text + " = \"" + type + "\" must be \"inequality\" (g <= 0) or \"equality\" (h = 0)",
-            path.where);
+        throw Error(Errc::ParseError,
+                    path.member("type").text + " = " + json::quote(type) +
+                        " must be \"inequality\" (g <= 0) or \"equality\" (h = 0)",
+                    path.where);
       const JsonPath expr_path = path.member("expression");
       const std::string expr = json::get_string(json::require_member(list[i], path, "expression"), expr_path);
       (type == "inequality" ? inequalities : equalities).push_back(read_expression(expr, expr_path, context, options));

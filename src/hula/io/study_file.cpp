@@ -1,12 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include "hula/io/study_file.hpp"
 
-#include <fstream>
 #include <limits>
-#include <sstream>
 #include <vector>
 
 #include "hula/core/error.hpp"
+#include "hula/io/atomic_file.hpp"
 #include "hula/io/json_read.hpp"
 
 namespace hula::io {
@@ -25,13 +24,15 @@ StudyDocument parse_study_json(std::string_view text, std::string_view expected_
   if (!doc.is_object()) json::type_error(doc, root_path(""), "a JSON object (a study file)");
   const std::string format = json::get_string(json::require_member(doc, root_path(""), "format"), root_path("format"));
   if (format != "hula-study")
-    throw Error(Errc::ParseError, "format = \"" + format + "\": a study file must have \"format\": \"hula-study\"",
+    throw Error(Errc::ParseError,
+                "format = " + io::json::quote(format) + ": a study file must have \"format\": \"hula-study\"",
                 root_path("format").where);
   (void)json::get_integer(json::require_member(doc, root_path(""), "version"), root_path("version"), 1, 1);
   out.header.kind = json::get_string(json::require_member(doc, root_path(""), "study"), root_path("study"));
   if (out.header.kind != expected_kind)
     throw Error(Errc::ParseError,
-                "study = \"" + out.header.kind + "\": this command runs \"" + std::string(expected_kind) + "\" studies",
+                "study = " + io::json::quote(out.header.kind) + ": this command runs \"" + std::string(expected_kind) +
+                    "\" studies",
                 root_path("study").where);
   if (const Json* s = json::optional_member(doc, "seed"))
     out.header.seed =
@@ -42,12 +43,7 @@ StudyDocument parse_study_json(std::string_view text, std::string_view expected_
 }
 
 StudyDocument read_study_file(const std::filesystem::path& path, std::string_view expected_kind) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(Errc::IoError, "cannot read study file '" + path.string() + "'");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw Error(Errc::IoError, "cannot read study file '" + path.string() + "'");
-  return parse_study_json(text.str(), expected_kind);
+  return parse_study_json(io::read_text_file(path), expected_kind);
 }
 
 void check_members(const Json& body, std::initializer_list<std::string_view> kind_members) {

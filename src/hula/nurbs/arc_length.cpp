@@ -9,7 +9,9 @@
 // on the requested interval, so the accepted pieces add up to at most
 // tolerance × L0. An estimate within 50 ulps of the piece's magnitude is
 // accepted as rounding noise. Bisection stops at kMaxDepth levels or after
-// kMaxEvaluations speed evaluations with Errc::NumericalFailure.
+// kMaxEvaluations + kEvaluationsPerSpan × (number of spans) speed evaluations
+// with Errc::NumericalFailure: the budget scales with the curve, so a valid
+// 300,000-span cubic is integrated, and a pathological span still ends.
 #include "hula/nurbs/arc_length.hpp"
 
 #include <algorithm>
@@ -40,6 +42,8 @@ constexpr std::array<double, 4> kWg = {0.129484966168869693270611432679082, 0.27
 
 constexpr int kMaxDepth = 48;
 constexpr long kMaxEvaluations = 2'000'000;
+// 32 GK15 rules per span: a smooth span needs one to a few.
+constexpr long kEvaluationsPerSpan = 32 * 15;
 
 struct GkResult {
   double kronrod;
@@ -50,7 +54,10 @@ struct GkResult {
 class SpeedIntegrator {
  public:
   SpeedIntegrator(const NurbsCurve& curve, double tolerance)
-      : curve_(curve), tolerance_(tolerance), breaks_(curve.knots().breakpoints()) {}
+      : curve_(curve),
+        tolerance_(tolerance),
+        breaks_(curve.knots().breakpoints()),
+        budget_(kMaxEvaluations + kEvaluationsPerSpan * static_cast<long>(breaks_.size())) {}
 
   double speed(double t) {
     ++evaluations_;
@@ -80,7 +87,7 @@ class SpeedIntegrator {
     const double noise = 50.0 * std::numeric_limits<double>::epsilon() * std::fabs(est.kronrod);
     if (est.error <= std::max(density * width, noise)) return est.kronrod;
     const double mid = 0.5 * (x0 + x1);
-    if (depth >= kMaxDepth || evaluations_ > kMaxEvaluations || !(mid > x0 && mid < x1)) fail(x0, x1);
+    if (depth >= kMaxDepth || evaluations_ > budget_ || !(mid > x0 && mid < x1)) fail(x0, x1);
     const GkResult left = gk15(x0, mid);
     const GkResult right = gk15(mid, x1);
     return adapt(x0, mid, left, density, depth + 1) + adapt(mid, x1, right, density, depth + 1);
@@ -122,6 +129,7 @@ class SpeedIntegrator {
   double tolerance_;
   long evaluations_ = 0;
   std::vector<double> breaks_;
+  long budget_;
   std::vector<Piece> pieces_;
 };
 

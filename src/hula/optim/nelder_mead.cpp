@@ -2,6 +2,7 @@
 #include "hula/optim/nelder_mead.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -28,6 +29,8 @@ void NelderMeadOptions::validate() const {
   if (!(std::isfinite(x_tolerance) && x_tolerance >= 0.0)) bad_option("x_tolerance", x_tolerance, "finite and >= 0");
   if (!(std::isfinite(f_tolerance) && f_tolerance >= 0.0)) bad_option("f_tolerance", f_tolerance, "finite and >= 0");
   if (max_evaluations == 0) bad_option("max_evaluations", 0.0, ">= 1");
+  if (!std::isfinite(wall_time_seconds) || wall_time_seconds < 0.0)
+    bad_option("wall_time_seconds", wall_time_seconds, "finite and >= 0");
 }
 
 NelderMeadResult nelder_mead(const ObjectiveFn& f, std::span<const double> start, const NelderMeadOptions& options) {
@@ -64,7 +67,14 @@ NelderMeadResult nelder_mead(const ObjectiveFn& f, std::span<const double> start
     throw Error(Errc::NumericalFailure, "nelder_mead: the objective is not finite at the start point");
   }
   result.converged = false;
-  for (std::size_t round = 0; round <= options.restarts; ++round) {
+  const auto started = std::chrono::steady_clock::now();
+  const auto stop_requested = [&] {
+    if (options.cancel != nullptr && options.cancel->is_cancelled()) return true;
+    return options.wall_time_seconds > 0.0 &&
+           std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() >=
+               options.wall_time_seconds;
+  };
+  for (std::size_t round = 0; round <= options.restarts && !result.stopped; ++round) {
     // Fresh simplex around the best point.
     for (std::size_t k = 0; k <= n; ++k) {
       auto v = vertex(k);
@@ -75,6 +85,10 @@ NelderMeadResult nelder_mead(const ObjectiveFn& f, std::span<const double> start
     const double round_start = best_value;
     bool converged = false;
     while (result.evaluations < options.max_evaluations) {
+      if (stop_requested()) {
+        result.stopped = true;
+        break;
+      }
       std::iota(order.begin(), order.end(), std::size_t{0});
       std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return values[a] < values[b]; });
       const std::size_t lo = order[0];

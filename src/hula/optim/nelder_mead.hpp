@@ -13,6 +13,8 @@
 #include <span>
 #include <vector>
 
+#include "hula/optim/run_report.hpp"
+
 namespace hula::optim {
 
 /// The objective: f(x) for x of the problem's dimension. May return NaN or
@@ -34,6 +36,12 @@ struct NelderMeadOptions {
   /// escape a collapsed simplex; the run ends earlier when a restart does not
   /// improve f. Default 3.
   std::size_t restarts = 3;
+  /// Wall-clock limit in seconds (finite, >= 0); 0 = none. The run ends with
+  /// the best point so far and `stopped` set. Default 0.
+  double wall_time_seconds = 0.0;
+  /// Optional cancellation token (e.g. set on SIGINT), not owned; checked
+  /// every iteration. The run ends with the best point so far. Default none.
+  const CancellationToken* cancel = nullptr;
   /// @throws hula::Error(Errc::InvalidOption) naming the field and its value.
   void validate() const;
 };
@@ -46,8 +54,10 @@ struct NelderMeadResult {
   double value = 0.0;
   /// Evaluations of f.
   std::size_t evaluations = 0;
-  /// True when the tolerances were met (false: the budget ran out).
+  /// True when the tolerances were met (false: the budget ran out or the run was stopped).
   bool converged = false;
+  /// True when wall_time_seconds or the cancellation token ended the run early.
+  bool stopped = false;
   /// Best value after each iteration (a convergence graph).
   std::vector<double> history{};
 };

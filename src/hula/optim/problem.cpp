@@ -59,6 +59,13 @@ void Problem::validate() const {
                       ": inverted bounds",
                   {.field = var_field(i, "lower"), .index = i});
     }
+    // The samplers compute lower + (upper - lower) * u: the width must be a finite double.
+    if (!std::isfinite(v.upper - v.lower)) {
+      throw Error(Errc::InvalidOption,
+                  var_field(i, "lower") + " = " + format_number(v.lower) + ", upper = " + format_number(v.upper) +
+                      ": the width upper - lower overflows a double (at most ~1.8e308)",
+                  {.field = var_field(i, "lower"), .index = i});
+    }
     if (std::isnan(v.precision) || v.precision < 0.0) {
       throw Error(Errc::InvalidOption, var_field(i, "precision") + " = " + format_number(v.precision) + " must be >= 0",
                   {.field = var_field(i, "precision"), .index = i});

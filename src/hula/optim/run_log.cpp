@@ -63,14 +63,17 @@ GenerationStatistics statistics(const GenerationLog& g) noexcept {
   return s;
 }
 
-void RunLog::write_csv(std::ostream& out) const {
-  if (generations_.empty()) return;
-  const auto& g0 = generations_.front();
-  out << "generation,evaluations,individual";
-  for (std::size_t j = 0; j < g0.dimension; ++j) out << ",x" << j;
-  for (std::size_t j = 0; j < g0.objectives; ++j) out << ",f" << j;
-  out << ",violation,fitness,failed\n";
-  for (const auto& g : generations_) {
+RunLogWriter::RunLogWriter(std::ostream& out, RunLogFormat format) : out_(&out), format_(format) {}
+
+void RunLogWriter::append(const GenerationLog& g) {
+  std::ostream& out = *out_;
+  if (format_ == RunLogFormat::Csv) {
+    if (count_ == 0) {
+      out << "generation,evaluations,individual";
+      for (std::size_t j = 0; j < g.dimension; ++j) out << ",x" << j;
+      for (std::size_t j = 0; j < g.objectives; ++j) out << ",f" << j;
+      out << ",violation,fitness,failed\n";
+    }
     for (std::size_t i = 0; i < g.size(); ++i) {
       out << g.generation << ',' << g.evaluations << ',' << i;
       for (std::size_t j = 0; j < g.dimension; ++j) {
@@ -87,15 +90,9 @@ void RunLog::write_csv(std::ostream& out) const {
       put(out, g.fitness[i], false);
       out << ',' << static_cast<int>(g.failed[i]) << '\n';
     }
-  }
-}
-
-void RunLog::write_json(std::ostream& out) const {
-  out << "{\"generations\":[";
-  for (std::size_t gi = 0; gi < generations_.size(); ++gi) {
-    const auto& g = generations_[gi];
-    out << (gi ? "," : "") << "{\"generation\":" << g.generation << ",\"evaluations\":" << g.evaluations
-        << ",\"individuals\":[";
+  } else {
+    out << (count_ == 0 ? "{\"generations\":[" : ",") << "{\"generation\":" << g.generation
+        << ",\"evaluations\":" << g.evaluations << ",\"individuals\":[";
     for (std::size_t i = 0; i < g.size(); ++i) {
       out << (i ? "," : "") << "{\"variables\":[";
       for (std::size_t j = 0; j < g.dimension; ++j) {
@@ -115,7 +112,23 @@ void RunLog::write_json(std::ostream& out) const {
     }
     out << "]}";
   }
-  out << "]}\n";
+  ++count_;
+}
+
+void RunLogWriter::finish() {
+  if (format_ == RunLogFormat::Json) *out_ << (count_ == 0 ? "{\"generations\":[" : "") << "]}\n";
+}
+
+void RunLog::write_csv(std::ostream& out) const {
+  RunLogWriter writer(out, RunLogFormat::Csv);
+  for (const auto& g : generations_) writer.append(g);
+  writer.finish();
+}
+
+void RunLog::write_json(std::ostream& out) const {
+  RunLogWriter writer(out, RunLogFormat::Json);
+  for (const auto& g : generations_) writer.append(g);
+  writer.finish();
 }
 
 }  // namespace hula::optim

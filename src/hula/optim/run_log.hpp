@@ -67,6 +67,30 @@ struct GenerationStatistics {
 /// @returns best (feasible), mean and spread of the successful evaluations.
 [[nodiscard]] GenerationStatistics statistics(const GenerationLog& generation) noexcept;
 
+/// The two run-log file formats.
+enum class RunLogFormat { Csv, Json };
+
+/// Writes a run log generation by generation as the run goes (bounded
+/// memory: nothing is kept), in the formats RunLog::write_csv / write_json
+/// describe. Write errors are the stream's (its badbit); the caller checks.
+class RunLogWriter {
+ public:
+  /// @param out the stream, owned by the caller, outliving the writer
+  /// @param format CSV or JSON
+  RunLogWriter(std::ostream& out, RunLogFormat format);
+  /// Writes one generation (the CSV header before the first).
+  void append(const GenerationLog& generation);
+  /// Ends the document (closes the JSON arrays); call once after the last append.
+  void finish();
+  /// Generations written so far.
+  [[nodiscard]] std::size_t generations() const noexcept { return count_; }
+
+ private:
+  std::ostream* out_;
+  RunLogFormat format_;
+  std::size_t count_ = 0;
+};
+
 /// A whole run's log, collected from the callback.
 class RunLog {
  public:

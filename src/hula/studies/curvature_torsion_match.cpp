@@ -92,6 +92,8 @@ TorsionMatchResult run_curvature_torsion_match(const CurvatureMatch& match, cons
   options.run.seed = seed;
   options.run.threads = threads;
   options.run.stop.generations = settings.generations;
+  options.run.stop.wall_time_seconds = settings.wall_time_seconds;
+  options.run.stop.cancel = settings.cancel;
   options.run.on_generation = [&](const optim::GenerationLog& g) {
     double bk = std::numeric_limits<double>::infinity(), bt = bk;
     for (std::size_t i = 0; i < g.failed.size(); ++i) {

@@ -53,6 +53,10 @@ struct TorsionMatchSettings {
   double torsion_weight = 1.0;
   /// Levenberg–Marquardt settings of the polish.
   LmOptions lm{};
+  /// Wall-clock limit of the NSGA-II run in seconds, 0 = none (`--time`; not a file member).
+  double wall_time_seconds = 0.0;
+  /// Cancellation token (SIGINT), not owned; the run ends with its front so far. Not a file member.
+  const optim::CancellationToken* cancel = nullptr;
   /// @throws hula::Error(Errc::InvalidOption) naming `nsga2.<field>` / `lm.<field>` out of range
   void validate() const;
 };

@@ -358,6 +358,8 @@ FairingResult fair_knots_ga(const KnotFairingSetup& setup, std::span<const doubl
     }
     result.evaluations += r.report.evaluations;
     ++result.rounds;
+    result.stopped =
+        r.report.termination == optim::Termination::Cancelled || r.report.termination == optim::Termination::WallTime;
     const double e = r.best.objectives.at(0) * scale;
     const double before = best_energy;
     if (e < best_energy) {
@@ -384,7 +386,7 @@ FairingResult fair_knots_ga(const KnotFairingSetup& setup, std::span<const doubl
     // "The bound should be re-initialised through the optimisation, based on the
     // best solution found so far" (7.4.1): also while a round still improves.
     const bool improving = best_energy < before * (1.0 - options.recentre_improvement);
-    if (!(on_bound || improving) || round == options.max_recentres) break;
+    if (!(on_bound || improving) || round == options.max_recentres || result.stopped) break;
     centre = best;
   }
   result.best = evaluate_parameters(setup, best);
@@ -445,6 +447,7 @@ FairingResult fair_knots_deterministic(const KnotFairingSetup& setup, std::span<
   FairingResult result;
   result.evaluations = r.evaluations + 1;
   result.rounds = 1;
+  result.stopped = r.stopped;
   result.convergence.reserve(r.history.size());
   for (const double h : r.history) result.convergence.push_back(h * scale);
   std::vector<double> best = log_ratios_to_parameters(r.x);

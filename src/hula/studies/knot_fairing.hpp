@@ -240,6 +240,9 @@ struct FairingResult {
   KnotBounds bounds{};
   /// Best energy so far after each generation (GA, all rounds in turn) or iteration (simplex).
   std::vector<double> convergence{};
+  /// True when a wall-time limit or a cancellation token (the options' run.stop,
+  /// NelderMeadOptions) ended the optimiser early: `best` is the best so far.
+  bool stopped = false;
 };
 
 /// GA fairing (7.4): the internal parameters are the variables, boxed by the

@@ -41,6 +41,8 @@ optim::GaResult run_ga(const CurvatureMatch& match, const MatchStudy& study, Mat
   run.seed = study.header.seed;
   run.threads = study.header.threads;
   run.stop.generations = g.generations;
+  run.stop.wall_time_seconds = study.header.wall_time_seconds;
+  run.stop.cancel = study.header.cancel;
   double best = std::numeric_limits<double>::infinity();
   run.on_generation = [&](const optim::GenerationLog& log) {
     for (std::size_t i = 0; i < log.size(); ++i) {

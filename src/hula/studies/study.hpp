@@ -8,6 +8,8 @@
 #include <cstdint>
 #include <string>
 
+#include "hula/optim/run_report.hpp"
+
 namespace hula::studies {
 
 /// The envelope of a study setup.
@@ -18,6 +20,12 @@ struct StudyHeader {
   std::uint64_t seed = 1;
   /// Worker threads (0 = all cores). Results never depend on it. Default 1.
   std::size_t threads = 1;
+  /// Wall-clock limit of the study's optimiser in seconds, 0 = none; the run
+  /// ends with its best so far. Set by the caller (`--time`), not a file member.
+  double wall_time_seconds = 0.0;
+  /// Cancellation token (SIGINT) the optimiser checks between generations, not
+  /// owned. Set by the caller, not a file member. Default none.
+  const optim::CancellationToken* cancel = nullptr;
 };
 
 }  // namespace hula::studies

@@ -41,16 +41,17 @@ std::string slurp_and_remove(const std::string& path) {
 
 }  // namespace
 
-RunningProcess::RunningProcess(pid_t pid, std::string out_path, std::string err_path)
-    : pid_(pid), out_path_(std::move(out_path)), err_path_(std::move(err_path)) {}
+RunningProcess::RunningProcess(pid_t pid, std::string out_path, std::string err_path, std::string in_path)
+    : pid_(pid), out_path_(std::move(out_path)), err_path_(std::move(err_path)), in_path_(std::move(in_path)) {}
 
 RunningProcess::~RunningProcess() {
+  std::error_code ec;
+  if (!in_path_.empty()) std::filesystem::remove(in_path_, ec);
   if (waited_) return;
   ::kill(pid_, SIGKILL);
   int status = 0;
   while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
   }
-  std::error_code ec;
   std::filesystem::remove(out_path_, ec);
   std::filesystem::remove(err_path_, ec);
 }
@@ -78,12 +79,24 @@ ProcessResult RunningProcess::wait() {
   return result;
 }
 
-RunningProcess start_process(const std::string& program, const std::vector<std::string>& args) {
-  std::string out_path = temp_name("out"), err_path = temp_name("err");
+RunningProcess start_process(const std::string& program, const std::vector<std::string>& args,
+                             const ProcessOptions& options) {
+  std::string out_path = temp_name("out"), err_path = temp_name("err"), in_path;
+  if (options.stdin_data) {
+    in_path = temp_name("in");
+    std::ofstream in(in_path, std::ios::binary);
+    in << *options.stdin_data;
+  }
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, out_path.c_str(), O_WRONLY | O_TRUNC, 0);
+  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, in_path.empty() ? "/dev/null" : in_path.c_str(), O_RDONLY,
+                                   0);
+  if (options.close_stdout)
+    posix_spawn_file_actions_addclose(&actions, STDOUT_FILENO);
+  else
+    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO,
+                                     options.stdout_path ? options.stdout_path->c_str() : out_path.c_str(),
+                                     O_WRONLY | O_TRUNC, 0);
   posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, err_path.c_str(), O_WRONLY | O_TRUNC, 0);
 
   std::vector<std::string> storage;
@@ -99,13 +112,15 @@ RunningProcess start_process(const std::string& program, const std::vector<std::
   if (rc != 0) {
     std::filesystem::remove(out_path);
     std::filesystem::remove(err_path);
+    if (!in_path.empty()) std::filesystem::remove(in_path);
     throw std::runtime_error("cannot start " + program + ": " + std::strerror(rc));
   }
-  return RunningProcess(pid, std::move(out_path), std::move(err_path));
+  return RunningProcess(pid, std::move(out_path), std::move(err_path), std::move(in_path));
 }
 
-ProcessResult run_process(const std::string& program, const std::vector<std::string>& args) {
-  return start_process(program, args).wait();
+ProcessResult run_process(const std::string& program, const std::vector<std::string>& args,
+                          const ProcessOptions& options) {
+  return start_process(program, args, options).wait();
 }
 
 }  // namespace hula::testing

@@ -5,6 +5,7 @@
 
 #include <sys/types.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,7 +24,7 @@ struct ProcessResult {
 /// for a "ready" line before sending it a signal).
 class RunningProcess {
  public:
-  RunningProcess(pid_t pid, std::string out_path, std::string err_path);
+  RunningProcess(pid_t pid, std::string out_path, std::string err_path, std::string in_path = {});
   /// Kills (SIGKILL) and reaps the process if wait() was not called, and removes the files.
   ~RunningProcess();
   RunningProcess(const RunningProcess&) = delete;
@@ -41,16 +42,30 @@ class RunningProcess {
  private:
   pid_t pid_;
   std::string out_path_, err_path_;
+  std::string in_path_;  ///< stdin data file, removed with the others
   bool waited_ = false;
+};
+
+/// How the child's standard streams are set up (fault and pipe tests).
+struct ProcessOptions {
+  /// Bytes fed to the child's stdin; absent: stdin is /dev/null.
+  std::optional<std::string> stdin_data{};
+  /// A file opened as the child's stdout instead of capturing it (e.g. "/dev/full").
+  std::optional<std::string> stdout_path{};
+  /// Start the child with stdout closed (`>&-`).
+  bool close_stdout = false;
 };
 
 /// Starts `program` with `args` as run_process does, without waiting.
 /// @throws std::runtime_error if the program cannot be started
-[[nodiscard]] RunningProcess start_process(const std::string& program, const std::vector<std::string>& args);
+[[nodiscard]] RunningProcess start_process(const std::string& program, const std::vector<std::string>& args,
+                                           const ProcessOptions& options = {});
 
-/// Runs `program` with `args` (argv[1..]) via posix_spawn, stdin from /dev/null,
-/// stdout and stderr captured through temporary files, and waits for it.
+/// Runs `program` with `args` (argv[1..]) via posix_spawn, stdin from /dev/null
+/// (or options.stdin_data), stdout and stderr captured through temporary
+/// files, and waits for it.
 /// @throws std::runtime_error if the program cannot be started
-[[nodiscard]] ProcessResult run_process(const std::string& program, const std::vector<std::string>& args);
+[[nodiscard]] ProcessResult run_process(const std::string& program, const std::vector<std::string>& args,
+                                        const ProcessOptions& options = {});
 
 }  // namespace hula::testing

@@ -1,0 +1,24 @@
+// SPDX-License-Identifier: MIT
+// JSON text for people and for diffs (issue 10, item 7): 2-space indentation,
+// arrays of scalars on one line ("pretty but compact": a control point or a
+// knot vector reads as one line, not one number per line), no negative zero,
+// and invalid UTF-8 replaced rather than thrown on. Every JSON document the
+// CLI prints or writes goes through format_json.
+#pragma once
+
+#include <string>
+
+#include "hula/io/json_read.hpp"
+
+namespace hula::io {
+
+/// The text of `value`: objects and arrays of containers one member per line
+/// with 2-space indentation, arrays whose elements are all scalars on one line
+/// ("[0.0, 0.5, 1.0]"), numbers in nlohmann's shortest round-trip form with
+/// -0.0 written as 0.0, and a final newline.
+[[nodiscard]] std::string format_json(const json::Json& value);
+
+/// One line of JSON (no newline inside, final newline): the `jsonl` form.
+[[nodiscard]] std::string format_json_line(const json::Json& value);
+
+}  // namespace hula::io

@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: MIT
+// Helpers of the issue-10 regression tests: run the built `hula`, read its
+// error JSON, write input files, and list a directory's hidden temporaries.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "hula/io/atomic_file.hpp"
+#include "hula/testing/run_process.hpp"
+#include "hula/testing/temp_dir.hpp"
+
+#ifndef HULA_CLI_PATH
+#error "HULA_CLI_PATH must name the hula binary"
+#endif
+
+namespace hula::regress {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+using testing::ProcessOptions;
+using testing::ProcessResult;
+using testing::TempDir;
+
+inline ProcessResult hula(const std::vector<std::string>& args, const ProcessOptions& options = {}) {
+  return testing::run_process(HULA_CLI_PATH, args, options);
+}
+
+/// The error JSON on stderr (a failure is recorded when it is not JSON).
+inline json error_of(const ProcessResult& r) {
+  try {
+    return json::parse(r.err);
+  } catch (const std::exception&) {
+    ADD_FAILURE() << "stderr is not the error JSON: " << r.err;
+    return json::object();
+  }
+}
+
+/// The error message on stderr.
+inline std::string message_of(const ProcessResult& r) {
+  const json e = error_of(r);
+  return e.contains("error") ? e["error"].value("message", std::string()) : std::string();
+}
+
+inline void write(const fs::path& p, const std::string& text) { io::write_file_atomically(p, text); }
+
+/// Names in `dir` that contain ".tmp-" (temporaries of atomic writes).
+inline std::vector<std::string> temporaries(const fs::path& dir) {
+  std::vector<std::string> out;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().filename().string().find(".tmp-") != std::string::npos) out.push_back(e.path().filename().string());
+  return out;
+}
+
+/// A small 3-D point set as CSV.
+inline const char* kPointsCsv = "0,0,0\n1,2,0\n3,3,1\n4,1,2\n6,0,2\n";
+
+}  // namespace hula::regress
