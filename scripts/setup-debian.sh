@@ -14,6 +14,8 @@ packages=(
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
   libocct-data-exchange-dev libocct-ocaf-dev
   libpagmo-dev libboost-serialization-dev
+  pybind11-dev python3-dev python3-numpy python3-pytest
+  libopenmpi-dev openmpi-bin
   libsqlite3-dev sqlite3
   doxygen
   python3 python3-jsonschema curl

@@ -150,6 +150,7 @@ int main(int argc, char** argv) {
         hula::cli::add_continuity(app),
         hula::cli::add_energy(app),
         hula::cli::add_serve(app),
+        hula::cli::add_batch(app),
     };
     commands.push_back(hula::cli::add_completion(app));
     try {

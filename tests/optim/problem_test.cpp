@@ -125,5 +125,30 @@ TEST(OptimProblem, BatchIsThreadInvariant) {
   EXPECT_EQ(0, std::memcmp(a.data(), b.data(), a.size() * sizeof(double)));
 }
 
+// checks a whole-batch evaluation against the per-point one: same values, NaN rows failed, exceptions propagate
+TEST(OptimProblem, EvaluateManyIsOneCallPerBatch) {
+  Problem p = sphere(2);
+  const EvaluateFn one = p.evaluate;
+  int calls = 0;
+  p.evaluate = {};
+  p.evaluate_many = [&](std::span<const double> x, std::span<double> v) {
+    ++calls;
+    for (std::size_t i = 0; i < v.size(); ++i) one(x.subspan(2 * i, 2), v.subspan(i, 1));
+    v[1] = std::numeric_limits<double>::quiet_NaN();
+  };
+  const std::vector<double> x{1, 2, 3, 4, 0.5, 0.5};
+  std::vector<double> v(3);
+  std::vector<std::uint8_t> failed(3);
+  const BatchReport r = evaluate_batch(p, x, v, failed);
+  EXPECT_EQ(calls, 1);
+  EXPECT_EQ(v[0], 5.0);
+  EXPECT_EQ(v[2], 0.5);
+  EXPECT_EQ(r.failed, 1U);
+  EXPECT_EQ(r.first_failed, 1U);
+  EXPECT_EQ(failed, (std::vector<std::uint8_t>{0, 1, 0}));
+  p.evaluate_many = [](std::span<const double>, std::span<double>) { throw std::runtime_error("backend down"); };
+  EXPECT_THROW((void)evaluate_batch(p, x, v, failed), std::runtime_error);
+}
+
 }  // namespace
 }  // namespace hula::optim

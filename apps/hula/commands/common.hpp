@@ -166,6 +166,8 @@ struct Command {
 [[nodiscard]] Command add_demo(CLI::App& app);
 /// `hula optimise`: a GA, NSGA-II or pagmo2 algorithm on a test problem or problem file.
 [[nodiscard]] Command add_optimise(CLI::App& app);
+/// `hula batch`: a campaign of study runs (commands/batch.cpp).
+[[nodiscard]] Command add_batch(CLI::App& app);
 /// `hula fair-knots`: knot-vector studies of thesis 7.2-7.4 from a "fair-knots" study file.
 [[nodiscard]] Command add_fair_knots(CLI::App& app);
 /// `hula fin-compound`: prescribed compound fins (projection technique, Combescure transform).

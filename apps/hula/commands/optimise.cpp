@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "commands/common.hpp"
+#include "commands/islands.hpp"
 #include "commands/study_common.hpp"
 #include "hula/core/error.hpp"
 #include "hula/io/atomic_file.hpp"
@@ -68,6 +69,7 @@ struct OptimiseArgs {
   std::optional<std::string> log;
   std::optional<std::string> reference;
   bool progress = false;
+  IslandArgs islands;
 };
 
 enum class Algorithm { BinaryGa, RealGa, Nsga2, Pagmo };
@@ -147,6 +149,8 @@ struct Outcome {
   std::vector<Solution> solutions;
   RunReport report;
   std::size_t threads = 1;
+  Json islands{};      // per-island statistics and migration log (--islands)
+  bool quiet = false;  // an MPI rank other than 0 (rank 0 prints)
 };
 
 optim::StopCriteria stop_criteria(const OptimiseArgs& a, std::size_t population) {
@@ -189,15 +193,26 @@ void fill_run(Options& o, const OptimiseArgs& a, RunLogFile* log) {
   o.run.on_generation = generation_callback(a, log);
 }
 
+// --islands: the same algorithm options, run as an archipelago on threads.
+Outcome island_outcome(const Problem& problem, const optim::IslandAlgorithm& algorithm, const OptimiseArgs& a) {
+  IslandOutcome r = run_islands(problem, algorithm, a.islands);
+  return Outcome{std::move(r.solutions), std::move(r.report), a.threads.value_or(1), std::move(r.islands), r.quiet};
+}
+
 Outcome run_flexo(const Problem& problem, const OptimiseArgs& a, Algorithm kind, RunLogFile* log) {
   Outcome out;
   out.threads = a.threads.value_or(1);
   const InterruptGuard guard;
+  const bool islands = a.islands.islands > 0;
+  // One log and one progress stream per run: the islands' generations interleave.
+  refuse(islands && a.log.has_value(), "log", a.algorithm + " with --islands");
+  refuse(islands && a.progress, "progress", a.algorithm + " with --islands");
   if (kind == Algorithm::RealGa) {
     optim::RealGaOptions o;
     fill_run(o, a, log);
     if (a.crossover) o.crossover_probability = *a.crossover;
     if (a.mutation) o.mutation_probability = *a.mutation;
+    if (islands) return island_outcome(problem, o, a);
     optim::GaResult r = optim::solve_real_ga(problem, o);
     out.solutions.push_back(std::move(r.best));
     out.report = std::move(r.report);
@@ -211,6 +226,7 @@ Outcome run_flexo(const Problem& problem, const OptimiseArgs& a, Algorithm kind,
       o.boost_start = b[0];
       o.boost_end = b[1];
     }
+    if (islands) return island_outcome(problem, o, a);
     optim::GaResult r = optim::solve_binary_ga(problem, o);
     out.solutions.push_back(std::move(r.best));
     out.report = std::move(r.report);
@@ -219,6 +235,7 @@ Outcome run_flexo(const Problem& problem, const OptimiseArgs& a, Algorithm kind,
     fill_run(o, a, log);
     if (a.crossover) o.crossover_probability = *a.crossover;
     if (a.mutation) o.mutation_probability = *a.mutation;
+    if (islands) return island_outcome(problem, o, a);
     optim::Nsga2Result r = optim::solve_nsga2(problem, o);
     out.solutions = std::move(r.front);
     out.report = std::move(r.report);
@@ -236,6 +253,7 @@ Outcome run_pagmo(const Problem& problem, const OptimiseArgs& a, optim::PagmoAlg
   refuse(a.crossover.has_value(), "crossover", a.algorithm);
   refuse(a.mutation.has_value(), "mutation", a.algorithm);
   refuse(a.threads.value_or(1) != 1, "threads", a.algorithm);
+  refuse(a.islands.islands > 0, "islands", a.algorithm);
   optim::PagmoOptions o;
   o.algorithm = algorithm;
   if (a.population) o.population = *a.population;
@@ -362,6 +380,7 @@ int run_optimise(const OptimiseArgs& a) {
   const Outcome out = algorithm.kind == Algorithm::Pagmo ? run_pagmo(problem, a, algorithm.pagmo)
                                                          : run_flexo(problem, a, algorithm.kind, log ? &*log : nullptr);
   if (log) log->commit();
+  if (out.quiet) return kExitOk;
 
   Json doc = Json::object();
   if (problem.objectives == 1) {
@@ -371,6 +390,7 @@ int run_optimise(const OptimiseArgs& a) {
     doc = front_json(out.solutions, problem, reference);
   }
   doc["report"] = report_json(out.report, a, problem, out.threads);
+  if (!out.islands.is_null()) doc["islands"] = out.islands;
   print_json(doc);
   return kExitOk;
 }
@@ -423,6 +443,7 @@ Command add_optimise(CLI::App& app) {
   sub->add_option("--log", a->log, "Write the run log: CSV if FILE ends in .csv, else JSON");
   sub->add_option("--reference", a->reference, "Hypervolume reference r1,r2,... (default 1.1 per objective)");
   sub->add_flag("--progress", a->progress, "Print one JSON line per generation on stderr");
+  add_island_options(sub, a->islands);
   return {sub, [a] { return run_optimise(*a); }};
 }
 

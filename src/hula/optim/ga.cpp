@@ -172,6 +172,7 @@ GaResult solve_real_ga(const Problem& problem, const RealGaOptions& options) {
     }
     for (std::size_t i = 0; i < n; ++i) next.copy_row_from(pop, order[i], i);
     for (std::size_t i = 0; i < n; ++i) pop.copy_row_from(next, i, i);
+    for (const std::size_t i : detail::migrate(run, evaluator, pop, n, g, better)) champion.offer(pop, i);
     detail::emit_generation(run.on_generation, buffer, pop, n, g, evaluator.evaluations(), pop.score);
   }
   if (!champion.found) detail::throw_no_finite(evaluator);
@@ -284,6 +285,12 @@ GaResult solve_binary_ga(const Problem& problem, const BinaryGaOptions& options)
       }
     }
     std::swap(pop, next);
+    for (const std::size_t i : detail::migrate(run, evaluator, pop, n, g, better)) {
+      // Migrants come from islands of the same problem and coding: their variables are on this grid.
+      const std::vector<std::uint8_t> bits = encoding.encode(pop.var(i));
+      std::copy(bits.begin(), bits.end(), pop.chrom(i).begin());
+      champion.offer(pop, i);
+    }
     compute_fitness(g);
     detail::emit_generation(run.on_generation, buffer, pop, n, g, evaluator.evaluations(), fitness);
   }

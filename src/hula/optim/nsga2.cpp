@@ -214,6 +214,21 @@ Nsga2Result solve_nsga2(const Problem& problem, const Nsga2Options& options) {
       rank[i] = rank_next[i];
       crowd[i] = crowd_next[i];
     }
+    const auto ranks_before = [&](std::size_t a, std::size_t b) {
+      if (rank[a] != rank[b]) return rank[a] < rank[b];
+      return crowd[a] > crowd[b];
+    };
+    const std::vector<std::size_t> migrants = detail::migrate(run, evaluator, pop, n, g, ranks_before);
+    if (!migrants.empty()) {
+      for (const std::size_t i : migrants) any_success = any_success || pop.failed[i] == 0;
+      if (binary) {
+        for (const std::size_t i : migrants) {
+          const std::vector<std::uint8_t> bits = encoding->encode(pop.var(i));
+          std::copy(bits.begin(), bits.end(), pop.chrom(i).begin());
+        }
+      }
+      rank_and_crowd(n);
+    }
     detail::emit_generation(run.on_generation, buffer, pop, n, g, evaluator.evaluations(), rank);
   }
   if (!any_success) detail::throw_no_finite(evaluator);

@@ -42,7 +42,10 @@ struct Udp {
     pagmo::vector_double values(p.values_per_point());
     bool ok = true;
     try {
-      p.evaluate(x, values);
+      if (p.evaluate)
+        p.evaluate(x, values);
+      else
+        p.evaluate_many(x, values);  // a batch of one point
       for (const double v : values) ok = ok && std::isfinite(v);
     } catch (...) {
       ok = false;

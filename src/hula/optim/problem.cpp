@@ -80,7 +80,7 @@ void Problem::validate() const {
                 "equality_tolerance = " + format_number(equality_tolerance) + " must be finite and >= 0",
                 {.field = "equality_tolerance"});
   }
-  if (!evaluate)
+  if (!evaluate && !evaluate_many)
     throw Error(Errc::InvalidOption, "evaluate is empty: set the evaluation function", {.field = "evaluate"});
 }
 
@@ -133,6 +133,19 @@ BatchReport evaluate_batch(const Problem& problem, std::span<const double> point
       report.first_message = message;
     }
   };
+  if (problem.evaluate_many) {
+    problem.evaluate_many(points, values);
+    for (std::size_t i = 0; i < n; ++i) {
+      failed[i] = 0;
+      for (std::size_t j = 0; j < k; ++j) {
+        if (!std::isfinite(values[i * k + j])) {
+          mark_failed(i, "non-finite value at position " + std::to_string(j));
+          break;
+        }
+      }
+    }
+    return report;
+  }
   parallel_for(0, n,
                [&](std::size_t i) {
                  const auto x = points.subspan(i * d, d);

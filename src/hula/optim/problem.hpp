@@ -40,6 +40,14 @@ struct Variable {
 /// may throw or return NaN: the point is then counted as a failed evaluation.
 using EvaluateFn = std::function<void(std::span<const double> variables, std::span<double> values)>;
 
+/// A whole-batch evaluation, for callers whose objective is vectorised over
+/// points (a NumPy function in the Python binding): reads n points (row-major
+/// n x dimension()) and writes their values (row-major n x values_per_point()).
+/// It is called on the caller's thread, once per batch. A non-finite value
+/// marks its point failed, as with EvaluateFn; an exception cannot be blamed
+/// on one point, so it propagates and ends the run.
+using BatchEvaluateFn = std::function<void(std::span<const double> points, std::span<double> values)>;
+
 /// A minimisation problem.
 struct Problem {
   /// Name for reports ("zdt1", "sphere-10"...). Default empty.
@@ -55,8 +63,11 @@ struct Problem {
   /// Tolerance on |h(x)| below which an equality constraint counts as met.
   /// Default 1e-6; must be finite and >= 0.
   double equality_tolerance = 1e-6;
-  /// The evaluation function; must be set.
+  /// The evaluation function; this or evaluate_many must be set.
   EvaluateFn evaluate{};
+  /// Optional batch evaluation; when set, evaluate_batch uses it instead of
+  /// evaluate (which may then be empty).
+  BatchEvaluateFn evaluate_many{};
 
   /// Number of design variables.
   [[nodiscard]] std::size_t dimension() const noexcept { return variables.size(); }
@@ -68,7 +79,8 @@ struct Problem {
   /// @throws hula::Error(Errc::InvalidOption) if there are no variables, a
   ///   bound is not finite, lower > upper ("variables[i].lower = ... > upper = ..."),
   ///   precision is negative, NaN or would need more than 52 bits, objectives
-  ///   is 0, equality_tolerance is negative or not finite, or evaluate is empty.
+  ///   is 0, equality_tolerance is negative or not finite, or both evaluate and
+  ///   evaluate_many are empty.
   void validate() const;
   /// Total constraint violation of one point's values: sum of max(0, g_i) plus
   /// sum of max(0, |h_j| - equality_tolerance). 0 means feasible.
@@ -116,6 +128,7 @@ struct BatchReport {
 /// @returns the number of failures and the lowest failing index.
 /// @throws hula::Error(Errc::InvalidArgument) if the spans' sizes disagree.
 /// @throws whatever the evaluation of the lowest failing index threw, if options.rethrow.
+/// @throws whatever problem.evaluate_many threw, when it is set.
 /// Complexity: n evaluations; no allocation besides the evaluation's own.
 BatchReport evaluate_batch(const Problem& problem, std::span<const double> points, std::span<double> values,
                            std::span<std::uint8_t> failed, const BatchOptions& options = {});

@@ -7,6 +7,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <span>
 #include <vector>
 
 #include "hula/optim/run_log.hpp"
@@ -34,6 +36,30 @@ enum class ConstraintHandling {
   Penalty,
 };
 
+/// A population as a migration policy sees it (the island model, islands.hpp),
+/// after the survivors of a generation are chosen. Row i holds the variables
+/// x[i * dimension ...], the values[i * values_per_point ...] (objectives,
+/// inequality then equality constraints) and failed[i]. A policy may
+/// overwrite rows and must list them in `replaced`; the algorithm then
+/// re-derives its ranking keys (and binary chromosomes) from them.
+struct MigrationView {
+  std::size_t rows = 0;
+  std::size_t dimension = 0;
+  std::size_t values_per_point = 0;
+  std::span<double> x{};
+  std::span<double> values{};
+  std::span<std::uint8_t> failed{};
+  /// The algorithm's own order of rows: true when row a ranks before row b
+  /// (GAs: lower violation, then lower objective; NSGA-II: lower rank, then
+  /// larger crowding distance).
+  std::function<bool(std::size_t, std::size_t)> better{};
+  /// Rows the policy overwrote.
+  std::vector<std::size_t> replaced{};
+};
+
+/// Called after generation g >= 1 with the surviving population.
+using MigrationHook = std::function<void(std::size_t generation, MigrationView& view)>;
+
 /// Settings every algorithm shares.
 struct RunSettings {
   /// Seed of the run: the same seed gives the same run log on any thread count. Default 0.
@@ -44,6 +70,9 @@ struct RunSettings {
   StopCriteria stop{};
   /// Called after every generation (generation 0 = initial population); may be empty.
   GenerationCallback on_generation{};
+  /// Migration between islands (optim/islands.hpp); empty (default) = a
+  /// single population. Set by the island model, not by hand.
+  MigrationHook migrate{};
   /// Constraint handling. Default FeasibilityRules.
   ConstraintHandling constraints = ConstraintHandling::FeasibilityRules;
   /// Penalty factor for ConstraintHandling::Penalty; finite, >= 0. Default 1000.

@@ -61,22 +61,41 @@ void Evaluator::evaluate(Population& pop, std::size_t begin, std::size_t end) {
   }
   evaluations_ += n;
   failed_ += r.failed;
+  for (std::size_t i = begin; i < end; ++i) set_keys(pop, i);
+}
+
+void Evaluator::set_keys(Population& pop, std::size_t i) const {
   const bool penalty = settings_.constraints == ConstraintHandling::Penalty;
-  for (std::size_t i = begin; i < end; ++i) {
-    const double* v = pop.values.data() + i * pop.k;
-    std::copy_n(v, pop.m, pop.objectives.data() + i * pop.m);
-    if (pop.failed[i] != 0) {
-      // Failed evaluations rank after every successful one.
-      pop.violation[i] = kInf;
-      pop.rank_violation[i] = kInf;
-      pop.score[i] = kInf;
-      continue;
-    }
-    const double viol = problem_.violation({v, pop.k});
-    pop.violation[i] = viol;
-    pop.rank_violation[i] = penalty ? 0.0 : viol;
-    pop.score[i] = penalty ? v[0] + settings_.penalty * viol : v[0];
+  const double* v = pop.values.data() + i * pop.k;
+  std::copy_n(v, pop.m, pop.objectives.data() + i * pop.m);
+  if (pop.failed[i] != 0) {
+    // Failed evaluations rank after every successful one.
+    pop.violation[i] = kInf;
+    pop.rank_violation[i] = kInf;
+    pop.score[i] = kInf;
+    return;
   }
+  const double viol = problem_.violation({v, pop.k});
+  pop.violation[i] = viol;
+  pop.rank_violation[i] = penalty ? 0.0 : viol;
+  pop.score[i] = penalty ? v[0] + settings_.penalty * viol : v[0];
+}
+
+std::vector<std::size_t> migrate(const RunSettings& settings, const Evaluator& evaluator, Population& pop,
+                                 std::size_t n, std::size_t generation,
+                                 const std::function<bool(std::size_t, std::size_t)>& better) {
+  if (!settings.migrate) return {};
+  MigrationView view{.rows = n,
+                     .dimension = pop.d,
+                     .values_per_point = pop.k,
+                     .x = std::span<double>(pop.x).first(n * pop.d),
+                     .values = std::span<double>(pop.values).first(n * pop.k),
+                     .failed = std::span<std::uint8_t>(pop.failed).first(n),
+                     .better = better,
+                     .replaced = {}};
+  settings.migrate(generation, view);
+  for (const std::size_t i : view.replaced) evaluator.set_keys(pop, i);
+  return std::move(view.replaced);
 }
 
 RunControl::RunControl(const StopCriteria& stop, std::size_t population)

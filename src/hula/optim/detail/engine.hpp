@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <span>
@@ -68,6 +69,8 @@ class Evaluator {
  public:
   Evaluator(const Problem& problem, const RunSettings& settings) : problem_(problem), settings_(settings) {}
   void evaluate(Population& pop, std::size_t begin, std::size_t end);
+  /// Derives row i's objectives, violation and ranking keys from its values and failed flag.
+  void set_keys(Population& pop, std::size_t i) const;
   [[nodiscard]] std::size_t evaluations() const noexcept { return evaluations_; }
   [[nodiscard]] std::size_t failed() const noexcept { return failed_; }
   [[nodiscard]] const std::string& first_failure() const noexcept { return first_failure_; }
@@ -111,6 +114,12 @@ struct Champion {
 /// Fills `buffer` (reused between generations) and calls the callback.
 void emit_generation(const GenerationCallback& callback, GenerationLog& buffer, const Population& pop, std::size_t n,
                      std::size_t generation, std::size_t evaluations, std::span<const double> fitness);
+
+/// Offers rows [0, n) to settings.migrate after generation g (if set) and
+/// re-derives the keys of the rows it replaced; returns those rows.
+std::vector<std::size_t> migrate(const RunSettings& settings, const Evaluator& evaluator, Population& pop,
+                                 std::size_t n, std::size_t generation,
+                                 const std::function<bool(std::size_t, std::size_t)>& better);
 
 /// Throws Errc::NumericalFailure when no evaluation ever succeeded.
 [[noreturn]] void throw_no_finite(const Evaluator& evaluator);

@@ -1,0 +1,439 @@
+// SPDX-License-Identifier: MIT
+// `hula batch CAMPAIGN.json`: many study runs (study files, or seeds and
+// settings of one study: a sweep, thesis 7.4 and app. 6) as one campaign
+// (docs/cli.md "hula batch", docs/formats.md "Campaign files").
+//
+// Each item is run as a child process `hula <study kind> <study file>` with
+// the item's seed and settings merged into a copy of the study file (written
+// beside the original so its relative paths keep their meaning, removed
+// afterwards), so a crashing item cannot take the campaign down and its
+// output is exactly that of the study command. Items are handed out
+// dynamically: a free slot takes the next item. Without MPI the slots are
+// --jobs child processes of this process; under mpirun (HULA_MPI builds) every
+// rank is one slot and rank 0 also hands out the items (workers send a result
+// and get the next item's index back). Rank 0 (or the only process) writes the
+// results file atomically after every finished item, so an interrupted
+// campaign resumes where it stopped: items already in the results file are
+// skipped. A failed item is recorded with its exit code and error and the
+// rest go on; the exit code is 0 only when every item succeeded.
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "commands/common.hpp"
+#include "hula/core/error.hpp"
+#include "hula/io/atomic_file.hpp"
+
+#if defined(HULA_WITH_MPI)
+#include <mpi.h>
+
+#include "hula/optim/islands_mpi.hpp"
+#endif
+
+namespace hula::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct BatchArgs {
+  std::string campaign;
+  std::optional<std::string> results;
+  std::size_t jobs = 1;
+};
+
+// One unit of work.
+struct Item {
+  std::string id;
+  fs::path study;
+  std::optional<std::uint64_t> seed;
+  Json set;  // JSON merge patch applied to the study (null = none)
+};
+
+Json parse_json_file(const fs::path& path, const std::string& field) {
+  const std::string text = io::read_text_file(path);
+  try {
+    return Json::parse(text);
+  } catch (const Json::parse_error& e) {
+    throw Error(Errc::ParseError, path.string() + ": " + e.what(), {.field = field});
+  }
+}
+
+// A string member, or `fallback` when it is absent or not a string. (Json::value() trips GCC 12's
+// -Wnull-dereference inside nlohmann's inlined code.)
+std::string string_member(const Json& j, const char* key, const std::string& fallback) {
+  const auto it = j.find(key);
+  return it != j.end() && it->is_string() ? it->get_ref<const std::string&>() : fallback;
+}
+
+std::uint64_t as_seed(const Json& v, const std::string& field) {
+  if (!v.is_number_unsigned())
+    throw Error(Errc::InvalidOption, field + " must be a non-negative integer seed", {.field = field});
+  return v.get<std::uint64_t>();
+}
+
+// The campaign's items, in file order: "items" first, then the sweep's seeds x settings.
+std::vector<Item> read_campaign(const fs::path& path) {
+  const Json doc = parse_json_file(path, "campaign");
+  if (!doc.is_object() || string_member(doc, "format", "") != "hula-campaign" || !doc.contains("version") ||
+      doc["version"] != 1) {
+    throw Error(Errc::ParseError, path.string() + ": not a campaign file (format \"hula-campaign\", version 1)",
+                {.field = "format"});
+  }
+  for (const auto& [key, value] : doc.items()) {
+    if (key != "format" && key != "version" && key != "comment" && key != "items" && key != "sweep")
+      throw Error(Errc::ParseError, "unknown member \"" + key + "\" of the campaign", {.field = key});
+  }
+  const fs::path base = path.parent_path();
+  std::vector<Item> items;
+  if (doc.contains("items")) {
+    const Json& list = doc["items"];
+    if (!list.is_array()) throw Error(Errc::ParseError, "items must be an array", {.field = "items"});
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const Json& j = list[i];
+      const std::string field = "items[" + std::to_string(i) + "]";
+      if (!j.is_object() || !j.contains("study") || !j["study"].is_string())
+        throw Error(Errc::ParseError, field + " needs a \"study\" file name", {.field = field, .index = i});
+      Item item;
+      item.study = base / j["study"].get_ref<const std::string&>();
+      item.id = string_member(j, "id", item.study.stem().string());
+      if (j.contains("seed")) item.seed = as_seed(j["seed"], field + ".seed");
+      if (j.contains("set")) item.set = j["set"];
+      items.push_back(std::move(item));
+    }
+  }
+  if (doc.contains("sweep")) {
+    const Json& s = doc["sweep"];
+    if (!s.is_object() || !s.contains("study") || !s["study"].is_string())
+      throw Error(Errc::ParseError, "sweep needs a \"study\" file name", {.field = "sweep.study"});
+    const fs::path study = base / s["study"].get_ref<const std::string&>();
+    std::vector<std::optional<std::uint64_t>> seeds{std::nullopt};
+    if (s.contains("seeds")) {
+      seeds.clear();
+      for (const Json& v : s["seeds"]) seeds.emplace_back(as_seed(v, "sweep.seeds"));
+    }
+    std::vector<Json> sets{Json()};
+    if (s.contains("settings")) {
+      sets.clear();
+      for (const Json& v : s["settings"]) sets.push_back(v);
+    }
+    for (std::size_t j = 0; j < sets.size(); ++j)
+      for (const auto& seed : seeds) {
+        Item item{study.stem().string(), study, seed, sets[j]};
+        if (sets.size() > 1) item.id += "/settings" + std::to_string(j);
+        if (seed) item.id += "/seed" + std::to_string(*seed);
+        items.push_back(std::move(item));
+      }
+  }
+  std::map<std::string, std::size_t> seen;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    if (auto [it, fresh] = seen.emplace(items[i].id, i); !fresh)
+      throw Error(Errc::InvalidOption,
+                  "item id \"" + items[i].id + "\" appears twice (items " + std::to_string(it->second) + " and " +
+                      std::to_string(i) + ")",
+                  {.field = "id", .index = i});
+  }
+  if (items.empty()) throw Error(Errc::InvalidOption, "the campaign has no items", {.field = "items"});
+  return items;
+}
+
+// A child process running one item, its output going to two temporary files.
+struct Running {
+  std::size_t item = 0;
+  pid_t pid = -1;
+  fs::path study_copy, out, err;
+  std::chrono::steady_clock::time_point start;
+};
+
+std::string self_exe() { return fs::read_symlink("/proc/self/exe").string(); }
+
+Running start_item(const std::vector<Item>& items, std::size_t index, const fs::path& scratch) {
+  const Item& item = items[index];
+  Json study = parse_json_file(item.study, "study");
+  if (!study.is_object() || !study.contains("study") || !study["study"].is_string())
+    throw Error(Errc::ParseError, item.study.string() + ": not a study file (no \"study\" kind)", {.field = "study"});
+  if (item.seed) study["seed"] = *item.seed;
+  if (!item.set.is_null()) study.merge_patch(item.set);
+  const std::string tag = std::to_string(::getpid()) + "-" + std::to_string(index);
+  Running r;
+  r.item = index;
+  r.study_copy = item.study.parent_path() / (".hula-batch-" + tag + ".json");
+  r.out = scratch / (tag + ".out");
+  r.err = scratch / (tag + ".err");
+  io::write_file_atomically(r.study_copy, study.dump());
+  const std::string exe = self_exe();
+  const std::string kind = study["study"].get_ref<const std::string&>();
+  r.start = std::chrono::steady_clock::now();
+  r.pid = ::fork();
+  if (r.pid < 0) throw Error(Errc::IoError, "fork failed for item " + item.id, {.field = "jobs"});
+  if (r.pid == 0) {
+    const int out = ::open(r.out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const int err = ::open(r.err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (out < 0 || err < 0) ::_exit(127);
+    ::dup2(out, 1);
+    ::dup2(err, 2);
+    // Open MPI's environment must not make the child think it is a rank of the campaign's job.
+    for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE"}) ::unsetenv(v);
+    ::execl(exe.c_str(), exe.c_str(), kind.c_str(), r.study_copy.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  return r;
+}
+
+// The result record of a finished child.
+Json finish_item(const std::vector<Item>& items, const Running& r, int status, int rank) {
+  const Item& item = items[r.item];
+  std::error_code ec;
+  fs::remove(r.study_copy, ec);
+  const auto slurp = [](const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+  };
+  const std::string out = slurp(r.out), err = slurp(r.err);
+  fs::remove(r.out, ec);
+  fs::remove(r.err, ec);
+  Json j = Json::object();
+  j["id"] = item.id;
+  j["study"] = item.study.string();
+  j["seed"] = item.seed ? Json(*item.seed) : Json(nullptr);
+  j["rank"] = rank;
+  j["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - r.start).count();
+  const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+  j["exit"] = code;
+  j["status"] = code == 0 ? "ok" : "failed";
+  const auto parsed = [](const std::string& text) {
+    try {
+      return Json::parse(text);
+    } catch (const Json::parse_error&) {
+      return Json(text);
+    }
+  };
+  if (code == 0)
+    j["result"] = parsed(out);
+  else
+    j["error"] = err.empty() ? Json("terminated by signal " + std::to_string(code - 128)) : parsed(err);
+  return j;
+}
+
+// The campaign's bookkeeping on the process that writes the results.
+class Results {
+ public:
+  Results(fs::path path, const std::vector<Item>& items, std::string campaign)
+      : path_(std::move(path)), items_(items), campaign_(std::move(campaign)) {
+    if (fs::exists(path_)) {
+      const Json old = parse_json_file(path_, "results");
+      if (old.contains("items") && old["items"].is_object())
+        for (const auto& [id, value] : old["items"].items())
+          if (string_member(value, "status", "") == "ok") done_[id] = value;  // failed items run again
+    }
+  }
+  [[nodiscard]] bool done(const std::string& id) const { return done_.contains(id); }
+  [[nodiscard]] std::size_t skipped() const { return skipped_; }
+  void skip() { ++skipped_; }
+  void record(const Json& j) {
+    done_[j["id"].get_ref<const std::string&>()] = j;
+    if (j["status"] != "ok") ++failed_;
+    ++finished_;
+    std::cerr << Json{{"finished", finished_},
+                      {"id", j["id"]},
+                      {"status", j["status"]},
+                      {"rank", j["rank"]},
+                      {"seconds", j["seconds"]}}
+                     .dump()
+              << '\n';
+    write();
+  }
+  void write() const {
+    Json items = Json::object();
+    for (const Item& i : items_)
+      if (auto it = done_.find(i.id); it != done_.end()) items[i.id] = it->second;
+    io::write_file_atomically(
+        path_,
+        Json{{"format", "hula-campaign-results"}, {"version", 1}, {"campaign", campaign_}, {"items", std::move(items)}}
+                .dump(1) +
+            "\n");
+  }
+  [[nodiscard]] Json summary(double seconds, int ranks) const {
+    std::size_t ok = 0;
+    for (const auto& [id, j] : done_) ok += j["status"] == "ok" ? 1 : 0;
+    return Json{{"items", items_.size()},
+                {"ok", ok},
+                {"failed", items_.size() - ok},
+                {"skipped", skipped_},
+                {"ran", finished_},
+                {"seconds", seconds},
+                {"ranks", ranks},
+                {"results", path_.string()}};
+  }
+  [[nodiscard]] std::size_t failed() const { return failed_; }
+
+ private:
+  fs::path path_;
+  const std::vector<Item>& items_;
+  std::string campaign_;
+  std::map<std::string, Json> done_;
+  std::size_t finished_ = 0, failed_ = 0, skipped_ = 0;
+};
+
+// The record of an item that could not start (unreadable or malformed study file).
+Json failed_record(const Item& item, const Error& e, int rank) {
+  return Json{{"id", item.id},
+              {"study", item.study.string()},
+              {"seed", item.seed ? Json(*item.seed) : Json(nullptr)},
+              {"rank", rank},
+              {"seconds", 0.0},
+              {"exit", kExitInvalidInput},
+              {"status", "failed"},
+              {"error", Json{{"code", errc_name(e.code())}, {"message", e.message()}}}};
+}
+
+// Waits a little for any of `running` to end; returns its index in `running` and status, if one did.
+std::optional<std::pair<std::size_t, int>> reap(const std::vector<Running>& running) {
+  for (std::size_t i = 0; i < running.size(); ++i) {
+    int status = 0;
+    if (::waitpid(running[i].pid, &status, WNOHANG) == running[i].pid) return std::pair{i, status};
+  }
+  return std::nullopt;
+}
+
+#if defined(HULA_WITH_MPI)
+constexpr int kTagResult = 11;  // worker -> 0: a result record (JSON text; empty on the first request)
+constexpr int kTagItem = 12;    // 0 -> worker: an item index, or -1 = stop
+
+void send_text(const std::string& text, int to, int tag) {
+  MPI_Send(text.data(), static_cast<int>(text.size()), MPI_CHAR, to, tag, MPI_COMM_WORLD);
+}
+#endif
+
+}  // namespace
+
+int run_batch(const BatchArgs& a) {
+  const fs::path campaign = a.campaign;
+  const std::vector<Item> items = read_campaign(campaign);
+  const fs::path results_path =
+      a.results ? fs::path(*a.results) : fs::path(campaign).replace_extension(".results.json");
+  if (a.jobs == 0) throw Error(Errc::InvalidOption, "jobs = 0 must be >= 1", {.field = "jobs"});
+  const fs::path scratch = fs::temp_directory_path() / ("hula-batch-" + std::to_string(::getpid()));
+  fs::create_directories(scratch);
+  const auto start = std::chrono::steady_clock::now();
+  int rank = 0, ranks = 1;
+#if defined(HULA_WITH_MPI)
+  const bool mpi = optim::launched_by_mpi();
+  if (mpi) {
+    MPI_Init(nullptr, nullptr);
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  }
+  if (mpi && rank != 0) {
+    // A worker: ask for an item, run it, send its record with the next request.
+    std::string record;
+    while (true) {
+      send_text(record, 0, kTagResult);
+      int index = -1;
+      MPI_Recv(&index, 1, MPI_INT, 0, kTagItem, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      if (index < 0) break;
+      try {
+        const Running r = start_item(items, static_cast<std::size_t>(index), scratch);
+        int status = 0;
+        ::waitpid(r.pid, &status, 0);
+        record = finish_item(items, r, status, rank).dump();
+      } catch (const Error& e) {
+        record = failed_record(items[static_cast<std::size_t>(index)], e, rank).dump();
+      }
+    }
+    MPI_Finalize();
+    std::error_code ec;
+    fs::remove_all(scratch, ec);
+    return kExitOk;
+  }
+#endif
+  Results results(results_path, items, campaign.string());
+  std::vector<std::size_t> todo;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    if (results.done(items[i].id))
+      results.skip();
+    else
+      todo.push_back(i);
+  }
+  std::size_t next = 0;
+  std::vector<Running> running;
+  const std::size_t local_slots = a.jobs;
+  int remote_active = ranks - 1;  // workers still to be told to stop
+  while (next < todo.size() || !running.empty() || remote_active > 0) {
+    bool busy = false;
+    while (running.size() < local_slots && next < todo.size()) {
+      const std::size_t index = todo[next++];
+      try {
+        running.push_back(start_item(items, index, scratch));
+      } catch (const Error& e) {
+        results.record(failed_record(items[index], e, rank));
+      }
+      busy = true;
+    }
+    if (const auto ended = reap(running)) {
+      results.record(finish_item(items, running[ended->first], ended->second, rank));
+      running.erase(running.begin() + static_cast<std::ptrdiff_t>(ended->first));
+      busy = true;
+    }
+#if defined(HULA_WITH_MPI)
+    if (mpi && remote_active > 0) {
+      int flag = 0;
+      MPI_Status status;
+      MPI_Iprobe(MPI_ANY_SOURCE, kTagResult, MPI_COMM_WORLD, &flag, &status);
+      if (flag != 0) {
+        int count = 0;
+        MPI_Get_count(&status, MPI_CHAR, &count);
+        std::string text(static_cast<std::size_t>(count), '\0');
+        MPI_Recv(text.data(), count, MPI_CHAR, status.MPI_SOURCE, kTagResult, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        if (!text.empty()) results.record(Json::parse(text));
+        int index = -1;
+        if (next < todo.size())
+          index = static_cast<int>(todo[next++]);
+        else
+          --remote_active;
+        MPI_Send(&index, 1, MPI_INT, status.MPI_SOURCE, kTagItem, MPI_COMM_WORLD);
+        busy = true;
+      }
+    }
+#endif
+    if (!busy) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  results.write();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+#if defined(HULA_WITH_MPI)
+  if (mpi) MPI_Finalize();
+#endif
+  std::error_code ec;
+  fs::remove_all(scratch, ec);
+  print_json(results.summary(seconds, ranks));
+  return results.failed() == 0 ? kExitOk : kExitInvalidInput;
+}
+
+Command add_batch(CLI::App& app) {
+  auto a = std::make_shared<BatchArgs>();
+  CLI::App* sub = app.add_subcommand(
+      "batch", "Run a campaign of study runs (files, seeds, settings); resumable; one slot per MPI rank under mpirun");
+  sub->add_option("campaign", a->campaign, "Campaign file (JSON, docs/formats.md \"Campaign files\")")->required();
+  sub->add_option("--results", a->results,
+                  "Results file, written atomically after each item (default CAMPAIGN.results.json)");
+  sub->add_option("--jobs", a->jobs, "Items run at once by this process (default 1)");
+  return {sub, [a] { return run_batch(*a); }};
+}
+
+}  // namespace hula::cli

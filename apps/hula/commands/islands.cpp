@@ -1,0 +1,97 @@
+// SPDX-License-Identifier: MIT
+// `hula optimise --islands K`; see islands.hpp.
+#include "commands/islands.hpp"
+
+#include <algorithm>
+#include <optional>
+
+#if defined(HULA_WITH_MPI)
+#include "hula/optim/islands_mpi.hpp"
+#endif
+
+namespace hula::cli {
+
+void add_island_options(CLI::App* sub, IslandArgs& args) {
+  sub->add_option("--islands", args.islands,
+                  "Run K islands (one population each) with migration, on threads, or one per rank under "
+                  "mpirun -np K; 0 = one population (default)");
+  sub->add_option("--migration-interval", args.interval, "Generations between migrations (default 10)");
+  sub->add_option("--migrants", args.migrants, "Best individuals sent to each neighbour per migration (default 2)");
+  sub->add_option("--topology", args.topology, "ring | fully-connected | random (default ring)");
+  sub->add_option("--topology-seed", args.topology_seed, "Seed of the random topology's graph (default 0)");
+  sub->add_flag("--async-migration", args.asynchronous,
+                "Never wait for neighbours' migrants (faster with uneven islands; not repeatable)");
+}
+
+IslandOutcome run_islands(const optim::Problem& problem, const optim::IslandAlgorithm& algorithm,
+                          const IslandArgs& args) {
+  optim::IslandOptions o;
+  o.islands = args.islands;
+  o.interval = args.interval;
+  o.migrants = args.migrants;
+  o.topology = optim::topology_from_name(args.topology, "topology");
+  o.topology_seed = args.topology_seed;
+  o.asynchronous = args.asynchronous;
+  IslandOutcome out;
+  const char* transport = "threads";
+  optim::IslandsResult r;
+#if defined(HULA_WITH_MPI)
+  if (optim::launched_by_mpi()) {
+    transport = "mpi";
+    std::optional<optim::IslandsResult> merged = optim::solve_islands_mpi(problem, algorithm, o);
+    if (!merged) {
+      out.quiet = true;
+      return out;
+    }
+    r = std::move(*merged);
+  } else {
+    r = optim::solve_islands(problem, algorithm, o);
+  }
+#else
+  r = optim::solve_islands(problem, algorithm, o);
+#endif
+
+  if (problem.objectives == 1)
+    out.solutions.push_back(r.best);
+  else
+    out.solutions = r.front;
+  out.report = r.islands.front().report;
+  out.report.evaluations = r.evaluations;
+  out.report.failed_evaluations = 0;
+  for (const optim::IslandReport& i : r.islands) {
+    out.report.failed_evaluations += i.report.failed_evaluations;
+    out.report.generations = std::max(out.report.generations, i.report.generations);
+  }
+  out.report.seconds = r.seconds;
+
+  Json per = Json::array();
+  for (const optim::IslandReport& i : r.islands) {
+    Json migrations = Json::array();
+    for (const optim::MigrationEvent& e : i.migrations)
+      migrations.push_back(
+          Json{{"generation", e.generation}, {"from", e.from}, {"received", e.received}, {"accepted", e.accepted}});
+    Json j = Json::object();
+    j["island"] = i.island;
+    j["seed"] = i.seed;
+    if (problem.objectives == 1) j["best"] = Json{{"variables", i.best.variables}, {"objectives", i.best.objectives}};
+    j["termination"] = std::string(optim::termination_name(i.report.termination));
+    j["generations"] = i.report.generations;
+    j["evaluations"] = i.report.evaluations;
+    j["sent"] = i.sent;
+    j["received"] = i.received;
+    j["accepted"] = i.accepted;
+    j["migrations"] = std::move(migrations);
+    per.push_back(std::move(j));
+  }
+  out.islands = Json{{"count", o.islands},
+                     {"interval", o.interval},
+                     {"migrants", o.migrants},
+                     {"topology", std::string(optim::topology_name(o.topology))},
+                     {"topology_seed", o.topology_seed},
+                     {"mode", o.asynchronous ? "asynchronous" : "synchronous"},
+                     {"transport", transport},
+                     {"per_island", std::move(per)}};
+  return out;
+}
+
+}  // namespace hula::cli

@@ -1,0 +1,48 @@
+# SPDX-License-Identifier: MIT
+"""hulahoops: free-form curves for CAD in Python (docs/python.md).
+
+Geometry:
+    NurbsCurve        a validated NURBS curve; ``curve(t)``, ``curve.derivatives(t, n)``
+                      vectorised over NumPy arrays; knot insertion, elevation,
+                      split, arc length, closest point, JSON load/save.
+    interpolate       cubic spline through points (thesis 5.5, 7.1).
+    Law               law expressions: parse, evaluate, derive, integrate, roots.
+    analyse           κ, τ, T, N, B, speed, fins along a curve (thesis ch. 6).
+    reconstruct       a curve from its natural equations κ(s), τ(s) (thesis 8.2.2).
+Optimisation:
+    optimise, Problem, from_pygmo   Flexo GAs and NSGA-II with NumPy objectives.
+Studies:
+    fair_knots, match_curvature     the thesis's curve studies from study dicts.
+Errors:
+    Error and its subclasses (errors.py), with code, message and where.
+
+Units: coordinates are model units (mm in the thesis's examples); curvature
+and torsion are in 1/model units; parameters t are the curve's own.
+"""
+
+from __future__ import annotations
+
+from . import _core
+from .errors import (CoincidentPointsError, Error, InvalidArgumentError, InvalidDegreeError, InvalidKnotsError,
+                     InvalidOptionError, InvalidWeightError, IoError, NonFiniteInputError, NumericalFailureError,
+                     OutOfDomainError, ParseError, ScaleOutOfRangeError, TooFewPointsError)
+from .optimise import OptimiseResult, Problem, builtin_problem, evaluate_builtin, from_pygmo, optimise
+from .studies import StudyResult, fair_knots, match_curvature
+
+NurbsCurve = _core.NurbsCurve
+ClosestPoint = _core.ClosestPoint
+IntrinsicCurve = _core.IntrinsicCurve
+NurbsFit = _core.NurbsFit
+Law = _core.Law
+interpolate = _core.interpolate
+analyse = _core.analyse
+reconstruct = _core.reconstruct
+
+__all__ = [
+    "NurbsCurve", "ClosestPoint", "IntrinsicCurve", "NurbsFit", "Law", "interpolate", "analyse", "reconstruct",
+    "optimise", "Problem", "OptimiseResult", "from_pygmo", "builtin_problem", "evaluate_builtin",
+    "fair_knots", "match_curvature", "StudyResult",
+    "Error", "InvalidArgumentError", "NonFiniteInputError", "TooFewPointsError", "CoincidentPointsError",
+    "InvalidKnotsError", "InvalidDegreeError", "InvalidWeightError", "OutOfDomainError", "InvalidOptionError",
+    "ParseError", "IoError", "NumericalFailureError", "ScaleOutOfRangeError",
+]

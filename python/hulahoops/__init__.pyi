@@ -1,0 +1,161 @@
+# SPDX-License-Identifier: MIT
+# Type stubs of hulahoops (docs/python.md). Units: coordinates in model units,
+# curvature and torsion in 1/model units, t the curve's own parameter, s arc length.
+from typing import Any, Callable, Literal, Sequence, overload
+
+import numpy as np
+import numpy.typing as npt
+
+from .errors import (CoincidentPointsError as CoincidentPointsError, Error as Error,
+                     InvalidArgumentError as InvalidArgumentError, InvalidDegreeError as InvalidDegreeError,
+                     InvalidKnotsError as InvalidKnotsError, InvalidOptionError as InvalidOptionError,
+                     InvalidWeightError as InvalidWeightError, IoError as IoError,
+                     NonFiniteInputError as NonFiniteInputError, NumericalFailureError as NumericalFailureError,
+                     OutOfDomainError as OutOfDomainError, ParseError as ParseError,
+                     ScaleOutOfRangeError as ScaleOutOfRangeError, TooFewPointsError as TooFewPointsError)
+from .optimise import (OptimiseResult as OptimiseResult, Problem as Problem, builtin_problem as builtin_problem,
+                       evaluate_builtin as evaluate_builtin, from_pygmo as from_pygmo, optimise as optimise)
+from .studies import StudyResult as StudyResult, fair_knots as fair_knots, match_curvature as match_curvature
+
+ArrayLike = npt.ArrayLike
+Array = npt.NDArray[np.float64]
+DomainPolicy = Literal["strict", "clamp", "extrapolate"]
+SidePolicy = Literal["right", "left"]
+
+class ClosestPoint:
+    """The closest point of a curve to a query point."""
+    @property
+    def t(self) -> float: ...
+    @property
+    def point(self) -> Array:
+        """C(t), model units, shape (3,)."""
+    @property
+    def distance(self) -> float:
+        """|C(t) - P|, model units."""
+
+class NurbsCurve:
+    """An immutable, validated NURBS curve of any degree >= 1, planar (dimension 2) or spatial (3)."""
+    def __init__(self, degree: int, knots: ArrayLike, control_points: ArrayLike,
+                 weights: ArrayLike | None = None) -> None:
+        """knots: the full (clamped or not) non-decreasing knot vector, n + degree + 1 values.
+        control_points: (n, 2) or (n, 3) in model units. weights: n positive finite numbers, or None.
+        Raises InvalidKnotsError, InvalidDegreeError, InvalidWeightError, NonFiniteInputError naming the entry."""
+    @property
+    def degree(self) -> int: ...
+    @property
+    def dimension(self) -> int: ...
+    @property
+    def is_rational(self) -> bool: ...
+    @property
+    def knots(self) -> Array: ...
+    @property
+    def control_points(self) -> Array:
+        """(n, dimension), model units (a copy)."""
+    @property
+    def weights(self) -> Array | None: ...
+    @property
+    def domain(self) -> tuple[float, float]: ...
+    def __call__(self, t: ArrayLike, *, domain: DomainPolicy = "strict", side: SidePolicy = "right",
+                 out: Array | None = None) -> Array:
+        """Points C(t), shape t.shape + (dimension,), model units. Vectorised in C++, GIL released.
+        domain: "strict" raises OutOfDomainError naming the index of the first t outside the domain;
+        "clamp" evaluates at the nearest end; "extrapolate" continues the end pieces.
+        side: one-sided limit at knots of reduced continuity. out: a C-contiguous float64 array of shape
+        t.shape + (3,) to write into (always 3 columns, no allocation)."""
+    def derivatives(self, t: ArrayLike, order: int, *, domain: DomainPolicy = "strict",
+                    side: SidePolicy = "right") -> Array:
+        """C, C', ..., C^(order) with respect to t, shape t.shape + (order + 1, dimension)."""
+    def insert_knot(self, u: float, times: int = 1) -> NurbsCurve:
+        """The same curve with u inserted `times` times (Boehm; The NURBS Book A5.1)."""
+    def refine(self, knots: ArrayLike) -> NurbsCurve: ...
+    def elevate(self, times: int = 1) -> NurbsCurve:
+        """The same curve with degree + times (The NURBS Book A5.9)."""
+    def split(self, t: float) -> tuple[NurbsCurve, NurbsCurve]:
+        """The pieces on [a, t] and [t, b], each clamped at t."""
+    def reverse(self) -> NurbsCurve: ...
+    def reparameterise(self, start: float, end: float) -> NurbsCurve: ...
+    def arc_length(self, start: float | None = None, end: float | None = None, *,
+                   tolerance: float = 1e-12) -> float:
+        """Length between parameters (default the whole domain), model units, relative tolerance."""
+    def parameter_at_length(self, s: float, *, tolerance: float = 1e-12) -> float:
+        """The parameter t at arc length s from the domain start."""
+    def closest_point(self, point: ArrayLike) -> ClosestPoint: ...
+    def to_json(self) -> str:
+        """The curve file text (docs/formats.md "Curve files")."""
+    @staticmethod
+    def from_json(document: str | dict[str, Any]) -> NurbsCurve:
+        """A curve file's text or dict; interpolated and law kinds are resolved to NURBS."""
+    @staticmethod
+    def load(path: str) -> NurbsCurve: ...
+    def save(self, path: str) -> None:
+        """Writes the curve file atomically."""
+
+def interpolate(points: ArrayLike, *, start: str | ArrayLike = "natural", end: str | ArrayLike = "natural",
+                parameterisation: Literal["chord", "uniform", "centripetal"] = "chord",
+                parameters: ArrayLike | None = None) -> NurbsCurve:
+    """The C2 cubic spline through (n, 2) or (n, 3) points (thesis 5.5, 7.1).
+    start/end: "natural", "bessel", "not-a-knot", "occt", or a tangent vector dC/dt (t in [0, 1]).
+    parameters: explicit data parameters (increasing, from 0 to 1) instead of the parameterisation."""
+
+def analyse(curve: NurbsCurve, samples: int = 200, *, fin_scale: float = 1.0,
+            plane_normal: ArrayLike | None = None) -> dict[str, Array]:
+    """Differential geometry at `samples` equally spaced parameters (thesis ch. 6). Keys:
+    t; position (n, dim); T, N (n, dim) and B (n, 3) unit vectors; kappa (1/model units, >= 0);
+    tau (1/model units, right-handed helix positive); kappa_prime (dκ/ds, 1/model units²);
+    signed_kappa (about plane_normal, default +z); speed (|dC/dt|, model units per parameter unit);
+    fins (n, dim): curvature fin tips P - fin_scale κ N; tangent_defined, frame_defined (bool).
+    Undefined values are NaN: T and κ where the speed vanishes, N, B, τ, κ' where κ vanishes."""
+
+class NurbsFit:
+    @property
+    def curve(self) -> NurbsCurve: ...
+    @property
+    def max_deviation(self) -> float: ...
+    @property
+    def segments(self) -> int: ...
+    @property
+    def converged(self) -> bool: ...
+
+class IntrinsicCurve:
+    """A curve integrated from its natural equations, parameterised by arc length s in [0, length]."""
+    @property
+    def length(self) -> float: ...
+    @property
+    def method(self) -> str: ...
+    @property
+    def tolerance(self) -> float: ...
+    def __call__(self, s: ArrayLike) -> Array:
+        """Positions, shape s.shape + (3,); OutOfDomainError outside [0, length]."""
+    def frames(self, s: ArrayLike) -> dict[str, Array]:
+        """s, position, T, N, B (s.shape + (3,)), kappa, tau (s.shape)."""
+    def to_nurbs(self, tolerance: float = 1e-9) -> NurbsFit:
+        """A quintic NURBS within `tolerance` model units of the curve."""
+
+def reconstruct(kappa: Law | str | float, tau: Law | str | float = 0.0, *, length: float,
+                point: ArrayLike = ..., tangent: ArrayLike = ..., normal: ArrayLike = ...,
+                tolerance: float = 1e-10, parameter: str = "s") -> IntrinsicCurve:
+    """The curve with curvature κ(s) and torsion τ(s) (1/model units) for s in [0, length]
+    (thesis 8.2.2), starting at `point` with unit tangent and normal (defaults: origin, +x, +y).
+    τ ≡ 0 gives a planar curve with signed κ (eq. 34); otherwise Frenet–Serret is integrated."""
+
+class Law:
+    """A law expression (docs/formats.md "Law expressions") of named parameters."""
+    def __init__(self, text: str, parameters: Sequence[str] = ("t",)) -> None:
+        """Raises ParseError with where = {"line", "column"} of the fault."""
+    @property
+    def parameters(self) -> list[str]: ...
+    @property
+    def dimension(self) -> int:
+        """1 for scalar laws, 2 or 3 for vector laws."""
+    @property
+    def text(self) -> str: ...
+    def __call__(self, *args: ArrayLike, **kwargs: ArrayLike) -> Any:
+        """Values at broadcast parameter arrays: a float for scalar inputs, else an array of the broadcast
+        shape (+ (dimension,) for vector laws). Undefined values (log of a negative number...) are NaN."""
+    def derive(self, parameter: str | None = None, order: int = 1) -> Law:
+        """The exact symbolic derivative."""
+    def integrate(self, a: float, b: float, *, parameter: str | None = None,
+                  relative_tolerance: float = 1e-12) -> float:
+        """∫_a^b of a scalar law (adaptive Gauss–Kronrod, split at singularities)."""
+    def roots(self, a: float, b: float, *, parameter: str | None = None) -> Array:
+        """All roots of a scalar law in [a, b], increasing."""

@@ -1,0 +1,108 @@
+# SPDX-License-Identifier: MIT
+"""The thesis's curve studies (ch. 7 and 8) from Python.
+
+A setup is the dict a study file holds (docs/formats.md "Study files"), e.g.
+``{"format": "hula-study", "version": 1, "study": "fair-knots", "points":
+[[0, 0], [40, 25], [80, -25], [120, 0]], "method": "both"}``; a path to a
+study file works too. The result is a :class:`StudyResult`: attribute access
+to the same fields ``hula fair-knots`` / ``hula match-curvature`` print, with
+numeric lists as NumPy arrays and curves as :class:`~hulahoops.NurbsCurve`.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from typing import Any
+
+import numpy as np
+
+from . import _core
+
+
+class StudyResult:
+    """A study's result: a read-only tree of fields (``result.ga.energy``,
+    ``result["ga"]["energy"]``); numeric lists are float64 arrays."""
+
+    def __init__(self, fields: dict[str, Any]) -> None:
+        self._fields = {k: _wrap(v) for k, v in fields.items()}
+
+    def __getattr__(self, name: str) -> Any:
+        try:
+            return self.__dict__["_fields"][name]
+        except KeyError:
+            raise AttributeError(name) from None
+
+    def __getitem__(self, name: str) -> Any:
+        return self._fields[name]
+
+    def __contains__(self, name: str) -> bool:
+        return name in self._fields
+
+    def keys(self) -> list[str]:
+        return list(self._fields)
+
+    def __repr__(self) -> str:
+        return f"StudyResult({', '.join(self._fields)})"
+
+
+def _numeric(v: Any) -> bool:
+    return isinstance(v, list) and len(v) > 0 and all(
+        isinstance(e, (int, float)) and not isinstance(e, bool) or (isinstance(e, list) and _numeric(e)) for e in v)
+
+
+def _wrap(v: Any) -> Any:
+    if isinstance(v, dict):
+        if v.get("format") == "hula-curve" or ("degree" in v and "knots" in v and "control_points" in v):
+            return _core.NurbsCurve.from_json(v)
+        return StudyResult(v)
+    if _numeric(v):
+        try:
+            return np.asarray(v, dtype=np.float64)
+        except ValueError:  # ragged
+            return [_wrap(e) for e in v]
+    if isinstance(v, list):
+        return [_wrap(e) for e in v]
+    return v
+
+
+def _load(setup: Any) -> tuple[Any, str]:
+    if isinstance(setup, (str, os.PathLike)):
+        path = os.fspath(setup)
+        with open(path, encoding="utf-8") as f:
+            return json.load(f), os.path.dirname(os.path.abspath(path))
+    return setup, os.getcwd()
+
+
+def fair_knots(setup: Any) -> StudyResult:
+    """Knot-vector fairing (thesis 7.2-7.4): the parameters of the data points
+    minimising the fairness energy of the interpolating cubic.
+
+    Returns the fields of ``hula fair-knots``: ``energy`` (the energy's name),
+    ``chord_length`` (chord-length parameters), ``given`` (if the setup
+    has ``parameters``), ``ga`` and/or ``deterministic`` (per ``method``), each
+    with ``parameters``, ``energy`` (∫κ² ds in 1/model units, or ∫(dκ/ds)² ds
+    in 1/model units³, per ``energy``), ``bending``, ``variation``,
+    ``curve``, and for optimisers ``improvement`` (1 - E/E_chord),
+    ``evaluations``, ``convergence``; ``map`` with ``k1``, ``k2`` and the
+    ``energy`` grid (NaN outside k1 < k2) when the setup asks for one.
+    """
+    data, _ = _load(setup)
+    return StudyResult(_core.fair_knots(data))
+
+
+def match_curvature(setup: Any, *, method: str | None = None, base: str | None = None) -> StudyResult:
+    """Curvature-profile matching (thesis 8.2.1): moves the free data points
+    so the interpolating curve's curvature follows a target profile.
+
+    Args:
+        setup: a match-curvature study dict or the path of a study file.
+        method: ``"ga"``, ``"hybrid"`` or ``"direct"``, overriding the setup's.
+        base: directory relative file names in the setup resolve against
+            (default: the study file's directory, or the working directory).
+
+    Returns the fields of ``hula match-curvature``'s JSON (``best``,
+    ``distances``, ``curve`` ...), numeric lists as arrays.
+    """
+    data, where = _load(setup)
+    return StudyResult(json.loads(_core.match_curvature(data, base or where, method)))

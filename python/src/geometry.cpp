@@ -1,0 +1,450 @@
+// SPDX-License-Identifier: MIT
+// NurbsCurve, interpolate, analyse and reconstruct for Python: the nurbs,
+// diffgeom and intrinsic modules behind NumPy arrays. Evaluation writes
+// straight into the output array through the C++ batch APIs with the GIL
+// released; t keeps its shape and gains a trailing axis of the curve's
+// dimension (2 for planar curves, a view of the x, y columns).
+#include <pybind11/numpy.h>
+#include <pybind11/operators.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "arrays.hpp"
+#include "bindings.hpp"
+#include "hula/core/error.hpp"
+#include "hula/diffgeom/fins.hpp"
+#include "hula/diffgeom/frenet.hpp"
+#include "hula/intrinsic/natural_equations.hpp"
+#include "hula/io/json_curve.hpp"
+#include "hula/nurbs/arc_length.hpp"
+#include "hula/nurbs/closest_point.hpp"
+#include "hula/nurbs/elevate.hpp"
+#include "hula/nurbs/interpolate.hpp"
+#include "hula/nurbs/nurbs_curve.hpp"
+#include "hula/nurbs/refine.hpp"
+#include "hula/nurbs/reparam.hpp"
+#include "laws.hpp"
+
+namespace hula::python {
+
+namespace py = pybind11;
+using nurbs::NurbsCurve;
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+nurbs::EvalOptions eval_options(const std::string& domain, const std::string& side) {
+  nurbs::EvalOptions o;
+  if (domain == "strict")
+    o.domain = nurbs::Domain::Strict;
+  else if (domain == "clamp")
+    o.domain = nurbs::Domain::Clamp;
+  else if (domain == "extrapolate")
+    o.domain = nurbs::Domain::Extrapolate;
+  else
+    throw Error(
+        Errc::InvalidArgument,
+        "domain = \"" + domain + "\" is not a domain policy (expected \"strict\", \"clamp\" or \"extrapolate\")",
+        {.field = "domain"});
+  if (side == "right")
+    o.side = nurbs::Side::Right;
+  else if (side == "left")
+    o.side = nurbs::Side::Left;
+  else
+    throw Error(Errc::InvalidArgument, "side = \"" + side + "\" is not a side (expected \"right\" or \"left\")",
+                {.field = "side"});
+  return o;
+}
+
+// The output array: t's shape followed by `extra` trailing axes, float64, C order. When `out` is given
+// it must be exactly that (the allocation-free path of hot loops).
+Doubles output(const Doubles& ts, std::vector<py::ssize_t> extra, const py::object& out) {
+  std::vector<py::ssize_t> shape(ts.shape(), ts.shape() + ts.ndim());
+  shape.insert(shape.end(), extra.begin(), extra.end());
+  if (out.is_none()) return Doubles(shape);
+  if (!py::isinstance<py::array>(out)) {
+    throw Error(Errc::InvalidArgument, "out must be a float64 numpy array", {.field = "out"});
+  }
+  const auto a = out.cast<py::array>();
+  bool ok = a.dtype().is(py::dtype::of<double>()) && (a.flags() & py::array::c_style) != 0 && a.writeable() &&
+            a.ndim() == static_cast<py::ssize_t>(shape.size());
+  for (std::size_t i = 0; ok && i < shape.size(); ++i) ok = a.shape(static_cast<py::ssize_t>(i)) == shape[i];
+  if (!ok) {
+    py::array expect(py::dtype::of<double>(), shape);
+    throw Error(Errc::InvalidArgument,
+                "out has shape " + shape_text(a) + " and dtype " + py::str(a.dtype()).cast<std::string>() +
+                    ": expected a writeable C-contiguous float64 array of shape " + shape_text(expect),
+                {.field = "out"});
+  }
+  return py::reinterpret_borrow<Doubles>(a);
+}
+
+py::object evaluate(const NurbsCurve& c, py::handle t, const std::string& domain, const std::string& side,
+                    const py::object& out) {
+  const nurbs::EvalOptions o = eval_options(domain, side);
+  const Doubles ts = as_doubles(t, "t");
+  const auto n = static_cast<std::size_t>(ts.size());
+  // Always 3 doubles per point (Vec3); planar curves return a view of x, y, so `out` must be (..., 3).
+  Doubles result = output(ts, {3}, out);
+  {
+    const py::gil_scoped_release release;
+    c.evaluate(std::span<const double>(ts.data(), n),
+               std::span<Vec3>(reinterpret_cast<Vec3*>(result.mutable_data()), n), o);
+  }
+  if (!out.is_none()) return out;
+  return vec3_rows(result, c.dimension());
+}
+
+py::array derivatives(const NurbsCurve& c, py::handle t, int order, const std::string& domain,
+                      const std::string& side) {
+  if (order < 0 || order > 64) {
+    throw Error(Errc::InvalidArgument, "order = " + std::to_string(order) + " must be in [0, 64]", {.field = "order"});
+  }
+  const nurbs::EvalOptions o = eval_options(domain, side);
+  const Doubles ts = as_doubles(t, "t");
+  const auto n = static_cast<std::size_t>(ts.size());
+  const auto per = static_cast<std::size_t>(order) + 1;
+  Doubles result = output(ts, {static_cast<py::ssize_t>(per), 3}, py::none());
+  {
+    const py::gil_scoped_release release;
+    c.derivatives(std::span<const double>(ts.data(), n), order,
+                  std::span<Vec3>(reinterpret_cast<Vec3*>(result.mutable_data()), n * per), o);
+  }
+  return vec3_rows(result, c.dimension());
+}
+
+NurbsCurve make_curve(int degree, py::handle knots, py::handle control_points, py::handle weights) {
+  const Points p = as_points(control_points, "control_points");
+  std::vector<double> w;
+  if (!weights.is_none()) w = as_vector(weights, "weights");
+  return NurbsCurve(degree, as_vector(knots, "knots"), p.points, std::move(w), p.dimension);
+}
+
+std::string to_json_text(const NurbsCurve& c) { return io::to_file_text(io::curve_to_json(c)); }
+
+NurbsCurve from_json(py::handle value) {
+  std::string text;
+  if (py::isinstance<py::str>(value)) {
+    text = value.cast<std::string>();
+  } else if (py::isinstance<py::dict>(value)) {
+    text = py::module_::import("json").attr("dumps")(value).cast<std::string>();
+  } else {
+    throw Error(Errc::InvalidArgument, "document must be a JSON string or a dict", {.field = "document"});
+  }
+  return io::parse_curve_json(text).nurbs();
+}
+
+nurbs::EndCondition end_condition(py::handle value, const std::string& name) {
+  io::Json j;
+  if (py::isinstance<py::str>(value)) {
+    j = value.cast<std::string>();
+  } else {
+    const Vec3 d = as_point(value, name);
+    j = io::Json{{"tangent", {d.x, d.y, d.z}}};
+  }
+  return io::end_condition_from_json(j, name);
+}
+
+struct Analysis {
+  py::dict arrays;
+};
+
+py::dict analyse(const NurbsCurve& c, int samples, double fin_scale, py::handle plane_normal) {
+  diffgeom::FinOptions fo;
+  fo.kind = diffgeom::FinKind::Curvature;
+  fo.scale = fin_scale;
+  fo.density = samples;
+  if (!plane_normal.is_none()) fo.frenet.plane_normal = as_point(plane_normal, "plane_normal");
+  fo.validate();
+  const auto n = static_cast<std::size_t>(samples);
+  auto vec = [n] { return Doubles({static_cast<py::ssize_t>(n), py::ssize_t{3}}); };
+  auto num = [n] { return Doubles(static_cast<py::ssize_t>(n)); };
+  Doubles t = num(), speed = num(), kappa = num(), tau = num(), kappa_prime = num(), signed_kappa = num();
+  Doubles position = vec(), tangent = vec(), normal = vec(), binormal = vec(), fins = vec();
+  py::array_t<bool> tangent_defined(static_cast<py::ssize_t>(n)), frame_defined(static_cast<py::ssize_t>(n));
+  {
+    const py::gil_scoped_release release;
+    const diffgeom::Fins f = diffgeom::fins(c, fo);
+    std::vector<diffgeom::FrenetPoint> pts(n);
+    diffgeom::frenet(c, f.t, pts, fo.frenet);
+    const Vec3 nan3{kNaN, kNaN, kNaN};
+    auto put = [](Doubles& a, std::size_t i, const Vec3& v) {
+      double* r = a.mutable_data() + 3 * i;
+      r[0] = v.x, r[1] = v.y, r[2] = v.z;
+    };
+    for (std::size_t i = 0; i < n; ++i) {
+      const diffgeom::FrenetPoint& p = pts[i];
+      const bool td = p.tangent_defined, fd = p.frame_defined;
+      t.mutable_data()[i] = p.t;
+      speed.mutable_data()[i] = p.reason == diffgeom::Undefined::NonFinite ? kNaN : p.speed;
+      kappa.mutable_data()[i] = td ? p.curvature : kNaN;
+      signed_kappa.mutable_data()[i] = td ? p.signed_curvature : kNaN;
+      tau.mutable_data()[i] = fd ? p.torsion : kNaN;
+      kappa_prime.mutable_data()[i] = fd ? p.curvature_derivative : kNaN;
+      put(position, i, p.position);
+      put(tangent, i, td ? p.tangent : nan3);
+      put(normal, i, fd ? p.normal : nan3);
+      put(binormal, i, fd ? p.binormal : nan3);
+      put(fins, i, f.tip[i]);
+      tangent_defined.mutable_data()[i] = td;
+      frame_defined.mutable_data()[i] = fd;
+    }
+  }
+  const int dim = c.dimension();
+  py::dict d;
+  d["t"] = t;
+  d["position"] = vec3_rows(position, dim);
+  d["T"] = vec3_rows(tangent, dim);
+  d["N"] = vec3_rows(normal, dim);
+  d["B"] = binormal;  // the binormal of a planar curve is ±z: keep all three components
+  d["kappa"] = kappa;
+  d["tau"] = tau;
+  d["kappa_prime"] = kappa_prime;
+  d["signed_kappa"] = signed_kappa;
+  d["speed"] = speed;
+  d["fins"] = vec3_rows(fins, dim);
+  d["tangent_defined"] = tangent_defined;
+  d["frame_defined"] = frame_defined;
+  return d;
+}
+
+py::dict frames(const intrinsic::IntrinsicCurve& c, py::handle s_value) {
+  const Doubles s = as_doubles(s_value, "s");
+  const auto n = static_cast<std::size_t>(s.size());
+  std::vector<intrinsic::FramePoint> pts;
+  {
+    const py::gil_scoped_release release;
+    pts = c.evaluate(std::span<const double>(s.data(), n));
+  }
+  std::vector<py::ssize_t> shape(s.shape(), s.shape() + s.ndim());
+  std::vector<py::ssize_t> shape3 = shape;
+  shape3.push_back(3);
+  Doubles position(shape3), tangent(shape3), normal(shape3), binormal(shape3), kappa(shape), tau(shape);
+  for (std::size_t i = 0; i < n; ++i) {
+    const intrinsic::FramePoint& p = pts[i];
+    for (int k = 0; k < 3; ++k) {
+      position.mutable_data()[3 * i + static_cast<std::size_t>(k)] = p.position[k];
+      tangent.mutable_data()[3 * i + static_cast<std::size_t>(k)] = p.tangent[k];
+      normal.mutable_data()[3 * i + static_cast<std::size_t>(k)] = p.normal[k];
+      binormal.mutable_data()[3 * i + static_cast<std::size_t>(k)] = p.binormal[k];
+    }
+    kappa.mutable_data()[i] = p.curvature;
+    tau.mutable_data()[i] = p.torsion;
+  }
+  py::dict d;
+  d["s"] = s;
+  d["position"] = position;
+  d["T"] = tangent;
+  d["N"] = normal;
+  d["B"] = binormal;
+  d["kappa"] = kappa;
+  d["tau"] = tau;
+  return d;
+}
+
+std::string method_name(intrinsic::IntegrationKind k) {
+  switch (k) {
+    case intrinsic::IntegrationKind::PlanarExactAngle:
+      return "planar-exact-angle";
+    case intrinsic::IntegrationKind::PlanarNumericAngle:
+      return "planar-numeric-angle";
+    case intrinsic::IntegrationKind::FrenetSerret:
+      return "frenet-serret";
+  }
+  return "frenet-serret";
+}
+
+}  // namespace
+
+void register_geometry(py::module_& m) {
+  py::class_<nurbs::ClosestPointResult>(m, "ClosestPoint", "The closest point of a curve to a query point.")
+      .def_readonly("t", &nurbs::ClosestPointResult::t, "Parameter of the closest point, in the domain.")
+      .def_property_readonly(
+          "point",
+          [](const nurbs::ClosestPointResult& r) {
+            const double xyz[3] = {r.point.x, r.point.y, r.point.z};
+            return to_array(xyz);
+          },
+          "C(t), model units, shape (3,).")
+      .def_readonly("distance", &nurbs::ClosestPointResult::distance, "|C(t) - P| in model units.")
+      .def("__repr__", [](const nurbs::ClosestPointResult& r) {
+        return "ClosestPoint(t=" + format_number(r.t) + ", distance=" + format_number(r.distance) + ")";
+      });
+
+  py::class_<NurbsCurve>(m, "NurbsCurve")
+      .def(py::init(&make_curve), py::arg("degree"), py::arg("knots"), py::arg("control_points"),
+           py::arg("weights") = py::none())
+      .def_property_readonly("degree", &NurbsCurve::degree)
+      .def_property_readonly("dimension", &NurbsCurve::dimension)
+      .def_property_readonly("is_rational", &NurbsCurve::is_rational)
+      .def_property_readonly("knots", [](const NurbsCurve& c) { return to_array(c.knots().values()); })
+      .def_property_readonly("control_points",
+                             [](const NurbsCurve& c) { return to_rows(c.control_points(), c.dimension()); })
+      .def_property_readonly("weights",
+                             [](const NurbsCurve& c) -> py::object {
+                               if (!c.is_rational()) return py::none();
+                               return to_array(c.weights());
+                             })
+      .def_property_readonly("domain",
+                             [](const NurbsCurve& c) { return py::make_tuple(c.domain().start, c.domain().end); })
+      .def("__call__", &evaluate, py::arg("t"), py::kw_only(), py::arg("domain") = "strict", py::arg("side") = "right",
+           py::arg("out") = py::none())
+      .def("derivatives", &derivatives, py::arg("t"), py::arg("order"), py::kw_only(), py::arg("domain") = "strict",
+           py::arg("side") = "right")
+      .def(
+          "insert_knot", [](const NurbsCurve& c, double u, int times) { return nurbs::insert_knot(c, u, times); },
+          py::arg("u"), py::arg("times") = 1)
+      .def(
+          "refine", [](const NurbsCurve& c, py::handle k) { return nurbs::refine_knots(c, as_vector(k, "knots")); },
+          py::arg("knots"))
+      .def(
+          "elevate", [](const NurbsCurve& c, int times) { return nurbs::elevate_degree(c, times); },
+          py::arg("times") = 1)
+      .def(
+          "split",
+          [](const NurbsCurve& c, double t) {
+            nurbs::SplitResult r = nurbs::split(c, t);
+            return py::make_tuple(std::move(r.before), std::move(r.after));
+          },
+          py::arg("t"))
+      .def("reverse", [](const NurbsCurve& c) { return nurbs::reverse(c); })
+      .def(
+          "reparameterise",
+          [](const NurbsCurve& c, double a, double b) {
+            return nurbs::reparameterise(c, {a, b});
+          },
+          py::arg("start"), py::arg("end"))
+      .def(
+          "arc_length",
+          [](const NurbsCurve& c, std::optional<double> a, std::optional<double> b, double tolerance) {
+            const py::gil_scoped_release release;
+            return nurbs::arc_length(c, a.value_or(c.domain().start), b.value_or(c.domain().end),
+                                     {.tolerance = tolerance});
+          },
+          py::arg("start") = py::none(), py::arg("end") = py::none(), py::kw_only(), py::arg("tolerance") = 1e-12)
+      .def(
+          "parameter_at_length",
+          [](const NurbsCurve& c, double s, double tolerance) {
+            const py::gil_scoped_release release;
+            return nurbs::parameter_at_length(c, s, {.tolerance = tolerance});
+          },
+          py::arg("s"), py::kw_only(), py::arg("tolerance") = 1e-12)
+      .def(
+          "closest_point",
+          [](const NurbsCurve& c, py::handle point) {
+            const Vec3 p = as_point(point, "point");
+            const py::gil_scoped_release release;
+            return nurbs::closest_point(c, p);
+          },
+          py::arg("point"))
+      .def("to_json", &to_json_text)
+      .def_static("from_json", &from_json, py::arg("document"))
+      .def_static(
+          "load", [](const std::string& path) { return io::read_curve_file(path).nurbs(); }, py::arg("path"))
+      .def(
+          "save", [](const NurbsCurve& c, const std::string& path) { io::write_curve_file(path, c); },
+          py::arg("path"))
+      .def(py::self == py::self)  // NOLINT(misc-redundant-expression)
+      .def(py::pickle([](const NurbsCurve& c) { return to_json_text(c); },
+                      [](const std::string& text) { return io::parse_curve_json(text).nurbs(); }))
+      .def("__repr__", [](const NurbsCurve& c) {
+        return "NurbsCurve(degree=" + std::to_string(c.degree()) +
+               ", control_points=" + std::to_string(c.control_points().size()) +
+               ", dimension=" + std::to_string(c.dimension()) + (c.is_rational() ? ", rational" : "") + ", domain=[" +
+               format_number(c.domain().start) + ", " + format_number(c.domain().end) + "])";
+      });
+
+  // Benchmark support (python/bench/bench_python.py, docs/benchmarks.md): the best of `repeats`
+  // timings of the C++ batch evaluation alone, to set the binding's per-call overhead against.
+  m.def(
+      "_time_batch_evaluate",
+      [](const NurbsCurve& c, const Doubles& ts, Doubles out, int repeats) {
+        const auto n = static_cast<std::size_t>(ts.size());
+        if (out.size() != ts.size() * 3)
+          throw Error(Errc::InvalidArgument, "out must hold 3 doubles per t", {.field = "out"});
+        const std::span<const double> t(ts.data(), n);
+        const std::span<Vec3> o(reinterpret_cast<Vec3*>(out.mutable_data()), n);
+        const py::gil_scoped_release release;
+        double best = std::numeric_limits<double>::infinity();
+        for (int r = 0; r < repeats; ++r) {
+          const auto start = std::chrono::steady_clock::now();
+          c.evaluate(t, o);
+          best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        }
+        return best;
+      },
+      py::arg("curve"), py::arg("t"), py::arg("out"), py::arg("repeats"));
+
+  m.def(
+      "interpolate",
+      [](py::handle points, py::handle start, py::handle end, const std::string& parameterisation,
+         py::handle parameters) {
+        const Points p = as_points(points, "points", 2);
+        nurbs::InterpolationOptions o;
+        o.dimension = p.dimension;
+        o.start = end_condition(start, "start");
+        o.end = end_condition(end, "end");
+        o.parameterisation = io::parameterisation_from_name(parameterisation);
+        if (!parameters.is_none()) o.parameters = as_vector(parameters, "parameters");
+        return nurbs::interpolate_cubic(p.points, o);
+      },
+      py::arg("points"), py::kw_only(), py::arg("start") = "natural", py::arg("end") = "natural",
+      py::arg("parameterisation") = "chord", py::arg("parameters") = py::none());
+
+  m.def("analyse", &analyse, py::arg("curve"), py::arg("samples") = 200, py::kw_only(), py::arg("fin_scale") = 1.0,
+        py::arg("plane_normal") = py::none());
+
+  py::class_<intrinsic::NurbsFitResult>(m, "NurbsFit")
+      .def_readonly("curve", &intrinsic::NurbsFitResult::curve)
+      .def_readonly("max_deviation", &intrinsic::NurbsFitResult::max_deviation)
+      .def_readonly("segments", &intrinsic::NurbsFitResult::segments)
+      .def_readonly("converged", &intrinsic::NurbsFitResult::converged);
+
+  py::class_<intrinsic::IntrinsicCurve>(m, "IntrinsicCurve")
+      .def_property_readonly("length", &intrinsic::IntrinsicCurve::length)
+      .def_property_readonly("method", [](const intrinsic::IntrinsicCurve& c) { return method_name(c.method()); })
+      .def_property_readonly("tolerance", &intrinsic::IntrinsicCurve::tolerance)
+      .def(
+          "__call__",
+          [](const intrinsic::IntrinsicCurve& c, py::handle s) { return py::object(frames(c, s)["position"]); },
+          py::arg("s"))
+      .def("frames", &frames, py::arg("s"))
+      .def(
+          "to_nurbs",
+          [](const intrinsic::IntrinsicCurve& c, double tolerance) {
+            const py::gil_scoped_release release;
+            return intrinsic::fit_nurbs(c, {.tolerance = tolerance});
+          },
+          py::arg("tolerance") = 1e-9);
+
+  m.def(
+      "reconstruct",
+      [](py::handle kappa, py::handle tau, double length, py::handle point, py::handle tangent, py::handle normal,
+         double tolerance, const std::string& parameter) {
+        const law::Context context;
+        const law::Law k = law_argument(kappa, parameter, context, "kappa");
+        const law::Law t = law_argument(tau, parameter, context, "tau");
+        intrinsic::StartFrame start;
+        start.point = as_point(point, "point");
+        start.tangent = as_point(tangent, "tangent");
+        start.normal = as_point(normal, "normal");
+        intrinsic::ReconstructionOptions o;
+        o.tolerance = tolerance;
+        const py::gil_scoped_release release;
+        return intrinsic::reconstruct(k, t, parameter, length, start, o);
+      },
+      py::arg("kappa"), py::arg("tau") = 0.0, py::kw_only(), py::arg("length"),
+      py::arg("point") = std::vector<double>{0.0, 0.0, 0.0}, py::arg("tangent") = std::vector<double>{1.0, 0.0, 0.0},
+      py::arg("normal") = std::vector<double>{0.0, 1.0, 0.0}, py::arg("tolerance") = 1e-10, py::arg("parameter") = "s");
+}
+
+}  // namespace hula::python

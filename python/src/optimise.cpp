@@ -1,0 +1,386 @@
+// SPDX-License-Identifier: MIT
+// Flexo from Python: a problem is either a built-in test problem (name) or a
+// Python callable evaluating a whole batch at once, a NumPy (n, d) array in,
+// an (n, k) array of objectives then constraints out
+// (optim::Problem::evaluate_many). The algorithms run with the GIL released;
+// the callable re-acquires it once per generation. An exception raised by the
+// callable ends the run and reaches the caller unchanged, with its traceback.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "arrays.hpp"
+#include "bindings.hpp"
+#include "hula/core/error.hpp"
+#include "hula/optim/ga.hpp"
+#include "hula/optim/islands.hpp"
+#include "hula/optim/nsga2.hpp"
+#include "hula/optim/run_log.hpp"
+#include "hula/optim/test_problems.hpp"
+
+namespace hula::python {
+
+namespace py = pybind11;
+
+namespace {
+
+// Reads the options dict, refusing keys no algorithm reads.
+class Options {
+ public:
+  explicit Options(const py::dict& d) : d_(d) {}
+  template <class T>
+  std::optional<T> get(const char* key) {
+    used_.insert(key);
+    if (!d_.contains(key) || d_[key].is_none()) return std::nullopt;
+    try {
+      return d_[key].cast<T>();
+    } catch (const py::cast_error&) {
+      throw Error(Errc::InvalidOption,
+                  std::string(key) + " = " + py::repr(d_[key]).cast<std::string>() + " has the wrong type",
+                  {.field = key});
+    }
+  }
+  void check_all_used(const std::string& algorithm) const {
+    for (const auto& [key, value] : d_) {
+      const auto k = key.cast<std::string>();
+      if (!used_.contains(k)) {
+        throw Error(Errc::InvalidOption, k + " is not an option of algorithm \"" + algorithm + "\"", {.field = k});
+      }
+    }
+  }
+
+ private:
+  py::dict d_;
+  std::set<std::string> used_;
+};
+
+optim::RunSettings run_settings(Options& o, std::size_t population) {
+  optim::RunSettings r;
+  r.seed = o.get<std::uint64_t>("seed").value_or(0);
+  r.threads = o.get<std::size_t>("threads").value_or(1);
+  r.stop.generations = o.get<std::size_t>("generations").value_or(100);
+  r.stop.max_evaluations = o.get<std::size_t>("max_evaluations").value_or(0);
+  r.stop.target = o.get<double>("target");
+  r.stop.stagnation_generations = o.get<std::size_t>("stagnation_generations").value_or(0);
+  r.stop.wall_time_seconds = o.get<double>("wall_time").value_or(0.0);
+  (void)population;
+  return r;
+}
+
+py::dict report_dict(const optim::RunReport& r) {
+  py::dict d;
+  d["termination"] = std::string(optim::termination_name(r.termination));
+  d["message"] = r.message;
+  d["generations"] = r.generations;
+  d["evaluations"] = r.evaluations;
+  d["failed_evaluations"] = r.failed_evaluations;
+  d["seconds"] = r.seconds;
+  return d;
+}
+
+py::array rows(const std::vector<optim::Solution>& s, bool variables, std::size_t width) {
+  Doubles a({static_cast<py::ssize_t>(s.size()), static_cast<py::ssize_t>(width)});
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const std::vector<double>& v = variables ? s[i].variables : s[i].objectives;
+    std::copy(v.begin(), v.end(), a.mutable_data() + i * width);
+  }
+  return a;
+}
+
+// The island options (islands = 0: one population).
+optim::IslandOptions island_options(Options& o) {
+  optim::IslandOptions i;
+  i.islands = o.get<std::size_t>("islands").value_or(0);
+  i.interval = o.get<std::size_t>("migration_interval").value_or(i.interval);
+  i.migrants = o.get<std::size_t>("migrants").value_or(i.migrants);
+  i.topology = optim::topology_from_name(o.get<std::string>("topology").value_or("ring"));
+  i.topology_seed = o.get<std::uint64_t>("topology_seed").value_or(0);
+  i.asynchronous = o.get<bool>("asynchronous").value_or(false);
+  return i;
+}
+
+// Runs the archipelago (GIL released; a Python objective re-acquires it per batch) into `out`.
+void run_islands(const optim::Problem& problem, const optim::IslandAlgorithm& algorithm,
+                 const optim::IslandOptions& options, py::dict& out) {
+  optim::IslandsResult r;
+  {
+    const py::gil_scoped_release release;
+    r = optim::solve_islands(problem, algorithm, options);
+  }
+  if (problem.objectives == 1) {
+    out["x"] = to_array(r.best.variables);
+    out["f"] = to_array(r.best.objectives);
+    out["violation"] = r.best.violation;
+  } else {
+    out["front_x"] = rows(r.front, true, problem.dimension());
+    out["front_f"] = rows(r.front, false, problem.objectives);
+  }
+  py::list per;
+  for (const optim::IslandReport& i : r.islands) {
+    py::dict d;
+    d["island"] = i.island;
+    d["seed"] = i.seed;
+    if (problem.objectives == 1) {
+      d["x"] = to_array(i.best.variables);
+      d["f"] = to_array(i.best.objectives);
+    }
+    d["report"] = report_dict(i.report);
+    d["sent"] = i.sent;
+    d["received"] = i.received;
+    d["accepted"] = i.accepted;
+    py::list events;
+    for (const optim::MigrationEvent& e : i.migrations)
+      events.append(py::dict(py::arg("generation") = e.generation, py::arg("from") = e.from,
+                             py::arg("received") = e.received, py::arg("accepted") = e.accepted));
+    d["migrations"] = events;
+    per.append(d);
+  }
+  py::dict report;
+  report["termination"] = std::string(optim::termination_name(r.islands.front().report.termination));
+  report["message"] = r.islands.front().report.message;
+  report["generations"] = r.islands.front().report.generations;
+  report["evaluations"] = r.evaluations;
+  std::size_t failed = 0;
+  for (const optim::IslandReport& i : r.islands) failed += i.report.failed_evaluations;
+  report["failed_evaluations"] = failed;
+  report["seconds"] = r.seconds;
+  out["report"] = report;
+  out["islands"] = per;
+}
+
+py::dict run(const optim::Problem& problem, const std::string& algorithm, const py::dict& options) {
+  Options o(options);
+  const std::size_t population = o.get<std::size_t>("population").value_or(100);
+  optim::RunSettings settings = run_settings(o, population);
+  const optim::IslandOptions islands = island_options(o);
+  std::vector<double> best_per_generation, mean_per_generation;
+  // The convergence graph of a single population; islands report per-island statistics instead.
+  if (islands.islands == 0)
+    settings.on_generation = [&](const optim::GenerationLog& g) {
+      const optim::GenerationStatistics s = optim::statistics(g);
+      best_per_generation.push_back(s.best);
+      mean_per_generation.push_back(s.mean);
+    };
+  py::dict out;
+  if (algorithm == "ga-real") {
+    optim::RealGaOptions a;
+    a.population = population;
+    a.crossover_probability = o.get<double>("crossover_probability").value_or(a.crossover_probability);
+    a.crossover_eta = o.get<double>("crossover_eta").value_or(a.crossover_eta);
+    a.mutation_probability = o.get<double>("mutation_probability");
+    a.mutation_eta = o.get<double>("mutation_eta").value_or(a.mutation_eta);
+    a.tournament_size = o.get<std::size_t>("tournament_size").value_or(a.tournament_size);
+    a.elites = o.get<std::size_t>("elites").value_or(a.elites);
+    a.run = settings;
+    o.check_all_used(algorithm);
+    if (islands.islands > 0) {
+      run_islands(problem, a, islands, out);
+      return out;
+    }
+    optim::GaResult r;
+    {
+      const py::gil_scoped_release release;
+      r = optim::solve_real_ga(problem, a);
+    }
+    out["x"] = to_array(r.best.variables);
+    out["f"] = to_array(r.best.objectives);
+    out["violation"] = r.best.violation;
+    out["report"] = report_dict(r.report);
+  } else if (algorithm == "ga-binary") {
+    optim::BinaryGaOptions a;
+    a.population = population;
+    a.crossover_probability = o.get<double>("crossover_probability").value_or(a.crossover_probability);
+    a.mutation_probability = o.get<double>("mutation_probability").value_or(a.mutation_probability);
+    a.boost_start = o.get<double>("boost_start").value_or(a.boost_start);
+    a.boost_end = o.get<double>("boost_end").value_or(a.boost_end);
+    a.elites = o.get<std::size_t>("elites").value_or(a.elites);
+    a.tournament_size = o.get<std::size_t>("tournament_size").value_or(a.tournament_size);
+    const auto selection = o.get<std::string>("selection").value_or("roulette");
+    if (selection != "roulette" && selection != "tournament") {
+      throw Error(Errc::InvalidOption, "selection = \"" + selection + "\" (expected \"roulette\" or \"tournament\")",
+                  {.field = "selection"});
+    }
+    a.selection = selection == "roulette" ? optim::Selection::Roulette : optim::Selection::Tournament;
+    const auto crossover = o.get<std::string>("crossover").value_or("single-point");
+    if (crossover != "single-point" && crossover != "uniform") {
+      throw Error(Errc::InvalidOption, "crossover = \"" + crossover + "\" (expected \"single-point\" or \"uniform\")",
+                  {.field = "crossover"});
+    }
+    a.crossover = crossover == "uniform" ? optim::BinaryCrossover::Uniform : optim::BinaryCrossover::SinglePoint;
+    a.run = settings;
+    o.check_all_used(algorithm);
+    if (islands.islands > 0) {
+      run_islands(problem, a, islands, out);
+      return out;
+    }
+    optim::GaResult r;
+    {
+      const py::gil_scoped_release release;
+      r = optim::solve_binary_ga(problem, a);
+    }
+    out["x"] = to_array(r.best.variables);
+    out["f"] = to_array(r.best.objectives);
+    out["violation"] = r.best.violation;
+    out["report"] = report_dict(r.report);
+  } else if (algorithm == "nsga2") {
+    optim::Nsga2Options a;
+    a.population = population;
+    a.crossover_probability = o.get<double>("crossover_probability").value_or(a.crossover_probability);
+    a.crossover_eta = o.get<double>("crossover_eta").value_or(a.crossover_eta);
+    a.mutation_probability = o.get<double>("mutation_probability");
+    a.mutation_eta = o.get<double>("mutation_eta").value_or(a.mutation_eta);
+    a.run = settings;
+    o.check_all_used(algorithm);
+    if (islands.islands > 0) {
+      run_islands(problem, a, islands, out);
+      return out;
+    }
+    optim::Nsga2Result r;
+    {
+      const py::gil_scoped_release release;
+      r = optim::solve_nsga2(problem, a);
+    }
+    out["front_x"] = rows(r.front, true, problem.dimension());
+    out["front_f"] = rows(r.front, false, problem.objectives);
+    out["population_x"] = rows(r.population, true, problem.dimension());
+    out["population_f"] = rows(r.population, false, problem.objectives);
+    out["report"] = report_dict(r.report);
+  } else {
+    throw Error(
+        Errc::InvalidArgument,
+        "algorithm = \"" + algorithm + "\" is not an algorithm (expected \"ga-real\", \"ga-binary\" or \"nsga2\")",
+        {.field = "algorithm"});
+  }
+  out["best_per_generation"] = to_array(best_per_generation);
+  out["mean_per_generation"] = to_array(mean_per_generation);
+  return out;
+}
+
+// The batch evaluation of a Python callable: copies the points into a fresh (n, d) array (the
+// callable may keep it), calls it under the GIL and copies its (n, k) or, for k = 1, (n,) result.
+optim::BatchEvaluateFn python_batch(py::function fn, std::size_t d, std::size_t k) {
+  return [fn = std::move(fn), d, k](std::span<const double> points, std::span<double> values) {
+    const py::gil_scoped_acquire acquire;
+    const std::size_t n = points.size() / d;
+    Doubles x({static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(d)});
+    std::copy(points.begin(), points.end(), x.mutable_data());
+    const py::object result = fn(x);
+    const Doubles f = as_doubles(result, "objective result");
+    const bool ok =
+        (f.ndim() == 2 && static_cast<std::size_t>(f.shape(0)) == n && static_cast<std::size_t>(f.shape(1)) == k) ||
+        (k == 1 && f.ndim() == 1 && static_cast<std::size_t>(f.shape(0)) == n);
+    if (!ok) {
+      throw Error(Errc::InvalidArgument,
+                  "the objective returned shape " + shape_text(f) + " for a batch of " + std::to_string(n) +
+                      " points: expected (" + std::to_string(n) + ", " + std::to_string(k) + ")" +
+                      (k == 1 ? " or (" + std::to_string(n) + ",)" : ""),
+                  {.field = "objective"});
+    }
+    std::copy_n(f.data(), n * k, values.begin());
+  };
+}
+
+}  // namespace
+
+void register_optimise(py::module_& m) {
+  m.def(
+      "optimise_callable",
+      [](py::function fn, py::handle lower, py::handle upper, std::size_t objectives, std::size_t inequality,
+         std::size_t equality, py::handle precision, const std::string& name, const std::string& algorithm,
+         const py::dict& options) {
+        const std::vector<double> lo = as_vector(lower, "lower");
+        const std::vector<double> hi = as_vector(upper, "upper");
+        if (lo.size() != hi.size()) {
+          throw Error(Errc::InvalidArgument,
+                      "lower has " + std::to_string(lo.size()) + " bounds but upper has " + std::to_string(hi.size()),
+                      {.field = "upper"});
+        }
+        std::vector<double> prec(lo.size(), 0.0);
+        if (!precision.is_none()) {
+          const std::vector<double> p = as_vector(precision, "precision");
+          if (p.size() == 1)
+            prec.assign(lo.size(), p[0]);
+          else if (p.size() == lo.size())
+            prec = p;
+          else
+            throw Error(Errc::InvalidArgument, "precision must be one number or one per variable",
+                        {.field = "precision"});
+        }
+        optim::Problem p;
+        p.name = name;
+        for (std::size_t i = 0; i < lo.size(); ++i)
+          p.variables.push_back({"x" + std::to_string(i), lo[i], hi[i], prec[i]});
+        p.objectives = objectives;
+        p.inequality_constraints = inequality;
+        p.equality_constraints = equality;
+        p.evaluate_many = python_batch(std::move(fn), lo.size(), p.values_per_point());
+        return run(p, algorithm, options);
+      },
+      py::arg("objective"), py::arg("lower"), py::arg("upper"), py::arg("objectives"), py::arg("inequality"),
+      py::arg("equality"), py::arg("precision"), py::arg("name"), py::arg("algorithm"), py::arg("options"));
+
+  m.def(
+      "optimise_builtin",
+      [](const std::string& name, std::size_t dimension, std::size_t objectives, py::handle precision,
+         const std::string& algorithm, const py::dict& options) {
+        optim::Problem p = optim::test_problem(name, dimension, objectives);
+        if (!precision.is_none()) {
+          const auto q = precision.cast<double>();
+          for (optim::Variable& v : p.variables) v.precision = q;
+        }
+        return run(p, algorithm, options);
+      },
+      py::arg("name"), py::arg("dimension"), py::arg("objectives"), py::arg("precision"), py::arg("algorithm"),
+      py::arg("options"));
+
+  m.def(
+      "evaluate_builtin",
+      [](const std::string& name, std::size_t dimension, std::size_t objectives, py::handle points) {
+        const optim::Problem p = optim::test_problem(name, dimension, objectives);
+        const Doubles x = as_doubles(points, "points");
+        const std::size_t d = p.dimension();
+        if (x.ndim() != 2 || static_cast<std::size_t>(x.shape(1)) != d) {
+          throw Error(Errc::InvalidArgument,
+                      "points has shape " + shape_text(x) + ": expected (n, " + std::to_string(d) + ")",
+                      {.field = "points"});
+        }
+        const auto n = static_cast<std::size_t>(x.shape(0));
+        const std::size_t k = p.values_per_point();
+        Doubles values({static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(k)});
+        std::vector<std::uint8_t> failed(n);
+        const py::gil_scoped_release release;
+        (void)optim::evaluate_batch(p, std::span<const double>(x.data(), n * d),
+                                    std::span<double>(values.mutable_data(), n * k), failed);
+        return values;
+      },
+      py::arg("name"), py::arg("dimension"), py::arg("objectives"), py::arg("points"));
+
+  m.def(
+      "builtin_problem",
+      [](const std::string& name, std::size_t dimension, std::size_t objectives) {
+        const optim::Problem p = optim::test_problem(name, dimension, objectives);
+        std::vector<double> lo, hi;
+        for (const optim::Variable& v : p.variables) {
+          lo.push_back(v.lower);
+          hi.push_back(v.upper);
+        }
+        py::dict d;
+        d["name"] = p.name;
+        d["lower"] = to_array(lo);
+        d["upper"] = to_array(hi);
+        d["objectives"] = p.objectives;
+        d["inequality"] = p.inequality_constraints;
+        d["equality"] = p.equality_constraints;
+        return d;
+      },
+      py::arg("name"), py::arg("dimension") = 0, py::arg("objectives") = 0);
+}
+
+}  // namespace hula::python

@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: MIT
+// Islands across processes and machines: one island per MPI rank of
+// MPI_COMM_WORLD, migrating by point-to-point messages, with exactly the
+// migration code of the threaded island model (islands.hpp run_island). The
+// synchronous mode gives the same result as solve_islands with K = the
+// number of ranks, to the last bit. Rank 0 gathers the islands' reports and
+// merges them (champion, or the non-dominated set of the merged populations).
+//
+// Built only with HULA_MPI=ON (Open MPI from Debian's libopenmpi-dev), as the
+// separate target hula::optim_mpi so only the CLI links MPI.
+//
+// Failure: if a rank dies (killed, crashed), Open MPI's mpirun ends every
+// rank of the job and exits non-zero naming the rank and the signal; no
+// partial result is printed. If an island throws (bad input, evaluation
+// failure), its rank tells its neighbours, every rank stops at its next
+// migration, and rank 0 reports the failing island's error.
+#pragma once
+
+#include <optional>
+
+#include "hula/optim/islands.hpp"
+
+namespace hula::optim {
+
+/// True when this process runs under mpirun / mpiexec with more than one rank
+/// (Open MPI's OMPI_COMM_WORLD_SIZE, or PMI_SIZE of other launchers).
+[[nodiscard]] bool launched_by_mpi() noexcept;
+
+/// Runs this rank's island of an archipelago of one island per rank.
+/// Initialises and finalises MPI itself (once per process).
+/// @param options options.islands must equal the number of ranks (or be 0 = take it).
+/// @returns the merged result on rank 0, nullopt on the other ranks.
+/// @throws hula::Error(Errc::InvalidOption) naming "islands" if it differs from the number of ranks;
+///   the failing island's error (on rank 0; other ranks throw "another island failed").
+[[nodiscard]] std::optional<IslandsResult> solve_islands_mpi(const Problem& problem, const IslandAlgorithm& algorithm,
+                                                             IslandOptions options);
+
+}  // namespace hula::optim

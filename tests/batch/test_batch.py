@@ -1,0 +1,77 @@
+# SPDX-License-Identifier: MIT
+# `hula batch`: a campaign of study runs with --jobs child processes (and, in
+# tests/mpi, one slot per MPI rank): every item's result equals the study
+# command's own output, a failed item is reported while the rest finish, and
+# a campaign killed mid-run resumes from its atomically written results file.
+import json
+import os
+import pathlib
+import shutil
+import signal
+import subprocess
+import time
+
+HULA = os.environ["HULA_BIN"]
+SOURCE = pathlib.Path(os.environ["HULA_SOURCE_DIR"])
+STUDY = SOURCE / "examples" / "studies" / "fair-knots-7.4-example1.json"
+
+
+def campaign(tmp, seeds, generations=5, bad=False):
+    shutil.copy(STUDY, tmp / "study.json")
+    doc = {"format": "hula-campaign", "version": 1,
+           "sweep": {"study": "study.json", "seeds": seeds,
+                     "settings": [{"method": "ga", "ga": {"population": 20, "generations": generations}}]}}
+    if bad:
+        (tmp / "bad.json").write_text(json.dumps({"format": "hula-study", "version": 1, "study": "fair-knots",
+                                                  "points": [[0, 0]]}))
+        doc["items"] = [{"id": "bad", "study": "bad.json"}]
+    (tmp / "c.json").write_text(json.dumps(doc))
+    return tmp / "c.json"
+
+
+def run(args, **kw):
+    return subprocess.run([HULA, "batch", *map(str, args)], capture_output=True, text=True, timeout=600, **kw)
+
+
+def test_items_equal_the_study_command_and_failures_are_reported(tmp_path):
+    # checks each item's result is the `hula fair-knots --seed` output and a bad item fails alone (exit 3)
+    c = campaign(tmp_path, [1, 2, 3], bad=True)
+    r = run([c, "--jobs", "2"])
+    assert r.returncode == 3, r.stderr
+    summary = json.loads(r.stdout)
+    assert summary["items"] == 4 and summary["ok"] == 3 and summary["failed"] == 1
+    results = json.loads((tmp_path / "c.results.json").read_text())["items"]
+    assert results["bad"]["status"] == "failed" and results["bad"]["error"]["error"]["code"] == "TooFewPoints"
+    for seed in (1, 2, 3):
+        study = json.loads((tmp_path / "study.json").read_text())
+        study.update({"method": "ga", "ga": {"population": 20, "generations": 5}, "seed": seed})
+        (tmp_path / "direct.json").write_text(json.dumps(study))
+        direct = json.loads(subprocess.run([HULA, "fair-knots", tmp_path / "direct.json"], capture_output=True,
+                                           text=True, check=True).stdout)
+        got = results[f"study/seed{seed}"]["result"]
+        assert got["ga"]["parameters"] == direct["ga"]["parameters"] and got["ga"]["energy"] == direct["ga"]["energy"]
+    # progress lines on stderr, one per finished item
+    assert sum(1 for line in r.stderr.splitlines() if '"finished"' in line) == 4
+    assert not list(tmp_path.glob(".hula-batch-*"))  # the study copies are removed
+
+
+def test_resume_after_kill(tmp_path):
+    # checks a campaign killed mid-run skips its finished items when run again, and completes all of them
+    c = campaign(tmp_path, list(range(1, 9)), generations=150)
+    results = tmp_path / "c.results.json"
+    proc = subprocess.Popen([HULA, "batch", c], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            start_new_session=True)
+    deadline = time.monotonic() + 300
+    done = 0
+    while done < 2 and time.monotonic() < deadline and proc.poll() is None:
+        time.sleep(0.1)
+        if results.exists():
+            done = len(json.loads(results.read_text())["items"])  # written atomically: always whole
+    os.killpg(proc.pid, signal.SIGKILL)
+    proc.wait()
+    assert 2 <= done < 8
+    finished_before = len(json.loads(results.read_text())["items"])
+    r = run([c])
+    assert r.returncode == 0, r.stderr
+    summary = json.loads(r.stdout)
+    assert summary["skipped"] == finished_before and summary["ran"] == 8 - finished_before and summary["ok"] == 8
