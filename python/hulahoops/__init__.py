@@ -26,6 +26,7 @@ from . import _core
 from .errors import (CoincidentPointsError, Error, InvalidArgumentError, InvalidDegreeError, InvalidKnotsError,
                      InvalidOptionError, InvalidWeightError, IoError, NonFiniteInputError, NumericalFailureError,
                      OutOfDomainError, ParseError, ScaleOutOfRangeError, TooFewPointsError)
+from .errors import HelperFailureError, UnsupportedError
 from .optimise import OptimiseResult, Problem, builtin_problem, evaluate_builtin, from_pygmo, optimise
 from .studies import StudyResult, fair_knots, match_curvature
 
@@ -44,5 +45,6 @@ __all__ = [
     "fair_knots", "match_curvature", "StudyResult",
     "Error", "InvalidArgumentError", "NonFiniteInputError", "TooFewPointsError", "CoincidentPointsError",
     "InvalidKnotsError", "InvalidDegreeError", "InvalidWeightError", "OutOfDomainError", "InvalidOptionError",
-    "ParseError", "IoError", "NumericalFailureError", "ScaleOutOfRangeError",
+    "ParseError", "IoError", "NumericalFailureError", "ScaleOutOfRangeError", "UnsupportedError",
+    "HelperFailureError",
 ]
