@@ -16,6 +16,7 @@ from .errors import (CoincidentPointsError as CoincidentPointsError, Error as Er
 from .errors import HelperFailureError as HelperFailureError, UnsupportedError as UnsupportedError
 from .optimise import (OptimiseResult as OptimiseResult, Problem as Problem, builtin_problem as builtin_problem,
                        evaluate_builtin as evaluate_builtin, from_pygmo as from_pygmo, optimise as optimise)
+from .document import Document as Document
 from .studies import StudyResult as StudyResult, fair_knots as fair_knots, match_curvature as match_curvature
 
 ArrayLike = npt.ArrayLike
@@ -92,7 +93,7 @@ class NurbsCurve:
         """Writes the curve file atomically."""
 
 def interpolate(points: ArrayLike, *, start: str | ArrayLike = "natural", end: str | ArrayLike = "natural",
-                parameterisation: Literal["chord", "uniform", "centripetal", "foley"] = "chord",
+                parameterisation: Literal["chord", "uniform", "centripetal"] = "chord",
                 parameters: ArrayLike | None = None) -> NurbsCurve:
     """The C2 cubic spline through (n, 2) or (n, 3) points (thesis 5.5, 7.1).
     start/end: "natural", "bessel", "not-a-knot", "occt", or a tangent vector dC/dt (t in [0, 1]).
