@@ -141,6 +141,16 @@ TEST(AnalyseCli, SvgFiles) {
   }
 }
 
+// checks --svg DIR/ with a trailing separator (as docs/cli.md and the README write it) creates the
+// directory and its figures; it was refused as "cannot create the directory"
+TEST(AnalyseCli, SvgDirectoryWithTrailingSeparator) {
+  const testing::TempDir dir;
+  const std::string figures = (dir.path() / "figures").string() + "/";
+  const ProcessResult r = hula({"analyse", write(dir, "helix.json", kHelix), "--samples", "2", "--svg", figures});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "figures" / "curve.svg"));
+}
+
 // checks --fins adds each kind's comb with its scale to the output: the normal fins of the helix
 // (radius 2 about the z axis, N pointing to the axis) with --fin-scale 0.5 end 2.5 from the axis, at
 // the --fin-density parameters
