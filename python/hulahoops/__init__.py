@@ -26,6 +26,8 @@ from . import _core
 from .errors import (CoincidentPointsError, Error, InvalidArgumentError, InvalidDegreeError, InvalidKnotsError,
                      InvalidOptionError, InvalidWeightError, IoError, NonFiniteInputError, NumericalFailureError,
                      OutOfDomainError, ParseError, ScaleOutOfRangeError, TooFewPointsError)
+from .errors import HelperFailureError, UnsupportedError
+from .document import Document
 from .optimise import OptimiseResult, Problem, builtin_problem, evaluate_builtin, from_pygmo, optimise
 from .studies import StudyResult, fair_knots, match_curvature
 
@@ -41,8 +43,9 @@ reconstruct = _core.reconstruct
 __all__ = [
     "NurbsCurve", "ClosestPoint", "IntrinsicCurve", "NurbsFit", "Law", "interpolate", "analyse", "reconstruct",
     "optimise", "Problem", "OptimiseResult", "from_pygmo", "builtin_problem", "evaluate_builtin",
-    "fair_knots", "match_curvature", "StudyResult",
+    "fair_knots", "match_curvature", "StudyResult", "Document",
     "Error", "InvalidArgumentError", "NonFiniteInputError", "TooFewPointsError", "CoincidentPointsError",
     "InvalidKnotsError", "InvalidDegreeError", "InvalidWeightError", "OutOfDomainError", "InvalidOptionError",
-    "ParseError", "IoError", "NumericalFailureError", "ScaleOutOfRangeError",
+    "ParseError", "IoError", "NumericalFailureError", "ScaleOutOfRangeError", "UnsupportedError",
+    "HelperFailureError",
 ]

@@ -81,6 +81,14 @@ class ScaleOutOfRangeError(Error):
     """Model coordinates too large or too small to handle."""
 
 
+class UnsupportedError(Error):
+    """The selected kernel backend has no such operation; ``where["field"]`` names it."""
+
+
+class HelperFailureError(Error):
+    """An isolated helper process (STEP/IGES exchange) crashed, hung or ran out of memory."""
+
+
 _BY_CODE: dict[str, type[Error]] = {
     "InvalidArgument": InvalidArgumentError,
     "NonFiniteInput": NonFiniteInputError,
@@ -95,6 +103,8 @@ _BY_CODE: dict[str, type[Error]] = {
     "IoError": IoError,
     "NumericalFailure": NumericalFailureError,
     "ScaleOutOfRange": ScaleOutOfRangeError,
+    "Unsupported": UnsupportedError,
+    "HelperFailure": HelperFailureError,
 }
 
 

@@ -2,8 +2,8 @@
 // The registration functions of the hulahoops._core extension module, one per
 // source file: errors.cpp (hula::Error -> hulahoops.Error subclasses),
 // geometry.cpp (NurbsCurve, interpolate, analyse, reconstruct), laws.cpp
-// (Law), optimise.cpp (Flexo with Python objectives) and studies.cpp (the
-// thesis's curve studies). The Python package (python/hulahoops) wraps these
+// (Law), optimise.cpp (Flexo with Python objectives), studies.cpp (the
+// thesis's curve studies) and document.cpp (the Oli document). The Python package (python/hulahoops) wraps these
 // in its documented public API.
 #pragma once
 
@@ -16,5 +16,6 @@ void register_geometry(pybind11::module_& m);
 void register_laws(pybind11::module_& m);
 void register_optimise(pybind11::module_& m);
 void register_studies(pybind11::module_& m);
+void register_document(pybind11::module_& m);
 
 }  // namespace hula::python

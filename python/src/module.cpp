@@ -9,4 +9,5 @@ PYBIND11_MODULE(_core, m) {
   hula::python::register_laws(m);
   hula::python::register_optimise(m);
   hula::python::register_studies(m);
+  hula::python::register_document(m);
 }

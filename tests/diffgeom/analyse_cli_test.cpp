@@ -117,7 +117,8 @@ TEST(AnalyseCli, Features) {
   EXPECT_TRUE(ft["torsion_extrema"].empty());  // planar: τ = 0 is never a strict extremum
 }
 
-// checks --svg writes curve.svg, kappa.svg and tau.svg (complete SVG documents) and still prints the points.
+// checks --svg writes curve.svg, kappa.svg and tau.svg (complete SVG documents with a drawn line) and still
+// prints the points; curve.svg names its view and legends each fin kind with its scale (io::curve_figures).
 TEST(AnalyseCli, SvgFiles) {
   const testing::TempDir dir;
   const ProcessResult r =
@@ -131,8 +132,48 @@ TEST(AnalyseCli, SvgFiles) {
     const std::string text = buffer.str();
     EXPECT_EQ(text.rfind("<svg", 0), 0U) << name;
     EXPECT_NE(text.find("</svg>"), std::string::npos) << name;
-    EXPECT_NE(text.find("<path"), std::string::npos) << name;
+    EXPECT_NE(text.find("<polyline"), std::string::npos) << name;
+    if (std::string(name) == "curve.svg") {
+      EXPECT_NE(text.find("curve (seen from -Y, 20 degrees above) with curvature, torsion fins"), std::string::npos);
+      EXPECT_NE(text.find("curvature fins P - s\u03BAN, s = "), std::string::npos);
+      EXPECT_NE(text.find("torsion fins P + s\u03C4B, s = "), std::string::npos);
+    }
   }
+}
+
+// checks --svg DIR/ with a trailing separator (as docs/cli.md and the README write it) creates the
+// directory and its figures; it was refused as "cannot create the directory"
+TEST(AnalyseCli, SvgDirectoryWithTrailingSeparator) {
+  const testing::TempDir dir;
+  const std::string figures = (dir.path() / "figures").string() + "/";
+  const ProcessResult r = hula({"analyse", write(dir, "helix.json", kHelix), "--samples", "2", "--svg", figures});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "figures" / "curve.svg"));
+}
+
+// checks --fins adds each kind's comb with its scale to the output: the normal fins of the helix
+// (radius 2 about the z axis, N pointing to the axis) with --fin-scale 0.5 end 2.5 from the axis, at
+// the --fin-density parameters
+TEST(AnalyseCli, FinsOfEveryKindWithScaleAndDensity) {
+  const testing::TempDir dir;
+  const ProcessResult r = hula({"analyse", write(dir, "helix.json", kHelix), "--samples", "2", "--fins",
+                                "normal,bishop", "--fin-scale", "0.5", "--fin-density", "5"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json fins = json::parse(r.out)["fins"];
+  ASSERT_EQ(fins.size(), 3U);
+  EXPECT_EQ(fins[0]["kind"], "normal");
+  EXPECT_EQ(fins[1]["kind"], "bishop-u");
+  EXPECT_EQ(fins[2]["kind"], "bishop-v");
+  EXPECT_EQ(fins[0]["scale"].get<double>(), 0.5);
+  ASSERT_EQ(fins[0]["tip"].size(), 5U);
+  for (const auto& tip : fins[0]["tip"]) {
+    const double x = tip[0].get<double>(), y = tip[1].get<double>();
+    EXPECT_NEAR(std::hypot(x, y), 2.5, 1e-9);
+  }
+  const ProcessResult bad =
+      hula({"analyse", write(dir, "h.json", kHelix), "--samples", "2", "--fins", "curvature,tosion"});
+  EXPECT_EQ(bad.exit_code, 3);
+  EXPECT_NE(bad.err.find("--fins[1] = 'tosion'"), std::string::npos) << bad.err;
 }
 
 // checks --svg also writes radius.svg, speed.svg and logcurvature.svg as complete SVG documents (start
@@ -153,7 +194,7 @@ TEST(AnalyseCli, SvgRadiusSpeedLogCurvature) {
     while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
     EXPECT_EQ(text.rfind("<svg", 0), 0U) << name;
     EXPECT_TRUE(text.ends_with("</svg>")) << name;
-    EXPECT_NE(text.find("<path"), std::string::npos) << name;
+    EXPECT_NE(text.find("<polyline"), std::string::npos) << name;
   }
 }
 

@@ -177,6 +177,29 @@ TEST(Cli, InterpolateWritesCurve) {
   for (const auto& p : c2["control_points"]) EXPECT_EQ(p.size(), 2u);
 }
 
+// checks interpolate --lagrange writes nurbs::interpolate_lagrange's Bézier curve (degree N − 1) at the
+// --parameterisation parameters, bit for bit, and refuses --start with it (usage, exit 2)
+TEST(Cli, InterpolateLagrangeWritesThePolynomial) {
+  TempDir dir;
+  const fs::path out = dir / "lagrange.json";
+  const ProcessResult r = hula({"interpolate", "--points", data("thesis_points.csv"), "--lagrange",
+                                "--parameterisation", "centripetal", "-o", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::vector<Vec3> pts = {{0, 0, 0}, {40, 25, 0}, {80, -25, 0}, {120, 0, 0}};
+  const nurbs::NurbsCurve expected =
+      nurbs::interpolate_lagrange(pts, nurbs::parameterise(pts, nurbs::Parameterisation::Centripetal), 2);
+  const nurbs::NurbsCurve got = read_curve_file(out).nurbs();
+  EXPECT_EQ(got.degree(), 3);
+  EXPECT_EQ(got.knots().values().size(), expected.knots().values().size());
+  for (std::size_t i = 0; i < expected.control_points().size(); ++i)
+    EXPECT_EQ(got.control_points()[i], expected.control_points()[i]) << i;
+  EXPECT_EQ(json::parse(r.out)["method"], "lagrange");
+  EXPECT_EQ(hula({"interpolate", "--points", data("thesis_points.csv"), "--lagrange", "--start", "bessel", "-o",
+                  out.string()})
+                .exit_code,
+            2);
+}
+
 // checks: a failing interpolate leaves an existing output file byte-identical and no temporary file.
 TEST(Cli, FailingInterpolateLeavesExistingFileUntouched) {
   TempDir dir;

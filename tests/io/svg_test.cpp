@@ -76,3 +76,19 @@ TEST(Svg, MismatchedSizesAreRefused) {
 }
 
 }  // namespace
+
+namespace {
+
+// checks the legend's mark matches the plotted one: a circle for a point series, a stroke for a line
+TEST(Svg, LegendMarkMatchesThePlottedMark) {
+  hula::io::SvgFigure fig(400, 300);
+  const std::vector<double> x = {0, 1}, y = {0, 1};
+  fig.add_points(x, y, hula::io::SvgStyle{.stroke = "#ff0000"}, 4.0, "data");
+  fig.add_polyline(x, y, hula::io::SvgStyle{.stroke = "#0000ff"}, "fit");
+  const std::string svg = fig.render();
+  EXPECT_EQ(count(svg, "<circle"), 3u);  // two data points and the legend's marker
+  EXPECT_EQ(count(svg, "<line"), 1u);    // the polyline's legend stroke only
+  EXPECT_NE(svg.find("r=\"4.00\" fill=\"#ff0000\"/>\n<text"), std::string::npos) << svg;
+}
+
+}  // namespace

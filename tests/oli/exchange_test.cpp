@@ -114,15 +114,22 @@ double deviation_from(const NurbsCurve& c, const Handle(Geom_Curve) & occt) {
   return worst / c.model_size();
 }
 
-// max distance of c's samples from the OCCT curve (by projection) / model size: for conics, whose
-// NURBS form has another parameterisation.
+// max distance of c's samples from the OCCT curve / model size: for conics, whose NURBS form has
+// another parameterisation. The distance to a trimmed curve is the nearer of the interior extrema
+// (GeomAPI_ProjectPointOnCurve) and the two ends: OCCT's extrema omit an end the point lies on, so
+// since curves evaluate to their end control points exactly (issue 10, item 9) the start of an
+// elliptic arc projected to the far side of the ellipse, 0.68 off.
 double distance_from(const NurbsCurve& c, const Handle(Geom_Curve) & occt) {
   const auto d = c.domain();
+  const gp_Pnt first = occt->Value(occt->FirstParameter()), last = occt->Value(occt->LastParameter());
   double worst = 0.0;
   for (int i = 0; i <= 50; ++i) {
     const Vec3 p = c.evaluate(i == 50 ? d.end : d.start + d.length() * i / 50);
-    GeomAPI_ProjectPointOnCurve projection(gp_Pnt(p.x, p.y, p.z), occt);
-    worst = std::fmax(worst, projection.LowerDistance());
+    const gp_Pnt q(p.x, p.y, p.z);
+    GeomAPI_ProjectPointOnCurve projection(q, occt);
+    double nearest = std::fmin(q.Distance(first), q.Distance(last));
+    if (projection.NbPoints() > 0) nearest = std::fmin(nearest, projection.LowerDistance());
+    worst = std::fmax(worst, nearest);
   }
   return worst / c.model_size();
 }
@@ -205,9 +212,7 @@ TEST_F(Exchange, LawCurveExportCarriesItsApproximationDeviation) {
 
 // checks files written by OCCT's own STEP and IGES writers from seeded random B-splines, a circular
 // arc, an elliptic arc and a segment import as curves equal to the originals to 1e-12
-// TODO(#11): fails on the merged main (curve 7 of the STEP file OCCT writes, a conic, lands 0.68 off the
-// original); disabled until the conic import is checked against the merged kernel.
-TEST_F(Exchange, DISABLED_FilesWrittenByOcctImport) {
+TEST_F(Exchange, FilesWrittenByOcctImport) {
   const auto curves = random_export_curves(23, 6);
   std::vector<Handle(Geom_Curve)> originals;
   for (const auto& c : curves) originals.push_back(to_occt(c.curve));

@@ -2,7 +2,11 @@
 // `hula interpolate`: reads data points (JSON or CSV), fits the global C2
 // cubic spline (thesis 7.1.2, 10.2.1; nurbs::interpolate_cubic) and writes the
 // curve file atomically — the resolved "nurbs" kind, or with --keep-inputs the
-// "interpolated" kind that stores the inputs. Prints a JSON summary.
+// "interpolated" kind that stores the inputs; --lagrange: the polynomial of
+// degree N − 1 through the points (thesis 5.3.1; nurbs::interpolate_lagrange)
+// as a NURBS. Prints a JSON summary.
+#include "hula/nurbs/interpolate.hpp"
+
 #include <memory>
 
 #include "commands/common.hpp"
@@ -20,11 +24,37 @@ struct InterpolateArgs {
   std::string knots;
   std::string output;
   bool keep_inputs = false;
+  bool lagrange = false;
 };
+
+// --lagrange: the Bézier curve of degree N − 1 through the points at the given (--knots) or
+// --parameterisation parameters. The summary has no end conditions (a polynomial has none).
+int run_lagrange(const InterpolateArgs& a, const io::PointSet& set) {
+  const std::vector<double> parameters =
+      a.knots.empty()
+          ? nurbs::parameterise(set.points, io::parameterisation_from_name(a.parameterisation, "parameterisation"))
+          : parse_number_list(a.knots, "knots");
+  const nurbs::NurbsCurve curve = nurbs::interpolate_lagrange(set.points, parameters, set.dimension);
+  io::write_curve_file(a.output, curve);
+  const nurbs::Interval dom = curve.domain();
+  Json summary = Json::object();
+  summary["output"] = a.output;
+  summary["kind"] = "nurbs";
+  summary["method"] = "lagrange";
+  summary["points"] = set.points.size();
+  summary["dimension"] = curve.dimension();
+  summary["degree"] = curve.degree();
+  summary["control_points"] = curve.control_points().size();
+  summary["domain"] = Json::array({dom.start, dom.end});
+  summary["parameterisation"] = a.knots.empty() ? a.parameterisation : std::string("given");
+  print_result(summary, a.output);
+  return kExitOk;
+}
 
 int run_interpolate(const InterpolateArgs& a) {
   io::check_output_path(a.output, "--output");
   io::PointSet set = io::read_points_file(a.points);
+  if (a.lagrange) return run_lagrange(a, set);
   curve::InterpolatedData in;
   in.points = std::move(set.points);
   in.dimension = set.dimension;
@@ -72,7 +102,14 @@ Command add_interpolate(CLI::App& app) {
   sub->add_option("-o,--output", args->output,
                   "Curve file to write (atomically); - writes it to stdout instead of the summary")
       ->required();
-  sub->add_flag("--keep-inputs", args->keep_inputs, "Write the \"interpolated\" kind (the inputs) instead of NURBS");
+  auto* keep = sub->add_flag("--keep-inputs", args->keep_inputs,
+                             "Write the \"interpolated\" kind (the inputs) instead of NURBS");
+  auto* lagrange = sub->add_flag("--lagrange", args->lagrange,
+                                 "Lagrange interpolation: the polynomial of degree N - 1 through the N points (at most "
+                                 "65), a Bezier curve, instead of the cubic spline; no --start/--end");
+  lagrange->excludes(keep);
+  lagrange->excludes("--start");
+  lagrange->excludes("--end");
   return {sub, [args] { return run_interpolate(*args); }};
 }
 

@@ -62,8 +62,12 @@ void check_svg_directory(const std::filesystem::path& dir) {
                   {.field = "svg"});
     return;
   }
-  // Absent: created later, so its nearest existing ancestor must be a writable directory.
-  std::filesystem::path parent = dir.has_parent_path() ? dir.parent_path() : std::filesystem::path(".");
+  // Absent: created later, so its nearest existing ancestor must be a writable directory. A trailing
+  // separator ("out/", as the docs write it) names the same directory: its parent is that of "out".
+  std::filesystem::path target = dir;
+  while (!target.has_filename() && target.has_parent_path() && target != target.root_path())
+    target = target.parent_path();
+  std::filesystem::path parent = target.has_parent_path() ? target.parent_path() : std::filesystem::path(".");
   while (::stat(parent.c_str(), &st) != 0 && parent.has_parent_path() && parent != parent.parent_path())
     parent = parent.parent_path();
   if (::stat(parent.c_str(), &st) != 0 || !S_ISDIR(st.st_mode) || ::access(parent.c_str(), W_OK | X_OK) != 0)

@@ -302,8 +302,13 @@ std::string SvgFigure::render() const {
     const double ly = height_ - 10;
     for (const auto& it : items_) {
       if (it.legend.empty()) continue;
-      out += "<line x1=\"" + num(lx) + "\" y1=\"" + num(ly - 4) + "\" x2=\"" + num(lx + 24) + "\" y2=\"" + num(ly - 4) +
-             "\"" + stroke_attrs(it.style) + "/>\n";
+      // The legend's mark is the plotted one: a marker for points, a stroke for lines and segments.
+      if (it.kind == Item::Kind::Points)
+        out += "<circle cx=\"" + num(lx + 12) + "\" cy=\"" + num(ly - 4) + "\" r=\"" + num(it.radius) + "\" fill=\"" +
+               (it.style.fill.empty() ? it.style.stroke : it.style.fill) + "\"/>\n";
+      else
+        out += "<line x1=\"" + num(lx) + "\" y1=\"" + num(ly - 4) + "\" x2=\"" + num(lx + 24) + "\" y2=\"" +
+               num(ly - 4) + "\"" + stroke_attrs(it.style) + "/>\n";
       out += "<text x=\"" + num(lx + 30) + "\" y=\"" + num(ly) + "\">" + escape(it.legend) + "</text>\n";
       lx += 40 + 7.0 * static_cast<double>(it.legend.size());
     }

@@ -1,0 +1,147 @@
+# SPDX-License-Identifier: MIT
+"""The curve document: a ``.hula`` file of labelled curves with undo (the Oli layer).
+
+A :class:`Document` is what ``hula doc`` edits (docs/cli.md, "hula doc"):
+entities under stable integer labels, their attributes, a persistent undo
+history. Every change is one transaction, committed to the file when the call
+returns; a change that fails raises the :class:`hulahoops.Error` of its code
+and leaves the document (and the file) exactly as it was.
+
+Open read-write, a document holds the file's writer lock until :meth:`close`
+(or the end of a ``with`` block); a second writer is refused.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from typing import Any
+
+from . import _core
+
+
+def _curve_text(curve: Any) -> str:
+    """A curve file's JSON text from a NurbsCurve, a dict in the curve-file format, or a path."""
+    if isinstance(curve, _core.NurbsCurve):
+        return curve.to_json()
+    if isinstance(curve, dict):
+        return json.dumps(curve)
+    if isinstance(curve, (str, os.PathLike)):
+        with open(curve, encoding="utf-8") as f:
+            return f.read()
+    raise TypeError(f"curve must be a NurbsCurve, a dict or a path, not {type(curve).__name__}")
+
+
+class Document:
+    """A ``.hula`` curve document. Use :meth:`create` or :meth:`open`."""
+
+    def __init__(self, core: Any) -> None:
+        self._doc = core
+
+    @classmethod
+    def create(cls, path: str | os.PathLike[str], *, backend: str = "native", force: bool = False) -> Document:
+        """Creates a new empty document file. ``backend`` is the geometry kernel, "native" or "occt".
+
+        Raises IoError if the file exists (unless ``force``), InvalidOptionError for an unknown backend."""
+        return cls(_core.Document.create(os.fspath(path), backend, force))
+
+    @classmethod
+    def open(cls, path: str | os.PathLike[str], *, read_only: bool = False) -> Document:
+        """Opens a document file (read-only: no lock, no change allowed).
+
+        Raises IoError naming the file if it is missing, locked by another writer, corrupt or newer."""
+        return cls(_core.Document.open(os.fspath(path), read_only))
+
+    def close(self) -> None:
+        """Releases the file (and its writer lock); further calls raise InvalidArgumentError."""
+        self._doc.close()
+
+    def __enter__(self) -> Document:
+        return self
+
+    def __exit__(self, *exc: Any) -> None:
+        self.close()
+
+    @property
+    def revision(self) -> int:
+        """The number of the last committed transaction (0 for a new document)."""
+        return self._doc.revision
+
+    @property
+    def backend(self) -> str:
+        """The geometry kernel recorded in the document, "native" or "occt"."""
+        return self._doc.backend
+
+    @property
+    def can_undo(self) -> bool:
+        return self._doc.can_undo
+
+    @property
+    def can_redo(self) -> bool:
+        return self._doc.can_redo
+
+    def labels(self) -> list[int]:
+        """The labels of the entities, ascending."""
+        return list(self._doc.labels())
+
+    def add(self, curve: Any, *, name: str = "") -> int:
+        """Adds a curve (a NurbsCurve, a curve-file dict or a curve file's path); returns its new label."""
+        return self._doc.add_curve(_curve_text(curve), name)
+
+    def add_points(self, points: Any, *, name: str = "") -> int:
+        """Adds a point set (N × 2 or N × 3 numbers, e.g. a NumPy array) and returns its new label."""
+        rows = [[float(v) for v in p] for p in points]
+        return self._doc.add_points(json.dumps(rows), name)
+
+    def show(self, label: int) -> dict[str, Any]:
+        """The entity as ``hula doc show`` prints it: its curve-file JSON plus label, attributes, provenance."""
+        return json.loads(self._doc.show(label))
+
+    def set(self, label: int, *, curve: Any = None, attribute: tuple[str, Any] | None = None,
+            move_point: tuple[int, Any] | None = None) -> int:
+        """Changes one thing of an entity and returns the new revision: exactly one of
+        ``curve`` (replaces its construction data), ``attribute=(key, value)`` (a system attribute
+        such as "name" or "colour", or a user key, with any JSON value), ``move_point=(index, (x, y, z))``
+        (one control or data point, in model units)."""
+        given = sum(x is not None for x in (curve, attribute, move_point))
+        if given != 1:
+            raise TypeError(f"give exactly one of curve, attribute, move_point (got {given})")
+        if curve is not None:
+            return self._doc.set_curve(label, _curve_text(curve))
+        if attribute is not None:
+            key, value = attribute
+            return self._doc.set_attribute(label, key, json.dumps(value))
+        index, to = move_point  # type: ignore[misc]
+        p = [float(v) for v in to]
+        if len(p) not in (2, 3):
+            raise TypeError(f"move_point's point has {len(p)} coordinates, expected 2 or 3")
+        return self._doc.move_point(label, index, p[0], p[1], p[2] if len(p) == 3 else 0.0)
+
+    def remove(self, label: int) -> int:
+        """Removes an entity (its label is never reused); returns the new revision."""
+        return self._doc.remove(label)
+
+    def undo(self) -> int:
+        """Undoes the last transaction; returns the new revision. Raises InvalidArgumentError if none."""
+        return self._doc.undo()
+
+    def redo(self) -> int:
+        """Redoes the last undone transaction; returns the new revision. Raises InvalidArgumentError if none."""
+        return self._doc.redo()
+
+    def history(self) -> list[dict[str, Any]]:
+        """The undo steps: ``[{"revision", "name", "time", "changed": [labels], "applied"}]``."""
+        return json.loads(self._doc.history())
+
+    def run(self, study: Any, *, base: str | os.PathLike[str] | None = None) -> dict[str, Any]:
+        """Runs a study (a study-file dict, or a study file's path) whose curves may name entity labels,
+        stores it with its result curves, and returns ``hula doc run``'s result (with ``study_label``,
+        ``result_labels``, ``revision``). Relative file names in the study are read from ``base``
+        (default: the study file's directory, or the current directory for a dict)."""
+        if isinstance(study, (str, os.PathLike)):
+            with open(study, encoding="utf-8") as f:
+                text = f.read()
+            where = os.path.dirname(os.path.abspath(study))
+        else:
+            text, where = json.dumps(study), os.getcwd()
+        return json.loads(self._doc.run(text, os.fspath(base) if base is not None else where))
