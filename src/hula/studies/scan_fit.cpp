@@ -52,7 +52,7 @@ constexpr double kMadToSigma = 1.4826;
 constexpr int kHuberRounds = 3;
 constexpr int kMaxRobustRounds = 12;
 // Newton steps of the foot-parameter correction per round (warm-started).
-constexpr int kProjectionSteps = 3;
+constexpr int kProjectionSteps = 2;
 // Relative ridge added to the normal equations of stage 2 and 3 so that knot spans without
 // data stay determined (λ relative to trace(BᵀB) / trace(G)); far below any fairing weight.
 constexpr double kRidge = 1e-9;
@@ -191,7 +191,7 @@ void correct_parameters(const nurbs::KnotVector& knots, std::span<const Vec3> ct
       t = next;
     }
     params[i] = t;
-    dist[i] = norm(c - pts[i]);
+    dist[i] = norm(pts[i] - c);
   }
 }
 
@@ -256,12 +256,12 @@ ScanFitResult fit_scan(std::span<const Vec3> points, const ScanFitOptions& optio
   Tally out;
 
   // Stage 1: initial parameters from the order along the curve.
-  std::vector<double> params(m);
-  if (options.ordered) {
+  // The ordering's isolated points (far from all others) start stage 2 with weight 0, so that no
+  // stray pulls the first, least robust rounds; the biweight rounds judge them like any point.
+  PointOrder order = order_along_curve(points, options.order);
+  std::vector<double> params = std::move(order.key);
+  if (options.ordered)
     for (std::size_t i = 0; i < m; ++i) params[i] = static_cast<double>(i) / static_cast<double>(m - 1);
-  } else {
-    params = order_along_curve(points, options.order).key;
-  }
 
   // Stage 2: robust IRLS fit with parameter correction.
   const std::size_t n_robust = options.robust_control_points != 0
@@ -271,6 +271,7 @@ ScanFitResult fit_scan(std::span<const Vec3> points, const ScanFitOptions& optio
     throw Error(Errc::TooFewPoints, "the robust fit needs at least as many points as control points",
                 ErrorWhere{.field = "points"});
   std::vector<double> weights(m, 1.0), dist(m, 0.0);
+  for (const std::size_t i : order.isolated) weights[i] = 0.0;
   {
     const nurbs::KnotVector knots = nurbs::KnotVector::uniform_clamped(n_robust, p, {0.0, 1.0});
     const Matrix g = penalty_matrix(knots);
@@ -303,19 +304,14 @@ ScanFitResult fit_scan(std::span<const Vec3> points, const ScanFitOptions& optio
   }
 
   // Stage 3: the fewest control points (uniform knots) within the tolerance at the foot parameters.
-  auto fit_count = [&](std::size_t n, std::vector<double>& t) {
+  // Least-squares fit with n control points at the parameters t and its deviation there
+  // (|C(tᵢ) − Qᵢ| ≥ the closest-point distance, so the test is conservative).
+  auto fit_count = [&](std::size_t n, std::span<const double> t) {
     const nurbs::KnotVector knots = nurbs::KnotVector::uniform_clamped(n, p, {0.0, 1.0});
-    const Matrix g = penalty_matrix(knots);
-    std::vector<Vec3> ctrl = solve(assemble(make_design(knots, t), n, points, weights), g, kRidge);
+    const Design d = make_design(knots, t);
+    std::vector<Vec3> ctrl = solve(assemble(d, n, points, weights), penalty_matrix(knots), kRidge);
     ++out.fits;
-    // One parameter correction and re-fit: deviations are then measured at the feet.
-    correct_parameters(knots, ctrl, points, t, dist, kProjectionSteps);
-    ctrl = solve(assemble(make_design(knots, t), n, points, weights), g, kRidge);
-    ++out.fits;
-    correct_parameters(knots, ctrl, points, t, dist, kProjectionSteps);
-    double worst = 0.0;
-    for (std::size_t i = 0; i < m; ++i)
-      if (weights[i] > 0.0) worst = std::max(worst, dist[i]);
+    const double worst = max_design_deviation(d, ctrl, points, weights);
     return std::pair{nurbs::NurbsCurve(knots, std::move(ctrl), {}, dimension), worst};
   };
   std::optional<nurbs::NurbsCurve> fit_found;
@@ -331,8 +327,7 @@ ScanFitResult fit_scan(std::span<const Vec3> points, const ScanFitOptions& optio
     const std::size_t n_max = std::min(options.max_control_points, kept);
     std::size_t lo = static_cast<std::size_t>(p), hi = static_cast<std::size_t>(p) + 1;
     for (;;) {
-      std::vector<double> t = params;
-      if (fit_count(hi, t).second <= options.tolerance) break;
+      if (fit_count(hi, params).second <= options.tolerance) break;
       if (hi == n_max)
         throw Error(Errc::NumericalFailure,
                     "no fit with up to " + std::to_string(n_max) + " control points keeps every kept point within " +
@@ -343,13 +338,18 @@ ScanFitResult fit_scan(std::span<const Vec3> points, const ScanFitOptions& optio
     }
     while (hi - lo > 1) {
       const std::size_t mid = lo + (hi - lo) / 2;
-      std::vector<double> t = params;
-      if (fit_count(mid, t).second <= options.tolerance)
+      if (fit_count(mid, params).second <= options.tolerance)
         hi = mid;
       else
         lo = mid;
     }
     fit_found = fit_count(hi, params).first;
+    // Foot correction on the chosen fit and a re-fit at the feet, kept if it still meets the tolerance.
+    correct_parameters(fit_found->knots(), fit_found->control_points(), points, params, dist, kProjectionSteps);
+    if (auto refit = fit_count(hi, params); refit.second <= options.tolerance) {
+      fit_found = std::move(refit.first);
+      correct_parameters(fit_found->knots(), fit_found->control_points(), points, params, dist, kProjectionSteps);
+    }
     if (pass == kReadmissionPasses) break;
     // Re-admission: a rejected point the tolerance fit passes within the tolerance (by the global
     // closest point) was rejected only because the robust fit fell short there (typically at an end).
