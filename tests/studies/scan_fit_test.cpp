@@ -57,15 +57,15 @@ INSTANTIATE_TEST_SUITE_P(Clouds, ScanFitOnKnownCurves,
                                            CloudCase{KnownCurve::Wave, 0.05}, CloudCase{KnownCurve::Wave, 0.1}));
 
 // Checks that the faired curve stays near the known curve where there are data: at the foot of
-// every kept point its distance to the sampled curve (dense polyline) is under half the
-// tolerance, so the fit found the curve, not a curve through the noise.
+// every kept point its distance to the sampled curve (dense polyline) is within the tolerance (the
+// fairing may use the whole band), so the fit found the curve, not a curve through the noise.
 TEST(ScanFit, FairedCurveFollowsTheKnownCurve) {
   const testing::Cloud cloud = testing::scanned_cloud(CloudSpec{.curve = KnownCurve::Wave, .noise = 0.1, .seed = 7});
   const ScanFitResult r = fit_scan(cloud.points);
   for (std::size_t k = 0; k < r.order.size(); k += 10) {
     const std::size_t i = r.order[k];
     const Vec3 c = r.faired.evaluate(r.parameters[i]);
-    EXPECT_LT(testing::distance_to_known_curve(KnownCurve::Wave, c), kClassATolerance / 2) << "point " << i;
+    EXPECT_LT(testing::distance_to_known_curve(KnownCurve::Wave, c), kClassATolerance) << "point " << i;
   }
 }
 
