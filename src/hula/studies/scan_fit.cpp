@@ -191,7 +191,7 @@ void correct_parameters(const nurbs::KnotVector& knots, std::span<const Vec3> ct
       t = next;
     }
     params[i] = t;
-    dist[i] = norm(pts[i] - c);
+    dist[i] = std::sqrt(norm_squared(pts[i] - c));
   }
 }
 
@@ -204,10 +204,11 @@ double median(std::vector<double> v) {
 // Deviation of the design's points with positive weight at fixed parameters.
 double max_design_deviation(const Design& d, std::span<const Vec3> ctrl, std::span<const Vec3> pts,
                             std::span<const double> weights) {
+  // Squared distances (model-scale data: no overflow), one square root at the end.
   double worst = 0.0;
   for (std::size_t i = 0; i < pts.size(); ++i)
-    if (weights[i] > 0.0) worst = std::max(worst, norm(eval_design(d, i, ctrl) - pts[i]));
-  return worst;
+    if (weights[i] > 0.0) worst = std::max(worst, norm_squared(eval_design(d, i, ctrl) - pts[i]));
+  return std::sqrt(worst);
 }
 
 ScanCurveReport report(const nurbs::NurbsCurve& curve, std::span<const double> dist, std::span<const double> kept) {
