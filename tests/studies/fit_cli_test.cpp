@@ -103,6 +103,23 @@ TEST(FitCli, FormatsStudyExampleRuns) {
   EXPECT_EQ(out["tolerance"].get<double>(), 0.3);
 }
 
+// Checks --save-study writes a "fit" study that, run again, gives the same strays and curve figures.
+TEST(FitCli, SavedStudyRepeatsTheRun) {
+  testing::TempDir dir;
+  write_wave(dir / "wave.csv");
+  const testing::ProcessResult first =
+      testing::run_process(HULA_CLI_PATH, {"fit", "--points", (dir / "wave.csv").string(), "--tolerance", "0.4", "-o",
+                                           (dir / "a.json").string(), "--save-study", (dir / "saved.json").string()});
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  const testing::ProcessResult again =
+      testing::run_process(HULA_CLI_PATH, {"fit", (dir / "saved.json").string(), "-o", (dir / "b.json").string()});
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  const Json a = Json::parse(first.out), b = Json::parse(again.out);
+  EXPECT_EQ(a["strays"], b["strays"]);
+  EXPECT_EQ(a["after"], b["after"]);
+  EXPECT_EQ(b["tolerance"].get<double>(), 0.4);
+}
+
 // Checks the refusals: unknown study member (named), class and tolerance together, no input (exit 3,
 // error JSON naming the field), and that no output file is left behind.
 TEST(FitCli, RefusesBadInputNamingIt) {
