@@ -165,33 +165,43 @@ Vec3 eval_design(const Design& d, std::size_t i, std::span<const Vec3> ctrl) {
 void correct_parameters(const nurbs::KnotVector& knots, std::span<const Vec3> ctrl, std::span<const Vec3> pts,
                         std::span<double> params, std::span<double> dist, int steps) {
   const int p = knots.degree();
+  const std::size_t p1 = static_cast<std::size_t>(p) + 1;
   nurbs::BasisWorkspace work;
+  std::vector<double> n0(p1);
   for (std::size_t i = 0; i < pts.size(); ++i) {
     double t = params[i];
-    Vec3 c{};
-    for (int it = 0; it <= steps; ++it) {
+    bool moved = true;
+    for (int it = 0; it < steps; ++it) {
       const std::size_t span = knots.find_span(t);
       const auto ders = nurbs::basis_derivatives(knots, span, t, 2, work);
       Vec3 d0{}, d1{}, d2{};
-      const std::size_t p1 = static_cast<std::size_t>(p) + 1;
       for (std::size_t j = 0; j < p1; ++j) {
         const Vec3& cp = ctrl[span - static_cast<std::size_t>(p) + j];
         d0 = d0 + ders[j] * cp;
         d1 = d1 + ders[p1 + j] * cp;
         d2 = d2 + ders[2 * p1 + j] * cp;
       }
-      c = d0;
-      if (it == steps) break;
       const Vec3 r = d0 - pts[i];
       const double f = dot(d1, r);
       const double df = dot(d2, r) + dot(d1, d1);
-      if (!(df > 0.0)) break;
-      const double next = std::clamp(t - f / df, 0.0, 1.0);
-      if (next == t) break;
+      const double next = df > 0.0 ? std::clamp(t - f / df, 0.0, 1.0) : t;
+      if (next == t) {
+        // Converged (or no descent): d0 is C(t) already.
+        dist[i] = std::sqrt(norm_squared(r));
+        moved = false;
+        break;
+      }
       t = next;
     }
     params[i] = t;
-    dist[i] = std::sqrt(norm_squared(pts[i] - c));
+    if (moved) {
+      // The distance at the last Newton iterate needs the position only (A2.2, no derivatives).
+      const std::size_t span = knots.find_span(t);
+      nurbs::basis_functions(knots, span, t, n0);
+      Vec3 c{};
+      for (std::size_t j = 0; j < p1; ++j) c = c + n0[j] * ctrl[span - static_cast<std::size_t>(p) + j];
+      dist[i] = std::sqrt(norm_squared(pts[i] - c));
+    }
   }
 }
 
