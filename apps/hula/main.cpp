@@ -35,6 +35,11 @@
 #include "hula/io/error_json.hpp"
 #include "hula/io/json_write.hpp"
 
+namespace hula::cli {
+/// `hula fit` (commands/fit.cpp): scanned points or a "fit" study -> faired class-A curve, strays, figures.
+[[nodiscard]] Command add_fit(CLI::App& app);
+}  // namespace hula::cli
+
 #ifndef HULA_VERSION
 #define HULA_VERSION "unknown"
 #endif
@@ -145,6 +150,7 @@ int main(int argc, char** argv) {
         hula::cli::add_doc(app),
         hula::cli::add_edit(app),
         hula::cli::add_approximate(app),
+        hula::cli::add_fit(app),
         hula::cli::add_closest(app),
         hula::cli::add_deviation(app),
         hula::cli::add_continuity(app),

@@ -1,0 +1,107 @@
+// SPDX-License-Identifier: MIT
+// Open CASCADE's GeomAPI_PointsToBSpline beside studies::fit_scan on the same seeded clouds and
+// tolerance (docs/studies.md "Scanned points to a class-A curve"): OCCT gets the inliers in curve
+// order (it neither orders nor rejects), fit_scan the shuffled cloud with its strays. Both curves are
+// measured by the same code (closest-point deviation of the inliers, control points, inflections,
+// ∫κ'² ds). The table rows are printed for the docs.
+#include <gtest/gtest.h>
+
+#include <GeomAPI_PointsToBSpline.hxx>
+#include <GeomAbs_Shape.hxx>
+#include <Geom_BSplineCurve.hxx>
+#include <TColgp_Array1OfPnt.hxx>
+#include <algorithm>
+#include <cstdio>
+#include <vector>
+
+#include "hula/diffgeom/energy.hpp"
+#include "hula/diffgeom/features.hpp"
+#include "hula/nurbs/closest_point.hpp"
+#include "hula/studies/scan_fit.hpp"
+#include "hula/testing/point_clouds.hpp"
+
+namespace hula::studies {
+namespace {
+
+// Our NURBS of an OCCT B-spline (flat knots, poles, weights).
+nurbs::NurbsCurve from_occt(const Geom_BSplineCurve& c, int dimension) {
+  std::vector<double> knots;
+  for (int i = 1; i <= c.NbKnots(); ++i)
+    for (int k = 0; k < c.Multiplicity(i); ++k) knots.push_back(c.Knot(i));
+  std::vector<Vec3> poles;
+  for (int i = 1; i <= c.NbPoles(); ++i) poles.push_back({c.Pole(i).X(), c.Pole(i).Y(), c.Pole(i).Z()});
+  std::vector<double> weights;
+  if (c.IsRational())
+    for (int i = 1; i <= c.NbPoles(); ++i) weights.push_back(c.Weight(i));
+  return nurbs::NurbsCurve(c.Degree(), std::move(knots), std::move(poles), std::move(weights), dimension);
+}
+
+struct Row {
+  double max_dev = 0.0, mean_dev = 0.0, energy = 0.0;
+  std::size_t control_points = 0, inflections = 0;
+  int degree = 0;
+};
+
+Row measure(const nurbs::NurbsCurve& c, const std::vector<Vec3>& inliers) {
+  Row r;
+  for (const Vec3& q : inliers) {
+    const double d = nurbs::closest_point(c, q).distance;
+    r.max_dev = std::max(r.max_dev, d);
+    r.mean_dev += d;
+  }
+  r.mean_dev /= static_cast<double>(inliers.size());
+  r.control_points = c.control_points().size();
+  r.inflections = diffgeom::inflections(c).size();
+  r.energy = diffgeom::curvature_variation_energy(c).value;
+  r.degree = c.degree();
+  return r;
+}
+
+// Checks that OCCT's approximation runs on every cloud (IsDone) and that fit_scan, on the same
+// clouds shuffled and with strays, matches the known inflection count and keeps the inliers within
+// the tolerance; prints both rows (the docs table).
+TEST(ScanFitOcct, BesideGeomApiPointsToBSpline) {
+  using testing::KnownCurve;
+  std::printf(
+      "| curve | noise | method | max dev | mean dev | degree | control points | inflections (known) | "
+      "∫κ'² ds |\n|---|---|---|---|---|---|---|---|---|\n");
+  for (KnownCurve curve : {KnownCurve::Arc, KnownCurve::SCurve, KnownCurve::Wave})
+    for (double noise : {0.05, 0.1}) {
+      const testing::Cloud ordered =
+          testing::scanned_cloud({.curve = curve, .points = 1000, .noise = noise, .shuffle = false, .seed = 1});
+      const testing::Cloud shuffled =
+          testing::scanned_cloud({.curve = curve, .points = 1000, .noise = noise, .shuffle = true, .seed = 1});
+      std::vector<Vec3> inliers;
+      for (std::size_t i = 0; i < ordered.points.size(); ++i)
+        if (!std::binary_search(ordered.strays.begin(), ordered.strays.end(), i)) inliers.push_back(ordered.points[i]);
+      TColgp_Array1OfPnt pts(1, static_cast<int>(inliers.size()));
+      for (std::size_t i = 0; i < inliers.size(); ++i)
+        pts.SetValue(static_cast<int>(i) + 1, gp_Pnt(inliers[i].x, inliers[i].y, inliers[i].z));
+      const GeomAPI_PointsToBSpline occt(pts, 3, 8, GeomAbs_C2, kClassATolerance);
+      ASSERT_TRUE(occt.IsDone());
+      const Row o = measure(from_occt(*occt.Curve(), 2), inliers);
+
+      const ScanFitResult ours = fit_scan(shuffled.points);
+      std::vector<Vec3> our_inliers;
+      for (std::size_t i = 0; i < shuffled.points.size(); ++i)
+        if (!std::binary_search(shuffled.strays.begin(), shuffled.strays.end(), i))
+          our_inliers.push_back(shuffled.points[i]);
+      const Row h = measure(ours.faired, our_inliers);
+      EXPECT_EQ(ours.strays, shuffled.strays);
+      EXPECT_LE(h.max_dev, kClassATolerance);
+      EXPECT_EQ(h.inflections, testing::known_curve_inflections(curve));
+
+      const std::size_t known = testing::known_curve_inflections(curve);
+      const auto name = std::string(testing::known_curve_name(curve));
+      std::printf(
+          "| %s | %.2f | OCCT GeomAPI_PointsToBSpline (ordered inliers) | %.3f | %.3f | %d | %zu | %zu (%zu) | %.3g "
+          "|\n",
+          name.c_str(), noise, o.max_dev, o.mean_dev, o.degree, o.control_points, o.inflections, known, o.energy);
+      std::printf("| %s | %.2f | hula fit (shuffled, 1 %% strays) | %.3f | %.3f | %d | %zu | %zu (%zu) | %.3g |\n",
+                  name.c_str(), noise, h.max_dev, h.mean_dev, h.degree, h.control_points, h.inflections, known,
+                  h.energy);
+    }
+}
+
+}  // namespace
+}  // namespace hula::studies

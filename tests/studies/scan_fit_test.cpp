@@ -1,0 +1,123 @@
+// SPDX-License-Identifier: MIT
+// Tests of studies::fit_scan and order_along_curve on seeded clouds of known curves
+// (hula/testing/point_clouds.hpp): strays found, inliers within the tolerance, the
+// known curve's inflection count, and the bad-input contract.
+#include "hula/studies/scan_fit.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "hula/core/error.hpp"
+#include "hula/testing/expect_error.hpp"
+#include "hula/testing/point_clouds.hpp"
+
+namespace hula::studies {
+namespace {
+
+using testing::CloudSpec;
+using testing::KnownCurve;
+
+struct CloudCase {
+  KnownCurve curve;
+  double noise;
+};
+
+class ScanFitOnKnownCurves : public ::testing::TestWithParam<CloudCase> {};
+
+// Checks the judged properties on three known curves × noise 0.05 / 0.1 × 1 % strays, three seeds
+// each: every stray (by construction ≥ 2 from the curve) is rejected and no inlier is, every inlier
+// lies within the A-class 0.3 of the faired curve, and the faired curve has the known curve's
+// inflection count (the sine's / the arc's, by construction).
+TEST_P(ScanFitOnKnownCurves, FindsStraysKeepsInliersAndInflections) {
+  const CloudCase c = GetParam();
+  for (std::uint64_t seed : {1u, 2u, 3u}) {
+    const testing::Cloud cloud =
+        testing::scanned_cloud(CloudSpec{.curve = c.curve, .points = 1000, .noise = c.noise, .seed = seed});
+    const ScanFitResult r = fit_scan(cloud.points, ScanFitOptions{.tolerance = kClassATolerance});
+    SCOPED_TRACE(std::string(testing::known_curve_name(c.curve)) + " noise " + std::to_string(c.noise) + " seed " +
+                 std::to_string(seed));
+    EXPECT_EQ(r.strays, cloud.strays);
+    for (std::size_t i = 0; i < cloud.points.size(); ++i)
+      if (!std::binary_search(cloud.strays.begin(), cloud.strays.end(), i)) {
+        EXPECT_LE(r.deviations[i], kClassATolerance) << "inlier " << i;
+      }
+    EXPECT_LE(r.after.max_deviation, kClassATolerance);
+    EXPECT_EQ(r.after.inflections, testing::known_curve_inflections(c.curve));
+    // Fairing never makes the curvature variation worse than the tolerance fit's.
+    EXPECT_LE(r.after.curvature_variation, r.before.curvature_variation * (1.0 + 1e-9));
+    EXPECT_EQ(r.faired.dimension(), 2);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Clouds, ScanFitOnKnownCurves,
+                         ::testing::Values(CloudCase{KnownCurve::Arc, 0.05}, CloudCase{KnownCurve::Arc, 0.1},
+                                           CloudCase{KnownCurve::SCurve, 0.05}, CloudCase{KnownCurve::SCurve, 0.1},
+                                           CloudCase{KnownCurve::Wave, 0.05}, CloudCase{KnownCurve::Wave, 0.1}));
+
+// Checks that the faired curve stays near the known curve where there are data: at the foot of
+// every kept point its distance to the sampled curve (dense polyline) is within the tolerance (the
+// fairing may use the whole band), so the fit found the curve, not a curve through the noise.
+TEST(ScanFit, FairedCurveFollowsTheKnownCurve) {
+  const testing::Cloud cloud = testing::scanned_cloud(CloudSpec{.curve = KnownCurve::Wave, .noise = 0.1, .seed = 7});
+  const ScanFitResult r = fit_scan(cloud.points);
+  for (std::size_t k = 0; k < r.order.size(); k += 10) {
+    const std::size_t i = r.order[k];
+    const Vec3 c = r.faired.evaluate(r.parameters[i]);
+    EXPECT_LT(testing::distance_to_known_curve(KnownCurve::Wave, c), kClassATolerance) << "point " << i;
+  }
+}
+
+// Checks that given-order input (ordered = true) on an unshuffled cloud gives the same strays and
+// inflections as the MST ordering on the shuffled one.
+TEST(ScanFit, OrderedInputSkipsOrdering) {
+  const testing::Cloud cloud =
+      testing::scanned_cloud(CloudSpec{.curve = KnownCurve::SCurve, .noise = 0.05, .shuffle = false, .seed = 4});
+  const ScanFitResult r = fit_scan(cloud.points, ScanFitOptions{.ordered = true});
+  EXPECT_EQ(r.strays, cloud.strays);
+  EXPECT_EQ(r.after.inflections, 1u);
+}
+
+// Checks the B-class tolerance 0.5 gives no more control points than A-class 0.3 on the same cloud.
+TEST(ScanFit, LooserToleranceNeedsNoMoreControlPoints) {
+  const testing::Cloud cloud = testing::scanned_cloud(CloudSpec{.curve = KnownCurve::Wave, .noise = 0.1, .seed = 5});
+  const ScanFitResult a = fit_scan(cloud.points, ScanFitOptions{.tolerance = kClassATolerance});
+  const ScanFitResult b = fit_scan(cloud.points, ScanFitOptions{.tolerance = kClassBTolerance});
+  EXPECT_LE(b.fit.control_points().size(), a.fit.control_points().size());
+  EXPECT_LE(b.after.max_deviation, kClassBTolerance);
+}
+
+// Checks the MST ordering on a shuffled noise-free arc against the known order: keys increase
+// (or decrease) with the curve parameter the generator used.
+TEST(PointOrder, RecoversTheOrderOfAShuffledArc) {
+  const testing::Cloud cloud = testing::scanned_cloud(
+      CloudSpec{.curve = KnownCurve::Arc, .points = 300, .noise = 0.0, .stray_fraction = 0.0, .seed = 3});
+  const PointOrder o = order_along_curve(cloud.points);
+  // Sorted by key, the points' x (monotone along the arc) must be monotone.
+  std::vector<double> xs;
+  for (std::size_t i : o.order) xs.push_back(cloud.points[i].x);
+  const bool up = std::is_sorted(xs.begin(), xs.end());
+  const bool down = std::is_sorted(xs.rbegin(), xs.rend());
+  EXPECT_TRUE(up || down);
+  EXPECT_NEAR(o.path_length, 60.0 * 110.0 * std::acos(-1.0) / 180.0, 1e-2);
+}
+
+// Checks the documented errors: too few points, a non-finite point (named by index), bad options.
+TEST(ScanFit, RejectsBadInputNamingIt) {
+  std::vector<Vec3> few(5, Vec3{1, 2, 0});
+  HULA_EXPECT_ERROR(static_cast<void>(fit_scan(few)), Errc::TooFewPoints, "5");
+  const testing::Cloud cloud = testing::scanned_cloud(CloudSpec{.points = 100});
+  std::vector<Vec3> bad = cloud.points;
+  bad[17].y = std::nan("");
+  HULA_EXPECT_ERROR(static_cast<void>(fit_scan(bad)), Errc::NonFiniteInput, "17");
+  HULA_EXPECT_ERROR(static_cast<void>(fit_scan(cloud.points, ScanFitOptions{.tolerance = -1.0})), Errc::InvalidOption,
+                    "tolerance");
+  HULA_EXPECT_ERROR(static_cast<void>(fit_scan(cloud.points, ScanFitOptions{.degree = 2})), Errc::InvalidOption,
+                    "degree");
+  std::vector<Vec3> same(20, Vec3{1, 1, 0});
+  HULA_EXPECT_ERROR(static_cast<void>(order_along_curve(same)), Errc::CoincidentPoints, "coincide");
+}
+
+}  // namespace
+}  // namespace hula::studies
