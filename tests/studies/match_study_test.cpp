@@ -254,6 +254,34 @@ TEST(MatchGa, RealCodedGaAlsoMatches) {
   EXPECT_LT(r.after.mean, 0.1);
 }
 
+// checks: ga.seed_start puts the start design into generation 0 (its best is no worse than the start, up to the
+// binary coding's 1e-3 grid), and ga.distinct returns that many designs, best first, pairwise farther apart than the
+// niche radius (normalised by the bounds), the first being the GA's best.
+TEST(MatchGa, SeededStartAndDistinctDesigns) {
+  const CurvatureMatch match(
+      known_curve_setup({{0, 0, 0}, {16, 20, 0}, {20, 30, 0}, {40, 0, 0}}, 2, 4, 3.0, 5.0, 3, std::nullopt));
+  MatchStudy st = ga_study(MatchMethod::Ga);
+  st.ga.generations = 20;
+  st.ga.seed_start = true;
+  st.ga.distinct = 3;
+  const auto r = hula::studies::run_curvature_match(match, st);
+  EXPECT_LE(r.convergence.front(), r.before.mean + 1e-4);
+  ASSERT_EQ(r.distinct.size(), 3U);
+  EXPECT_NEAR(r.distinct[0].objectives[0], r.after_ga.mean, 1e-12);
+  const auto vars = match.variables();
+  for (std::size_t a = 0; a < 3; ++a)
+    for (std::size_t b = a + 1; b < 3; ++b) {
+      double sum = 0.0;
+      for (std::size_t j = 0; j < vars.size(); ++j) {
+        const double d = (r.distinct[a].variables[j] - r.distinct[b].variables[j]) / (vars[j].upper - vars[j].lower);
+        sum += d * d;
+      }
+      EXPECT_GT(std::sqrt(sum / static_cast<double>(vars.size())), st.ga.distinct_radius) << a << " " << b;
+      EXPECT_LE(r.distinct[a].objectives[0], r.distinct[b].objectives[0]);
+    }
+  EXPECT_TRUE(r.log.generations().empty());  // collected for the niches only, not kept
+}
+
 // LM options are checked before any work, naming the field.
 TEST(MatchHybrid, RejectsBadOptions) {
   hula::studies::LmOptions o;
