@@ -21,6 +21,7 @@ packages=(
   python3 python3-jsonschema curl
   chromium
   help2man util-linux
+  libceres-dev
 )
 # The web workbench (web/) needs Node.js >= 20 and npm; Debian's nodejs/npm
 # are installed only when no node is on the PATH (a newer one is kept).

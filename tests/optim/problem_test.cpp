@@ -150,5 +150,23 @@ TEST(OptimProblem, EvaluateManyIsOneCallPerBatch) {
   EXPECT_THROW((void)evaluate_batch(p, x, v, failed), std::runtime_error);
 }
 
+// checks: bound_hits flags exactly the values within 1e-6 of the box width of a bound (and not fixed variables),
+// and bound_warnings names the variable, its value and the bound.
+TEST(Problem, BoundHitsAndWarnings) {
+  const std::vector<Variable> v = {{"a", 0.0, 10.0, 0.0}, {"b", -1.0, 1.0, 0.0}, {"c", 2.0, 2.0, 0.0}, {"", 0, 1, 0}};
+  const std::vector<double> x = {10.0, -1.0 + 1e-7, 2.0, 0.5};
+  const std::vector<BoundHit> h = bound_hits(v, x);
+  ASSERT_EQ(h.size(), 2U);
+  EXPECT_EQ(h[0].variable, 0U);
+  EXPECT_TRUE(h[0].upper);
+  EXPECT_EQ(h[1].variable, 1U);
+  EXPECT_FALSE(h[1].upper);
+  const std::vector<std::string> w = bound_warnings(v, h);
+  ASSERT_EQ(w.size(), 2U);
+  EXPECT_EQ(w[0].rfind("a = 10 is on its upper bound 10", 0), 0U) << w[0];
+  EXPECT_TRUE(bound_hits(v, std::vector<double>{5.0, 0.0, 2.0, 0.5}).empty());
+  HULA_EXPECT_ERROR((void)bound_hits(v, std::vector<double>{1.0}), Errc::InvalidArgument, "1 values for 4");
+}
+
 }  // namespace
 }  // namespace hula::optim

@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "hula/optim/test_problems.hpp"
 #include "hula/testing/expect_error.hpp"
@@ -98,6 +100,69 @@ TEST(OptimSweep, ConvergenceSummary) {
   EXPECT_GE(s.generations[0].spread, 0.0);
   EXPECT_GE(s.generations[0].mean, s.generations[0].best);
   HULA_EXPECT_ERROR(convergence(log, 1), Errc::InvalidOption, "window = 1 must be >= 2");
+}
+
+// checks: on a two-well function with minima at x = 2 (0) and x = -2 (0.01), niching by clearing over the run log
+// returns both wells, best first, against the known minima; the second-best individual overall (next to x = 2)
+// is not returned.
+TEST(OptimSweep, DistinctBestReturnsBothWells) {
+  Problem p;
+  p.name = "two wells";
+  p.variables = {{"x", -5.0, 5.0, 0.0}};
+  p.objectives = 1;
+  p.evaluate = [](std::span<const double> x, std::span<double> v) {
+    v[0] = std::min((x[0] - 2.0) * (x[0] - 2.0), (x[0] + 2.0) * (x[0] + 2.0) + 0.01);
+  };
+  RunLog log;
+  RealGaOptions o;
+  o.population = 40;
+  o.run.seed = 3;
+  o.run.stop.generations = 30;
+  o.run.on_generation = log.collector();
+  (void)solve_real_ga(p, o);
+  const std::vector<Solution> d = distinct_best(log, p.variables, 2, 0.1);
+  ASSERT_EQ(d.size(), 2U);
+  EXPECT_NEAR(d[0].variables[0], 2.0, 1e-2);
+  EXPECT_NEAR(d[1].variables[0], -2.0, 1e-1);
+  EXPECT_LE(d[0].objectives[0], d[1].objectives[0]);
+  HULA_EXPECT_ERROR((void)distinct_best(log, p.variables, 0), Errc::InvalidOption, "count must be >= 1");
+  HULA_EXPECT_ERROR((void)distinct_best(log, p.variables, 2, 0.0), Errc::InvalidOption, "radius = 0");
+}
+
+// checks: a population seeded with the optimum of the sphere (thesis 10.1.1) has it in generation 0, for the
+// real GA exactly, for the binary GA to its coding's resolution (3 x (half a step of 8/8191)² < 1e-6); a seed
+// outside the bounds is refused naming it.
+TEST(OptimSweep, SeededInitialPopulationContainsTheDesign) {
+  for (const bool binary : {false, true}) {
+    Problem p = sphere(3);
+    for (auto& v : p.variables) {
+      v.lower = -4.0;
+      v.upper = 4.0;
+      v.precision = 1.0 / 1024.0;
+    }
+    RunLog log;
+    RunSettings run;
+    run.stop.generations = 1;
+    run.on_generation = log.collector();
+    run.initial = {{0.0, 0.0, 0.0}};
+    GaResult r;
+    if (binary) {
+      BinaryGaOptions o;
+      o.run = run;
+      r = solve_binary_ga(p, o);
+    } else {
+      RealGaOptions o;
+      o.population = 20;
+      o.run = run;
+      r = solve_real_ga(p, o);
+    }
+    ASSERT_GE(log.generations().size(), 1U);
+    EXPECT_LE(log.generations()[0].objective_values[0], binary ? 1e-6 : 0.0) << (binary ? "binary" : "real");
+    EXPECT_LE(r.best.objectives[0], binary ? 1e-6 : 0.0);
+  }
+  RealGaOptions o;
+  o.run.initial = {{0.0, 9.0, 0.0}};
+  HULA_EXPECT_ERROR((void)solve_real_ga(sphere(3), o), Errc::InvalidOption, "run.initial[0] value 9");
 }
 
 }  // namespace

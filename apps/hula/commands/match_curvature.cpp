@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <iostream>
 #include <memory>
 #include <string>
 #include <vector>
@@ -168,7 +169,9 @@ int run_match(const MatchArgs& a) {
   const studies::MatchResult result = studies::run_curvature_match(match, study, a.study.log.has_value());
   if (a.study.log) write_run_log(result.log, *a.study.log);
   if (a.study.svg) write_figures(*a.study.svg, match, result);
-  print_json(io::match_result_to_json(match, file, result));
+  const Json out = io::match_result_to_json(match, file, result);
+  for (const auto& w : out["warnings"]) std::cerr << "hula: warning: " << w.get<std::string>() << "\n";
+  print_json(out);
   return kExitOk;
 }
 
@@ -258,7 +261,10 @@ int run_match_torsion(const StudyArgs& a) {
       match, study.settings, study.header.seed, study.header.threads, a.log.has_value());
   if (a.log) write_run_log(result.log, *a.log);
   if (a.svg) write_torsion_figures(*a.svg, match, result);
-  print_json(io::torsion_match_result_to_json(match, file, result));
+  const Json out = io::torsion_match_result_to_json(match, file, result);
+  if (out.contains("warnings"))
+    for (const auto& w : out["warnings"]) std::cerr << "hula: warning: " << w.get<std::string>() << "\n";
+  print_json(out);
   return kExitOk;
 }
 

@@ -108,10 +108,24 @@ double read_probability(const Json& obj, const jr::JsonPath& path, std::string_v
 }
 
 MatchGaSettings read_ga(const Json& g, const jr::JsonPath& path) {
-  jr::reject_unknown_members(g, path,
-                             {"algorithm", "population", "generations", "boost_start", "boost_end",
-                              "crossover_probability", "mutation_probability", "precision", "selection"});
+  jr::reject_unknown_members(
+      g, path,
+      {"algorithm", "population", "generations", "boost_start", "boost_end", "crossover_probability",
+       "mutation_probability", "precision", "selection", "seed_start", "distinct", "distinct_radius"});
   MatchGaSettings s;
+  if (const Json* v = jr::optional_member(g, "seed_start")) {
+    if (!v->is_boolean()) jr::type_error(*v, path.member("seed_start"), "true or false");
+    s.seed_start = v->get<bool>();
+  }
+  if (const Json* v = jr::optional_member(g, "distinct"))
+    s.distinct = static_cast<std::size_t>(jr::get_integer(*v, path.member("distinct"), 0, 1000));
+  if (const Json* v = jr::optional_member(g, "distinct_radius")) {
+    s.distinct_radius = jr::get_number(*v, path.member("distinct_radius"));
+    if (!(s.distinct_radius > 0.0 && s.distinct_radius <= 1.0))
+      throw Error(Errc::InvalidOption,
+                  "ga.distinct_radius = " + format_number(s.distinct_radius) + " must be in (0, 1]",
+                  {.field = "ga.distinct_radius"});
+  }
   if (const Json* a = jr::optional_member(g, "algorithm")) {
     const std::string name = jr::get_string(*a, path.member("algorithm"));
     if (name == "binary")
@@ -152,9 +166,16 @@ MatchGaSettings read_ga(const Json& g, const jr::JsonPath& path) {
 }  // namespace
 
 LmOptions lm_options_from_json(const Json& g, const io::json::JsonPath& path) {
-  jr::reject_unknown_members(
-      g, path, {"max_iterations", "target_mean", "relative_tolerance", "initial_lambda", "difference_step"});
+  jr::reject_unknown_members(g, path,
+                             {"max_iterations", "target_mean", "relative_tolerance", "initial_lambda",
+                              "difference_step", "solver", "direct_start"});
   LmOptions o;
+  if (const Json* v = jr::optional_member(g, "solver"))
+    o.solver = lsq_solver_from_name(jr::get_string(*v, path.member("solver")), path.member("solver").text);
+  if (const Json* v = jr::optional_member(g, "direct_start")) {
+    if (!v->is_boolean()) jr::type_error(*v, path.member("direct_start"), "true or false");
+    o.direct_start = v->get<bool>();
+  }
   if (const Json* v = jr::optional_member(g, "max_iterations"))
     o.max_iterations = static_cast<std::size_t>(jr::get_integer(*v, path.member("max_iterations"), 1, 1000000));
   if (const Json* v = jr::optional_member(g, "target_mean"))
@@ -176,10 +197,25 @@ Json lm_options_to_json(const LmOptions& o) {
   lm["relative_tolerance"] = o.relative_tolerance;
   lm["initial_lambda"] = o.initial_lambda;
   lm["difference_step"] = o.difference_step;
+  lm["solver"] = std::string(lsq_solver_name(o.solver));
+  lm["direct_start"] = o.direct_start;
   return lm;
 }
 
 namespace {
+
+// "on_bound" (every variable of x on a bound) and "warnings" (one line each) of a result (issue 14 items 2, 7).
+void bound_report(const CurvatureMatch& match, std::span<const double> x, Json& out) {
+  const std::vector<optim::Variable> vars = match.variables();
+  // Within 2 % of the box width: a GA's best pressing against a bound rarely lands exactly on it (Example 3's GA
+  // stops at x = 49.8 of 50 with a box of 20).
+  const std::vector<optim::BoundHit> hits = optim::bound_hits(vars, x, 0.02);
+  out["on_bound"] = Json::array();
+  for (const optim::BoundHit& h : hits)
+    out["on_bound"].push_back(
+        {{"variable", vars[h.variable].name}, {"bound", h.upper ? "upper" : "lower"}, {"value", h.value}});
+  out["warnings"] = optim::bound_warnings(vars, hits);
+}
 
 Json point_json(const Vec3& p, int dimension) {
   Json a = Json::array({p.x, p.y});
@@ -219,6 +255,25 @@ MatchSetupJson match_setup_from_json(const Json& body, const PathResolver& resol
                 {.field = "points"});
   s.lower = read_offsets(body, "lower", s.points.size(), s.dimension);
   s.upper = read_offsets(body, "upper", s.points.size(), s.dimension);
+  // "movable": the indices of the data points that may move; the others' offsets are zeroed (issue 14 item 2).
+  if (const Json* v = jr::optional_member(body, "movable")) {
+    const jr::JsonPath mp = jr::root_path("movable");
+    const Json& a = jr::get_array(*v, mp);
+    std::vector<bool> keep(s.points.size(), false);
+    for (std::size_t k = 0; k < a.size(); ++k)
+      keep[static_cast<std::size_t>(
+          jr::get_integer(a[k], mp.element(k), 1, static_cast<long long>(s.points.size()) - 1))] = true;
+    for (std::size_t i = 0; i < s.points.size(); ++i)
+      if (!keep[i]) s.lower[i] = s.upper[i] = Vec3{};
+  }
+  // "proximity": one weight for every point or one per point.
+  if (const Json* v = jr::optional_member(body, "proximity")) {
+    const jr::JsonPath pp = jr::root_path("proximity");
+    if (v->is_number())
+      s.proximity.assign(s.points.size(), jr::get_number(*v, pp));
+    else
+      s.proximity = jr::get_number_array(*v, pp);
+  }
   if (const Json* v = jr::optional_member(body, "start_tangent"))
     s.start_tangent = read_vector(*v, jr::root_path("start_tangent"), s.dimension);
   if (const Json* v = jr::optional_member(body, "end_tangent"))
@@ -251,6 +306,7 @@ void match_setup_to_json(const MatchSetupJson& setup, Json& out) {
   out["points"] = points_json(s.points, s.dimension);
   out["lower"] = points_json(s.lower, s.dimension);
   out["upper"] = points_json(s.upper, s.dimension);
+  if (!s.proximity.empty()) out["proximity"] = s.proximity;
   if (s.start_tangent) out["start_tangent"] = point_json(*s.start_tangent, s.dimension);
   if (s.end_tangent) out["end_tangent"] = point_json(*s.end_tangent, s.dimension);
   out["target"] = setup.target;
@@ -261,8 +317,8 @@ void match_setup_to_json(const MatchSetupJson& setup, Json& out) {
 
 MatchStudyFile match_study_from_json(const StudyDocument& document, const PathResolver& resolver) {
   const Json& body = document.body;
-  check_members(body, {"points", "lower", "upper", "start_tangent", "end_tangent", "target", "abscissa", "samples",
-                       "method", "ga", "lm", "direct"});
+  check_members(body, {"points", "lower", "upper", "movable", "proximity", "start_tangent", "end_tangent", "target",
+                       "abscissa", "samples", "method", "ga", "lm", "direct"});
   MatchStudy study;
   study.header = document.header;
   if (const Json* v = jr::optional_member(body, "method"))
@@ -318,6 +374,9 @@ Json match_study_to_json(const MatchStudyFile& file) {
   ga["crossover_probability"] = study.ga.crossover_probability;
   if (study.ga.mutation_probability) ga["mutation_probability"] = *study.ga.mutation_probability;
   ga["precision"] = study.ga.precision;
+  ga["seed_start"] = study.ga.seed_start;
+  ga["distinct"] = study.ga.distinct;
+  ga["distinct_radius"] = study.ga.distinct_radius;
   out["ga"] = ga;
   out["lm"] = lm_options_to_json(study.lm);
   Json direct = Json::object();
@@ -352,6 +411,7 @@ Json match_result_to_json(const CurvatureMatch& match, const MatchStudyFile& fil
     lm["iterations"] = result.lm->iterations;
     lm["evaluations"] = result.lm->evaluations;
     lm["termination"] = result.lm->termination;
+    lm["start"] = result.lm_start;
     lm["seconds"] = result.lm->seconds;
     out["lm"] = lm;
   }
@@ -380,6 +440,14 @@ Json match_result_to_json(const CurvatureMatch& match, const MatchStudyFile& fil
   out["ga"] = ga;
   out["evaluations"] = result.ga_report.evaluations + (result.lm ? result.lm->evaluations : 0);
   out["seconds"] = result.seconds;
+  bound_report(match, result.best, out);
+  if (study.ga.distinct > 0) {
+    out["distinct"] = Json::array();
+    for (const optim::Solution& d : result.distinct) {
+      match.points_from(d.variables, pts);
+      out["distinct"].push_back({{"objective", d.objectives.at(0)}, {"points", points_json(pts, dim)}});
+    }
+  }
   out["curve"] = curve_to_json(match.sampler().curve(pts));
   out["study"] = match_study_to_json(file);
   return out;
@@ -401,8 +469,8 @@ Json number_or_null(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr
 
 TorsionMatchStudyFile torsion_match_study_from_json(const StudyDocument& document, const PathResolver& resolver) {
   const Json& body = document.body;
-  check_members(body, {"points", "lower", "upper", "start_tangent", "end_tangent", "target", "torsion_target",
-                       "abscissa", "samples", "nsga2", "polish", "torsion_weight", "lm"});
+  check_members(body, {"points", "lower", "upper", "movable", "proximity", "start_tangent", "end_tangent", "target",
+                       "torsion_target", "abscissa", "samples", "nsga2", "polish", "torsion_weight", "lm"});
   TorsionMatchStudy study;
   study.header = document.header;
   TorsionMatchSettings& t = study.settings;
@@ -483,6 +551,7 @@ Json torsion_match_result_to_json(const CurvatureMatch& match, const TorsionMatc
                          {"curvature", best.curvature},
                          {"torsion", best.torsion},
                          {"curve", curve_to_json(match.sampler().curve(pts))}};
+    bound_report(match, best.variables, out);
   }
   out["nsga2"] = {{"generations", result.report.generations},
                   {"evaluations", result.report.evaluations},

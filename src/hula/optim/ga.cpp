@@ -110,6 +110,7 @@ GaResult solve_real_ga(const Problem& problem, const RealGaOptions& options) {
   problem.validate();
   options.validate();
   check_single_objective(problem, "the real-coded GA");
+  options.run.validate_initial(problem.variables, options.population);
   const std::size_t n = options.population;
   const std::size_t d = problem.dimension();
   const RunSettings& run = options.run;
@@ -136,6 +137,9 @@ GaResult solve_real_ga(const Problem& problem, const RealGaOptions& options) {
     Rng rng(run.seed, i);
     random_real(pop.var(i), lo, hi, rng);
   }
+  // Seeded individuals (10.1.1) replace the first random ones; the streams of the others are unchanged.
+  for (std::size_t i = 0; i < run.initial.size(); ++i)
+    std::copy(run.initial[i].begin(), run.initial[i].end(), pop.var(i).begin());
   evaluator.evaluate(pop, 0, n);
   for (std::size_t i = 0; i < n; ++i) champion.offer(pop, i);
   detail::emit_generation(run.on_generation, buffer, pop, n, 0, evaluator.evaluations(), pop.score);
@@ -188,6 +192,7 @@ GaResult solve_binary_ga(const Problem& problem, const BinaryGaOptions& options)
   problem.validate();
   options.validate();
   check_single_objective(problem, "the binary-coded GA");
+  options.run.validate_initial(problem.variables, options.population);
   const BinaryEncoding encoding(problem.variables);
   const std::size_t n = options.population;
   const std::size_t d = problem.dimension();
@@ -228,6 +233,11 @@ GaResult solve_binary_ga(const Problem& problem, const BinaryGaOptions& options)
     for (std::size_t b = 0; b < length; ++b) {
       if (b % 64 == 0) word = rng();
       c[b] = static_cast<std::uint8_t>((word >> (b % 64)) & 1U);
+    }
+    if (i < run.initial.size()) {
+      // A seeded individual (10.1.1), coded to its nearest grid value.
+      const std::vector<std::uint8_t> coded = encoding.encode(run.initial[i]);
+      std::copy(coded.begin(), coded.end(), c.begin());
     }
     encoding.decode(c, pop.var(i));
   }

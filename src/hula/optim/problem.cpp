@@ -173,4 +173,37 @@ BatchReport evaluate_batch(const Problem& problem, std::span<const double> point
   return report;
 }
 
+std::vector<BoundHit> bound_hits(std::span<const Variable> variables, std::span<const double> x, double fraction) {
+  if (x.size() != variables.size())
+    throw Error(
+        Errc::InvalidArgument,
+        "bound_hits: " + std::to_string(x.size()) + " values for " + std::to_string(variables.size()) + " variables",
+        {.field = "x"});
+  if (!(fraction >= 0.0 && fraction < 0.5))
+    throw Error(Errc::InvalidArgument, "bound_hits: fraction = " + format_number(fraction) + " must be in [0, 0.5)",
+                {.field = "fraction"});
+  std::vector<BoundHit> hits;
+  for (std::size_t j = 0; j < x.size(); ++j) {
+    const double width = variables[j].upper - variables[j].lower;
+    if (!(width > 0.0)) continue;
+    if (x[j] <= variables[j].lower + fraction * width)
+      hits.push_back({j, false, x[j]});
+    else if (x[j] >= variables[j].upper - fraction * width)
+      hits.push_back({j, true, x[j]});
+  }
+  return hits;
+}
+
+std::vector<std::string> bound_warnings(std::span<const Variable> variables, std::span<const BoundHit> hits) {
+  std::vector<std::string> lines;
+  for (const BoundHit& h : hits) {
+    const Variable& v = variables[h.variable];
+    const std::string name = v.name.empty() ? "x" + std::to_string(h.variable) : v.name;
+    lines.push_back(name + " = " + format_number(h.value) + " is on its " + (h.upper ? "upper" : "lower") + " bound " +
+                    format_number(h.upper ? v.upper : v.lower) +
+                    ": the optimum may lie beyond it (widen the bounds or re-run re-centred)");
+  }
+  return lines;
+}
+
 }  // namespace hula::optim

@@ -133,4 +133,27 @@ struct BatchReport {
 BatchReport evaluate_batch(const Problem& problem, std::span<const double> points, std::span<double> values,
                            std::span<std::uint8_t> failed, const BatchOptions& options = {});
 
+/// A variable that ended on (or within a tolerance of) one of its bounds (issue 14: results that sit on a bound
+/// are warned about, the thesis's cue to widen or re-centre the bounds, 7.4.1 / 8.2.1).
+struct BoundHit {
+  /// Index in Problem::variables.
+  std::size_t variable = 0;
+  /// True for the upper bound, false for the lower.
+  bool upper = false;
+  /// The variable's value.
+  double value = 0.0;
+};
+
+/// The variables of x within `fraction` x (upper − lower) of a bound (zero-width variables are fixed, not reported).
+/// @param variables the variables and bounds; @param x one value per variable
+/// @param fraction relative tolerance, in [0, 0.5). Default 1e-6 (a GA's binary coding or a bounded solver lands
+///   exactly on the bound; a designer reads 1e-6 of the box as "on it").
+/// @throws hula::Error(Errc::InvalidArgument) if x has the wrong size or fraction is outside [0, 0.5)
+[[nodiscard]] std::vector<BoundHit> bound_hits(std::span<const Variable> variables, std::span<const double> x,
+                                               double fraction = 1e-6);
+
+/// "points[3].x = 50 is on its upper bound 50": one warning line per hit.
+[[nodiscard]] std::vector<std::string> bound_warnings(std::span<const Variable> variables,
+                                                      std::span<const BoundHit> hits);
+
 }  // namespace hula::optim

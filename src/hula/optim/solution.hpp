@@ -11,6 +11,7 @@
 #include <span>
 #include <vector>
 
+#include "hula/optim/problem.hpp"
 #include "hula/optim/run_log.hpp"
 #include "hula/optim/run_report.hpp"
 
@@ -77,10 +78,18 @@ struct RunSettings {
   ConstraintHandling constraints = ConstraintHandling::FeasibilityRules;
   /// Penalty factor for ConstraintHandling::Penalty; finite, >= 0. Default 1000.
   double penalty = 1000.0;
+  /// Individuals placed first in the initial population instead of random ones (thesis 10.1.1: seed the
+  /// population with the current design), each with one value per variable inside the bounds, at most
+  /// `population` of them; the binary GA codes each to its nearest grid value. Default none.
+  std::vector<std::vector<double>> initial{};
 
   /// @throws hula::Error(Errc::InvalidOption) naming the field and value if
   ///   penalty is negative or not finite, or stop is invalid.
   void validate() const;
+  /// Checks `initial` against a problem and a population size.
+  /// @throws hula::Error(Errc::InvalidOption) naming run.initial[i] if there are more than `population`, one has
+  ///   the wrong size, or a value is not finite or outside its variable's bounds
+  void validate_initial(std::span<const Variable> variables, std::size_t population) const;
 };
 
 }  // namespace hula::optim

@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
+#include <string>
 
 #include "hula/core/error.hpp"
 
@@ -189,6 +191,61 @@ ConvergenceSummary convergence(const RunLog& log, std::size_t window) {
   const double denominator = c * sgg - sg * sg;
   s.slope = count >= 2 && denominator > 0 ? (c * sgb - sg * sb) / denominator : kNaN;
   return s;
+}
+
+std::vector<Solution> distinct_best(const RunLog& log, std::span<const Variable> variables, std::size_t count,
+                                    double radius) {
+  if (count == 0) throw Error(Errc::InvalidOption, "distinct_best: count must be >= 1", {.field = "count"});
+  if (!(radius > 0.0 && radius <= 1.0))
+    throw Error(Errc::InvalidOption, "distinct_best: radius = " + format_number(radius) + " must be in (0, 1]",
+                {.field = "radius"});
+  const std::size_t d = variables.size();
+  struct Entry {
+    const GenerationLog* generation;
+    std::size_t index;
+  };
+  std::vector<Entry> all;
+  for (const GenerationLog& g : log.generations()) {
+    if (g.dimension != d)
+      throw Error(
+          Errc::InvalidOption,
+          "distinct_best: the log has " + std::to_string(g.dimension) + " variables, the problem " + std::to_string(d),
+          {.field = "log"});
+    for (std::size_t i = 0; i < g.size(); ++i)
+      if (!g.failed[i] && std::isfinite(g.objective_values[i * g.objectives])) all.push_back({&g, i});
+  }
+  auto objective = [](const Entry& e) { return e.generation->objective_values[e.index * e.generation->objectives]; };
+  auto violation = [](const Entry& e) { return e.generation->violation[e.index]; };
+  std::stable_sort(all.begin(), all.end(), [&](const Entry& a, const Entry& b) {
+    if (violation(a) != violation(b)) return violation(a) < violation(b);
+    return objective(a) < objective(b);
+  });
+  std::vector<Solution> kept;
+  for (const Entry& e : all) {
+    if (kept.size() == count) break;
+    const double* x = e.generation->variables.data() + e.index * d;
+    bool distinct = true;
+    for (const Solution& k : kept) {
+      double sum = 0.0;
+      for (std::size_t j = 0; j < d; ++j) {
+        const double w = variables[j].upper - variables[j].lower;
+        if (w > 0.0) sum += ((x[j] - k.variables[j]) / w) * ((x[j] - k.variables[j]) / w);
+      }
+      if (std::sqrt(sum / static_cast<double>(std::max<std::size_t>(d, 1))) <= radius) {
+        distinct = false;
+        break;
+      }
+    }
+    if (!distinct) continue;
+    Solution s;
+    s.variables.assign(x, x + d);
+    const std::size_t k = e.generation->objectives;
+    s.objectives.assign(e.generation->objective_values.begin() + static_cast<std::ptrdiff_t>(e.index * k),
+                        e.generation->objective_values.begin() + static_cast<std::ptrdiff_t>((e.index + 1) * k));
+    s.violation = violation(e);
+    kept.push_back(std::move(s));
+  }
+  return kept;
 }
 
 }  // namespace hula::optim

@@ -123,4 +123,18 @@ struct ConvergenceSummary {
 /// @throws hula::Error(Errc::InvalidOption) if window < 2.
 [[nodiscard]] ConvergenceSummary convergence(const RunLog& log, std::size_t window = 10);
 
+/// The best `count` mutually distinct solutions a single-objective run evaluated (thesis 2.1.2, 7.4.2, app. 2:
+/// a GA should return several good, different designs): niching by clearing (Pétrowski 1996) over every
+/// individual of the log. Individuals are ranked feasible first, then by objective 0 (violation between
+/// infeasible ones); one is kept when its distance to every kept one, √(Σ_j ((x_j − y_j) / w_j)² / d) with w_j the
+/// variable's box width (fixed variables ignored), exceeds `radius`.
+/// @param log every generation of a run (RunLog::collector()); @param variables the problem's variables
+/// @param count >= 1 solutions at most; @param radius normalised niche radius in (0, 1], default 0.05
+/// @returns up to `count` solutions, best first (fewer if the run had fewer distinct ones)
+/// @throws hula::Error(Errc::InvalidOption) for count 0, a radius outside (0, 1], or a log whose dimension
+///   differs from the variables'
+/// Complexity: O(I log I + I · count · d) for I logged individuals.
+[[nodiscard]] std::vector<Solution> distinct_best(const RunLog& log, std::span<const Variable> variables,
+                                                  std::size_t count, double radius = 0.05);
+
 }  // namespace hula::optim

@@ -314,6 +314,16 @@ void CurvatureMatchSetup::validate() const {
           throw Error(Errc::InvalidArgument, where + " = " + format_number(v) + " but the study is planar", at);
       }
   }
+  if (!proximity.empty() && proximity.size() != points.size())
+    throw Error(Errc::InvalidArgument,
+                "proximity has " + std::to_string(proximity.size()) + " weights but there are " +
+                    std::to_string(points.size()) + " points",
+                {.field = "proximity"});
+  for (std::size_t i = 0; i < proximity.size(); ++i)
+    if (!(std::isfinite(proximity[i]) && proximity[i] >= 0.0))
+      throw Error(Errc::InvalidArgument,
+                  indexed("proximity", i) + " = " + format_number(proximity[i]) + " must be finite and >= 0",
+                  {.field = "proximity", .index = i});
   bool any_free = false;
   for (std::size_t i = 0; i < points.size(); ++i)
     for (std::size_t c = 0; c < 3; ++c) any_free = any_free || lower[i][c] > 0.0 || upper[i][c] > 0.0;
@@ -396,6 +406,14 @@ void CurvatureMatch::points_from(std::span<const double> x, std::span<Vec3> out)
   for (std::size_t j = 0; j < free_.size(); ++j) out[free_[j].point][free_[j].coordinate] = x[j];
 }
 
+std::vector<double> CurvatureMatch::variables_from(std::span<const Vec3> points) const {
+  HULA_ASSERT(points.size() == setup_.points.size(), "variables_from: wrong size");
+  std::vector<double> x;
+  x.reserve(free_.size());
+  for (const Free& f : free_) x.push_back(points[f.point][f.coordinate]);
+  return x;
+}
+
 bool CurvatureMatch::residuals(std::span<const double> x, SplineProfileSampler::Workspace& ws, std::span<Vec3> points,
                                std::span<double> r) const {
   points_from(x, points);
@@ -455,6 +473,15 @@ std::vector<double> CurvatureMatch::curvature_samples(std::span<const double> x)
   return kappa;
 }
 
+double CurvatureMatch::proximity_penalty(std::span<const Vec3> points) const {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < setup_.proximity.size(); ++i) {
+    const Vec3 d = points[i] - setup_.points[i];
+    sum += setup_.proximity[i] * dot(d, d);
+  }
+  return sum;
+}
+
 optim::Problem CurvatureMatch::problem(double precision) const {
   optim::Problem p;
   p.name = "match-curvature";
@@ -467,7 +494,7 @@ optim::Problem CurvatureMatch::problem(double precision) const {
     thread_local std::vector<double> kappa;
     if (points.size() != setup_.points.size()) points.resize(setup_.points.size());
     if (kappa.size() != setup_.samples) kappa.resize(setup_.samples);
-    values[0] = mean_distance(x, ws, points, kappa);
+    values[0] = mean_distance(x, ws, points, kappa) + proximity_penalty(points);
   };
   return p;
 }

@@ -110,13 +110,19 @@ struct CurvatureMatchSetup {
   std::optional<Profile> target{};
   /// Optional target torsion profile τ*(u) (for the curvature + torsion study).
   std::optional<Profile> torsion_target{};
+  /// Proximity weights w_i >= 0 per data point (issue 14 item 2: local edits stay local), or empty (default: none).
+  /// The GA's curvature objective becomes e + Σ_i w_i |p_i − p_i⁰|² (p⁰ the start points; w in 1 / model unit³, so
+  /// that the term is a curvature like e), and the least-squares refinement appends the residuals
+  /// √w_i (x_j − x_j⁰) for each free coordinate j of point i. Reported distances stay pure curvature distances.
+  std::vector<double> proximity{};
   /// Samples N >= 2. Default 200.
   std::size_t samples = 200;
   /// Where the samples are: at the parameter (thesis, default) or at the normalised arc length.
   ProfileAbscissa abscissa = ProfileAbscissa::Parameter;
 
   /// @throws hula::Error(Errc::TooFewPoints) if fewer than 2 points
-  /// @throws hula::Error(Errc::InvalidArgument) naming `lower[i]`/`upper[i]` (and the coordinate) for a count
+  /// @throws hula::Error(Errc::InvalidArgument) naming `proximity[i]` if negative or the count differs from the
+  ///   points'; naming `lower[i]`/`upper[i]` (and the coordinate) for a count
   ///   mismatch, a negative offset (bounds that exclude the start value), any offset on points[0] (the start point is
   ///   fixed), a z offset in 2-D, no free coordinate at all; `samples` < 2; no target
   /// @throws hula::Error(Errc::NonFiniteInput) naming the point or offset that is NaN or infinite
@@ -157,6 +163,11 @@ class CurvatureMatch {
   /// Writes the data points for design variables x (the fixed coordinates from the setup).
   /// @param x dimension() values; @param out point count values
   void points_from(std::span<const double> x, std::span<Vec3> out) const;
+  /// The index of the data point whose coordinate design variable j is; j < dimension().
+  [[nodiscard]] std::size_t variable_point(std::size_t j) const { return free_.at(j).point; }
+  /// The free coordinates of `points` in variable order (the inverse of points_from on the free set).
+  /// @param points point count values
+  [[nodiscard]] std::vector<double> variables_from(std::span<const Vec3> points) const;
   /// Mean curvature distance (eq. 31) of x; NaN if the spline is degenerate. No allocation once `ws` is warm.
   /// @param kappa scratch of sampler().abscissae().size() values
   [[nodiscard]] double mean_distance(std::span<const double> x, SplineProfileSampler::Workspace& ws,
@@ -175,8 +186,10 @@ class CurvatureMatch {
   [[nodiscard]] MatchDistances distances(std::span<const double> x) const;
   /// κ(u_i) of x (allocates; for reports and figures).
   [[nodiscard]] std::vector<double> curvature_samples(std::span<const double> x) const;
-  /// The single-objective Flexo problem "mean curvature distance"; evaluation uses one workspace per thread and
-  /// refers to this object, which must outlive the problem.
+  /// Σ_i w_i |p_i − p_i⁰|² of CurvatureMatchSetup::proximity for the points `points` (0 without weights).
+  [[nodiscard]] double proximity_penalty(std::span<const Vec3> points) const;
+  /// The single-objective Flexo problem "mean curvature distance" (+ the proximity penalty); evaluation uses one
+  /// workspace per thread and refers to this object, which must outlive the problem.
   /// @param precision as variables()
   [[nodiscard]] optim::Problem problem(double precision = 0.0) const;
 

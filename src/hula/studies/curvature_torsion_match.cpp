@@ -46,7 +46,7 @@ optim::Problem curvature_torsion_problem(const CurvatureMatch& match) {
     if (kappa.size() != n_samples) kappa.resize(n_samples);
     if (tau.size() != n_samples) tau.resize(n_samples);
     const MatchDistances d = match.mean_distances(x, ws, points, kappa, tau);
-    values[0] = d.mean;
+    values[0] = d.mean + match.proximity_penalty(points);
     values[1] = d.torsion_mean;
   };
   return p;

@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: MIT
 #include "hula/studies/hybrid_refine.hpp"
 
+#include <ceres/ceres.h>
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 
 #include "hula/core/error.hpp"
@@ -19,7 +22,90 @@ void check_range(bool ok, const char* field, double value, const char* range) {
                 {.field = std::string("lm.") + field});
 }
 
+// Central-difference Jacobian column j at x (one-sided where a bound is within the step), false if the residuals
+// are undefined on both sides.
+template <class Eval>
+bool difference_column(const std::vector<optim::Variable>& vars, std::span<const double> x, std::size_t j, double step,
+                       std::vector<double>& x_fd, Eigen::VectorXd& r_plus, Eigen::VectorXd& r_minus, Eval&& eval,
+                       Eigen::Ref<Eigen::VectorXd> column) {
+  const double h = step * std::max(1.0, std::fabs(x[j]));
+  const double hi = std::min(x[j] + h, vars[j].upper);
+  const double lo = std::max(x[j] - h, vars[j].lower);
+  x_fd.assign(x.begin(), x.end());
+  x_fd[j] = hi;
+  const bool ok_hi = eval(x_fd, r_plus);
+  x_fd[j] = lo;
+  const bool ok_lo = eval(x_fd, r_minus);
+  if (!ok_hi || !ok_lo || !(hi > lo)) {
+    column.setZero();
+    return false;
+  }
+  column = (r_plus - r_minus) / (hi - lo);
+  return true;
+}
+
+// The least-squares problem as one Ceres cost function over one parameter block, with the Jacobian of
+// difference_column (Ceres's own numeric differentiation would step outside the bounds).
+class CeresResiduals final : public ceres::CostFunction {
+ public:
+  CeresResiduals(const LeastSquaresProblem& problem, double step, std::size_t& evaluations)
+      : problem_(problem), step_(step), evaluations_(evaluations) {
+    set_num_residuals(static_cast<int>(problem.residual_count));
+    mutable_parameter_block_sizes()->push_back(static_cast<std::int32_t>(problem.variables.size()));
+  }
+
+  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
+    const std::size_t n = problem_.variables.size(), m = problem_.residual_count;
+    const std::span<const double> x(parameters[0], n);
+    auto eval = [&](std::span<const double> at, Eigen::VectorXd& out) {
+      ++evaluations_;
+      return problem_.residuals(at, std::span<double>(out.data(), m));
+    };
+    Eigen::VectorXd r(static_cast<Eigen::Index>(m));
+    if (!eval(x, r)) return false;
+    std::copy(r.data(), r.data() + m, residuals);
+    if (jacobians == nullptr || jacobians[0] == nullptr) return true;
+    // Ceres wants the Jacobian row-major, m x n.
+    Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> J(
+        jacobians[0], static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(n));
+    Eigen::VectorXd r_plus(r.size()), r_minus(r.size()), column(r.size());
+    std::vector<double> x_fd;
+    for (std::size_t j = 0; j < n; ++j) {
+      (void)difference_column(problem_.variables, x, j, step_, x_fd, r_plus, r_minus, eval, column);
+      J.col(static_cast<Eigen::Index>(j)) = column;
+    }
+    return true;
+  }
+
+ private:
+  const LeastSquaresProblem& problem_;
+  double step_;
+  std::size_t& evaluations_;
+};
+
+// Stops Ceres once the mean |r| reaches the target (Ceres's own tolerances are relative).
+class TargetCallback final : public ceres::IterationCallback {
+ public:
+  explicit TargetCallback(double cost_target) : cost_target_(cost_target) {}
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& summary) override {
+    return summary.cost <= cost_target_ ? ceres::SOLVER_TERMINATE_SUCCESSFULLY : ceres::SOLVER_CONTINUE;
+  }
+
+ private:
+  double cost_target_;
+};
+
 }  // namespace
+
+std::string_view lsq_solver_name(LsqSolver s) noexcept { return s == LsqSolver::Ceres ? "ceres" : "clamped"; }
+
+LsqSolver lsq_solver_from_name(std::string_view name, std::string_view field) {
+  if (name == "ceres") return LsqSolver::Ceres;
+  if (name == "clamped") return LsqSolver::ClampedLm;
+  throw Error(Errc::ParseError,
+              std::string(field) + " = \"" + std::string(name) + "\" must be \"ceres\" or \"clamped\"",
+              {.field = std::string(field)});
+}
 
 void LmOptions::validate() const {
   check_range(max_iterations >= 1, "max_iterations", static_cast<double>(max_iterations), ">= 1");
@@ -82,22 +168,9 @@ LmResult refine_levenberg_marquardt(const LeastSquaresProblem& problem, std::spa
     for (std::size_t step = 0; step < budget; ++step) {
       if (mean_abs(r) <= target) return std::string("target reached");
       if (need_jacobian) {
-        x_fd = x;
-        for (std::size_t j = 0; j < n; ++j) {
-          const double h = options.difference_step * std::max(1.0, std::fabs(x[j]));
-          const double hi = std::min(x[j] + h, vars[j].upper);
-          const double lo = std::max(x[j] - h, vars[j].lower);
-          x_fd[j] = hi;
-          const bool ok_hi = eval(x_fd, r_plus);
-          x_fd[j] = lo;
-          const bool ok_lo = eval(x_fd, r_minus);
-          x_fd[j] = x[j];
-          if (!ok_hi || !ok_lo || !(hi > lo)) {
-            J.col(static_cast<Eigen::Index>(j)).setZero();
-            continue;
-          }
-          J.col(static_cast<Eigen::Index>(j)) = (r_plus - r_minus) / (hi - lo);
-        }
+        for (std::size_t j = 0; j < n; ++j)
+          (void)difference_column(vars, x, j, options.difference_step, x_fd, r_plus, r_minus, eval,
+                                  J.col(static_cast<Eigen::Index>(j)));
         need_jacobian = false;
       }
       ++result.iterations;
@@ -131,7 +204,58 @@ LmResult refine_levenberg_marquardt(const LeastSquaresProblem& problem, std::spa
     return mean_abs(r) <= target ? std::string("target reached") : std::string("max iterations");
   };
 
-  result.termination = solve(options.target_mean, options.max_iterations);
+  if (options.solver == LsqSolver::ClampedLm) {
+    result.termination = solve(options.target_mean, options.max_iterations);
+  } else {
+    // Ceres: bounded trust-region LM on the same residuals and Jacobian.
+    ceres::Problem::Options problem_options;
+    problem_options.cost_function_ownership = ceres::TAKE_OWNERSHIP;
+    ceres::Problem cp(problem_options);
+    cp.AddResidualBlock(new CeresResiduals(problem, options.difference_step, result.evaluations), nullptr, x.data());
+    std::vector<int> fixed;
+    for (std::size_t j = 0; j < n; ++j) {
+      // Ceres wants lower < upper; a zero-width box is a fixed coordinate.
+      if (!(vars[j].upper > vars[j].lower)) {
+        fixed.push_back(static_cast<int>(j));
+        continue;
+      }
+      cp.SetParameterLowerBound(x.data(), static_cast<int>(j), vars[j].lower);
+      cp.SetParameterUpperBound(x.data(), static_cast<int>(j), vars[j].upper);
+    }
+    if (fixed.size() == n) {
+      result.termination = "converged: every variable is fixed";
+    } else {
+      if (!fixed.empty()) cp.SetManifold(x.data(), new ceres::SubsetManifold(static_cast<int>(n), fixed));
+      ceres::Solver::Options so;
+      so.minimizer_type = ceres::TRUST_REGION;
+      so.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
+      so.linear_solver_type = ceres::DENSE_QR;
+      so.use_nonmonotonic_steps = true;
+      so.max_num_iterations = static_cast<int>(options.max_iterations);
+      so.initial_trust_region_radius = 1.0 / options.initial_lambda;
+      so.function_tolerance = options.relative_tolerance;
+      so.parameter_tolerance = 1e-14;
+      so.gradient_tolerance = 0.0;
+      so.logging_type = ceres::SILENT;
+      so.minimizer_progress_to_stdout = false;
+      so.num_threads = 1;
+      // mean |r| <= rms |r| = √(‖r‖² / m): a cost ½‖r‖² <= ½ m t² guarantees the target; the true mean is reported.
+      const double t = options.target_mean;
+      TargetCallback stop(0.5 * static_cast<double>(m) * t * t);
+      so.callbacks.push_back(&stop);
+      ceres::Solver::Summary summary;
+      ceres::Solve(so, &cp, &summary);
+      result.iterations = summary.iterations.empty() ? 0 : summary.iterations.size() - 1;
+      if (!eval(x, r))
+        throw Error(Errc::NumericalFailure, "the residuals are undefined at the solver's result", {.field = "start"});
+      if (mean_abs(r) <= t)
+        result.termination = "target reached";
+      else
+        result.termination =
+            std::string(summary.termination_type == ceres::CONVERGENCE ? "converged: " : "no convergence: ") +
+            summary.message;
+    }
+  }
   result.mean_after = mean_abs(r);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
   return result;
@@ -141,11 +265,21 @@ LmResult refine_levenberg_marquardt(const CurvatureMatch& match, std::span<const
                                     const LmOptions& options) {
   LeastSquaresProblem problem;
   problem.variables = match.variables();
-  problem.residual_count = match.target_samples().size();
+  const std::size_t m = match.target_samples().size();
+  // Proximity residuals √w_i (x_j − x_j⁰) after the curvature ones (CurvatureMatchSetup::proximity).
+  const std::vector<double>& w = match.setup().proximity;
+  std::vector<double> root_weight, x0;
+  if (!w.empty()) {
+    x0 = match.start_variables();
+    for (std::size_t j = 0; j < x0.size(); ++j) root_weight.push_back(std::sqrt(w[match.variable_point(j)]));
+  }
+  problem.residual_count = m + root_weight.size();
   auto ws = std::make_shared<SplineProfileSampler::Workspace>();
   auto points = std::make_shared<std::vector<Vec3>>(match.setup().points.size());
-  problem.residuals = [&match, ws, points](std::span<const double> x, std::span<double> r) {
-    return match.residuals(x, *ws, *points, r);
+  problem.residuals = [&match, ws, points, m, root_weight, x0](std::span<const double> x, std::span<double> r) {
+    if (!match.residuals(x, *ws, *points, r.first(m))) return false;
+    for (std::size_t j = 0; j < root_weight.size(); ++j) r[m + j] = root_weight[j] * (x[j] - x0[j]);
+    return true;
   };
   return refine_levenberg_marquardt(problem, start, options);
 }

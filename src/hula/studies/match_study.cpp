@@ -1,12 +1,15 @@
 // SPDX-License-Identifier: MIT
 #include "hula/studies/match_study.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "hula/core/error.hpp"
 #include "hula/nurbs/arc_length.hpp"
+#include "hula/optim/sweep.hpp"
 
 namespace hula::studies {
 
@@ -43,6 +46,7 @@ optim::GaResult run_ga(const CurvatureMatch& match, const MatchStudy& study, Mat
   run.stop.generations = g.generations;
   run.stop.wall_time_seconds = study.header.wall_time_seconds;
   run.stop.cancel = study.header.cancel;
+  if (g.seed_start) run.initial = {match.start_variables()};
   double best = std::numeric_limits<double>::infinity();
   run.on_generation = [&](const optim::GenerationLog& log) {
     for (std::size_t i = 0; i < log.size(); ++i) {
@@ -50,7 +54,7 @@ optim::GaResult run_ga(const CurvatureMatch& match, const MatchStudy& study, Mat
       if (!log.failed[i] && std::isfinite(e)) best = std::min(best, e);
     }
     result.convergence.push_back(best);
-    if (keep_log) result.log.append(log);
+    if (keep_log || g.distinct > 0) result.log.append(log);
   };
   if (g.algorithm == MatchGaSettings::Algorithm::Binary) {
     optim::BinaryGaOptions o;
@@ -71,19 +75,12 @@ optim::GaResult run_ga(const CurvatureMatch& match, const MatchStudy& study, Mat
   return optim::solve_real_ga(match.problem(), o);
 }
 
-// The direct route: the target as an arc-length profile integrated from the start point and frame of the
-// spline through the start points (its turning side for planar curves), held to the last data point and the
+// The direct route's problem: the target as an arc-length profile integrated from the start point and frame of
+// the spline through the start points (its turning side for planar curves), held to the last data point and the
 // end tangent when asked.
-DirectReconstructionResult run_direct(const CurvatureMatch& match, const MatchStudy& study) {
+DirectReconstructionProblem direct_problem(const CurvatureMatch& match, const MatchStudy& study) {
   const CurvatureMatchSetup& s = match.setup();
-  if (s.abscissa != ProfileAbscissa::ArcLength)
-    throw Error(Errc::InvalidOption,
-                "method = \"direct\" integrates the natural equations in arc length: set \"abscissa\": \"arclength\"",
-                {.field = "abscissa"});
   const MatchDirectSettings& d = study.direct;
-  if (d.end_tangent && !s.end_tangent)
-    throw Error(Errc::InvalidOption, "direct.end_tangent = true needs the study's \"end_tangent\"",
-                {.field = "direct.end_tangent"});
   const nurbs::NurbsCurve start_curve = match.sampler().curve(s.points);
   const std::vector<Vec3> d0 = start_curve.derivatives(start_curve.domain().start, 2);
   DirectReconstructionProblem p{.curvature = *s.target};
@@ -102,6 +99,20 @@ DirectReconstructionResult run_direct(const CurvatureMatch& match, const MatchSt
       n = std::abs(t.z) < 0.9 ? cross(t, Vec3{0, 0, 1}) : cross(t, Vec3{1, 0, 0});
     p.start.normal = n;
   }
+  return p;
+}
+
+DirectReconstructionResult run_direct(const CurvatureMatch& match, const MatchStudy& study) {
+  const CurvatureMatchSetup& s = match.setup();
+  if (s.abscissa != ProfileAbscissa::ArcLength)
+    throw Error(Errc::InvalidOption,
+                "method = \"direct\" integrates the natural equations in arc length: set \"abscissa\": \"arclength\"",
+                {.field = "abscissa"});
+  const MatchDirectSettings& d = study.direct;
+  if (d.end_tangent && !s.end_tangent)
+    throw Error(Errc::InvalidOption, "direct.end_tangent = true needs the study's \"end_tangent\"",
+                {.field = "direct.end_tangent"});
+  DirectReconstructionProblem p = direct_problem(match, study);
   if (d.end_point) p.end_point = s.points.back();
   if (d.end_tangent) p.end_tangent = *s.end_tangent;
   DirectReconstructionOptions o;
@@ -111,6 +122,43 @@ DirectReconstructionResult run_direct(const CurvatureMatch& match, const MatchSt
   o.end_tolerance = d.end_tolerance;
   o.deviation_samples = s.samples;
   return reconstruct_direct(p, o);
+}
+
+// The hybrid's second start (issue 14 item 1): the planar curve integrated from the target profile (read as a
+// function of the normalised arc length, which the chord-length parameter approximates), its points taken at
+// the start design's chord-length parameters and clamped into the bounds. Unset for space studies (no torsion
+// to integrate) or where the integration fails.
+std::optional<std::vector<double>> direct_start(const CurvatureMatch& match, const MatchStudy& study) {
+  const CurvatureMatchSetup& s = match.setup();
+  if (s.dimension != 2) return std::nullopt;
+  try {
+    DirectReconstructionOptions o;
+    o.fit = false;
+    o.integration_tolerance = 1e-9;
+    o.deviation_samples = 2;
+    const DirectReconstructionResult d = reconstruct_direct(direct_problem(match, study), o);
+    const std::size_t n = s.points.size();
+    double total = 0.0;
+    std::vector<double> chord(n, 0.0);
+    for (std::size_t k = 1; k < n; ++k) chord[k] = total += distance(s.points[k - 1], s.points[k]);
+    const std::vector<optim::Variable> vars = match.variables();
+    std::vector<Vec3> pts(n);
+    // The curve's points at fractions f_k of its length, clamped into the bounds.
+    auto candidate = [&](auto&& fraction) {
+      for (std::size_t k = 0; k < n; ++k) pts[k] = d.curve.evaluate(d.length * fraction(k)).position;
+      std::vector<double> x = match.variables_from(pts);
+      for (std::size_t j = 0; j < x.size(); ++j) x[j] = std::clamp(x[j], vars[j].lower, vars[j].upper);
+      return x;
+    };
+    // Two spacings: the start design's chord fractions, and equal spacing (a noisy start's chords are uneven,
+    // and the solver moves points along the curve only slowly: that direction barely changes κ(u)).
+    std::vector<double> by_chord = candidate([&](std::size_t k) { return chord[k] / total; });
+    std::vector<double> equal =
+        candidate([&](std::size_t k) { return static_cast<double>(k) / static_cast<double>(n - 1); });
+    return mean_of(equal, match) < mean_of(by_chord, match) ? equal : by_chord;
+  } catch (const Error&) {
+    return std::nullopt;
+  }
 }
 
 }  // namespace
@@ -134,6 +182,10 @@ MatchResult run_curvature_match(const CurvatureMatch& match, const MatchStudy& s
   const optim::GaResult ga = run_ga(match, study, result, keep_log);
   result.ga_report = ga.report;
   result.ga_best = ga.best.variables;
+  if (study.ga.distinct > 0) {
+    result.distinct = optim::distinct_best(result.log, match.variables(), study.ga.distinct, study.ga.distinct_radius);
+    if (!keep_log) result.log = {};
+  }
   // The GA keeps the best it saw; the start itself is a candidate the designer already has.
   if (!(mean_of(result.ga_best, match) <= result.before.mean)) result.ga_best = result.start;
   result.after_ga = match.distances(result.ga_best);
@@ -143,8 +195,37 @@ MatchResult run_curvature_match(const CurvatureMatch& match, const MatchStudy& s
       break;
     case MatchMethod::Direct:
       break;
-    case MatchMethod::Hybrid:
-      result.lm = refine_levenberg_marquardt(match, result.ga_best, study.lm);
+    case MatchMethod::Hybrid: {
+      // Multi-start: LM from the closer of the GA's best and the direct start; if that does not reach the target,
+      // also from the other, keeping the better (a close start can lie in a worse basin than a farther one).
+      std::vector<std::pair<std::string, std::vector<double>>> starts{{"ga", result.ga_best}};
+      if (study.lm.direct_start)
+        if (auto d = direct_start(match, study)) {
+          if (mean_of(*d, match) < result.after_ga.mean)
+            starts.insert(starts.begin(), {"direct", std::move(*d)});
+          else
+            starts.emplace_back("direct", std::move(*d));
+        }
+      for (const auto& [name, from] : starts) {
+        LmResult lm = refine_levenberg_marquardt(match, from, study.lm);
+        const bool better = !result.lm || lm.mean_after < result.lm->mean_after;
+        if (result.lm) {
+          lm.iterations += result.lm->iterations;
+          lm.evaluations += result.lm->evaluations;
+          lm.seconds += result.lm->seconds;
+        }
+        if (better) {
+          if (result.lm) lm.mean_before = result.lm->mean_before;
+          result.lm = std::move(lm);
+          result.lm_start = name;
+        } else {
+          result.lm->iterations = lm.iterations;
+          result.lm->evaluations = lm.evaluations;
+          result.lm->seconds = lm.seconds;
+        }
+        if (result.lm->mean_after <= study.lm.target_mean) break;
+      }
+    }
       // LM minimises the sum of squares; where no exact solution exists that can raise the mean |r| of eq. 31
       // slightly, and the study reports the better of the two by eq. 31.
       if (mean_of(result.lm->variables, match) <= result.after_ga.mean) result.best = result.lm->variables;

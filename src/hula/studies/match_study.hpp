@@ -65,6 +65,13 @@ struct MatchGaSettings {
   double precision = 1e-3;
   /// Roulette (thesis) or tournament selection for the binary GA.
   optim::Selection selection = optim::Selection::Roulette;
+  /// Put the start design into the initial population (thesis 10.1.1, optim::RunSettings::initial). Default false.
+  bool seed_start = false;
+  /// Return the best `distinct` mutually distinct designs the GA evaluated (optim::distinct_best); 0 = none
+  /// (default).
+  std::size_t distinct = 0;
+  /// Their niche radius (normalised by the bounds), in (0, 1]. Default 0.05.
+  double distinct_radius = 0.05;
 };
 
 /// Settings of the direct method.
@@ -115,11 +122,15 @@ struct MatchResult {
   std::vector<double> convergence{};
   /// The LM report for the hybrid method.
   std::optional<LmResult> lm{};
+  /// Where the hybrid's refinement started: "ga" (the GA's best) or "direct" (LmOptions::direct_start).
+  std::string lm_start{};
   /// The reconstruction of the direct method (no GA runs then: start, best and the distances
   /// are those of the start points, the direct curve's own errors are in here).
   std::optional<DirectReconstructionResult> direct{};
   /// Every individual of every generation, when asked for.
   optim::RunLog log{};
+  /// The best mutually distinct designs of the GA (MatchGaSettings::distinct), best first.
+  std::vector<optim::Solution> distinct{};
   /// Total wall time in seconds.
   double seconds = 0.0;
 };
