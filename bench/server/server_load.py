@@ -10,6 +10,10 @@ Bounded loops on loopback that stop by themselves:
   sse            SUBSCRIBERS concurrent SSE clients of one job: every event
                  received, in order, by every subscriber
   drag           PATCH continue moves at 120/s (documents only); p99 round trip
+  drag-rate      one client dragging as fast as it can for SECONDS s: each move is a
+                 PATCH continue of one point of the 50-point curve followed by
+                 its analysis re-read (100 samples, curvature fins), as the
+                 workbench does; moves/s and per-move p50/p99, no jobs running
 
 usage: server_load.py HULA_BINARY [--rate 500] [--seconds 20] [--subscribers 200] [--only NAME]
 """
@@ -159,13 +163,36 @@ def drag(hula, seconds):
             "p50_ms": 1000 * percentile(lat, 50), "p99_ms": 1000 * percentile(lat, 99), "max_ms": 1000 * max(lat)}
 
 
+def drag_rate(hula, seconds):
+    with Server(hula, args=["--jobs", "1"]) as server:
+        name, label = make_document(server)
+        path = f"/api/documents/{name}/entities/{label}"
+        conn = server.connection(timeout=10)
+        moves, errors, lat = 0, 0, []
+        t0 = time.monotonic()
+        while time.monotonic() - t0 < seconds:
+            t = time.monotonic()
+            move = {"move": [{"index": 10, "to": [10, 3 + math.sin(moves / 10), 0]}], "continue": moves > 0}
+            s1, _, _ = server.request("PATCH", path, body=move, conn=conn)
+            s2, _, data = server.request("POST", path + "/analysis", body={"samples": 100, "fins": ["curvature"]},
+                                         conn=conn)
+            lat.append(time.monotonic() - t)
+            errors += (s1 != 200) + (s2 != 200)
+            moves += 1
+        elapsed = time.monotonic() - t0
+        conn.close()
+        history = json.loads(server.request("GET", f"/api/documents/{name}/history")[2])["history"]
+    return {"moves": moves, "seconds": elapsed, "moves_per_s": moves / elapsed, "errors": errors,
+            "undo_steps": len(history), "p50_ms": 1000 * percentile(lat, 50), "p99_ms": 1000 * percentile(lat, 99)}
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("hula")
     ap.add_argument("--rate", type=int, default=500)
     ap.add_argument("--seconds", type=float, default=20)
     ap.add_argument("--subscribers", type=int, default=200)
-    ap.add_argument("--only", choices=["interrogation", "sse", "drag"])
+    ap.add_argument("--only", choices=["interrogation", "sse", "drag", "drag-rate"])
     a = ap.parse_args()
     out = {}
     if a.only in (None, "interrogation"):
@@ -174,6 +201,8 @@ def main():
         out["sse"] = sse(a.hula, a.subscribers)
     if a.only in (None, "drag"):
         out["drag"] = drag(a.hula, a.seconds)
+    if a.only in (None, "drag-rate"):
+        out["drag_rate"] = drag_rate(a.hula, a.seconds)
     print(json.dumps(out, indent=1))
 
 
