@@ -236,6 +236,25 @@ class ApiTest(unittest.TestCase):
         kinds = {e["label"]: e["kind"] for e in self.call("GET", "/api/documents/study.hula")["entities"]}
         self.assertEqual(kinds[final["result"]["study"]], "study")
 
+    # checks a fair-knots study job (thesis 7.3 Example 2's points; the GA re-centres once, two rounds of 11
+    # generations each): generation numbers keep counting across rounds and evaluations only grow; the GA's optimum
+    # is the job's result curve
+    def test_fair_knots_study_job(self):
+        self.call("POST", "/api/documents", {"name": "fair.hula"}, expect=201)
+        study = {"format": "hula-study", "version": 1, "study": "fair-knots", "seed": 1,
+                 "points": [[0, 0], [40, 25], [80, -40], [120, 0]], "energy": "bending", "method": "ga",
+                 "ga": {"algorithm": "real", "population": 20, "generations": 10}}
+        job, events = self.run_job({"document": "fair.hula", "study": study})
+        generations = [d for e, d in events if e == "generation"]
+        self.assertEqual(events[-1][0], "done")
+        rounds = events[-1][1]["result"]["result"]["ga"]["rounds"]
+        self.assertEqual([g["generation"] for g in generations], list(range(11 * rounds)))
+        evaluations = [g["evaluations"] for g in generations]
+        self.assertEqual(evaluations, sorted(evaluations))
+        # the fairing's count also holds the chord-length start's evaluation
+        self.assertEqual(events[-1][1]["result"]["result"]["ga"]["evaluations"], evaluations[-1] + 1)
+        self.assertEqual(len(events[-1][1]["result"]["curves"]), 1)
+
     # checks DELETE on a running study job: cancelled with termination Cancelled, its best so far stored as
     # a result curve whose provenance says cancelled
     def test_study_job_cancel(self):
