@@ -173,5 +173,35 @@ TEST(StudyRun, CurvatureTorsionStoresCompromise) {
   EXPECT_EQ(io::curve_to_json(doc.get(r.curves[0]).curve()), r.result["compromise"]["curve"]);
 }
 
+// Checks an edit-projection study whose original curve is a document entity (examples/studies/edit-projection):
+// the stored rebuilt curve takes x and z from the edited curve and y from the original at the same normalised
+// parameter (thesis 8.1), checked at u = 0.37 against both input curves evaluated directly.
+TEST(StudyRun, EditProjectionOfAnEntity) {
+  Document doc;
+  const curve::Curve original = io::curve_from_json(Json::parse(
+      R"({"kind": "interpolated", "points": [[0, 0, 0], [2, 1.5, 0.5], [4, 2, 1.5], [6, 1, 2.5], [8, 0, 3]]})"));
+  Label c;
+  doc.transact("add", [&](Edit& e) { c = e.add_curve(original, {.name = "spine"}); }).throw_if_failed();
+  Json study = Json::parse(R"({"format": "hula-study", "version": 1, "study": "edit-projection", "plane": "zx",
+    "edited": {"kind": "interpolated", "parameterisation": "uniform",
+               "points": [[0, 0, 0], [2.5, 0, 1.2], [4, 0, 1], [5.5, 0, 2.6], [8, 0, 3]]}})");
+  const curve::Curve edited = io::curve_from_json(study["edited"]);
+  study["curve"] = Json::object({{"entity", c.value}});
+  StudyRunResult r;
+  doc.transact("run", [&](Edit& e) { r = run_study(e, study, "."); }).throw_if_failed();
+  ASSERT_EQ(r.curves.size(), 1u);
+  const nurbs::NurbsCurve& rebuilt = doc.get(r.curves[0]).curve().nurbs();
+  const auto at = [](const nurbs::NurbsCurve& k, double u) {
+    const nurbs::Interval d = k.domain();
+    return k.evaluate(d.start + u * d.length());
+  };
+  const Vec3 p = at(rebuilt, 0.37), o = at(original.nurbs(), 0.37), q = at(edited.nurbs(), 0.37);
+  EXPECT_NEAR(p.x, q.x, 1e-9);
+  EXPECT_NEAR(p.z, q.z, 1e-9);
+  EXPECT_NEAR(p.y, o.y, 1e-9);
+  EXPECT_EQ(doc.get(r.curves[0]).provenance()->inputs, (std::vector<Label>{r.study, c}));
+  EXPECT_EQ(r.result["plane"], "zx");
+}
+
 }  // namespace
 }  // namespace hula::oli

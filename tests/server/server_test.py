@@ -255,6 +255,24 @@ class ApiTest(unittest.TestCase):
         self.assertEqual(events[-1][1]["result"]["result"]["ga"]["evaluations"], evaluations[-1] + 1)
         self.assertEqual(len(events[-1][1]["result"]["curves"]), 1)
 
+    # checks a study with no optimiser (edit-projection, examples/studies/edit-projection.json) sends no
+    # generation event, only done, and stores its rebuilt curve: the ZX projection's end point (8, 0, 3)
+    def test_edit_projection_study_job(self):
+        self.call("POST", "/api/documents", {"name": "proj.hula"}, expect=201)
+        study = {"format": "hula-study", "version": 1, "study": "edit-projection", "plane": "zx",
+                 "curve": {"kind": "interpolated", "points": [[0, 0, 0], [2, 1.5, 0.5], [4, 2, 1.5], [6, 1, 2.5], [8, 0, 3]]},
+                 "edited": {"kind": "interpolated", "parameterisation": "uniform",
+                            "points": [[0, 0, 0], [2.5, 0, 1.2], [4, 0, 1], [5.5, 0, 2.6], [8, 0, 3]]}}
+        job, events = self.run_job({"document": "proj.hula", "study": study})
+        self.assertEqual([e for e, _ in events], ["done"])
+        final = events[0][1]
+        self.assertEqual((final["report"]["generations"], final["report"]["termination"]), (0, "Completed"))
+        [curve] = final["result"]["curves"]
+        entity = self.call("GET", f"/api/documents/proj.hula/entities/{curve}")
+        self.assertEqual(entity["provenance"]["operation"], "study:edit-projection")
+        for got, want in zip(entity["control_points"][-1], [8, 0, 3]):
+            self.assertAlmostEqual(got, want, places=9)
+
     # checks DELETE on a running study job: cancelled with termination Cancelled, its best so far stored as
     # a result curve whose provenance says cancelled
     def test_study_job_cancel(self):

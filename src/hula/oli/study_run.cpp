@@ -7,6 +7,7 @@
 
 #include "hula/core/error.hpp"
 #include "hula/curve/curve.hpp"
+#include "hula/io/editing_study_file.hpp"
 #include "hula/io/fair_knots_study_file.hpp"
 #include "hula/io/json_curve.hpp"
 #include "hula/io/match_study_file.hpp"
@@ -131,6 +132,16 @@ void run_fair_knots(const io::StudyDocument& doc, const StudyRunOptions& options
   out.run.log = log_json(log);
 }
 
+// As `hula edit-projection` (thesis 8.1): deterministic, no generations; the rebuilt curve is the result.
+void run_edit_projection(const io::StudyDocument& doc, Ran& out) {
+  const io::EditProjectionStudy study = io::read_edit_projection_study(doc);
+  const studies::ProjectionEditResult r =
+      studies::edit_projection(study.curve.nurbs(), study.edited.nurbs(), study.plane);
+  out.run.seed = study.header.seed;
+  out.run.result = io::edit_projection_result_to_json(study, r);
+  out.curves.emplace_back(r.curve, "edit-projection result");
+}
+
 Ran run_once(const Json& setup, const Document& document, const std::filesystem::path& base,
              std::optional<std::uint64_t> seed, std::set<Label>& read, const StudyRunOptions& options) {
   Json resolved = setup;
@@ -141,19 +152,22 @@ Ran run_once(const Json& setup, const Document& document, const std::filesystem:
                                : std::string();
   Ran out;
   out.kind = kind;
-  if (kind != "match-curvature" && kind != "match-curvature-torsion" && kind != "fair-knots")
+  if (kind != "match-curvature" && kind != "match-curvature-torsion" && kind != "fair-knots" &&
+      kind != "edit-projection")
     throw Error(Errc::InvalidArgument,
                 "study kind \"" + kind +
                     "\" cannot run inside a document (supported: match-curvature, match-curvature-torsion, "
-                    "fair-knots)",
+                    "fair-knots, edit-projection)",
                 {.field = "study"});
   const io::StudyDocument doc = io::parse_study_json(resolved.dump(), kind);
   if (kind == "match-curvature")
     run_match(doc, base, options, out);
   else if (kind == "match-curvature-torsion")
     run_match_torsion(doc, base, options, out);
-  else
+  else if (kind == "fair-knots")
     run_fair_knots(doc, options, out);
+  else
+    run_edit_projection(doc, out);
   return out;
 }
 

@@ -16,7 +16,8 @@
 // Study kinds run here (docs/formats.md): "match-curvature",
 // "match-curvature-torsion" (result curve: the best compromise) and
 // "fair-knots" (result curves: the GA's and/or the deterministic optimum; the
-// energy map and its sections are figures of the CLI and are not stored).
+// energy map and its sections are figures of the CLI and are not stored) and
+// "edit-projection" (the rebuilt curve; no generations).
 //
 // Progress and cancellation (StudyRunOptions): the caller's callback sees
 // every generation of the study's optimiser(s); a cancellation token stops
