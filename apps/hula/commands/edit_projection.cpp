@@ -27,24 +27,7 @@ int run_edit_projection(const EditProjectionArgs& a) {
   const io::StudyDocument doc = load_study(a.study, "edit-projection");
   const io::EditProjectionStudy s = io::read_edit_projection_study(doc);
   const studies::ProjectionEditResult r = studies::edit_projection(s.curve.nurbs(), s.edited.nurbs(), s.plane);
-  Json out = Json::object();
-  out["study"] = "edit-projection";
-  out["plane"] = std::string(diffgeom::plane_name(s.plane));
-  out["parameter_match"] = "normalised";
-  out["curve"] = io::curve_to_json(r.curve);
-  out["max_deviation"] = r.max_deviation;
-  Json changed = Json::array();
-  for (std::size_t k = 0; k < 3; ++k) {
-    double m = 0.0;
-    const nurbs::Interval dr = r.curve.domain(), dc = s.curve.nurbs().domain();
-    for (int i = 0; i <= 1000; ++i) {
-      const double u = i / 1000.0;
-      m = std::max(m, std::abs(r.curve.evaluate(dr.start * (1 - u) + dr.end * u)[k] -
-                               s.curve.nurbs().evaluate(dc.start * (1 - u) + dc.end * u)[k]));
-    }
-    changed.push_back(m);
-  }
-  out["max_change"] = std::move(changed);
+  Json out = io::edit_projection_result_to_json(s, r);
   if (!a.output.empty()) io::write_curve_file(a.output, r.curve);
   if (a.study.svg) {
     for (diffgeom::Plane plane : {diffgeom::Plane::XY, diffgeom::Plane::YZ, diffgeom::Plane::ZX}) {

@@ -2,6 +2,7 @@
 // Study files of the editing studies; see editing_study.hpp and docs/formats.md.
 #include "hula/io/editing_study_file.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -168,6 +169,28 @@ HermiteStudy read_hermite_study(const StudyDocument& doc) {
                       " is not a data point index (0 … " + std::to_string(s.spline.points.size() - 1) + ")",
                   {.field = "edits[" + std::to_string(i) + "].knot", .index = i});
   return s;
+}
+
+Json edit_projection_result_to_json(const EditProjectionStudy& study, const studies::ProjectionEditResult& r) {
+  Json out = Json::object();
+  out["study"] = "edit-projection";
+  out["plane"] = std::string(diffgeom::plane_name(study.plane));
+  out["parameter_match"] = "normalised";
+  out["curve"] = curve_to_json(r.curve);
+  out["max_deviation"] = r.max_deviation;
+  Json changed = Json::array();
+  for (std::size_t k = 0; k < 3; ++k) {
+    double m = 0.0;
+    const nurbs::Interval dr = r.curve.domain(), dc = study.curve.nurbs().domain();
+    for (int i = 0; i <= 1000; ++i) {
+      const double u = i / 1000.0;
+      m = std::max(m, std::abs(r.curve.evaluate(dr.start * (1 - u) + dr.end * u)[k] -
+                               study.curve.nurbs().evaluate(dc.start * (1 - u) + dc.end * u)[k]));
+    }
+    changed.push_back(m);
+  }
+  out["max_change"] = std::move(changed);
+  return out;
 }
 
 }  // namespace hula::io

@@ -63,6 +63,13 @@ struct EditProjectionStudy {
 /// @throws as read_fin_compound_study; InvalidArgument naming "edited" if it is not planar in the plane
 [[nodiscard]] EditProjectionStudy read_edit_projection_study(const StudyDocument& doc);
 
+/// The result of an edit-projection run, as `hula edit-projection` prints it (without the CLI's seed,
+/// threads and log): {"study": "edit-projection", "plane", "parameter_match": "normalised", "curve": the
+/// rebuilt curve file, "max_deviation", "max_change": [x, y, z] the largest change of each coordinate from
+/// the original at 1001 points of equal normalised parameter}.
+[[nodiscard]] Json edit_projection_result_to_json(const EditProjectionStudy& study,
+                                                  const studies::ProjectionEditResult& result);
+
 /// A "hermite" study.
 struct HermiteStudy {
   studies::StudyHeader header{};
