@@ -30,13 +30,15 @@ const planarSpline: CurveFile = {
   ],
   parameterisation: 'chord',
 };
+// A twisted cubic: its control points are not coplanar (det[P1−P0, P2−P0, P3−P0] = −16000), so
+// its torsion is non-zero. (The previous [100, 0, 50] end made the four points coplanar.)
 const spaceBezier: CurveFile = {
   kind: 'bezier',
   control_points: [
     [0, 0, 0],
     [30, 40, 10],
     [70, 40, 30],
-    [100, 0, 50],
+    [100, 0, 60],
   ],
   weights: null,
 };
@@ -156,9 +158,7 @@ test('drag a control point, then undo and redo', async ({ page }) => {
 });
 
 // Appendix 8.4/8.6: a planar curve shows only curvature and normal fins; a space curve all of them.
-// TODO(#13): fails against the merged server: the space curve is drawn as planar (no torsion or
-// binormal fin); the page's planarity test and the analysis route's flag disagree.
-test.fixme('fins on a planar and a space curve', async ({ page }) => {
+test('fins on a planar and a space curve', async ({ page }) => {
   needsDocuments();
   const doc = await newDoc('fins');
   const planar = await addCurve(doc, 'planar', planarSpline);
@@ -185,8 +185,7 @@ test.fixme('fins on a planar and a space curve', async ({ page }) => {
 });
 
 // Design by curvature: drag the κ(s) graph up at mid-length; the server's κ there follows the edit.
-// TODO(#13): times out waiting for idle after the κ-graph drag against the merged server.
-test.fixme('edit the curvature graph', async ({ page }) => {
+test('edit the curvature graph', async ({ page }) => {
   needsDocuments();
   const doc = await newDoc('design');
   const label = await addCurve(doc, 'arc', {

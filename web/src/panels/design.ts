@@ -13,7 +13,12 @@ const NODES = 64;
 
 /**
  * A law of s (docs/formats.md grammar) interpolating (xs, ys) linearly at
- * NODES uniform nodes over [0, length]: Σ v_i · max(0, 1 − |s − s_i| / h).
+ * NODES uniform nodes over [0, length], written as α + β·s + Σ c_i·|s − s_i|
+ * over the interior nodes s_i. Why this form: |linear| has a closed-form
+ * antiderivative in the law engine, so the server's natural-equation solver
+ * gets the exact tangent angle θ(s) = ∫κ ds (eq. 34); a sum of hat functions
+ * max(0, 1 − |s − s_i|/h) has none and sent the solver into minutes of
+ * adaptive quadrature over the kinks.
  */
 export function profileLaw(
   xs: ArrayLike<number>,
@@ -22,7 +27,7 @@ export function profileLaw(
   variable = 's',
 ): string {
   const h = length / (NODES - 1);
-  const terms: string[] = [];
+  const v: number[] = [];
   let j = 0;
   for (let i = 0; i < NODES; i++) {
     const s = i * h;
@@ -32,13 +37,20 @@ export function profileLaw(
     const y0 = ys[j]!;
     const y1 = ys[Math.min(j + 1, ys.length - 1)]!;
     const f = x1 > x0 ? Math.min(1, Math.max(0, (s - x0) / (x1 - x0))) : 0;
-    const v = Number.isFinite(y0) && Number.isFinite(y1) ? y0 + f * (y1 - y0) : 0;
-    if (v === 0) continue;
-    terms.push(
-      `${v.toPrecision(10)}*max(0, 1 - abs(${variable} - ${s.toPrecision(12)})/${h.toPrecision(12)})`,
-    );
+    v.push(Number.isFinite(y0) && Number.isFinite(y1) ? y0 + f * (y1 - y0) : 0);
   }
-  return terms.length ? terms.join(' + ') : '0';
+  // Slopes of the pieces; the slope jumps by 2 c_i at node i.
+  const m = v.slice(1).map((vi, i) => (vi - v[i]!) / h);
+  const beta = (m[0]! + m[m.length - 1]!) / 2;
+  let alpha = v[0]!;
+  const terms: string[] = [];
+  for (let i = 1; i < NODES - 1; i++) {
+    const c = (m[i]! - m[i - 1]!) / 2;
+    if (c === 0) continue;
+    alpha -= c * i * h; // |0 − s_i| at s = 0
+    terms.push(`${c.toPrecision(17)}*abs(${variable} - ${(i * h).toPrecision(17)})`);
+  }
+  return [alpha.toPrecision(17), `${beta.toPrecision(17)}*${variable}`, ...terms].join(' + ');
 }
 
 export class DesignByCurvature {
