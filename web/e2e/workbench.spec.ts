@@ -222,6 +222,15 @@ test('edit the curvature graph', async ({ page }) => {
   const a1 = await analysis(doc, label);
   const at = a1.s.findIndex((s) => s >= sMid);
   expect(Math.abs(a1.kappa[at]! - target)).toBeLessThan(0.15 * 0.01 + 1e-4);
+  // The rebuilt arch still turns clockwise like the original (its κ is 0 at the natural start,
+  // so the side it bends to comes from the first defined normal): z of T(0) × T(L) < 0.
+  const turn = (a: Analysis): number => {
+    const t0 = a.frames[0]!.T;
+    const t1 = a.frames[a.frames.length - 1]!.T;
+    return t0[0]! * t1[1]! - t0[1]! * t1[0]!;
+  };
+  expect(turn(a0)).toBeLessThan(0);
+  expect(turn(a1)).toBeLessThan(0);
   await shot(page, 'design-by-curvature');
 });
 

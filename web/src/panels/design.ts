@@ -144,12 +144,16 @@ export class DesignByCurvature {
     length: number,
   ): Promise<void> {
     const p0 = a.points[0]!;
-    // The server's start frame; where it is undefined (a straight start), the
-    // chord direction and a perpendicular in the X-Y plane stand in.
+    // The server's start frame. Where N is undefined at the start (κ = 0 there,
+    // e.g. a natural spline's end), the nearest sample with a defined N gives
+    // the side the curve bends to (made normal to T); the left perpendicular
+    // in X-Y, which turned such curves the wrong way, is the last resort.
     const f0 = a.frames[0];
     const tangent =
       f0 && f0.T.every(Number.isFinite) ? f0.T : direction(a.points[0]!, a.points[1]!);
-    const normal = f0 && f0.N.every(Number.isFinite) ? f0.N : perpendicular(tangent);
+    const bent = a.frames.find((f) => f.N.every(Number.isFinite))?.N;
+    const normal = bent ? orthogonalTo(bent, tangent) : null;
+    const startNormal = normal ?? perpendicular(tangent);
     this.busy = true;
     try {
       const r = await this.app.run(() =>
@@ -158,7 +162,7 @@ export class DesignByCurvature {
           tau,
           length,
           start_point: [p0[0] ?? 0, p0[1] ?? 0, p0[2] ?? 0],
-          start_frame: { tangent, normal },
+          start_frame: { tangent, normal: startNormal },
         }),
       );
       if (!r) return;
@@ -194,6 +198,14 @@ function direction(a: number[], b: number[]): number[] {
   const d = [0, 1, 2].map((k) => (b[k] ?? 0) - (a[k] ?? 0));
   const n = Math.hypot(...d) || 1;
   return d.map((x) => x / n);
+}
+
+/** The unit part of v normal to the unit vector t, or null when v ∥ t. */
+export function orthogonalTo(v: number[], t: number[]): number[] | null {
+  const d = [0, 1, 2].reduce((acc, k) => acc + (v[k] ?? 0) * (t[k] ?? 0), 0);
+  const w = [0, 1, 2].map((k) => (v[k] ?? 0) - d * (t[k] ?? 0));
+  const n = Math.hypot(...w);
+  return n > 1e-9 ? w.map((x) => x / n) : null;
 }
 
 function perpendicular(t: number[]): number[] {
