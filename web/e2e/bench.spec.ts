@@ -56,6 +56,9 @@ test('first load', async ({ page }) => {
 
 test('drag a point of a 100-control-point curve with fins and the κ graph', async ({ page }) => {
   needsDocuments();
+  // Each pointer move waits for the page to take it: on a loaded 2-core machine with software
+  // WebGL, 180 moves can outlast the default 60 s.
+  test.setTimeout(240_000);
   const doc = await newDoc('perf');
   const n = 100;
   const cps = Array.from({ length: n }, (_, i) => [i * 2, 20 * Math.sin(i / 7), 0]);

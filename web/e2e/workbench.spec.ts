@@ -118,6 +118,7 @@ test('drag a control point, then undo and redo', async ({ page }) => {
   await selectCurve(page, label);
   const before = await page.evaluate(() => Array.from(window.__hula.app.graphs[0]!.ys));
   const steps0 = (await history(doc)).steps.length;
+  const a0 = await analysis(doc, label);
   const from = await pixelOf(page, 'top', [30, 40, 10]);
   await page.mouse.move(from.x, from.y);
   await page.mouse.down();
@@ -136,7 +137,21 @@ test('drag a control point, then undo and redo', async ({ page }) => {
   expect(after).not.toEqual(before);
   const h = await history(doc);
   expect(h.steps.length).toBe(steps0 + 1);
+  // The ghost: the curve before the drag (the server's analysis of the old revision) stays drawn
+  // faintly and its κ is overlaid on the graph; Escape clears it.
+  const ghost = await page.evaluate(() => window.__hula.app.ghost?.analysis);
+  expect(ghost!.points).toHaveLength(a0.points.length);
+  ghost!.points.forEach((p, i) => {
+    for (let k = 0; k < 3; k++) expect(Math.abs(p[k]! - a0.points[i]![k]!)).toBeLessThan(1e-9);
+  });
+  await expect(page.locator('#viewports')).toHaveAttribute('data-ghost', String(a0.points.length));
+  const overlay = await page.evaluate(() => Array.from(window.__hula.app.graphs[0]!.overlay ?? []));
+  expect(overlay).toHaveLength(a0.kappa.length);
+  expect(Math.abs(overlay[0]! - a0.kappa[0]!)).toBeLessThan(1e-9);
   await shot(page, 'drag-with-graphs');
+  await page.locator('#viewports .view[data-view="top"]').focus();
+  await page.keyboard.press('Escape');
+  await expect(page.locator('#viewports')).toHaveAttribute('data-ghost', '');
 
   await page.locator('#viewports .view[data-view="top"]').focus();
   await page.keyboard.press('Control+z');

@@ -89,6 +89,12 @@ export class App {
   private offline = false;
   private navigating: { view: ViewName; x: number; y: number; mode: 'pan' | 'orbit' } | null = null;
   private hoverIndex: number | null = null;
+  /**
+   * The ghost: the selected curve's analysis before the last drag or rebuild,
+   * drawn faintly in the views and overlaid on the graphs until another curve
+   * is selected or Escape clears it.
+   */
+  ghost: { label: string; analysis: Analysis } | null = null;
   /** Timestamps of pointer events of the current drag, for the latency benchmark. */
   readonly latencies: number[] = [];
   /** Pointer event to the frame that draws the server's curve for that position. */
@@ -442,6 +448,7 @@ export class App {
   select(label: string | null): void {
     const previous = this.selected;
     this.selected = label;
+    if (this.ghost && this.ghost.label !== label) this.setGhost(null);
     if (previous) this.redrawCurve(previous);
     if (label) this.redrawCurve(label);
     this.updateGraphs();
@@ -509,7 +516,16 @@ export class App {
 
   updateGraphs(): void {
     const a = this.selected ? this.store.analyses.get(this.selected) : undefined;
-    for (const g of this.graphs) g.show(a);
+    const ghost = this.ghost?.label === this.selected ? this.ghost.analysis : undefined;
+    for (const g of this.graphs) g.show(a, ghost);
+  }
+
+  /** Keep the curve's current analysis as the ghost (before an edit), or clear it. */
+  setGhost(label: string | null): void {
+    const a = label ? this.store.analyses.get(label) : undefined;
+    this.ghost = label && a ? { label, analysis: a } : null;
+    this.viewports.setGhost(this.ghost ? this.ghost.analysis.points : null);
+    this.updateGraphs();
   }
 
   /** Linked hover: a sample index from a graph or the curve highlights both. */
@@ -667,6 +683,7 @@ export class App {
         };
         this.latencies.length = 0;
         this.curveLatencies.length = 0;
+        this.setGhost(this.selected);
         this.setStatus(`Dragging point ${hit.index}`);
         return;
       }
@@ -912,7 +929,8 @@ export class App {
     else if (k === 'r') this.navMode = this.navMode === 'orbit' ? null : 'orbit';
     else if (k === 'escape') {
       this.navMode = null;
-      this.select(null);
+      if (this.ghost) this.setGhost(null);
+      else this.select(null);
     } else return;
     ev.preventDefault();
   }

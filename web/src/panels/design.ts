@@ -155,6 +155,7 @@ export class DesignByCurvature {
     const normal = bent ? orthogonalTo(bent, tangent) : null;
     const startNormal = normal ?? perpendicular(tangent);
     this.busy = true;
+    this.app.setGhost(label);
     try {
       const r = await this.app.run(() =>
         this.app.client.reconstruct({
