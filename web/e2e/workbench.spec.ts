@@ -196,6 +196,22 @@ test('fins on a planar and a space curve', async ({ page }) => {
   expect(a.planar).toBe(true);
   expect(Object.keys(a.fins).sort()).toEqual(['curvature', 'torsion']);
   await selectCurve(page, space);
+  // The combs are visible at the default scale 1: the longest curvature fin drawn is 15 % of the
+  // curve's extent (κ_max of the analysis samples; the fins sit at other samples, so close to that) and a
+  // unit (normal) fin 10 %, not κ_max ≈ 0.02 or 1 model unit.
+  const drawn = (await page.evaluate((l) => window.__hula.app.drawnAnalysis(l), space)) as Analysis;
+  const lo = [0, 1, 2].map((k) => Math.min(...drawn.points.map((p) => p[k]!)));
+  const hi = [0, 1, 2].map((k) => Math.max(...drawn.points.map((p) => p[k]!)));
+  const extent = Math.hypot(...hi.map((h, k) => h - lo[k]!));
+  const longest = (kind: 'curvature' | 'normal'): number =>
+    Math.max(
+      ...drawn.fins[kind]!.filter((l) => l.length === 2).map(([b, t]) =>
+        Math.hypot(...[0, 1, 2].map((k) => t![k]! - b![k]!)),
+      ),
+    );
+  expect(longest('curvature') / extent).toBeGreaterThan(0.13);
+  expect(longest('curvature') / extent).toBeLessThan(0.155);
+  expect(Math.abs(longest('normal') / extent - 0.1)).toBeLessThan(1e-6);
   await shot(page, 'fins-space-curve');
 });
 

@@ -3,6 +3,7 @@
 // replies and document events; the page draws, picks and snaps.
 
 import { ApiError, Client } from './api/client';
+import { finLines } from './api/adapt';
 import type { Analysis, ChangeReply, ChangeSet, CurveFile, Entity, FinKind } from './api/types';
 import { DocumentStore } from './store/store';
 import { Graph, type Abscissa, type Quantity } from './graphs/graph';
@@ -29,7 +30,15 @@ import { OptimisePanel } from './panels/optimise';
 
 export interface ViewSettings {
   fins: FinKind[];
+  /** The user's fin scale, relative to `finBase`. */
   scale: number;
+  /**
+   * Drawing factor per fin kind, fixed when first needed (so combs compare
+   * across edits): the longest curvature (torsion) fin is 15 % of the curve's
+   * extent, unit fins (normal, binormal, Bishop) 10 %. Without it a fin of
+   * κ = 0.01 at scale 1 is 0.01 long: invisible.
+   */
+  finBase?: Partial<Record<FinKind, number>>;
   samples: number;
   frames: boolean;
 }
@@ -377,6 +386,40 @@ export class App {
     return s;
   }
 
+  /** The drawing factors of a curve's fins (ViewSettings.finBase), from its analysis. */
+  finBase(label: string, a: Analysis): Partial<Record<FinKind, number>> {
+    const s = this.settingsOf(label);
+    s.finBase ??= {};
+    const lo = [Infinity, Infinity, Infinity];
+    const hi = [-Infinity, -Infinity, -Infinity];
+    for (const p of a.points)
+      for (let k = 0; k < 3; k++) {
+        lo[k] = Math.min(lo[k]!, p[k] ?? 0);
+        hi[k] = Math.max(hi[k]!, p[k] ?? 0);
+      }
+    const extent = Math.hypot(...hi.map((h, k) => h - lo[k]!)) || 1;
+    const largest = (v: (number | null)[]): number =>
+      Math.max(0, ...v.map((x) => (x !== null && Number.isFinite(x) ? Math.abs(x) : 0)));
+    for (const kind of Object.keys(a.combs) as FinKind[]) {
+      if (s.finBase[kind] !== undefined) continue;
+      const m = kind === 'curvature' ? largest(a.kappa) : kind === 'torsion' ? largest(a.tau) : 1;
+      if (m === 0) continue; // a zero comb: fix the factor once it has a size
+      s.finBase[kind] = (kind === 'curvature' || kind === 'torsion' ? 0.15 : 0.1) * (extent / m);
+    }
+    return s.finBase;
+  }
+
+  /** The analysis as drawn: its combs scaled by the fin factors. */
+  drawnAnalysis(label: string): Analysis | undefined {
+    const a = this.store.analyses.get(label);
+    if (!a) return undefined;
+    const base = this.finBase(label, a);
+    const fins: Analysis['fins'] = {};
+    for (const [kind, c] of Object.entries(a.combs) as [FinKind, Analysis['combs'][FinKind]][])
+      if (c) fins[kind] = finLines(c.base, c.tip, base[kind] ?? 1);
+    return { ...a, fins };
+  }
+
   /** Ask the server for what the views draw; one request per curve in flight, the latest wins. */
   refreshAnalysis(label: string): void {
     if (!this.store.entities.has(label)) return;
@@ -426,7 +469,7 @@ export class App {
     const a = this.store.analyses.get(label);
     const s = this.settingsOf(label);
     this.viewports.drawCurve(label, {
-      analysis: a,
+      analysis: this.drawnAnalysis(label),
       handles:
         handlesOverride ?? (this.drag?.label === label ? this.drag.handles : handlesOf(e.curve)),
       polygon:

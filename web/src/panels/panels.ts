@@ -1,5 +1,5 @@
-// Side panels: properties with numeric entry (points, weights, knots, degree,
-// end conditions), interrogation (fins, frames, Combescure, continuity
+// Side panels: properties with numeric entry (points, weights; knots and
+// degree shown, end conditions), interrogation (fins, frames, continuity
 // badges), history; and the dialogs (law curve, natural equations, open/new, help).
 
 import type { App } from '../app';
