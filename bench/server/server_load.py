@@ -10,8 +10,16 @@ Bounded loops on loopback that stop by themselves:
   sse            SUBSCRIBERS concurrent SSE clients of one job: every event
                  received, in order, by every subscriber
   drag           PATCH continue moves at 120/s (documents only); p99 round trip
+  drag-rate      one client dragging as fast as it can for SECONDS s: each move is a
+                 PATCH continue of one point of the 50-point curve followed by
+                 its analysis re-read (100 samples, curvature fins), as the
+                 workbench does; moves/s and per-move p50/p99, no jobs running
+  cost           the server's CPU time per analysis request (from /proc/PID/stat,
+                 1000 sequential requests each) for the full request and with
+                 parts left out, to see where an analysis request's time goes
 
-usage: server_load.py HULA_BINARY [--rate 500] [--seconds 20] [--subscribers 200] [--only NAME]
+usage: server_load.py HULA_BINARY [--rate 500] [--seconds 20] [--subscribers 200] [--background-jobs 2]
+                      [--only NAME]
 """
 import argparse
 import json
@@ -96,9 +104,9 @@ def make_document(server):
     return name, json.loads(data)["label"]
 
 
-def interrogation(hula, rate, seconds):
+def interrogation(hula, rate, seconds, background_jobs=2):
     with Server(hula, args=["--jobs", "2"]) as server:
-        for _ in range(2):
+        for _ in range(background_jobs):
             server.request("POST", "/api/jobs", body=LONG_GA)
         if has_documents(server):
             name, label = make_document(server)
@@ -110,7 +118,7 @@ def interrogation(hula, rate, seconds):
             at = [i / 99 for i in range(100)]
             req = lambda k, i: ("POST", "/api/law", {"expression": "vec(cos(3*t), sin(2*t), t^2)", "at": at, "derivatives": 2})
         lat, errors = paced(server, rate, seconds, req)
-        running = [json.loads(server.request("GET", f"/api/jobs/{j}")[2])["state"] for j in ("1", "2")]
+        running = [json.loads(server.request("GET", f"/api/jobs/{j + 1}")[2])["state"] for j in range(background_jobs)]
     return {"what": what, "rate": rate, "seconds": seconds, "requests": len(lat), "errors": len(errors),
             "first_errors": errors[:3], "jobs": running,
             "p50_ms": 1000 * percentile(lat, 50), "p99_ms": 1000 * percentile(lat, 99), "max_ms": 1000 * max(lat)}
@@ -159,21 +167,82 @@ def drag(hula, seconds):
             "p50_ms": 1000 * percentile(lat, 50), "p99_ms": 1000 * percentile(lat, 99), "max_ms": 1000 * max(lat)}
 
 
+def drag_rate(hula, seconds):
+    with Server(hula, args=["--jobs", "1"]) as server:
+        name, label = make_document(server)
+        path = f"/api/documents/{name}/entities/{label}"
+        conn = server.connection(timeout=10)
+        moves, errors, lat = 0, 0, []
+        t0 = time.monotonic()
+        while time.monotonic() - t0 < seconds:
+            t = time.monotonic()
+            move = {"move": [{"index": 10, "to": [10, 3 + math.sin(moves / 10), 0]}], "continue": moves > 0}
+            s1, _, _ = server.request("PATCH", path, body=move, conn=conn)
+            s2, _, data = server.request("POST", path + "/analysis", body={"samples": 100, "fins": ["curvature"]},
+                                         conn=conn)
+            lat.append(time.monotonic() - t)
+            errors += (s1 != 200) + (s2 != 200)
+            moves += 1
+        elapsed = time.monotonic() - t0
+        conn.close()
+        history = json.loads(server.request("GET", f"/api/documents/{name}/history")[2])["history"]
+    return {"moves": moves, "seconds": elapsed, "moves_per_s": moves / elapsed, "errors": errors,
+            "undo_steps": len(history), "p50_ms": 1000 * percentile(lat, 50), "p99_ms": 1000 * percentile(lat, 99)}
+
+
+def server_cpu_seconds(pid):
+    fields = open(f"/proc/{pid}/stat").read().rsplit(")", 1)[1].split()
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+
+
+def cost(hula, requests=1000):
+    bodies = {
+        "full: 100 samples, curvature fins, features": {"samples": 100, "fins": ["curvature"], "scale": 1.0},
+        "without features": {"samples": 100, "fins": ["curvature"], "scale": 1.0, "features": False},
+        "without features and fins": {"samples": 100, "features": False},
+        "2 samples, no fins, no features (fixed cost)": {"samples": 2, "features": False},
+    }
+    out = {}
+    with Server(hula, args=["--jobs", "1"]) as server:
+        name, label = make_document(server)
+        path = f"/api/documents/{name}/entities/{label}/analysis"
+        conn = server.connection(timeout=10)
+        for what, body in bodies.items():
+            for _ in range(50):  # warm up
+                server.request("POST", path, body=body, conn=conn)
+            c0, t0 = server_cpu_seconds(server.process.pid), time.monotonic()
+            for _ in range(requests):
+                status, _, data = server.request("POST", path, body=body, conn=conn)
+                if status != 200:
+                    raise RuntimeError(data)
+            c1, t1 = server_cpu_seconds(server.process.pid), time.monotonic()
+            out[what] = {"server_cpu_ms": 1000 * (c1 - c0) / requests, "round_trip_ms": 1000 * (t1 - t0) / requests,
+                         "response_bytes": len(data)}
+        conn.close()
+    return out
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("hula")
     ap.add_argument("--rate", type=int, default=500)
     ap.add_argument("--seconds", type=float, default=20)
     ap.add_argument("--subscribers", type=int, default=200)
-    ap.add_argument("--only", choices=["interrogation", "sse", "drag"])
+    ap.add_argument("--background-jobs", type=int, default=2, choices=range(0, 3),
+                    help="GA jobs running during the interrogation load (the issue's figure: 2)")
+    ap.add_argument("--only", choices=["interrogation", "sse", "drag", "drag-rate", "cost"])
     a = ap.parse_args()
     out = {}
     if a.only in (None, "interrogation"):
-        out["interrogation"] = interrogation(a.hula, a.rate, a.seconds)
+        out["interrogation"] = interrogation(a.hula, a.rate, a.seconds, a.background_jobs)
     if a.only in (None, "sse"):
         out["sse"] = sse(a.hula, a.subscribers)
     if a.only in (None, "drag"):
         out["drag"] = drag(a.hula, a.seconds)
+    if a.only in (None, "drag-rate"):
+        out["drag_rate"] = drag_rate(a.hula, a.seconds)
+    if a.only in (None, "cost"):
+        out["cost"] = cost(a.hula)
     print(json.dumps(out, indent=1))
 
 

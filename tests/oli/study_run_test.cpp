@@ -75,16 +75,102 @@ TEST(StudyRun, FailingStudyRollsBack) {
   Document doc;
   const Label p = add_points(doc);
   Json bad = study_on(p);
-  bad["study"] = "fair-knots";
+  bad["study"] = "no-such-study";
   Outcome out = doc.transact("run", [&](Edit& e) { (void)run_study(e, bad, "."); });
   EXPECT_EQ(out.error_code, "InvalidArgument");
-  EXPECT_NE(out.error_message.find("fair-knots"), std::string::npos);
+  EXPECT_NE(out.error_message.find("no-such-study"), std::string::npos);
   Json missing = study_on(Label{99});
   out = doc.transact("run", [&](Edit& e) { (void)run_study(e, missing, "."); });
   EXPECT_EQ(out.error_code, "InvalidArgument");
   EXPECT_NE(out.error_message.find("99"), std::string::npos);
   EXPECT_EQ(doc.size(), 1u);
   EXPECT_EQ(doc.revision(), 1u);
+}
+
+// Checks the progress callback sees every generation in order (match-curvature: generations 0..6 of the
+// binary GA), the same count the stored run log holds, and the run is not cancelled.
+TEST(StudyRun, ProgressCallbackSeesEveryGeneration) {
+  Document doc;
+  const Label p = add_points(doc);
+  std::vector<std::size_t> seen;
+  StudyRunOptions options;
+  options.on_generation = [&](const optim::GenerationLog& g) { seen.push_back(g.generation); };
+  StudyRunResult r;
+  doc.transact("run", [&](Edit& e) { r = run_study(e, study_on(p), ".", options); }).throw_if_failed();
+  EXPECT_EQ(seen, (std::vector<std::size_t>{0, 1, 2, 3, 4, 5, 6}));
+  EXPECT_EQ(doc.get(r.study).study().runs[0].log["generations"].size(), seen.size());
+  EXPECT_FALSE(r.cancelled);
+  EXPECT_EQ(r.kind, "match-curvature");
+}
+
+// Checks cancelling from the callback after generation 2 stops the GA there and stores the best so far:
+// the run log ends at generation 2, the result curve exists and its provenance says "cancelled".
+TEST(StudyRun, CancelStoresBestSoFar) {
+  Document doc;
+  const Label p = add_points(doc);
+  optim::CancellationToken cancel;
+  StudyRunOptions options;
+  options.cancel = &cancel;
+  options.on_generation = [&](const optim::GenerationLog& g) {
+    if (g.generation == 2) cancel.cancel();
+  };
+  StudyRunResult r;
+  doc.transact("run", [&](Edit& e) { r = run_study(e, study_on(p), ".", options); }).throw_if_failed();
+  EXPECT_TRUE(r.cancelled);
+  const Study& stored = doc.get(r.study).study();
+  ASSERT_EQ(stored.runs.size(), 1u);
+  EXPECT_EQ(stored.runs[0].log["generations"].size(), 3u);
+  EXPECT_EQ(stored.runs[0].result["ga"]["termination"], "Cancelled");
+  ASSERT_EQ(r.curves.size(), 1u);
+  EXPECT_EQ(doc.get(r.curves[0]).provenance()->details["cancelled"], true);
+}
+
+// Checks a fair-knots study (thesis 7.3 Example 2's asymmetric points, both optimisers) stores both optima
+// as curves whose energies are below the chord-length start's (0.2556 against 0.2472 from `hula fair-knots`).
+TEST(StudyRun, FairKnotsStoresBothOptima) {
+  Document doc;
+  const Json study = Json::parse(R"({"format": "hula-study", "version": 1, "study": "fair-knots", "seed": 1,
+    "points": [[0, 0], [40, 25], [80, -40], [120, 0]], "energy": "bending", "method": "both",
+    "ga": {"algorithm": "real", "population": 20, "generations": 10}})");
+  std::size_t generations = 0;
+  StudyRunOptions options;
+  options.on_generation = [&](const optim::GenerationLog&) { ++generations; };
+  StudyRunResult r;
+  doc.transact("run", [&](Edit& e) { r = run_study(e, study, ".", options); }).throw_if_failed();
+  ASSERT_EQ(r.curves.size(), 2u);
+  EXPECT_GT(generations, 10u);
+  const double start = r.result["chord_length"]["energy"].get<double>();
+  EXPECT_NEAR(start, 0.2555755, 1e-6);
+  EXPECT_NEAR(r.result["ga"]["energy"].get<double>(), 0.2472, 1e-3);
+  EXPECT_NEAR(r.result["deterministic"]["energy"].get<double>(), 0.2472, 1e-3);
+  EXPECT_EQ(io::curve_to_json(doc.get(r.curves[0]).curve()), r.result["ga"]["curve"]);
+  EXPECT_EQ(io::curve_to_json(doc.get(r.curves[1]).curve()), r.result["deterministic"]["curve"]);
+  EXPECT_EQ(doc.get(r.curves[1]).provenance()->operation, "study:fair-knots");
+}
+
+// Checks a match-curvature-torsion study (a small NSGA-II on examples/studies/match-curvature-torsion-helix)
+// stores its best compromise as a curve equal to the result's, with NSGA-II fronts in the progress.
+TEST(StudyRun, CurvatureTorsionStoresCompromise) {
+  Document doc;
+  Json study = Json::parse(R"({"format": "hula-study", "version": 1, "study": "match-curvature-torsion", "seed": 1,
+    "points": [[0, 0, 0], [10.310565, 6.30983, 5.526548], [5.177853, 18.99017, 9.653096],
+               [-5.277853, 18.59017, 14.279645], [-10.010565, 6.20983, 20.706193]],
+    "lower": [[0, 0, 0], [3, 3, 3], [3, 3, 3], [3, 3, 3], [3, 3, 3]],
+    "upper": [[0, 0, 0], [3, 3, 3], [3, 3, 3], [3, 3, 3], [3, 3, 3]],
+    "start_tangent": [1, 0, 0], "end_tangent": [3.09017, -9.510565, 4], "samples": 50,
+    "nsga2": {"population": 20, "generations": 4}, "polish": false})");
+  const Json helix = Json::parse(R"([[0, 0, 0], [9.510565, 6.90983, 5.026548], [5.877853, 18.09017, 10.053096],
+    [-5.877853, 18.09017, 15.079645], [-9.510565, 6.90983, 20.106193]])");
+  study["target"] = Json::object({{"of_points", helix}});
+  study["torsion_target"] = Json::object({{"of_points", helix}});
+  std::size_t objectives = 0;
+  StudyRunOptions options;
+  options.on_generation = [&](const optim::GenerationLog& g) { objectives = g.objectives; };
+  StudyRunResult r;
+  doc.transact("run", [&](Edit& e) { r = run_study(e, study, ".", options); }).throw_if_failed();
+  EXPECT_EQ(objectives, 2u);
+  ASSERT_EQ(r.curves.size(), 1u);
+  EXPECT_EQ(io::curve_to_json(doc.get(r.curves[0]).curve()), r.result["compromise"]["curve"]);
 }
 
 }  // namespace

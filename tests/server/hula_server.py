@@ -173,6 +173,15 @@ class OpenApi:
         if media == "application/json":
             jsonschema.Draft202012Validator(self._inline(content[media]["schema"])).validate(json.loads(body))
 
+    def validate_events(self, path, response, events, schemas):
+        """Validates an SSE stream of GET `path`: its status and content type against the document, and each
+        event's data against the component schema named by schemas[event name] (an unnamed event fails)."""
+        self.validate("GET", path, response.status, "", response.getheader("Content-Type", ""))
+        for name, data in events:
+            if name not in schemas:
+                raise AssertionError(f"GET {path}: event '{name}' is not one the OpenAPI document describes")
+            jsonschema.Draft202012Validator(self.schema(schemas[name])).validate(data)
+
     def validate_error_body(self, body):
         """Errors outside the route table (404, 405, 414, 431, 503 ...) share one schema."""
         jsonschema.Draft202012Validator(self.schema("Error")).validate(json.loads(body))

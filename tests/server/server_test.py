@@ -45,6 +45,32 @@ LONG = {
     "variables": [{"name": f"x{i}", "lower": -5, "upper": 5} for i in range(20)],
     "objectives": [" + ".join(f"(x{i}^2 - 10*cos(2*pi*x{i}) + 10)" for i in range(20))],
 }
+# Thesis 8.2.1 Example 1 (examples/studies/match-curvature-example1.json) with a small binary GA.
+def match_study(generations):
+    return {"format": "hula-study", "version": 1, "study": "match-curvature", "seed": 5,
+            "points": [[0, 0], [5, 20], [40, 0]],
+            "lower": [[0, 0], [30, 30], [0, 0]], "upper": [[0, 0], [35, 30], [0, 0]],
+            "target": {"of_points": [[0, 0], [5, 20], [40, 0]], "mirror": True},
+            "samples": 50, "method": "ga",
+            "ga": {"algorithm": "binary", "population": 12, "generations": generations, "boost_start": 3,
+                   "boost_end": 5, "crossover_probability": 1.0, "mutation_probability": 0.01, "precision": 0.001}}
+
+# The events of GET /api/jobs/{id}/events and the schema of each one's data (OpenAPI document).
+JOB_EVENTS = {"generation": "GenerationEvent", "done": "Job", "failed": "Job", "cancelled": "Job"}
+
+
+def operations(api, prefix):
+    """(template, method, first success status) of every operation of the OpenAPI document under `prefix`."""
+    wanted = set()
+    for template, item in api.document["paths"].items():
+        if not template.startswith(prefix):
+            continue
+        for method, op in item.items():
+            if method == "parameters":
+                continue
+            ok = [s for s in op["responses"] if s.startswith("2")]
+            wanted.add((template, method, ok[0]))
+    return wanted
 
 
 class ApiTest(unittest.TestCase):
@@ -74,6 +100,7 @@ class ApiTest(unittest.TestCase):
         self.assertEqual(response.getheader("Content-Type"), "text/event-stream")
         events = list(read_events(response))
         conn.close()
+        self.api.validate_events(f"/api/jobs/{job['job']}/events", response, events, JOB_EVENTS)
         return job, events
 
     # checks the start line against the issue's exact shape (url with the token, port, token, workspace)
@@ -183,6 +210,53 @@ class ApiTest(unittest.TestCase):
         self.assertEqual(final["report"]["termination"], "Cancelled")
         self.assertEqual(len(final["result"]["best"]["variables"]), 20)
 
+    # checks a study job's SSE stream (docs/server.md "Study jobs"): generation events 0..n with the study
+    # kind, validated against GenerationEvent, then done; its study entity and result curve are in the document
+    def test_study_job_events(self):
+        self.call("POST", "/api/documents", {"name": "study.hula"}, expect=201)
+        job, events = self.run_job({"document": "study.hula", "study": match_study(8)})
+        self.assertEqual(job["kind"], "study")
+        generations = [d for e, d in events if e == "generation"]
+        self.assertEqual([g["generation"] for g in generations], list(range(9)))
+        import jsonschema
+        for g in generations:
+            jsonschema.Draft202012Validator(self.api.schema("GenerationEvent")).validate(g)
+            self.assertEqual(g["study"], "match-curvature")
+        self.assertEqual(events[-1][0], "done")
+        final = self.call("GET", f"/api/jobs/{job['job']}")
+        self.assertEqual(final, events[-1][1])
+        self.assertEqual(final["report"]["termination"], "Completed")
+        self.assertEqual(final["report"]["generations"], 9)
+        self.assertEqual(final["report"]["evaluations"], generations[-1]["evaluations"])
+        [curve] = final["result"]["curves"]
+        entity = self.call("GET", f"/api/documents/study.hula/entities/{curve}")
+        self.assertEqual(entity["provenance"]["operation"], "study:match-curvature")
+        for key, value in final["result"]["result"]["curve"].items():
+            self.assertEqual(entity[key], value, key)
+        kinds = {e["label"]: e["kind"] for e in self.call("GET", "/api/documents/study.hula")["entities"]}
+        self.assertEqual(kinds[final["result"]["study"]], "study")
+
+    # checks DELETE on a running study job: cancelled with termination Cancelled, its best so far stored as
+    # a result curve whose provenance says cancelled
+    def test_study_job_cancel(self):
+        self.call("POST", "/api/documents", {"name": "cancel.hula"}, expect=201)
+        job = self.call("POST", "/api/jobs", {"document": "cancel.hula", "study": match_study(100000)}, expect=202)
+        path = f"/api/jobs/{job['job']}"
+        conn, response = open_events(self.server, path + "/events")
+        events = read_events(response)
+        self.assertEqual(next(events)[0], "generation")
+        self.call("DELETE", path)
+        rest = list(events)
+        conn.close()
+        self.assertEqual(rest[-1][0], "cancelled")
+        final = self.call("GET", path)
+        self.assertEqual(final["state"], "cancelled")
+        self.assertEqual(final["report"]["termination"], "Cancelled")
+        self.assertEqual(final["result"]["result"]["ga"]["termination"], "Cancelled")
+        [curve] = final["result"]["curves"]
+        entity = self.call("GET", f"/api/documents/cancel.hula/entities/{curve}")
+        self.assertTrue(entity["provenance"]["details"]["cancelled"])
+
     # checks the job errors: 400 bad problem, 400 wrong algorithm for the objective count, 404 unknown job
     def test_job_errors(self):
         e = self.call("POST", "/api/jobs", {"problem": {"variables": []}}, expect=400)
@@ -222,21 +296,11 @@ class ApiTest(unittest.TestCase):
             self.assertEqual(sorted(entry), ["method", "ms", "route", "status"])
             self.assertNotIn(self.server.token, line)
 
-    # checks every operation of the OpenAPI document answered its success status in this class
+    # checks every operation of the OpenAPI document outside /api/documents answered its success status in
+    # this class with a body valid against the document (DocumentTest checks the /api/documents ones)
     def test_zz_every_operation_seen(self):
-        wanted = set()
-        for template, item in self.api.document["paths"].items():
-            # Document routes are DocumentTest's (its own server and workspace); this class owns the rest.
-            # TODO(#12): DocumentTest does not yet check that it answered every document operation.
-            if template.startswith("/api/documents"):
-                continue
-            for method, op in item.items():
-                if method == "parameters":
-                    continue
-                ok = [s for s in op["responses"] if s.startswith("2")]
-                wanted.add((template, method, ok[0]))
-        # SSE responses are validated by content type in run_job; record them here.
-        self.api.seen.add(("/api/jobs/{id}/events", "get", "200"))
+        wanted = {op for op in operations(self.api, "/api/") if not op[0].startswith("/api/documents")}
+        self.assertTrue(wanted)
         self.assertEqual(wanted - self.api.seen, set())
 
 
@@ -444,6 +508,27 @@ class LifecycleTest(unittest.TestCase):
             self.assertEqual(rest[-1][0], "cancelled")
             self.assertEqual(rest[-1][1]["report"]["termination"], "Cancelled")
 
+    # checks SIGTERM during a study job stores its best so far in the document (issue 12 item 1): after a
+    # restart the study entity and its result curve are there, the curve's provenance says cancelled
+    def test_sigterm_stores_study_best_so_far(self):
+        with tempfile.TemporaryDirectory() as ws:
+            server = Server(HULA, workspace=ws, args=["--jobs", "1"])
+            server.request("POST", "/api/documents", body={"name": "term.hula"})
+            body = {"document": "term.hula", "study": match_study(100000)}
+            job = json.loads(server.request("POST", "/api/jobs", body=body)[2])
+            conn, response = open_events(server, f"/api/jobs/{job['job']}/events")
+            events = read_events(response)
+            self.assertEqual(next(events)[0], "generation")
+            self.assertEqual(server.stop(signal.SIGTERM), 0, server.log_text())
+            rest = list(events)
+            conn.close()
+            self.assertEqual(rest[-1][0], "cancelled")
+            [curve] = rest[-1][1]["result"]["curves"]
+            with Server(HULA, workspace=ws) as again:
+                status, _, data = again.request("GET", f"/api/documents/term.hula/entities/{curve}")
+                self.assertEqual(status, 200, data)
+                self.assertTrue(json.loads(data)["provenance"]["details"]["cancelled"])
+
     # checks --token-file is used as the token, and a short token is refused (exit 3)
     def test_token_file(self):
         with tempfile.NamedTemporaryFile("w", suffix=".token", delete=False) as f:
@@ -554,6 +639,9 @@ class DocumentTest(unittest.TestCase):
         self.assertEqual(added["changes"]["added"], [label])
         e = self.call("GET", f"{base}/entities/{label}")
         self.assertEqual(e["attributes"]["name"], "spine")
+        listed = self.call("GET", base)
+        self.assertEqual((listed["revision"], [(x["label"], x["kind"], x["name"]) for x in listed["entities"]]),
+                         (added["revision"], [(label, "curve", "spine")]))
         r1 = self.call("PATCH", f"{base}/entities/{label}", {"move": [{"index": 3, "to": [3, 9, 1]}]})
         r2 = self.call("PATCH", f"{base}/entities/{label}", {"move": [{"index": 3, "to": [3, 10, 1]}], "continue": True})
         self.assertEqual(r2["revision"], r1["revision"])
@@ -564,6 +652,12 @@ class DocumentTest(unittest.TestCase):
         self.assertEqual(self.call("GET", f"{base}/entities/{label}")["points"][3][1], CURVE50["points"][3][1])
         self.call("POST", base + "/redo")
         self.call("POST", base + "/redo", expect=400)
+        # PUT replaces the curve and renames it: the new points are read back, one more undo step
+        line = {"kind": "interpolated", "points": [[0, 0, 0], [1, 2, 0], [3, 1, 1]]}
+        put = self.call("PUT", f"{base}/entities/{label}", {"curve": line, "name": "line"})
+        self.assertEqual(put["changes"]["changed"], [label])
+        replaced = self.call("GET", f"{base}/entities/{label}")
+        self.assertEqual((replaced["points"], replaced["attributes"]["name"]), (line["points"], "line"))
         self.call("PATCH", f"{base}/entities/{label}", {"move": [{"index": 99, "to": [0, 0, 0]}]}, expect=400)
         self.call("GET", f"{base}/entities/999", expect=404)
         self.call("DELETE", f"{base}/entities/{label}")
@@ -592,9 +686,17 @@ class DocumentTest(unittest.TestCase):
         self.call("POST", base + "/undo")
         got = [next(events) for _ in range(7)]
         conn.close()
+        self.api.validate_events(base + "/events", response, got, {"change": "ChangeSet"})
         self.assertEqual([e for e, _ in got], ["change"] * 7)
         self.assertEqual([d["cause"] for _, d in got], ["commit"] * 6 + ["undo"])
         self.assertEqual([d["revision"] for _, d in got], [1, 2, 2, 2, 2, 2, 1])
+
+    # checks every /api/documents operation of the OpenAPI document answered its success status in this
+    # class with a body (or SSE events) valid against the document
+    def test_zz_every_operation_seen(self):
+        wanted = operations(self.api, "/api/documents")
+        self.assertEqual(len(wanted), 14)
+        self.assertEqual(wanted - self.api.seen, set())
 
 
 class FaultTest(unittest.TestCase):

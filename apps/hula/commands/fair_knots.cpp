@@ -23,25 +23,6 @@ namespace hula::cli {
 
 namespace {
 
-Json evaluation_to_json(const studies::ParameterEvaluation& e) {
-  return Json{{"parameters", e.parameters},
-              {"energy", e.energy},
-              {"bending", e.bending},
-              {"variation", e.variation},
-              {"curve", io::curve_to_json(e.curve)}};
-}
-
-Json result_to_json(const studies::FairingResult& r, double chord_energy) {
-  Json out = evaluation_to_json(r.best);
-  out["improvement"] = chord_energy > 0.0 ? 1.0 - r.best.energy / chord_energy : 0.0;
-  out["evaluations"] = r.evaluations;
-  out["rounds"] = r.rounds;
-  out["seconds"] = r.seconds;
-  out["stopped"] = r.stopped;
-  if (!r.bounds.lower.empty()) out["bounds"] = Json{{"lower", r.bounds.lower}, {"upper", r.bounds.upper}};
-  return out;
-}
-
 // The curve with its curvature fins (Figures 59, 63, 65–67), the data points,
 // and optionally a reference curve dashed.
 io::SvgFigure curve_figure(const studies::KnotFairingSetup& setup, const studies::ParameterEvaluation& e,
@@ -126,8 +107,9 @@ int run_fair_knots(const StudyArgs& args) {
   Json out = Json::object();
   out["study"] = io::fair_knots_study_to_json(study);
   out["energy"] = studies::fairing_energy_name(setup.energy);
-  out["chord_length"] = evaluation_to_json(before);
-  if (study.parameters) out["given"] = evaluation_to_json(studies::evaluate_parameters(setup, *study.parameters));
+  out["chord_length"] = io::fairing_evaluation_to_json(before);
+  if (study.parameters)
+    out["given"] = io::fairing_evaluation_to_json(studies::evaluate_parameters(setup, *study.parameters));
 
   // The map and its sections first: they are evaluations of the setup, and
   // their errors should come before the optimisers run.
@@ -155,11 +137,11 @@ int run_fair_knots(const StudyArgs& args) {
       study.method == studies::FairingMethod::Deterministic || study.method == studies::FairingMethod::Both;
   if (run_ga) {
     ga = studies::fair_knots_ga(setup, chord, study.ga, args.log ? &log : nullptr);
-    out["ga"] = result_to_json(*ga, before.energy);
+    out["ga"] = io::fairing_result_to_json(*ga, before.energy);
   }
   if (run_det) {
     det = studies::fair_knots_deterministic(setup, chord, study.deterministic);
-    out["deterministic"] = result_to_json(*det, before.energy);
+    out["deterministic"] = io::fairing_result_to_json(*det, before.energy);
   }
   if (ga && det) {
     double dp = 0.0;

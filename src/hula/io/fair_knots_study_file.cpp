@@ -242,4 +242,23 @@ std::string energy_map_csv(const EnergyMap& map) {
   return out;
 }
 
+Json fairing_evaluation_to_json(const studies::ParameterEvaluation& e) {
+  return Json{{"parameters", e.parameters},
+              {"energy", e.energy},
+              {"bending", e.bending},
+              {"variation", e.variation},
+              {"curve", curve_to_json(e.curve)}};
+}
+
+Json fairing_result_to_json(const studies::FairingResult& r, double chord_energy) {
+  Json out = fairing_evaluation_to_json(r.best);
+  out["improvement"] = chord_energy > 0.0 ? 1.0 - r.best.energy / chord_energy : 0.0;
+  out["evaluations"] = r.evaluations;
+  out["rounds"] = r.rounds;
+  out["seconds"] = r.seconds;
+  out["stopped"] = r.stopped;
+  if (!r.bounds.lower.empty()) out["bounds"] = Json{{"lower", r.bounds.lower}, {"upper", r.bounds.upper}};
+  return out;
+}
+
 }  // namespace hula::io

@@ -25,6 +25,13 @@ namespace hula::io {
 /// The resolved study (all defaults written) as a study document.
 [[nodiscard]] Json fair_knots_study_to_json(const studies::FairKnotsStudy& study);
 
+/// One evaluated parameter vector: {"parameters", "energy", "bending", "variation", "curve"} (a curve file).
+[[nodiscard]] Json fairing_evaluation_to_json(const studies::ParameterEvaluation& evaluation);
+
+/// A fairing run (GA or deterministic): its best evaluation plus "improvement" (1 − E / chord_energy, 0
+/// when chord_energy is 0), "evaluations", "rounds", "seconds", "stopped" and, for the GA, "bounds".
+[[nodiscard]] Json fairing_result_to_json(const studies::FairingResult& result, double chord_energy);
+
 /// The energy map as CSV: header `k1,k2,energy`, one row per grid node (k1
 /// fastest), the energy empty where the cell is outside k1 < k2 or failed.
 /// Doubles are written to round-trip (shortest form).

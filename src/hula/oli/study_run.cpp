@@ -7,11 +7,13 @@
 
 #include "hula/core/error.hpp"
 #include "hula/curve/curve.hpp"
+#include "hula/io/fair_knots_study_file.hpp"
 #include "hula/io/json_curve.hpp"
 #include "hula/io/match_study_file.hpp"
 #include "hula/io/path_resolver.hpp"
 #include "hula/io/study_file.hpp"
 #include "hula/oli/detail/entity_codec.hpp"
+#include "hula/studies/curvature_torsion_match.hpp"
 #include "hula/studies/match_study.hpp"
 
 #ifndef HULA_VERSION
@@ -51,15 +53,86 @@ void resolve_entities(Json& value, const Document& document, std::set<Label>& re
     for (Json& element : value) resolve_entities(element, document, read);
 }
 
-// Runs one study; returns the run and its result curve.
+// Runs one study; returns the run and its result curves (with the names they get in the document).
 struct Ran {
   StudyRun run;
-  std::optional<curve::Curve> curve;
+  std::vector<std::pair<curve::Curve, std::string>> curves;
   std::string kind;
 };
 
+Json log_json(const optim::RunLog& log) {
+  std::ostringstream text;
+  log.write_json(text);
+  return Json::parse(text.str());
+}
+
+void run_match(const io::StudyDocument& doc, const std::filesystem::path& base, const StudyRunOptions& options,
+               Ran& out) {
+  // Files a study names stay inside the document's folder (io::confined_to), as on a server.
+  io::MatchStudyFile file = io::match_study_from_json(doc, io::confined_to(base));
+  file.study.header.cancel = options.cancel;
+  file.study.header.on_generation = options.on_generation;
+  const studies::CurvatureMatch match(file.study.setup);
+  const studies::MatchResult result = studies::run_curvature_match(match, file.study, true);
+  out.run.seed = file.study.header.seed;
+  out.run.result = io::match_result_to_json(match, file, result);
+  out.run.log = log_json(result.log);
+  out.curves.emplace_back(io::curve_from_json(out.run.result.at("curve")), out.kind + " result");
+}
+
+void run_match_torsion(const io::StudyDocument& doc, const std::filesystem::path& base, const StudyRunOptions& options,
+                       Ran& out) {
+  io::TorsionMatchStudyFile file = io::torsion_match_study_from_json(doc, io::confined_to(base));
+  studies::TorsionMatchStudy& study = file.study;
+  study.settings.cancel = options.cancel;
+  study.settings.on_generation = options.on_generation;
+  const studies::CurvatureMatch match(study.setup);
+  const studies::TorsionMatchResult result =
+      studies::run_curvature_torsion_match(match, study.settings, study.header.seed, study.header.threads, true);
+  out.run.seed = study.header.seed;
+  out.run.result = io::torsion_match_result_to_json(match, file, result);
+  out.run.log = log_json(result.log);
+  const Json& compromise = out.run.result.value("compromise", Json());
+  if (compromise.is_object() && compromise.contains("curve"))
+    out.curves.emplace_back(io::curve_from_json(compromise.at("curve")), out.kind + " compromise");
+}
+
+// As `hula fair-knots` without the energy map and figures: the chord-length start, the given
+// parameters, and the GA and/or deterministic optimum, each optimum a result curve.
+void run_fair_knots(const io::StudyDocument& doc, const StudyRunOptions& options, Ran& out) {
+  studies::FairKnotsStudy study = io::fair_knots_study_from_json(doc);
+  for (optim::RunSettings* run : {&study.ga.binary.run, &study.ga.real.run}) {
+    run->stop.cancel = options.cancel;
+    run->on_generation = options.on_generation;
+  }
+  study.deterministic.cancel = options.cancel;
+  const studies::KnotFairingSetup& setup = study.setup;
+  const std::vector<double> chord = studies::chord_length_parameters(setup);
+  const studies::ParameterEvaluation before = studies::evaluate_parameters(setup, chord);
+  Json result = Json::object();
+  result["study"] = io::fair_knots_study_to_json(study);
+  result["energy"] = studies::fairing_energy_name(setup.energy);
+  result["chord_length"] = io::fairing_evaluation_to_json(before);
+  if (study.parameters)
+    result["given"] = io::fairing_evaluation_to_json(studies::evaluate_parameters(setup, *study.parameters));
+  optim::RunLog log;
+  if (study.method != studies::FairingMethod::Deterministic) {
+    const studies::FairingResult ga = studies::fair_knots_ga(setup, chord, study.ga, &log);
+    result["ga"] = io::fairing_result_to_json(ga, before.energy);
+    out.curves.emplace_back(ga.best.curve, "fair-knots GA optimum");
+  }
+  if (study.method != studies::FairingMethod::Ga) {
+    const studies::FairingResult det = studies::fair_knots_deterministic(setup, chord, study.deterministic);
+    result["deterministic"] = io::fairing_result_to_json(det, before.energy);
+    out.curves.emplace_back(det.best.curve, "fair-knots deterministic optimum");
+  }
+  out.run.seed = study.header.seed;
+  out.run.result = std::move(result);
+  out.run.log = log_json(log);
+}
+
 Ran run_once(const Json& setup, const Document& document, const std::filesystem::path& base,
-             std::optional<std::uint64_t> seed, std::set<Label>& read) {
+             std::optional<std::uint64_t> seed, std::set<Label>& read, const StudyRunOptions& options) {
   Json resolved = setup;
   resolve_entities(resolved, document, read);
   if (seed) resolved["seed"] = *seed;
@@ -68,28 +141,29 @@ Ran run_once(const Json& setup, const Document& document, const std::filesystem:
                                : std::string();
   Ran out;
   out.kind = kind;
-  if (kind == "match-curvature") {
-    // Files a study names stay inside the document's folder (io::confined_to), as on a server.
-    const io::StudyDocument doc = io::parse_study_json(resolved.dump(), kind);
-    const io::MatchStudyFile file = io::match_study_from_json(doc, io::confined_to(base));
-    const studies::CurvatureMatch match(file.study.setup);
-    const studies::MatchResult result = studies::run_curvature_match(match, file.study, true);
-    out.run.seed = file.study.header.seed;
-    out.run.result = io::match_result_to_json(match, file, result);
-    std::ostringstream log;
-    result.log.write_json(log);
-    out.run.log = Json::parse(log.str());
-    out.curve = io::curve_from_json(out.run.result.at("curve"));
-    return out;
-  }
-  throw Error(Errc::InvalidArgument,
-              "study kind \"" + kind + "\" cannot run inside a document (supported: match-curvature)",
-              {.field = "study"});
+  if (kind != "match-curvature" && kind != "match-curvature-torsion" && kind != "fair-knots")
+    throw Error(Errc::InvalidArgument,
+                "study kind \"" + kind +
+                    "\" cannot run inside a document (supported: match-curvature, match-curvature-torsion, "
+                    "fair-knots)",
+                {.field = "study"});
+  const io::StudyDocument doc = io::parse_study_json(resolved.dump(), kind);
+  if (kind == "match-curvature")
+    run_match(doc, base, options, out);
+  else if (kind == "match-curvature-torsion")
+    run_match_torsion(doc, base, options, out);
+  else
+    run_fair_knots(doc, options, out);
+  return out;
 }
 
-StudyRunResult record(Edit& edit, Label study, Ran ran, const std::set<Label>& read) {
+// Stores the run and its result curves; a cancelled run (best so far) says so in the curves' provenance.
+StudyRunResult record(Edit& edit, Label study, Ran ran, const std::set<Label>& read,
+                      const optim::CancellationToken* cancel) {
   StudyRunResult out;
   out.study = study;
+  out.kind = ran.kind;
+  out.cancelled = cancel != nullptr && cancel->is_cancelled();
   Provenance p;
   p.operation = "study:" + ran.kind;
   p.inputs.push_back(study);
@@ -98,7 +172,8 @@ StudyRunResult record(Edit& edit, Label study, Ran ran, const std::set<Label>& r
   p.tool_version = HULA_VERSION;
   Study stored = edit.get(study).study();
   p.details["run"] = stored.runs.size();
-  if (ran.curve) out.curves.push_back(edit.add_curve(*ran.curve, {.name = ran.kind + " result"}, p));
+  if (out.cancelled) p.details["cancelled"] = true;
+  for (const auto& [curve, name] : ran.curves) out.curves.push_back(edit.add_curve(curve, {.name = name}, p));
   ran.run.result_curves = out.curves;
   out.result = ran.run.result;
   stored.runs.push_back(std::move(ran.run));
@@ -108,24 +183,25 @@ StudyRunResult record(Edit& edit, Label study, Ran ran, const std::set<Label>& r
 
 }  // namespace
 
-StudyRunResult run_study(Edit& edit, const Json& study_file, const std::filesystem::path& base) {
+StudyRunResult run_study(Edit& edit, const Json& study_file, const std::filesystem::path& base,
+                         const StudyRunOptions& options) {
   if (!study_file.is_object()) throw Error(Errc::ParseError, "a study file must be a JSON object", {.field = "study"});
   std::set<Label> read;
-  Ran ran = run_once(study_file, edit.document(), base, std::nullopt, read);
+  Ran ran = run_once(study_file, edit.document(), base, std::nullopt, read, options);
   Provenance p;
   p.operation = "study";
   p.inputs.assign(read.begin(), read.end());
   p.tool_version = HULA_VERSION;
   const Label study = edit.add_study({study_file, {}}, {.name = ran.kind}, p);
-  return record(edit, study, std::move(ran), read);
+  return record(edit, study, std::move(ran), read, options.cancel);
 }
 
 StudyRunResult rerun_study(Edit& edit, Label study, const std::filesystem::path& base,
-                           std::optional<std::uint64_t> seed) {
+                           std::optional<std::uint64_t> seed, const StudyRunOptions& options) {
   const Json setup = edit.get(study).study().setup;
   std::set<Label> read;
-  Ran ran = run_once(setup, edit.document(), base, seed, read);
-  return record(edit, study, std::move(ran), read);
+  Ran ran = run_once(setup, edit.document(), base, seed, read, options);
+  return record(edit, study, std::move(ran), read, options.cancel);
 }
 
 }  // namespace hula::oli

@@ -13,7 +13,15 @@
 // data points from point set 3). The setup is stored with the references, so
 // a rerun reads the entities as they are then; the run records their labels.
 //
-// Supported study kinds: "match-curvature" (docs/studies.md).
+// Study kinds run here (docs/formats.md): "match-curvature",
+// "match-curvature-torsion" (result curve: the best compromise) and
+// "fair-knots" (result curves: the GA's and/or the deterministic optimum; the
+// energy map and its sections are figures of the CLI and are not stored).
+//
+// Progress and cancellation (StudyRunOptions): the caller's callback sees
+// every generation of the study's optimiser(s); a cancellation token stops
+// them at the next generation, and the best so far is stored like a finished
+// run (StudyRunResult::cancelled says so).
 #pragma once
 
 #include <cstdint>
@@ -22,6 +30,8 @@
 #include <vector>
 
 #include "hula/oli/document.hpp"
+#include "hula/optim/run_log.hpp"
+#include "hula/optim/run_report.hpp"
 
 namespace hula::oli {
 
@@ -33,6 +43,20 @@ struct StudyRunResult {
   std::vector<Label> curves{};
   /// The study's result document.
   Json result = Json::object();
+  /// The study kind ("match-curvature", ...).
+  std::string kind{};
+  /// True when the cancellation token was set before the run ended: the stored result is the best so far.
+  bool cancelled = false;
+};
+
+/// How a study runs inside the document.
+struct StudyRunOptions {
+  /// Called on the running thread with each generation of every optimiser run the study makes, in
+  /// order (fair-knots re-centring rounds each start again at generation 0). Default none.
+  optim::GenerationCallback on_generation{};
+  /// Checked between generations (and simplex iterations); once set the optimisers stop with their
+  /// best so far, which is stored. Not owned; must outlive the run. Default none.
+  const optim::CancellationToken* cancel = nullptr;
 };
 
 /// Adds a study entity for `study_file` and runs it once (inside the caller's transaction).
@@ -40,11 +64,12 @@ struct StudyRunResult {
 /// @throws hula::Error(Errc::InvalidArgument) naming the kind when it is not supported, or an
 ///   entity reference to a missing label or a study; the study's own errors (ParseError naming the
 ///   member, InvalidOption, NumericalFailure) — the transaction then rolls back
-StudyRunResult run_study(Edit& edit, const Json& study_file, const std::filesystem::path& base);
+StudyRunResult run_study(Edit& edit, const Json& study_file, const std::filesystem::path& base,
+                         const StudyRunOptions& options = {});
 
 /// Runs a stored study again from its stored setup and seed (or `seed`), appending a run.
 /// @throws as run_study; hula::Error(Errc::InvalidArgument) when `study` is not a study
 StudyRunResult rerun_study(Edit& edit, Label study, const std::filesystem::path& base,
-                           std::optional<std::uint64_t> seed = std::nullopt);
+                           std::optional<std::uint64_t> seed = std::nullopt, const StudyRunOptions& options = {});
 
 }  // namespace hula::oli

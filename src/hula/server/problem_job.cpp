@@ -39,8 +39,9 @@ Json solution_json(const optim::Solution& s) {
 
 Json finite_or_null(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
 
-// The progress event of one generation: the best individual (feasible first, then smallest first
-// objective) and, for several objectives, the first front (fitness = rank 0).
+}  // namespace
+
+// The first front of NSGA-II is fitness = rank 0.
 Json generation_event(const optim::GenerationLog& g, double elapsed) {
   Json e = Json::object();
   e["generation"] = g.generation;
@@ -75,6 +76,8 @@ Json generation_event(const optim::GenerationLog& g, double elapsed) {
   e["elapsed"] = elapsed;
   return e;
 }
+
+namespace {
 
 Json report_json(const optim::RunReport& r, const ProblemJob& job) {
   Json o = Json::object();

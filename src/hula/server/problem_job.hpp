@@ -8,9 +8,15 @@
 // (NSGA-II), as `hula optimise` prints them.
 #pragma once
 
+#include "hula/optim/run_log.hpp"
 #include "hula/server/jobs.hpp"
 
 namespace hula::server {
+
+/// The progress event of one generation: {"generation", "evaluations", "best": objectives of the best
+/// individual (feasible first, then smallest first objective; null for an undefined value), "front"
+/// (several objectives: the first front's objectives), "elapsed": `elapsed` seconds}.
+[[nodiscard]] Json generation_event(const optim::GenerationLog& generation, double elapsed);
 
 /// Reads the job request and returns its work, ready for JobPool::submit. Everything that can be
 /// checked before running is checked here, so bad input is refused with 400 rather than a failed job.

@@ -104,6 +104,7 @@ TorsionMatchResult run_curvature_torsion_match(const CurvatureMatch& match, cons
     result.best_curvature.push_back(bk);
     result.best_torsion.push_back(bt);
     if (keep_log) result.log.append(g);
+    if (settings.on_generation) settings.on_generation(g);
   };
   const optim::Nsga2Result run = optim::solve_nsga2(problem, options);
   result.report = run.report;

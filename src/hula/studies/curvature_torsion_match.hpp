@@ -57,6 +57,8 @@ struct TorsionMatchSettings {
   double wall_time_seconds = 0.0;
   /// Cancellation token (SIGINT), not owned; the run ends with its front so far. Not a file member.
   const optim::CancellationToken* cancel = nullptr;
+  /// Called with each NSGA-II generation (progress of a server job). Not a file member. Default none.
+  optim::GenerationCallback on_generation{};
   /// @throws hula::Error(Errc::InvalidOption) naming `nsga2.<field>` / `lm.<field>` out of range
   void validate() const;
 };

@@ -343,6 +343,10 @@ FairingResult fair_knots_ga(const KnotFairingSetup& setup, std::span<const doubl
       if (std::isfinite(s.best)) running_best = std::min(running_best, s.best * scale);
       result.convergence.push_back(running_best);
       if (log != nullptr) log->append(g);
+      // The caller's own callback (progress of a server job) sees every round's generations.
+      const optim::GenerationCallback& caller =
+          options.algorithm == FairingGa::Binary ? options.binary.run.on_generation : options.real.run.on_generation;
+      if (caller) caller(g);
     };
     optim::GaResult r;
     if (options.algorithm == FairingGa::Binary) {

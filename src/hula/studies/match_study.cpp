@@ -51,6 +51,7 @@ optim::GaResult run_ga(const CurvatureMatch& match, const MatchStudy& study, Mat
     }
     result.convergence.push_back(best);
     if (keep_log) result.log.append(log);
+    if (study.header.on_generation) study.header.on_generation(log);
   };
   if (g.algorithm == MatchGaSettings::Algorithm::Binary) {
     optim::BinaryGaOptions o;

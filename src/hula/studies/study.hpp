@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <string>
 
+#include "hula/optim/run_log.hpp"
 #include "hula/optim/run_report.hpp"
 
 namespace hula::studies {
@@ -26,6 +27,9 @@ struct StudyHeader {
   /// Cancellation token (SIGINT) the optimiser checks between generations, not
   /// owned. Set by the caller, not a file member. Default none.
   const optim::CancellationToken* cancel = nullptr;
+  /// Called with each generation of the study's optimiser (progress of a server job). Set by the
+  /// caller, not a file member. Default none.
+  optim::GenerationCallback on_generation{};
 };
 
 }  // namespace hula::studies

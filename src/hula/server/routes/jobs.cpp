@@ -7,6 +7,11 @@
 // POST /api/jobs {"document": name, "study": study file} runs the study in one
 // transaction of the document (oli::run_study): the study entity, its run and
 // its result curves are stored in the document, or nothing is if it fails.
+// Its events are the problem job's plus "study" (the kind), with generations
+// counted across the study's optimiser runs (docs/server.md "Study jobs");
+// cancelling it stores the best so far.
+#include <chrono>
+
 #include "hula/io/json_read.hpp"
 #include "hula/oli/study_run.hpp"
 #include "hula/server/problem_job.hpp"
@@ -24,13 +29,36 @@ std::shared_ptr<Job> find_job(JobPool& jobs, const Request& request) {
 
 // The work of a study job: one transaction of the document, holding its writer lock while it runs.
 JobWork study_job(std::shared_ptr<OpenDocument> doc, Json study, std::filesystem::path workspace) {
-  return [doc = std::move(doc), study = std::move(study), workspace = std::move(workspace)](JobContext&) {
+  return [doc = std::move(doc), study = std::move(study), workspace = std::move(workspace)](JobContext& context) {
+    const auto start = std::chrono::steady_clock::now();
+    const std::string kind = study.value("study", Json()).is_string() ? study["study"].get<std::string>() : "";
+    // Generations and evaluations run on across the study's optimiser runs (each restarts at 0).
+    std::size_t generations = 0, evaluations_before = 0, evaluations = 0;
+    oli::StudyRunOptions options;
+    options.cancel = &context.cancel;
+    options.on_generation = [&](const optim::GenerationLog& g) {
+      if (g.generation == 0) evaluations_before = evaluations;
+      evaluations = evaluations_before + g.evaluations;
+      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      Json e = generation_event(g, elapsed);
+      e["generation"] = generations++;
+      e["evaluations"] = evaluations;
+      e["study"] = kind;
+      context.publish(e);
+    };
     oli::StudyRunResult run;
     const oli::Outcome o = doc->write([&](oli::Document& d) {
-      return d.transact("run study", [&](oli::Edit& e) { run = oli::run_study(e, study, workspace); });
+      return d.transact("run study", [&](oli::Edit& e) { run = oli::run_study(e, study, workspace, options); });
     });
     o.throw_if_failed();
     JobOutcome out;
+    out.cancelled = run.cancelled;
+    out.report = Json::object();
+    out.report["study"] = run.kind;
+    out.report["termination"] = run.cancelled ? "Cancelled" : "Completed";
+    out.report["generations"] = generations;
+    out.report["evaluations"] = evaluations;
+    out.report["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     Json curves = Json::array();
     for (const oli::Label l : run.curves) curves.push_back(l.value);
     out.result = Json::object();
