@@ -422,7 +422,8 @@ export class App {
 
   /** Ask the server for what the views draw; one request per curve in flight, the latest wins. */
   refreshAnalysis(label: string): void {
-    if (!this.store.entities.has(label)) return;
+    // Only curves have an analysis (a study entity is refused by the route).
+    if (!this.store.entities.get(label)?.curve) return;
     if (this.analysisBusy.has(label)) {
       this.analysisDirty.add(label);
       return;
