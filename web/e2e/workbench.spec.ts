@@ -262,6 +262,9 @@ test('edit the curvature graph', async ({ page }) => {
   };
   expect(turn(a0)).toBeLessThan(0);
   expect(turn(a1)).toBeLessThan(0);
+  // The rebuilt curve stays a designer's curve: tens of control points, not thousands.
+  const rebuilt = (await entity(doc, label)).curve as { control_points: number[][] };
+  expect(rebuilt.control_points.length).toBeLessThan(100);
   await shot(page, 'design-by-curvature');
 });
 
