@@ -30,13 +30,15 @@ const planarSpline: CurveFile = {
   ],
   parameterisation: 'chord',
 };
+// A twisted cubic: its control points are not coplanar (det[P1−P0, P2−P0, P3−P0] = −16000), so
+// its torsion is non-zero. (The previous [100, 0, 50] end made the four points coplanar.)
 const spaceBezier: CurveFile = {
   kind: 'bezier',
   control_points: [
     [0, 0, 0],
     [30, 40, 10],
     [70, 40, 30],
-    [100, 0, 50],
+    [100, 0, 60],
   ],
   weights: null,
 };
@@ -116,6 +118,7 @@ test('drag a control point, then undo and redo', async ({ page }) => {
   await selectCurve(page, label);
   const before = await page.evaluate(() => Array.from(window.__hula.app.graphs[0]!.ys));
   const steps0 = (await history(doc)).steps.length;
+  const a0 = await analysis(doc, label);
   const from = await pixelOf(page, 'top', [30, 40, 10]);
   await page.mouse.move(from.x, from.y);
   await page.mouse.down();
@@ -134,7 +137,21 @@ test('drag a control point, then undo and redo', async ({ page }) => {
   expect(after).not.toEqual(before);
   const h = await history(doc);
   expect(h.steps.length).toBe(steps0 + 1);
+  // The ghost: the curve before the drag (the server's analysis of the old revision) stays drawn
+  // faintly and its κ is overlaid on the graph; Escape clears it.
+  const ghost = await page.evaluate(() => window.__hula.app.ghost?.analysis);
+  expect(ghost!.points).toHaveLength(a0.points.length);
+  ghost!.points.forEach((p, i) => {
+    for (let k = 0; k < 3; k++) expect(Math.abs(p[k]! - a0.points[i]![k]!)).toBeLessThan(1e-9);
+  });
+  await expect(page.locator('#viewports')).toHaveAttribute('data-ghost', String(a0.points.length));
+  const overlay = await page.evaluate(() => Array.from(window.__hula.app.graphs[0]!.overlay ?? []));
+  expect(overlay).toHaveLength(a0.kappa.length);
+  expect(Math.abs(overlay[0]! - a0.kappa[0]!)).toBeLessThan(1e-9);
   await shot(page, 'drag-with-graphs');
+  await page.locator('#viewports .view[data-view="top"]').focus();
+  await page.keyboard.press('Escape');
+  await expect(page.locator('#viewports')).toHaveAttribute('data-ghost', '');
 
   await page.locator('#viewports .view[data-view="top"]').focus();
   await page.keyboard.press('Control+z');
@@ -156,9 +173,7 @@ test('drag a control point, then undo and redo', async ({ page }) => {
 });
 
 // Appendix 8.4/8.6: a planar curve shows only curvature and normal fins; a space curve all of them.
-// TODO(#13): fails against the merged server: the space curve is drawn as planar (no torsion or
-// binormal fin); the page's planarity test and the analysis route's flag disagree.
-test.fixme('fins on a planar and a space curve', async ({ page }) => {
+test('fins on a planar and a space curve', async ({ page }) => {
   needsDocuments();
   const doc = await newDoc('fins');
   const planar = await addCurve(doc, 'planar', planarSpline);
@@ -181,12 +196,27 @@ test.fixme('fins on a planar and a space curve', async ({ page }) => {
   expect(a.planar).toBe(true);
   expect(Object.keys(a.fins).sort()).toEqual(['curvature', 'torsion']);
   await selectCurve(page, space);
+  // The combs are visible at the default scale 1: the longest curvature fin drawn is 15 % of the
+  // curve's extent (κ_max of the analysis samples; the fins sit at other samples, so close to that) and a
+  // unit (normal) fin 10 %, not κ_max ≈ 0.02 or 1 model unit.
+  const drawn = (await page.evaluate((l) => window.__hula.app.drawnAnalysis(l), space)) as Analysis;
+  const lo = [0, 1, 2].map((k) => Math.min(...drawn.points.map((p) => p[k]!)));
+  const hi = [0, 1, 2].map((k) => Math.max(...drawn.points.map((p) => p[k]!)));
+  const extent = Math.hypot(...hi.map((h, k) => h - lo[k]!));
+  const longest = (kind: 'curvature' | 'normal'): number =>
+    Math.max(
+      ...drawn.fins[kind]!.filter((l) => l.length === 2).map(([b, t]) =>
+        Math.hypot(...[0, 1, 2].map((k) => t![k]! - b![k]!)),
+      ),
+    );
+  expect(longest('curvature') / extent).toBeGreaterThan(0.13);
+  expect(longest('curvature') / extent).toBeLessThan(0.155);
+  expect(Math.abs(longest('normal') / extent - 0.1)).toBeLessThan(1e-6);
   await shot(page, 'fins-space-curve');
 });
 
 // Design by curvature: drag the κ(s) graph up at mid-length; the server's κ there follows the edit.
-// TODO(#13): times out waiting for idle after the κ-graph drag against the merged server.
-test.fixme('edit the curvature graph', async ({ page }) => {
+test('edit the curvature graph', async ({ page }) => {
   needsDocuments();
   const doc = await newDoc('design');
   const label = await addCurve(doc, 'arc', {
@@ -223,13 +253,23 @@ test.fixme('edit the curvature graph', async ({ page }) => {
   const a1 = await analysis(doc, label);
   const at = a1.s.findIndex((s) => s >= sMid);
   expect(Math.abs(a1.kappa[at]! - target)).toBeLessThan(0.15 * 0.01 + 1e-4);
+  // The rebuilt arch still turns clockwise like the original (its κ is 0 at the natural start,
+  // so the side it bends to comes from the first defined normal): z of T(0) × T(L) < 0.
+  const turn = (a: Analysis): number => {
+    const t0 = a.frames[0]!.T;
+    const t1 = a.frames[a.frames.length - 1]!.T;
+    return t0[0]! * t1[1]! - t0[1]! * t1[0]!;
+  };
+  expect(turn(a0)).toBeLessThan(0);
+  expect(turn(a1)).toBeLessThan(0);
+  // The rebuilt curve stays a designer's curve: tens of control points, not thousands.
+  const rebuilt = (await entity(doc, label)).curve as { control_points: number[][] };
+  expect(rebuilt.control_points.length).toBeLessThan(100);
   await shot(page, 'design-by-curvature');
 });
 
 // A curvature-matching study: progress events arrive, the result appears, the run is listed.
-// TODO(#13): the study job emits no per-generation events and never reports done to the panel
-// (oli::run_study has no callback or cancellation yet; see docs/server.md).
-test.fixme('run a curvature-matching study', async ({ page }) => {
+test('run a curvature-matching study', async ({ page }) => {
   needsDocuments();
   const doc = await newDoc('study');
   const label = await addCurve(doc, 'pts', {
@@ -251,6 +291,11 @@ test.fixme('run a curvature-matching study', async ({ page }) => {
   const gens = Number(await page.locator('#opt-info').getAttribute('data-generations'));
   expect(gens).toBeGreaterThan(1);
   await expect(page.locator('#opt-runs li')).toHaveCount(1);
+  // The result is in the document (server side): the original curve plus the study's result curve.
+  expect((await curves(doc)).length).toBeGreaterThanOrEqual(2);
+  // The study entity is not a curve: the page asks no analysis of it (no error toast).
+  await idle(page);
+  await expect(page.locator('.toast')).toHaveCount(0);
   await idle(page);
   await shot(page, 'optimise-convergence');
 });

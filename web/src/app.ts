@@ -3,6 +3,7 @@
 // replies and document events; the page draws, picks and snaps.
 
 import { ApiError, Client } from './api/client';
+import { finLines } from './api/adapt';
 import type { Analysis, ChangeReply, ChangeSet, CurveFile, Entity, FinKind } from './api/types';
 import { DocumentStore } from './store/store';
 import { Graph, type Abscissa, type Quantity } from './graphs/graph';
@@ -29,7 +30,15 @@ import { OptimisePanel } from './panels/optimise';
 
 export interface ViewSettings {
   fins: FinKind[];
+  /** The user's fin scale, relative to `finBase`. */
   scale: number;
+  /**
+   * Drawing factor per fin kind, fixed when first needed (so combs compare
+   * across edits): the longest curvature (torsion) fin is 15 % of the curve's
+   * extent, unit fins (normal, binormal, Bishop) 10 %. Without it a fin of
+   * κ = 0.01 at scale 1 is 0.01 long: invisible.
+   */
+  finBase?: Partial<Record<FinKind, number>>;
   samples: number;
   frames: boolean;
 }
@@ -89,6 +98,12 @@ export class App {
   private offline = false;
   private navigating: { view: ViewName; x: number; y: number; mode: 'pan' | 'orbit' } | null = null;
   private hoverIndex: number | null = null;
+  /**
+   * The ghost: the selected curve's analysis before the last drag or rebuild,
+   * drawn faintly in the views and overlaid on the graphs until another curve
+   * is selected or Escape clears it.
+   */
+  ghost: { label: string; analysis: Analysis } | null = null;
   /** Timestamps of pointer events of the current drag, for the latency benchmark. */
   readonly latencies: number[] = [];
   /** Pointer event to the frame that draws the server's curve for that position. */
@@ -371,9 +386,44 @@ export class App {
     return s;
   }
 
+  /** The drawing factors of a curve's fins (ViewSettings.finBase), from its analysis. */
+  finBase(label: string, a: Analysis): Partial<Record<FinKind, number>> {
+    const s = this.settingsOf(label);
+    s.finBase ??= {};
+    const lo = [Infinity, Infinity, Infinity];
+    const hi = [-Infinity, -Infinity, -Infinity];
+    for (const p of a.points)
+      for (let k = 0; k < 3; k++) {
+        lo[k] = Math.min(lo[k]!, p[k] ?? 0);
+        hi[k] = Math.max(hi[k]!, p[k] ?? 0);
+      }
+    const extent = Math.hypot(...hi.map((h, k) => h - lo[k]!)) || 1;
+    const largest = (v: (number | null)[]): number =>
+      Math.max(0, ...v.map((x) => (x !== null && Number.isFinite(x) ? Math.abs(x) : 0)));
+    for (const kind of Object.keys(a.combs) as FinKind[]) {
+      if (s.finBase[kind] !== undefined) continue;
+      const m = kind === 'curvature' ? largest(a.kappa) : kind === 'torsion' ? largest(a.tau) : 1;
+      if (m === 0) continue; // a zero comb: fix the factor once it has a size
+      s.finBase[kind] = (kind === 'curvature' || kind === 'torsion' ? 0.15 : 0.1) * (extent / m);
+    }
+    return s.finBase;
+  }
+
+  /** The analysis as drawn: its combs scaled by the fin factors. */
+  drawnAnalysis(label: string): Analysis | undefined {
+    const a = this.store.analyses.get(label);
+    if (!a) return undefined;
+    const base = this.finBase(label, a);
+    const fins: Analysis['fins'] = {};
+    for (const [kind, c] of Object.entries(a.combs) as [FinKind, Analysis['combs'][FinKind]][])
+      if (c) fins[kind] = finLines(c.base, c.tip, base[kind] ?? 1);
+    return { ...a, fins };
+  }
+
   /** Ask the server for what the views draw; one request per curve in flight, the latest wins. */
   refreshAnalysis(label: string): void {
-    if (!this.store.entities.has(label)) return;
+    // Only curves have an analysis (a study entity is refused by the route).
+    if (!this.store.entities.get(label)?.curve) return;
     if (this.analysisBusy.has(label)) {
       this.analysisDirty.add(label);
       return;
@@ -420,7 +470,7 @@ export class App {
     const a = this.store.analyses.get(label);
     const s = this.settingsOf(label);
     this.viewports.drawCurve(label, {
-      analysis: a,
+      analysis: this.drawnAnalysis(label),
       handles:
         handlesOverride ?? (this.drag?.label === label ? this.drag.handles : handlesOf(e.curve)),
       polygon:
@@ -442,6 +492,7 @@ export class App {
   select(label: string | null): void {
     const previous = this.selected;
     this.selected = label;
+    if (this.ghost && this.ghost.label !== label) this.setGhost(null);
     if (previous) this.redrawCurve(previous);
     if (label) this.redrawCurve(label);
     this.updateGraphs();
@@ -509,7 +560,16 @@ export class App {
 
   updateGraphs(): void {
     const a = this.selected ? this.store.analyses.get(this.selected) : undefined;
-    for (const g of this.graphs) g.show(a);
+    const ghost = this.ghost?.label === this.selected ? this.ghost.analysis : undefined;
+    for (const g of this.graphs) g.show(a, ghost);
+  }
+
+  /** Keep the curve's current analysis as the ghost (before an edit), or clear it. */
+  setGhost(label: string | null): void {
+    const a = label ? this.store.analyses.get(label) : undefined;
+    this.ghost = label && a ? { label, analysis: a } : null;
+    this.viewports.setGhost(this.ghost ? this.ghost.analysis.points : null);
+    this.updateGraphs();
   }
 
   /** Linked hover: a sample index from a graph or the curve highlights both. */
@@ -667,6 +727,7 @@ export class App {
         };
         this.latencies.length = 0;
         this.curveLatencies.length = 0;
+        this.setGhost(this.selected);
         this.setStatus(`Dragging point ${hit.index}`);
         return;
       }
@@ -912,7 +973,8 @@ export class App {
     else if (k === 'r') this.navMode = this.navMode === 'orbit' ? null : 'orbit';
     else if (k === 'escape') {
       this.navMode = null;
-      this.select(null);
+      if (this.ghost) this.setGhost(null);
+      else this.select(null);
     } else return;
     ev.preventDefault();
   }

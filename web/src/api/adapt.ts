@@ -71,25 +71,14 @@ export function analysisFromServer(j: Json, by: 'parameter' | 'arclength'): Anal
   const speed = column(j, 'speed').map((v) => v ?? NaN);
   const s = arcLength(j, pts, by);
   const fins: Partial<Record<FinKind, Point[][]>> = {};
+  const combs: Analysis['combs'] = {};
   const finList = Array.isArray(j['fins']) ? (j['fins'] as Json[]) : [];
   for (const comb of finList) {
     const kind = comb['kind'] as FinKind;
     const base = points(comb['base']);
-    const tip = points(comb['tip']);
-    const lines: Point[][] = [];
-    let envelope: Point[] = [];
-    base.forEach((b, i) => {
-      const q = tip[i] as Point | null | undefined;
-      if (!q) {
-        if (envelope.length > 1) lines.push(envelope);
-        envelope = [];
-        return;
-      }
-      lines.push([b, q]);
-      envelope.push(q);
-    });
-    if (envelope.length > 1) lines.push(envelope);
-    fins[kind] = lines;
+    const tip = points(comb['tip']) as (Point | null)[];
+    combs[kind] = { base, tip };
+    fins[kind] = finLines(base, tip, 1);
   }
   const features: Feature[] = [];
   const f = (j['features'] ?? {}) as Json;
@@ -121,7 +110,31 @@ export function analysisFromServer(j: Json, by: 'parameter' | 'arclength'): Anal
   // A curve is planar when its torsion is zero (or undefined) at every sample.
   const kmax = Math.max(1e-300, ...kappa.map((k) => Math.abs(k ?? 0)));
   const planar = tau.every((v) => v === null || Math.abs(v) <= 1e-9 * Math.max(1, kmax));
-  return { t, s, points: pts, kappa, tau, speed, planar, frames, fins, features };
+  return { t, s, points: pts, kappa, tau, speed, planar, frames, fins, combs, features };
+}
+
+/**
+ * A comb as polylines: one segment per fin from its base to base + factor ×
+ * (tip − base), and the envelope through the scaled tips, broken where a fin
+ * is undefined (null tip). The factor is a drawing scale only.
+ */
+export function finLines(base: Point[], tip: (Point | null)[], factor: number): Point[][] {
+  const lines: Point[][] = [];
+  let envelope: Point[] = [];
+  base.forEach((b, i) => {
+    const q = tip[i];
+    if (!q) {
+      if (envelope.length > 1) lines.push(envelope);
+      envelope = [];
+      return;
+    }
+    const t =
+      factor === 1 ? q : [0, 1, 2].map((k) => (b[k] ?? 0) + factor * ((q[k] ?? 0) - (b[k] ?? 0)));
+    lines.push([b, t]);
+    envelope.push(t);
+  });
+  if (envelope.length > 1) lines.push(envelope);
+  return lines;
 }
 
 /**

@@ -162,6 +162,8 @@ export interface Analysis {
   frames: Frame[];
   /** Per fin kind: the hairs (base → tip) and the envelope through the tips, as polylines. */
   fins: Partial<Record<FinKind, Point[][]>>;
+  /** The server's combs as sent: fin bases and tips (null where undefined). */
+  combs: Partial<Record<FinKind, { base: Point[]; tip: (Point | null)[] }>>;
   features: Feature[];
 }
 

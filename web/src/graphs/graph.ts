@@ -133,9 +133,13 @@ export class Graph {
   }
 
   private redraw(): void {
-    this.yRange = paddedRange(
-      this.overlay ? Float64Array.from([...this.ys, ...this.overlay]) : this.ys,
-    );
+    // The value axis stays put while the graph is dragged: rescaling it under
+    // the pointer made each move read a larger value than the last (the edit
+    // ran away: a 0.01 pull set κ 0.06 higher). It refits on the next show().
+    if (!this.dragging)
+      this.yRange = paddedRange(
+        this.overlay ? Float64Array.from([...this.ys, ...this.overlay]) : this.ys,
+      );
     const data: uPlot.AlignedData = [this.xs, this.ys, ...(this.overlay ? [this.overlay] : [])];
     const seriesCount = this.overlay ? 3 : 2;
     if (this.plot && this.plot.series.length === seriesCount) {
@@ -234,8 +238,8 @@ export class Graph {
     });
     const end = (ev: PointerEvent): void => {
       if (!this.dragging) return;
-      this.dragging = false;
       this.onDrag?.('end', ...at(ev));
+      this.dragging = false;
     };
     over.addEventListener('pointerup', end);
     over.addEventListener('pointercancel', end);

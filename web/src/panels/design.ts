@@ -13,7 +13,12 @@ const NODES = 64;
 
 /**
  * A law of s (docs/formats.md grammar) interpolating (xs, ys) linearly at
- * NODES uniform nodes over [0, length]: Σ v_i · max(0, 1 − |s − s_i| / h).
+ * NODES uniform nodes over [0, length], written as α + β·s + Σ c_i·|s − s_i|
+ * over the interior nodes s_i. Why this form: |linear| has a closed-form
+ * antiderivative in the law engine, so the server's natural-equation solver
+ * gets the exact tangent angle θ(s) = ∫κ ds (eq. 34); a sum of hat functions
+ * max(0, 1 − |s − s_i|/h) has none and sent the solver into minutes of
+ * adaptive quadrature over the kinks.
  */
 export function profileLaw(
   xs: ArrayLike<number>,
@@ -22,7 +27,7 @@ export function profileLaw(
   variable = 's',
 ): string {
   const h = length / (NODES - 1);
-  const terms: string[] = [];
+  const v: number[] = [];
   let j = 0;
   for (let i = 0; i < NODES; i++) {
     const s = i * h;
@@ -32,13 +37,20 @@ export function profileLaw(
     const y0 = ys[j]!;
     const y1 = ys[Math.min(j + 1, ys.length - 1)]!;
     const f = x1 > x0 ? Math.min(1, Math.max(0, (s - x0) / (x1 - x0))) : 0;
-    const v = Number.isFinite(y0) && Number.isFinite(y1) ? y0 + f * (y1 - y0) : 0;
-    if (v === 0) continue;
-    terms.push(
-      `${v.toPrecision(10)}*max(0, 1 - abs(${variable} - ${s.toPrecision(12)})/${h.toPrecision(12)})`,
-    );
+    v.push(Number.isFinite(y0) && Number.isFinite(y1) ? y0 + f * (y1 - y0) : 0);
   }
-  return terms.length ? terms.join(' + ') : '0';
+  // Slopes of the pieces; the slope jumps by 2 c_i at node i.
+  const m = v.slice(1).map((vi, i) => (vi - v[i]!) / h);
+  const beta = (m[0]! + m[m.length - 1]!) / 2;
+  let alpha = v[0]!;
+  const terms: string[] = [];
+  for (let i = 1; i < NODES - 1; i++) {
+    const c = (m[i]! - m[i - 1]!) / 2;
+    if (c === 0) continue;
+    alpha -= c * i * h; // |0 − s_i| at s = 0
+    terms.push(`${c.toPrecision(17)}*abs(${variable} - ${(i * h).toPrecision(17)})`);
+  }
+  return [alpha.toPrecision(17), `${beta.toPrecision(17)}*${variable}`, ...terms].join(' + ');
 }
 
 export class DesignByCurvature {
@@ -132,13 +144,18 @@ export class DesignByCurvature {
     length: number,
   ): Promise<void> {
     const p0 = a.points[0]!;
-    // The server's start frame; where it is undefined (a straight start), the
-    // chord direction and a perpendicular in the X-Y plane stand in.
+    // The server's start frame. Where N is undefined at the start (κ = 0 there,
+    // e.g. a natural spline's end), the nearest sample with a defined N gives
+    // the side the curve bends to (made normal to T); the left perpendicular
+    // in X-Y, which turned such curves the wrong way, is the last resort.
     const f0 = a.frames[0];
     const tangent =
       f0 && f0.T.every(Number.isFinite) ? f0.T : direction(a.points[0]!, a.points[1]!);
-    const normal = f0 && f0.N.every(Number.isFinite) ? f0.N : perpendicular(tangent);
+    const bent = a.frames.find((f) => f.N.every(Number.isFinite))?.N;
+    const normal = bent ? orthogonalTo(bent, tangent) : null;
+    const startNormal = normal ?? perpendicular(tangent);
     this.busy = true;
+    this.app.setGhost(label);
     try {
       const r = await this.app.run(() =>
         this.app.client.reconstruct({
@@ -146,7 +163,10 @@ export class DesignByCurvature {
           tau,
           length,
           start_point: [p0[0] ?? 0, p0[1] ?? 0, p0[2] ?? 0],
-          start_frame: { tangent, normal },
+          start_frame: { tangent, normal: startNormal },
+          // 1e-5 of the length: a 130-long arch fits in ~21 control points (0.2 s) where the
+          // route's default tolerance gave 2,295 (a band of handles, heavy to drag).
+          tolerance: Math.min(0.1, Math.max(1e-9, 1e-5 * length)),
         }),
       );
       if (!r) return;
@@ -182,6 +202,14 @@ function direction(a: number[], b: number[]): number[] {
   const d = [0, 1, 2].map((k) => (b[k] ?? 0) - (a[k] ?? 0));
   const n = Math.hypot(...d) || 1;
   return d.map((x) => x / n);
+}
+
+/** The unit part of v normal to the unit vector t, or null when v ∥ t. */
+export function orthogonalTo(v: number[], t: number[]): number[] | null {
+  const d = [0, 1, 2].reduce((acc, k) => acc + (v[k] ?? 0) * (t[k] ?? 0), 0);
+  const w = [0, 1, 2].map((k) => (v[k] ?? 0) - d * (t[k] ?? 0));
+  const n = Math.hypot(...w);
+  return n > 1e-9 ? w.map((x) => x / n) : null;
 }
 
 function perpendicular(t: number[]): number[] {

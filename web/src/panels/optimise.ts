@@ -178,11 +178,9 @@ export class OptimisePanel {
       body =
         this.kind.value === 'problem'
           ? parsed
-          : {
-              study: parsed,
-              document: this.app.store.name,
-              ...(this.app.selected ? { entity: this.app.selected } : {}),
-            };
+          : // docs/server.md: exactly {"document", "study"}; the study file carries the
+            // selected curve's data ("From selection"), an extra "entity" member is refused.
+            { study: parsed, document: this.app.store.name };
     } catch (e) {
       this.app.toast(
         new Error(`study text is not JSON: ${e instanceof Error ? e.message : String(e)}`),

@@ -1,5 +1,5 @@
-// Side panels: properties with numeric entry (points, weights, knots, degree,
-// end conditions), interrogation (fins, frames, Combescure, continuity
+// Side panels: properties with numeric entry (points, weights; knots and
+// degree shown, end conditions), interrogation (fins, frames, continuity
 // badges), history; and the dialogs (law curve, natural equations, open/new, help).
 
 import type { App } from '../app';
@@ -36,7 +36,7 @@ export const SHORTCUTS: [string, string][] = [
   ['K', 'curve from κ(s), τ(s) (natural equations)'],
   ['I', 'import a curve file (JSON)'],
   ['Enter / right-click', 'finish the current tool'],
-  ['Escape', 'cancel the tool, clear the selection'],
+  ['Escape', 'cancel the tool, clear the ghost (the faint previous curve), then the selection'],
   ['Ctrl+Z / Ctrl+Shift+Z', 'undo / redo'],
   ['Delete', 'delete the selected curve'],
   ['F', 'fit all'],

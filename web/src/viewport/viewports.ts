@@ -80,6 +80,8 @@ export class Viewports {
   private readonly preview: THREE.Line;
   private readonly previewPoints: THREE.Points;
   private readonly marker: THREE.Mesh;
+  /** The faint previous curve (before a drag or a rebuild), for comparison. */
+  private readonly ghost: THREE.Line;
   private frameRequested = 0;
   /** Frames drawn so far (benchmarks) and callbacks after each frame. */
   frames = 0;
@@ -107,7 +109,12 @@ export class Viewports {
       new THREE.MeshBasicMaterial({ color: 0xffe14d }),
     );
     this.marker.visible = false;
-    this.scene.add(this.preview, this.previewPoints, this.marker);
+    this.ghost = new THREE.Line(
+      new THREE.BufferGeometry(),
+      new THREE.LineBasicMaterial({ color: 0xc8d2e0, transparent: true, opacity: 0.35 }),
+    );
+    this.ghost.visible = false;
+    this.scene.add(this.preview, this.previewPoints, this.marker, this.ghost);
     new ResizeObserver(() => {
       this.resize();
     }).observe(root);
@@ -508,6 +515,14 @@ export class Viewports {
     setPositions(this.preview.geometry, points);
     this.preview.computeLineDistances();
     setPositions(this.previewPoints.geometry, points);
+    this.requestRender();
+  }
+
+  /** Show the ghost polyline (the curve as it was), or hide it. */
+  setGhost(points: readonly Point[] | null): void {
+    this.ghost.visible = points !== null && points.length > 1;
+    if (points) setPositions(this.ghost.geometry, points);
+    this.root.dataset['ghost'] = this.ghost.visible ? String(points!.length) : '';
     this.requestRender();
   }
 
