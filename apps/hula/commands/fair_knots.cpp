@@ -3,21 +3,31 @@
 // "fair-knots" study file — chord-length start, the given parameters,
 // the energy map, GA and/or deterministic fairing — as JSON, with the
 // before/after curves (curvature fins), the energy map and the convergence
-// graphs as SVG and the map as CSV under --svg DIR.
+// graphs as SVG and the map as CSV under --svg DIR. `--occt` adds Open
+// CASCADE's fairing baselines (oli/kernel/occt_fairing.hpp: FairCurve_Batten
+// fixed and sliding, FairCurve_MinimalVariation) with the best curve's end
+// tangents and curvatures, their energies and deviations from the data points
+// under "occt", and `baselines.svg` with every curve and its curvature comb.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <limits>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "commands/common.hpp"
 #include "commands/study_common.hpp"
 #include "hula/diffgeom/fins.hpp"
+#include "hula/diffgeom/frenet.hpp"
 #include "hula/io/atomic_file.hpp"
 #include "hula/io/fair_knots_study_file.hpp"
 #include "hula/io/json_curve.hpp"
+#ifdef HULA_WITH_OCCT
+#include "hula/oli/kernel/occt_fairing.hpp"
+#endif
 
 namespace hula::cli {
 
@@ -42,6 +52,41 @@ Json result_to_json(const studies::FairingResult& r, double chord_energy) {
   return out;
 }
 
+// Fin scale for `curve`: its longest fin is a quarter of the data's extent.
+double fin_scale(const studies::KnotFairingSetup& setup, const nurbs::NurbsCurve& curve) {
+  double extent = 0.0;
+  for (const Vec3& a : setup.points)
+    for (const Vec3& b : setup.points) extent = std::max(extent, norm(a - b));
+  diffgeom::FinOptions fo;
+  fo.density = 150;
+  const diffgeom::Fins unit = diffgeom::fins(curve, fo);
+  double longest = 0.0;
+  for (std::size_t i = 0; i < unit.t.size(); ++i)
+    if (unit.defined[i]) longest = std::max(longest, norm(unit.tip[i] - unit.base[i]));
+  return longest > 0.0 ? 0.25 * extent / longest : 1.0;
+}
+
+// The curvature fins of `curve` (segments in `fin_colour`) and the comb line through their tips.
+void add_fins(io::SvgFigure& fig, const nurbs::NurbsCurve& curve, double scale, const char* fin_colour,
+              const char* comb_colour, const std::string& legend) {
+  diffgeom::FinOptions fo;
+  fo.density = 150;
+  fo.scale = scale;
+  const diffgeom::Fins f = diffgeom::fins(curve, fo);
+  std::vector<double> x0, y0, x1, y1, tx, ty;
+  for (std::size_t i = 0; i < f.t.size(); ++i) {
+    tx.push_back(f.defined[i] ? f.tip[i].x : std::numeric_limits<double>::quiet_NaN());
+    ty.push_back(f.defined[i] ? f.tip[i].y : std::numeric_limits<double>::quiet_NaN());
+    if (!f.defined[i]) continue;
+    x0.push_back(f.base[i].x);
+    y0.push_back(f.base[i].y);
+    x1.push_back(f.tip[i].x);
+    y1.push_back(f.tip[i].y);
+  }
+  fig.add_segments(x0, y0, x1, y1, io::SvgStyle{.stroke = fin_colour, .width = 0.8});
+  fig.add_polyline(tx, ty, io::SvgStyle{.stroke = comb_colour, .width = 1.0}, legend);
+}
+
 // The curve with its curvature fins (Figures 59, 63, 65–67), the data points,
 // and optionally a reference curve dashed.
 io::SvgFigure curve_figure(const studies::KnotFairingSetup& setup, const studies::ParameterEvaluation& e,
@@ -57,30 +102,7 @@ io::SvgFigure curve_figure(const studies::KnotFairingSetup& setup, const studies
       y.push_back(p.y);
     }
   };
-  // Fin scale: the longest fin is a quarter of the data's extent.
-  double extent = 0.0;
-  for (const Vec3& a : setup.points)
-    for (const Vec3& b : setup.points) extent = std::max(extent, norm(a - b));
-  diffgeom::FinOptions fo;
-  fo.density = 150;
-  const diffgeom::Fins unit = diffgeom::fins(e.curve, fo);
-  double longest = 0.0;
-  for (std::size_t i = 0; i < unit.t.size(); ++i)
-    if (unit.defined[i]) longest = std::max(longest, norm(unit.tip[i] - unit.base[i]));
-  fo.scale = longest > 0.0 ? 0.25 * extent / longest : 1.0;
-  const diffgeom::Fins f = diffgeom::fins(e.curve, fo);
-  std::vector<double> x0, y0, x1, y1, tx, ty;
-  for (std::size_t i = 0; i < f.t.size(); ++i) {
-    tx.push_back(f.defined[i] ? f.tip[i].x : std::numeric_limits<double>::quiet_NaN());
-    ty.push_back(f.defined[i] ? f.tip[i].y : std::numeric_limits<double>::quiet_NaN());
-    if (!f.defined[i]) continue;
-    x0.push_back(f.base[i].x);
-    y0.push_back(f.base[i].y);
-    x1.push_back(f.tip[i].x);
-    y1.push_back(f.tip[i].y);
-  }
-  fig.add_segments(x0, y0, x1, y1, io::SvgStyle{.stroke = "#9ecae1", .width = 0.8});
-  fig.add_polyline(tx, ty, io::SvgStyle{.stroke = "#3182bd", .width = 1.0}, "curvature fins");
+  add_fins(fig, e.curve, fin_scale(setup, e.curve), "#9ecae1", "#3182bd", "curvature fins");
   if (reference != nullptr) {
     std::vector<double> rx, ry;
     sample(reference->curve, rx, ry);
@@ -108,7 +130,71 @@ std::string fmt(double v) {
   return buf;
 }
 
-int run_fair_knots(const StudyArgs& args) {
+#ifdef HULA_WITH_OCCT
+// Open CASCADE's baselines with the end tangents and curvatures of `reference` (the best curve): their energies
+// and deviations under "occt", and their curves with combs beside the study's in baselines.svg.
+Json occt_baselines(const studies::KnotFairingSetup& setup, const nurbs::NurbsCurve& reference,
+                    const std::vector<std::pair<std::string, const nurbs::NurbsCurve*>>& studied,
+                    const std::optional<std::filesystem::path>& svg) {
+  const auto dom = reference.domain();
+  std::vector<diffgeom::FrenetPoint> ends(2);
+  const double ts[2] = {dom.start, dom.end};
+  diffgeom::frenet(reference, ts, ends);
+  const oli::FairingEnds e{.p1 = setup.points.front(),
+                           .p2 = setup.points.back(),
+                           .t1 = ends[0].tangent,
+                           .t2 = ends[1].tangent,
+                           .k1 = ends[0].tangent_defined ? ends[0].signed_curvature : 0.0,
+                           .k2 = ends[1].tangent_defined ? ends[1].signed_curvature : 0.0};
+  const std::vector<oli::FairingBaseline> b = oli::occt_fairing_baselines(e, setup.points);
+  auto num = [](double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); };
+  Json out = Json::object();
+  out["ends"] = Json{{"tangent_angles", Json::array({std::atan2(e.t1.y, e.t1.x), std::atan2(e.t2.y, e.t2.x)})},
+                     {"curvatures", Json::array({e.k1, e.k2})}};
+  out["curves"] = Json::array();
+  for (const oli::FairingBaseline& c : b)
+    out["curves"].push_back(Json{{"name", c.name},
+                                 {"status", c.status},
+                                 {"bending", num(c.bending)},
+                                 {"variation", num(c.variation)},
+                                 {"max_deviation", num(c.max_deviation)},
+                                 {"mean_deviation", num(c.mean_deviation)},
+                                 {"tangent_error", num(c.tangent_error)},
+                                 {"curve", c.curve ? io::curve_to_json(*c.curve) : Json(nullptr)}});
+  if (svg) {
+    io::SvgFigure fig(900, 700);
+    fig.set_title("fairing baselines: the studies' curves and Open CASCADE's, with curvature combs");
+    fig.set_equal_aspect(true);
+    const double scale = fin_scale(setup, reference);
+    const char* colours[] = {"#000000", "#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e"};
+    std::size_t k = 0;
+    auto draw = [&](const nurbs::NurbsCurve& c, const std::string& name) {
+      const char* colour = colours[k++ % 6];
+      add_fins(fig, c, scale, colour, colour, name + " comb");
+      std::vector<double> x, y;
+      for (int i = 0; i <= 600; ++i) {
+        const Vec3 p = c.evaluate(c.domain().start + c.domain().length() * i / 600.0);
+        x.push_back(p.x);
+        y.push_back(p.y);
+      }
+      fig.add_polyline(x, y, io::SvgStyle{.stroke = colour, .width = 2.0}, name);
+    };
+    for (const auto& [name, c] : studied) draw(*c, name);
+    for (const oli::FairingBaseline& c : b)
+      if (c.curve) draw(*c.curve, "OCCT " + c.name);
+    std::vector<double> px, py;
+    for (const Vec3& q : setup.points) {
+      px.push_back(q.x);
+      py.push_back(q.y);
+    }
+    fig.add_points(px, py, io::SvgStyle{.stroke = "#444444", .fill = "#444444"}, 4.0, "data points");
+    write_svg(*svg, "baselines", fig);
+  }
+  return out;
+}
+#endif
+
+int run_fair_knots(const StudyArgs& args, bool occt) {
   const io::StudyDocument doc = load_study(args, "fair-knots");
   studies::FairKnotsStudy study = io::fair_knots_study_from_json(doc);
   // --time and Ctrl-C end each optimiser with its best so far ("stopped": true).
@@ -166,6 +252,19 @@ int run_fair_knots(const StudyArgs& args) {
     for (std::size_t i = 0; i < chord.size(); ++i)
       dp = std::max(dp, std::abs(ga->best.parameters[i] - det->best.parameters[i]));
     out["agreement"] = Json{{"relative_energy", ga->best.energy / det->best.energy - 1.0}, {"max_parameter", dp}};
+  }
+  if (occt) {
+#ifdef HULA_WITH_OCCT
+    const nurbs::NurbsCurve* reference = &before.curve;
+    if (ga) reference = &ga->best.curve;
+    if (det && (!ga || det->best.energy < ga->best.energy)) reference = &det->best.curve;
+    std::vector<std::pair<std::string, const nurbs::NurbsCurve*>> studied{{"chord length", &before.curve}};
+    if (ga) studied.emplace_back("GA", &ga->best.curve);
+    if (det) studied.emplace_back("Nelder-Mead", &det->best.curve);
+    out["occt"] = occt_baselines(setup, *reference, studied, args.svg);
+#else
+    throw Error(Errc::Unsupported, "--occt needs a build with Open CASCADE (HULA_WITH_OCCT)", {.field = "--occt"});
+#endif
   }
   if (args.log && run_ga) write_run_log(log, *args.log);
   if (args.svg) {
@@ -243,7 +342,11 @@ Command add_fair_knots(CLI::App& app) {
       "--svg DIR writes curve_before.svg, curve_after.svg (curves with curvature fins), convergence.svg, and with "
       "a \"map\" energy_map.svg, energy_map.csv and (with map.sections) energy_sections.svg. --log writes the GA's run "
       "log (all rounds).");
-  return {sub, [args] { return run_fair_knots(*args); }};
+  auto occt = std::make_shared<bool>(false);
+  sub->add_flag("--occt", *occt,
+                "Add Open CASCADE's fairing baselines (FairCurve_Batten fixed and sliding, FairCurve_MinimalVariation) "
+                "with the best curve's end tangents and curvatures: \"occt\" in the output, baselines.svg under --svg");
+  return {sub, [args, occt] { return run_fair_knots(*args, *occt); }};
 }
 
 }  // namespace hula::cli

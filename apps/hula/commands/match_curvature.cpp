@@ -32,6 +32,7 @@ namespace {
 struct MatchArgs {
   StudyArgs study;
   std::optional<std::string> method;
+  std::optional<std::string> abscissa;
 };
 
 void add_curve(io::SvgFigure& fig, const nurbs::NurbsCurve& curve, std::span<const Vec3> points,
@@ -158,7 +159,11 @@ void write_figures(const std::filesystem::path& dir, const studies::CurvatureMat
 }
 
 int run_match(const MatchArgs& a) {
-  const io::StudyDocument doc = load_study(a.study, "match-curvature");
+  io::StudyDocument doc = load_study(a.study, "match-curvature");
+  // --abscissa replaces the file's member before it is read, so a target given "of_points" is derived in it.
+  if (a.abscissa)
+    doc.body["abscissa"] =
+        std::string(studies::profile_abscissa_name(studies::profile_abscissa_from_name(*a.abscissa, "--abscissa")));
   const std::filesystem::path base = std::filesystem::path(a.study.study).parent_path();
   io::MatchStudyFile file = io::match_study_from_json(doc, io::relative_to(base));
   studies::MatchStudy& study = file.study;
@@ -280,6 +285,9 @@ Command add_match_curvature(CLI::App& app) {
       "Match a prescribed curvature profile by moving data points (GA, or GA + Levenberg-Marquardt)");
   add_study_options(sub, a->study);
   sub->add_option("--method", a->method, "ga | hybrid | direct (overrides the study file's \"method\")");
+  sub->add_option("--abscissa", a->abscissa,
+                  "arclength | parameter: what the target's u measures (overrides the study file's \"abscissa\"; "
+                  "direct converts a parameter target to arc length through the start spline)");
   return {sub, [a] { return run_match(*a); }};
 }
 
