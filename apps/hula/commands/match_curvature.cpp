@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "commands/common.hpp"
+#include "commands/fairing_baselines.hpp"
 #include "commands/study_common.hpp"
 #include "hula/diffgeom/frenet.hpp"
 #include "hula/io/match_study_file.hpp"
@@ -33,6 +34,7 @@ struct MatchArgs {
   StudyArgs study;
   std::optional<std::string> method;
   std::optional<std::string> abscissa;
+  bool occt = false;
 };
 
 void add_curve(io::SvgFigure& fig, const nurbs::NurbsCurve& curve, std::span<const Vec3> points,
@@ -173,7 +175,24 @@ int run_match(const MatchArgs& a) {
   const studies::MatchResult result = studies::run_curvature_match(match, study, a.study.log.has_value());
   if (a.study.log) write_run_log(result.log, *a.study.log);
   if (a.study.svg) write_figures(*a.study.svg, match, result);
-  print_json(io::match_result_to_json(match, file, result));
+  Json out = io::match_result_to_json(match, file, result);
+  if (a.occt) {
+    // Open CASCADE's fairing baselines with the ends of the best curve (the direct route's NURBS, else the spline
+    // through the best points), measured against the best points.
+    if (study.setup.dimension != 2)
+      throw Error(Errc::InvalidArgument, "--occt compares planar curves: the study's points are 3-D",
+                  {.field = "--occt"});
+    const std::size_t n = study.setup.points.size();
+    std::vector<Vec3> start(n), best(n);
+    match.points_from(result.start, start);
+    match.points_from(result.best, best);
+    const nurbs::NurbsCurve start_curve = match.sampler().curve(start);
+    const nurbs::NurbsCurve best_curve =
+        result.direct && result.direct->nurbs ? result.direct->nurbs->curve : match.sampler().curve(best);
+    const std::vector<Vec3>& measured = result.direct ? result.direct_points : best;
+    out["occt"] = occt_baselines(measured, best_curve, {{"start", &start_curve}, {"best", &best_curve}}, a.study.svg);
+  }
+  print_json(out);
   return kExitOk;
 }
 
@@ -288,6 +307,9 @@ Command add_match_curvature(CLI::App& app) {
   sub->add_option("--abscissa", a->abscissa,
                   "arclength | parameter: what the target's u measures (overrides the study file's \"abscissa\"; "
                   "direct converts a parameter target to arc length through the start spline)");
+  sub->add_flag("--occt", a->occt,
+                "Add Open CASCADE's fairing baselines between the best curve's ends with its end tangents and "
+                "curvatures: \"occt\" in the output, baselines.svg under --svg (planar studies)");
   return {sub, [a] { return run_match(*a); }};
 }
 
