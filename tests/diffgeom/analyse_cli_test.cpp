@@ -115,6 +115,19 @@ TEST(AnalyseCli, Features) {
   EXPECT_EQ(ft["knots"][0]["right"].size(), 4U);
   EXPECT_TRUE(ft["curvature_extrema"].is_array());
   EXPECT_TRUE(ft["torsion_extrema"].empty());  // planar: τ = 0 is never a strict extremum
+  // Curvature monotonicity against the closed form: the signed κ = 6x / (1 + (3x² − 1)²)^{3/2} (x = 2t − 1) has its
+  // extrema where 5u² + 6u − 1 = 0, u = 3x² − 1, i.e. x = ±0.618688 (t = 0.190656, 0.809344); the inflection at
+  // t = 0.5 is not a violation in the signed analysis. Pieces: decreasing, increasing, decreasing.
+  const json& m = ft["curvature_monotonicity"];
+  EXPECT_FALSE(m["monotone"].get<bool>());
+  const double x_ext = std::sqrt((1.0 + (-6.0 + std::sqrt(56.0)) / 10.0) / 3.0);
+  ASSERT_EQ(m["violations"].size(), 2U);
+  EXPECT_NEAR(m["violations"][0]["t"].get<double>(), (1.0 - x_ext) / 2.0, 1e-6);
+  EXPECT_NEAR(m["violations"][1]["t"].get<double>(), (1.0 + x_ext) / 2.0, 1e-6);
+  ASSERT_EQ(m["pieces"].size(), 3U);
+  EXPECT_EQ(m["pieces"][0]["trend"], "decreasing");
+  EXPECT_EQ(m["pieces"][1]["trend"], "increasing");
+  EXPECT_EQ(m["pieces"][2]["trend"], "decreasing");
 }
 
 // checks --svg writes curve.svg, kappa.svg and tau.svg (complete SVG documents with a drawn line) and still

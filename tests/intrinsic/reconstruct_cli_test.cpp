@@ -125,5 +125,43 @@ TEST(ReconstructCli, BadValuesAndUsage) {
   EXPECT_EQ(error_of(usage)["code"], "UsageError");
 }
 
+// checks: with --end-point on the unit circle's own quarter-turn end (1, 1, 0) the boundary-value route needs no
+// correction (mean |δκ| ≈ 0, the closed-form circle), and with a different end and --free-length it lands on it.
+TEST(ReconstructCli, EndPointHeldPlanar) {
+  const ProcessResult r =
+      hula({"reconstruct", "--kappa", "1", "--tau", "0", "--length", "1.5707963267948966", "--end-point", "1,1,0"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_LT(j["direct"]["mean_curvature_deviation"].get<double>(), 1e-8);
+  const json& end = j["points"][4]["position"];
+  EXPECT_NEAR(end[0].get<double>(), 1.0, 1e-9);
+  EXPECT_NEAR(end[1].get<double>(), 1.0, 1e-9);
+  const ProcessResult f = hula({"reconstruct", "--kappa", "1", "--tau", "0", "--length", "1.5707963267948966",
+                                "--end-point", "1.3,0.9,0", "--free-length"});
+  ASSERT_EQ(f.exit_code, 0) << f.err;
+  const json jf = json::parse(f.out);
+  EXPECT_NE(jf["direct"]["length"].get<double>(), 1.5707963267948966);
+  EXPECT_NEAR(jf["points"][4]["position"][0].get<double>(), 1.3, 1e-8);
+  EXPECT_NEAR(jf["points"][4]["position"][1].get<double>(), 0.9, 1e-8);
+}
+
+// checks: the space boundary-value route on the CLI: a helix held to an end point and an end tangent away from its
+// own meets both (end errors ≤ 1e-9·L) and reports torsion corrections; --free-length alone is refused.
+TEST(ReconstructCli, EndPointAndTangentHeldInSpace) {
+  const ProcessResult r = hula({"reconstruct", "--kappa", "0.16", "--tau", "0.08", "--length", "20", "--end-point",
+                                "-3,8,5", "--end-tangent", "-1,-0.2,0.4", "--at", "20"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_FALSE(j["direct"]["planar"].get<bool>());
+  EXPECT_LE(j["direct"]["end_point_error"].get<double>(), 2e-8);
+  EXPECT_LE(j["direct"]["end_tangent_error"].get<double>(), 1e-9);
+  EXPECT_TRUE(j["direct"].contains("torsion_correction"));
+  const double expected[3] = {-3, 8, 5};
+  for (std::size_t k = 0; k < 3; ++k) EXPECT_NEAR(j["points"][0]["position"][k].get<double>(), expected[k], 2e-8);
+  const ProcessResult bad = hula({"reconstruct", "--kappa", "1", "--tau", "0", "--length", "1", "--free-length"});
+  EXPECT_EQ(bad.exit_code, 3);
+  EXPECT_EQ(error_of(bad)["where"]["field"], "free-length") << bad.err;
+}
+
 }  // namespace
 }  // namespace hula::intrinsic

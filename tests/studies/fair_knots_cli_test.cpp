@@ -96,3 +96,35 @@ TEST(CliFairKnots, BadStudyFileIsRefused) {
 }
 
 }  // namespace
+
+namespace {
+
+// checks: --occt on 7.4.2 Example 1 adds Open CASCADE's three baselines with the best curve's end tangent angles
+// (the natural-end GA curve's, reported under "ends"), each with OCCT's status and, where OCCT returned a curve,
+// finite energies and the data points' deviations (the corner point (100, 0) is off every baseline, which only
+// holds the ends: deviation > 0, while the studies' curves interpolate it); baselines.svg has every curve.
+TEST(CliFairKnots, OcctBaselinesBesideTheOptimisers) {
+  hula::testing::TempDir dir;
+  const fs::path svg = dir.path() / "svg";
+  const auto r = hula_run({"fair-knots", example("fair-knots-7.4-example1.json"), "--occt", "--svg", svg.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json out = json::parse(r.out);
+  ASSERT_TRUE(out.contains("occt"));
+  const json& occt = out["occt"];
+  ASSERT_EQ(occt["curves"].size(), 3u);
+  EXPECT_EQ(occt["ends"]["tangent_angles"].size(), 2u);
+  int with_curve = 0;
+  for (const json& c : occt["curves"]) {
+    EXPECT_FALSE(c["status"].get<std::string>().empty()) << c["name"];
+    if (c["curve"].is_null()) continue;
+    ++with_curve;
+    EXPECT_GT(c["bending"].get<double>(), 0.0) << c["name"];
+    EXPECT_GT(c["max_deviation"].get<double>(), 1.0) << c["name"];
+  }
+  EXPECT_GE(with_curve, 1);
+  const std::string figure = slurp(svg / "baselines.svg");
+  EXPECT_NE(figure.find("OCCT batten"), std::string::npos);
+  EXPECT_NE(figure.find("GA"), std::string::npos);
+}
+
+}  // namespace

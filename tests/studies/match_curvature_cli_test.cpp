@@ -2,6 +2,7 @@
 // `hula match-curvature` run on the example study files (examples/studies/) and on bad study files.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -239,10 +240,91 @@ TEST(MatchCurvatureCli, DirectGaAndHybridOnOneTarget) {
   EXPECT_LT(Json::parse(g.out)["after"]["mean"].get<double>(), 0.01);
 }
 
-TEST(MatchCurvatureCli, DirectNeedsAnArcLengthProfile) {
-  const ProcessResult r = hula_run({"match-curvature", example(1), "--method", "direct"});
-  EXPECT_EQ(r.exit_code, 3);
-  EXPECT_NE(r.err.find("arclength"), std::string::npos) << r.err;
+// checks: --method direct runs on every shipped match-curvature example (parameter-abscissa targets are converted
+// through the start spline), its NURBS meets the default relative fit tolerance 1e-6 of the curve's size, measured
+// against the box of the output curve's control polygon, with at most 60 control points for the simple
+// (one-peak) curves and 100 for the others (issue 14 item 3; 2,409–2,757 before the greedy knot placement).
+TEST(MatchCurvatureCli, DirectRunsOnEveryShippedExampleWithFewControlPoints) {
+  for (const char* name :
+       {"example1", "example2", "example3", "example4", "table9-2", "table9-4", "table9-6", "table9-9", "direct"}) {
+    const std::string simple_names[] = {"example1", "example2", "table9-2", "direct"};
+    const bool simple = std::find(std::begin(simple_names), std::end(simple_names), name) != std::end(simple_names);
+    const std::string file = std::string(HULA_SOURCE_DIR) + "/examples/studies/match-curvature-" + name + ".json";
+    const ProcessResult r = hula_run({"match-curvature", file, "--method", "direct"});
+    ASSERT_EQ(r.exit_code, 0) << name << ": " << r.err;
+    const Json j = Json::parse(r.out);
+    const Json& n = j["direct"]["nurbs"];
+    EXPECT_TRUE(n["converged"].get<bool>()) << name;
+    EXPECT_LE(n["control_points"].get<std::size_t>(), simple ? 60u : 100u) << name;
+    double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+    for (const auto& p : j["curve"]["control_points"])
+      for (std::size_t k = 0; k < 2; ++k) {
+        lo[k] = std::min(lo[k], p[k].get<double>());
+        hi[k] = std::max(hi[k], p[k].get<double>());
+      }
+    // The control polygon's box contains the curve's, so this bounds the tolerance from above.
+    EXPECT_LE(n["max_deviation"].get<double>(), 1e-6 * std::hypot(hi[0] - lo[0], hi[1] - lo[1])) << name;
+    EXPECT_EQ(j["best_points"].size(), j["start_points"].size()) << name;
+  }
+}
+
+// checks: a parameter-abscissa target taken from the start points themselves, converted to arc length and
+// integrated from the start spline's start frame, rebuilds the start spline: the reported best points (the
+// reconstructed curve at the data abscissae) are the data points, to 1e-4 of the curve's size (the of_points target
+// is the spline's profile at 200 samples joined linearly, whose kinks limit the integration to about that; see
+// docs/studies/direct-reconstruction.md "Limits").
+TEST(MatchCurvatureCli, DirectBestPointsAreTheReconstructionAtTheDataAbscissae) {
+  const hula::testing::TempDir dir;
+  const std::filesystem::path study = dir.path() / "self.json";
+  std::ofstream(study) << R"({"format": "hula-study", "version": 1, "study": "match-curvature", "seed": 1,
+    "points": [[0, 0], [5, 20], [40, 0]], "lower": [[0, 0], [0, 0], [0, 0]], "upper": [[0, 0], [40, 40], [0, 0]],
+    "target": {"of_points": [[0, 0], [5, 20], [40, 0]]}, "samples": 200, "method": "direct"})";
+  const ProcessResult r = hula_run({"match-curvature", study.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Json j = Json::parse(r.out);
+  const double expected[3][2] = {{0, 0}, {5, 20}, {40, 0}};
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t k = 0; k < 2; ++k)
+      EXPECT_NEAR(j["best_points"][i][k].get<double>(), expected[i][k], 1e-4 * 45.0) << i << "," << k;
+  // --abscissa arclength re-derives the of_points target in arc length: the same curve again.
+  const ProcessResult a = hula_run({"match-curvature", study.string(), "--abscissa", "arclength"});
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  const Json ja = Json::parse(a.out);
+  EXPECT_EQ(ja["study"]["abscissa"], "arclength");
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t k = 0; k < 2; ++k)
+      EXPECT_NEAR(ja["best_points"][i][k].get<double>(), expected[i][k], 1e-4 * 45.0) << i << "," << k;
+  const ProcessResult bad = hula_run({"match-curvature", study.string(), "--abscissa", "time"});
+  EXPECT_EQ(bad.exit_code, 3);
+  EXPECT_NE(bad.err.find("--abscissa"), std::string::npos) << bad.err;
+}
+
+}  // namespace
+
+namespace {
+
+// checks: --occt beside the direct route on the shipped direct example: Open CASCADE's three baselines between the
+// best curve's ends, each with its status, end tangents held to 1e-9 rad where OCCT converged (its minimal-variation
+// solver reports NotConverged here, with a curve that misses the tangent), energies finite, and baselines.svg
+// written (issue 14 item 4 for the matching studies).
+TEST(MatchCurvatureCli, OcctBaselinesBesideTheDirectRoute) {
+  const hula::testing::TempDir dir;
+  const ProcessResult r = hula_run({"match-curvature", kDirect, "--occt", "--svg", dir.path().string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Json j = Json::parse(r.out);
+  ASSERT_EQ(j["occt"]["curves"].size(), 3u);
+  int with_curve = 0;
+  for (const Json& c : j["occt"]["curves"]) {
+    EXPECT_FALSE(c["status"].get<std::string>().empty()) << c["name"];
+    if (c["curve"].is_null()) continue;
+    ++with_curve;
+    if (c["status"] == "OK") {
+      EXPECT_LT(c["tangent_error"].get<double>(), 1e-9) << c["name"];
+    }
+    EXPECT_GT(c["bending"].get<double>(), 0.0) << c["name"];
+  }
+  EXPECT_GE(with_curve, 1);
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "baselines.svg"));
 }
 
 }  // namespace

@@ -18,6 +18,7 @@
 #include "hula/diffgeom/continuity.hpp"
 #include "hula/diffgeom/features.hpp"
 #include "hula/diffgeom/fins.hpp"
+#include "hula/diffgeom/monotonicity.hpp"
 #include "hula/io/atomic_file.hpp"
 #include "hula/io/curve_figures.hpp"
 
@@ -92,6 +93,19 @@ Json features_to_json(const curve::Curve& c) {
   j["curvature_extrema"] = std::move(je);
   j["torsion_extrema"] = std::move(jt);
   j["knots"] = std::move(jk);
+  // Pieces of monotone curvature (signed for planar curves) and the extrema that break monotonicity.
+  const diffgeom::CurvatureMonotonicity mono = diffgeom::curvature_monotonicity(c, plane.planar, fo);
+  Json jp = Json::array(), jv = Json::array();
+  for (const auto& p : mono.pieces)
+    jp.push_back(Json{{"t0", p.t0},
+                      {"t1", p.t1},
+                      {"kappa0", p.kappa0},
+                      {"kappa1", p.kappa1},
+                      {"trend", std::string(diffgeom::curvature_trend_name(p.trend))}});
+  for (const auto& f : mono.violations)
+    jv.push_back(Json{{"t", f.t}, {"kind", std::string(diffgeom::feature_kind_name(f.kind))}, {"kappa", f.curvature}});
+  j["curvature_monotonicity"] =
+      Json{{"monotone", mono.monotone()}, {"pieces", std::move(jp)}, {"violations", std::move(jv)}};
   return j;
 }
 
@@ -216,7 +230,7 @@ Command add_analyse(CLI::App& app) {
   sub->add_option("--by", args->by, "Abscissa of --at / --samples: parameter | arclength (default parameter)")
       ->check(CLI::IsMember({"parameter", "arclength"}));
   sub->add_flag("--features", args->features,
-                "Add \"features\": inflections (planar curves), curvature extrema, knot continuity");
+                "Add \"features\": inflections (planar curves), curvature extrema, knot continuity, curvature monotonicity");
   sub->add_option("--svg", args->svg,
                   "Write curve.svg (the curve and its fins, curvature and torsion unless --fins), kappa.svg, tau.svg, "
                   "radius.svg (range-limited radius of curvature), speed.svg and logcurvature.svg into this directory");

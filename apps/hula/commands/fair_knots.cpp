@@ -3,18 +3,26 @@
 // "fair-knots" study file — chord-length start, the given parameters,
 // the energy map, GA and/or deterministic fairing — as JSON, with the
 // before/after curves (curvature fins), the energy map and the convergence
-// graphs as SVG and the map as CSV under --svg DIR.
+// graphs as SVG and the map as CSV under --svg DIR. `--occt` adds Open
+// CASCADE's fairing baselines (oli/kernel/occt_fairing.hpp: FairCurve_Batten
+// fixed and sliding, FairCurve_MinimalVariation) with the best curve's end
+// tangents and curvatures, their energies and deviations from the data points
+// under "occt", and `baselines.svg` with every curve and its curvature comb.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <limits>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "commands/common.hpp"
+#include "commands/fairing_baselines.hpp"
 #include "commands/study_common.hpp"
 #include "hula/diffgeom/fins.hpp"
+#include "hula/diffgeom/frenet.hpp"
 #include "hula/io/atomic_file.hpp"
 #include "hula/io/fair_knots_study_file.hpp"
 #include "hula/io/json_curve.hpp"
@@ -38,30 +46,7 @@ io::SvgFigure curve_figure(const studies::KnotFairingSetup& setup, const studies
       y.push_back(p.y);
     }
   };
-  // Fin scale: the longest fin is a quarter of the data's extent.
-  double extent = 0.0;
-  for (const Vec3& a : setup.points)
-    for (const Vec3& b : setup.points) extent = std::max(extent, norm(a - b));
-  diffgeom::FinOptions fo;
-  fo.density = 150;
-  const diffgeom::Fins unit = diffgeom::fins(e.curve, fo);
-  double longest = 0.0;
-  for (std::size_t i = 0; i < unit.t.size(); ++i)
-    if (unit.defined[i]) longest = std::max(longest, norm(unit.tip[i] - unit.base[i]));
-  fo.scale = longest > 0.0 ? 0.25 * extent / longest : 1.0;
-  const diffgeom::Fins f = diffgeom::fins(e.curve, fo);
-  std::vector<double> x0, y0, x1, y1, tx, ty;
-  for (std::size_t i = 0; i < f.t.size(); ++i) {
-    tx.push_back(f.defined[i] ? f.tip[i].x : std::numeric_limits<double>::quiet_NaN());
-    ty.push_back(f.defined[i] ? f.tip[i].y : std::numeric_limits<double>::quiet_NaN());
-    if (!f.defined[i]) continue;
-    x0.push_back(f.base[i].x);
-    y0.push_back(f.base[i].y);
-    x1.push_back(f.tip[i].x);
-    y1.push_back(f.tip[i].y);
-  }
-  fig.add_segments(x0, y0, x1, y1, io::SvgStyle{.stroke = "#9ecae1", .width = 0.8});
-  fig.add_polyline(tx, ty, io::SvgStyle{.stroke = "#3182bd", .width = 1.0}, "curvature fins");
+  add_fins(fig, e.curve, fin_scale(setup.points, e.curve), "#9ecae1", "#3182bd", "curvature fins");
   if (reference != nullptr) {
     std::vector<double> rx, ry;
     sample(reference->curve, rx, ry);
@@ -89,7 +74,7 @@ std::string fmt(double v) {
   return buf;
 }
 
-int run_fair_knots(const StudyArgs& args) {
+int run_fair_knots(const StudyArgs& args, bool occt) {
   const io::StudyDocument doc = load_study(args, "fair-knots");
   studies::FairKnotsStudy study = io::fair_knots_study_from_json(doc);
   // --time and Ctrl-C end each optimiser with its best so far ("stopped": true).
@@ -148,6 +133,15 @@ int run_fair_knots(const StudyArgs& args) {
     for (std::size_t i = 0; i < chord.size(); ++i)
       dp = std::max(dp, std::abs(ga->best.parameters[i] - det->best.parameters[i]));
     out["agreement"] = Json{{"relative_energy", ga->best.energy / det->best.energy - 1.0}, {"max_parameter", dp}};
+  }
+  if (occt) {
+    const nurbs::NurbsCurve* reference = &before.curve;
+    if (ga) reference = &ga->best.curve;
+    if (det && (!ga || det->best.energy < ga->best.energy)) reference = &det->best.curve;
+    std::vector<std::pair<std::string, const nurbs::NurbsCurve*>> studied{{"chord length", &before.curve}};
+    if (ga) studied.emplace_back("GA", &ga->best.curve);
+    if (det) studied.emplace_back("Nelder-Mead", &det->best.curve);
+    out["occt"] = occt_baselines(setup.points, *reference, studied, args.svg);
   }
   if (args.log && run_ga) write_run_log(log, *args.log);
   if (args.svg) {
@@ -225,7 +219,11 @@ Command add_fair_knots(CLI::App& app) {
       "--svg DIR writes curve_before.svg, curve_after.svg (curves with curvature fins), convergence.svg, and with "
       "a \"map\" energy_map.svg, energy_map.csv and (with map.sections) energy_sections.svg. --log writes the GA's run "
       "log (all rounds).");
-  return {sub, [args] { return run_fair_knots(*args); }};
+  auto occt = std::make_shared<bool>(false);
+  sub->add_flag("--occt", *occt,
+                "Add Open CASCADE's fairing baselines (FairCurve_Batten fixed and sliding, FairCurve_MinimalVariation) "
+                "with the best curve's end tangents and curvatures: \"occt\" in the output, baselines.svg under --svg");
+  return {sub, [args, occt] { return run_fair_knots(*args, *occt); }};
 }
 
 }  // namespace hula::cli

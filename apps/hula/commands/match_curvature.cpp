@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "commands/common.hpp"
+#include "commands/fairing_baselines.hpp"
 #include "commands/study_common.hpp"
 #include "hula/diffgeom/frenet.hpp"
 #include "hula/io/match_study_file.hpp"
@@ -33,6 +34,8 @@ namespace {
 struct MatchArgs {
   StudyArgs study;
   std::optional<std::string> method;
+  std::optional<std::string> abscissa;
+  bool occt = false;
 };
 
 void add_curve(io::SvgFigure& fig, const nurbs::NurbsCurve& curve, std::span<const Vec3> points,
@@ -159,7 +162,11 @@ void write_figures(const std::filesystem::path& dir, const studies::CurvatureMat
 }
 
 int run_match(const MatchArgs& a) {
-  const io::StudyDocument doc = load_study(a.study, "match-curvature");
+  io::StudyDocument doc = load_study(a.study, "match-curvature");
+  // --abscissa replaces the file's member before it is read, so a target given "of_points" is derived in it.
+  if (a.abscissa)
+    doc.body["abscissa"] =
+        std::string(studies::profile_abscissa_name(studies::profile_abscissa_from_name(*a.abscissa, "--abscissa")));
   const std::filesystem::path base = std::filesystem::path(a.study.study).parent_path();
   io::MatchStudyFile file = io::match_study_from_json(doc, io::relative_to(base));
   studies::MatchStudy& study = file.study;
@@ -169,7 +176,23 @@ int run_match(const MatchArgs& a) {
   const studies::MatchResult result = studies::run_curvature_match(match, study, a.study.log.has_value());
   if (a.study.log) write_run_log(result.log, *a.study.log);
   if (a.study.svg) write_figures(*a.study.svg, match, result);
-  const Json out = io::match_result_to_json(match, file, result);
+  Json out = io::match_result_to_json(match, file, result);
+  if (a.occt) {
+    // Open CASCADE's fairing baselines with the ends of the best curve (the direct route's NURBS, else the spline
+    // through the best points), measured against the best points.
+    if (study.setup.dimension != 2)
+      throw Error(Errc::InvalidArgument, "--occt compares planar curves: the study's points are 3-D",
+                  {.field = "--occt"});
+    const std::size_t n = study.setup.points.size();
+    std::vector<Vec3> start(n), best(n);
+    match.points_from(result.start, start);
+    match.points_from(result.best, best);
+    const nurbs::NurbsCurve start_curve = match.sampler().curve(start);
+    const nurbs::NurbsCurve best_curve =
+        result.direct && result.direct->nurbs ? result.direct->nurbs->curve : match.sampler().curve(best);
+    const std::vector<Vec3>& measured = result.direct ? result.direct_points : best;
+    out["occt"] = occt_baselines(measured, best_curve, {{"start", &start_curve}, {"best", &best_curve}}, a.study.svg);
+  }
   for (const auto& w : out["warnings"]) std::cerr << "hula: warning: " << w.get<std::string>() << "\n";
   print_json(out);
   return kExitOk;
@@ -286,6 +309,12 @@ Command add_match_curvature(CLI::App& app) {
       "Match a prescribed curvature profile by moving data points (GA, or GA + Levenberg-Marquardt)");
   add_study_options(sub, a->study);
   sub->add_option("--method", a->method, "ga | hybrid | direct (overrides the study file's \"method\")");
+  sub->add_option("--abscissa", a->abscissa,
+                  "arclength | parameter: what the target's u measures (overrides the study file's \"abscissa\"; "
+                  "direct converts a parameter target to arc length through the start spline)");
+  sub->add_flag("--occt", a->occt,
+                "Add Open CASCADE's fairing baselines between the best curve's ends with its end tangents and "
+                "curvatures: \"occt\" in the output, baselines.svg under --svg (planar studies)");
   return {sub, [a] { return run_match(*a); }};
 }
 

@@ -6,7 +6,13 @@
 // ({"points": [{"s", "position", "T", "N", "B"}], "fit": {"control_points",
 // "max_deviation"}}; control_points is the count). -o writes the fitted NURBS
 // atomically.
+//
+// With `--end-point x,y,z` and/or `--end-tangent x,y,z` (optionally `--free-length`) it solves the
+// boundary-value problem of studies::reconstruct_direct instead (planar or space): the curve closest to
+// the laws that meets the end, with the reconstruction's summary under "direct".
+#include <cmath>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "commands/common.hpp"
@@ -14,7 +20,9 @@
 #include "hula/intrinsic/natural_equations.hpp"
 #include "hula/io/atomic_file.hpp"
 #include "hula/io/json_curve.hpp"
+#include "hula/io/match_study_file.hpp"
 #include "hula/law/parser.hpp"
+#include "hula/studies/direct_reconstruction.hpp"
 
 namespace hula::cli {
 
@@ -29,6 +37,10 @@ struct ReconstructArgs {
   double tolerance = 1e-10;
   std::string at;
   std::string output;
+  std::string end_point;
+  std::string end_tangent;
+  bool free_length = false;
+  double end_tolerance = 1e-9;
 };
 
 // Parses a law of s given as --<field>, naming the option and the expression in errors.
@@ -79,24 +91,55 @@ int run_reconstruct(const ReconstructArgs& a) {
     start.tangent = {v[0], v[1], v[2]};
     start.normal = {v[3], v[4], v[5]};
   }
-  intrinsic::ReconstructionOptions options;
-  options.tolerance = a.tolerance;
-  const intrinsic::IntrinsicCurve curve = intrinsic::reconstruct(kappa, tau, "s", a.length, start, options);
+  intrinsic::NurbsFitOptions fit_options;
+  fit_options.tolerance = a.tolerance;
+  Json doc = Json::object();
+  std::optional<intrinsic::IntrinsicCurve> curve;
+  std::optional<intrinsic::NurbsFitResult> fit;
+  const bool held = !a.end_point.empty() || !a.end_tangent.empty();
+  if (a.free_length && !held)
+    throw Error(Errc::InvalidArgument, "--free-length needs --end-point or --end-tangent: a free end fixes no length",
+                ErrorWhere{.field = "free-length"});
+  if (held) {
+    // The laws of s as profiles of u = s / L (reconstruct_direct's abscissa), for the boundary-value problem.
+    if (!std::isfinite(a.length) || !(a.length > 0.0))
+      throw Error(Errc::InvalidArgument, "--length = " + format_number(a.length) + " must be positive and finite",
+                  ErrorWhere{.field = "length"});
+    const law::Law s_of_u = a.length * ctx.parameter("u");
+    studies::DirectReconstructionProblem p{.curvature =
+                                               studies::Profile::from_law(law::substitute(kappa, "s", s_of_u))};
+    if (!(tau.is_constant() && tau.node().value == 0.0))
+      p.torsion = studies::Profile::from_law(law::substitute(tau, "s", s_of_u));
+    p.length = a.length;
+    p.start = start;
+    if (!a.end_point.empty()) p.end_point = parse_vec(a.end_point, "end-point");
+    if (!a.end_tangent.empty()) p.end_tangent = parse_vec(a.end_tangent, "end-tangent");
+    studies::DirectReconstructionOptions o;
+    o.vary_length = a.free_length;
+    o.end_tolerance = a.end_tolerance;
+    o.fit_options = fit_options;
+    studies::DirectReconstructionResult r = studies::reconstruct_direct(p, o);
+    doc["direct"] = io::direct_reconstruction_summary(r);
+    curve = std::move(r.curve);
+    fit = std::move(r.nurbs);
+  } else {
+    intrinsic::ReconstructionOptions options;
+    options.tolerance = a.tolerance;
+    curve = intrinsic::reconstruct(kappa, tau, "s", a.length, start, options);
+    fit = intrinsic::fit_nurbs(*curve, fit_options);
+  }
+  const double length = curve->length();
   std::vector<double> ss;
   if (a.at.empty())
-    for (int i = 0; i <= 4; ++i) ss.push_back(i == 4 ? a.length : a.length * i / 4.0);
+    for (int i = 0; i <= 4; ++i) ss.push_back(i == 4 ? length : length * i / 4.0);
   else
     ss = parse_number_list(a.at, "at");
   Json points = Json::array();
-  for (const intrinsic::FramePoint& p : curve.evaluate(ss)) points.push_back(point_json(p));
-  intrinsic::NurbsFitOptions fit_options;
-  fit_options.tolerance = a.tolerance;
-  const intrinsic::NurbsFitResult fit = intrinsic::fit_nurbs(curve, fit_options);
-  if (!a.output.empty()) io::write_curve_file(a.output, fit.curve);
+  for (const intrinsic::FramePoint& p : curve->evaluate(ss)) points.push_back(point_json(p));
+  if (!a.output.empty()) io::write_curve_file(a.output, fit->curve);
   Json f = Json::object();
-  f["control_points"] = fit.curve.control_points().size();
-  f["max_deviation"] = fit.max_deviation;
-  Json doc = Json::object();
+  f["control_points"] = fit->curve.control_points().size();
+  f["max_deviation"] = fit->max_deviation;
   doc["points"] = std::move(points);
   doc["fit"] = std::move(f);
   print_result(doc, a.output);
@@ -119,6 +162,13 @@ Command add_reconstruct(CLI::App& app) {
   sub->add_option("--tolerance", args->tolerance,
                   "Position tolerance of the integration and of the NURBS fit, in [1e-13, 1e-2] (default 1e-10)");
   sub->add_option("--at", args->at, "Arc lengths s0,s1,... in [0, L] to print (default 0, L/4, L/2, 3L/4, L)");
+  sub->add_option("--end-point", args->end_point,
+                  "Hold the end at x,y,z: the curve closest to the laws that reaches it (boundary-value problem)");
+  sub->add_option("--end-tangent", args->end_tangent, "Hold the end tangent direction x,y,z (boundary-value problem)");
+  sub->add_flag("--free-length", args->free_length,
+                "Let the length vary from --length when an end is held (the laws then fix the shape, not the size)");
+  sub->add_option("--end-tolerance", args->end_tolerance,
+                  "End tolerance relative to L of the boundary-value problem, in [1e-13, 1e-2] (default 1e-9)");
   sub->add_option("-o,--output", args->output, "Write the fitted NURBS curve file (atomically)");
   return {sub, [args] { return run_reconstruct(*args); }};
 }

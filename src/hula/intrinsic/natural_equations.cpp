@@ -517,35 +517,61 @@ double segment_deviation(const IntrinsicCurve& curve, const FramePoint& a, const
 NurbsFitResult fit_nurbs(const IntrinsicCurve& curve, const NurbsFitOptions& options) {
   options.validate();
   const double L = curve.length();
-  // Start from the integration nodes: they already follow the variation of κ and τ.
-  std::vector<FramePoint> pts = curve.evaluate(curve.nodes());
-  std::vector<bool> done(pts.size() - 1, false);
-  // Refine with a safety factor so the final, denser check stays under the tolerance.
-  const double target = 0.5 * options.tolerance;
-  bool converged = true;
-  for (;;) {
-    std::vector<FramePoint> next{pts.front()};
-    std::vector<bool> next_done;
-    bool split = false;
-    for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
-      if (!done[i] && segment_deviation(curve, pts[i], pts[i + 1], 7) > target &&
-          pts.size() + (split ? 1 : 0) <= options.max_segments) {
-        next.push_back(curve.evaluate(0.5 * (pts[i].s + pts[i + 1].s)));
-        next_done.push_back(false);
-        next_done.push_back(false);
-        split = true;
-      } else {
-        next_done.push_back(true);
+  double tolerance = options.tolerance;
+  if (options.relative) {
+    const std::vector<FramePoint> nodes = curve.evaluate(curve.nodes());
+    Vec3 lo = nodes.front().position, hi = lo;
+    for (const FramePoint& q : nodes)
+      for (std::size_t k = 0; k < 3; ++k) {
+        lo[k] = std::min(lo[k], q.position[k]);
+        hi[k] = std::max(hi[k], q.position[k]);
       }
-      next.push_back(pts[i + 1]);
-    }
-    pts = std::move(next);
-    done = std::move(next_done);
-    if (!split) break;
-    if (pts.size() - 1 >= options.max_segments) {
+    const double size = distance(lo, hi);
+    tolerance *= size > 0.0 ? size : L;
+  }
+  // Greedy longest segments (header). Half the tolerance as the target leaves room for the final,
+  // independent measurement on the NURBS itself.
+  const double target = 0.5 * tolerance;
+  const int m = options.check_samples;
+  // Below this length a segment is accepted even if it misses the target (the tolerance is then
+  // below what the integration resolves): converged = false.
+  const double min_length = 1e-9 * L;
+  std::vector<FramePoint> pts{curve.evaluate(0.0)};
+  bool converged = true;
+  while (pts.back().s < L) {
+    const FramePoint a = pts.back();
+    if (pts.size() > options.max_segments) {
+      pts.push_back(curve.evaluate(L));
       converged = false;
       break;
     }
+    const auto fits = [&](const FramePoint& b) { return segment_deviation(curve, a, b, m) <= target; };
+    FramePoint good = curve.evaluate(L);
+    if (!fits(good)) {
+      // Halve the remaining length until a segment fits, then bisect between fitting and failing ends.
+      double fail = L, ok = a.s + 0.5 * (L - a.s);
+      bool too_short = false;
+      for (;;) {
+        good = curve.evaluate(ok);
+        if (fits(good)) break;
+        fail = ok;
+        if (ok - a.s <= min_length) {
+          too_short = true;
+          converged = false;
+          break;
+        }
+        ok = a.s + 0.5 * (ok - a.s);
+      }
+      for (int step = 0; step < 8 && !too_short; ++step) {
+        const double mid = 0.5 * (good.s + fail);
+        const FramePoint trial = curve.evaluate(mid);
+        if (fits(trial))
+          good = trial;
+        else
+          fail = mid;
+      }
+    }
+    pts.push_back(good);
   }
   std::vector<Vec3> p, d, a;
   std::vector<double> params;
@@ -568,7 +594,6 @@ NurbsFitResult fit_nurbs(const IntrinsicCurve& curve, const NurbsFitOptions& opt
   std::vector<Vec3> cps(unit_curve.control_points().begin(), unit_curve.control_points().end());
   nurbs::NurbsCurve fitted(5, std::move(knots), std::move(cps));
   double worst = 0.0;
-  const int m = options.check_samples;
   for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
     const double h = pts[i + 1].s - pts[i].s;
     for (int j = 1; j <= m; ++j) {
@@ -580,7 +605,7 @@ NurbsFitResult fit_nurbs(const IntrinsicCurve& curve, const NurbsFitOptions& opt
   }
   worst = std::max(worst, distance(fitted.derivatives(L, 0)[0], pts.back().position));
   const std::size_t segments = pts.size() - 1;
-  return NurbsFitResult{std::move(fitted), worst, segments, converged && worst <= options.tolerance};
+  return NurbsFitResult{std::move(fitted), worst, segments, tolerance, converged && worst <= tolerance};
 }
 
 }  // namespace hula::intrinsic

@@ -182,6 +182,10 @@ struct NurbsFitOptions {
   /// length, model units (an upper bound of the geometric deviation). Default 1e-9; valid
   /// [1e-13, 1]. It cannot be met below the curve's own integration tolerance.
   double tolerance = 1e-9;
+  /// When true, `tolerance` is relative to the curve's size, the diagonal of the bounding box of
+  /// the curve at its integration nodes (absolute = tolerance × diagonal; the length L when the
+  /// curve is straight and the box degenerates). Default false (absolute).
+  bool relative = false;
   /// Largest number of Hermite segments before giving up (converged = false). Default 100 000;
   /// valid 1 … 10 000 000.
   std::size_t max_segments = 100'000;
@@ -197,21 +201,30 @@ struct NurbsFitResult {
   nurbs::NurbsCurve curve;
   /// Largest |C(s) − r(s)| found by dense sampling (check_samples per segment).
   double max_deviation = 0.0;
-  /// Number of Hermite segments.
+  /// Number of Hermite segments (the NURBS has 3 × (segments + 1) control points).
   std::size_t segments = 0;
+  /// The absolute tolerance applied (options.tolerance, times the curve's size when relative).
+  double tolerance = 0.0;
   /// True when max_deviation ≤ tolerance.
   bool converged = false;
 };
 
 /// Fits a quintic NURBS to a reconstructed curve: Hermite interpolation through breakpoints with
-/// the exact first (T) and second (κN) arc-length derivatives, bisecting every segment whose
-/// deviation exceeds the tolerance, then re-measuring by dense sampling.
+/// the exact first (T) and second (κN) arc-length derivatives, then re-measuring by dense sampling.
+///
+/// Knot placement (greedy longest segments): from each breakpoint s_a the next one is the
+/// farthest s_b for which the Hermite segment [s_a, s_b] stays within half the tolerance at
+/// check_samples interior points — the whole rest of the curve if it does, else found by halving
+/// the remaining length until a segment fits and then bisecting between the longest fitting and
+/// the shortest failing end (8 steps, so within 1/256 of the longest). Where the deviation grows
+/// with the segment length (the h⁶ error of quintic Hermite), greedy covering gives the fewest
+/// segments, hence the fewest control points for the tolerance.
+/// Complexity: O(segments × 12 × check_samples) dense evaluations.
 /// @param curve a reconstructed curve
 /// @param options tolerance, segment budget, check density
 /// @returns the curve and its measured deviation (converged = false when the budget ran out;
 ///   the curve is then the last refinement)
 /// @throws hula::Error(Errc::InvalidOption) from options.validate()
-/// Complexity: O(segments × (check_samples + 8)) dense evaluations.
 [[nodiscard]] NurbsFitResult fit_nurbs(const IntrinsicCurve& curve, const NurbsFitOptions& options = {});
 
 }  // namespace hula::intrinsic

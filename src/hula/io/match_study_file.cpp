@@ -402,7 +402,8 @@ Json match_result_to_json(const CurvatureMatch& match, const MatchStudyFile& fil
   match.points_from(result.start, pts);
   out["start_points"] = points_json(pts, dim);
   match.points_from(result.best, pts);
-  out["best_points"] = points_json(pts, dim);
+  // The direct route moves no data point: its best points are the reconstructed curve at the data abscissae.
+  out["best_points"] = points_json(result.direct ? result.direct_points : pts, dim);
   out["before"] = distances_json(result.before);
   out["after_ga"] = distances_json(result.after_ga);
   if (result.lm) {

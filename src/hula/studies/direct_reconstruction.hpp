@@ -108,8 +108,11 @@ struct DirectReconstructionOptions {
   std::size_t deviation_samples = 200;
   /// Fit a NURBS to the final curve with intrinsic::fit_nurbs. Default true.
   bool fit = true;
-  /// Options of the NURBS fit (tolerance 1e-9 by default).
-  intrinsic::NurbsFitOptions fit_options{};
+  /// Options of the NURBS fit: by default tolerance 1e-6 relative to the curve's size (the diagonal
+  /// of its bounding box), which with the greedy knot placement of intrinsic::fit_nurbs gives a
+  /// few dozen control points for a simple planar curve; set fit_options.relative = false for an
+  /// absolute tolerance.
+  intrinsic::NurbsFitOptions fit_options{.tolerance = 1e-6, .relative = true};
   /// @throws hula::Error(Errc::InvalidOption) naming the field, its value and the valid range
   void validate() const;
 };

@@ -9,6 +9,7 @@
 
 #include "hula/core/error.hpp"
 #include "hula/nurbs/arc_length.hpp"
+#include "hula/nurbs/interpolate.hpp"
 #include "hula/optim/sweep.hpp"
 
 namespace hula::studies {
@@ -76,7 +77,39 @@ optim::GaResult run_ga(const CurvatureMatch& match, const MatchStudy& study, Mat
   return optim::solve_real_ga(match.problem(), o);
 }
 
-// The direct route's problem: the target as an arc-length profile integrated from the start point and frame of
+// Arc-length fractions v(t) of the start spline at parameters t of its domain.
+double length_fraction(const nurbs::NurbsCurve& curve, double t, double length) {
+  return std::clamp(nurbs::arc_length(curve, curve.domain().start, t) / length, 0.0, 1.0);
+}
+
+// A target given over the spline parameter (abscissa "parameter": κ* at t = u) as a profile of normalised arc
+// length, through the start spline's own map: κ_arc(v) = κ*(u(v)), u(v) the normalised parameter where the
+// start spline has covered the fraction v of its length. Sampled at kConversionSamples + 1 arc-length
+// fractions and joined by a C2 cubic spline (a piecewise-linear profile would put kinks in the integrand).
+Profile arclength_target(const Profile& target, const nurbs::NurbsCurve& start_curve, double length) {
+  constexpr int kConversionSamples = 256;
+  const auto dom = start_curve.domain();
+  std::vector<Vec3> values;
+  std::vector<double> v;
+  for (int j = 0; j <= kConversionSamples; ++j) {
+    const double f = static_cast<double>(j) / kConversionSamples;
+    const double t = j == kConversionSamples ? dom.end : nurbs::parameter_at_length(start_curve, f * length);
+    const double u = std::clamp((t - dom.start) / dom.length(), 0.0, 1.0);
+    v.push_back(f);
+    values.push_back({target(u), 0.0, 0.0});
+  }
+  nurbs::InterpolationOptions o;
+  o.parameters = v;
+  o.start = nurbs::EndCondition::not_a_knot();
+  o.end = nurbs::EndCondition::not_a_knot();
+  const nurbs::NurbsCurve spline = nurbs::interpolate_cubic(values, o);
+  std::vector<double> coefficients;
+  for (const Vec3& c : spline.control_points()) coefficients.push_back(c.x);
+  const std::span<const double> knots = spline.knots().values();
+  return Profile::from_bspline(3, knots, coefficients);
+}
+
+// The direct route's problem: the target as an arc-length profile (a parameter-abscissa target converted through the start spline) integrated from the start point and frame of
 // the spline through the start points (its turning side for planar curves), held to the last data point and the
 // end tangent when asked.
 DirectReconstructionProblem direct_problem(const CurvatureMatch& match, const MatchStudy& study) {
@@ -84,8 +117,11 @@ DirectReconstructionProblem direct_problem(const CurvatureMatch& match, const Ma
   const MatchDirectSettings& d = study.direct;
   const nurbs::NurbsCurve start_curve = match.sampler().curve(s.points);
   const std::vector<Vec3> d0 = start_curve.derivatives(start_curve.domain().start, 2);
-  DirectReconstructionProblem p{.curvature = *s.target};
-  p.length = d.length ? *d.length : nurbs::arc_length(start_curve);
+  const double start_length = nurbs::arc_length(start_curve);
+  DirectReconstructionProblem p{.curvature = s.abscissa == ProfileAbscissa::ArcLength
+                                                 ? *s.target
+                                                 : arclength_target(*s.target, start_curve, start_length)};
+  p.length = d.length ? *d.length : start_length;
   p.start.point = s.points.front();
   p.start.tangent = s.start_tangent ? *s.start_tangent : d0[1];
   const Vec3 t = normalized(p.start.tangent);
@@ -105,10 +141,6 @@ DirectReconstructionProblem direct_problem(const CurvatureMatch& match, const Ma
 
 DirectReconstructionResult run_direct(const CurvatureMatch& match, const MatchStudy& study) {
   const CurvatureMatchSetup& s = match.setup();
-  if (s.abscissa != ProfileAbscissa::ArcLength)
-    throw Error(Errc::InvalidOption,
-                "method = \"direct\" integrates the natural equations in arc length: set \"abscissa\": \"arclength\"",
-                {.field = "abscissa"});
   const MatchDirectSettings& d = study.direct;
   if (d.end_tangent && !s.end_tangent)
     throw Error(Errc::InvalidOption, "direct.end_tangent = true needs the study's \"end_tangent\"",
@@ -175,6 +207,18 @@ MatchResult run_curvature_match(const CurvatureMatch& match, const MatchStudy& s
   result.before = match.distances(result.start);
   if (study.method == MatchMethod::Direct) {
     result.direct = run_direct(match, study);
+    // The reconstructed curve at the data points' abscissae: the arc-length fraction of each start point on
+    // the start spline (chord-length parameters, as the sampler builds it), scaled to the curve's length.
+    const CurvatureMatchSetup& s = match.setup();
+    const nurbs::NurbsCurve start_curve = match.sampler().curve(s.points);
+    const double start_length = nurbs::arc_length(start_curve);
+    const std::vector<double> t = nurbs::parameterise(s.points, nurbs::Parameterisation::ChordLength);
+    const double length = result.direct->curve.length();
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      const double dom_t = start_curve.domain().start + t[i] * start_curve.domain().length();
+      const double v = i + 1 == t.size() ? 1.0 : length_fraction(start_curve, dom_t, start_length);
+      result.direct_points.push_back(result.direct->curve.evaluate(v * length).position);
+    }
     result.ga_best = result.best = result.start;
     result.after_ga = result.after = result.before;
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -127,6 +127,9 @@ struct MatchResult {
   /// The reconstruction of the direct method (no GA runs then: start, best and the distances
   /// are those of the start points, the direct curve's own errors are in here).
   std::optional<DirectReconstructionResult> direct{};
+  /// The direct method's curve at the data points' abscissae (each start point's arc-length fraction on the
+  /// start spline, times the reconstructed length); empty for the GA routes.
+  std::vector<Vec3> direct_points{};
   /// Every individual of every generation, when asked for.
   optim::RunLog log{};
   /// The best mutually distinct designs of the GA (MatchGaSettings::distinct), best first.

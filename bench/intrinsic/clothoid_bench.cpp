@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: MIT
+// Benchmark of G1 Hermite clothoid interpolation (Bertolazzi–Frego, intrinsic/clothoid.hpp; issue 14 item 6
+// target: at most 1 µs per segment). A ring of 1024 seeded G1 problems (end angles relative to the chord
+// uniform in (−π/2, π/2), chords of length 0.5–2 in any direction) is solved round-robin; every problem's
+// end point is checked once outside the timed loop (the segment's quadrature end within 1e-12 of the target).
+//
+// Run: cmake --preset bench && cmake --build --preset bench --target bench_intrinsic_clothoid
+//      ./build/bench/bench/intrinsic/bench_intrinsic_clothoid
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <stdexcept>
+#include <vector>
+
+#include "hula/intrinsic/clothoid.hpp"
+
+namespace {
+
+using namespace hula;
+using namespace hula::intrinsic;
+
+struct Problem {
+  Vec3 p0, p1;
+  double theta0 = 0.0, theta1 = 0.0;
+};
+
+std::vector<Problem> problems() {
+  std::mt19937_64 rng(2014);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<Problem> out(1024);
+  for (Problem& p : out) {
+    const double dir = 2.0 * std::numbers::pi * u(rng), r = 0.5 + 1.5 * u(rng);
+    p.p0 = {u(rng), u(rng), 0.0};
+    p.p1 = p.p0 + Vec3{r * std::cos(dir), r * std::sin(dir), 0.0};
+    p.theta0 = dir + std::numbers::pi * (u(rng) - 0.5);
+    p.theta1 = dir + std::numbers::pi * (u(rng) - 0.5);
+    const ClothoidSegment s = fit_clothoid_g1(p.p0, p.theta0, p.p1, p.theta1).segment;
+    if (distance(s.point(s.length), p.p1) > 1e-12 * std::max(1.0, s.length))
+      throw std::runtime_error("clothoid bench: a G1 fit misses its end point");
+  }
+  return out;
+}
+
+void BM_intrinsic_clothoid_g1_fit(benchmark::State& state) {
+  const std::vector<Problem> ring = problems();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const Problem& p = ring[i++ & 1023];
+    benchmark::DoNotOptimize(fit_clothoid_g1(p.p0, p.theta0, p.p1, p.theta1));
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
+}
+BENCHMARK(BM_intrinsic_clothoid_g1_fit);
+
+void BM_intrinsic_fresnel(benchmark::State& state) {
+  double x = 0.0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(fresnel(x));
+    x = x > 8.0 ? 0.0 : x + 0.01;
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
+}
+BENCHMARK(BM_intrinsic_fresnel);
+
+}  // namespace

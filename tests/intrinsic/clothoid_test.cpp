@@ -1,0 +1,177 @@
+// SPDX-License-Identifier: MIT
+// Clothoid segments, Fresnel integrals and G1 Hermite clothoid interpolation (intrinsic/clothoid.hpp)
+// against independent references: the Fresnel integrals of mpmath 1.3.0 at 40 digits, the closed form
+// of a clothoid through C and S, the Euler spiral (C(s), S(s)), lines and circular arcs, the exact-angle
+// natural-equation integrator, and Bertolazzi–Frego's published test configurations.
+#include "hula/intrinsic/clothoid.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <random>
+
+#include "hula/testing/expect_error.hpp"
+
+namespace hula::intrinsic {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// Reference values: python3 -c "import mpmath as mp; mp.mp.dps = 40; print(mp.fresnelc(mp.mpf(x)), mp.fresnels(...))"
+// at the double x (mpmath's C, S use the π t²/2 normalisation of A&S 7.3.1–2; C(1) also in A&S Table 7.7).
+constexpr std::array<std::array<double, 3>, 17> kFresnel{{
+    {0.1, 0.0999975326270850736, 0.0005235895476122106867},
+    {0.5, 0.4923442258714463929, 0.06473243285999927761},
+    {1.0, 0.7798934003768228295, 0.4382591473903547661},
+    {1.5, 0.4452611760398215351, 0.6975049600820930131},
+    {2.0, 0.4882534060753407545, 0.3434156783636982422},
+    {2.5, 0.4574130096417770452, 0.6191817558195929361},
+    {3.0, 0.6057207892976856296, 0.4963129989673750361},
+    {4.0, 0.4984260330381776155, 0.4205157542469284244},
+    {5.0, 0.5636311887040122311, 0.4991913819171168868},
+    {5.9, 0.4485919531698299986, 0.5163306915041534263},
+    {6.0, 0.4995314678555011202, 0.4469607612369302776},
+    {6.1, 0.5495022012639654272, 0.516477082795103675},
+    {8.0, 0.4998021803771971356, 0.4602142143930144839},
+    {10.0, 0.4998986942055157236, 0.4681699785848822404},
+    {25.5, 0.4952287107867888338, 0.511534878686147459},
+    {100.0, 0.4999998986788178976, 0.4968169011478375533},
+    {1000.3, 0.5000448367037948115, 0.4996849601798649916},
+}};
+
+// checks: C(x), S(x) against mpmath at 17 abscissae across the quadrature (|x| ≤ 6) and asymptotic (> 6) ranges,
+// to 1e-14 absolute (the header's bound; the issue asks 1e-12), and the odd symmetry and the limits ±1/2.
+TEST(Fresnel, MatchesMpmathTo1e14) {
+  for (const auto& [x, c, s] : kFresnel) {
+    const FresnelValues v = fresnel(x);
+    EXPECT_NEAR(v.c, c, 1e-14) << "x = " << x;
+    EXPECT_NEAR(v.s, s, 1e-14) << "x = " << x;
+    const FresnelValues m = fresnel(-x);
+    EXPECT_EQ(m.c, -v.c) << x;
+    EXPECT_EQ(m.s, -v.s) << x;
+  }
+  EXPECT_EQ(fresnel(0.0).c, 0.0);
+  EXPECT_EQ(fresnel(std::numeric_limits<double>::infinity()).c, 0.5);
+  EXPECT_EQ(fresnel(-std::numeric_limits<double>::infinity()).s, -0.5);
+  HULA_EXPECT_ERROR(fresnel(std::nan("")), Errc::NonFiniteInput, "x");
+}
+
+// checks: the Euler spiral θ = π s²/2 from the origin is (C(s), S(s)) (its definition), to 1e-14.
+TEST(ClothoidSegment, EulerSpiralIsFresnel) {
+  const ClothoidSegment e{.dkappa = kPi, .length = 3.0};
+  for (double s = 0.0; s <= 3.0; s += 0.125) {
+    const FresnelValues v = fresnel(s);
+    const Vec3 p = e.point(s);
+    EXPECT_NEAR(p.x, v.c, 1e-14) << s;
+    EXPECT_NEAR(p.y, v.s, 1e-14) << s;
+  }
+}
+
+// checks: a general segment against the closed form by completing the square,
+// x + i y = z0 + sqrt(π/κ′) e^{iω} [(C(u1) − C(u0)) + i (S(u1) − S(u0))], ω = θ0 − κ0²/(2κ′), u = sqrt(κ′/π)(t +
+// κ0/κ′), to 1e-12; and the curvature and angle laws.
+TEST(ClothoidSegment, PointMatchesFresnelClosedForm) {
+  const ClothoidSegment c{.start = {1.0, -2.0, 0.0}, .theta0 = 0.7, .kappa0 = -0.4, .dkappa = 0.9, .length = 6.0};
+  const double w = c.theta0 - c.kappa0 * c.kappa0 / (2 * c.dkappa), k = std::sqrt(c.dkappa / kPi);
+  const FresnelValues f0 = fresnel(k * c.kappa0 / c.dkappa);
+  for (double s = 0.0; s <= c.length; s += 0.25) {
+    const FresnelValues f1 = fresnel(k * (s + c.kappa0 / c.dkappa));
+    const double dc = f1.c - f0.c, ds = f1.s - f0.s, scale = std::sqrt(kPi / c.dkappa);
+    const Vec3 p = c.point(s);
+    EXPECT_NEAR(p.x, 1.0 + scale * (std::cos(w) * dc - std::sin(w) * ds), 1e-12) << s;
+    EXPECT_NEAR(p.y, -2.0 + scale * (std::sin(w) * dc + std::cos(w) * ds), 1e-12) << s;
+    EXPECT_DOUBLE_EQ(c.curvature(s), -0.4 + 0.9 * s);
+    EXPECT_DOUBLE_EQ(c.angle(s), 0.7 - 0.4 * s + 0.45 * s * s);
+  }
+}
+
+// checks: to_intrinsic() (the exact-angle natural-equation integrator, an independent route) gives the same
+// points as the quadrature of point() to 1e-10.
+TEST(ClothoidSegment, IntrinsicCurveAgrees) {
+  const ClothoidSegment c{.start = {0.5, 0.0, 0.0}, .theta0 = 1.0, .kappa0 = 2.0, .dkappa = -3.0, .length = 2.0};
+  const IntrinsicCurve ic = c.to_intrinsic();
+  for (double s = 0.0; s <= 2.0; s += 0.1) EXPECT_LT(distance(ic.evaluate(s).position, c.point(s)), 1e-10) << s;
+}
+
+// checks: G1 closed forms: a straight segment (κ0 = κ′ = 0, L = r) and the quarter circle of radius 1 from (0,0)
+// heading +x to (1,1) heading +y (κ0 = 1, κ′ = 0, L = π/2), to 1e-12.
+TEST(ClothoidG1, LineAndCircleClosedForms) {
+  const ClothoidG1Result line = fit_clothoid_g1({1, 1, 0}, std::atan2(4.0, 3.0), {4, 5, 0}, std::atan2(4.0, 3.0));
+  EXPECT_NEAR(line.segment.kappa0, 0.0, 1e-12);
+  EXPECT_NEAR(line.segment.dkappa, 0.0, 1e-12);
+  EXPECT_NEAR(line.segment.length, 5.0, 1e-12);
+  const ClothoidG1Result arc = fit_clothoid_g1({0, 0, 0}, 0.0, {1, 1, 0}, kPi / 2);
+  EXPECT_NEAR(arc.segment.kappa0, 1.0, 1e-12);
+  EXPECT_NEAR(arc.segment.dkappa, 0.0, 1e-12);
+  EXPECT_NEAR(arc.segment.length, kPi / 2, 1e-12);
+}
+
+// checks: Bertolazzi–Frego's test configurations (their Clothoids toolbox scripts test_1.m / test_1b.m /
+// test_G2_1.m end data: (0.5, 0, 1) → (0.5, 0.5, 1); (0, 0.1, 1.571) → (0.085, 0.035, 2.356); (−2, 3, π/3) →
+// (3, 2, −π/4)) are interpolated: the end point, re-computed by the independent exact-angle integrator, within
+// 1e-12 of the target and the end angle exact to 1e-12; total turning below 2π (their uniqueness condition).
+TEST(ClothoidG1, PublishedConfigurationsAreInterpolated) {
+  struct Case {
+    Vec3 p0;
+    double t0;
+    Vec3 p1;
+    double t1;
+  };
+  for (const Case& c : {Case{{0.5, 0, 0}, 1.0, {0.5, 0.5, 0}, 1.0}, Case{{0, 0.1, 0}, 1.571, {0.085, 0.035, 0}, 2.356},
+                        Case{{-2, 3, 0}, kPi / 3, {3, 2, 0}, -kPi / 4}}) {
+    const ClothoidG1Result r = fit_clothoid_g1(c.p0, c.t0, c.p1, c.t1);
+    const ClothoidSegment& s = r.segment;
+    ASSERT_GT(s.length, 0.0);
+    const IntrinsicCurve ic = s.to_intrinsic();
+    EXPECT_LT(distance(ic.evaluate(s.length).position, c.p1), 1e-12 * std::max(1.0, s.length));
+    EXPECT_NEAR(std::remainder(s.angle(s.length) - c.t1, 2 * kPi), 0.0, 1e-12);
+    EXPECT_LT(std::abs(s.angle(s.length) - s.theta0), 2 * kPi);
+    EXPECT_LE(r.iterations, 6);
+  }
+}
+
+// checks (seeded property, 2000 cases): a known clothoid with total turning |Δθ| < π and moderate curvature
+// change is recovered from its own end data (κ0, κ′, L to 1e-9 relative), the round trip through point().
+TEST(ClothoidG1, RecoversKnownClothoids) {
+  std::mt19937_64 rng(14);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int checked = 0;
+  for (int i = 0; i < 2000; ++i) {
+    ClothoidSegment c{.start = {u(rng), u(rng), 0.0},
+                      .theta0 = kPi * u(rng),
+                      .kappa0 = 1.5 * u(rng),
+                      .dkappa = 2.0 * u(rng),
+                      .length = 0.2 + std::abs(u(rng))};
+    // Stay where the G1 solution is the one with the smaller turning: the angle varies by less than π/2
+    // from the chord's direction at both ends.
+    const double turn = c.angle(c.length) - c.theta0;
+    if (std::abs(turn) > kPi / 2) continue;
+    const Vec3 end = c.point(c.length);
+    const double chord = std::atan2(end.y - c.start.y, end.x - c.start.x);
+    if (std::abs(std::remainder(c.theta0 - chord, 2 * kPi)) > kPi / 2 ||
+        std::abs(std::remainder(c.angle(c.length) - chord, 2 * kPi)) > kPi / 2)
+      continue;
+    ++checked;
+    const ClothoidG1Result r = fit_clothoid_g1(c.start, c.theta0, end, c.angle(c.length));
+    EXPECT_NEAR(r.segment.length, c.length, 1e-9 * c.length) << i;
+    EXPECT_NEAR(r.segment.kappa0, c.kappa0, 1e-9 * (1.0 + std::abs(c.kappa0)) / c.length) << i;
+    EXPECT_NEAR(r.segment.dkappa, c.dkappa, 1e-9 * (1.0 + std::abs(c.dkappa)) / (c.length * c.length)) << i;
+  }
+  EXPECT_GT(checked, 500);
+}
+
+// checks: bad input is refused, naming it.
+TEST(ClothoidG1, RefusesBadInput) {
+  HULA_EXPECT_ERROR(fit_clothoid_g1({0, 0, 0}, 0.0, {0, 0, 0}, 1.0), Errc::CoincidentPoints, "p1");
+  HULA_EXPECT_ERROR(fit_clothoid_g1({0, 0, 0}, std::nan(""), {1, 0, 0}, 1.0), Errc::NonFiniteInput, "theta0");
+  ClothoidG1Options o;
+  o.max_iterations = 0;
+  HULA_EXPECT_ERROR(fit_clothoid_g1({0, 0, 0}, 0.0, {1, 0, 0}, 0.0, o), Errc::InvalidOption, "max_iterations");
+}
+
+}  // namespace
+}  // namespace hula::intrinsic
