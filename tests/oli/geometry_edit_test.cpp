@@ -38,7 +38,7 @@ double max_distance(const nurbs::NurbsCurve& a, const nurbs::NurbsCurve& b) {
   double worst = 0.0;
   for (int i = 0; i <= 100; ++i) {
     const double t = t0 + (t1 - t0) * i / 100.0;
-    worst = std::max(worst, norm(a.point(t) - b.point(t)));
+    worst = std::max(worst, norm(a.evaluate(t) - b.evaluate(t)));
   }
   return worst;
 }
@@ -57,7 +57,8 @@ TEST_P(GeometryEdit, InsertKnotKeepsShapeAndUndoRestoresBitForBit) {
   ASSERT_TRUE(doc.undo());
   EXPECT_EQ(observable(doc), stored);
   const nurbs::NurbsCurve undone = nurbs_of(label);
-  EXPECT_TRUE(std::equal(undone.knots().begin(), undone.knots().end(), before.knots().begin(), before.knots().end()));
+  EXPECT_TRUE(std::equal(undone.knots().values().begin(), undone.knots().values().end(),
+                         before.knots().values().begin(), before.knots().values().end()));
   ASSERT_EQ(undone.control_points().size(), before.control_points().size());
   for (std::size_t i = 0; i < before.control_points().size(); ++i)
     EXPECT_EQ(undone.control_points()[i], before.control_points()[i]) << i;
@@ -80,7 +81,7 @@ TEST_P(GeometryEdit, ReverseTraversesBackwards) {
   const auto [a, b] = before.domain();
   for (int i = 0; i <= 100; ++i) {
     const double t = a + (b - a) * i / 100.0;
-    EXPECT_LE(norm(after.point(t) - before.point(a + b - t)), 1e-12) << t;
+    EXPECT_LE(norm(after.evaluate(t) - before.evaluate(a + b - t)), 1e-12) << t;
   }
 }
 
@@ -101,7 +102,7 @@ TEST_P(GeometryEdit, SplitMakesTwoPiecesWithProvenance) {
     const auto [a, b] = n.domain();
     for (int i = 0; i <= 20; ++i) {
       const double t = a + (b - a) * i / 20.0;
-      EXPECT_LE(norm(n.point(t) - before.point(t)), 1e-12) << t;
+      EXPECT_LE(norm(n.evaluate(t) - before.evaluate(t)), 1e-12) << t;
     }
   }
   EXPECT_EQ(doc.get(pieces.first).attributes().name, "spine (1)");
@@ -131,9 +132,11 @@ INSTANTIATE_TEST_SUITE_P(Backends, GeometryEdit, ::testing::ValuesIn(kernel_name
 TEST(GeometryEditKinds, LawCurveIsRefused) {
   Document doc;
   Label l;
-  doc.transact("add", [&](Edit& e) {
-       l = e.add_curve(curve::Curve::from_law("vec(t, t^2)", "t", {0.0, 1.0}));
-     }).throw_if_failed();
+  doc.transact("add",
+               [&](Edit& e) {
+                 l = e.add_curve(curve::Curve::from_law("vec(t, t^2)", "t", {0.0, 1.0}));
+               })
+      .throw_if_failed();
   const Outcome o = doc.transact("insert knot", [&](Edit& e) { e.insert_knot(l, 0.5); });
   EXPECT_FALSE(o);
   EXPECT_EQ(o.error_code, "InvalidArgument");
