@@ -12,6 +12,7 @@ import os
 import resource
 import signal
 import socket
+import subprocess
 import sys
 import tempfile
 import threading
@@ -711,6 +712,82 @@ class DocumentTest(unittest.TestCase):
         self.assertIn("inflections", a["features"])
         self.call("POST", f"{base}/entities/{label}/analysis", {"by": "time"}, expect=400)
 
+    # checks insert-knot and elevate on both kernel backends against the curve before: one more control
+    # point (or degree), the same points at 101 parameters (1e-9, from the analysis route), undo restores
+    # the entity exactly, and bad input answers the documented status naming the field
+    def test_insert_knot_and_elevate(self):
+        cubic = {"kind": "nurbs", "degree": 3, "knots": [0, 0, 0, 0, 0.25, 0.5, 0.75, 1, 1, 1, 1],
+                 "control_points": [[i, (i % 3) * 1.5, 0.5 * i] for i in range(7)]}
+        for backend in ("native", "occt"):
+            name = f"knots-{backend}.hula"
+            self.call("POST", "/api/documents", {"name": name, "backend": backend}, expect=201)
+            base = f"/api/documents/{name}"
+            label = self.call("POST", base + "/entities", {"curve": cubic}, expect=201)["label"]
+            entity = f"{base}/entities/{label}"
+            original = self.call("GET", entity)
+            before = self.call("POST", entity + "/analysis", {"samples": 101})["points"]
+            r = self.call("POST", entity + "/insert-knot", {"u": 0.3})
+            self.assertEqual(r["changes"]["changed"], [label])
+            after = self.call("GET", entity)
+            self.assertEqual(len(after["control_points"]), 8)
+            moved = self.call("POST", entity + "/analysis", {"samples": 101})["points"]
+            self.assertLessEqual(max(math.dist(p, q) for p, q in zip(before, moved)), 1e-9)
+            self.call("POST", entity + "/elevate", {"times": 2})
+            self.assertEqual(self.call("GET", entity)["degree"], 5)
+            moved = self.call("POST", entity + "/analysis", {"samples": 101})["points"]
+            self.assertLessEqual(max(math.dist(p, q) for p, q in zip(before, moved)), 1e-9)
+            self.assertEqual([h["name"] for h in self.call("GET", base + "/history")["history"]],
+                             ["add curve", "insert knot", "elevate degree"])
+            self.call("POST", base + "/undo")
+            self.call("POST", base + "/undo")
+            self.assertEqual(self.call("GET", entity), original)
+            e = self.call("POST", entity + "/insert-knot", {"u": 2}, expect=422)["error"]
+            self.assertEqual((e["code"], e["where"]["field"]), ("OutOfDomain", "u"))
+            self.call("POST", entity + "/insert-knot", {"u": 0.5, "times": 4}, expect=422)
+            self.call("POST", entity + "/insert-knot", {}, expect=400)
+            self.call("POST", entity + "/elevate", {"times": 0}, expect=400)
+            self.call("POST", f"{base}/entities/999/elevate", {}, expect=404)
+            self.assertEqual(self.call("GET", entity), original)
+
+    # checks import of a workspace JSON file (same construction data back), an uploaded STEP file written
+    # by `hula doc export` (its control points back to 1e-9, provenance import:step), and that names
+    # outside the workspace, symbolic links, missing files and a garbage STEP file are refused with the
+    # document unchanged
+    def test_import(self):
+        self.new_document("import.hula")
+        base = "/api/documents/import.hula"
+        quad = {"kind": "nurbs", "degree": 2, "knots": [0, 0, 0, 0.5, 1, 1, 1],
+                "control_points": [[0, 0, 0], [10, 20, 0], [30, 20, 5], [40, 0, 5]]}
+        with open(os.path.join(self.server.workspace, "quad.json"), "w") as f:
+            json.dump(quad, f)
+        r = self.call("POST", base + "/import", {"file": "quad.json"}, expect=201)
+        self.assertEqual(r["changes"]["added"], r["labels"])
+        got = self.call("GET", f"{base}/entities/{r['labels'][0]}")
+        self.assertEqual((got["knots"], got["control_points"]), (quad["knots"], quad["control_points"]))
+        with tempfile.TemporaryDirectory() as tmp:
+            scratch, step = os.path.join(tmp, "s.hula"), os.path.join(tmp, "quad.step")
+            for args in (["new", scratch], ["add", scratch, "--curve", os.path.join(self.server.workspace, "quad.json")],
+                         ["export", scratch, "1", "--format", "step", "-o", step]):
+                subprocess.run([HULA, "doc", *args], check=True, capture_output=True, timeout=120)
+            with open(step) as f:
+                text = f.read()
+        r = self.call("POST", base + "/import", {"filename": "quad.step", "content": text}, expect=201)
+        self.assertEqual(len(r["labels"]), 1)
+        got = self.call("GET", f"{base}/entities/{r['labels'][0]}")
+        self.assertEqual(got["provenance"]["operation"], "import:step")
+        self.assertEqual(len(got["control_points"]), 4)
+        for p, q in zip(got["control_points"], quad["control_points"]):
+            self.assertLessEqual(math.dist(p, q), 1e-9)
+        revision = self.call("GET", base)["revision"]
+        os.symlink("/etc/hostname", os.path.join(self.server.workspace, "link.json"))
+        for bad in ("../quad.json", "/etc/quad.json", "link.json", "notes.txt", ".hidden.json"):
+            e = self.call("POST", base + "/import", {"file": bad}, expect=400)["error"]
+            self.assertEqual(e["where"]["field"], "file", bad)
+        self.call("POST", base + "/import", {"file": "missing.json"}, expect=404)
+        self.call("POST", base + "/import", {"filename": "bad.step", "content": "not a STEP file"}, expect=400)
+        self.call("POST", base + "/import", {"filename": "bad.json", "content": "{\"kind\": 1}"}, expect=400)
+        self.assertEqual(self.call("GET", base)["revision"], revision)
+
     # checks a second client's stream receives every change set with its revision, in order
     def test_document_events(self):
         self.new_document("events.hula")
@@ -732,7 +809,7 @@ class DocumentTest(unittest.TestCase):
     # class with a body (or SSE events) valid against the document
     def test_zz_every_operation_seen(self):
         wanted = operations(self.api, "/api/documents")
-        self.assertEqual(len(wanted), 14)
+        self.assertEqual(len(wanted), 17)
         self.assertEqual(wanted - self.api.seen, set())
 
 

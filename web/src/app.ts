@@ -20,6 +20,7 @@ import {
   ControlPointTool,
   HermiteTool,
   SplineTool,
+  midSpan,
   type Tool,
   type ToolHost,
   type ToolName,
@@ -359,6 +360,29 @@ export class App {
 
   async redo(): Promise<void> {
     const reply = await this.run(() => this.client.redo(this.store.name));
+    if (reply) this.applyReply(reply);
+  }
+
+  /** Insert a knot into the selected curve at the hovered sample's parameter, else mid-span. */
+  async insertKnotSelected(): Promise<void> {
+    const label = this.selected;
+    if (!label) return;
+    const a = this.store.analyses.get(label);
+    const hovered = this.hoverIndex !== null && a ? a.t[this.hoverIndex] : undefined;
+    const c = this.store.entities.get(label)?.curve;
+    const t = a?.t ?? [];
+    const u =
+      hovered ??
+      (c?.kind === 'nurbs' ? midSpan(c.knots) : 0.5 * ((t[0] ?? 0) + (t[t.length - 1] ?? 1)));
+    const reply = await this.run(() => this.client.insertKnot(this.store.name, label, u));
+    if (reply) this.applyReply(reply);
+  }
+
+  /** Raise the degree of the selected curve by one. */
+  async elevateSelected(): Promise<void> {
+    const label = this.selected;
+    if (!label) return;
+    const reply = await this.run(() => this.client.elevate(this.store.name, label));
     if (reply) this.applyReply(reply);
   }
 
@@ -861,6 +885,12 @@ export class App {
       case 'delete':
         void this.deleteSelected();
         break;
+      case 'insert-knot':
+        void this.insertKnotSelected();
+        break;
+      case 'elevate':
+        void this.elevateSelected();
+        break;
       case 'fit':
         this.fitAll();
         break;
@@ -890,6 +920,16 @@ export class App {
 
   async importFile(file: File): Promise<void> {
     const text = await file.text();
+    if (/\.(step|stp|iges|igs)$/i.test(file.name)) {
+      // STEP/IGES are read by the server's isolated Open CASCADE helper.
+      const reply = await this.run(() => this.client.importFile(this.store.name, file.name, text));
+      if (!reply) return;
+      this.applyReply(reply);
+      const first = reply.labels[0];
+      if (first !== undefined) this.select(String(first));
+      this.fitAll();
+      return;
+    }
     let curve: CurveFile;
     try {
       curve = JSON.parse(text) as CurveFile;
@@ -960,6 +1000,8 @@ export class App {
       '?': 'help',
       delete: 'delete',
       backspace: 'delete',
+      u: 'insert-knot',
+      d: 'elevate',
     };
     const views: Record<string, ViewName> = { '1': 'top', '2': 'front', '3': 'side', '4': 'persp' };
     if (tools[k]) this.setTool(tools[k]);

@@ -44,6 +44,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "hula/core/error.hpp"
@@ -422,6 +423,29 @@ class Edit {
   /// Removes an entity; its label is never given again.
   /// @throws hula::Error(Errc::InvalidArgument) for a missing label or a locked entity
   void remove(Label label);
+
+  // Geometric operations, computed by the document's kernel backend
+  // (DocumentOptions::backend, make_kernel). A NURBS, Bézier, interpolated or Hermite curve is
+  // operated on as its exact NURBS and the entity becomes a NURBS curve; a law or
+  // natural-equation curve (whose NURBS is an approximation) is refused. Kernel errors
+  // (OutOfDomain, InvalidKnots, Unsupported, ...) keep their code and field, with the entity
+  // and the operation named in the message; they roll the transaction back.
+
+  /// Inserts knot u `times` times (the curve is unchanged as a point set and parametrisation).
+  /// @throws hula::Error(Errc::InvalidArgument) for a missing label, another kind, a locked
+  ///   entity or a law / natural-equation curve; as Kernel::insert_knot
+  void insert_knot(Label label, double u, int times = 1);
+  /// Raises the degree by `times` without changing the curve.
+  /// @throws as insert_knot, and as Kernel::elevate_degree
+  void elevate_degree(Label label, int times = 1);
+  /// Reverses the direction of traversal on the same domain.
+  /// @throws as insert_knot
+  void reverse(Label label);
+  /// Splits a curve at t: removes the entity and adds its pieces on [a, t] and [t, b], named
+  /// "<name> (1)" and "<name> (2)", with provenance {"split", [label], details {"t"}}.
+  /// @returns the labels of the two pieces
+  /// @throws as insert_knot, and as Kernel::split (OutOfDomain unless a < t < b)
+  std::pair<Label, Label> split(Label label, double t);
 
   /// The document as the body sees it so far (its own changes included).
   [[nodiscard]] const Document& document() const noexcept { return *document_; }

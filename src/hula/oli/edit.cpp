@@ -10,6 +10,11 @@
 #include "hula/curve/curve.hpp"
 #include "hula/oli/detail/document_impl.hpp"
 #include "hula/oli/detail/entity_codec.hpp"
+#include "hula/oli/kernel/kernel.hpp"
+
+#ifndef HULA_VERSION
+#define HULA_VERSION "unknown"
+#endif
 
 namespace hula::oli {
 
@@ -92,6 +97,32 @@ curve::Curve moved(const curve::Curve& c, std::size_t index, Vec3 to) {
         }
       },
       c.data());
+}
+
+// The exact NURBS of a curve entity, for an operation of the document's kernel.
+const nurbs::NurbsCurve& exact_nurbs(const EntityState& state, Label label, std::string_view operation) {
+  require_kind(state, label, EntityKind::Curve);
+  const curve::Curve& c = *state.curve;
+  if (c.kind() == curve::Kind::Law || c.kind() == curve::Kind::Natural)
+    throw Error(Errc::InvalidArgument,
+                "cannot " + std::string(operation) + " " + label_text(label) + ": a " + std::string(c.kind_name()) +
+                    " curve is held exactly, its NURBS is an approximation (add its NURBS as a curve first)",
+                {.field = "label"});
+  return c.nurbs();
+}
+
+// Runs a kernel operation; its errors keep code and field and gain the entity and operation.
+template <class Operation>
+auto through_kernel(const Document& document, Label label, std::string_view operation, Operation&& op) {
+  const std::shared_ptr<const Kernel> kernel = make_kernel(document.options().backend);
+  try {
+    return op(*kernel);
+  } catch (const Error& e) {
+    throw Error(e.code(),
+                std::string(operation) + " of " + label_text(label) + " (" + std::string(kernel->name()) +
+                    " backend): " + e.message(),
+                e.where());
+  }
 }
 
 }  // namespace
@@ -243,6 +274,56 @@ void Edit::remove(Label label) {
   const StatePtr& current = m.existing(label);
   (void)editable(current, label, "remove it");
   m.put(label, nullptr);
+}
+
+void Edit::insert_knot(Label label, double u, int times) {
+  Document::Impl& m = *document_->impl_;
+  const StatePtr& current = m.existing(label);
+  const nurbs::NurbsCurve& n = exact_nurbs(*current, label, "insert a knot into");
+  auto next = editable(current, label, "insert a knot");
+  next->curve = std::make_shared<const curve::Curve>(
+      through_kernel(*document_, label, "knot insertion", [&](const Kernel& k) { return k.insert_knot(n, u, times); }));
+  m.put(label, std::move(next));
+}
+
+void Edit::elevate_degree(Label label, int times) {
+  Document::Impl& m = *document_->impl_;
+  const StatePtr& current = m.existing(label);
+  const nurbs::NurbsCurve& n = exact_nurbs(*current, label, "elevate the degree of");
+  auto next = editable(current, label, "elevate its degree");
+  next->curve = std::make_shared<const curve::Curve>(through_kernel(
+      *document_, label, "degree elevation", [&](const Kernel& k) { return k.elevate_degree(n, times); }));
+  m.put(label, std::move(next));
+}
+
+void Edit::reverse(Label label) {
+  Document::Impl& m = *document_->impl_;
+  const StatePtr& current = m.existing(label);
+  const nurbs::NurbsCurve& n = exact_nurbs(*current, label, "reverse");
+  auto next = editable(current, label, "reverse it");
+  next->curve = std::make_shared<const curve::Curve>(
+      through_kernel(*document_, label, "reversal", [&](const Kernel& k) { return k.reverse(n); }));
+  m.put(label, std::move(next));
+}
+
+std::pair<Label, Label> Edit::split(Label label, double t) {
+  Document::Impl& m = *document_->impl_;
+  const StatePtr current = m.existing(label);  // a copy: remove() below replaces the map's entry
+  const nurbs::NurbsCurve& n = exact_nurbs(*current, label, "split");
+  (void)editable(current, label, "split it");
+  nurbs::SplitResult pieces =
+      through_kernel(*document_, label, "split", [&](const Kernel& k) { return k.split(n, t); });
+  Provenance provenance{.operation = "split", .inputs = {label}, .tool_version = HULA_VERSION};
+  provenance.details["t"] = t;
+  provenance.details["backend"] = document_->options().backend;
+  Attributes first = current->attributes;
+  Attributes second = current->attributes;
+  first.name += " (1)";
+  second.name += " (2)";
+  remove(label);
+  const Label a = add_curve(curve::Curve(std::move(pieces.before)), std::move(first), provenance);
+  const Label b = add_curve(curve::Curve(std::move(pieces.after)), std::move(second), std::move(provenance));
+  return {a, b};
 }
 
 }  // namespace hula::oli

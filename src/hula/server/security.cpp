@@ -169,10 +169,11 @@ std::string read_token_file(const std::filesystem::path& path) {
   return token;
 }
 
-void validate_document_name(std::string_view name) {
-  const auto refuse = [&](const std::string& why) {
-    throw Error(Errc::InvalidArgument, "document name '" + std::string(name) + "' " + why, ErrorWhere{.field = "name"});
-  };
+namespace {
+
+// The plain-file-name rules shared by documents and workspace files; refuse(why) throws.
+template <class Refuse>
+void check_plain_name(std::string_view name, const Refuse& refuse) {
   if (name.empty()) refuse("is empty");
   if (name.size() > 255) refuse("is longer than 255 bytes");
   if (name.front() == '/') refuse("is an absolute path: give a plain file name inside the workspace");
@@ -183,7 +184,29 @@ void validate_document_name(std::string_view name) {
     if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) refuse("holds a control character");
   }
   if (name.front() == '.') refuse("starts with '.' (hidden files are not documents)");
+}
+
+}  // namespace
+
+void validate_document_name(std::string_view name) {
+  const auto refuse = [&](const std::string& why) {
+    throw Error(Errc::InvalidArgument, "document name '" + std::string(name) + "' " + why, ErrorWhere{.field = "name"});
+  };
+  check_plain_name(name, refuse);
   if (!name.ends_with(".hula") || name.size() == 5) refuse("does not end in '.hula'");
+}
+
+std::filesystem::path workspace_file_path(const std::filesystem::path& workspace, std::string_view name,
+                                          const char* field) {
+  const auto refuse = [&](const std::string& why) {
+    throw Error(Errc::InvalidArgument, "file name '" + std::string(name) + "' " + why, ErrorWhere{.field = field});
+  };
+  check_plain_name(name, refuse);
+  std::filesystem::path p = workspace / std::string(name);
+  std::error_code ec;
+  if (std::filesystem::is_symlink(std::filesystem::symlink_status(p, ec)))
+    refuse("is a symbolic link (it could lead out of the workspace)");
+  return p;
 }
 
 std::filesystem::path document_path(const std::filesystem::path& workspace, std::string_view name) {

@@ -84,4 +84,10 @@ void validate_document_name(std::string_view name);
 /// @throws hula::Error(Errc::InvalidArgument) as validate_document_name, or for a symbolic link
 [[nodiscard]] std::filesystem::path document_path(const std::filesystem::path& workspace, std::string_view name);
 
+/// The path of a file the API reads from the workspace (an import): a plain file name as for
+/// documents (no separators, no "..", not hidden, not absolute), any extension, not a symbolic link.
+/// @throws hula::Error(Errc::InvalidArgument) naming the file and the rule, with where.field = field
+[[nodiscard]] std::filesystem::path workspace_file_path(const std::filesystem::path& workspace, std::string_view name,
+                                                        const char* field);
+
 }  // namespace hula::server

@@ -13,6 +13,7 @@ import type {
   ErrorBody,
   Health,
   History as DocHistory,
+  Label,
   Job,
   LawRequest,
   LawResponse,
@@ -184,6 +185,28 @@ export class Client {
   }
   patchEntity(doc: string, label: string, patch: Record<string, unknown>): Promise<ChangeReply> {
     return this.request('PATCH', `${this.doc(doc)}/entities/${encodeURIComponent(label)}`, patch);
+  }
+  /** Insert knot u `times` times (the curve keeps its shape; one undo step). */
+  insertKnot(doc: string, label: string, u: number, times = 1): Promise<ChangeReply> {
+    return this.request(
+      'POST',
+      `${this.doc(doc)}/entities/${encodeURIComponent(label)}/insert-knot`,
+      { u, times },
+    );
+  }
+  /** Raise the degree by `times` (the curve keeps its shape; one undo step). */
+  elevate(doc: string, label: string, times = 1): Promise<ChangeReply> {
+    return this.request('POST', `${this.doc(doc)}/entities/${encodeURIComponent(label)}/elevate`, {
+      times,
+    });
+  }
+  /** Import an uploaded STEP, IGES or JSON file's curves (one undo step); their labels come back. */
+  importFile(
+    doc: string,
+    filename: string,
+    content: string,
+  ): Promise<ChangeReply & { labels: Label[] }> {
+    return this.request('POST', `${this.doc(doc)}/import`, { filename, content });
   }
   deleteEntity(doc: string, label: string): Promise<ChangeReply> {
     return this.request('DELETE', `${this.doc(doc)}/entities/${encodeURIComponent(label)}`);

@@ -6,6 +6,7 @@ import {
   SplineTool,
   chordLength,
   clampedUniformKnots,
+  midSpan,
   type ToolHost,
 } from './tools';
 
@@ -31,6 +32,12 @@ describe('creation tools', () => {
     expect(clampedUniformKnots(5, 3)).toEqual([0, 0, 0, 0, 0.5, 1, 1, 1, 1]);
     expect(clampedUniformKnots(4, 3)).toEqual([0, 0, 0, 0, 1, 1, 1, 1]);
     expect(clampedUniformKnots(3, 1)).toEqual([0, 0, 0.5, 1, 1]);
+  });
+
+  // The widest span of [0,0,0,0,0.25,1,1,1,1] is [0.25, 1]: its middle is 0.625; one span: its middle.
+  it('finds the middle of the widest knot span', () => {
+    expect(midSpan([0, 0, 0, 0, 0.25, 1, 1, 1, 1])).toBe(0.625);
+    expect(midSpan([0, 0, 2, 2])).toBe(1);
   });
 
   // Appendix 8.1: clicks, right-click, tangent click, right-click (natural end); the start

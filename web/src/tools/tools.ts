@@ -38,6 +38,20 @@ export function clampedUniformKnots(n: number, p: number): number[] {
 }
 
 /** The chord length of a polygon: the scale of an end tangent dC/dt on t ∈ [0, 1]. */
+/** The middle of the widest knot span of a knot vector (where "Insert knot" puts a knot). */
+export function midSpan(knots: readonly number[]): number {
+  let best = 0;
+  let at = knots.length > 0 ? knots[0]! : 0;
+  for (let i = 1; i < knots.length; i++) {
+    const width = knots[i]! - knots[i - 1]!;
+    if (width > best) {
+      best = width;
+      at = 0.5 * (knots[i]! + knots[i - 1]!);
+    }
+  }
+  return at;
+}
+
 export function chordLength(points: readonly Vec3[]): number {
   let l = 0;
   for (let i = 1; i < points.length; i++) l += norm(sub(points[i]!, points[i - 1]!));

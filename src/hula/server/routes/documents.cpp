@@ -5,9 +5,24 @@
 // the workspace's .trash folder, never unlinked), undo, redo, history, and
 // GET /api/documents/{name}/events: every change set of the document, by any
 // client, as Server-Sent Events ("change" events), from the subscription on.
+// POST /api/documents/{name}/import {"file"} | {"filename", "content"}: the
+// curves of a STEP, IGES or JSON file (a plain name in the workspace, or the
+// file's text in the body) as new entities, in one "import" step.
 #include "hula/server/documents.hpp"
 
+#include <stdlib.h>  // mkstemps
+#include <unistd.h>  // close
+
+#include <cctype>
+#include <fstream>
+
+#include "hula/io/atomic_file.hpp"
 #include "hula/io/json_read.hpp"
+#include "hula/oli/json_exchange.hpp"
+#include "hula/server/security.hpp"
+#ifdef HULA_WITH_OCCT
+#include "hula/oli/cad_exchange.hpp"
+#endif
 #include "hula/server/routes/routes.hpp"
 
 namespace hula::server::routes {
@@ -50,6 +65,68 @@ Json history_json(const std::vector<oli::HistoryEntry>& history) {
   }
   return out;
 }
+
+// The lower-case extension of an import file name: step, stp, iges, igs or json (else 400).
+std::string import_extension(const std::string& name, const char* field) {
+  std::string ext = std::filesystem::path(name).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext != ".step" && ext != ".stp" && ext != ".iges" && ext != ".igs" && ext != ".json")
+    throw Error(Errc::InvalidArgument, "import file '" + name + "' must end in .step, .stp, .iges, .igs or .json",
+                ErrorWhere{.field = field});
+  return ext.substr(1);
+}
+
+// A file the import route reads: a workspace file, or the uploaded text in a temporary file
+// removed when done (the exchange helper reads files, not text).
+class ImportFile {
+ public:
+  ImportFile(const std::filesystem::path& workspace, const Json& body) {
+    if (const Json* f = json::optional_member(body, "file")) {
+      name_ = json::get_string(*f, json::root_path("file"));
+      extension_ = import_extension(name_, "file");
+      path_ = workspace_file_path(workspace, name_, "file");
+      if (!std::filesystem::is_regular_file(path_))
+        throw HttpError(404, "NotFound", "the workspace has no file '" + name_ + "'");
+      return;
+    }
+    name_ = json::get_string(json::require_member(body, json::JsonPath(), "filename"), json::root_path("filename"));
+    extension_ = import_extension(name_, "filename");
+    content_ = json::get_string(json::require_member(body, json::JsonPath(), "content"), json::root_path("content"));
+    if (extension_ == "json") return;
+    std::string pattern = (std::filesystem::temp_directory_path() / "hula-import-XXXXXX.").string() + extension_;
+    const int fd = mkstemps(pattern.data(), static_cast<int>(extension_.size() + 1));
+    if (fd < 0)
+      throw Error(Errc::IoError, "cannot create a temporary file for the upload of '" + name_ + "'",
+                  ErrorWhere{.field = "filename"});
+    ::close(fd);
+    path_ = pattern;
+    temporary_ = true;
+    std::ofstream out(path_, std::ios::binary);
+    out << content_;
+    if (!out.flush())
+      throw Error(Errc::IoError, "cannot write the upload of '" + name_ + "' to " + path_.string(),
+                  ErrorWhere{.field = "filename"});
+  }
+  ImportFile(const ImportFile&) = delete;
+  ImportFile& operator=(const ImportFile&) = delete;
+  ~ImportFile() {
+    std::error_code ec;
+    if (temporary_) std::filesystem::remove(path_, ec);
+  }
+
+  [[nodiscard]] bool json() const { return extension_ == "json"; }
+  [[nodiscard]] const std::string& name() const { return name_; }
+  [[nodiscard]] const std::filesystem::path& path() const { return path_; }
+  /// The JSON text: the upload's, or the workspace file's.
+  [[nodiscard]] std::string text() const { return path_.empty() ? content_ : io::read_text_file(path_); }
+
+ private:
+  std::string name_;
+  std::string extension_;
+  std::string content_;
+  std::filesystem::path path_;
+  bool temporary_ = false;
+};
 
 }  // namespace
 
@@ -98,6 +175,38 @@ void add_documents(Router& router, const Context& context) {
     out["name"] = request.params.at(0);
     out["trash"] = trash.filename().string();
     return json_response(200, out);
+  });
+  router.add("POST", "/api/documents/{name}/import", [&docs, workspace = context.workspace](const Request& request) {
+    const Json body = request.json();
+    json::reject_unknown_members(body, json::JsonPath(), {"file", "filename", "content"});
+    const auto doc = docs.get(request.params.at(0));
+    const ImportFile file(workspace, body);
+    std::vector<oli::Label> labels;
+    oli::Outcome outcome;
+    if (file.json()) {
+      const Json input = io::json::parse_json_text(file.text(), file.name());
+      outcome = doc->write([&](oli::Document& d) {
+        return d.transact("import", [&](oli::Edit& e) { labels = oli::import_json(e, input, file.name()); });
+      });
+    } else {
+#ifdef HULA_WITH_OCCT
+      // Read in the isolated helper process before taking the document: a crash or hang of the
+      // reader is an error naming the file, and the document is untouched.
+      const oli::ImportReport report = oli::import_curves(file.path());
+      outcome = doc->write([&](oli::Document& d) {
+        return d.transact("import", [&](oli::Edit& e) { labels = oli::add_imported(e, report, file.name()); });
+      });
+#else
+      throw Error(Errc::Unsupported, "importing '" + file.name() + "' needs Open CASCADE, and this hula was built without it",
+                  ErrorWhere{.field = "file"});
+#endif
+    }
+    Response r = outcome_response(outcome, 201);
+    Json out = Json::parse(r.body);
+    Json list = Json::array();
+    for (const oli::Label l : labels) list.push_back(l.value);
+    out["labels"] = std::move(list);
+    return json_response(201, out);
   });
   router.add("POST", "/api/documents/{name}/undo", [&docs](const Request& request) {
     const auto doc = docs.get(request.params.at(0));

@@ -2,7 +2,8 @@
 // Entities of a document: POST /api/documents/{name}/entities {"curve": curve
 // file, "name"?, "attributes"?} (201), GET|PUT|PATCH|DELETE
 // /api/documents/{name}/entities/{label}, and POST .../{label}/analysis
-// (analysis.hpp, read-only). A PATCH {"move": [{"index", "to"}],
+// (analysis.hpp, read-only), POST .../{label}/insert-knot {"u", "times"?} and
+// .../{label}/elevate {"times"?} (oli::Edit through the document's kernel). A PATCH {"move": [{"index", "to"}],
 // "continue": true} continues the previous "move points" step, so a drag is
 // one undo step (oli::TransactMode::Continue). Every change answers
 // {"revision", "changes"} (the change set, also pushed to the document's
@@ -68,6 +69,12 @@ std::vector<Move> read_moves(const Json& list) {
     out.push_back({index, json::get_point(json::require_member(moves[i], p, "to"), p.member("to")).first});
   }
   return out;
+}
+
+// The optional "times" of a knot insertion or degree elevation (default 1).
+int read_times(const Json& body) {
+  const Json* t = json::optional_member(body, "times");
+  return t ? static_cast<int>(json::get_integer(*t, json::root_path("times"), 1, 64)) : 1;
 }
 
 }  // namespace
@@ -145,6 +152,27 @@ void add_entities(Router& router, const Context& context) {
     return outcome_response(
         doc->write([&](oli::Document& d) { return d.transact("remove", [&](oli::Edit& e) { e.remove(label); }); }),
         200);
+  });
+  router.add("POST", "/api/documents/{name}/entities/{label}/insert-knot", [&docs](const Request& request) {
+    const Json body = request.json();
+    json::reject_unknown_members(body, json::JsonPath(), {"u", "times"});
+    const double u = json::get_number(json::require_member(body, json::JsonPath(), "u"), json::root_path("u"));
+    const int times = read_times(body);
+    const auto [doc, label] = entity_of(docs, request);
+    return outcome_response(doc->write([&](oli::Document& d) {
+      return d.transact("insert knot", [&](oli::Edit& e) { e.insert_knot(label, u, times); });
+    }),
+                            200);
+  });
+  router.add("POST", "/api/documents/{name}/entities/{label}/elevate", [&docs](const Request& request) {
+    const Json body = request.body.empty() ? Json::object() : request.json();
+    json::reject_unknown_members(body, json::JsonPath(), {"times"});
+    const int times = read_times(body);
+    const auto [doc, label] = entity_of(docs, request);
+    return outcome_response(doc->write([&](oli::Document& d) {
+      return d.transact("elevate degree", [&](oli::Edit& e) { e.elevate_degree(label, times); });
+    }),
+                            200);
   });
   router.add("POST", "/api/documents/{name}/entities/{label}/analysis", [&docs](const Request& request) {
     const AnalysisRequest options = analysis_request_from_json(request.body.empty() ? Json::object() : request.json());

@@ -36,7 +36,8 @@ void add_jobs(Router& router, const Context& context);
 
 /// GET|POST /api/documents, GET|DELETE /api/documents/{name}, undo, redo, history, events.
 void add_documents(Router& router, const Context& context);
-/// POST /api/documents/{name}/entities, GET|PUT|PATCH|DELETE .../entities/{label}, .../analysis.
+/// POST /api/documents/{name}/entities, GET|PUT|PATCH|DELETE .../entities/{label}, .../analysis,
+/// .../insert-knot, .../elevate.
 void add_entities(Router& router, const Context& context);
 
 /// {"revision", "changes"} of a committed outcome with `status`; a rolled-back one rethrows its error.
