@@ -33,9 +33,9 @@ TEST(RunReportJson, MembersInContractOrder) {
   const Json full = run_report_to_json(sample(), {.seed = 7, .threads = 2, .algorithm = "nsga2", .problem = "zdt1"});
   names.clear();
   for (const auto& [k, v] : full.items()) names.push_back(k);
-  EXPECT_EQ(names, (std::vector<std::string>{"termination", "message", "generations", "evaluations",
-                                             "failed_evaluations", "seconds", "seed", "threads", "algorithm",
-                                             "problem"}));
+  EXPECT_EQ(names,
+            (std::vector<std::string>{"termination", "message", "generations", "evaluations", "failed_evaluations",
+                                      "seconds", "seed", "threads", "algorithm", "problem"}));
   EXPECT_EQ(full["seed"], 7);
   EXPECT_EQ(full["problem"], "zdt1");
 }

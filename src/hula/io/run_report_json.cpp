@@ -28,7 +28,8 @@ optim::RunReport run_report_from_json(const Json& json) {
   const json::JsonPath root = json::root_path("report");
   if (!json.is_object()) throw Error(Errc::ParseError, "report: must be an object", {.field = "report"});
   optim::RunReport r;
-  const std::string name = json::get_string(json::require_member(json, root, "termination"), root.member("termination"));
+  const std::string name =
+      json::get_string(json::require_member(json, root, "termination"), root.member("termination"));
   bool known = false;
   for (const optim::Termination t :
        {optim::Termination::MaxGenerations, optim::Termination::MaxEvaluations, optim::Termination::TargetReached,

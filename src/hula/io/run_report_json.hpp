@@ -22,10 +22,10 @@ namespace hula::io {
 
 /// Who ran: the members written after the report, each only when set.
 struct RunIdentity {
-  std::optional<std::uint64_t> seed{};      ///< "seed"
-  std::optional<std::size_t> threads{};     ///< "threads"
-  std::optional<std::string> algorithm{};   ///< "algorithm"
-  std::optional<std::string> problem{};     ///< "problem" (the problem's name)
+  std::optional<std::uint64_t> seed{};     ///< "seed"
+  std::optional<std::size_t> threads{};    ///< "threads"
+  std::optional<std::string> algorithm{};  ///< "algorithm"
+  std::optional<std::string> problem{};    ///< "problem" (the problem's name)
 };
 
 /// A run report as JSON: the six report members in the order above, then the identity's set members.
