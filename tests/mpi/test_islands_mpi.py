@@ -27,6 +27,8 @@ def comparable(doc):
     doc = json.loads(json.dumps(doc))
     doc["report"].pop("seconds")
     doc["islands"].pop("transport")
+    for island in doc["islands"]["per_island"]:
+        island.pop("seconds")
     return doc
 
 

@@ -7,8 +7,20 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
 #include "hula/io/json_curve.hpp"
+#include "hula/testing/run_process.hpp"
 #include "hula/testing/temp_dir.hpp"
+
+#ifndef HULA_CLI_PATH
+#error "HULA_CLI_PATH must name the hula binary"
+#endif
+#ifndef HULA_EXAMPLES_DIR
+#error "HULA_EXAMPLES_DIR must name examples/studies"
+#endif
 
 namespace hula::oli {
 namespace {
@@ -201,6 +213,64 @@ TEST(StudyRun, EditProjectionOfAnEntity) {
   EXPECT_NEAR(p.y, o.y, 1e-9);
   EXPECT_EQ(doc.get(r.curves[0]).provenance()->inputs, (std::vector<Label>{r.study, c}));
   EXPECT_EQ(r.result["plane"], "zx");
+}
+
+// Runs examples/studies/<name> in a document and with the CLI (`hula <command> FILE`); returns the run and
+// the CLI's output without its seed, threads and log members.
+std::pair<StudyRunResult, Json> run_both(Document& doc, const std::string& command, const std::string& name) {
+  const std::filesystem::path file = std::filesystem::path(HULA_EXAMPLES_DIR) / name;
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  StudyRunResult r;
+  doc.transact("run", [&](Edit& e) { r = run_study(e, Json::parse(text.str()), file.parent_path()); })
+      .throw_if_failed();
+  const hula::testing::ProcessResult cli = hula::testing::run_process(HULA_CLI_PATH, {command, file.string()});
+  EXPECT_EQ(cli.exit_code, 0) << cli.err;
+  Json printed = Json::parse(cli.out);
+  for (const char* member : {"seed", "threads", "log"}) printed.erase(member);
+  return {r, printed};
+}
+
+// Checks a fin-compound projection edit (examples/studies/fin-compound-edit.json) stores exactly what
+// `hula fin-compound` prints (bit for bit: deterministic) and the rebuilt 3-D curve as an entity.
+TEST(StudyRun, FinCompoundEditMatchesTheCli) {
+  Document doc;
+  const auto [r, printed] = run_both(doc, "fin-compound", "fin-compound-edit.json");
+  EXPECT_EQ(r.result.dump(), printed.dump());
+  ASSERT_EQ(r.curves.size(), 1u);
+  EXPECT_EQ(io::curve_to_json(doc.get(r.curves[0]).curve()), r.result["edit"]["curve"]);
+  EXPECT_EQ(doc.get(r.curves[0]).provenance()->operation, "study:fin-compound");
+  EXPECT_EQ(doc.get(r.curves[0]).provenance()->inputs, (std::vector<Label>{r.study}));
+  EXPECT_EQ(doc.get(r.study).study().runs[0].result_curves, r.curves);
+}
+
+// Checks an inverse Combescure study on a law curve (examples/studies/combescure-inverse.json) stores what
+// `hula fin-compound` prints, the parent as the result curve, and a round trip back to the compound < 1e-6.
+TEST(StudyRun, CombescureInverseMatchesTheCli) {
+  Document doc;
+  const auto [r, printed] = run_both(doc, "fin-compound", "combescure-inverse.json");
+  EXPECT_EQ(r.result.dump(), printed.dump());
+  ASSERT_EQ(r.curves.size(), 1u);
+  EXPECT_EQ(io::curve_to_json(doc.get(r.curves[0]).curve()), r.result["parent"]["curve"]);
+  EXPECT_LT(r.result["parent"]["round_trip_deviation"].get<double>(), 1e-6);
+}
+
+// Checks a hermite edit (examples/studies/hermite-direction.json) stores what `hula hermite` prints and the
+// edited curve, which passes through the spline's data points (the Hermite rebuild keeps the knots' points).
+TEST(StudyRun, HermiteMatchesTheCli) {
+  Document doc;
+  const auto [r, printed] = run_both(doc, "hermite", "hermite-direction.json");
+  EXPECT_EQ(r.result.dump(), printed.dump());
+  ASSERT_EQ(r.curves.size(), 1u);
+  EXPECT_EQ(io::curve_to_json(doc.get(r.curves[0]).curve()), r.result["curve"]);
+  EXPECT_EQ(doc.get(r.curves[0]).provenance()->operation, "study:hermite");
+  const nurbs::NurbsCurve& c = doc.get(r.curves[0]).curve().nurbs();
+  for (const Json& knot : r.result["after"]) {
+    const Vec3 p = c.evaluate(knot["t"].get<double>());
+    EXPECT_NEAR(p.x, knot["point"][0].get<double>(), 1e-9);
+    EXPECT_NEAR(p.y, knot["point"][1].get<double>(), 1e-9);
+  }
 }
 
 }  // namespace

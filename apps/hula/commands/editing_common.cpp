@@ -75,15 +75,4 @@ void record_run(Json& output, const studies::StudyHeader& header, const StudyArg
   if (args.log) io::write_file_atomically(*args.log, io::to_file_text(output));
 }
 
-double normalised_deviation(const nurbs::NurbsCurve& a, const nurbs::NurbsCurve& b, int samples) {
-  double d = 0.0;
-  for (int i = 0; i <= samples; ++i) {
-    const double u = static_cast<double>(i) / samples;
-    const nurbs::Interval da = a.domain(), db = b.domain();
-    d = std::max(
-        d, distance(a.evaluate(da.start * (1.0 - u) + da.end * u), b.evaluate(db.start * (1.0 - u) + db.end * u)));
-  }
-  return d;
-}
-
 }  // namespace hula::cli

@@ -37,7 +37,4 @@ void draw_segments(io::SvgFigure& figure, std::span<const Vec3> base, std::span<
 /// writes the output document there too (these studies have no generations to log).
 void record_run(Json& output, const studies::StudyHeader& header, const StudyArgs& args);
 
-/// The measured deviation of a curve from a reference at `samples` + 1 normalised parameters.
-[[nodiscard]] double normalised_deviation(const nurbs::NurbsCurve& a, const nurbs::NurbsCurve& b, int samples = 1000);
-
 }  // namespace hula::cli

@@ -24,21 +24,6 @@ struct HermiteArgs {
   std::string output;
 };
 
-Json handles_json(const studies::HermiteHandles& h, int dim) {
-  Json arr = Json::array();
-  for (std::size_t i = 0; i < h.points.size(); ++i) {
-    Json k = Json::object();
-    k["t"] = h.parameters[i];
-    k["point"] = vec_to_json(h.points[i], dim);
-    k["first"] = vec_to_json(h.first[i], dim);
-    k["second"] = vec_to_json(h.second[i], dim);
-    k["tangent_handle"] = vec_to_json(h.first[i], dim);
-    k["normal_handle"] = vec_to_json(h.normal_handle[i], dim);
-    arr.push_back(std::move(k));
-  }
-  return arr;
-}
-
 // The handles drawn at a common display scale (the derivatives are per unit of t ∈ [0, 1], so about
 // the curve's length: scaled so the longest handle is a fifth of the curve's size).
 void draw_handles(io::SvgFigure& f, const studies::HermiteHandles& h, double scale_first, double scale_second) {
@@ -62,15 +47,7 @@ int run_hermite(const HermiteArgs& a) {
   const io::StudyDocument doc = load_study(a.study, "hermite");
   const io::HermiteStudy s = io::read_hermite_study(doc);
   const studies::HermiteEditResult r = studies::hermite_edit(s.spline.points, s.edits, s.options);
-  const int dim = s.spline.dimension;
-  Json out = Json::object();
-  out["study"] = "hermite";
-  out["rebuild"] = s.options.rebuild == studies::HermiteRebuild::Quintic ? "quintic" : "cubic";
-  out["spline"] = io::curve_to_json(r.spline);
-  out["curve"] = io::curve_to_json(r.curve);
-  out["before"] = handles_json(r.before, dim);
-  out["after"] = handles_json(r.after, dim);
-  out["max_distance_from_spline"] = normalised_deviation(r.curve, r.spline);
+  Json out = io::hermite_result_to_json(s, r);
   if (!a.output.empty()) io::write_curve_file(a.output, r.curve);
   if (a.study.svg) {
     double m1 = 0.0, m2 = 0.0;

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <optional>
 
+#include "hula/io/run_report_json.hpp"
+
 #if defined(HULA_WITH_MPI)
 #include "hula/optim/islands_mpi.hpp"
 #endif
@@ -74,9 +76,7 @@ IslandOutcome run_islands(const optim::Problem& problem, const optim::IslandAlgo
     j["island"] = i.island;
     j["seed"] = i.seed;
     if (problem.objectives == 1) j["best"] = Json{{"variables", i.best.variables}, {"objectives", i.best.objectives}};
-    j["termination"] = std::string(optim::termination_name(i.report.termination));
-    j["generations"] = i.report.generations;
-    j["evaluations"] = i.report.evaluations;
+    j.update(io::run_report_to_json(i.report));
     j["sent"] = i.sent;
     j["received"] = i.received;
     j["accepted"] = i.accepted;

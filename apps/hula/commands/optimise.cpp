@@ -33,6 +33,7 @@
 #include "hula/core/error.hpp"
 #include "hula/io/atomic_file.hpp"
 #include "hula/io/problem_file.hpp"
+#include "hula/io/run_report_json.hpp"
 #include "hula/optim/ga.hpp"
 #include "hula/optim/nsga2.hpp"
 #include "hula/optim/pagmo_adapter.hpp"
@@ -279,18 +280,8 @@ Json solution_json(const Solution& s, bool constrained) {
 }
 
 Json report_json(const RunReport& r, const OptimiseArgs& a, const Problem& problem, std::size_t threads) {
-  Json o = Json::object();
-  o["termination"] = std::string(optim::termination_name(r.termination));
-  o["message"] = r.message;
-  o["generations"] = r.generations;
-  o["evaluations"] = r.evaluations;
-  o["failed_evaluations"] = r.failed_evaluations;
-  o["seconds"] = r.seconds;
-  o["seed"] = a.seed.value_or(0);
-  o["threads"] = threads;
-  o["algorithm"] = a.algorithm;
-  o["problem"] = problem.name;
-  return o;
+  return io::run_report_to_json(
+      r, {.seed = a.seed.value_or(0), .threads = threads, .algorithm = a.algorithm, .problem = problem.name});
 }
 
 // Smallest objective among the (feasible) solutions, lowest index on ties.

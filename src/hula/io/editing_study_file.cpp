@@ -8,7 +8,10 @@
 #include <string>
 
 #include "hula/core/error.hpp"
+#include "hula/diffgeom/combescure.hpp"
 #include "hula/io/json_read.hpp"
+#include "hula/law/convert.hpp"
+#include "hula/law/tape.hpp"
 
 namespace hula::io {
 
@@ -35,6 +38,67 @@ diffgeom::Plane plane_member(const Json& body) {
 
 // The curve a file describes, as the studies take it (law files: the stand-in NURBS).
 const nurbs::NurbsCurve& nurbs_of(const curve::Curve& c) { return c.nurbs(); }
+
+// The largest change of each coordinate of `changed` against `original` at 1001 points of equal
+// normalised parameter: [x, y, z].
+Json max_change(const nurbs::NurbsCurve& changed, const nurbs::NurbsCurve& original) {
+  Json out = Json::array();
+  const nurbs::Interval dr = changed.domain(), dc = original.domain();
+  for (std::size_t k = 0; k < 3; ++k) {
+    double m = 0.0;
+    for (int i = 0; i <= 1000; ++i) {
+      const double u = i / 1000.0;
+      m = std::max(m, std::abs(changed.evaluate(dr.start * (1 - u) + dr.end * u)[k] -
+                               original.evaluate(dc.start * (1 - u) + dc.end * u)[k]));
+    }
+    out.push_back(m);
+  }
+  return out;
+}
+
+// max |a(t) − b(t)| of two laws of `parameter` at 1001 parameters of `domain`.
+double law_deviation(const law::Law& a, const law::Law& b, const std::string& parameter, Interval domain) {
+  law::CurveEvaluator ea(a, parameter, 0), eb(b, parameter, 0);
+  double d = 0.0;
+  for (int i = 0; i <= 1000; ++i) {
+    const double u = i / 1000.0;
+    Vec3 va[1], vb[1];
+    const double t = domain.start * (1 - u) + domain.end * u;
+    if (!ea.derivatives(t, va) || !eb.derivatives(t, vb))
+      throw Error(Errc::NumericalFailure, "the transform is undefined at t = " + format_number(t), {.field = "curve"});
+    d = std::max(d, distance(va[0], vb[0]));
+  }
+  return d;
+}
+
+Json fit_json(const LawCurveFit& f) {
+  Json j = Json::object();
+  j["curve"] = curve_to_json(f.curve);
+  j["fit_deviation"] = f.fit_deviation;
+  return j;
+}
+
+// A point as 2 or 3 numbers.
+Json point_json(const Vec3& v, int dimension) {
+  Json a = Json::array({v.x, v.y});
+  if (dimension != 2) a.push_back(v.z);
+  return a;
+}
+
+Json handles_json(const HermiteHandles& h, int dim) {
+  Json arr = Json::array();
+  for (std::size_t i = 0; i < h.points.size(); ++i) {
+    Json k = Json::object();
+    k["t"] = h.parameters[i];
+    k["point"] = point_json(h.points[i], dim);
+    k["first"] = point_json(h.first[i], dim);
+    k["second"] = point_json(h.second[i], dim);
+    k["tangent_handle"] = point_json(h.first[i], dim);
+    k["normal_handle"] = point_json(h.normal_handle[i], dim);
+    arr.push_back(std::move(k));
+  }
+  return arr;
+}
 
 }  // namespace
 
@@ -178,18 +242,93 @@ Json edit_projection_result_to_json(const EditProjectionStudy& study, const stud
   out["parameter_match"] = "normalised";
   out["curve"] = curve_to_json(r.curve);
   out["max_deviation"] = r.max_deviation;
-  Json changed = Json::array();
-  for (std::size_t k = 0; k < 3; ++k) {
-    double m = 0.0;
-    const nurbs::Interval dr = r.curve.domain(), dc = study.curve.nurbs().domain();
-    for (int i = 0; i <= 1000; ++i) {
-      const double u = i / 1000.0;
-      m = std::max(m, std::abs(r.curve.evaluate(dr.start * (1 - u) + dr.end * u)[k] -
-                               study.curve.nurbs().evaluate(dc.start * (1 - u) + dc.end * u)[k]));
-    }
-    changed.push_back(m);
+  out["max_change"] = max_change(r.curve, study.curve.nurbs());
+  return out;
+}
+
+const nurbs::NurbsCurve& FinCompoundRun::result_curve() const {
+  if (edit) return edit->curve;
+  if (compound) return compound->curve;
+  if (parent) return parent->curve;
+  throw Error(Errc::InvalidArgument, "a fin-compound run without a result curve", {.field = "method"});
+}
+
+FinCompoundRun run_fin_compound_study(const FinCompoundStudy& s) {
+  FinCompoundRun run;
+  if (s.method == FinCompoundMethod::Projection) {
+    const nurbs::NurbsCurve& curve = s.curve->nurbs();
+    run.projection = diffgeom::project(curve, s.projection.plane);
+    run.compound = normal_compound(curve, s.projection);
+    if (s.compound) run.edit = edit_normal_compound(curve, s.compound->nurbs(), s.projection);
+    return run;
   }
-  out["max_change"] = std::move(changed);
+  const CombescureOptions& o = s.combescure;
+  const bool forward = s.curve.has_value();
+  const curve::Curve& input = forward ? *s.curve : *s.compound;
+  // Law curves are transformed exactly; NURBS curves as laws of "t".
+  const std::string parameter = input.law() ? input.law_parameter() : std::string("t");
+  const Interval domain = input.domain();
+  const law::Law input_law = input.law() ? *input.law() : law::from_nurbs(input.nurbs(), law::Context(), "t");
+  LawCurveFit result = input.law()
+                           ? (forward ? combescure_compound(input_law, parameter, domain, o)
+                                      : combescure_parent(input_law, parameter, domain, o))
+                           : (forward ? combescure_compound(input.nurbs(), o) : combescure_parent(input.nurbs(), o));
+  // The check: transforming back (with −C, resp. +C) must give the input.
+  const law::Law back = diffgeom::combescure_law(result.law, parameter, forward ? -o.c : o.c);
+  run.round_trip_deviation = law_deviation(back, input_law, parameter, domain);
+  (forward ? run.compound : run.parent) = std::move(result);
+  return run;
+}
+
+Json fin_compound_result_to_json(const FinCompoundStudy& s, const FinCompoundRun& run) {
+  Json out = Json::object();
+  out["study"] = "fin-compound";
+  out["method"] = s.method == FinCompoundMethod::Projection ? "projection" : "combescure";
+  if (s.method == FinCompoundMethod::Projection) {
+    out["plane"] = std::string(diffgeom::plane_name(s.projection.plane));
+    out["scale"] = s.projection.scale;
+    out["projection"] = curve_to_json(*run.projection);
+    out["compound"] = fit_json(*run.compound);
+    if (run.edit) {
+      Json e = Json::object();
+      e["planar"] = fit_json(run.edit->planar);
+      e["curve"] = curve_to_json(run.edit->curve);
+      e["min_stretch"] = run.edit->stretch.min_stretch;
+      e["min_stretch_at"] = run.edit->stretch.at;
+      e["forward_deviation"] = run.edit->forward_deviation;
+      e["assembly_deviation"] = run.edit->assembly_deviation;
+      // The dropped coordinate must not change.
+      e["max_change"] = max_change(run.edit->curve, s.curve->nurbs());
+      out["edit"] = std::move(e);
+    }
+    return out;
+  }
+  out["c"] = s.combescure.c;
+  const bool forward = run.compound.has_value();
+  Json r = fit_json(forward ? *run.compound : *run.parent);
+  r["round_trip_deviation"] = run.round_trip_deviation;
+  out[forward ? "compound" : "parent"] = std::move(r);
+  return out;
+}
+
+Json hermite_result_to_json(const HermiteStudy& s, const HermiteEditResult& r) {
+  const int dim = s.spline.dimension;
+  Json out = Json::object();
+  out["study"] = "hermite";
+  out["rebuild"] = s.options.rebuild == HermiteRebuild::Quintic ? "quintic" : "cubic";
+  out["spline"] = curve_to_json(r.spline);
+  out["curve"] = curve_to_json(r.curve);
+  out["before"] = handles_json(r.before, dim);
+  out["after"] = handles_json(r.after, dim);
+  // The largest distance from the spline at 1001 points of equal normalised parameter.
+  double d = 0.0;
+  const nurbs::Interval dc = r.curve.domain(), ds = r.spline.domain();
+  for (int i = 0; i <= 1000; ++i) {
+    const double u = i / 1000.0;
+    d = std::max(d, distance(r.curve.evaluate(dc.start * (1.0 - u) + dc.end * u),
+                             r.spline.evaluate(ds.start * (1.0 - u) + ds.end * u)));
+  }
+  out["max_distance_from_spline"] = d;
   return out;
 }
 

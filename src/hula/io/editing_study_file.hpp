@@ -51,6 +51,36 @@ struct FinCompoundStudy {
 ///   hula::Error(Errc::InvalidOption) naming the option out of range
 [[nodiscard]] FinCompoundStudy read_fin_compound_study(const StudyDocument& doc);
 
+/// What a "fin-compound" run computed (run_fin_compound_study).
+struct FinCompoundRun {
+  /// projection: "curve" projected on the plane.
+  std::optional<nurbs::NurbsCurve> projection{};
+  /// projection: the normal fin compound of the projection; combescure with "curve": its compound.
+  std::optional<studies::LawCurveFit> compound{};
+  /// projection with "compound": the new projection and the rebuilt 3-D curve.
+  std::optional<studies::CompoundEditResult> edit{};
+  /// combescure with "compound": the parent whose compound it is.
+  std::optional<studies::LawCurveFit> parent{};
+  /// combescure: max |transform back (with −c, resp. +c) − input| at 1001 parameters of the input's domain.
+  double round_trip_deviation = 0.0;
+  /// The run's result curve (`hula fin-compound -o`): the rebuilt 3-D curve, else the compound, else the parent.
+  [[nodiscard]] const nurbs::NurbsCurve& result_curve() const;
+};
+
+/// Runs a "fin-compound" study (thesis 8.3): projection — the projection's normal fin compound and, given
+/// "compound", the edit; combescure — the compound of "curve" or the parent of "compound" (law curves
+/// transformed exactly, NURBS as laws of "t") with the round-trip check.
+/// @throws the errors of the studies' functions; hula::Error(Errc::NumericalFailure) when the transform
+///   back is undefined at a checked parameter
+[[nodiscard]] FinCompoundRun run_fin_compound_study(const FinCompoundStudy& study);
+
+/// The result of a fin-compound run, as `hula fin-compound` prints it (without the CLI's seed, threads and
+/// log): {"study": "fin-compound", "method", then projection: "plane", "scale", "projection" (curve file),
+/// "compound": {"curve", "fit_deviation"}, "edit": {"planar", "curve", "min_stretch", "min_stretch_at",
+/// "forward_deviation", "assembly_deviation", "max_change": [x, y, z]}; combescure: "c", "compound" or
+/// "parent": {"curve", "fit_deviation", "round_trip_deviation"}} (docs/formats.md).
+[[nodiscard]] Json fin_compound_result_to_json(const FinCompoundStudy& study, const FinCompoundRun& run);
+
 /// An "edit-projection" study.
 struct EditProjectionStudy {
   studies::StudyHeader header{};
@@ -87,5 +117,11 @@ struct HermiteStudy {
 ///   count differs from the points'); hula::Error(Errc::InvalidArgument) naming "edits[i].<field>"
 ///   for a bad edit (hermite_edit's checks, run here before any work)
 [[nodiscard]] HermiteStudy read_hermite_study(const StudyDocument& doc);
+
+/// The result of a hermite run, as `hula hermite` prints it (without the CLI's seed, threads and log):
+/// {"study": "hermite", "rebuild", "spline" and "curve" (curve files), "before" and "after" (per knot:
+/// "t", "point", "first", "second", "tangent_handle", "normal_handle"), "max_distance_from_spline" (at
+/// 1001 points of equal normalised parameter)}.
+[[nodiscard]] Json hermite_result_to_json(const HermiteStudy& study, const studies::HermiteEditResult& result);
 
 }  // namespace hula::io

@@ -11,6 +11,7 @@
 #include "hula/core/error.hpp"
 #include "hula/io/json_curve.hpp"
 #include "hula/io/profile_file.hpp"
+#include "hula/io/run_report_json.hpp"
 
 namespace hula::io {
 
@@ -432,13 +433,7 @@ Json match_result_to_json(const CurvatureMatch& match, const MatchStudyFile& fil
     out["study"] = match_study_to_json(file);
     return out;
   }
-  Json ga = Json::object();
-  ga["generations"] = result.ga_report.generations;
-  ga["evaluations"] = result.ga_report.evaluations;
-  ga["failed_evaluations"] = result.ga_report.failed_evaluations;
-  ga["termination"] = std::string(optim::termination_name(result.ga_report.termination));
-  ga["seconds"] = result.ga_report.seconds;
-  out["ga"] = ga;
+  out["ga"] = run_report_to_json(result.ga_report);
   out["evaluations"] = result.ga_report.evaluations + (result.lm ? result.lm->evaluations : 0);
   out["seconds"] = result.seconds;
   bound_report(match, result.best, out);
@@ -554,11 +549,7 @@ Json torsion_match_result_to_json(const CurvatureMatch& match, const TorsionMatc
                          {"curve", curve_to_json(match.sampler().curve(pts))}};
     bound_report(match, best.variables, out);
   }
-  out["nsga2"] = {{"generations", result.report.generations},
-                  {"evaluations", result.report.evaluations},
-                  {"failed_evaluations", result.report.failed_evaluations},
-                  {"termination", std::string(optim::termination_name(result.report.termination))},
-                  {"seconds", result.report.seconds}};
+  out["nsga2"] = run_report_to_json(result.report);
   if (result.lm)
     out["polish"] = {{"iterations", result.lm->iterations},
                      {"evaluations", result.lm->evaluations},

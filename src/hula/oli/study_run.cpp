@@ -142,6 +142,26 @@ void run_edit_projection(const io::StudyDocument& doc, Ran& out) {
   out.curves.emplace_back(r.curve, "edit-projection result");
 }
 
+// As `hula fin-compound` (thesis 8.3) without its figures; the result curve is the one `-o` writes (the
+// rebuilt 3-D curve, the compound or the parent). Deterministic, no generations.
+void run_fin_compound(const io::StudyDocument& doc, Ran& out) {
+  const io::FinCompoundStudy study = io::read_fin_compound_study(doc);
+  const io::FinCompoundRun run = io::run_fin_compound_study(study);
+  out.run.seed = study.header.seed;
+  out.run.result = io::fin_compound_result_to_json(study, run);
+  const char* what = run.edit ? "rebuilt curve" : (run.compound ? "compound" : "parent");
+  out.curves.emplace_back(run.result_curve(), std::string("fin-compound ") + what);
+}
+
+// As `hula hermite` (thesis 7.5.2) without its figures: the curve rebuilt from the edited handles.
+void run_hermite(const io::StudyDocument& doc, Ran& out) {
+  const io::HermiteStudy study = io::read_hermite_study(doc);
+  const studies::HermiteEditResult r = studies::hermite_edit(study.spline.points, study.edits, study.options);
+  out.run.seed = study.header.seed;
+  out.run.result = io::hermite_result_to_json(study, r);
+  out.curves.emplace_back(r.curve, "hermite result");
+}
+
 Ran run_once(const Json& setup, const Document& document, const std::filesystem::path& base,
              std::optional<std::uint64_t> seed, std::set<Label>& read, const StudyRunOptions& options) {
   Json resolved = setup;
@@ -153,11 +173,11 @@ Ran run_once(const Json& setup, const Document& document, const std::filesystem:
   Ran out;
   out.kind = kind;
   if (kind != "match-curvature" && kind != "match-curvature-torsion" && kind != "fair-knots" &&
-      kind != "edit-projection")
+      kind != "edit-projection" && kind != "fin-compound" && kind != "hermite")
     throw Error(Errc::InvalidArgument,
                 "study kind \"" + kind +
                     "\" cannot run inside a document (supported: match-curvature, match-curvature-torsion, "
-                    "fair-knots, edit-projection)",
+                    "fair-knots, edit-projection, fin-compound, hermite)",
                 {.field = "study"});
   const io::StudyDocument doc = io::parse_study_json(resolved.dump(), kind);
   if (kind == "match-curvature")
@@ -166,8 +186,12 @@ Ran run_once(const Json& setup, const Document& document, const std::filesystem:
     run_match_torsion(doc, base, options, out);
   else if (kind == "fair-knots")
     run_fair_knots(doc, options, out);
-  else
+  else if (kind == "edit-projection")
     run_edit_projection(doc, out);
+  else if (kind == "fin-compound")
+    run_fin_compound(doc, out);
+  else
+    run_hermite(doc, out);
   return out;
 }
 

@@ -17,7 +17,11 @@
 // "match-curvature-torsion" (result curve: the best compromise) and
 // "fair-knots" (result curves: the GA's and/or the deterministic optimum; the
 // energy map and its sections are figures of the CLI and are not stored) and
-// "edit-projection" (the rebuilt curve; no generations).
+// "edit-projection" (the rebuilt curve; no generations), "fin-compound" (the
+// curve `hula fin-compound -o` writes: the rebuilt 3-D curve, the compound or
+// the parent) and "hermite" (the curve rebuilt from the edited handles); the
+// results of these three are what their commands print, without seed, threads
+// and log, and no figures are stored.
 //
 // Progress and cancellation (StudyRunOptions): the caller's callback sees
 // every generation of the study's optimiser(s); a cancellation token stops

@@ -8,6 +8,7 @@
 
 #include "hula/io/json_read.hpp"
 #include "hula/io/problem_file.hpp"
+#include "hula/io/run_report_json.hpp"
 #include "hula/optim/ga.hpp"
 #include "hula/optim/nsga2.hpp"
 
@@ -80,17 +81,7 @@ Json generation_event(const optim::GenerationLog& g, double elapsed) {
 namespace {
 
 Json report_json(const optim::RunReport& r, const ProblemJob& job) {
-  Json o = Json::object();
-  o["termination"] = std::string(optim::termination_name(r.termination));
-  o["message"] = r.message;
-  o["generations"] = r.generations;
-  o["evaluations"] = r.evaluations;
-  o["failed_evaluations"] = r.failed_evaluations;
-  o["seconds"] = r.seconds;
-  o["seed"] = job.seed;
-  o["algorithm"] = job.algorithm_name;
-  o["problem"] = job.problem.name;
-  return o;
+  return io::run_report_to_json(r, {.seed = job.seed, .algorithm = job.algorithm_name, .problem = job.problem.name});
 }
 
 template <class Options>

@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: MIT
+// The codec of an optimisation run report (optim::RunReport; issue 10: the run
+// report is written one way). Every run report the project prints or stores
+// — `hula optimise` and `hula optimise --islands` ("report"), the server's
+// problem jobs ("report"), the match studies ("ga", "nsga2") — is this object:
+//   {"termination", "message", "generations", "evaluations",
+//    "failed_evaluations", "seconds"}
+// followed by the run's identity where the writer has it ("seed", "threads",
+// "algorithm", "problem"). Member names are a contract (docs/formats.md,
+// src/hula/server/openapi.json): extend, never rename.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "hula/io/json_curve.hpp"
+#include "hula/optim/run_report.hpp"
+
+namespace hula::io {
+
+/// Who ran: the members written after the report, each only when set.
+struct RunIdentity {
+  std::optional<std::uint64_t> seed{};     ///< "seed"
+  std::optional<std::size_t> threads{};    ///< "threads"
+  std::optional<std::string> algorithm{};  ///< "algorithm"
+  std::optional<std::string> problem{};    ///< "problem" (the problem's name)
+};
+
+/// A run report as JSON: the six report members in the order above, then the identity's set members.
+[[nodiscard]] Json run_report_to_json(const optim::RunReport& report, const RunIdentity& identity = {});
+
+/// Reads the report members back (the identity members and any others are ignored; "message" may be
+/// absent, as in reports written before it was added to the match studies).
+/// @throws hula::Error(Errc::ParseError) naming the member that is missing or mistyped, or an unknown
+///   termination name
+[[nodiscard]] optim::RunReport run_report_from_json(const Json& json);
+
+}  // namespace hula::io
