@@ -6,7 +6,6 @@
 // with the error JSON naming the option (and the column of a bad expression).
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -124,51 +123,6 @@ TEST(ReconstructCli, BadValuesAndUsage) {
   const ProcessResult usage = hula({"reconstruct", "--kappa", "1", "--length", "1"});
   EXPECT_EQ(usage.exit_code, 2);
   EXPECT_EQ(error_of(usage)["code"], "UsageError");
-}
-
-// Angle θ(s) of the 64-hat κ below in closed form: each hat max(0, 1 − |s − c|/h) integrates to a
-// piecewise quadratic, the sum of the finished hats plus the partial one.
-double hats_angle(double s, double h) {
-  double theta = 0.0;
-  for (int i = 0; i < 64; ++i) {
-    const double c = (2 * i + 1) * h, u = std::clamp(s - (c - h), 0.0, 2 * h);
-    theta += u <= h ? u * u / (2 * h) : h - (2 * h - u) * (2 * h - u) / (2 * h);
-  }
-  return theta;
-}
-
-// checks: a kinked κ law (64 hat functions, no closed-form antiderivative) reconstructs in bounded time (it used to
-// run adaptive quadrature for minutes only to pick the method) and the end point matches ∫(cos θ, sin θ) ds with the
-// closed-form θ by composite 8-point Gauss–Legendre on each kink-free piece, to 1e-8.
-TEST(ReconstructCli, KinkedHatCurvatureFinishes) {
-  const double h = 8.0 / 128;  // hats of half-width h centred at (2i + 1) h: they touch, kinks every h
-  std::string kappa;
-  for (int i = 0; i < 64; ++i) {
-    if (i) kappa += " + ";
-    kappa += "max(0, 1 - abs(s - " + std::to_string((2 * i + 1) * h) + ")/" + std::to_string(h) + ")";
-  }
-  const ProcessResult r = hula({"reconstruct", "--kappa", kappa, "--tau", "0", "--length", "8", "--at", "8"});
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const json j = json::parse(r.out);
-  // Reference: 8-point Gauss–Legendre on 16 sub-pieces of each of the 128 pieces [k h, (k + 1) h].
-  const double x8[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
-  const double w8[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
-  double x = 0.0, y = 0.0;
-  const double piece = h / 16;
-  for (int k = 0; k < 128 * 16; ++k) {
-    const double mid = (k + 0.5) * piece;
-    for (int q = 0; q < 4; ++q)
-      for (const double sign : {-1.0, 1.0}) {
-        const double theta = hats_angle(mid + sign * x8[q] * piece / 2, h);
-        x += w8[q] * piece / 2 * std::cos(theta);
-        y += w8[q] * piece / 2 * std::sin(theta);
-      }
-  }
-  EXPECT_NEAR(j["points"][0]["position"][0].get<double>(), x, 1e-8);
-  EXPECT_NEAR(j["points"][0]["position"][1].get<double>(), y, 1e-8);
-  EXPECT_NEAR(std::atan2(j["points"][0]["T"][1].get<double>(), j["points"][0]["T"][0].get<double>()),
-              std::remainder(hats_angle(8.0, h), 2 * M_PI), 1e-8);
-  EXPECT_LE(j["fit"]["max_deviation"].get<double>(), 1e-10);
 }
 
 }  // namespace
