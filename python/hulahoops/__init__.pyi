@@ -93,7 +93,7 @@ class NurbsCurve:
         """Writes the curve file atomically."""
 
 def interpolate(points: ArrayLike, *, start: str | ArrayLike = "natural", end: str | ArrayLike = "natural",
-                parameterisation: Literal["chord", "uniform", "centripetal"] = "chord",
+                parameterisation: Literal["chord", "uniform", "centripetal", "foley"] = "chord",
                 parameters: ArrayLike | None = None) -> NurbsCurve:
     """The C2 cubic spline through (n, 2) or (n, 3) points (thesis 5.5, 7.1).
     start/end: "natural", "bessel", "not-a-knot", "occt", or a tangent vector dC/dt (t in [0, 1]).

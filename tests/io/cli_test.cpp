@@ -167,6 +167,14 @@ TEST(Cli, InterpolateWritesCurve) {
   const curve::Curve g = read_curve_file(out);
   EXPECT_EQ(g.kind(), curve::Kind::Interpolated);
   EXPECT_EQ(std::get<curve::InterpolatedData>(g.data()).parameterisation, nurbs::Parameterisation::Centripetal);
+  // --parameterisation foley: the file keeps "foley" and resolves to interpolate_cubic at Foley parameters.
+  const ProcessResult fo = hula({"interpolate", "--points", data("thesis_points.csv"), "--keep-inputs",
+                                 "--parameterisation", "foley", "-o", out.string()});
+  ASSERT_EQ(fo.exit_code, 0) << fo.err;
+  EXPECT_NE(read_text_file(out).find("\"foley\""), std::string::npos);
+  nurbs::InterpolationOptions fopt;
+  fopt.parameterisation = nurbs::Parameterisation::Foley;
+  EXPECT_EQ(read_curve_file(out).nurbs(), nurbs::interpolate_cubic(pts, fopt));
 
   write_file_atomically(dir / "p2.csv", "0,0\n1,1\n2,0\n");
   const ProcessResult t = hula(

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 
 #include "hula/law/derive.hpp"
 #include "hula/law/parser.hpp"
@@ -103,6 +104,20 @@ TEST(LawAntiderivative, NumericFallback) {
   const DefiniteIntegralResult p = definite_integral(parse("1/t", ctx), "t", -1, 2);
   EXPECT_EQ(p.method, IntegralMethod::Numeric);
   EXPECT_FALSE(p.converged);  // divergent: said so, not a log|t| difference
+}
+
+// checks: symbolic_definite_integral is the symbolic branch alone: ∫_0^2 3t² = 8 exactly as definite_integral, and no
+// value (no quadrature) for forms without a closed form (Fresnel integrand, a kinked max) or with a pole inside.
+TEST(LawAntiderivative, SymbolicOnly) {
+  Context ctx;
+  const std::optional<DefiniteIntegralResult> cubic = symbolic_definite_integral(parse("3*t^2", ctx), "t", 0, 2);
+  ASSERT_TRUE(cubic.has_value());
+  EXPECT_EQ(cubic->method, IntegralMethod::Symbolic);
+  EXPECT_NEAR(cubic->value, 8.0, 1e-14);
+  EXPECT_EQ(cubic->value, definite_integral(parse("3*t^2", ctx), "t", 0, 2).value);
+  EXPECT_FALSE(symbolic_definite_integral(parse("sin(pi*t^2/2)", ctx), "t", 0, 1).has_value());
+  EXPECT_FALSE(symbolic_definite_integral(parse("max(0, 1 - abs(t - 1))", ctx), "t", 0, 2).has_value());
+  EXPECT_FALSE(symbolic_definite_integral(parse("1/t", ctx), "t", -1, 2).has_value());
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -129,6 +130,23 @@ TEST(Parameterise, UniformAndCentripetalValues) {
   EXPECT_NEAR(c[1], a / (2 * a + b), 1e-15);
   EXPECT_NEAR(c[2], (a + b) / (2 * a + b), 1e-15);
   EXPECT_EQ(c[3], 1.0);
+}
+
+// checks: Foley on the U shape (0,1), (0,0), (1,0), (1,1) against Foley–Nielson's span formula by hand (unit
+// chords, right turns θ = π/2 at both inner points): spans 1 + 3π/8, 1 + 3π/4, 1 + 3π/8; collinear points give chord
+// length.
+TEST(Parameterise, FoleyClosedForm) {
+  const std::vector<Vec3> u = {{0, 1, 0}, {0, 0, 0}, {1, 0, 0}, {1, 1, 0}};
+  const auto t = parameterise(u, Parameterisation::Foley);
+  const double pi = std::numbers::pi, a = 1 + 3 * pi / 8, b = 1 + 3 * pi / 4, total = 2 * a + b;
+  ASSERT_EQ(t.size(), 4u);
+  EXPECT_EQ(t[0], 0.0);
+  EXPECT_NEAR(t[1], a / total, 1e-15);
+  EXPECT_NEAR(t[2], (a + b) / total, 1e-15);
+  EXPECT_EQ(t[3], 1.0);
+  const std::vector<Vec3> line = {{0, 0, 0}, {1, 0, 0}, {3, 0, 0}, {6, 0, 0}};
+  const auto f = parameterise(line, Parameterisation::Foley), c = parameterise(line, Parameterisation::ChordLength);
+  for (std::size_t i = 0; i < 4; ++i) EXPECT_NEAR(f[i], c[i], 1e-15) << i;
 }
 
 // checks: chord lengths at 1e-200 and 1e200 scale are the scaled lengths (overflow-safe norms).

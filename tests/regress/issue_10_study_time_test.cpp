@@ -45,6 +45,27 @@ TEST(Issue10StudyTime, MatchCurvatureSigintEndsWithBestSoFar) {
   EXPECT_EQ(json::parse(r.out)["ga"]["termination"], "Cancelled");
 }
 
+// checks: `hula doc run` also ends on SIGINT with its best so far (it ignored Ctrl-C): exit 0, "cancelled": true, and
+// the result curve stored in the document (`doc list` shows the study and the curve).
+TEST(Issue10StudyTime, DocRunSigintStoresBestSoFar) {
+  TempDir dir;
+  write(dir / "s.json", long_match_study());
+  const std::string file = (dir / "d.hula").string();
+  ASSERT_EQ(hula({"doc", "new", file}).exit_code, 0);
+  testing::RunningProcess p = testing::start_process(HULA_CLI_PATH, {"doc", "run", file, (dir / "s.json").string()});
+  // Give the process time to install its handler; a bounded wait, not a timing assertion.
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  ASSERT_TRUE(p.send(SIGINT));
+  const ProcessResult r = p.wait();
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_EQ(j["cancelled"], true);
+  ASSERT_EQ(j["result_labels"].size(), 1u) << r.out.substr(0, 400);
+  const ProcessResult list = hula({"doc", "list", file});
+  ASSERT_EQ(list.exit_code, 0) << list.err;
+  EXPECT_EQ(json::parse(list.out)["entities"].size(), 2u) << list.out;
+}
+
 // checks: the deterministic fair-knots case of the issue ends under --time with "stopped": true and a result.
 TEST(Issue10StudyTime, FairKnotsDeterministicTimeEndsWithBestSoFar) {
   TempDir dir;

@@ -70,7 +70,7 @@ Command add_approximate(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   sub->add_option("--control-points", a->control_points, "Fixed number of control points instead of --tolerance");
   sub->add_option("--degree", a->degree, "Degree p in [1, 9] (default 3)")->check(CLI::Range(1, 9));
-  sub->add_option("--parameterisation", a->parameterisation, "uniform | chord | centripetal (default chord)");
+  sub->add_option("--parameterisation", a->parameterisation, "uniform | chord | centripetal | foley (default chord)");
   sub->add_option("-o,--output", a->output, "Curve file to write (atomically)")->required();
   return {sub, [a] { return run_approximate(*a); }};
 }

@@ -12,6 +12,7 @@
 #include <memory>
 #include <optional>
 
+#include "commands/study_common.hpp"
 #include "hula/io/atomic_file.hpp"
 #include "hula/io/json_read.hpp"
 #include "hula/oli/document.hpp"
@@ -258,8 +259,12 @@ int run_study(const Options& o) {
   const std::filesystem::path base = std::filesystem::path(o.study).parent_path();
   oli::Document doc = oli::Document::open(o.file);
   oli::StudyRunResult ran;
-  commit(doc, "run study", [&](oli::Edit& e) { ran = oli::run_study(e, study, base); });
+  const InterruptGuard guard;  // Ctrl-C ends the optimiser with its best so far, which is stored
+  oli::StudyRunOptions options;
+  options.cancel = &interrupt_token();
+  commit(doc, "run study", [&](oli::Edit& e) { ran = oli::run_study(e, study, base, options); });
   Json out = ran.result;
+  out["cancelled"] = ran.cancelled;
   out["study_label"] = ran.study.value;
   out["result_labels"] = labels_json(ran.curves);
   out["revision"] = doc.revision();

@@ -92,7 +92,8 @@ Command add_interpolate(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("interpolate", "Fit a C2 cubic spline through points and write a curve file");
   sub->add_option("--points", args->points, "Points file: JSON [[x,y,z],...] or CSV lines x,y[,z]; - reads stdin")
       ->required();
-  sub->add_option("--parameterisation", args->parameterisation, "uniform | chord | centripetal (default chord)");
+  sub->add_option("--parameterisation", args->parameterisation,
+                  "uniform | chord | centripetal | foley (default chord)");
   sub->add_option("--start", args->start,
                   "Start condition: natural | bessel | not-a-knot | occt | direction:x,y,z | clamped:x,y,z");
   sub->add_option("--end", args->end,

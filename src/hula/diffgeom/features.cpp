@@ -7,6 +7,8 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <span>
+#include <vector>
 
 #include "hula/core/error.hpp"
 #include "hula/diffgeom/frenet_law.hpp"
@@ -24,12 +26,18 @@ double kappa_prime(const FrenetPoint& p) { return p.frame_defined ? p.curvature_
 
 int sign(double x) { return x > 0.0 ? 1 : (x < 0.0 ? -1 : 0); }
 
+// Values of the searched quantity at many parameters (out[i] at ts[i]), evaluated as a batch.
+using Sample = std::function<void(std::span<const double>, std::span<double>)>;
+
 // Roots with a strict sign change of q over the pieces [cuts[i], cuts[i+1]], each sampled at n points.
 // A zero sample (or run of zero samples) between samples of opposite signs is itself the root (exact
 // inflections, also at knots).
-// `value` gives the searched quantity; a root where it falls from + to − is `falling`, else `rising`.
-void search(const Eval& eval, const std::function<double(double)>& value, const std::vector<double>& cuts, int n,
-            FeatureKind falling, FeatureKind rising, std::vector<Feature>& out) {
+// `sample` gives the searched quantity on the n samples of a piece at once, `value` at one parameter (the
+// bisection); a root where it falls from + to − is `falling`, else `rising`.
+void search(const Eval& eval, const Sample& sample, const std::function<double(double)>& value,
+            const std::vector<double>& cuts, int n, FeatureKind falling, FeatureKind rising,
+            std::vector<Feature>& out) {
+  std::vector<double> ts(static_cast<std::size_t>(n)), vs(static_cast<std::size_t>(n));
   // One pass over all spans, so a zero sample at a knot is judged by the signs on both sides.
   double t_prev = cuts.front();
   double q_prev = value(t_prev);
@@ -37,9 +45,11 @@ void search(const Eval& eval, const std::function<double(double)>& value, const 
   int s_before = sign(q_prev);
   for (std::size_t c = 0; c + 1 < cuts.size(); ++c) {
     const double a = cuts[c], b = cuts[c + 1];
+    for (int i = 1; i <= n; ++i) ts[static_cast<std::size_t>(i - 1)] = i == n ? b : a + (b - a) * i / n;
+    sample(ts, vs);
     for (int i = 1; i <= n; ++i) {
-      const double t = i == n ? b : a + (b - a) * i / n;
-      const double v = value(t);
+      const double t = ts[static_cast<std::size_t>(i - 1)];
+      const double v = vs[static_cast<std::size_t>(i - 1)];
       const int s = sign(v);
       if (std::isnan(v) || std::isnan(q_prev)) {
         t_prev = t;
@@ -126,6 +136,24 @@ void knot_jumps(const nurbs::NurbsCurve& curve, const FrenetOptions& o, Quantity
 Eval nurbs_eval(const nurbs::NurbsCurve& curve, const FrenetOptions& o) {
   return [&curve, o](double t) { return frenet(curve, t, o); };
 }
+
+// q of the Frenet points at ts, from a batch Frenet evaluator; `points` is the reused scratch buffer.
+template <class Frenet>
+Sample frenet_sample(Frenet batch, Quantity q, std::vector<FrenetPoint>& points) {
+  return [batch, q, &points](std::span<const double> ts, std::span<double> out) {
+    points.resize(ts.size());
+    batch(ts, std::span<FrenetPoint>(points.data(), ts.size()));
+    for (std::size_t i = 0; i < ts.size(); ++i) out[i] = q(points[i]);
+  };
+}
+Sample nurbs_sample(const nurbs::NurbsCurve& curve, const FrenetOptions& o, Quantity q,
+                    std::vector<FrenetPoint>& points) {
+  return frenet_sample([&curve, o](std::span<const double> ts, std::span<FrenetPoint> p) { frenet(curve, ts, p, o); },
+                       q, points);
+}
+Sample law_sample(const LawFrenet& curve, Quantity q, std::vector<FrenetPoint>& points) {
+  return frenet_sample([&curve](std::span<const double> ts, std::span<FrenetPoint> p) { curve.at(ts, p); }, q, points);
+}
 }  // namespace
 
 void FeatureOptions::validate() const {
@@ -156,9 +184,10 @@ std::vector<Feature> inflections(const nurbs::NurbsCurve& curve, const FeatureOp
   options.validate();
   std::vector<Feature> out;
   const Eval eval = nurbs_eval(curve, options.frenet);
+  std::vector<FrenetPoint> points;
   search(
-      eval, [&](double t) { return signed_kappa(eval(t)); }, nurbs_cuts(curve), options.samples_per_span,
-      FeatureKind::Inflection, FeatureKind::Inflection, out);
+      eval, nurbs_sample(curve, options.frenet, signed_kappa, points), [&](double t) { return signed_kappa(eval(t)); },
+      nurbs_cuts(curve), options.samples_per_span, FeatureKind::Inflection, FeatureKind::Inflection, out);
   knot_jumps(curve, options.frenet, signed_kappa, false, out);
   return out;
 }
@@ -167,9 +196,10 @@ std::vector<Feature> curvature_extrema(const nurbs::NurbsCurve& curve, const Fea
   options.validate();
   std::vector<Feature> out;
   const Eval eval = nurbs_eval(curve, options.frenet);
+  std::vector<FrenetPoint> points;
   search(
-      eval, [&](double t) { return kappa_prime(eval(t)); }, nurbs_cuts(curve), options.samples_per_span,
-      FeatureKind::CurvatureMaximum, FeatureKind::CurvatureMinimum, out);
+      eval, nurbs_sample(curve, options.frenet, kappa_prime, points), [&](double t) { return kappa_prime(eval(t)); },
+      nurbs_cuts(curve), options.samples_per_span, FeatureKind::CurvatureMaximum, FeatureKind::CurvatureMinimum, out);
   knot_jumps(curve, options.frenet, kappa_prime, true, out);
   return out;
 }
@@ -178,18 +208,20 @@ namespace {
 std::vector<Feature> law_inflections(const LawFrenet& curve, Interval domain, const FeatureOptions& options) {
   std::vector<Feature> out;
   const Eval eval = [&curve](double t) { return curve.at(t); };
+  std::vector<FrenetPoint> points;
   search(
-      eval, [&](double t) { return signed_kappa(eval(t)); }, law_cuts(domain), options.samples_per_span,
-      FeatureKind::Inflection, FeatureKind::Inflection, out);
+      eval, law_sample(curve, signed_kappa, points), [&](double t) { return signed_kappa(eval(t)); }, law_cuts(domain),
+      options.samples_per_span, FeatureKind::Inflection, FeatureKind::Inflection, out);
   return out;
 }
 
 std::vector<Feature> law_curvature_extrema(const LawFrenet& curve, Interval domain, const FeatureOptions& options) {
   std::vector<Feature> out;
   const Eval eval = [&curve](double t) { return curve.at(t); };
+  std::vector<FrenetPoint> points;
   search(
-      eval, [&](double t) { return kappa_prime(eval(t)); }, law_cuts(domain), options.samples_per_span,
-      FeatureKind::CurvatureMaximum, FeatureKind::CurvatureMinimum, out);
+      eval, law_sample(curve, kappa_prime, points), [&](double t) { return kappa_prime(eval(t)); }, law_cuts(domain),
+      options.samples_per_span, FeatureKind::CurvatureMaximum, FeatureKind::CurvatureMinimum, out);
   return out;
 }
 }  // namespace
@@ -213,16 +245,25 @@ std::vector<Feature> torsion_extrema(const nurbs::NurbsCurve& curve, const Featu
   const FrenetOptions fo = options.frenet;
   // The sign of dτ/dt (= sign of dτ/ds): with a = r' × r'', a' = r' × r''',
   // dτ/dt = [(a' · r''' + a · r'''') |a|² − 2 (a · r''') (a · a')] / |a|⁴; only the numerator is needed.
-  auto dtau = [&curve, &scale, fo](double t) {
-    std::array<Vec3, 5> d;
-    curve.derivatives(t, 4, d, fo.eval);
+  auto dtau_of = [&scale, fo](double t, std::span<const Vec3> d) {
     const FrenetPoint p = frenet_from_derivatives(t, std::span<const Vec3, 4>(d.data(), 4), scale, fo);
     if (!p.frame_defined) return std::nan("");
     const Vec3 a = cross(d[1], d[2]), a1 = cross(d[1], d[3]);
     return (dot(a1, d[3]) + dot(a, d[4])) * dot(a, a) - 2.0 * dot(a, d[3]) * dot(a, a1);
   };
+  auto dtau = [&curve, fo, &dtau_of](double t) {
+    std::array<Vec3, 5> d;
+    curve.derivatives(t, 4, d, fo.eval);
+    return dtau_of(t, d);
+  };
+  std::vector<Vec3> derivs;
+  auto sample = [&curve, fo, &dtau_of, &derivs](std::span<const double> ts, std::span<double> vs) {
+    derivs.resize(5 * ts.size());
+    curve.derivatives(ts, 4, derivs, fo.eval);
+    for (std::size_t i = 0; i < ts.size(); ++i) vs[i] = dtau_of(ts[i], std::span<const Vec3>(derivs.data() + 5 * i, 5));
+  };
   std::vector<Feature> out;
-  search(nurbs_eval(curve, options.frenet), dtau, nurbs_cuts(curve), options.samples_per_span,
+  search(nurbs_eval(curve, options.frenet), sample, dtau, nurbs_cuts(curve), options.samples_per_span,
          FeatureKind::TorsionMaximum, FeatureKind::TorsionMinimum, out);
   return out;
 }

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -425,17 +426,14 @@ IntrinsicCurve reconstruct_planar(const law::Law& kappa, std::string_view parame
   }
   reject_poles(kappa, parameter, length, "kappa");
   // θ(s) = F(s) − F(0) when the antiderivative exists and κ has no pole or undefined region on
-  // [0, L] (definite_integral then reports the symbolic method).
-  law::DefiniteIntegralResult total;
-  try {
-    total = law::definite_integral(kappa, parameter, 0.0, length);
-  } catch (const Error& e) {
-    // The numeric fallback reports an undefined integrand: say which law.
-    throw Error(e.code(), "kappa: " + e.message(), ErrorWhere{.field = "kappa"});
-  }
-  if (total.method == law::IntegralMethod::Symbolic) {
+  // [0, L]. Only the closed form decides: no quadrature here (adaptive quadrature of a kinked κ,
+  // e.g. a sum of hat functions, took minutes just to pick the method); the ODE reports an
+  // undefined κ itself.
+  const std::optional<law::DefiniteIntegralResult> total =
+      law::symbolic_definite_integral(kappa, parameter, 0.0, length);
+  if (total) {
     const law::Context ctx = kappa.context();
-    const law::Law& F = total.antiderivative;
+    const law::Law& F = total->antiderivative;
     // Shift by F(0) so that θ(0) = 0.
     const law::Law only_f[1] = {F};
     const law::Tape f_tape = compile(only_f, parameter, "kappa");

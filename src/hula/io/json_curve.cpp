@@ -29,6 +29,8 @@ std::string_view parameterisation_name(nurbs::Parameterisation rule) noexcept {
       return "chord";
     case nurbs::Parameterisation::Centripetal:
       return "centripetal";
+    case nurbs::Parameterisation::Foley:
+      return "foley";
   }
   return "chord";
 }
@@ -37,9 +39,10 @@ nurbs::Parameterisation parameterisation_from_name(std::string_view name, std::s
   if (name == "uniform") return nurbs::Parameterisation::Uniform;
   if (name == "chord") return nurbs::Parameterisation::ChordLength;
   if (name == "centripetal") return nurbs::Parameterisation::Centripetal;
+  if (name == "foley") return nurbs::Parameterisation::Foley;
   throw Error(Errc::ParseError,
               std::string(field) + " = " + json::quote(std::string(name)) +
-                  " is not a parameterisation (expected \"uniform\", \"chord\" or \"centripetal\")",
+                  " is not a parameterisation (expected \"uniform\", \"chord\", \"centripetal\" or \"foley\")",
               {.field = std::string(field)});
 }
 

@@ -8,7 +8,7 @@
 //    "control_points": [[x, y, z] or [x, y], ...], "weights": [...] or null}
 //   {"kind": "bezier", "control_points": [...], "weights": [...] or null}
 //   {"kind": "interpolated", "points": [...],
-//    "parameterisation": "uniform" | "chord" | "centripetal",
+//    "parameterisation": "uniform" | "chord" | "centripetal" | "foley",
 //    "parameters": [...]?, "knots": [...]?, "start": END, "end": END}
 //      END = "natural" | "bessel" | "not-a-knot" | "occt" | {"tangent": [x, y, z]}
 //   {"kind": "hermite", "points": [...], "tangents": [...], "second_derivatives": [...]?,
@@ -64,11 +64,11 @@ inline constexpr int kCurveFormatVersion = 1;
 [[nodiscard]] nurbs::EndCondition end_condition_from_json(const Json& value, std::string_view field);
 /// The JSON form of an end condition (a string, or {"tangent": [x, y, z]}; [x, y] when dimension is 2).
 [[nodiscard]] Json end_condition_to_json(const nurbs::EndCondition& end, int dimension = 3);
-/// Parses "uniform", "chord" or "centripetal".
+/// Parses "uniform", "chord", "centripetal" or "foley".
 /// @throws hula::Error(Errc::ParseError) naming `field` and the value
 [[nodiscard]] nurbs::Parameterisation parameterisation_from_name(std::string_view name,
                                                                  std::string_view field = "parameterisation");
-/// "uniform", "chord" or "centripetal".
+/// "uniform", "chord", "centripetal" or "foley".
 [[nodiscard]] std::string_view parameterisation_name(nurbs::Parameterisation rule) noexcept;
 
 /// Builds a curve from a parsed JSON document (any of the six kinds, docs/formats.md).

@@ -286,53 +286,53 @@ std::optional<Law> antiderivative(const Law& f, std::string_view parameter) {
   return in.integrate(f);
 }
 
-DefiniteIntegralResult definite_integral(const Law& f, std::string_view parameter, double a, double b,
-                                         const IntegrationOptions& options) {
-  options.validate();
+std::optional<DefiniteIntegralResult> symbolic_definite_integral(const Law& f, std::string_view parameter, double a,
+                                                                 double b) {
   if (!f.valid() || f.dimension() != 1) throw Error(Errc::InvalidArgument, "definite_integral: expects a scalar law");
   if (!std::isfinite(a) || !std::isfinite(b))
     throw Error(Errc::InvalidArgument,
                 "definite_integral: bounds must be finite, got [" + format_number(a) + ", " + format_number(b) + "]");
-  DefiniteIntegralResult r;
   std::optional<Law> F = antiderivative(f, parameter);
-  bool symbolic_ok = F.has_value() && a != b;
-  if (symbolic_ok) {
-    // F(b) − F(a) is only the integral when f has no pole or undefined region on [a, b].
-    const SingularityReport rep = singularities(f, parameter, std::min(a, b), std::max(a, b));
-    symbolic_ok = rep.undefined.empty();
-    for (const Singularity& s : rep.points) {
-      switch (s.kind) {
-        case SingularityKind::DivisionByZero:
-        case SingularityKind::TanPole:
-        case SingularityKind::LogBoundary:
-        case SingularityKind::PowerBase:
-        case SingularityKind::SqrtBoundary:
-        case SingularityKind::InverseTrigBound:
-        case SingularityKind::NormalizeZero:
-        case SingularityKind::Atan2Origin:
-          symbolic_ok = false;
-          break;
-        default:
-          break;
-      }
+  if (!F.has_value() || a == b) return std::nullopt;
+  // F(b) − F(a) is only the integral when f has no pole or undefined region on [a, b].
+  const SingularityReport rep = singularities(f, parameter, std::min(a, b), std::max(a, b));
+  if (!rep.undefined.empty()) return std::nullopt;
+  for (const Singularity& s : rep.points) {
+    switch (s.kind) {
+      case SingularityKind::DivisionByZero:
+      case SingularityKind::TanPole:
+      case SingularityKind::LogBoundary:
+      case SingularityKind::PowerBase:
+      case SingularityKind::SqrtBoundary:
+      case SingularityKind::InverseTrigBound:
+      case SingularityKind::NormalizeZero:
+      case SingularityKind::Atan2Origin:
+        return std::nullopt;
+      default:
+        break;
     }
   }
-  if (symbolic_ok) {
-    const std::string in[1] = {std::string(parameter)};
-    const Law outs[1] = {*F};
-    const Tape tape = Tape::compile(outs, in);
-    double fa = 0, fb = 0;
-    const bool ok = tape.evaluate(std::span<const double>(&a, 1), std::span<double>(&fa, 1)) &&
-                    tape.evaluate(std::span<const double>(&b, 1), std::span<double>(&fb, 1));
-    if (ok && std::isfinite(fa) && std::isfinite(fb)) {
-      r.value = fb - fa;
-      r.error_estimate = 16 * std::numeric_limits<double>::epsilon() * (std::fabs(fa) + std::fabs(fb));
-      r.method = IntegralMethod::Symbolic;
-      r.converged = true;
-      r.antiderivative = *F;
-      return r;
-    }
-  }
+  const std::string in[1] = {std::string(parameter)};
+  const Law outs[1] = {*F};
+  const Tape tape = Tape::compile(outs, in);
+  double fa = 0, fb = 0;
+  const bool ok = tape.evaluate(std::span<const double>(&a, 1), std::span<double>(&fa, 1)) &&
+                  tape.evaluate(std::span<const double>(&b, 1), std::span<double>(&fb, 1));
+  if (!ok || !std::isfinite(fa) || !std::isfinite(fb)) return std::nullopt;
+  DefiniteIntegralResult r;
+  r.value = fb - fa;
+  r.error_estimate = 16 * std::numeric_limits<double>::epsilon() * (std::fabs(fa) + std::fabs(fb));
+  r.method = IntegralMethod::Symbolic;
+  r.converged = true;
+  r.antiderivative = *F;
+  return r;
+}
+
+DefiniteIntegralResult definite_integral(const Law& f, std::string_view parameter, double a, double b,
+                                         const IntegrationOptions& options) {
+  options.validate();
+  if (std::optional<DefiniteIntegralResult> exact = symbolic_definite_integral(f, parameter, a, b)) return *exact;
+  DefiniteIntegralResult r;
   const IntegrationResult n = integrate(f, parameter, a, b, options);
   r.value = n.value;
   r.error_estimate = n.error_estimate;

@@ -42,6 +42,13 @@ struct DefiniteIntegralResult {
   Law antiderivative{};
 };
 
+/// The symbolic branch of definite_integral() alone: F(b) − F(a) when a closed form exists, a ≠ b and f has no
+/// pole or undefined region on [a, b], else nullopt. Cheap and bounded (no quadrature), so callers that only need to
+/// decide between a closed form and a numeric method use it instead of definite_integral().
+/// @throws hula::Error(Errc::InvalidArgument) if f is not a scalar law or a bound is not finite
+[[nodiscard]] std::optional<DefiniteIntegralResult> symbolic_definite_integral(const Law& f, std::string_view parameter,
+                                                                               double a, double b);
+
 /// ∫_a^b f d(parameter) for a scalar law: symbolic when a closed form exists and f has no pole or
 /// undefined region in [a, b], else numeric with its error estimate.
 /// @throws as integrate() (the numeric path reports undefined integrands)

@@ -8,6 +8,9 @@
 //   The NURBS Book (Piegl & Tiller, 2nd ed.) 9.2.1-9.2.2 (global interpolation,
 //     end derivatives), A2.2/A2.3 (basis functions and derivatives);
 //   E. T. Y. Lee, "Choosing nodes in parametric curve interpolation", CAD 21(6), 1989 (centripetal);
+//   T. A. Foley, G. M. Nielson, "Knot selection for parametric spline interpolation", in Mathematical
+//     Methods in Computer Aided Geometric Design, Academic Press, 1989, pp. 261-271 (Foley; with
+//     Euclidean chords as in Lee's and Fang & Hung's comparisons);
 //   C. de Boor, "A Practical Guide to Splines", ch. IV (Bessel and not-a-knot ends);
 //   Open CASCADE GeomAPI_Interpolate::PerformNonPeriodic / BuildTangents (the Occt end condition).
 //
@@ -30,6 +33,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include "hula/core/banded.hpp"
@@ -363,7 +367,7 @@ std::vector<double> parameterise(std::span<const Vec3> points, Parameterisation 
     t[N - 1] = 1.0;
     return t;
   }
-  if (rule != Parameterisation::ChordLength && rule != Parameterisation::Centripetal)
+  if (rule != Parameterisation::ChordLength && rule != Parameterisation::Centripetal && rule != Parameterisation::Foley)
     throw Error(Errc::InvalidArgument,
                 "parameterisation = " + std::to_string(static_cast<int>(rule)) + " is not a Parameterisation value",
                 {.field = "parameterisation"});
@@ -377,7 +381,27 @@ std::vector<double> parameterise(std::span<const Vec3> points, Parameterisation 
                   indexed("points", i - 1) + " and " + indexed("points", i) + " coincide (distance " +
                       format_number(d) + " <= resolution " + format_number(resolution) + ")",
                   {.field = "points", .index = i});
-    t[i] = t[i - 1] + (rule == Parameterisation::ChordLength ? d : std::sqrt(d));
+    t[i] = t[i - 1] + (rule == Parameterisation::Centripetal ? std::sqrt(d) : d);
+  }
+  if (rule == Parameterisation::Foley) {
+    // Foley–Nielson: span i (Q_i to Q_i+1, chord d_i) is
+    //   d_i (1 + 3/2 θ_i d_i-1 / (d_i-1 + d_i) + 3/2 θ_i+1 d_i+1 / (d_i + d_i+1)),
+    // θ_j = min(π − angle(Q_j-1 − Q_j, Q_j+1 − Q_j), π/2) the turning angle at Q_j, capped at π/2;
+    // the terms at the ends (no d_-1, no d_N-1) are absent. t holds the cumulative chords here.
+    std::vector<double> turn(N, 0.0);
+    for (std::size_t j = 1; j + 1 < N; ++j) {
+      const Vec3 a = points[j - 1] - points[j], b = points[j + 1] - points[j];
+      const double interior = std::atan2(norm(cross(a, b)), dot(a, b));
+      turn[j] = std::min(std::numbers::pi - interior, std::numbers::pi / 2);
+    }
+    std::vector<double> chord(N - 1);
+    for (std::size_t i = 0; i + 1 < N; ++i) chord[i] = t[i + 1] - t[i];
+    for (std::size_t i = 0; i + 1 < N; ++i) {
+      double span = chord[i];
+      if (i > 0) span += 1.5 * turn[i] * chord[i - 1] * chord[i] / (chord[i - 1] + chord[i]);
+      if (i + 2 < N) span += 1.5 * turn[i + 1] * chord[i + 1] * chord[i] / (chord[i] + chord[i + 1]);
+      t[i + 1] = t[i] + span;
+    }
   }
   const double total = t[N - 1];
   for (std::size_t i = 1; i + 1 < N; ++i) t[i] /= total;

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Curves through data points (thesis 5.3, 7.1.2, 7.5, 10.2.1, 10.2.5):
-// parameterisation (uniform, chord length eq. 29, centripetal), the global C2
+// parameterisation (uniform, chord length eq. 29, centripetal, Foley), the global C2
 // cubic spline with natural / clamped / Bessel / not-a-knot / Open CASCADE
 // end conditions in O(N), Lagrange interpolation, and piecewise Hermite
 // (cubic with tangents, quintic with tangents and second derivatives).
@@ -24,6 +24,7 @@ enum class Parameterisation {
   Uniform,      ///< t_i = i / (N - 1)
   ChordLength,  ///< t_i proportional to the cumulative chord length (thesis eq. 29)
   Centripetal,  ///< t_i proportional to the cumulative square root of chord lengths (Lee 1989)
+  Foley,        ///< chord lengths enlarged by the turning angles at their ends (Foley & Nielson 1989)
 };
 
 /// End condition of the global cubic spline at one end.
@@ -96,14 +97,14 @@ struct InterpolationOptions {
 
 /// Data parameters in [0, 1] (first 0, last 1, strictly increasing).
 /// @param points N ≥ 2 finite points
-/// @param rule Uniform (i / (N - 1)), ChordLength (eq. 29) or Centripetal
+/// @param rule Uniform (i / (N - 1)), ChordLength (eq. 29), Centripetal or Foley
 /// @param tolerance consecutive points whose distance is ≤
 ///   resolution_for_size(tolerance, diagonal of the points' box) coincide
 /// @returns N parameters
 /// @throws hula::Error(Errc::TooFewPoints) if fewer than 2 points
 /// @throws hula::Error(Errc::NonFiniteInput) naming the point and coordinate
 /// @throws hula::Error(Errc::CoincidentPoints) naming the index pair when consecutive
-///   points coincide under ChordLength or Centripetal
+///   points coincide under ChordLength, Centripetal or Foley
 [[nodiscard]] std::vector<double> parameterise(std::span<const Vec3> points, Parameterisation rule,
                                                const Tolerance& tolerance = {});
 

@@ -18,6 +18,7 @@ void check_parameterisation_option(Parameterisation rule) {
     case Parameterisation::Uniform:
     case Parameterisation::ChordLength:
     case Parameterisation::Centripetal:
+    case Parameterisation::Foley:
       return;
   }
   throw Error(Errc::InvalidOption,
