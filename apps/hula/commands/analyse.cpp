@@ -229,8 +229,9 @@ Command add_analyse(CLI::App& app) {
   at->excludes(n);
   sub->add_option("--by", args->by, "Abscissa of --at / --samples: parameter | arclength (default parameter)")
       ->check(CLI::IsMember({"parameter", "arclength"}));
-  sub->add_flag("--features", args->features,
-                "Add \"features\": inflections (planar curves), curvature extrema, knot continuity, curvature monotonicity");
+  sub->add_flag(
+      "--features", args->features,
+      "Add \"features\": inflections (planar curves), curvature extrema, knot continuity, curvature monotonicity");
   sub->add_option("--svg", args->svg,
                   "Write curve.svg (the curve and its fins, curvature and torsion unless --fins), kappa.svg, tau.svg, "
                   "radius.svg (range-limited radius of curvature), speed.svg and logcurvature.svg into this directory");

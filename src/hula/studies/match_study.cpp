@@ -109,9 +109,9 @@ Profile arclength_target(const Profile& target, const nurbs::NurbsCurve& start_c
   return Profile::from_bspline(3, knots, coefficients);
 }
 
-// The direct route's problem: the target as an arc-length profile (a parameter-abscissa target converted through the start spline) integrated from the start point and frame of
-// the spline through the start points (its turning side for planar curves), held to the last data point and the
-// end tangent when asked.
+// The direct route's problem: the target as an arc-length profile (a parameter-abscissa target converted through the
+// start spline) integrated from the start point and frame of the spline through the start points (its turning side for
+// planar curves), held to the last data point and the end tangent when asked.
 DirectReconstructionProblem direct_problem(const CurvatureMatch& match, const MatchStudy& study) {
   const CurvatureMatchSetup& s = match.setup();
   const MatchDirectSettings& d = study.direct;
