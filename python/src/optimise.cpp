@@ -107,6 +107,14 @@ optim::IslandOptions island_options(Options& o) {
 }
 
 // Runs the archipelago (GIL released; a Python objective re-acquires it per batch) into `out`.
+// A single-objective GA's result: its best design and the run report.
+void put_ga_result(const optim::GaResult& r, py::dict& out) {
+  out["x"] = to_array(r.best.variables);
+  out["f"] = to_array(r.best.objectives);
+  out["violation"] = r.best.violation;
+  out["report"] = report_dict(r.report);
+}
+
 void run_islands(const optim::Problem& problem, const optim::IslandAlgorithm& algorithm,
                  const optim::IslandOptions& options, py::dict& out) {
   optim::IslandsResult r;
@@ -189,10 +197,7 @@ py::dict run(const optim::Problem& problem, const std::string& algorithm, const 
       const py::gil_scoped_release release;
       r = optim::solve_real_ga(problem, a);
     }
-    out["x"] = to_array(r.best.variables);
-    out["f"] = to_array(r.best.objectives);
-    out["violation"] = r.best.violation;
-    out["report"] = report_dict(r.report);
+    put_ga_result(r, out);
   } else if (algorithm == "ga-binary") {
     optim::BinaryGaOptions a;
     a.population = population;
@@ -225,10 +230,7 @@ py::dict run(const optim::Problem& problem, const std::string& algorithm, const 
       const py::gil_scoped_release release;
       r = optim::solve_binary_ga(problem, a);
     }
-    out["x"] = to_array(r.best.variables);
-    out["f"] = to_array(r.best.objectives);
-    out["violation"] = r.best.violation;
-    out["report"] = report_dict(r.report);
+    put_ga_result(r, out);
   } else if (algorithm == "nsga2") {
     optim::Nsga2Options a;
     a.population = population;
