@@ -12,6 +12,7 @@
 // (and quartiles). Not a Google Benchmark: it measures quality, not time.
 //
 //   build/bench/bench/optim/bench_optim_islands_quality [generations=500] [seeds=10] [problems=all]
+//       [interval=10] [migrants=2]
 //
 // problems: a comma-separated subset of rastrigin,schwefel,zdt1,zdt3.
 #include <algorithm>
@@ -41,8 +42,9 @@ namespace {
 using namespace hula::optim;  // NOLINT(google-build-using-namespace): a benchmark program
 
 constexpr std::size_t kIslands = 4;
-constexpr std::size_t kInterval = 10;
-constexpr std::size_t kMigrants = 2;
+// Migration settings (arguments 4 and 5): generations between migrations, Flexo's migrants per neighbour.
+std::size_t g_interval = 10;  // NOLINT(cppcoreguidelines-avoid-non-const-global-variables): set once by main
+std::size_t g_migrants = 2;   // NOLINT(cppcoreguidelines-avoid-non-const-global-variables): set once by main
 
 struct Stats {
   double q1, median, q3;
@@ -98,7 +100,7 @@ pagmo::algorithm pagmo_algorithm(bool multi, unsigned gen, unsigned seed) {
 }
 
 // pagmo: one population of `single` for `generations`, or an archipelago of kIslands x `per_island`
-// evolving kInterval generations between migrations.
+// evolving g_interval generations between migrations (pagmo migrates its default one individual).
 double run_pagmo(const std::string& name, bool archipelago, std::size_t single, std::size_t per_island,
                  std::size_t generations, unsigned seed) {
   const bool multi = name.starts_with("zdt");
@@ -111,10 +113,10 @@ double run_pagmo(const std::string& name, bool archipelago, std::size_t single, 
   }
   pagmo::archipelago archi{pagmo::topology{pagmo::ring{}}};
   for (std::size_t i = 0; i < kIslands; ++i) {
-    archi.push_back(pagmo::thread_island{}, pagmo_algorithm(multi, kInterval, seed * 100 + static_cast<unsigned>(i)),
+    archi.push_back(pagmo::thread_island{}, pagmo_algorithm(multi, g_interval, seed * 100 + static_cast<unsigned>(i)),
                     prob, per_island, seed * 100 + i);
   }
-  archi.evolve(static_cast<unsigned>(generations / kInterval));
+  archi.evolve(static_cast<unsigned>(generations / g_interval));
   archi.wait_check();
   if (multi) {
     std::vector<pagmo::vector_double> all;
@@ -140,8 +142,8 @@ double run_flexo(const std::string& name, std::size_t k, std::size_t population,
                                          : zdt(3, 30);
   IslandOptions o;
   o.islands = k;
-  o.interval = kInterval;
-  o.migrants = kMigrants;
+  o.interval = g_interval;
+  o.migrants = g_migrants;
   if (multi) {
     Nsga2Options a;
     a.population = population;
@@ -164,8 +166,10 @@ int main(int argc, char** argv) {
   const std::size_t generations = argc > 1 ? std::strtoul(argv[1], nullptr, 10) : 500;
   const std::size_t seeds = argc > 2 ? std::strtoul(argv[2], nullptr, 10) : 10;
   const std::string problems = argc > 3 ? argv[3] : "rastrigin,schwefel,zdt1,zdt3";
+  if (argc > 4) g_interval = std::strtoul(argv[4], nullptr, 10);
+  if (argc > 5) g_migrants = std::strtoul(argv[5], nullptr, 10);
   std::printf("generations %zu (+ the initial one), %zu seeds, migration every %zu generations, %zu migrants, ring\n\n",
-              generations, seeds, kInterval, kMigrants);
+              generations, seeds, g_interval, g_migrants);
   std::printf(
       "| problem | measure | Flexo 1 x N | Flexo 4 x N/4 islands | pagmo 1 x N | pagmo archipelago 4 x N/4 | Flexo 1 "
       "x N + the islands' archive |\n");
