@@ -251,10 +251,10 @@ struct NurbsFitResult {
 /// gives a compact curve (issue 14: few control points) far below what a viewport or a CAD
 /// exchange resolves. The budgets bound the work of one request: at most kFrontEndMaxSteps step
 /// attempts of the integration (ReconstructionOptions::max_steps) and kFrontEndMaxSegments Hermite
-/// segments of the fit (3 × 10,001 control points), past which the request fails with an error
+/// segments of the fit (3 × 2,001 control points), past which the request fails with an error
 /// naming kappa and the limit rather than running for minutes.
 inline constexpr double kFrontEndFitTolerance = 1e-6;
 inline constexpr std::size_t kFrontEndMaxSteps = 100'000;
-inline constexpr std::size_t kFrontEndMaxSegments = 10'000;
+inline constexpr std::size_t kFrontEndMaxSegments = 2'000;
 
 }  // namespace hula::intrinsic
