@@ -147,17 +147,47 @@ class ApiTest(unittest.TestCase):
         e = self.call("POST", "/api/law", raw_body=b"{not json", expect=400)
         self.assertEqual(e["error"]["code"], "ParseError")
 
-    # checks reconstruction against the closed form circle of kappa = 1 (radius 1, quarter turn at s = pi/2)
+    # checks reconstruction against the closed form circle of kappa = 1 (radius 1, quarter turn at s = pi/2), the fit
+    # within the default 1e-6 of the size (the half circle's box is 2 by 1: diagonal sqrt(5))
     def test_reconstruct(self):
         import math
         body = self.call("POST", "/api/reconstruct", {"kappa": "1", "tau": "0", "length": math.pi, "at": [math.pi / 2]})
         p = body["points"][0]["position"]
         self.assertAlmostEqual(p[0], 1.0, places=7)
         self.assertAlmostEqual(p[1], 1.0, places=7)
-        self.assertLess(body["max_deviation"], 1e-6)
+        self.assertAlmostEqual(body["fit"]["tolerance"], 1e-6 * math.sqrt(5), delta=1e-8)
+        self.assertLessEqual(body["max_deviation"], body["fit"]["tolerance"])
         self.assertEqual(body["curve"]["kind"], "nurbs")
+        self.assertEqual(body["integration"]["method"], "planar-exact-angle")
         e = self.call("POST", "/api/reconstruct", {"kappa": "1", "tau": "0"}, expect=400)
         self.assertIn("length", e["error"]["message"])
+        e = self.call("POST", "/api/reconstruct", {"kappa": "1", "tau": "0", "length": 1, "fit_tolerance": 0}, expect=400)
+        self.assertEqual(e["error"]["where"]["field"], "fit_tolerance")
+
+    # checks a kinked kappa law (64 touching hats of area 1/16, 127 kinks, no closed-form antiderivative) is answered in
+    # bounded work instead of hanging: the end tangent turns by the closed-form total angle 64/16 = 4 rad; the
+    # integration steps onto every kink (127 breakpoints) in at most 4 steps per piece and the fit has at most 6
+    # segments per piece (counts, not a timing)
+    def test_reconstruct_kinked_curvature(self):
+        import math
+        h = 8.0 / 128
+        kappa = " + ".join(f"max(0, 1 - abs(s - {(2 * i + 1) * h!r})/{h!r})" for i in range(64))
+        body = self.call("POST", "/api/reconstruct", {"kappa": kappa, "tau": "0", "length": 8, "at": [8]})
+        t = body["points"][0]["T"]
+        self.assertAlmostEqual(math.atan2(t[1], t[0]), math.remainder(4.0, 2 * math.pi), places=8)
+        self.assertEqual(body["integration"]["breakpoints"], 127)
+        self.assertLessEqual(body["integration"]["steps"], 4 * 128)
+        self.assertLessEqual(body["fit"]["segments"], 6 * 128)
+        self.assertEqual(len(body["curve"]["control_points"]), body["fit"]["control_points"])
+        self.assertLessEqual(body["max_deviation"], body["fit"]["tolerance"])
+
+    # checks a law too rough for the route's work limit (|sin(20000 s)|, ~51,000 kinks on [0, 8]) is refused with 422
+    # naming kappa and the fit's limit max_segments = 2000 rather than running for minutes
+    def test_reconstruct_work_limit(self):
+        e = self.call("POST", "/api/reconstruct", {"kappa": "abs(sin(20000*s))", "tau": "0", "length": 8}, expect=422)
+        self.assertEqual(e["error"]["code"], "NumericalFailure")
+        self.assertEqual(e["error"]["where"]["field"], "kappa")
+        self.assertIn("max_segments = 2000", e["error"]["message"])
 
     # checks a GA job's SSE stream: one event per generation in order, then done with the best so far
     def test_ga_job_events(self):

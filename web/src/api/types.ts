@@ -187,6 +187,7 @@ export interface ReconstructRequest {
   start_point?: number[];
   start_frame?: { tangent: number[]; normal: number[] };
   tolerance?: number;
+  fit_tolerance?: number;
   at?: number[];
 }
 export interface FramePoint {
@@ -200,6 +201,8 @@ export interface ReconstructResponse {
   points: FramePoint[];
   curve: CurveFile;
   max_deviation: number;
+  integration: { method: string; steps: number; rejected_steps: number; breakpoints: number };
+  fit: { control_points: number; segments: number; tolerance: number; max_deviation: number };
 }
 
 export type JobState = 'queued' | 'running' | 'done' | 'failed' | 'cancelled';
