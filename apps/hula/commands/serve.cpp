@@ -98,6 +98,11 @@ int run_serve(const ServeArgs& a) {
                          "token can use the API, unencrypted";
     std::cerr << warning.dump() << std::endl;
   }
+  if (const std::string failed = server.job_priority_error(); !failed.empty()) {
+    Json warning = Json::object();
+    warning["warning"] = "job threads run at the normal scheduling priority and compete with requests: " + failed;
+    std::cerr << warning.dump() << std::endl;
+  }
   server.run();
   return kExitOk;
 }
