@@ -579,7 +579,7 @@ class LifecycleTest(unittest.TestCase):
             idle = [t for t in threads if t[1] == os.SCHED_IDLE]
             self.assertEqual(idle, [(19, os.SCHED_IDLE)] * 2, threads)
             others = [policy for _, policy in threads if policy != os.SCHED_IDLE]
-            self.assertGreaterEqual(len(others), 2, threads)  # the main thread and the second I/O thread
+            self.assertGreaterEqual(len(others), 1, threads)  # the main thread (the second I/O thread may not be up yet)
             self.assertEqual(set(others), {os.sched_getscheduler(0)}, threads)
             self.assertNotIn("warning", server.log_text())
 
