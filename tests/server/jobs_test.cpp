@@ -21,7 +21,8 @@ namespace {
 // of proc(5) and field k is fields[k - 3].
 std::vector<std::string> task_stat(pid_t tid) {
   std::ifstream in("/proc/self/task/" + std::to_string(tid) + "/stat");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string text;
+  std::getline(in, text);
   std::istringstream rest(text.substr(text.rfind(')') + 1));
   std::vector<std::string> fields;
   for (std::string f; rest >> f;) fields.push_back(f);
