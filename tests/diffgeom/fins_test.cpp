@@ -37,6 +37,32 @@ TEST(Fins, Circle) {
   for (const Vec3& t : fins(c, o).tip) EXPECT_NEAR(norm(t), 2.0 + std::log1p(1.5), 1e-12);
 }
 
+// checks fins built from frames already evaluated at the fin parameters equal fins(curve) bit for bit,
+// for every kind (the server's analysis builds its combs this way)
+TEST(Fins, FromFramesEqualFromCurve) {
+  const nurbs::NurbsCurve c = testing::rational_circle(2.0);
+  for (const FinKind kind :
+       {FinKind::Curvature, FinKind::Torsion, FinKind::Normal, FinKind::Binormal, FinKind::BishopU, FinKind::BishopV}) {
+    FinOptions o;
+    o.kind = kind;
+    o.scale = 0.7;
+    o.density = 37;
+    const Fins expected = fins(c, o);
+    std::vector<FrenetPoint> frames(expected.t.size());
+    frenet(c, expected.t, frames);
+    const Fins got = fins(frames, o);
+    ASSERT_EQ(got.t.size(), expected.t.size());
+    for (std::size_t i = 0; i < got.t.size(); ++i) {
+      EXPECT_EQ(got.t[i], expected.t[i]);
+      EXPECT_EQ(got.defined[i], expected.defined[i]) << fin_kind_name(kind) << " fin " << i;
+      EXPECT_EQ(got.base[i], expected.base[i]);
+      if (expected.defined[i]) {
+        EXPECT_EQ(got.tip[i], expected.tip[i]) << fin_kind_name(kind) << " fin " << i;
+      }
+    }
+  }
+}
+
 // checks the torsion fin of the helix (2 cos t, 2 sin t, 0.5 t): tip − P = s τ B with τ = 0.5/4.25.
 TEST(Fins, HelixTorsion) {
   law::Context ctx;

@@ -597,6 +597,22 @@ class LifecycleTest(unittest.TestCase):
                 self.assertEqual(status, 200, data)
                 self.assertTrue(json.loads(data)["provenance"]["details"]["cancelled"])
 
+    # checks the real server's job workers are SCHED_IDLE at nice 19 and its other threads (I/O) keep
+    # this process's policy, read from /proc/PID/task/*/stat (proc(5) fields 19 and 41), and no warning
+    def test_job_threads_lowest_priority(self):
+        with Server(HULA, args=["--jobs", "2"]) as server:
+            threads = []
+            for tid in os.listdir(f"/proc/{server.process.pid}/task"):
+                with open(f"/proc/{server.process.pid}/task/{tid}/stat") as f:
+                    fields = f.read().rsplit(")", 1)[1].split()
+                threads.append((int(fields[19 - 3]), int(fields[41 - 3])))
+            idle = [t for t in threads if t[1] == os.SCHED_IDLE]
+            self.assertEqual(idle, [(19, os.SCHED_IDLE)] * 2, threads)
+            others = [policy for _, policy in threads if policy != os.SCHED_IDLE]
+            self.assertGreaterEqual(len(others), 1, threads)  # the main thread (the second I/O thread may not be up yet)
+            self.assertEqual(set(others), {os.sched_getscheduler(0)}, threads)
+            self.assertNotIn("warning", server.log_text())
+
     # checks --token-file is used as the token, and a short token is refused (exit 3)
     def test_token_file(self):
         with tempfile.NamedTemporaryFile("w", suffix=".token", delete=False) as f:

@@ -116,6 +116,11 @@ Fins fins(const nurbs::NurbsCurve& curve, const FinOptions& options) {
   return build(pts, options);
 }
 
+Fins fins(std::span<const FrenetPoint> frames, const FinOptions& options) {
+  options.validate();
+  return build(frames, options);
+}
+
 Fins fins(const curve::Curve& curve, const FinOptions& options) {
   options.validate();
   if (!curve.law()) return fins(curve.nurbs(), options);

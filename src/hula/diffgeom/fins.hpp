@@ -64,6 +64,10 @@ struct Fins {
 /// The fins of a curve value over its domain, exactly from its law when it has one.
 /// @throws hula::Error(Errc::InvalidOption) for bad options
 [[nodiscard]] Fins fins(const curve::Curve& curve, const FinOptions& options = {});
+/// The fins at Frenet points already evaluated, one fin per point (options.density is not used):
+/// equal to fins(curve, options) when `frames` are the curve's at its fin parameters.
+/// @throws hula::Error(Errc::InvalidOption) for bad options
+[[nodiscard]] Fins fins(std::span<const FrenetPoint> frames, const FinOptions& options);
 
 /// The fin curve (the comb's envelope) of a law curve as an exact law of `parameter`:
 /// Curvature P − s κN, built as P − s ((r'·r') r'' − (r'·r'') r') / |r'|⁴ so it stays defined through

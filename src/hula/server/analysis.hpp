@@ -7,6 +7,8 @@
 // continuity at every interior knot (diffgeom). Undefined values are null.
 #pragma once
 
+#include <cstdint>
+#include <string>
 #include <vector>
 
 #include "hula/diffgeom/fins.hpp"
@@ -37,11 +39,13 @@ struct AnalysisRequest {
 ///   value out of range, naming the member
 [[nodiscard]] AnalysisRequest analysis_request_from_json(const Json& body);
 
-/// Columns, one entry per sample: {"t", "points", "frames": {"T", "N", "B"}, "curvature", "torsion",
-/// "speed"}, plus "fins": [{"kind", "t", "base", "tip"}] and, when asked, "features":
-/// {"inflections": [{"t", "point"}], "curvature_extrema": [{"kind", "t", "point", "curvature"}],
-/// "knots": [{"t", "multiplicity", "parametric", "geometric", "tangent_angle"}]}.
+/// The response body (compact JSON text): columns, one entry per sample: {"t", "points", "frames":
+/// {"T", "N", "B"}, "curvature", "torsion", "speed"}, plus "fins": [{"kind", "t", "base", "tip"}] and,
+/// when asked, "features": {"inflections": [{"t", "point"}], "curvature_extrema": [{"kind", "t",
+/// "point", "curvature"}], "knots": [{"t", "multiplicity", "parametric", "geometric",
+/// "tangent_angle"}]}, and the document's "revision". Every double reads back bit for bit.
 /// @throws hula::Error as diffgeom::frenet, fins, inflections, curvature_extrema and knot_continuity
-[[nodiscard]] Json analyse(const nurbs::NurbsCurve& curve, const AnalysisRequest& request);
+[[nodiscard]] std::string analysis_json(const nurbs::NurbsCurve& curve, const AnalysisRequest& request,
+                                        std::uint64_t revision);
 
 }  // namespace hula::server

@@ -179,9 +179,9 @@ void add_entities(Router& router, const Context& context) {
     const auto [doc, label] = entity_of(docs, request);
     const auto [e, revision] = doc->read([&](const oli::Document& d) { return std::pair(d.get(label), d.revision()); });
     // Computed outside the lock from the immutable snapshot: edits go on meanwhile.
-    Json out = analyse(e.curve().nurbs(), options);
-    out["revision"] = revision;
-    return json_response(200, out);
+    Response r;
+    r.body = analysis_json(e.curve().nurbs(), options, revision);
+    return r;
   });
 }
 
