@@ -3,6 +3,7 @@
 #include "hula/server/analysis.hpp"
 
 #include <cmath>
+#include <optional>
 #include <string_view>
 
 #include "hula/diffgeom/continuity.hpp"
@@ -25,13 +26,10 @@ Json vec(const Vec3& v) {
 }
 
 diffgeom::FinKind fin_kind(const std::string& name, std::size_t index) {
-  using diffgeom::FinKind;
-  for (const FinKind k :
-       {FinKind::Curvature, FinKind::Torsion, FinKind::Normal, FinKind::Binormal, FinKind::BishopU, FinKind::BishopV})
-    if (diffgeom::fin_kind_name(k) == name) return k;
+  if (const std::optional<diffgeom::FinKind> k = diffgeom::fin_kind_from_name(name)) return *k;
   throw Error(Errc::InvalidOption,
               "fins[" + std::to_string(index) + "] = \"" + name +
-                  "\" is not a fin (curvature, torsion, normal, binormal, bishop-u, bishop-v)",
+                  "\" is not a fin (curvature, torsion, normal, binormal, bishop-u, bishop-v, combescure)",
               ErrorWhere{.field = "fins", .index = index});
 }
 
@@ -66,7 +64,8 @@ AnalysisRequest analysis_request_from_json(const Json& body) {
   return r;
 }
 
-Json analyse(const nurbs::NurbsCurve& curve, const AnalysisRequest& request) {
+Json analyse(const curve::Curve& subject, const AnalysisRequest& request) {
+  const nurbs::NurbsCurve& curve = subject.nurbs();
   const auto n = static_cast<std::size_t>(request.samples);
   const nurbs::Interval domain = curve.domain();
   std::vector<double> ts(n);
@@ -113,7 +112,7 @@ Json analyse(const nurbs::NurbsCurve& curve, const AnalysisRequest& request) {
     o.kind = kind;
     o.scale = request.scale;
     o.density = request.samples;
-    const diffgeom::Fins f = diffgeom::fins(curve, o);
+    const diffgeom::Fins f = diffgeom::fins(subject, o);  // exact from the law of a law curve
     Json comb = Json::object();
     comb["kind"] = std::string(diffgeom::fin_kind_name(kind));
     Json ft = Json::array(), base = Json::array(), tip = Json::array();
