@@ -84,6 +84,38 @@ TEST(Fins, HelixTorsion) {
   }
 }
 
+// checks the Combescure fin of the helix (a cos t, a sin t, b t), a = 2, b = 0.5, against the closed form
+// Q − P = C (b/a T + B) = (0, 0, C √(a² + b²) / a) (eq. 44, τ/κ = b/a), from the law and from its NURBS,
+// its law form against the same shift, and that it is undefined everywhere on a planar circle (8.3).
+TEST(Fins, CombescureHelixAndCircle) {
+  const curve::Curve helix = curve::Curve::from_law("vec(2*cos(t), 2*sin(t), 0.5*t)", "t", {0.0, 6.0});
+  FinOptions o;
+  o.kind = FinKind::Combescure;
+  o.scale = 3.0;
+  o.density = 61;
+  const Vec3 shift{0.0, 0.0, 3.0 * std::sqrt(4.25) / 2.0};
+  const Fins f = fins(helix, o);
+  for (std::size_t i = 0; i < f.tip.size(); ++i) {
+    EXPECT_EQ(f.defined[i], 1) << i;
+    EXPECT_LT(norm(f.tip[i] - f.base[i] - shift), 1e-12) << f.t[i];
+  }
+  // The stand-in NURBS (fitted to the law within a position tolerance) gives the shift within 1e-3.
+  const Fins n = fins(helix.nurbs(), o);
+  for (std::size_t i = 0; i < n.tip.size(); ++i) EXPECT_LT(norm(n.tip[i] - n.base[i] - shift), 1e-3) << n.t[i];
+  law::Context ctx;
+  const LawFrenet q(fin_law(law::parse("vec(2*cos(t), 2*sin(t), 0.5*t)", ctx), "t", o), "t", {0.0, 6.0});
+  for (const double t : {0.0, 1.3, 4.0})
+    EXPECT_LT(norm(q.at(t).position - Vec3{2.0 * std::cos(t), 2.0 * std::sin(t), 0.5 * t} - shift), 1e-12) << t;
+  o.log_scale = true;
+  const Fins l = fins(helix, o);
+  EXPECT_NEAR(norm(l.tip[7] - l.base[7]), std::log1p(norm(shift)), 1e-12);
+  o.log_scale = false;
+  const Fins c = fins(testing::rational_circle(2.0), o);
+  EXPECT_TRUE(std::all_of(c.defined.begin(), c.defined.end(), [](std::uint8_t d) { return d == 0; }));
+  EXPECT_EQ(fin_kind_from_name("combescure"), FinKind::Combescure);
+  EXPECT_EQ(fin_kind_from_name("compound"), std::nullopt);
+}
+
 // checks the S-curve: curvature fin of length 0 at the inflection (defined), torsion fin undefined (NaN) there.
 TEST(Fins, InflectionAndUndefined) {
   const nurbs::NurbsCurve c(3, {0, 0, 0, 0, 1, 1, 1, 1},

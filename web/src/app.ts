@@ -35,8 +35,8 @@ export interface ViewSettings {
   scale: number;
   /**
    * Drawing factor per fin kind, fixed when first needed (so combs compare
-   * across edits): the longest curvature (torsion) fin is 15 % of the curve's
-   * extent, unit fins (normal, binormal, Bishop) 10 %. Without it a fin of
+   * across edits): the longest curvature (torsion, Combescure) fin is 15 % of
+   * the curve's extent, unit fins (normal, binormal, Bishop) 10 %. Without it a fin of
    * κ = 0.01 at scale 1 is 0.01 long: invisible.
    */
   finBase?: Partial<Record<FinKind, number>>;
@@ -51,7 +51,31 @@ export const ALL_FINS: FinKind[] = [
   'binormal',
   'bishop-u',
   'bishop-v',
+  'combescure',
 ];
+
+/** Fins that carry nothing on a planar curve (τ = 0): torsion, binormal (8.4, 8.6), Combescure (8.3, 8.5). */
+export const SPACE_FINS: ReadonlySet<FinKind> = new Set<FinKind>([
+  'torsion',
+  'binormal',
+  'combescure',
+]);
+
+/**
+ * The largest Combescure fin of a comb per unit of scale, max |Q − P| / scale = max √(1 + (τ/κ)²):
+ * the server's fins measured, as the curvature fins' factor uses the server's κ.
+ */
+export function combescureSize(
+  comb: { base: readonly (readonly number[])[]; tip: readonly (readonly number[] | null)[] },
+  scale: number,
+): number {
+  let m = 0;
+  comb.tip.forEach((q, i) => {
+    const b = comb.base[i];
+    if (q && b) m = Math.max(m, Math.hypot(...[0, 1, 2].map((k) => (q[k] ?? 0) - (b[k] ?? 0))));
+  });
+  return scale > 0 ? m / scale : 0;
+}
 
 /** Handles (control points or data points) of a curve file: what a drag moves. */
 export function handlesOf(curve: CurveFile | undefined): Vec3[] {
@@ -386,6 +410,29 @@ export class App {
     if (reply) this.applyReply(reply);
   }
 
+  /** Reverse the direction of the selected curve (its graphs run the other way). */
+  async reverseSelected(): Promise<void> {
+    const label = this.selected;
+    if (!label) return;
+    const reply = await this.run(() => this.client.reverse(this.store.name, label));
+    if (reply) this.applyReply(reply);
+  }
+
+  /** Split the selected curve at the hovered sample's parameter, else mid-domain; select the first piece. */
+  async splitSelected(): Promise<void> {
+    const label = this.selected;
+    if (!label) return;
+    const t = this.store.analyses.get(label)?.t ?? [];
+    const hovered = this.hoverIndex !== null ? t[this.hoverIndex] : undefined;
+    const at = hovered ?? 0.5 * ((t[0] ?? 0) + (t[t.length - 1] ?? 1));
+    const reply = await this.run(() => this.client.split(this.store.name, label, at));
+    if (!reply) return;
+    this.applyReply(reply);
+    const first = reply.labels[0];
+    if (first !== undefined) this.select(String(first));
+    this.setStatus(`Split at t = ${Number(at.toPrecision(6))}`);
+  }
+
   async deleteSelected(): Promise<void> {
     const label = this.selected;
     if (!label) return;
@@ -426,9 +473,17 @@ export class App {
       Math.max(0, ...v.map((x) => (x !== null && Number.isFinite(x) ? Math.abs(x) : 0)));
     for (const kind of Object.keys(a.combs) as FinKind[]) {
       if (s.finBase[kind] !== undefined) continue;
-      const m = kind === 'curvature' ? largest(a.kappa) : kind === 'torsion' ? largest(a.tau) : 1;
+      const m =
+        kind === 'curvature'
+          ? largest(a.kappa)
+          : kind === 'torsion'
+            ? largest(a.tau)
+            : kind === 'combescure'
+              ? combescureSize(a.combs[kind]!, s.scale)
+              : 1;
       if (m === 0) continue; // a zero comb: fix the factor once it has a size
-      s.finBase[kind] = (kind === 'curvature' || kind === 'torsion' ? 0.15 : 0.1) * (extent / m);
+      const quantity = kind === 'curvature' || kind === 'torsion' || kind === 'combescure';
+      s.finBase[kind] = (quantity ? 0.15 : 0.1) * (extent / m);
     }
     return s.finBase;
   }
@@ -484,7 +539,7 @@ export class App {
   /** The fins drawn for a curve: planar curves show only the meaningful ones (8.4, 8.6). */
   shownFins(label: string, a: Analysis | undefined): FinKind[] {
     const s = this.settingsOf(label);
-    if (a?.planar) return s.fins.filter((f) => f !== 'torsion' && f !== 'binormal');
+    if (a?.planar) return s.fins.filter((f) => !SPACE_FINS.has(f));
     return s.fins;
   }
 
@@ -891,6 +946,12 @@ export class App {
       case 'elevate':
         void this.elevateSelected();
         break;
+      case 'split':
+        void this.splitSelected();
+        break;
+      case 'reverse':
+        void this.reverseSelected();
+        break;
       case 'fit':
         this.fitAll();
         break;
@@ -1002,6 +1063,8 @@ export class App {
       backspace: 'delete',
       u: 'insert-knot',
       d: 'elevate',
+      x: 'split',
+      w: 'reverse',
     };
     const views: Record<string, ViewName> = { '1': 'top', '2': 'front', '3': 'side', '4': 'persp' };
     if (tools[k]) this.setTool(tools[k]);

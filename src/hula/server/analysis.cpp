@@ -4,6 +4,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <optional>
 #include <span>
 #include <string_view>
 
@@ -20,13 +21,10 @@ namespace {
 namespace json = io::json;
 
 diffgeom::FinKind fin_kind(const std::string& name, std::size_t index) {
-  using diffgeom::FinKind;
-  for (const FinKind k :
-       {FinKind::Curvature, FinKind::Torsion, FinKind::Normal, FinKind::Binormal, FinKind::BishopU, FinKind::BishopV})
-    if (diffgeom::fin_kind_name(k) == name) return k;
+  if (const std::optional<diffgeom::FinKind> k = diffgeom::fin_kind_from_name(name)) return *k;
   throw Error(Errc::InvalidOption,
               "fins[" + std::to_string(index) + "] = \"" + name +
-                  "\" is not a fin (curvature, torsion, normal, binormal, bishop-u, bishop-v)",
+                  "\" is not a fin (curvature, torsion, normal, binormal, bishop-u, bishop-v, combescure)",
               ErrorWhere{.field = "fins", .index = index});
 }
 
@@ -132,7 +130,8 @@ void write_columns(Writer& w, std::span<const diffgeom::FrenetPoint> f) {
 
 }  // namespace
 
-std::string analysis_json(const nurbs::NurbsCurve& curve, const AnalysisRequest& request, std::uint64_t revision) {
+std::string analysis_json(const curve::Curve& subject, const AnalysisRequest& request, std::uint64_t revision) {
+  const nurbs::NurbsCurve& curve = subject.nurbs();
   const auto n = static_cast<std::size_t>(request.samples);
   const nurbs::Interval domain = curve.domain();
   std::vector<double> ts(n);
@@ -162,9 +161,12 @@ std::string analysis_json(const nurbs::NurbsCurve& curve, const AnalysisRequest&
     o.kind = request.fins[k];
     o.scale = request.scale;
     o.density = request.samples;
-    // Sampled by parameter, the fins stand at the samples: they are built from the frames already
-    // evaluated there (the same parameters, bit for bit) instead of evaluating them again.
-    const diffgeom::Fins f = request.by == SampleBy::Parameter ? diffgeom::fins(frames, o) : diffgeom::fins(curve, o);
+    // A law curve's fins are exact from its law. Otherwise, sampled by parameter, the fins stand at the
+    // samples: they are built from the frames already evaluated there (the same parameters, bit for bit)
+    // instead of evaluating them again.
+    const diffgeom::Fins f = subject.law() != nullptr             ? diffgeom::fins(subject, o)
+                             : request.by == SampleBy::Parameter ? diffgeom::fins(frames, o)
+                                                                 : diffgeom::fins(curve, o);
     w.raw("{\"kind\":\"").raw(diffgeom::fin_kind_name(o.kind)).raw("\",\"t\":");
     w.array(f.t.size(), [&](std::size_t i) { w.number(f.t[i]); });
     w.raw(",\"base\":").array(f.t.size(), [&](std::size_t i) { w.vec(f.base[i]); });

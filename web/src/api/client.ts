@@ -200,6 +200,16 @@ export class Client {
       times,
     });
   }
+  /** Reverse the direction of traversal, C*(u) = C(a + b − u) (one undo step). */
+  reverse(doc: string, label: string): Promise<ChangeReply> {
+    return this.request('POST', `${this.doc(doc)}/entities/${encodeURIComponent(label)}/reverse`);
+  }
+  /** Split at t into pieces on [a, t] and [t, b], whose labels come back in that order (one undo step). */
+  split(doc: string, label: string, t: number): Promise<ChangeReply & { labels: Label[] }> {
+    return this.request('POST', `${this.doc(doc)}/entities/${encodeURIComponent(label)}/split`, {
+      t,
+    });
+  }
   /** Import an uploaded STEP, IGES or JSON file's curves (one undo step); their labels come back. */
   importFile(
     doc: string,

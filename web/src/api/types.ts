@@ -124,7 +124,8 @@ export interface History {
   current?: number;
 }
 
-export type FinKind = 'curvature' | 'torsion' | 'normal' | 'binormal' | 'bishop-u' | 'bishop-v';
+export type FinKind =
+  'curvature' | 'torsion' | 'normal' | 'binormal' | 'bishop-u' | 'bishop-v' | 'combescure';
 
 export interface AnalysisRequest {
   samples: number;

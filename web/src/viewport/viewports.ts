@@ -27,6 +27,7 @@ export const FIN_COLOURS: Record<FinKind, number> = {
   binormal: 0x2bb5d6,
   'bishop-u': 0xe0c020,
   'bishop-v': 0x9a7fe0,
+  combescure: 0xf25c54,
 };
 
 interface View {
@@ -497,6 +498,25 @@ export class Viewports {
     }
     setSegments(cv.frames.geometry, fsegs, fcols);
     this.requestRender();
+  }
+
+  /**
+   * The fin segments in the scene for a curve, read back from its geometry
+   * with their colour (FIN_COLOURS): what is drawn, for inspection and tests.
+   */
+  finSegments(label: string): { from: Vec3; to: Vec3; colour: number }[] {
+    const g = this.curves.get(label)?.fins.geometry;
+    const pos = g?.getAttribute('position');
+    const col = g?.getAttribute('color');
+    if (!pos || !col) return [];
+    const out: { from: Vec3; to: Vec3; colour: number }[] = [];
+    for (let i = 0; i + 1 < pos.count; i += 2)
+      out.push({
+        from: [pos.getX(i), pos.getY(i), pos.getZ(i)],
+        to: [pos.getX(i + 1), pos.getY(i + 1), pos.getZ(i + 1)],
+        colour: new THREE.Color(col.getX(i), col.getY(i), col.getZ(i)).getHex(),
+      });
+    return out;
   }
 
   removeCurve(label: string): void {

@@ -2,8 +2,10 @@
 // Entities of a document: POST /api/documents/{name}/entities {"curve": curve
 // file, "name"?, "attributes"?} (201), GET|PUT|PATCH|DELETE
 // /api/documents/{name}/entities/{label}, and POST .../{label}/analysis
-// (analysis.hpp, read-only), POST .../{label}/insert-knot {"u", "times"?} and
-// .../{label}/elevate {"times"?} (oli::Edit through the document's kernel). A PATCH {"move": [{"index", "to"}],
+// (analysis.hpp, read-only), POST .../{label}/insert-knot {"u", "times"?},
+// .../{label}/elevate {"times"?}, .../{label}/reverse and .../{label}/split {"t"}
+// (oli::Edit through the document's kernel; split answers the two pieces'
+// labels, first [a, t] then [t, b]). A PATCH {"move": [{"index", "to"}],
 // "continue": true} continues the previous "move points" step, so a drag is
 // one undo step (oli::TransactMode::Continue). Every change answers
 // {"revision", "changes"} (the change set, also pushed to the document's
@@ -174,13 +176,33 @@ void add_entities(Router& router, const Context& context) {
     }),
                             200);
   });
+  router.add("POST", "/api/documents/{name}/entities/{label}/reverse", [&docs](const Request& request) {
+    const Json body = request.body.empty() ? Json::object() : request.json();
+    json::reject_unknown_members(body, json::JsonPath(), std::span<const std::string_view>());  // no members
+    const auto [doc, label] = entity_of(docs, request);
+    return outcome_response(
+        doc->write([&](oli::Document& d) { return d.transact("reverse", [&](oli::Edit& e) { e.reverse(label); }); }),
+        200);
+  });
+  router.add("POST", "/api/documents/{name}/entities/{label}/split", [&docs](const Request& request) {
+    const Json body = request.json();
+    json::reject_unknown_members(body, json::JsonPath(), {"t"});
+    const double t = json::get_number(json::require_member(body, json::JsonPath(), "t"), json::root_path("t"));
+    const auto [doc, label] = entity_of(docs, request);
+    std::pair<oli::Label, oli::Label> pieces;
+    const oli::Outcome o = doc->write(
+        [&](oli::Document& d) { return d.transact("split", [&](oli::Edit& e) { pieces = e.split(label, t); }); });
+    Json out = Json::parse(outcome_response(o, 201).body);  // throws the error of a refused split
+    out["labels"] = Json::array({pieces.first.value, pieces.second.value});
+    return json_response(201, out);
+  });
   router.add("POST", "/api/documents/{name}/entities/{label}/analysis", [&docs](const Request& request) {
     const AnalysisRequest options = analysis_request_from_json(request.body.empty() ? Json::object() : request.json());
     const auto [doc, label] = entity_of(docs, request);
     const auto [e, revision] = doc->read([&](const oli::Document& d) { return std::pair(d.get(label), d.revision()); });
     // Computed outside the lock from the immutable snapshot: edits go on meanwhile.
     Response r;
-    r.body = analysis_json(e.curve().nurbs(), options, revision);
+    r.body = analysis_json(e.curve(), options, revision);
     return r;
   });
 }
