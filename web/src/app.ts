@@ -28,6 +28,7 @@ import {
 import { Panels } from './panels/panels';
 import { DesignByCurvature } from './panels/design';
 import { OptimisePanel } from './panels/optimise';
+import { FairingAssistant } from './tools/fairing';
 
 export interface ViewSettings {
   fins: FinKind[];
@@ -87,6 +88,7 @@ export class App {
   readonly panels: Panels;
   readonly design: DesignByCurvature;
   readonly optimise: OptimisePanel;
+  readonly fairing: FairingAssistant;
   selected: string | null = null;
   tool: Tool | null = null;
   toolName: ToolName = 'select';
@@ -122,6 +124,7 @@ export class App {
     this.panels = new Panels(this, document.getElementById('side')!);
     this.design = new DesignByCurvature(this);
     this.optimise = new OptimisePanel(this);
+    this.fairing = new FairingAssistant(this, document.getElementById('side')!);
     this.makeGraphs();
     this.bindViews();
     this.bindToolbar();
@@ -131,11 +134,13 @@ export class App {
           for (const label of this.store.entities.keys()) this.refreshAnalysis(label);
           this.redrawAll();
           this.refreshHistory();
+          this.fairing.edited(this.selected);
           break;
         case 'entity':
           if (this.drag?.label !== e.label) this.redrawCurve(e.label);
           this.refreshAnalysis(e.label);
           this.refreshHistory();
+          this.fairing.edited(e.label);
           break;
         case 'removed':
           this.viewports.removeCurve(e.label);
@@ -517,6 +522,7 @@ export class App {
     const previous = this.selected;
     this.selected = label;
     if (this.ghost && this.ghost.label !== label) this.setGhost(null);
+    if (previous !== label) this.fairing.edited(label);
     if (previous) this.redrawCurve(previous);
     if (label) this.redrawCurve(label);
     this.updateGraphs();
@@ -584,7 +590,10 @@ export class App {
 
   updateGraphs(): void {
     const a = this.selected ? this.store.analyses.get(this.selected) : undefined;
-    const ghost = this.ghost?.label === this.selected ? this.ghost.analysis : undefined;
+    // The fairing assistant's ghost, when there is one, else the curve before the last edit.
+    const ghost =
+      this.fairing.analysis ??
+      (this.ghost?.label === this.selected ? this.ghost.analysis : undefined);
     for (const g of this.graphs) g.show(a, ghost);
   }
 
@@ -782,6 +791,7 @@ export class App {
     const p = this.viewports.pointOn(view, x, y, dragPlane(view, start));
     if (!p) return;
     d.handles[d.index] = p;
+    this.fairing.pointerMoved();
     this.pointerStamp = performance.now();
     d.pendingStamp = this.pointerStamp;
     this.redrawCurve(d.label, d.handles);
@@ -833,6 +843,11 @@ export class App {
 
   get dragging(): boolean {
     return this.drag !== null;
+  }
+
+  /** A drag position not yet answered by the server. */
+  get dragPending(): boolean {
+    return this.drag !== null && (this.drag.inFlight || this.drag.pending !== null);
   }
 
   fitAll(): void {
@@ -914,6 +929,9 @@ export class App {
         break;
       case 'help':
         this.panels.helpDialog();
+        break;
+      case 'accept-fairing':
+        void this.fairing.accept();
         break;
     }
   }
@@ -1002,6 +1020,7 @@ export class App {
       backspace: 'delete',
       u: 'insert-knot',
       d: 'elevate',
+      a: 'accept-fairing',
     };
     const views: Record<string, ViewName> = { '1': 'top', '2': 'front', '3': 'side', '4': 'persp' };
     if (tools[k]) this.setTool(tools[k]);
@@ -1029,6 +1048,7 @@ export class App {
       !this.viewports.renderPending &&
       !this.drag &&
       !this.design.busy &&
+      !this.fairing.busy &&
       !this.optimise.running
     );
   }

@@ -41,6 +41,7 @@ export const SHORTCUTS: [string, string][] = [
   ['Delete', 'delete the selected curve'],
   ['U', 'insert a knot into the selected curve (at the hovered point, else mid-span)'],
   ['D', 'raise the degree of the selected curve by one'],
+  ['A', "accept the fairing assistant's ghost (one undo step; turn the assistant on in its panel)"],
   ['F', 'fit all'],
   ['Q', 'single / four views'],
   ['1 2 3 4', 'top, front, side, 3-D view alone'],
