@@ -823,7 +823,8 @@ class DocumentTest(unittest.TestCase):
             before = self.call("GET", base)
             steps = len(self.call("GET", base + "/history")["history"])
             ghost = self.call("POST", entity + "/fair-preview",
-                              {"tolerance": tolerance, "analysis": {"samples": 60, "fins": ["curvature"]}})
+                              {"tolerance": tolerance, "budget": 5,  # a loaded test machine is not the test
+                               "analysis": {"samples": 60, "fins": ["curvature"]}})
             self.assertEqual((ghost["method"], ghost["revision"]), ("min-variation", before["revision"]))
             self.assertLess(ghost["energy_after"], ghost["energy_before"], f"Example {n}")
             moved = [p + [0.0] * (3 - len(p)) for p in ghost["curve"]["points"]]
@@ -841,11 +842,10 @@ class DocumentTest(unittest.TestCase):
             self.assertAlmostEqual(again["energy_before"], ghost["energy_after"], delta=1e-9 * ghost["energy_before"])
             self.call("POST", base + "/undo")
             self.assertEqual(self.call("GET", entity)["points"], curve["points"])
-            if n > 1:  # Example 1's symmetric knots are already the variation optimum
-                knots = self.call("POST", entity + "/fair-preview", {"tolerance": tolerance, "method": "knots"})
-                self.assertEqual(knots["curve"]["points"], curve["points"])
-                self.assertLess(knots["energy_after"], knots["energy_before"], f"Example {n}")
-                self.assertEqual(knots["max_deviation"], 0.0)
+            knots = self.call("POST", entity + "/fair-preview", {"tolerance": tolerance, "method": "knots", "budget": 5})
+            self.assertEqual(knots["curve"]["points"], curve["points"])
+            self.assertLess(knots["energy_after"], knots["energy_before"], f"Example {n}")
+            self.assertEqual(knots["max_deviation"], 0.0)
         # bad input names the field; a law curve has no data points; unknown entities are 404
         e = self.call("POST", entity + "/fair-preview", {"tolerance": 0}, expect=400)["error"]
         self.assertEqual((e["code"], e["where"]["field"]), ("InvalidOption", "tolerance"))

@@ -51,7 +51,8 @@ export class FairingAssistant {
     d.appendChild(el('summary', {}, 'Fairing assistant'));
     const body = el('div', { class: 'body' });
     d.appendChild(body);
-    side.appendChild(d);
+    // Beside the other design tools, above Optimise.
+    side.insertBefore(d, document.getElementById('panel-optimise'));
     this.toggle = el('input', {
       type: 'checkbox',
       id: 'fair-on',
@@ -160,8 +161,14 @@ export class FairingAssistant {
         },
       })
       .then((result) => {
-        // A ghost of an older revision is dropped: the next request has the current curve.
-        if (result.revision < revision || label !== this.app.selected || !this.enabled) return;
+        // Only a ghost of the curve as the page has it is drawn (and can be accepted); another
+        // revision means an edit came in meanwhile, and `finally` asks again.
+        if (
+          result.revision !== this.app.store.revision ||
+          label !== this.app.selected ||
+          !this.enabled
+        )
+          return;
         this.preview = { label, result };
         this.timings.push({
           roundTripMs: performance.now() - sent,
@@ -203,7 +210,8 @@ export class FairingAssistant {
     this.readout.dataset['before'] = String(r.energy_before);
     this.readout.dataset['after'] = String(r.energy_after);
     this.readout.dataset['revision'] = String(r.revision);
-    this.pendingLatency = this.lastMove > 0;
+    // The latency clock stops only for the ghost of the last pointer position (no move pending).
+    this.pendingLatency = this.lastMove > 0 && !this.app.dragPending;
   }
 
   private frameDrawn(): void {
