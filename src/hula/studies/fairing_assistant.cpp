@@ -31,8 +31,8 @@ double seconds_since(Clock::time_point t0) { return std::chrono::duration<double
 // 5-point Gauss–Legendre nodes and weights on [-1, 1] (Abramowitz & Stegun 25.4.30).
 constexpr std::array<double, 5> kNodes{-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831,
                                        0.9061798459386640};
-constexpr std::array<double, 5> kWeights{0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
-                                         0.4786286704993665, 0.2369268850561891};
+constexpr std::array<double, 5> kWeights{0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665,
+                                         0.2369268850561891};
 
 // A tolerance ball is shrunk by this relative amount before projecting into it, so that the
 // rounding of q0 + d never puts a point outside the user's tolerance.
@@ -246,8 +246,8 @@ AssistantResult fair_knots_within(const curve::Curve& c, const AssistantOptions&
   setup.end = data.end;
   setup.energy = FairingEnergy::Variation;
   setup.energy_options.relative_tolerance = 1e-6;  // the search's objective; the result is re-measured at 1e-8
-  std::vector<double> start = data.parameters.empty() ? nurbs::parameterise(data.points, data.parameterisation)
-                                                      : data.parameters;
+  std::vector<double> start =
+      data.parameters.empty() ? nurbs::parameterise(data.points, data.parameterisation) : data.parameters;
   const double a = start.front(), b = start.back();
   for (double& p : start) p = (p - a) / (b - a);
   start.front() = 0.0;
@@ -288,8 +288,8 @@ void AssistantOptions::validate() const {
     throw Error(Errc::InvalidOption, "tolerance = " + format_number(tolerance) + " must be finite and > 0",
                 ErrorWhere{.field = "tolerance"});
   if (!(time_budget_seconds > 0.0 && time_budget_seconds <= 60.0))
-    throw Error(Errc::InvalidOption, "time_budget_seconds = " + format_number(time_budget_seconds) +
-                                         " must be in (0, 60]",
+    throw Error(Errc::InvalidOption,
+                "time_budget_seconds = " + format_number(time_budget_seconds) + " must be in (0, 60]",
                 ErrorWhere{.field = "time_budget_seconds"});
   if (max_iterations < 1 || max_iterations > 1000)
     throw Error(Errc::InvalidOption, "max_iterations = " + std::to_string(max_iterations) + " must be in [1, 1000]",
