@@ -950,11 +950,64 @@ class DocumentTest(unittest.TestCase):
         self.assertEqual([d["cause"] for _, d in got], ["commit"] * 6 + ["undo"])
         self.assertEqual([d["revision"] for _, d in got], [1, 2, 2, 2, 2, 2, 1])
 
+    # checks the fairing assistant on the thesis's 7.4.2 Example 1-3 point sets (examples/workspace): the
+    # ghost's ∫κ'² ds is below the curve's; every data point is within the tolerance of the ghost's own data
+    # point (the ghost interpolates them), read from the ghost's curve file, not from the server's report;
+    # the preview leaves the document as it was; a PUT of the ghost is one undo step after which the entity's
+    # energy (the next preview's energy_before) is the ghost's; knot fairing keeps the points exactly
+    def test_fair_preview(self):
+        self.new_document("fair.hula")
+        base = "/api/documents/fair.hula"
+        examples = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples", "workspace")
+        tolerance = 1.0
+        for n in (1, 2, 3):
+            with open(os.path.join(examples, f"example{n}-corner.json")) as f:
+                curve = {k: v for k, v in json.load(f).items() if k != "comment"}
+            label = self.call("POST", base + "/entities", {"curve": curve}, expect=201)["label"]
+            entity = f"{base}/entities/{label}"
+            before = self.call("GET", base)
+            steps = len(self.call("GET", base + "/history")["history"])
+            ghost = self.call("POST", entity + "/fair-preview",
+                              {"tolerance": tolerance, "budget": 5,  # a loaded test machine is not the test
+                               "analysis": {"samples": 60, "fins": ["curvature"]}})
+            self.assertEqual((ghost["method"], ghost["revision"]), ("min-variation", before["revision"]))
+            self.assertLess(ghost["energy_after"], ghost["energy_before"], f"Example {n}")
+            moved = [p + [0.0] * (3 - len(p)) for p in ghost["curve"]["points"]]
+            original = [p + [0.0] * (3 - len(p)) for p in curve["points"]]
+            self.assertEqual(len(moved), len(original))
+            deviations = [math.dist(p, q) for p, q in zip(original, moved)]
+            self.assertLessEqual(max(deviations), tolerance, f"Example {n}")
+            self.assertAlmostEqual(max(deviations), ghost["max_deviation"], places=9)
+            self.assertEqual(len(ghost["analysis"]["fins"][0]["tip"]), 60)
+            self.assertEqual(self.call("GET", base), before)
+            # accept: one "replace curve" step, and the entity's energy is now the ghost's
+            self.call("PUT", entity, {"curve": ghost["curve"]})
+            self.assertEqual(len(self.call("GET", base + "/history")["history"]), steps + 1)
+            again = self.call("POST", entity + "/fair-preview", {"tolerance": tolerance})
+            self.assertAlmostEqual(again["energy_before"], ghost["energy_after"], delta=1e-9 * ghost["energy_before"])
+            self.call("POST", base + "/undo")
+            self.assertEqual(self.call("GET", entity)["points"], curve["points"])
+            knots = self.call("POST", entity + "/fair-preview", {"tolerance": tolerance, "method": "knots", "budget": 5})
+            self.assertEqual(knots["curve"]["points"], curve["points"])
+            self.assertLess(knots["energy_after"], knots["energy_before"], f"Example {n}")
+            self.assertEqual(knots["max_deviation"], 0.0)
+        # bad input names the field; a law curve has no data points; unknown entities are 404
+        e = self.call("POST", entity + "/fair-preview", {"tolerance": 0}, expect=400)["error"]
+        self.assertEqual((e["code"], e["where"]["field"]), ("InvalidOption", "tolerance"))
+        e = self.call("POST", entity + "/fair-preview", {"tolerance": 1, "method": "smooth"}, expect=400)["error"]
+        self.assertEqual(e["where"]["field"], "method")
+        self.call("POST", entity + "/fair-preview", {}, expect=400)
+        self.call("POST", f"{base}/entities/999/fair-preview", {"tolerance": 1}, expect=404)
+        law = {"kind": "law", "expression": "vec(t, t^2)", "domain": [0, 1]}
+        law_label = self.call("POST", base + "/entities", {"curve": law}, expect=201)["label"]
+        e = self.call("POST", f"{base}/entities/{law_label}/fair-preview", {"tolerance": 1}, expect=400)["error"]
+        self.assertEqual((e["code"], e["where"]["field"]), ("InvalidArgument", "curve"))
+
     # checks every /api/documents operation of the OpenAPI document answered its success status in this
     # class with a body (or SSE events) valid against the document
     def test_zz_every_operation_seen(self):
         wanted = operations(self.api, "/api/documents")
-        self.assertEqual(len(wanted), 19)
+        self.assertEqual(len(wanted), 20)
         self.assertEqual(wanted - self.api.seen, set())
 
 

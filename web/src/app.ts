@@ -28,6 +28,7 @@ import {
 import { Panels } from './panels/panels';
 import { DesignByCurvature } from './panels/design';
 import { OptimisePanel } from './panels/optimise';
+import { FairingAssistant } from './tools/fairing';
 
 export interface ViewSettings {
   fins: FinKind[];
@@ -111,6 +112,7 @@ export class App {
   readonly panels: Panels;
   readonly design: DesignByCurvature;
   readonly optimise: OptimisePanel;
+  readonly fairing: FairingAssistant;
   selected: string | null = null;
   tool: Tool | null = null;
   toolName: ToolName = 'select';
@@ -146,6 +148,7 @@ export class App {
     this.panels = new Panels(this, document.getElementById('side')!);
     this.design = new DesignByCurvature(this);
     this.optimise = new OptimisePanel(this);
+    this.fairing = new FairingAssistant(this, document.getElementById('side')!);
     this.makeGraphs();
     this.bindViews();
     this.bindToolbar();
@@ -155,11 +158,13 @@ export class App {
           for (const label of this.store.entities.keys()) this.refreshAnalysis(label);
           this.redrawAll();
           this.refreshHistory();
+          this.fairing.edited(this.selected);
           break;
         case 'entity':
           if (this.drag?.label !== e.label) this.redrawCurve(e.label);
           this.refreshAnalysis(e.label);
           this.refreshHistory();
+          this.fairing.edited(e.label);
           break;
         case 'removed':
           this.viewports.removeCurve(e.label);
@@ -572,6 +577,7 @@ export class App {
     const previous = this.selected;
     this.selected = label;
     if (this.ghost && this.ghost.label !== label) this.setGhost(null);
+    if (previous !== label) this.fairing.edited(label);
     if (previous) this.redrawCurve(previous);
     if (label) this.redrawCurve(label);
     this.updateGraphs();
@@ -639,7 +645,10 @@ export class App {
 
   updateGraphs(): void {
     const a = this.selected ? this.store.analyses.get(this.selected) : undefined;
-    const ghost = this.ghost?.label === this.selected ? this.ghost.analysis : undefined;
+    // The fairing assistant's ghost, when there is one, else the curve before the last edit.
+    const ghost =
+      this.fairing.analysis ??
+      (this.ghost?.label === this.selected ? this.ghost.analysis : undefined);
     for (const g of this.graphs) g.show(a, ghost);
   }
 
@@ -837,6 +846,7 @@ export class App {
     const p = this.viewports.pointOn(view, x, y, dragPlane(view, start));
     if (!p) return;
     d.handles[d.index] = p;
+    this.fairing.pointerMoved();
     this.pointerStamp = performance.now();
     d.pendingStamp = this.pointerStamp;
     this.redrawCurve(d.label, d.handles);
@@ -888,6 +898,11 @@ export class App {
 
   get dragging(): boolean {
     return this.drag !== null;
+  }
+
+  /** A drag position not yet answered by the server. */
+  get dragPending(): boolean {
+    return this.drag !== null && (this.drag.inFlight || this.drag.pending !== null);
   }
 
   fitAll(): void {
@@ -975,6 +990,9 @@ export class App {
         break;
       case 'help':
         this.panels.helpDialog();
+        break;
+      case 'accept-fairing':
+        void this.fairing.accept();
         break;
     }
   }
@@ -1065,6 +1083,7 @@ export class App {
       d: 'elevate',
       x: 'split',
       w: 'reverse',
+      a: 'accept-fairing',
     };
     const views: Record<string, ViewName> = { '1': 'top', '2': 'front', '3': 'side', '4': 'persp' };
     if (tools[k]) this.setTool(tools[k]);
@@ -1092,6 +1111,7 @@ export class App {
       !this.viewports.renderPending &&
       !this.drag &&
       !this.design.busy &&
+      !this.fairing.busy &&
       !this.optimise.running
     );
   }

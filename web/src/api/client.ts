@@ -11,6 +11,8 @@ import type {
   DocumentSummary,
   Entity,
   ErrorBody,
+  FairPreview,
+  FairPreviewRequest,
   Health,
   History as DocHistory,
   Label,
@@ -243,6 +245,26 @@ export class Client {
       signal,
     );
     return analysisFromServer(j, req.by);
+  }
+
+  /** The fairing assistant's ghost of an entity (the document is not changed). */
+  async fairPreview(
+    doc: string,
+    label: string,
+    req: FairPreviewRequest,
+    signal?: AbortSignal,
+  ): Promise<FairPreview> {
+    const j = await this.request<Record<string, unknown> & Omit<FairPreview, 'analysis'>>(
+      'POST',
+      `${this.doc(doc)}/entities/${encodeURIComponent(label)}/fair-preview`,
+      req,
+      signal,
+    );
+    const a = j['analysis'] as Record<string, unknown> | undefined;
+    return {
+      ...j,
+      analysis: a && req.analysis ? analysisFromServer(a, req.analysis.by) : undefined,
+    };
   }
 
   law(req: LawRequest): Promise<LawResponse> {

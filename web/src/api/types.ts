@@ -168,6 +168,34 @@ export interface Analysis {
   features: Feature[];
 }
 
+/** POST .../entities/{label}/fair-preview (the fairing assistant). */
+export interface FairPreviewRequest {
+  /** Largest distance a data point may move, model units. */
+  tolerance: number;
+  method?: FairMethod;
+  /** Wall-clock budget of the optimisation, seconds. */
+  budget?: number;
+  analysis?: AnalysisRequest;
+}
+export type FairMethod = 'min-variation' | 'knots';
+
+export interface FairPreview {
+  revision: number;
+  method: FairMethod;
+  tolerance: number;
+  curve: CurveFile;
+  /** ∫(dκ/ds)² ds of the entity's curve and of the ghost. */
+  energy_before: number;
+  energy_after: number;
+  max_deviation: number;
+  data_points: number[][];
+  faired_points: number[][];
+  iterations: number;
+  stopped: boolean;
+  seconds: number;
+  analysis: Analysis | undefined;
+}
+
 export interface LawRequest {
   expression: string;
   parameter?: string;

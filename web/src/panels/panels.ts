@@ -43,6 +43,7 @@ export const SHORTCUTS: [string, string][] = [
   ['D', 'raise the degree of the selected curve by one'],
   ['X', 'split the selected curve in two (at the hovered point, else mid-domain)'],
   ['W', 'reverse the direction of the selected curve'],
+  ['A', "accept the fairing assistant's ghost (one undo step; turn the assistant on in its panel)"],
   ['F', 'fit all'],
   ['Q', 'single / four views'],
   ['1 2 3 4', 'top, front, side, 3-D view alone'],

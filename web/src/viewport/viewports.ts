@@ -546,6 +546,40 @@ export class Viewports {
     this.requestRender();
   }
 
+  /** The fairing assistant's ghost (curve and curvature comb), made on first use. */
+  private faired: { curve: THREE.Line; comb: THREE.LineSegments } | null = null;
+
+  /** Show the fairing assistant's ghost: the faired curve and its comb polylines, or hide it. */
+  setFaired(points: readonly Point[] | null, comb: readonly (readonly Point[])[] = []): void {
+    if (!this.faired) {
+      this.faired = {
+        curve: new THREE.Line(
+          new THREE.BufferGeometry(),
+          new THREE.LineDashedMaterial({ color: 0x7fe3a0, dashSize: 2, gapSize: 1 }),
+        ),
+        comb: new THREE.LineSegments(
+          new THREE.BufferGeometry(),
+          new THREE.LineBasicMaterial({ vertexColors: true, transparent: true, opacity: 0.6 }),
+        ),
+      };
+      this.scene.add(this.faired.curve, this.faired.comb);
+    }
+    const shown = points !== null && points.length > 1;
+    this.faired.curve.visible = shown;
+    this.faired.comb.visible = shown;
+    if (shown) {
+      setPositions(this.faired.curve.geometry, points);
+      this.faired.curve.computeLineDistances();
+      const segs: number[] = [];
+      const cols: number[] = [];
+      const col = new THREE.Color(0x7fe3a0);
+      for (const line of comb) pushStrip(line, col, segs, cols);
+      setSegments(this.faired.comb.geometry, segs, cols);
+    }
+    this.root.dataset['faired'] = shown ? String(points.length) : '';
+    this.requestRender();
+  }
+
   /** The linked-hover marker (graph ↔ curve), or none. */
   setMarker(p: Vec3 | null): void {
     this.marker.visible = p !== null;
