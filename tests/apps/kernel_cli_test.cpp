@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "hula/core/error.hpp"
 #include "hula/diffgeom/continuity.hpp"
 #include "hula/io/atomic_file.hpp"
 #include "hula/io/json_curve.hpp"
@@ -82,7 +83,7 @@ TEST(KernelCli, RemoveKnotsUndoesRefine) {
       if (c.curve.knots().multiplicity(d.start + f * d.length()) == 0) x.push_back(d.start + f * d.length());
     const NurbsCurve refined = nurbs::refine_knots(c.curve, x);
     io::write_curve_file(c.in, refined);
-    const std::string tol = std::to_string(1e-9 * c.curve.model_size());
+    const std::string tol = hula::format_number(1e-9 * c.curve.model_size());
     const json all = run_ok({"edit", "remove-knots", c.in, "--tolerance", tol, "-o", c.out});
     const nurbs::KnotRemovalResult lib = nurbs::remove_knots(refined, 1e-9 * c.curve.model_size());
     EXPECT_EQ(all["operation"], "remove-knots");
@@ -94,7 +95,7 @@ TEST(KernelCli, RemoveKnotsUndoesRefine) {
       EXPECT_LE(distance(back.control_points()[i], c.curve.control_points()[i]), 1e-10 * c.curve.model_size());
     if (x.empty()) continue;
     const json one =
-        run_ok({"edit", "remove-knots", c.in, "--tolerance", tol, "--at", std::to_string(x[0]), "-o", c.out});
+        run_ok({"edit", "remove-knots", c.in, "--tolerance", tol, "--at", hula::format_number(x[0]), "-o", c.out});
     EXPECT_EQ(one["removed"].get<std::size_t>(), 1u) << seed;
     EXPECT_EQ(c.result().control_points().size(), refined.control_points().size() - 1) << seed;
   }

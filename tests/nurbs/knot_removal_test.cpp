@@ -3,6 +3,8 @@
 // removed exactly (the inverse of Boehm's insertion), the removal bound of a
 // polyline's vertex is its distance from the chord, and bad input is refused
 // by name.
+#include "hula/nurbs/knot_removal.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,7 +12,6 @@
 #include <vector>
 
 #include "hula/core/rng.hpp"
-#include "hula/nurbs/knot_removal.hpp"
 #include "hula/nurbs/refine.hpp"
 #include "hula/testing/curve_generators.hpp"
 #include "hula/testing/expect_error.hpp"

@@ -3,7 +3,8 @@
 // splitting operations on a NURBS curve file (thesis 5.5, The NURBS Book ch. 5):
 // insert-knot (Boehm, A5.1), refine (A5.4), remove-knots (A5.8, within a
 // tolerance), elevate (degree elevation), split (knot insertion to
-// multiplicity p), reverse and reparam (affine map of the knots). Each writes curve files and prints a JSON summary of the result.
+// multiplicity p), reverse and reparam (affine map of the knots). Each writes curve files and prints a JSON summary of
+// the result.
 #include <memory>
 
 #include "commands/common.hpp"
@@ -20,12 +21,12 @@ namespace {
 struct EditArgs {
   std::string curve;
   std::string output;
-  std::string second;  // split: the curve after the split point
-  double at = 0.0;     // insert-knot, split, remove-knots
-  int times = 1;       // insert-knot, elevate, remove-knots
+  std::string second;      // split: the curve after the split point
+  double at = 0.0;         // insert-knot, split, remove-knots
+  int times = 1;           // insert-knot, elevate, remove-knots
   double tolerance = 0.0;  // remove-knots
-  std::string knots;   // refine
-  std::string domain;  // reparam
+  std::string knots;       // refine
+  std::string domain;      // reparam
 };
 
 // The curve of a file; edits need the NURBS itself, not the stand-in of a law curve.
@@ -71,8 +72,8 @@ int run_refine(const EditArgs& a) {
 // remove-knots: one knot (--at, up to --times) or every knot the tolerance allows.
 int run_remove_knots(const EditArgs& a, bool one_knot) {
   const nurbs::NurbsCurve curve = read_nurbs(a.curve);
-  const nurbs::KnotRemovalResult r = one_knot ? nurbs::remove_knot(curve, a.at, a.times, a.tolerance)
-                                              : nurbs::remove_knots(curve, a.tolerance);
+  const nurbs::KnotRemovalResult r =
+      one_knot ? nurbs::remove_knot(curve, a.at, a.times, a.tolerance) : nurbs::remove_knots(curve, a.tolerance);
   io::write_curve_file(a.output, r.curve);
   Json doc = Json::object();
   doc["operation"] = "remove-knots";
@@ -121,8 +122,8 @@ CLI::App* operation(CLI::App* edit, const char* name, const char* help, EditArgs
 
 Command add_edit(CLI::App& app) {
   auto a = std::make_shared<EditArgs>();
-  CLI::App* edit =
-      app.add_subcommand("edit", "Edit a NURBS curve: insert-knot, refine, remove-knots, elevate, split, reverse, reparam");
+  CLI::App* edit = app.add_subcommand(
+      "edit", "Edit a NURBS curve: insert-knot, refine, remove-knots, elevate, split, reverse, reparam");
   edit->require_subcommand(1);
   const char* out = "Curve file to write (atomically)";
   CLI::App* insert = operation(edit, "insert-knot", "Insert a knot (the curve is unchanged)", *a, out);

@@ -94,11 +94,9 @@ double bound_scale(const NurbsCurve& curve) {
 
 double checked_tolerance(const NurbsCurve& curve, double tolerance) {
   if (!std::isfinite(tolerance))
-    throw Error(Errc::NonFiniteInput, detail::named("tolerance", tolerance) + " is not finite",
-                {.field = "tolerance"});
+    throw Error(Errc::NonFiniteInput, detail::named("tolerance", tolerance) + " is not finite", {.field = "tolerance"});
   if (tolerance < 0.0)
-    throw Error(Errc::InvalidArgument, detail::named("tolerance", tolerance) + " must be >= 0",
-                {.field = "tolerance"});
+    throw Error(Errc::InvalidArgument, detail::named("tolerance", tolerance) + " must be >= 0", {.field = "tolerance"});
   // Removing an inserted knot reproduces the points only to rounding.
   return std::max(tolerance, 1e-12 * curve.model_size());
 }
@@ -172,8 +170,8 @@ KnotRemovalResult remove_knots(const NurbsCurve& curve, double tolerance) {
       Trial t = trial(w, r, s);
       const double b = t.bound * scale;
       if (b > best_bound || (found && b >= best_bound)) continue;
-      const auto [lo, hi] = spans_of(w.U[static_cast<std::size_t>(t.first)],
-                                     w.U[static_cast<std::size_t>(t.last + w.p + 1)]);
+      const auto [lo, hi] =
+          spans_of(w.U[static_cast<std::size_t>(t.first)], w.U[static_cast<std::size_t>(t.last + w.p + 1)]);
       const double room = tol - *std::max_element(span_error.begin() + static_cast<std::ptrdiff_t>(lo),
                                                   span_error.begin() + static_cast<std::ptrdiff_t>(hi));
       if (b > room) continue;
@@ -182,8 +180,8 @@ KnotRemovalResult remove_knots(const NurbsCurve& curve, double tolerance) {
       found = true;
     }
     if (!found) break;
-    const auto [lo, hi] = spans_of(w.U[static_cast<std::size_t>(best.first)],
-                                   w.U[static_cast<std::size_t>(best.last + w.p + 1)]);
+    const auto [lo, hi] =
+        spans_of(w.U[static_cast<std::size_t>(best.first)], w.U[static_cast<std::size_t>(best.last + w.p + 1)]);
     for (std::size_t k = lo; k < hi; ++k) span_error[k] += best_bound;
     apply(w, best);
     ++result.removed;

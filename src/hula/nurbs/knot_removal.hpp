@@ -17,9 +17,9 @@ namespace hula::nurbs {
 
 /// Result of remove_knot() and remove_knots().
 struct KnotRemovalResult {
-  NurbsCurve curve;           ///< the curve with the knots removed (the input when none could be)
-  std::size_t removed = 0;    ///< number of knots removed (each removal takes one control point)
-  double error_bound = 0.0;   ///< bound on max |C_new(t) − C(t)| over the domain (model units)
+  NurbsCurve curve;          ///< the curve with the knots removed (the input when none could be)
+  std::size_t removed = 0;   ///< number of knots removed (each removal takes one control point)
+  double error_bound = 0.0;  ///< bound on max |C_new(t) − C(t)| over the domain (model units)
 };
 
 /// Removes the interior knot u up to `times` times, as long as the curve moves
