@@ -15,12 +15,14 @@
 #include <string>
 #include <vector>
 
+#include "hula/core/error.hpp"
 #include "hula/diffgeom/continuity.hpp"
 #include "hula/io/atomic_file.hpp"
 #include "hula/io/json_curve.hpp"
 #include "hula/nurbs/approximate.hpp"
 #include "hula/nurbs/closest_point.hpp"
 #include "hula/nurbs/elevate.hpp"
+#include "hula/nurbs/knot_removal.hpp"
 #include "hula/nurbs/refine.hpp"
 #include "hula/nurbs/reparam.hpp"
 #include "hula/testing/curve_generators.hpp"
@@ -69,6 +71,35 @@ struct Case {
   }
   [[nodiscard]] NurbsCurve result() const { return io::read_curve_file(out).nurbs(); }
 };
+
+// checks: `edit remove-knots` undoes `edit refine` (the knot vector of the input again, control points to
+// 1e-10 × size) and reports what nurbs::remove_knots reports; with --at it removes that knot only.
+TEST(KernelCli, RemoveKnotsUndoesRefine) {
+  for (std::uint64_t seed = 1; seed <= kCases; ++seed) {
+    Case c(seed);
+    const nurbs::Interval d = c.curve.domain();
+    std::vector<double> x;
+    for (const double f : {0.21, 0.43, 0.77})
+      if (c.curve.knots().multiplicity(d.start + f * d.length()) == 0) x.push_back(d.start + f * d.length());
+    const NurbsCurve refined = nurbs::refine_knots(c.curve, x);
+    io::write_curve_file(c.in, refined);
+    const std::string tol = hula::format_number(1e-9 * c.curve.model_size());
+    const json all = run_ok({"edit", "remove-knots", c.in, "--tolerance", tol, "-o", c.out});
+    const nurbs::KnotRemovalResult lib = nurbs::remove_knots(refined, 1e-9 * c.curve.model_size());
+    EXPECT_EQ(all["operation"], "remove-knots");
+    EXPECT_EQ(all["removed"].get<std::size_t>(), x.size()) << seed;
+    EXPECT_EQ(all["removed"].get<std::size_t>(), lib.removed) << seed;
+    const NurbsCurve back = c.result();
+    ASSERT_EQ(back.knots(), c.curve.knots()) << seed;
+    for (std::size_t i = 0; i < back.control_points().size(); ++i)
+      EXPECT_LE(distance(back.control_points()[i], c.curve.control_points()[i]), 1e-10 * c.curve.model_size());
+    if (x.empty()) continue;
+    const json one =
+        run_ok({"edit", "remove-knots", c.in, "--tolerance", tol, "--at", hula::format_number(x[0]), "-o", c.out});
+    EXPECT_EQ(one["removed"].get<std::size_t>(), 1u) << seed;
+    EXPECT_EQ(c.result().control_points().size(), refined.control_points().size() - 1) << seed;
+  }
+}
 
 // checks: `edit insert-knot` equals nurbs::insert_knot and leaves the curve unchanged (≤ 1e-12 × size).
 TEST(KernelCli, InsertKnotLeavesCurveUnchanged) {

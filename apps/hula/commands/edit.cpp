@@ -1,14 +1,16 @@
 // SPDX-License-Identifier: MIT
 // `hula edit OPERATION CURVE -o OUT`: the kernel's shape-preserving and
 // splitting operations on a NURBS curve file (thesis 5.5, The NURBS Book ch. 5):
-// insert-knot (Boehm, A5.1), refine (A5.4), elevate (degree elevation),
-// split (knot insertion to multiplicity p), reverse and reparam (affine map of
-// the knots). Each writes curve files and prints a JSON summary of the result.
+// insert-knot (Boehm, A5.1), refine (A5.4), remove-knots (A5.8, within a
+// tolerance), elevate (degree elevation), split (knot insertion to
+// multiplicity p), reverse and reparam (affine map of the knots). Each writes curve files and prints a JSON summary of
+// the result.
 #include <memory>
 
 #include "commands/common.hpp"
 #include "hula/core/error.hpp"
 #include "hula/nurbs/elevate.hpp"
+#include "hula/nurbs/knot_removal.hpp"
 #include "hula/nurbs/refine.hpp"
 #include "hula/nurbs/reparam.hpp"
 
@@ -19,11 +21,12 @@ namespace {
 struct EditArgs {
   std::string curve;
   std::string output;
-  std::string second;  // split: the curve after the split point
-  double at = 0.0;     // insert-knot, split
-  int times = 1;       // insert-knot, elevate
-  std::string knots;   // refine
-  std::string domain;  // reparam
+  std::string second;      // split: the curve after the split point
+  double at = 0.0;         // insert-knot, split, remove-knots
+  int times = 1;           // insert-knot, elevate, remove-knots
+  double tolerance = 0.0;  // remove-knots
+  std::string knots;       // refine
+  std::string domain;      // reparam
 };
 
 // The curve of a file; edits need the NURBS itself, not the stand-in of a law curve.
@@ -66,6 +69,22 @@ int run_refine(const EditArgs& a) {
   return write_one(a, "refine", nurbs::refine_knots(read_nurbs(a.curve), x));
 }
 
+// remove-knots: one knot (--at, up to --times) or every knot the tolerance allows.
+int run_remove_knots(const EditArgs& a, bool one_knot) {
+  const nurbs::NurbsCurve curve = read_nurbs(a.curve);
+  const nurbs::KnotRemovalResult r =
+      one_knot ? nurbs::remove_knot(curve, a.at, a.times, a.tolerance) : nurbs::remove_knots(curve, a.tolerance);
+  io::write_curve_file(a.output, r.curve);
+  Json doc = Json::object();
+  doc["operation"] = "remove-knots";
+  doc["removed"] = r.removed;
+  doc["error_bound"] = r.error_bound;
+  doc["tolerance"] = a.tolerance;
+  doc["curve"] = summary(a.output, r.curve);
+  print_json(doc);
+  return kExitOk;
+}
+
 int run_elevate(const EditArgs& a) {
   return write_one(a, "elevate", nurbs::elevate_degree(read_nurbs(a.curve), a.times));
 }
@@ -103,8 +122,8 @@ CLI::App* operation(CLI::App* edit, const char* name, const char* help, EditArgs
 
 Command add_edit(CLI::App& app) {
   auto a = std::make_shared<EditArgs>();
-  CLI::App* edit =
-      app.add_subcommand("edit", "Edit a NURBS curve: insert-knot, refine, elevate, split, reverse, reparam");
+  CLI::App* edit = app.add_subcommand(
+      "edit", "Edit a NURBS curve: insert-knot, refine, remove-knots, elevate, split, reverse, reparam");
   edit->require_subcommand(1);
   const char* out = "Curve file to write (atomically)";
   CLI::App* insert = operation(edit, "insert-knot", "Insert a knot (the curve is unchanged)", *a, out);
@@ -113,6 +132,15 @@ Command add_edit(CLI::App& app) {
       ->check(CLI::Range(1, 64));
   CLI::App* refine = operation(edit, "refine", "Insert several knots at once (the curve is unchanged)", *a, out);
   refine->add_option("--knots", a->knots, "Knot values u0,u1,... (non-decreasing, inside the domain)")->required();
+  CLI::App* remove =
+      operation(edit, "remove-knots", "Remove knots while the curve moves by at most --tolerance", *a, out);
+  remove->add_option("--tolerance", a->tolerance, "Largest change of the curve allowed, model units (>= 0)")
+      ->required();
+  CLI::Option* remove_at =
+      remove->add_option("--at", a->at, "Remove only this interior knot (default: every knot the tolerance allows)");
+  remove->add_option("--times", a->times, "With --at: removals wanted >= 1 (default 1)")
+      ->check(CLI::Range(1, 64))
+      ->needs(remove_at);
   CLI::App* elevate = operation(edit, "elevate", "Raise the degree (the curve is unchanged)", *a, out);
   elevate->add_option("--times", a->times, "Degree increase >= 1 (default 1)")->check(CLI::Range(1, 64));
   CLI::App* split =
@@ -122,9 +150,10 @@ Command add_edit(CLI::App& app) {
   CLI::App* reverse = operation(edit, "reverse", "Traverse the curve backwards on the same domain", *a, out);
   CLI::App* reparam = operation(edit, "reparam", "Map the curve's domain affinely onto a,b (same shape)", *a, out);
   reparam->add_option("--domain", a->domain, "New domain a,b with a < b")->required();
-  return {edit, [a, insert, refine, elevate, split, reverse, reparam] {
+  return {edit, [a, insert, refine, remove, remove_at, elevate, split, reverse, reparam] {
             if (insert->parsed()) return run_insert_knot(*a);
             if (refine->parsed()) return run_refine(*a);
+            if (remove->parsed()) return run_remove_knots(*a, remove_at->count() > 0);
             if (elevate->parsed()) return run_elevate(*a);
             if (split->parsed()) return run_split(*a);
             if (reverse->parsed()) return run_reverse(*a);
