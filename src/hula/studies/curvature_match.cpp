@@ -318,6 +318,33 @@ bool SplineProfileSampler::sample_jacobian(std::span<const Vec3> points, Workspa
   auto lower = [&](std::size_t k) { return k == last ? (end_ ? 1.0 : 0.0) : h[k - 1]; };
   pivot[0] = 1.0 / ws.diag[0];
   for (std::size_t k = 1; k < n; ++k) pivot[k] = 1.0 / (ws.diag[k] - lower(k) * cprime[k - 1]);
+  // What does not depend on the column, once per sample: span k, w, C', C'', X = C' × C'', |X|, |C'|², |C'|³.
+  constexpr std::size_t kCached = 16;
+  thread_local std::vector<double> cache;  // one per thread, grown once (no allocation when warm)
+  grow(cache, kCached * m);
+  {
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < m; ++i) {
+      while (k + 2 < n && u_[i] > t[k + 1]) ++k;
+      double* e = cache.data() + kCached * i;
+      const double w = u_[i] - t[k];
+      e[0] = static_cast<double>(k);
+      e[1] = w;
+      double* d1 = e + 2;
+      double* d2 = e + 5;
+      for (std::size_t c = 0; c < 3; ++c) {
+        const double* q = coef + 9 * k + 3 * c;
+        d1[c] = c < D ? q[0] + w * (2.0 * q[1] + 3.0 * q[2] * w) : 0.0;
+        d2[c] = c < D ? 2.0 * q[1] + 6.0 * q[2] * w : 0.0;
+      }
+      e[8] = d1[1] * d2[2] - d1[2] * d2[1];
+      e[9] = d1[2] * d2[0] - d1[0] * d2[2];
+      e[10] = d1[0] * d2[1] - d1[1] * d2[0];
+      e[11] = std::sqrt(e[8] * e[8] + e[9] * e[9] + e[10] * e[10]);
+      e[12] = d1[0] * d1[0] + d1[1] * d1[1] + d1[2] * d1[2];
+      e[13] = e[12] * std::sqrt(e[12]);
+    }
+  }
   for (std::size_t j = 0; j < columns; ++j) {
     const std::size_t p = coordinates[j] / 3, axis = coordinates[j] % 3;
     // Chord-length parameters t_k = T_k / L: dT_k = Σ_{i<=k} dc_i, only the chords at p and p + 1 change.
@@ -361,12 +388,13 @@ bool SplineProfileSampler::sample_jacobian(std::span<const Vec3> points, Workspa
     }
     // Each sample: C' = b + 2 c w + 3 d w², C'' = 2 c + 6 d w on span k, w = u − t_k (dw = −dt_k), then
     // dκ = d|X| / |C'|³ − (3/2) |X| d(|C'|²) / |C'|⁵ with X = C' × C'', d|X| = X · dX / |X|.
-    std::size_t k = 0;
     for (std::size_t i = 0; i < m; ++i) {
-      const double u = u_[i];
-      while (k + 2 < n && u > t[k + 1]) ++k;
-      const double w = u - t[k], dw = -dt[k];
-      double d1[3] = {0.0, 0.0, 0.0}, d2[3] = {0.0, 0.0, 0.0}, e1[3] = {0.0, 0.0, 0.0}, e2[3] = {0.0, 0.0, 0.0};
+      const double* e = cache.data() + kCached * i;
+      const auto k = static_cast<std::size_t>(e[0]);
+      const double w = e[1], dw = -dt[k];
+      const double* d1 = e + 2;
+      const double* d2 = e + 5;
+      double e1[3] = {0.0, 0.0, 0.0}, e2[3] = {0.0, 0.0, 0.0};
       for (std::size_t c = 0; c < D; ++c) {
         const double* q = coef + 9 * k + 3 * c;
         const double m0 = M[3 * k + c], m1 = M[3 * (k + 1) + c];
@@ -374,20 +402,16 @@ bool SplineProfileSampler::sample_jacobian(std::span<const Vec3> points, Workspa
         const double db = dslope[3 * k + c] - dh[k] * (2.0 * m0 + m1) / 6.0 - h[k] * (2.0 * dm0 + dm1) / 6.0;
         const double dc = 0.5 * dm0;
         const double dd = (dm1 - dm0) / (6.0 * h[k]) - q[2] * dh[k] / h[k];
-        d1[c] = q[0] + w * (2.0 * q[1] + 3.0 * q[2] * w);
-        d2[c] = 2.0 * q[1] + 6.0 * q[2] * w;
         e1[c] = db + w * (2.0 * dc + 3.0 * dd * w) + d2[c] * dw;
         e2[c] = 2.0 * dc + 6.0 * dd * w + 6.0 * q[2] * dw;
       }
-      const double X[3] = {d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2], d1[0] * d2[1] - d1[1] * d2[0]};
+      const double* X = e + 8;
       const double dX[3] = {e1[1] * d2[2] - e1[2] * d2[1] + d1[1] * e2[2] - d1[2] * e2[1],
                             e1[2] * d2[0] - e1[0] * d2[2] + d1[2] * e2[0] - d1[0] * e2[2],
                             e1[0] * d2[1] - e1[1] * d2[0] + d1[0] * e2[1] - d1[1] * e2[0]};
-      const double xn = std::sqrt(X[0] * X[0] + X[1] * X[1] + X[2] * X[2]);
+      const double xn = e[11], S = e[12], s32 = e[13];
       const double dxn = xn > 0.0 ? (X[0] * dX[0] + X[1] * dX[1] + X[2] * dX[2]) / xn : 0.0;
-      const double S = d1[0] * d1[0] + d1[1] * d1[1] + d1[2] * d1[2];
       const double dS = 2.0 * (d1[0] * e1[0] + d1[1] * e1[1] + d1[2] * e1[2]);
-      const double s32 = S * std::sqrt(S);
       jacobian[i * columns + j] = dxn / s32 - 1.5 * xn * dS / (s32 * S);
     }
   }
