@@ -13,6 +13,7 @@
 #include <Geom_BSplineCurve.hxx>
 #include <TColgp_HArray1OfPnt.hxx>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include "hula/core/rng.hpp"
@@ -168,6 +169,67 @@ void BM_match_hybrid_20(benchmark::State& state) {
   state.counters["mean_distance"] = mean;
 }
 BENCHMARK(BM_match_hybrid_20)->Unit(benchmark::kMillisecond);
+
+// A convex planar arc of length 40 (turning angle a s + b s², a in [1, 1.8], b in [0.3, 1.2] from `seed`) through n
+// points equally spaced in arc length (Simpson on 40 steps per span): the far-start targets of issue 14, as
+// tests/studies/match_study_test.cpp builds them.
+std::vector<Vec3> seeded_arc(std::size_t n, std::uint64_t seed) {
+  hula::Rng rng(seed);
+  const double a = rng.uniform(1.0, 1.8), b = rng.uniform(0.3, 1.2);
+  std::vector<Vec3> p(n);
+  Vec3 q{0, 0, 0};
+  const int per = 40;
+  const int steps = per * static_cast<int>(n - 1);
+  auto theta = [&](double s) { return a * s + b * s * s; };
+  for (int k = 0; k < steps; ++k) {
+    const double s0 = static_cast<double>(k) / steps, s1 = static_cast<double>(k + 1) / steps;
+    const double w = 40.0 * (s1 - s0) / 6.0;
+    q.x += w * (std::cos(theta(s0)) + 4.0 * std::cos(theta(0.5 * (s0 + s1))) + std::cos(theta(s1)));
+    q.y += w * (std::sin(theta(s0)) + 4.0 * std::sin(theta(0.5 * (s0 + s1))) + std::sin(theta(s1)));
+    if ((k + 1) % per == 0) p[static_cast<std::size_t>((k + 1) / per)] = q;
+  }
+  return p;
+}
+
+// The far-start hybrid at 50 free variables (docs/studies.md, "Far starts", variables 50 / seed 1): 26 points of a
+// seeded arc moved by up to 15 % of the spacing, bounds of 75 %, start point and tangent fixed; GA 50 x 10, then
+// Ceres from the direct start and from the GA's best. Arg 0 = finite-difference Jacobian, 1 = exact Jacobian.
+void BM_match_hybrid_far_50(benchmark::State& state) {
+  constexpr std::size_t kPoints = 26;
+  constexpr std::uint64_t kSeed = 1;
+  const std::vector<Vec3> truth = seeded_arc(kPoints, kSeed);
+  const double spacing = 40.0 / static_cast<double>(kPoints - 1);
+  CurvatureMatchSetup s;
+  s.points = truth;
+  s.start_tangent = truth[1] - truth[0];
+  s.lower.assign(kPoints, Vec3{0.75 * spacing, 0.75 * spacing, 0});
+  s.lower[0] = Vec3{};
+  s.upper = s.lower;
+  hula::Rng rng(100 + kSeed);
+  for (std::size_t i = 1; i < kPoints; ++i)
+    for (std::size_t c = 0; c < 2; ++c) s.points[i][c] += rng.uniform(-0.15 * spacing, 0.15 * spacing);
+  s.target = hula::studies::Profile::from_samples(
+      hula::studies::uniform_abscissae(kSamples),
+      hula::studies::curvature_profile_of(truth, 2, kSamples, s.start_tangent, std::nullopt));
+  const CurvatureMatch match(s);
+  hula::studies::MatchStudy study;
+  study.method = hula::studies::MatchMethod::Hybrid;
+  study.header.seed = 7;
+  study.ga.generations = 10;
+  study.lm.exact_jacobian = state.range(0) == 1;
+  double mean = 0.0;
+  std::size_t iterations = 0;
+  for (auto _ : state) {
+    const auto r = hula::studies::run_curvature_match(match, study);
+    benchmark::DoNotOptimize(r.best.data());
+    mean = r.after.mean;
+    iterations = r.lm->iterations;
+  }
+  state.counters["variables"] = static_cast<double>(match.dimension());
+  state.counters["mean_distance"] = mean;
+  state.counters["lm_iterations"] = static_cast<double>(iterations);
+}
+BENCHMARK(BM_match_hybrid_far_50)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 // Curvature + torsion (NSGA-II 60 x 120, 12 free coordinates) on five helix points with clamped ends: the
 // set-up of examples/studies/match-curvature-torsion-helix.json. Arg 1 = with the LM polish.

@@ -196,6 +196,7 @@ TEST(MatchCurvatureCli, BadStudyFilesNameTheMember) {
       {head + bounds + target + R"(, "direct": {"end_point": 1}})", "direct.end_point"},
       {head + bounds + target + R"(, "ga": {"population": 7}})", "ga.population"},
       {head + bounds + target + R"(, "lm": {"difference_step": 2}})", "lm.difference_step"},
+      {head + bounds + target + R"(, "lm": {"exact_jacobian": 1}})", "lm.exact_jacobian"},
       {head + bounds + target + R"(, "abscissa": "length"})", "abscissa"},
   };
   for (std::size_t i = 0; i < cases.size(); ++i) {

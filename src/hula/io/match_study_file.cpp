@@ -169,13 +169,17 @@ MatchGaSettings read_ga(const Json& g, const jr::JsonPath& path) {
 LmOptions lm_options_from_json(const Json& g, const io::json::JsonPath& path) {
   jr::reject_unknown_members(g, path,
                              {"max_iterations", "target_mean", "relative_tolerance", "initial_lambda",
-                              "difference_step", "solver", "direct_start"});
+                              "difference_step", "solver", "direct_start", "exact_jacobian"});
   LmOptions o;
   if (const Json* v = jr::optional_member(g, "solver"))
     o.solver = lsq_solver_from_name(jr::get_string(*v, path.member("solver")), path.member("solver").text);
   if (const Json* v = jr::optional_member(g, "direct_start")) {
     if (!v->is_boolean()) jr::type_error(*v, path.member("direct_start"), "true or false");
     o.direct_start = v->get<bool>();
+  }
+  if (const Json* v = jr::optional_member(g, "exact_jacobian")) {
+    if (!v->is_boolean()) jr::type_error(*v, path.member("exact_jacobian"), "true or false");
+    o.exact_jacobian = v->get<bool>();
   }
   if (const Json* v = jr::optional_member(g, "max_iterations"))
     o.max_iterations = static_cast<std::size_t>(jr::get_integer(*v, path.member("max_iterations"), 1, 1000000));
@@ -200,6 +204,7 @@ Json lm_options_to_json(const LmOptions& o) {
   lm["difference_step"] = o.difference_step;
   lm["solver"] = std::string(lsq_solver_name(o.solver));
   lm["direct_start"] = o.direct_start;
+  lm["exact_jacobian"] = o.exact_jacobian;
   return lm;
 }
 

@@ -261,6 +261,168 @@ bool SplineProfileSampler::sample(std::span<const Vec3> points, Workspace& ws, s
   return true;
 }
 
+bool SplineProfileSampler::sample_jacobian(std::span<const Vec3> points, Workspace& ws,
+                                           std::span<const std::size_t> coordinates, std::span<double> kappa,
+                                           std::span<double> jacobian) const {
+  if (abscissa_ != ProfileAbscissa::Parameter)
+    throw Error(Errc::InvalidArgument, "sample_jacobian: the exact Jacobian needs abscissa \"parameter\"",
+                {.field = "abscissa"});
+  const std::size_t m = u_.size(), columns = coordinates.size();
+  if (jacobian.size() != m * columns)
+    throw Error(Errc::InvalidArgument,
+                "sample_jacobian: expected " + std::to_string(m * columns) + " Jacobian values, got " +
+                    std::to_string(jacobian.size()),
+                {.field = "jacobian"});
+  for (std::size_t j = 0; j < columns; ++j)
+    if (coordinates[j] / 3 >= n_ || coordinates[j] % 3 >= static_cast<std::size_t>(dim_))
+      throw Error(Errc::InvalidArgument,
+                  indexed("coordinates", j) + " = " + std::to_string(coordinates[j]) + " is not a coordinate of " +
+                      std::to_string(n_) + " points in dimension " + std::to_string(dim_),
+                  {.field = "coordinates", .index = j});
+  if (!sample(points, ws, kappa)) {
+    std::fill(jacobian.begin(), jacobian.end(), kNaN);
+    return false;
+  }
+  // sample() left t, h, the moments M, the span coefficients, diag (A's diagonal) and upper (A's factor c'_k).
+  const std::size_t n = n_, D = static_cast<std::size_t>(dim_), last = n - 1;
+  grow(ws.pivot, n);
+  grow(ws.dt, n);
+  grow(ws.dh, n);
+  grow(ws.dslope, 3 * n);
+  grow(ws.drhs, 3 * n);
+  grow(ws.dmoments, 3 * n);
+  const double* t = ws.t.data();
+  const double* h = ws.h.data();
+  const double* M = ws.moments.data();
+  const double* coef = ws.coefficients.data();
+  const double* cprime = ws.upper.data();
+  double* pivot = ws.pivot.data();
+  double* dt = ws.dt.data();
+  double* dh = ws.dh.data();
+  double* dslope = ws.dslope.data();
+  double* drhs = ws.drhs.data();
+  double* dM = ws.dmoments.data();
+  double length = 0.0;
+  for (std::size_t k = 1; k < n; ++k) {
+    double d2 = 0.0;
+    for (std::size_t c = 0; c < D; ++c) d2 += (points[k][c] - points[k - 1][c]) * (points[k][c] - points[k - 1][c]);
+    length += std::sqrt(d2);
+  }
+  auto chord = [&](std::size_t k) {  // |P_k − P_{k−1}|
+    double d2 = 0.0;
+    for (std::size_t c = 0; c < D; ++c) d2 += (points[k][c] - points[k - 1][c]) * (points[k][c] - points[k - 1][c]);
+    return std::sqrt(d2);
+  };
+  auto slope = [&](std::size_t k, std::size_t c) { return (points[k + 1][c] - points[k][c]) / h[k]; };
+  // A's sub-diagonal and the Thomas pivots 1 / (diag_k − lower_k c'_{k−1}) of sample()'s elimination.
+  auto lower = [&](std::size_t k) { return k == last ? (end_ ? 1.0 : 0.0) : h[k - 1]; };
+  pivot[0] = 1.0 / ws.diag[0];
+  for (std::size_t k = 1; k < n; ++k) pivot[k] = 1.0 / (ws.diag[k] - lower(k) * cprime[k - 1]);
+  // What does not depend on the column, once per sample: span k, w, C', C'', X = C' × C'', |X|, |C'|², |C'|³.
+  constexpr std::size_t kCached = 16;
+  thread_local std::vector<double> cache;  // one per thread, grown once (no allocation when warm)
+  grow(cache, kCached * m);
+  {
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < m; ++i) {
+      while (k + 2 < n && u_[i] > t[k + 1]) ++k;
+      double* e = cache.data() + kCached * i;
+      const double w = u_[i] - t[k];
+      e[0] = static_cast<double>(k);
+      e[1] = w;
+      double* d1 = e + 2;
+      double* d2 = e + 5;
+      for (std::size_t c = 0; c < 3; ++c) {
+        const double* q = coef + 9 * k + 3 * c;
+        d1[c] = c < D ? q[0] + w * (2.0 * q[1] + 3.0 * q[2] * w) : 0.0;
+        d2[c] = c < D ? 2.0 * q[1] + 6.0 * q[2] * w : 0.0;
+      }
+      e[8] = d1[1] * d2[2] - d1[2] * d2[1];
+      e[9] = d1[2] * d2[0] - d1[0] * d2[2];
+      e[10] = d1[0] * d2[1] - d1[1] * d2[0];
+      e[11] = std::sqrt(e[8] * e[8] + e[9] * e[9] + e[10] * e[10]);
+      e[12] = d1[0] * d1[0] + d1[1] * d1[1] + d1[2] * d1[2];
+      e[13] = e[12] * std::sqrt(e[12]);
+    }
+  }
+  for (std::size_t j = 0; j < columns; ++j) {
+    const std::size_t p = coordinates[j] / 3, axis = coordinates[j] % 3;
+    // Chord-length parameters t_k = T_k / L: dT_k = Σ_{i<=k} dc_i, only the chords at p and p + 1 change.
+    const double dc_p = p >= 1 ? (points[p][axis] - points[p - 1][axis]) / chord(p) : 0.0;
+    const double dc_next = p + 1 < n ? -(points[p + 1][axis] - points[p][axis]) / chord(p + 1) : 0.0;
+    const double dlength = dc_p + dc_next;
+    for (std::size_t k = 0; k < n; ++k) {
+      const double dT = (k >= p ? dc_p : 0.0) + (k >= p + 1 ? dc_next : 0.0);
+      dt[k] = k == 0 || k == last ? 0.0 : (dT - t[k] * dlength) / length;
+    }
+    for (std::size_t k = 0; k + 1 < n; ++k) dh[k] = dt[k + 1] - dt[k];
+    // Slopes (P_{k+1} − P_k) / h_k.
+    for (std::size_t k = 0; k + 1 < n; ++k)
+      for (std::size_t c = 0; c < D; ++c) {
+        const double dp = c == axis ? (k + 1 == p ? 1.0 : 0.0) - (k == p ? 1.0 : 0.0) : 0.0;
+        dslope[3 * k + c] = (dp - slope(k, c) * dh[k]) / h[k];
+      }
+    // A dM = db − dA M (the end rows of A are constant; their right-hand sides depend on L and h).
+    for (std::size_t c = 0; c < D; ++c) {
+      if (start_) {
+        const double b0 = 6.0 * (slope(0, c) - (*start_)[c] * length) / h[0];
+        drhs[c] = (6.0 * (dslope[c] - (*start_)[c] * dlength) - b0 * dh[0]) / h[0];
+      } else {
+        drhs[c] = 0.0;
+      }
+      for (std::size_t k = 1; k < last; ++k)
+        drhs[3 * k + c] =
+            6.0 * (dslope[3 * k + c] - dslope[3 * (k - 1) + c]) -
+            (dh[k - 1] * M[3 * (k - 1) + c] + 2.0 * (dh[k - 1] + dh[k]) * M[3 * k + c] + dh[k] * M[3 * (k + 1) + c]);
+      if (end_) {
+        const double bl = 6.0 * ((*end_)[c] * length - slope(last - 1, c)) / h[last - 1];
+        drhs[3 * last + c] =
+            (6.0 * ((*end_)[c] * dlength - dslope[3 * (last - 1) + c]) - bl * dh[last - 1]) / h[last - 1];
+      } else {
+        drhs[3 * last + c] = 0.0;
+      }
+      // The factorisation of sample() reused: forward elimination, then back substitution.
+      dM[c] = drhs[c] * pivot[0];
+      for (std::size_t k = 1; k < n; ++k) dM[3 * k + c] = (drhs[3 * k + c] - lower(k) * dM[3 * (k - 1) + c]) * pivot[k];
+      for (std::size_t k = last; k-- > 0;) dM[3 * k + c] -= cprime[k] * dM[3 * (k + 1) + c];
+    }
+    // Each sample: C' = b + 2 c w + 3 d w², C'' = 2 c + 6 d w on span k, w = u − t_k (dw = −dt_k), then
+    // dκ = d|X| / |C'|³ − (3/2) |X| d(|C'|²) / |C'|⁵ with X = C' × C'', d|X| = X · dX / |X|.
+    for (std::size_t i = 0; i < m; ++i) {
+      const double* e = cache.data() + kCached * i;
+      const auto k = static_cast<std::size_t>(e[0]);
+      const double w = e[1], dw = -dt[k];
+      const double* d1 = e + 2;
+      const double* d2 = e + 5;
+      double e1[3] = {0.0, 0.0, 0.0}, e2[3] = {0.0, 0.0, 0.0};
+      for (std::size_t c = 0; c < D; ++c) {
+        const double* q = coef + 9 * k + 3 * c;
+        const double m0 = M[3 * k + c], m1 = M[3 * (k + 1) + c];
+        const double dm0 = dM[3 * k + c], dm1 = dM[3 * (k + 1) + c];
+        const double db = dslope[3 * k + c] - dh[k] * (2.0 * m0 + m1) / 6.0 - h[k] * (2.0 * dm0 + dm1) / 6.0;
+        const double dc = 0.5 * dm0;
+        const double dd = (dm1 - dm0) / (6.0 * h[k]) - q[2] * dh[k] / h[k];
+        e1[c] = db + w * (2.0 * dc + 3.0 * dd * w) + d2[c] * dw;
+        e2[c] = 2.0 * dc + 6.0 * dd * w + 6.0 * q[2] * dw;
+      }
+      const double* X = e + 8;
+      const double dX[3] = {e1[1] * d2[2] - e1[2] * d2[1] + d1[1] * e2[2] - d1[2] * e2[1],
+                            e1[2] * d2[0] - e1[0] * d2[2] + d1[2] * e2[0] - d1[0] * e2[2],
+                            e1[0] * d2[1] - e1[1] * d2[0] + d1[0] * e2[1] - d1[1] * e2[0]};
+      const double xn = e[11], S = e[12], s32 = e[13];
+      const double dxn = xn > 0.0 ? (X[0] * dX[0] + X[1] * dX[1] + X[2] * dX[2]) / xn : 0.0;
+      const double dS = 2.0 * (d1[0] * e1[0] + d1[1] * e1[1] + d1[2] * e1[2]);
+      jacobian[i * columns + j] = dxn / s32 - 1.5 * xn * dS / (s32 * S);
+    }
+  }
+  for (const double v : jacobian)
+    if (!std::isfinite(v)) {
+      std::fill(jacobian.begin(), jacobian.end(), kNaN);
+      return false;
+    }
+  return true;
+}
+
 nurbs::NurbsCurve SplineProfileSampler::curve(std::span<const Vec3> points) const {
   nurbs::InterpolationOptions options;
   options.dimension = dim_;
@@ -377,7 +539,10 @@ CurvatureMatch::CurvatureMatch(CurvatureMatchSetup setup) : setup_(std::move(set
   }
   for (std::size_t i = 0; i < setup_.points.size(); ++i)
     for (std::size_t c = 0; c < static_cast<std::size_t>(setup_.dimension); ++c)
-      if (setup_.lower[i][c] > 0.0 || setup_.upper[i][c] > 0.0) free_.push_back({i, c});
+      if (setup_.lower[i][c] > 0.0 || setup_.upper[i][c] > 0.0) {
+        free_.push_back({i, c});
+        free_flat_.push_back(3 * i + c);
+      }
   if (setup_.dimension == 2)
     for (Vec3& p : setup_.points) p.z = 0.0;
 }
@@ -418,6 +583,14 @@ bool CurvatureMatch::residuals(std::span<const double> x, SplineProfileSampler::
                                std::span<double> r) const {
   points_from(x, points);
   if (!sampler_.sample(points, ws, r)) return false;
+  for (std::size_t i = 0; i < r.size(); ++i) r[i] -= target_[i];
+  return true;
+}
+
+bool CurvatureMatch::residuals_jacobian(std::span<const double> x, SplineProfileSampler::Workspace& ws,
+                                        std::span<Vec3> points, std::span<double> r, std::span<double> jacobian) const {
+  points_from(x, points);
+  if (!sampler_.sample_jacobian(points, ws, free_flat_, r, jacobian)) return false;
   for (std::size_t i = 0; i < r.size(); ++i) r[i] -= target_[i];
   return true;
 }

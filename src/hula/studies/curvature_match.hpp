@@ -38,6 +38,8 @@ class SplineProfileSampler {
   struct Workspace {
     std::vector<double> t, h, diag, upper, rhs, moments, span_length;
     std::vector<double> coefficients;  // per span and coordinate: b, c, d
+    // sample_jacobian: the factorisation of the moment system and one column's tangents.
+    std::vector<double> pivot, factor_upper, dt, dh, dslope, drhs, dmoments;
   };
 
   /// @param point_count N >= 2 data points per evaluation
@@ -78,6 +80,22 @@ class SplineProfileSampler {
   /// @returns false (outputs NaN) if two consecutive points coincide or a value is not finite
   /// @throws hula::Error(Errc::InvalidArgument) if a span's size is wrong
   bool sample(std::span<const Vec3> points, Workspace& ws, std::span<double> kappa, std::span<double> tau = {}) const;
+
+  /// κ(u_i) and its exact derivatives ∂κ(u_i)/∂P_{k,c} with respect to chosen data-point coordinates
+  /// (abscissa Parameter only): the tangent-linear form of sample(), differentiating the chord-length parameters,
+  /// the moment system A(t) M = b(P, t) (A dM = db − dA M, solved with A's factorisation reused for every column)
+  /// and κ = |C' × C''| / |C'|³ by the chain rule. Where C' × C'' = 0 (κ = 0, where unsigned κ has no derivative)
+  /// the column entry is 0. Allocates only the workspace.
+  /// @param points point_count() points
+  /// @param ws buffers (one per thread)
+  /// @param coordinates flat indices 3 k + c (point k, coordinate c < dimension()) of the columns
+  /// @param kappa abscissae().size() values out
+  /// @param jacobian abscissae().size() × coordinates.size() values out, row-major
+  /// @returns false (outputs NaN) if two consecutive points coincide or a value is not finite
+  /// @throws hula::Error(Errc::InvalidArgument) if a span's size is wrong, a coordinate is out of range or the
+  ///   abscissa is ArcLength
+  bool sample_jacobian(std::span<const Vec3> points, Workspace& ws, std::span<const std::size_t> coordinates,
+                       std::span<double> kappa, std::span<double> jacobian) const;
 
   /// The same spline as a NurbsCurve (nurbs::interpolate_cubic with the chord-length parameters and the clamped
   /// derivatives this sampler uses), for output and figures.
@@ -175,6 +193,13 @@ class CurvatureMatch {
   /// Residuals r_i = κ(u_i) − κ*(u_i) of x; returns false if degenerate.
   bool residuals(std::span<const double> x, SplineProfileSampler::Workspace& ws, std::span<Vec3> points,
                  std::span<double> r) const;
+  /// Whether residuals_jacobian applies (the sampler's abscissa is Parameter).
+  [[nodiscard]] bool has_exact_jacobian() const noexcept { return sampler_.abscissa() == ProfileAbscissa::Parameter; }
+  /// Residuals r_i = κ(u_i) − κ*(u_i) of x and their exact Jacobian ∂r_i/∂x_j (SplineProfileSampler::
+  /// sample_jacobian), row-major samples × dimension(); returns false if degenerate.
+  /// @throws hula::Error(Errc::InvalidArgument) if !has_exact_jacobian()
+  bool residuals_jacobian(std::span<const double> x, SplineProfileSampler::Workspace& ws, std::span<Vec3> points,
+                          std::span<double> r, std::span<double> jacobian) const;
   /// Curvature and torsion distances of x in one pass, for the two-objective (NSGA-II) study: no allocation once
   /// `ws` is warm. torsion_mean is NaN without a torsion target (τ is then not computed) or if τ is undefined at
   /// every sample; all three are NaN if the spline is degenerate.
@@ -202,6 +227,7 @@ class CurvatureMatch {
     std::size_t coordinate;
   };
   std::vector<Free> free_;
+  std::vector<std::size_t> free_flat_;  // 3 point + coordinate of each free coordinate (sample_jacobian's columns)
 };
 
 /// The sample abscissae of every matching study: u_i = i / (samples − 1), i = 0 … samples − 1 (the last exactly 1).

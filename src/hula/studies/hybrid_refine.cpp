@@ -62,6 +62,12 @@ class CeresResiduals final : public ceres::CostFunction {
       return problem_.residuals(at, std::span<double>(out.data(), m));
     };
     Eigen::VectorXd r(static_cast<Eigen::Index>(m));
+    if (jacobians != nullptr && jacobians[0] != nullptr && problem_.jacobian) {
+      ++evaluations_;
+      if (!problem_.jacobian(x, std::span<double>(r.data(), m), std::span<double>(jacobians[0], m * n))) return false;
+      std::copy(r.data(), r.data() + m, residuals);
+      return true;
+    }
     if (!eval(x, r)) return false;
     std::copy(r.data(), r.data() + m, residuals);
     if (jacobians == nullptr || jacobians[0] == nullptr) return true;
@@ -158,6 +164,7 @@ LmResult refine_levenberg_marquardt(const LeastSquaresProblem& problem, std::spa
   Eigen::MatrixXd A(M + Nv, Nv);
   Eigen::VectorXd b(M + Nv);
   std::vector<double> x_try(n), x_fd(n);
+  std::vector<double> jacobian_rows(problem.jacobian ? m * n : 0);
 
   // Damped Gauss-Newton steps from x until `target` or `budget` steps.
   auto solve = [&](double target, std::size_t budget) {
@@ -168,9 +175,17 @@ LmResult refine_levenberg_marquardt(const LeastSquaresProblem& problem, std::spa
     for (std::size_t step = 0; step < budget; ++step) {
       if (mean_abs(r) <= target) return std::string("target reached");
       if (need_jacobian) {
-        for (std::size_t j = 0; j < n; ++j)
-          (void)difference_column(vars, x, j, options.difference_step, x_fd, r_plus, r_minus, eval,
-                                  J.col(static_cast<Eigen::Index>(j)));
+        if (problem.jacobian) {
+          ++result.evaluations;
+          if (!problem.jacobian(x, std::span<double>(r_plus.data(), m), jacobian_rows))
+            return std::string("degenerate");
+          J = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+              jacobian_rows.data(), M, Nv);
+        } else {
+          for (std::size_t j = 0; j < n; ++j)
+            (void)difference_column(vars, x, j, options.difference_step, x_fd, r_plus, r_minus, eval,
+                                    J.col(static_cast<Eigen::Index>(j)));
+        }
         need_jacobian = false;
       }
       ++result.iterations;
@@ -281,6 +296,22 @@ LmResult refine_levenberg_marquardt(const CurvatureMatch& match, std::span<const
     for (std::size_t j = 0; j < root_weight.size(); ++j) r[m + j] = root_weight[j] * (x[j] - x0[j]);
     return true;
   };
+  if (options.exact_jacobian && match.has_exact_jacobian()) {
+    auto jws = std::make_shared<SplineProfileSampler::Workspace>();
+    auto jpoints = std::make_shared<std::vector<Vec3>>(match.setup().points.size());
+    const std::size_t n = problem.variables.size();
+    problem.jacobian = [&match, jws, jpoints, m, n, root_weight, x0](std::span<const double> x, std::span<double> r,
+                                                                     std::span<double> J) {
+      if (!match.residuals_jacobian(x, *jws, *jpoints, r.first(m), J.first(m * n))) return false;
+      // Proximity rows: ∂(√w (x_j − x_j⁰))/∂x_j = √w.
+      std::fill(J.begin() + static_cast<std::ptrdiff_t>(m * n), J.end(), 0.0);
+      for (std::size_t j = 0; j < root_weight.size(); ++j) {
+        r[m + j] = root_weight[j] * (x[j] - x0[j]);
+        J[(m + j) * n + j] = root_weight[j];
+      }
+      return true;
+    };
+  }
   return refine_levenberg_marquardt(problem, start, options);
 }
 

@@ -5,8 +5,10 @@
 // distance where an exact solution exists, with tens of free coordinates (the
 // GA alone degrades beyond four, thesis Table 9).
 //
-// Two solvers share one Jacobian (central finite differences, one-sided at a
-// bound) and one result type:
+// Two solvers share one Jacobian and one result type. The Jacobian is exact
+// for curvature matching at parameter abscissae (CurvatureMatch::
+// residuals_jacobian: the tangent-linear spline, given to Ceres as an analytic
+// cost function), otherwise central finite differences (one-sided at a bound):
 // - LsqSolver::Ceres (default): Ceres Solver 2.1's trust-region
 //   Levenberg–Marquardt with box constraints (Problem::SetParameterLowerBound /
 //   UpperBound; the trust-region step is projected on the box and the step
@@ -68,6 +70,10 @@ struct LmOptions {
   double relative_tolerance = 1e-14;
   /// Starting damping λ; > 0, finite. Default 1e-3.
   double initial_lambda = 1e-3;
+  /// Curvature matching at parameter abscissae: use the exact Jacobian (CurvatureMatch::residuals_jacobian).
+  /// false = central finite differences as for arc-length abscissae (to compare; about 2 x n residual
+  /// evaluations per Jacobian instead of one). Default true.
+  bool exact_jacobian = true;
   /// Finite-difference step relative to max(1, |x_j|); in (0, 1e-2]. Default 1e-6.
   double difference_step = 1e-6;
 
@@ -101,6 +107,9 @@ struct LeastSquaresProblem {
   std::size_t residual_count = 0;
   /// Writes residual_count residuals of x; returns false where they are undefined (such a step is rejected).
   std::function<bool(std::span<const double> x, std::span<double> r)> residuals{};
+  /// Optional exact Jacobian: writes the residuals and ∂r_i/∂x_j (residual_count × variables, row-major); returns
+  /// false where undefined. Unset = central finite differences (one-sided at a bound).
+  std::function<bool(std::span<const double> x, std::span<double> r, std::span<double> jacobian)> jacobian{};
 };
 
 /// Bounded Levenberg–Marquardt on any least-squares problem (the method above); LmResult's
