@@ -6,7 +6,9 @@
 # fuzz/corpus/<target>/ (-artifact_prefix), where the corpus regression tests
 # replay them with the ordinary build; the run fails if a crash is found.
 #   scripts/fuzz.sh [seconds per target, default 20]
-# Six targets at 20 s keep the whole fuzz step near two minutes of CI time.
+# Six targets at 20 s keep the fuzz runs near two minutes of CI time; the preset builds at
+# -O1 -gline-tables-only (the usual libFuzzer flags), which compiles the Eigen- and
+# Ceres-heavy studies sources about three times faster than -O2 -g under ASan + UBSan.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-20}"
