@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -156,34 +157,52 @@ KnotRemovalResult remove_knots(const NurbsCurve& curve, double tolerance) {
   };
   Working w = working(curve);
   const Interval d = curve.domain();
+  constexpr double kNever = std::numeric_limits<double>::infinity();
+  // Multiplicity of the knot whose last occurrence is U[r], or 0 when U[r] is not that (not interior, or not last).
+  auto last_multiplicity = [&](std::ptrdiff_t r) -> std::ptrdiff_t {
+    if (r < w.p + 1 || r + 1 >= static_cast<std::ptrdiff_t>(w.U.size())) return 0;
+    const double u = w.U[static_cast<std::size_t>(r)];
+    if (!(u > d.start && u < d.end) || w.U[static_cast<std::size_t>(r + 1)] == u) return 0;
+    std::ptrdiff_t s = 1;
+    while (w.U[static_cast<std::size_t>(r - s)] == u) ++s;
+    return s;
+  };
+  auto cost_of = [&](std::ptrdiff_t r) {
+    const std::ptrdiff_t s = last_multiplicity(r);
+    return s == 0 ? kNever : trial(w, r, s).bound * scale;
+  };
+  // The removal cost of each knot, kept up to date: a removal at r changes only the points and knots
+  // within p + 1 of r, so only the costs within 2p + 3 of it are computed again (O(p) trials per
+  // removal instead of one per knot).
+  std::vector<double> cost(w.U.size());
+  for (std::size_t r = 0; r < cost.size(); ++r) cost[r] = cost_of(static_cast<std::ptrdiff_t>(r));
   KnotRemovalResult result{.curve = curve};
   for (;;) {
-    Trial best;
-    double best_bound = tol;
-    bool found = false;
-    for (std::ptrdiff_t r = w.p + 1; r + 1 < static_cast<std::ptrdiff_t>(w.U.size()); ++r) {
-      const double u = w.U[static_cast<std::size_t>(r)];
-      // Only the last occurrence of an interior knot value.
-      if (!(u > d.start && u < d.end) || w.U[static_cast<std::size_t>(r + 1)] == u) continue;
-      std::ptrdiff_t s = 1;
-      while (w.U[static_cast<std::size_t>(r - s)] == u) ++s;
-      Trial t = trial(w, r, s);
-      const double b = t.bound * scale;
-      if (b > best_bound || (found && b >= best_bound)) continue;
-      const auto [lo, hi] =
-          spans_of(w.U[static_cast<std::size_t>(t.first)], w.U[static_cast<std::size_t>(t.last + w.p + 1)]);
-      const double room = tol - *std::max_element(span_error.begin() + static_cast<std::ptrdiff_t>(lo),
-                                                  span_error.begin() + static_cast<std::ptrdiff_t>(hi));
-      if (b > room) continue;
-      best = std::move(t);
-      best_bound = b;
-      found = true;
+    std::ptrdiff_t best = -1;
+    double best_cost = kNever;
+    for (std::size_t r = 0; r < cost.size(); ++r) {
+      if (!(cost[r] < best_cost) || cost[r] > tol) continue;
+      const auto R = static_cast<std::ptrdiff_t>(r);
+      const std::ptrdiff_t s = last_multiplicity(R);
+      const auto [lo, hi] = spans_of(w.U[r - static_cast<std::size_t>(w.p)],
+                                     w.U[static_cast<std::size_t>(R - s + w.p + 1)]);
+      const double used = *std::max_element(span_error.begin() + static_cast<std::ptrdiff_t>(lo),
+                                             span_error.begin() + static_cast<std::ptrdiff_t>(hi));
+      if (cost[r] > tol - used) continue;
+      best = R;
+      best_cost = cost[r];
     }
-    if (!found) break;
-    const auto [lo, hi] =
-        spans_of(w.U[static_cast<std::size_t>(best.first)], w.U[static_cast<std::size_t>(best.last + w.p + 1)]);
-    for (std::size_t k = lo; k < hi; ++k) span_error[k] += best_bound;
-    apply(w, best);
+    if (best < 0) break;
+    const Trial t = trial(w, best, last_multiplicity(best));
+    const auto [lo, hi] = spans_of(w.U[static_cast<std::size_t>(t.first)],
+                                   w.U[static_cast<std::size_t>(t.last + w.p + 1)]);
+    for (std::size_t k = lo; k < hi; ++k) span_error[k] += best_cost;
+    apply(w, t);
+    cost.erase(cost.begin() + best);
+    const std::ptrdiff_t reach = 2 * w.p + 3;
+    for (std::ptrdiff_t r = std::max<std::ptrdiff_t>(0, best - reach);
+         r < std::min<std::ptrdiff_t>(static_cast<std::ptrdiff_t>(cost.size()), best + reach); ++r)
+      cost[static_cast<std::size_t>(r)] = cost_of(r);
     ++result.removed;
   }
   if (result.removed > 0) {

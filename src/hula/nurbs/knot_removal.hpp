@@ -46,7 +46,7 @@ struct KnotRemovalResult {
 /// @param tolerance ≥ 0 in model units (0: only knots that change nothing, to 1e-12 of the size)
 /// @returns the reduced curve, the number of knots removed and the largest accumulated span bound
 /// @throws hula::Error(Errc::NonFiniteInput) / hula::Error(Errc::InvalidArgument) naming tolerance
-/// Complexity O(k² p) for k interior knots.
+/// Complexity O(k²) comparisons and O(k p²) arithmetic for k interior knots.
 [[nodiscard]] KnotRemovalResult remove_knots(const NurbsCurve& curve, double tolerance);
 
 }  // namespace hula::nurbs
