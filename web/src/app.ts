@@ -4,7 +4,15 @@
 
 import { ApiError, Client } from './api/client';
 import { finLines } from './api/adapt';
-import type { Analysis, ChangeReply, ChangeSet, CurveFile, Entity, FinKind } from './api/types';
+import type {
+  Analysis,
+  ChangeReply,
+  ChangeSet,
+  CurveFile,
+  DocumentState,
+  Entity,
+  FinKind,
+} from './api/types';
 import { DocumentStore } from './store/store';
 import { Graph, type Abscissa, type Quantity } from './graphs/graph';
 import { Viewports, toVec3 } from './viewport/viewports';
@@ -205,7 +213,8 @@ export class App {
 
   // ---- document ------------------------------------------------------------
 
-  async open(name: string): Promise<void> {
+  /** Open a document; `prefetched` is its GET already under way (started before the views were built). */
+  async open(name: string, prefetched?: Promise<DocumentState>): Promise<void> {
     this.events?.close();
     this.events = null;
     this.select(null);
@@ -215,7 +224,7 @@ export class App {
     this.store.name = name;
     let doc;
     try {
-      doc = await this.client.getDocument(name);
+      doc = await (prefetched ?? this.client.getDocument(name));
     } catch (e) {
       if (e instanceof ApiError && e.status === 404) doc = await this.client.createDocument(name);
       else throw e;
