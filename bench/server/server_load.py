@@ -17,6 +17,8 @@ Bounded loops on loopback that stop by themselves:
   cost           the server's CPU time per analysis request (from /proc/PID/stat,
                  1000 sequential requests each) for the full request and with
                  parts left out, to see where an analysis request's time goes
+The output starts with the machine's cores and load average (1, 5, 15 min) at
+the start and the end: other programs' load is part of every figure.
 
 usage: server_load.py HULA_BINARY [--rate 500] [--seconds 20] [--subscribers 200] [--background-jobs 2]
                       [--only NAME]
@@ -232,7 +234,8 @@ def main():
                     help="GA jobs running during the interrogation load (the issue's figure: 2)")
     ap.add_argument("--only", choices=["interrogation", "sse", "drag", "drag-rate", "cost"])
     a = ap.parse_args()
-    out = {}
+    # Other programs share the machine: its load average is part of every figure.
+    out = {"machine": {"cores": os.cpu_count(), "load_average_at_start": os.getloadavg()}}
     if a.only in (None, "interrogation"):
         out["interrogation"] = interrogation(a.hula, a.rate, a.seconds, a.background_jobs)
     if a.only in (None, "sse"):
@@ -243,6 +246,7 @@ def main():
         out["drag_rate"] = drag_rate(a.hula, a.seconds)
     if a.only in (None, "cost"):
         out["cost"] = cost(a.hula)
+    out["machine"]["load_average_at_end"] = os.getloadavg()
     print(json.dumps(out, indent=1))
 
 

@@ -131,8 +131,11 @@ class OptimiseResult:
         report: termination (``"MaxGenerations"``, ``"TargetReached"`` ...),
             message, generations, evaluations, failed_evaluations, seconds.
         islands: for island runs, one dict per island: seed, x, f, report,
-            sent, received, accepted and its migration log (``migrations``:
-            generation, from, received, accepted).
+            sent, received, accepted, its archive size (``archive``, NSGA-II:
+            the island's external archive of non-dominated points, from which
+            with the final populations the front is merged and thinned to at
+            most islands x population) and its migration log
+            (``migrations``: generation, from, received, accepted).
     """
 
     report: dict[str, Any]

@@ -143,6 +143,7 @@ void run_islands(const optim::Problem& problem, const optim::IslandAlgorithm& al
     d["sent"] = i.sent;
     d["received"] = i.received;
     d["accepted"] = i.accepted;
+    if (problem.objectives > 1) d["archive"] = i.archive.size();
     py::list events;
     for (const optim::MigrationEvent& e : i.migrations)
       events.append(py::dict(py::arg("generation") = e.generation, py::arg("from") = e.from,

@@ -36,6 +36,20 @@ def test_nsga2_front_repeats_the_cpp_run_bit_for_bit():
     assert cpp.front_f.shape[1] == 2
 
 
+def test_nsga2_islands_merge_archives_into_a_bounded_front():
+    # checks NSGA-II islands against their definition: a mutually non-dominated front of at most
+    # islands x population points, per-island archives of at most as many, and exact repetition
+    opts = dict(dimension=10, population=20, generations=30, seed=2, islands=4)
+    a = hh.optimise("zdt1", "nsga2", **opts)
+    b = hh.optimise("zdt1", "nsga2", **opts)
+    assert np.array_equal(a.front_f, b.front_f) and np.array_equal(a.front_x, b.front_x)
+    f = a.front_f
+    assert 0 < len(f) <= 4 * 20
+    dominated = (f[:, None, :] <= f[None, :, :]).all(axis=2) & (f[:, None, :] < f[None, :, :]).any(axis=2)
+    assert not dominated.any()
+    assert all(0 < isl["archive"] <= 4 * 20 for isl in a.islands)
+
+
 def test_vectorised_numpy_sphere_converges():
     # checks a NumPy sphere objective reaches the known minimum 0 at the origin within 1e-3
     calls = []

@@ -189,6 +189,26 @@ TEST(AnalyseCli, FinsOfEveryKindWithScaleAndDensity) {
   EXPECT_NE(bad.err.find("--fins[1] = 'tosion'"), std::string::npos) << bad.err;
 }
 
+// checks --fins combescure against the helix closed form Q − P = s (τ/κ T + B) = (0, 0, s √(a² + b²)/a)
+// (thesis 8.3 eq. 44; a = 2, b = 0.5, s = 0.5) at every one of the --fin-density parameters
+TEST(AnalyseCli, CombescureFinsOfTheHelix) {
+  const testing::TempDir dir;
+  const ProcessResult r = hula({"analyse", write(dir, "helix.json", kHelix), "--samples", "2", "--fins", "combescure",
+                                "--fin-scale", "0.5", "--fin-density", "7"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json fins = json::parse(r.out)["fins"];
+  ASSERT_EQ(fins.size(), 1U);
+  EXPECT_EQ(fins[0]["kind"], "combescure");
+  ASSERT_EQ(fins[0]["tip"].size(), 7U);
+  for (std::size_t i = 0; i < 7; ++i) {
+    const json& p = fins[0]["base"][i];
+    const json& q = fins[0]["tip"][i];
+    EXPECT_NEAR(q[0].get<double>(), p[0].get<double>(), 1e-9);
+    EXPECT_NEAR(q[1].get<double>(), p[1].get<double>(), 1e-9);
+    EXPECT_NEAR(q[2].get<double>() - p[2].get<double>(), 0.5 * std::sqrt(4.25) / 2.0, 1e-9);
+  }
+}
+
 // checks --svg also writes radius.svg, speed.svg and logcurvature.svg as complete SVG documents (start
 // with <svg, end with </svg>), each with a drawn path for a cubic whose curvature varies.
 TEST(AnalyseCli, SvgRadiusSpeedLogCurvature) {

@@ -37,6 +37,32 @@ TEST(Fins, Circle) {
   for (const Vec3& t : fins(c, o).tip) EXPECT_NEAR(norm(t), 2.0 + std::log1p(1.5), 1e-12);
 }
 
+// checks fins built from frames already evaluated at the fin parameters equal fins(curve) bit for bit,
+// for every kind (the server's analysis builds its combs this way)
+TEST(Fins, FromFramesEqualFromCurve) {
+  const nurbs::NurbsCurve c = testing::rational_circle(2.0);
+  for (const FinKind kind :
+       {FinKind::Curvature, FinKind::Torsion, FinKind::Normal, FinKind::Binormal, FinKind::BishopU, FinKind::BishopV}) {
+    FinOptions o;
+    o.kind = kind;
+    o.scale = 0.7;
+    o.density = 37;
+    const Fins expected = fins(c, o);
+    std::vector<FrenetPoint> frames(expected.t.size());
+    frenet(c, expected.t, frames);
+    const Fins got = fins(frames, o);
+    ASSERT_EQ(got.t.size(), expected.t.size());
+    for (std::size_t i = 0; i < got.t.size(); ++i) {
+      EXPECT_EQ(got.t[i], expected.t[i]);
+      EXPECT_EQ(got.defined[i], expected.defined[i]) << fin_kind_name(kind) << " fin " << i;
+      EXPECT_EQ(got.base[i], expected.base[i]);
+      if (expected.defined[i]) {
+        EXPECT_EQ(got.tip[i], expected.tip[i]) << fin_kind_name(kind) << " fin " << i;
+      }
+    }
+  }
+}
+
 // checks the torsion fin of the helix (2 cos t, 2 sin t, 0.5 t): tip − P = s τ B with τ = 0.5/4.25.
 TEST(Fins, HelixTorsion) {
   law::Context ctx;
@@ -56,6 +82,38 @@ TEST(Fins, HelixTorsion) {
     EXPECT_NEAR(dot(b.tip[i] - b.base[i], h.at(b.t[i]).tangent), 0.0, 1e-12);
     EXPECT_NEAR(norm(b.tip[i] - b.base[i]), 10.0, 1e-12);
   }
+}
+
+// checks the Combescure fin of the helix (a cos t, a sin t, b t), a = 2, b = 0.5, against the closed form
+// Q − P = C (b/a T + B) = (0, 0, C √(a² + b²) / a) (eq. 44, τ/κ = b/a), from the law and from its NURBS,
+// its law form against the same shift, and that it is undefined everywhere on a planar circle (8.3).
+TEST(Fins, CombescureHelixAndCircle) {
+  const curve::Curve helix = curve::Curve::from_law("vec(2*cos(t), 2*sin(t), 0.5*t)", "t", {0.0, 6.0});
+  FinOptions o;
+  o.kind = FinKind::Combescure;
+  o.scale = 3.0;
+  o.density = 61;
+  const Vec3 shift{0.0, 0.0, 3.0 * std::sqrt(4.25) / 2.0};
+  const Fins f = fins(helix, o);
+  for (std::size_t i = 0; i < f.tip.size(); ++i) {
+    EXPECT_EQ(f.defined[i], 1) << i;
+    EXPECT_LT(norm(f.tip[i] - f.base[i] - shift), 1e-12) << f.t[i];
+  }
+  // The stand-in NURBS (fitted to the law within a position tolerance) gives the shift within 1e-3.
+  const Fins n = fins(helix.nurbs(), o);
+  for (std::size_t i = 0; i < n.tip.size(); ++i) EXPECT_LT(norm(n.tip[i] - n.base[i] - shift), 1e-3) << n.t[i];
+  law::Context ctx;
+  const LawFrenet q(fin_law(law::parse("vec(2*cos(t), 2*sin(t), 0.5*t)", ctx), "t", o), "t", {0.0, 6.0});
+  for (const double t : {0.0, 1.3, 4.0})
+    EXPECT_LT(norm(q.at(t).position - Vec3{2.0 * std::cos(t), 2.0 * std::sin(t), 0.5 * t} - shift), 1e-12) << t;
+  o.log_scale = true;
+  const Fins l = fins(helix, o);
+  EXPECT_NEAR(norm(l.tip[7] - l.base[7]), std::log1p(norm(shift)), 1e-12);
+  o.log_scale = false;
+  const Fins c = fins(testing::rational_circle(2.0), o);
+  EXPECT_TRUE(std::all_of(c.defined.begin(), c.defined.end(), [](std::uint8_t d) { return d == 0; }));
+  EXPECT_EQ(fin_kind_from_name("combescure"), FinKind::Combescure);
+  EXPECT_EQ(fin_kind_from_name("compound"), std::nullopt);
 }
 
 // checks the S-curve: curvature fin of length 0 at the inflection (defined), torsion fin undefined (NaN) there.

@@ -180,5 +180,77 @@ TEST(NaturalEquations, FitShape) {
   EXPECT_FALSE(fit_nurbs(c, tight).converged);
 }
 
+// checks: κ = 1 − |s − 1| (a kink at s = 1) is one breakpoint, a node of the exact-angle quadrature; the end point
+// matches composite 8-point Gauss–Legendre of the closed-form angle (two clothoid arcs) to 1e-9, and the fit within
+// 1e-9 has a triple knot (C2: κ is continuous) at s = 1.
+TEST(NaturalEquations, KinkIsABreakpoint) {
+  Laws l;
+  const IntrinsicCurve c = reconstruct_planar(l.parse("1 - abs(s - 1)"), "s", 2.0);
+  EXPECT_EQ(c.method(), IntegrationKind::PlanarExactAngle);  // the quadrature's intervals start at the kink
+  ASSERT_EQ(c.breakpoints().size(), 1u);
+  EXPECT_NEAR(c.breakpoints()[0], 1.0, 1e-14);
+  EXPECT_NE(std::find(c.nodes().begin(), c.nodes().end(), c.breakpoints()[0]), c.nodes().end());
+  // θ(s) = s²/2 for s ≤ 1 and 1/2 + ∫_1^s (2 − σ) dσ = 2s − s²/2 − 1 for s ≥ 1; ∫(cos θ, sin θ) on 64 pieces.
+  const auto theta = [](double s) { return s <= 1 ? s * s / 2 : 2 * s - s * s / 2 - 1; };
+  const double x8[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
+  const double w8[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
+  double x = 0.0, y = 0.0;
+  const double piece = 2.0 / 64;
+  for (int k = 0; k < 64; ++k)
+    for (int q = 0; q < 4; ++q)
+      for (const double sign : {-1.0, 1.0}) {
+        const double th = theta((k + 0.5) * piece + sign * x8[q] * piece / 2);
+        x += w8[q] * piece / 2 * std::cos(th);
+        y += w8[q] * piece / 2 * std::sin(th);
+      }
+  const FramePoint end = c.evaluate(2.0);
+  EXPECT_NEAR(end.position.x, x, 1e-9);
+  EXPECT_NEAR(end.position.y, y, 1e-9);
+  const NurbsFitResult fit = fit_nurbs(c);
+  EXPECT_TRUE(fit.converged);
+  EXPECT_EQ(static_cast<int>(fit.curve.knots().multiplicity(c.breakpoints()[0])), 3);
+  EXPECT_EQ(fit.curve.control_points().size(), 3 * (fit.segments + 1));
+}
+
+// checks: a jump of κ (a line of length 1, then the unit circle: piecewise(s < 1, 0, 1)) is stepped onto and fitted
+// with a knot of multiplicity 5 there; the dense curve and the NURBS match the closed form (s, 0) then
+// (1 + sin(s − 1), 1 − cos(s − 1)) at 401 arc lengths to 1e-9 (the NURBS, fitted within 1e-9, to 2e-9), with 3
+// (segments + 1) + 2 control points.
+TEST(NaturalEquations, CurvatureJumpGivesC1Knot) {
+  Laws l;
+  const IntrinsicCurve c = reconstruct_planar(l.parse("piecewise(s < 1, 0, 1)"), "s", 3.0);
+  ASSERT_EQ(c.breakpoints().size(), 1u);
+  EXPECT_NEAR(c.breakpoints()[0], 1.0, 1e-14);
+  const NurbsFitResult fit = fit_nurbs(c);
+  EXPECT_TRUE(fit.converged);
+  EXPECT_EQ(static_cast<int>(fit.curve.knots().multiplicity(c.breakpoints()[0])), 5);
+  EXPECT_EQ(fit.curve.control_points().size(), 3 * (fit.segments + 1) + 2);
+  for (int i = 0; i <= 400; ++i) {
+    const double s = 3.0 * i / 400;
+    const Vec3 exact = s <= 1 ? Vec3{s, 0, 0} : Vec3{1 + std::sin(s - 1), 1 - std::cos(s - 1), 0};
+    EXPECT_LT(distance(c.evaluate(s).position, exact), 1e-9) << s;
+    EXPECT_LT(distance(fit.curve.derivatives(s, 0)[0], exact), 2e-9) << s;
+  }
+}
+
+// checks: the fit's segment budget bounds its work on a kinked law: with max_segments = 10 and 127 kinks it stops
+// with one segment per remaining piece (segments ≤ 10 + 128), converged = false, and fit_nurbs_converged names kappa
+// and max_segments.
+TEST(NaturalEquations, FitBudgetWithKinks) {
+  Laws l;
+  std::string kappa;
+  for (int i = 0; i < 64; ++i)
+    kappa += (i ? " + " : "") + std::string("max(0, 1 - abs(s - ") + std::to_string((2 * i + 1) / 16.0) + ")*16)";
+  const IntrinsicCurve c = reconstruct_planar(l.parse(kappa), "s", 8.0);
+  EXPECT_EQ(c.breakpoints().size(), 127u);
+  NurbsFitOptions o;
+  o.max_segments = 10;
+  o.tolerance = 1e-12;
+  const NurbsFitResult fit = fit_nurbs(c, o);
+  EXPECT_FALSE(fit.converged);
+  EXPECT_LE(fit.segments, 10u + 128u);
+  HULA_EXPECT_ERROR(fit_nurbs_converged(c, o), Errc::NumericalFailure, "max_segments = 10");
+}
+
 }  // namespace
 }  // namespace hula::intrinsic

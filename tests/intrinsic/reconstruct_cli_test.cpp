@@ -1,11 +1,15 @@
 // SPDX-License-Identifier: MIT
 // Contract tests of `hula reconstruct` run as a process: the exact JSON shape
-// ({"points": [{"s", "position", "T", "N", "B"}], "fit": {"control_points",
-// "max_deviation"}}), values against the closed-form helix, the default
-// sample arc lengths, the atomically written NURBS file, and exit codes 2/3
-// with the error JSON naming the option (and the column of a bad expression).
+// ({"points": [{"s", "position", "T", "N", "B"}], "integration": {"method",
+// "steps", "rejected_steps", "breakpoints"}, "fit": {"control_points",
+// "segments", "tolerance", "max_deviation"}}), values against the closed-form
+// helix, the default sample arc lengths, the atomically written NURBS file, a
+// kinked κ against composite Gauss–Legendre in bounded work, the work limit,
+// and exit codes 2/3/4 with the error JSON naming the option (and the column
+// of a bad expression).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -37,18 +41,24 @@ json error_of(const ProcessResult& r) {
   }
 }
 
-// checks: the helix κ = a/(a²+b²) = 0.16, τ = b/(a²+b²) = 0.08 (a = 5, b = 2.5) prints exactly the documented keys and
-// matches the closed form at s = 7 to 1e-9.
+// checks: the helix κ = a/(a²+b²) = 0.16, τ = b/(a²+b²) = 0.08 (a = 5, b = 2.5) prints exactly the documented keys,
+// matches the closed form at s = 7 to 1e-9 and is fitted within the default 1e-6 of its size (box diagonal ≤ 23).
 TEST(ReconstructCli, HelixShapeAndValues) {
   const ProcessResult r = hula({"reconstruct", "--kappa", "0.16", "--tau", "0.08", "--length", "20", "--at", "0,7",
                                 "--start-point", "5,0,0", "--start-frame", "0,2,1,-1,0,0"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const json j = json::parse(r.out);
-  ASSERT_EQ(j.size(), 2u);
+  ASSERT_EQ(j.size(), 3u);
   ASSERT_EQ(j["points"].size(), 2u);
-  ASSERT_EQ(j["fit"].size(), 2u);
+  ASSERT_EQ(j["integration"].size(), 4u);
+  EXPECT_EQ(j["integration"]["method"], "frenet-serret");
+  EXPECT_EQ(j["integration"]["breakpoints"], 0);
+  ASSERT_EQ(j["fit"].size(), 4u);
   EXPECT_TRUE(j["fit"]["control_points"].is_number_integer());
-  EXPECT_LE(j["fit"]["max_deviation"].get<double>(), 1e-10);
+  // The box of the helix from s = 0 to 20 (r = 5, rise 2.5·20/√31.25 ≈ 8.9) has a diagonal below 10√2 + 9 < 24.
+  EXPECT_GT(j["fit"]["tolerance"].get<double>(), 1e-6 * 8.9);
+  EXPECT_LT(j["fit"]["tolerance"].get<double>(), 1e-6 * 24);
+  EXPECT_LE(j["fit"]["max_deviation"].get<double>(), j["fit"]["tolerance"].get<double>());
   for (const auto& p : j["points"]) {
     EXPECT_EQ(p.size(), 5u);
     for (const char* k : {"position", "T", "N", "B"}) EXPECT_EQ(p[k].size(), 3u) << k;
@@ -112,6 +122,7 @@ TEST(ReconstructCli, BadValuesAndUsage) {
       {{"reconstruct", "--kappa", "1", "--tau", "0", "--length", "1", "--start-frame", "1,0,0"}, 3, "start-frame"},
       {{"reconstruct", "--kappa", "1", "--tau", "0", "--length", "1", "--start-point", "1,x,0"}, 3, "start-point"},
       {{"reconstruct", "--kappa", "1", "--tau", "0", "--length", "1", "--tolerance", "0"}, 3, "tolerance"},
+      {{"reconstruct", "--kappa", "1", "--tau", "0", "--length", "1", "--fit-tolerance", "2"}, 3, "fit-tolerance"},
       {{"reconstruct", "--kappa", "1", "--tau", "0", "--length", "1", "--at", "2"}, 3, "s"},
       {{"reconstruct", "--kappa", "sqrt(1-s)", "--tau", "0.1", "--length", "2"}, 4, "kappa"},
   };
@@ -161,6 +172,69 @@ TEST(ReconstructCli, EndPointAndTangentHeldInSpace) {
   const ProcessResult bad = hula({"reconstruct", "--kappa", "1", "--tau", "0", "--length", "1", "--free-length"});
   EXPECT_EQ(bad.exit_code, 3);
   EXPECT_EQ(error_of(bad)["where"]["field"], "free-length") << bad.err;
+}
+
+// Angle θ(s) of the 64-hat κ below in closed form: each hat max(0, 1 − |s − c|/h) integrates to a
+// piecewise quadratic, the sum of the finished hats plus the partial one.
+double hats_angle(double s, double h) {
+  double theta = 0.0;
+  for (int i = 0; i < 64; ++i) {
+    const double c = (2 * i + 1) * h, u = std::clamp(s - (c - h), 0.0, 2 * h);
+    theta += u <= h ? u * u / (2 * h) : h - (2 * h - u) * (2 * h - u) / (2 * h);
+  }
+  return theta;
+}
+
+// checks: a kinked κ law (64 hat functions, 127 kinks, no closed-form antiderivative) reconstructs in bounded work (it
+// used to run for minutes: step control and knot search shrinking to rounding size at each kink): the end point
+// matches ∫(cos θ, sin θ) ds with the closed-form θ by composite 8-point Gauss–Legendre on each kink-free piece to
+// 1e-8, the end tangent the closed-form angle; the integration steps onto every kink (127 breakpoints) in at most 4
+// steps per piece, and the fit within 1e-6 of the size has a knot at each kink and at most 6 segments per piece.
+TEST(ReconstructCli, KinkedHatCurvatureFinishes) {
+  const double h = 8.0 / 128;  // hats of half-width h centred at (2i + 1) h: they touch, kinks every h
+  std::string kappa;
+  for (int i = 0; i < 64; ++i) {
+    if (i) kappa += " + ";
+    kappa += "max(0, 1 - abs(s - " + std::to_string((2 * i + 1) * h) + ")/" + std::to_string(h) + ")";
+  }
+  const ProcessResult r = hula({"reconstruct", "--kappa", kappa, "--tau", "0", "--length", "8", "--at", "8"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(r.out);
+  // Reference: 8-point Gauss–Legendre on 16 sub-pieces of each of the 128 pieces [k h, (k + 1) h].
+  const double x8[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
+  const double w8[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
+  double x = 0.0, y = 0.0;
+  const double piece = h / 16;
+  for (int k = 0; k < 128 * 16; ++k) {
+    const double mid = (k + 0.5) * piece;
+    for (int q = 0; q < 4; ++q)
+      for (const double sign : {-1.0, 1.0}) {
+        const double theta = hats_angle(mid + sign * x8[q] * piece / 2, h);
+        x += w8[q] * piece / 2 * std::cos(theta);
+        y += w8[q] * piece / 2 * std::sin(theta);
+      }
+  }
+  EXPECT_NEAR(j["points"][0]["position"][0].get<double>(), x, 1e-8);
+  EXPECT_NEAR(j["points"][0]["position"][1].get<double>(), y, 1e-8);
+  EXPECT_NEAR(std::atan2(j["points"][0]["T"][1].get<double>(), j["points"][0]["T"][0].get<double>()),
+              std::remainder(hats_angle(8.0, h), 2 * M_PI), 1e-8);
+  EXPECT_EQ(j["integration"]["method"], "planar-numeric-angle");
+  EXPECT_EQ(j["integration"]["breakpoints"], 127);
+  EXPECT_LE(j["integration"]["steps"].get<int>(), 4 * 128);
+  EXPECT_LE(j["fit"]["segments"].get<int>(), 6 * 128);
+  EXPECT_GE(j["fit"]["segments"].get<int>(), 128);
+  EXPECT_LE(j["fit"]["max_deviation"].get<double>(), j["fit"]["tolerance"].get<double>());
+}
+
+// checks: a law too rough for the work limit (|sin(20000 s)|: ~51,000 kinks on [0, 8]) fails with NumericalFailure
+// naming kappa and the fit's limit max_segments = 2000 (exit 4) instead of running for minutes.
+TEST(ReconstructCli, WorkLimitNamesKappa) {
+  const ProcessResult r = hula({"reconstruct", "--kappa", "abs(sin(20000*s))", "--tau", "0", "--length", "8"});
+  EXPECT_EQ(r.exit_code, 4) << r.out;
+  const json e = error_of(r);
+  EXPECT_EQ(e["code"], "NumericalFailure");
+  EXPECT_EQ(e["where"]["field"], "kappa");
+  EXPECT_NE(e["message"].get<std::string>().find("max_segments = 2000"), std::string::npos) << e["message"];
 }
 
 }  // namespace

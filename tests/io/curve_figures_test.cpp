@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "hula/io/json_curve.hpp"
 #include "hula/testing/expect_error.hpp"
@@ -81,6 +82,26 @@ TEST(CurveFigures, AutoViewFollowsThePlane) {
   CurveFigureOptions o;
   o.view = CurveView::Isometric;
   EXPECT_EQ(curve_figures(helix, o).view_description, "isometric, seen from (1, 1, 1)");
+}
+
+// checks the automatic scale of the Combescure fins (thesis 8.3 eq. 44) on the helix (2 cos t, 2 sin t,
+// 0.5 t): τ/κ = 1/4, so with the automatic scale s every fin is the same vertical segment
+// s (0, 0, √(1 + 1/16)) (closed form), and "combescure" parses as a fin kind
+TEST(CurveFigures, HelixCombescureFinsAreEqualVerticalSegments) {
+  CurveFigureOptions o;
+  o.fins = parse_fin_kinds("combescure");
+  ASSERT_EQ(o.fins, std::vector<FinKind>{FinKind::Combescure});
+  const CurveFigures f = curve_figures(
+      parse_curve_json(R"json({"kind": "law", "expression": "vec(2*cos(t), 2*sin(t), 0.5*t)", "parameter": "t",
+                               "domain": [0, 6]})json"),
+      o);
+  ASSERT_EQ(f.fins.size(), 1u);
+  const double length = f.fins[0].scale * std::sqrt(1.0 + 1.0 / 16.0);
+  EXPECT_GT(length, 0.0);
+  const hula::diffgeom::Fins& c = f.fins[0].fins;
+  for (std::size_t i = 0; i < c.tip.size(); ++i) {
+    EXPECT_NEAR(hula::norm(c.tip[i] - c.base[i] - hula::Vec3{0.0, 0.0, length}), 0.0, 1e-9) << i;
+  }
 }
 
 // checks the fin list and view parsers name the entry at fault and the allowed names, and the

@@ -2,11 +2,13 @@
 // The island model on threads (optim/islands.hpp): topologies, exact
 // repetition of synchronous runs, migration really moving individuals,
 // K = 1 equal to the plain algorithm, a failing island stopping the run with
-// its own error, and merged fronts that are non-dominated.
+// its own error, merged fronts that are non-dominated, and the NSGA-II
+// islands' external archives.
 #include "hula/optim/islands.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <stdexcept>
 
@@ -131,6 +133,67 @@ TEST(OptimIslands, BinaryGaAndNsga2) {
   std::size_t accepted = 0;
   for (const IslandReport& isl : rn.islands) accepted += isl.accepted;
   EXPECT_GT(accepted, 0U);
+}
+
+// checks NSGA-II islands' archives against their definition (feasible, mutually non-dominated, at most
+// K x population, one per objective vector), the merged front bounded by the total population, exact
+// repetition with archives, and archive = false merging the final populations alone
+TEST(OptimIslands, Nsga2ArchivesAndMergedFront) {
+  IslandOptions o;
+  o.islands = 3;
+  o.interval = 4;
+  Nsga2Options n;
+  n.population = 12;
+  n.run.stop.generations = 40;
+  n.run.seed = 5;
+  const Problem p = zdt(3, 10);
+  const IslandsResult a = solve_islands(p, n, o);
+  const auto non_dominated = [](const std::vector<Solution>& set) {
+    for (const Solution& x : set) {
+      if (x.violation != 0.0) return false;
+      for (const Solution& y : set)
+        if (&x != &y && (x.objectives == y.objectives || constrained_dominates(x.objectives, 0.0, y.objectives, 0.0)))
+          return false;
+    }
+    return true;
+  };
+  std::size_t largest = 0;
+  for (const IslandReport& isl : a.islands) {
+    ASSERT_FALSE(isl.archive.empty());
+    EXPECT_LE(isl.archive.size(), 3U * 12U);
+    EXPECT_TRUE(non_dominated(isl.archive));
+    largest = std::max(largest, isl.archive.size());
+  }
+  // 40 generations of 12 leave more than 12 distinct front points in an archive.
+  EXPECT_GT(largest, 12U);
+  EXPECT_LE(a.front.size(), 3U * 12U);
+  EXPECT_TRUE(non_dominated(a.front));
+
+  const IslandsResult b = solve_islands(p, n, o);
+  ASSERT_EQ(a.front.size(), b.front.size());
+  for (std::size_t i = 0; i < a.front.size(); ++i) EXPECT_EQ(a.front[i].variables, b.front[i].variables);
+
+  // The archive only observes: without it the populations are the same and the front is theirs.
+  o.archive = false;
+  const IslandsResult c = solve_islands(p, n, o);
+  std::vector<double> objectives;
+  std::size_t members = 0;
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_TRUE(c.islands[i].archive.empty());
+    ASSERT_EQ(c.islands[i].population.size(), a.islands[i].population.size());
+    for (std::size_t q = 0; q < c.islands[i].population.size(); ++q) {
+      EXPECT_EQ(c.islands[i].population[q].variables, a.islands[i].population[q].variables);
+      const std::vector<double>& f = c.islands[i].population[q].objectives;
+      objectives.insert(objectives.end(), f.begin(), f.end());
+      ++members;
+    }
+  }
+  const ParetoRanking ranking = non_dominated_sort(objectives, 2);
+  std::size_t first = 0;
+  for (std::size_t i = 0; i < members; ++i) first += ranking.rank[i] == 0 ? 1 : 0;
+  EXPECT_TRUE(non_dominated(c.front));
+  EXPECT_LE(c.front.size(), first);
+  EXPECT_GT(c.front.size(), 0U);
 }
 
 // checks a failing island ends the run with its own error and without hanging its waiting neighbours

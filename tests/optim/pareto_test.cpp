@@ -80,6 +80,20 @@ TEST(OptimPareto, CrowdingDistanceByHand) {
   EXPECT_DOUBLE_EQ(d[2], 3.0 / 4.0 + 2.0 / 4.0);
 }
 
+// checks: iterative crowding thinning against hand computation on f1 + f2 = 1; one-shot truncation
+// would drop two of the three tied inner points, the iterative one recomputes and keeps an even spread
+TEST(OptimPareto, ThinByCrowdingByHand) {
+  const std::vector<double> f1 = {0.0, 0.125, 0.25, 0.375, 0.5, 1.0};
+  std::vector<double> f;
+  for (const double x : f1) f.insert(f.end(), {x, 1.0 - x});
+  // Distances 2 x (gap around): 0.5, 0.5, 0.5, 1.25 for the inner points: remove index 1 (tie, lowest);
+  // then 0.75, 0.5, 1.25: remove index 3; left 0, 0.25, 0.5, 1.
+  EXPECT_EQ(thin_by_crowding(f, 2, 4), (std::vector<std::size_t>{0, 2, 4, 5}));
+  EXPECT_EQ(thin_by_crowding(f, 2, 2), (std::vector<std::size_t>{0, 5}));
+  EXPECT_EQ(thin_by_crowding(f, 2, 6), (std::vector<std::size_t>{0, 1, 2, 3, 4, 5}));
+  EXPECT_EQ(thin_by_crowding(f, 2, 9), (std::vector<std::size_t>{0, 1, 2, 3, 4, 5}));
+}
+
 double inclusion_exclusion(const std::vector<double>& p, std::size_t m, const std::vector<double>& ref) {
   const std::size_t n = p.size() / m;
   double total = 0.0;

@@ -172,7 +172,8 @@ test('drag a control point, then undo and redo', async ({ page }) => {
   expect(cps[1]).toEqual(moved);
 });
 
-// Appendix 8.4/8.6: a planar curve shows only curvature and normal fins; a space curve all of them.
+// Appendix 8.4–8.6: a planar curve shows only curvature, normal and Bishop fins; a space curve all
+// of them, the Combescure compound included.
 test('fins on a planar and a space curve', async ({ page }) => {
   needsDocuments();
   const doc = await newDoc('fins');
@@ -181,10 +182,18 @@ test('fins on a planar and a space curve', async ({ page }) => {
   await openApp(page, doc);
   for (const [label, expected] of [
     [planar, 'curvature normal bishop-u bishop-v'],
-    [space, 'curvature torsion normal binormal bishop-u bishop-v'],
+    [space, 'curvature torsion normal binormal bishop-u bishop-v combescure'],
   ] as const) {
     await selectCurve(page, label);
-    for (const f of ['curvature', 'torsion', 'normal', 'binormal', 'bishop-u', 'bishop-v']) {
+    for (const f of [
+      'curvature',
+      'torsion',
+      'normal',
+      'binormal',
+      'bishop-u',
+      'bishop-v',
+      'combescure',
+    ]) {
       const cb = page.locator(`input[data-fin="${f}"]`);
       if (await cb.isEnabled()) await cb.check();
     }

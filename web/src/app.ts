@@ -38,6 +38,7 @@ import { NurbsEvaluator } from './geometry/nurbs';
 import { analyseNurbs } from './geometry/analysis';
 import { DesignByCurvature } from './panels/design';
 import { OptimisePanel } from './panels/optimise';
+import { FairingAssistant } from './tools/fairing';
 
 export interface ViewSettings {
   fins: FinKind[];
@@ -45,8 +46,8 @@ export interface ViewSettings {
   scale: number;
   /**
    * Drawing factor per fin kind, fixed when first needed (so combs compare
-   * across edits): the longest curvature (torsion) fin is 15 % of the curve's
-   * extent, unit fins (normal, binormal, Bishop) 10 %. Without it a fin of
+   * across edits): the longest curvature (torsion, Combescure) fin is 15 % of
+   * the curve's extent, unit fins (normal, binormal, Bishop) 10 %. Without it a fin of
    * κ = 0.01 at scale 1 is 0.01 long: invisible.
    */
   finBase?: Partial<Record<FinKind, number>>;
@@ -61,7 +62,31 @@ export const ALL_FINS: FinKind[] = [
   'binormal',
   'bishop-u',
   'bishop-v',
+  'combescure',
 ];
+
+/** Fins that carry nothing on a planar curve (τ = 0): torsion, binormal (8.4, 8.6), Combescure (8.3, 8.5). */
+export const SPACE_FINS: ReadonlySet<FinKind> = new Set<FinKind>([
+  'torsion',
+  'binormal',
+  'combescure',
+]);
+
+/**
+ * The largest Combescure fin of a comb per unit of scale, max |Q − P| / scale = max √(1 + (τ/κ)²):
+ * the server's fins measured, as the curvature fins' factor uses the server's κ.
+ */
+export function combescureSize(
+  comb: { base: readonly (readonly number[])[]; tip: readonly (readonly number[] | null)[] },
+  scale: number,
+): number {
+  let m = 0;
+  comb.tip.forEach((q, i) => {
+    const b = comb.base[i];
+    if (q && b) m = Math.max(m, Math.hypot(...[0, 1, 2].map((k) => (q[k] ?? 0) - (b[k] ?? 0))));
+  });
+  return scale > 0 ? m / scale : 0;
+}
 
 /** Handles (control points or data points) of a curve file: what a drag moves. */
 export function handlesOf(curve: CurveFile | undefined): Vec3[] {
@@ -113,6 +138,7 @@ export class App {
   readonly panels: Panels;
   readonly design: DesignByCurvature;
   readonly optimise: OptimisePanel;
+  readonly fairing: FairingAssistant;
   selected: string | null = null;
   tool: Tool | null = null;
   toolName: ToolName = 'select';
@@ -157,6 +183,7 @@ export class App {
     this.panels = new Panels(this, document.getElementById('side')!);
     this.design = new DesignByCurvature(this);
     this.optimise = new OptimisePanel(this);
+    this.fairing = new FairingAssistant(this, document.getElementById('side')!);
     this.makeGraphs();
     this.bindViews();
     this.bindToolbar();
@@ -166,6 +193,7 @@ export class App {
           for (const label of this.store.entities.keys()) this.refreshAnalysis(label);
           this.redrawAll();
           this.refreshHistory();
+          this.fairing.edited(this.selected);
           break;
         case 'entity':
           if (this.drag?.label === e.label) {
@@ -178,6 +206,7 @@ export class App {
           this.redrawCurve(e.label);
           this.refreshAnalysis(e.label);
           this.refreshHistory();
+          this.fairing.edited(e.label);
           break;
         case 'removed':
           this.viewports.removeCurve(e.label);
@@ -431,6 +460,29 @@ export class App {
     if (reply) this.applyReply(reply);
   }
 
+  /** Reverse the direction of the selected curve (its graphs run the other way). */
+  async reverseSelected(): Promise<void> {
+    const label = this.selected;
+    if (!label) return;
+    const reply = await this.run(() => this.client.reverse(this.store.name, label));
+    if (reply) this.applyReply(reply);
+  }
+
+  /** Split the selected curve at the hovered sample's parameter, else mid-domain; select the first piece. */
+  async splitSelected(): Promise<void> {
+    const label = this.selected;
+    if (!label) return;
+    const t = this.store.analyses.get(label)?.t ?? [];
+    const hovered = this.hoverIndex !== null ? t[this.hoverIndex] : undefined;
+    const at = hovered ?? 0.5 * ((t[0] ?? 0) + (t[t.length - 1] ?? 1));
+    const reply = await this.run(() => this.client.split(this.store.name, label, at));
+    if (!reply) return;
+    this.applyReply(reply);
+    const first = reply.labels[0];
+    if (first !== undefined) this.select(String(first));
+    this.setStatus(`Split at t = ${Number(at.toPrecision(6))}`);
+  }
+
   async deleteSelected(): Promise<void> {
     const label = this.selected;
     if (!label) return;
@@ -471,9 +523,17 @@ export class App {
       Math.max(0, ...v.map((x) => (x !== null && Number.isFinite(x) ? Math.abs(x) : 0)));
     for (const kind of Object.keys(a.combs) as FinKind[]) {
       if (s.finBase[kind] !== undefined) continue;
-      const m = kind === 'curvature' ? largest(a.kappa) : kind === 'torsion' ? largest(a.tau) : 1;
+      const m =
+        kind === 'curvature'
+          ? largest(a.kappa)
+          : kind === 'torsion'
+            ? largest(a.tau)
+            : kind === 'combescure'
+              ? combescureSize(a.combs[kind]!, s.scale)
+              : 1;
       if (m === 0) continue; // a zero comb: fix the factor once it has a size
-      s.finBase[kind] = (kind === 'curvature' || kind === 'torsion' ? 0.15 : 0.1) * (extent / m);
+      const quantity = kind === 'curvature' || kind === 'torsion' || kind === 'combescure';
+      s.finBase[kind] = (quantity ? 0.15 : 0.1) * (extent / m);
     }
     return s.finBase;
   }
@@ -537,7 +597,7 @@ export class App {
   /** The fins drawn for a curve: planar curves show only the meaningful ones (8.4, 8.6). */
   shownFins(label: string, a: Analysis | undefined): FinKind[] {
     const s = this.settingsOf(label);
-    if (a?.planar) return s.fins.filter((f) => f !== 'torsion' && f !== 'binormal');
+    if (a?.planar) return s.fins.filter((f) => !SPACE_FINS.has(f));
     return s.fins;
   }
 
@@ -575,6 +635,7 @@ export class App {
     const previous = this.selected;
     this.selected = label;
     if (this.ghost && this.ghost.label !== label) this.setGhost(null);
+    if (previous !== label) this.fairing.edited(label);
     if (previous) this.redrawCurve(previous);
     if (label) this.redrawCurve(label);
     this.updateGraphs();
@@ -642,7 +703,10 @@ export class App {
 
   updateGraphs(): void {
     const a = this.selected ? this.analysisOf(this.selected) : undefined;
-    const ghost = this.ghost?.label === this.selected ? this.ghost.analysis : undefined;
+    // The fairing assistant's ghost, when there is one, else the curve before the last edit.
+    const ghost =
+      this.fairing.analysis ??
+      (this.ghost?.label === this.selected ? this.ghost.analysis : undefined);
     for (const g of this.graphs) g.show(a, ghost);
   }
 
@@ -811,7 +875,11 @@ export class App {
           pending: null,
           pendingStamp: 0,
           handles: handles.slice(),
-          local: curve !== undefined && NurbsEvaluator.of(curve) !== null,
+          // Combescure fins are the server's alone: such a drag follows its analysis.
+          local:
+            curve !== undefined &&
+            NurbsEvaluator.of(curve) !== null &&
+            !this.settingsOf(this.selected).fins.includes('combescure'),
           dirty: false,
         };
         this.settling = this.selected;
@@ -851,6 +919,7 @@ export class App {
     const p = this.viewports.pointOn(view, x, y, dragPlane(view, start));
     if (!p) return;
     d.handles[d.index] = p;
+    this.fairing.pointerMoved();
     // The event's own time: the latency includes the wait for the page to take the event.
     if (!this.pointerStamp) this.pointerStamp = ev.timeStamp;
     d.pendingStamp = ev.timeStamp;
@@ -911,6 +980,8 @@ export class App {
         this.applyReply(reply);
         // A curve the page cannot evaluate follows through the server's analysis.
         if (!d.local) this.refreshAnalysis(d.label);
+        // The fairing assistant refits what the server now holds.
+        this.fairing.edited(d.label);
       })
       .catch((e: unknown) => {
         this.toast(e);
@@ -960,6 +1031,11 @@ export class App {
 
   get dragging(): boolean {
     return this.drag !== null;
+  }
+
+  /** A drag position not yet answered by the server. */
+  get dragPending(): boolean {
+    return this.drag !== null && (this.drag.inFlight || this.drag.pending !== null);
   }
 
   fitAll(): void {
@@ -1018,6 +1094,12 @@ export class App {
       case 'elevate':
         void this.elevateSelected();
         break;
+      case 'split':
+        void this.splitSelected();
+        break;
+      case 'reverse':
+        void this.reverseSelected();
+        break;
       case 'fit':
         this.fitAll();
         break;
@@ -1041,6 +1123,9 @@ export class App {
         break;
       case 'help':
         this.panels.helpDialog();
+        break;
+      case 'accept-fairing':
+        void this.fairing.accept();
         break;
     }
   }
@@ -1129,6 +1214,9 @@ export class App {
       backspace: 'delete',
       u: 'insert-knot',
       d: 'elevate',
+      x: 'split',
+      w: 'reverse',
+      a: 'accept-fairing',
     };
     const views: Record<string, ViewName> = { '1': 'top', '2': 'front', '3': 'side', '4': 'persp' };
     if (tools[k]) this.setTool(tools[k]);
@@ -1156,6 +1244,7 @@ export class App {
       !this.viewports.renderPending &&
       !this.drag &&
       !this.design.busy &&
+      !this.fairing.busy &&
       !this.optimise.running
     );
   }

@@ -237,7 +237,8 @@ Command add_analyse(CLI::App& app) {
                   "radius.svg (range-limited radius of curvature), speed.svg and logcurvature.svg into this directory");
   sub->add_option("--fins", args->fins,
                   "Fin kinds, comma-separated: curvature, torsion, normal, binormal, bishop (U and V), bishop-u, "
-                  "bishop-v; adds \"fins\" to the output and draws them in curve.svg");
+                  "bishop-v, combescure (the Combescure compound P + s(tau/kappa T + B)); adds \"fins\" to the "
+                  "output and draws them in curve.svg");
   add_real_option(sub, "--fin-scale", args->fin_scale, 0.0, std::numeric_limits<double>::max(), true,
                   "Fin scale s > 0 for every kind (default: the longest fin a fifth of the curve's size)");
   add_integer_option(sub, "--fin-density", args->fin_density, 2, 100000, "Fins per kind, in [2, 100000] (default 120)");

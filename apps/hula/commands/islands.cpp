@@ -80,6 +80,7 @@ IslandOutcome run_islands(const optim::Problem& problem, const optim::IslandAlgo
     j["sent"] = i.sent;
     j["received"] = i.received;
     j["accepted"] = i.accepted;
+    if (problem.objectives > 1) j["archive"] = i.archive.size();
     j["migrations"] = std::move(migrations);
     per.push_back(std::move(j));
   }

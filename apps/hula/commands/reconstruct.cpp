@@ -2,10 +2,13 @@
 // `hula reconstruct --kappa EXPR --tau EXPR --length L`: the curve with the
 // given curvature and torsion laws of arc length `s` (thesis 8.2.2, eq. 34;
 // hula::intrinsic::reconstruct), printed as position and Frenet frame at
-// requested arc lengths plus a quintic NURBS fitted within the tolerance
-// ({"points": [{"s", "position", "T", "N", "B"}], "fit": {"control_points",
-// "max_deviation"}}; control_points is the count). -o writes the fitted NURBS
-// atomically.
+// requested arc lengths plus a quintic NURBS fitted within the fit tolerance
+// ({"points": [{"s", "position", "T", "N", "B"}], "integration": {"method",
+// "steps", "rejected_steps", "breakpoints"}, "fit": {"control_points",
+// "segments", "tolerance", "max_deviation"}}; control_points is the count).
+// -o writes the fitted NURBS atomically. The work is bounded
+// (intrinsic::kFrontEndMaxSteps, kFrontEndMaxSegments): a law too rough for
+// them fails with an error naming kappa and the limit.
 //
 // With `--end-point x,y,z` and/or `--end-tangent x,y,z` (optionally `--free-length`) it solves the
 // boundary-value problem of studies::reconstruct_direct instead (planar or space): the curve closest to
@@ -21,6 +24,7 @@
 #include "hula/io/atomic_file.hpp"
 #include "hula/io/json_curve.hpp"
 #include "hula/io/match_study_file.hpp"
+#include "hula/io/reconstruction_json.hpp"
 #include "hula/law/parser.hpp"
 #include "hula/studies/direct_reconstruction.hpp"
 
@@ -35,6 +39,7 @@ struct ReconstructArgs {
   std::string start_point;
   std::string start_frame;
   double tolerance = 1e-10;
+  double fit_tolerance = intrinsic::kFrontEndFitTolerance;
   std::string at;
   std::string output;
   std::string end_point;
@@ -92,7 +97,14 @@ int run_reconstruct(const ReconstructArgs& a) {
     start.normal = {v[3], v[4], v[5]};
   }
   intrinsic::NurbsFitOptions fit_options;
-  fit_options.tolerance = a.tolerance;
+  fit_options.tolerance = a.fit_tolerance;
+  fit_options.relative = true;
+  fit_options.max_segments = intrinsic::kFrontEndMaxSegments;
+  try {
+    fit_options.validate();
+  } catch (const Error& e) {
+    throw Error(e.code(), "--fit-" + e.message(), ErrorWhere{.field = "fit-tolerance"});
+  }
   Json doc = Json::object();
   std::optional<intrinsic::IntrinsicCurve> curve;
   std::optional<intrinsic::NurbsFitResult> fit;
@@ -125,8 +137,9 @@ int run_reconstruct(const ReconstructArgs& a) {
   } else {
     intrinsic::ReconstructionOptions options;
     options.tolerance = a.tolerance;
+    options.max_steps = intrinsic::kFrontEndMaxSteps;
     curve = intrinsic::reconstruct(kappa, tau, "s", a.length, start, options);
-    fit = intrinsic::fit_nurbs(*curve, fit_options);
+    fit = intrinsic::fit_nurbs_converged(*curve, fit_options);
   }
   const double length = curve->length();
   std::vector<double> ss;
@@ -137,11 +150,9 @@ int run_reconstruct(const ReconstructArgs& a) {
   Json points = Json::array();
   for (const intrinsic::FramePoint& p : curve->evaluate(ss)) points.push_back(point_json(p));
   if (!a.output.empty()) io::write_curve_file(a.output, fit->curve);
-  Json f = Json::object();
-  f["control_points"] = fit->curve.control_points().size();
-  f["max_deviation"] = fit->max_deviation;
   doc["points"] = std::move(points);
-  doc["fit"] = std::move(f);
+  doc["integration"] = io::integration_summary(*curve);
+  doc["fit"] = io::fit_summary(*fit);
   print_result(doc, a.output);
   return kExitOk;
 }
@@ -160,7 +171,10 @@ Command add_reconstruct(CLI::App& app) {
                   "Start tangent and normal Tx,Ty,Tz,Nx,Ny,Nz (normalised, N made orthogonal to T; default "
                   "1,0,0,0,1,0)");
   sub->add_option("--tolerance", args->tolerance,
-                  "Position tolerance of the integration and of the NURBS fit, in [1e-13, 1e-2] (default 1e-10)");
+                  "Position tolerance of the integration (the printed points), in [1e-13, 1e-2] (default 1e-10)");
+  sub->add_option("--fit-tolerance", args->fit_tolerance,
+                  "Tolerance of the NURBS fit relative to the curve's size (bounding-box diagonal), in [1e-13, 1] "
+                  "(default 1e-6)");
   sub->add_option("--at", args->at, "Arc lengths s0,s1,... in [0, L] to print (default 0, L/4, L/2, 3L/4, L)");
   sub->add_option("--end-point", args->end_point,
                   "Hold the end at x,y,z: the curve closest to the laws that reaches it (boundary-value problem)");

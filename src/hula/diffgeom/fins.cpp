@@ -8,6 +8,7 @@
 
 #include "hula/core/error.hpp"
 #include "hula/diffgeom/bishop.hpp"
+#include "hula/diffgeom/combescure.hpp"
 #include "hula/diffgeom/frenet_law.hpp"
 #include "hula/law/derive.hpp"
 
@@ -65,6 +66,18 @@ Fins build(std::span<const FrenetPoint> pts, const FinOptions& o) {
         ok = bishop.frames[i].defined;
         dir = bishop.frames[i].v * -1.0;
         break;
+      case FinKind::Combescure: {
+        // Q − P = s (τ/κ T + B) (eq. 44 with C = s) as a fin: the unit direction of τ/κ T + B with the
+        // quantity |τ/κ T + B| = √(1 + (τ/κ)²), so the log scale applies to its length like to the
+        // other fins. Defined where combescure() is (not at planar points).
+        ok = combescure(p, 1.0, o.frenet.tolerance.angular).defined;
+        if (ok) {
+          const Vec3 r = p.tangent * (p.torsion / p.curvature) + p.binormal;
+          q = norm(r);
+          dir = r * (1.0 / q);
+        }
+        break;
+      }
     }
     if (!ok) continue;
     f.tip[i] = p.position + dir * length(q);
@@ -95,8 +108,16 @@ std::string_view fin_kind_name(FinKind kind) noexcept {
       return "bishop-u";
     case FinKind::BishopV:
       return "bishop-v";
+    case FinKind::Combescure:
+      return "combescure";
   }
   return "unknown";
+}
+
+std::optional<FinKind> fin_kind_from_name(std::string_view name) noexcept {
+  for (const FinKind k : kFinKinds)
+    if (fin_kind_name(k) == name) return k;
+  return std::nullopt;
 }
 
 void FinOptions::validate() const {
@@ -114,6 +135,11 @@ Fins fins(const nurbs::NurbsCurve& curve, const FinOptions& options) {
   std::vector<FrenetPoint> pts(ts.size());
   frenet(curve, ts, pts, options.frenet);
   return build(pts, options);
+}
+
+Fins fins(std::span<const FrenetPoint> frames, const FinOptions& options) {
+  options.validate();
+  return build(frames, options);
 }
 
 Fins fins(const curve::Curve& curve, const FinOptions& options) {
@@ -150,6 +176,8 @@ law::Law fin_law(const law::Law& curve, std::string_view parameter, const FinOpt
       return r - s * frenet_laws(r, parameter).normal;
     case FinKind::Binormal:
       return r - s * frenet_laws(r, parameter).binormal;
+    case FinKind::Combescure:
+      return combescure_law(r, parameter, s);
     case FinKind::BishopU:
     case FinKind::BishopV:
       break;

@@ -3,11 +3,14 @@
 // a frame direction scaled by a quantity, drawn as a comb, with the polyline
 // through the tips (the comb's envelope):
 //   curvature fin P − s κN, torsion fin P + s τB, normal fin P − s N, binormal fin
-//   P − s B, and the Bishop variants P − s U, P − s V.
+//   P − s B, the Bishop variants P − s U, P − s V, and the Combescure compound
+//   fin P + s (τ/κ T + B) (thesis 8.3 eq. 44 with C = s, diffgeom::combescure).
 // κN is the curvature vector, so the curvature fin is defined wherever the
 // tangent is (it has length 0 where κ = 0), also through inflections.
 #pragma once
+#include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -26,10 +29,20 @@ enum class FinKind {
   Binormal,   ///< P − s B (undefined where the frame is)
   BishopU,    ///< P − s U (Bishop frame; defined wherever T is)
   BishopV,    ///< P − s V (Bishop frame)
+  /// P + s (τ/κ T + B): the Combescure compound Q of eq. 44 with C = s (combescure()); undefined where
+  /// the frame is and at planar points (|τ| ≤ angular · κ), so everywhere on a planar curve (8.3, 8.5)
+  Combescure,
 };
 
-/// "curvature", "torsion", "normal", "binormal", "bishop-u", "bishop-v".
+/// Every fin kind, in the order of the enum.
+inline constexpr std::array<FinKind, 7> kFinKinds{FinKind::Curvature, FinKind::Torsion, FinKind::Normal,
+                                                  FinKind::Binormal,  FinKind::BishopU, FinKind::BishopV,
+                                                  FinKind::Combescure};
+
+/// "curvature", "torsion", "normal", "binormal", "bishop-u", "bishop-v", "combescure".
 [[nodiscard]] std::string_view fin_kind_name(FinKind kind) noexcept;
+/// The kind named `name` (fin_kind_name's spelling), or nullopt.
+[[nodiscard]] std::optional<FinKind> fin_kind_from_name(std::string_view name) noexcept;
 
 /// Options of fins().
 struct FinOptions {
@@ -64,11 +77,16 @@ struct Fins {
 /// The fins of a curve value over its domain, exactly from its law when it has one.
 /// @throws hula::Error(Errc::InvalidOption) for bad options
 [[nodiscard]] Fins fins(const curve::Curve& curve, const FinOptions& options = {});
+/// The fins at Frenet points already evaluated, one fin per point (options.density is not used):
+/// equal to fins(curve, options) when `frames` are the curve's at its fin parameters.
+/// @throws hula::Error(Errc::InvalidOption) for bad options
+[[nodiscard]] Fins fins(std::span<const FrenetPoint> frames, const FinOptions& options);
 
 /// The fin curve (the comb's envelope) of a law curve as an exact law of `parameter`:
 /// Curvature P − s κN, built as P − s ((r'·r') r'' − (r'·r'') r') / |r'|⁴ so it stays defined through
 /// inflections; Torsion P + s τB, Normal P − s N, Binormal P − s B from frenet_laws (undefined where
-/// the frame is). 2-vector laws are embedded in z = 0.
+/// the frame is); Combescure combescure_law with c = s (NaN where κ = 0). 2-vector laws are embedded
+/// in z = 0.
 /// @throws hula::Error(Errc::InvalidArgument) naming "law" for a scalar law
 /// @throws hula::Error(Errc::InvalidOption) naming "kind" for the Bishop fins (no closed law) and
 ///   "log_scale" when it is set, or for other bad options

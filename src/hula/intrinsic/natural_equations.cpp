@@ -86,6 +86,11 @@ struct IntrinsicCurve::Impl {
   std::vector<double> s;
   std::vector<State> x;
   std::size_t rejected = 0;
+  // Interior arc lengths where κ or τ is not smooth (law::singularities), increasing: every step
+  // ends on them, so each step integrates a smooth piece (and they are nodes of the dense output).
+  std::vector<double> breaks;
+  // The laws named in errors of the integration as a whole ("kappa" or "kappa and tau").
+  const char* laws_name = "kappa";
 
   // Values of the compiled laws at s (κ first), with the law named when undefined.
   std::array<double, 2> eval_laws(double at) const {
@@ -189,31 +194,40 @@ struct IntrinsicCurve::Impl {
     double at = 0.0;
     double h = std::min(length, 0.25);
     std::size_t attempts = 0;
+    std::size_t next_break = 0;  // index into breaks of the next step end to hit exactly
     while (at < length) {
       if (++attempts > max_steps)
         throw Error(Errc::NumericalFailure,
-                    "the integration needed more than max_steps = " + std::to_string(max_steps) +
+                    std::string(laws_name) +
+                        ": the integration needed more than max_steps = " + std::to_string(max_steps) +
                         " steps (reached s = " + format_number(at) + " of " + format_number(length) + ")",
-                    ErrorWhere{.field = "max_steps"});
-      const bool last = at + h >= length;
-      if (last) h = length - at;
+                    ErrorWhere{.field = "kappa"});
+      const double stop = next_break < breaks.size() ? breaks[next_break] : length;
+      // A step never crosses a kink of κ or τ: the RKF78 error estimate assumes a smooth right-hand
+      // side, and across a kink it shrinks the step to rounding size.
+      const bool last = at + h >= stop;
+      const double h_free = h;
+      if (last) h = stop - at;
       State trial = y;
       double t_try = at, h_try = h;
       if (stepper.try_step(system, trial, t_try, h_try) == odeint::success) {
         if (kind != IntegrationKind::PlanarExactAngle) orthonormalise(trial);
         y = trial;
-        at = last ? length : t_try;
+        at = last ? stop : t_try;
         s.push_back(at);
         x.push_back(y);
+        // A step cut short to land on a kink says nothing about the next smooth piece.
+        if (last) h_try = std::max(h_try, h_free);
       } else {
         ++rejected;
       }
       h = h_try;
       // A tiny remainder would be a wasted step of rounding size: absorb it into this one.
-      if (length - at < 1e-12 * length && at < length) {
-        s.back() = length;
-        break;
+      if (stop - at < 1e-12 * length && at < stop) {
+        s.back() = stop;
+        at = stop;
       }
+      if (at == stop && stop < length) ++next_break;
       if (!(h > 0.0) || !std::isfinite(h))
         throw Error(Errc::NumericalFailure, "the step size collapsed at s = " + format_number(at),
                     ErrorWhere{.field = "kappa"});
@@ -239,17 +253,19 @@ struct IntrinsicCurve::Impl {
     s.push_back(0.0);
     x.push_back(y);
     std::complex<double> z{0.0, 0.0};
-    // Intervals to do, last = leftmost; each entry is [a, b] with its one-rule value.
-    std::vector<std::pair<double, double>> todo{{0.0, length}};
+    // Intervals [a, b] to do, last = leftmost; at first the smooth pieces between the kinks.
+    std::vector<std::pair<double, double>> todo;
+    for (std::size_t i = breaks.size() + 1; i-- > 0;)
+      todo.emplace_back(i == 0 ? 0.0 : breaks[i - 1], i == breaks.size() ? length : breaks[i]);
     std::size_t attempts = 0;
     while (!todo.empty()) {
       const auto [a, b] = todo.back();
       todo.pop_back();
       if (++attempts > max_steps)
         throw Error(Errc::NumericalFailure,
-                    "the quadrature needed more than max_steps = " + std::to_string(max_steps) +
+                    "kappa: the quadrature needed more than max_steps = " + std::to_string(max_steps) +
                         " intervals (reached s = " + format_number(a) + " of " + format_number(length) + ")",
-                    ErrorWhere{.field = "max_steps"});
+                    ErrorWhere{.field = "kappa"});
       const double m = 0.5 * (a + b);
       const std::complex<double> whole = chord(a, b), left = chord(a, m), halves = left + chord(m, b);
       if (std::abs(whole - halves) <= eps * (b - a) || !(m > a && m < b)) {
@@ -295,6 +311,7 @@ IntegrationKind IntrinsicCurve::method() const noexcept { return impl_->kind; }
 double IntrinsicCurve::tolerance() const noexcept { return impl_->tolerance; }
 std::span<const double> IntrinsicCurve::nodes() const noexcept { return impl_->s; }
 std::size_t IntrinsicCurve::rejected_steps() const noexcept { return impl_->rejected; }
+std::span<const double> IntrinsicCurve::breakpoints() const noexcept { return impl_->breaks; }
 
 FramePoint IntrinsicCurve::evaluate(double s) const {
   const double L = impl_->length;
@@ -373,11 +390,19 @@ std::shared_ptr<IntrinsicCurve::Impl> prepare(const law::Law& kappa, std::string
   return impl;
 }
 
-// Rejects a pole of κ or τ on [0, L] before integrating: an integrator approaching 1/(s − 1)
-// would shrink its steps until the budget runs out. A candidate point (division by zero, log
-// or tan pole, power base at 0) is a pole when |f| at δ = 1e-7 max(1, L) on either side exceeds
-// 1 / (1000 δ), the size of a simple pole; removable points such as sin(s − 1)/(s − 1) pass.
-void reject_poles(const law::Law& f, std::string_view parameter, double length, const char* field) {
+// The law's singularity analysis before integrating (law::singularities: roots of each node's
+// condition law, no sampling of the law itself).
+// - Rejects a pole of κ or τ on [0, L]: an integrator approaching 1/(s − 1) would shrink its
+//   steps until the budget runs out. A candidate point (division by zero, log or tan pole, power
+//   base at 0) is a pole when |f| at δ = 1e-7 max(1, L) on either side exceeds 1 / (1000 δ), the
+//   size of a simple pole; removable points such as sin(s − 1)/(s − 1) pass.
+// - Appends to `breaks` every other reported point inside (0, L) where f is finite: kinks and
+//   jumps (abs, min/max, sign, piecewise, comparisons, NURBS knots), sqrt or asin boundaries. The
+//   integration ends steps there and the NURBS fit puts knots there, so that both work on smooth
+//   pieces (64 kinks cost 64 steps, not a step control shrinking to rounding size at each).
+//   Points where f is undefined (a removable 0/0) are left out: a node there could not be evaluated.
+void analyse_singularities(const law::Law& f, std::string_view parameter, double length, const char* field,
+                           std::vector<double>& breaks) {
   if (f.is_constant()) return;
   law::SingularityOptions so;
   so.samples = 2;  // undefined regions are found by the integration itself, with their s
@@ -388,8 +413,13 @@ void reject_poles(const law::Law& f, std::string_view parameter, double length, 
   const double delta = 1e-7 * std::max(1.0, length);
   for (const law::Singularity& p : report.points) {
     if (p.kind != law::SingularityKind::DivisionByZero && p.kind != law::SingularityKind::LogBoundary &&
-        p.kind != law::SingularityKind::TanPole && p.kind != law::SingularityKind::PowerBase)
+        p.kind != law::SingularityKind::TanPole && p.kind != law::SingularityKind::PowerBase) {
+      double v = 0.0;
+      const double in[1] = {p.t};
+      if (p.t > 0.0 && p.t < length && tape.evaluate(in, std::span<double>(&v, 1)) && std::isfinite(v))
+        breaks.push_back(p.t);
       continue;
+    }
     double worst = 0.0;
     for (const double at : {p.t - delta, p.t + delta}) {
       if (at < 0.0 || at > length) continue;
@@ -404,6 +434,19 @@ void reject_poles(const law::Law& f, std::string_view parameter, double length, 
                       "): the curve is not defined on [0, " + format_number(length) + "]",
                   ErrorWhere{.field = field});
   }
+}
+
+// Sorts the kinks of κ and τ into impl->breaks, merging points closer than 1e-12 L and dropping
+// those as close to the ends (a step of rounding size would be wasted there).
+void set_breaks(IntrinsicCurve::Impl& impl, std::vector<double> breaks) {
+  std::sort(breaks.begin(), breaks.end());
+  const double merge = 1e-12 * impl.length;
+  double last = 0.0;
+  for (const double b : breaks)
+    if (b - last > merge && impl.length - b > merge) {
+      impl.breaks.push_back(b);
+      last = b;
+    }
 }
 
 law::Tape compile(std::span<const law::Law> laws, std::string_view parameter, const char* field) {
@@ -424,7 +467,9 @@ IntrinsicCurve reconstruct_planar(const law::Law& kappa, std::string_view parame
     const law::Law one[1] = {kappa};
     (void)compile(one, parameter, "kappa");  // names "kappa" for a foreign parameter
   }
-  reject_poles(kappa, parameter, length, "kappa");
+  std::vector<double> breaks;
+  analyse_singularities(kappa, parameter, length, "kappa", breaks);
+  set_breaks(*impl, std::move(breaks));
   // θ(s) = F(s) − F(0) when the antiderivative exists and κ has no pole or undefined region on
   // [0, L]. Only the closed form decides: no quadrature here (adaptive quadrature of a kinked κ,
   // e.g. a sum of hat functions, took minutes just to pick the method); the ODE reports an
@@ -474,8 +519,11 @@ IntrinsicCurve reconstruct(const law::Law& kappa, const law::Law& tau, std::stri
     const law::Law other[1] = {tau};
     (void)compile(other, parameter, "tau");
   }
-  reject_poles(kappa, parameter, length, "kappa");
-  reject_poles(tau, parameter, length, "tau");
+  std::vector<double> breaks;
+  analyse_singularities(kappa, parameter, length, "kappa", breaks);
+  analyse_singularities(tau, parameter, length, "tau", breaks);
+  set_breaks(*impl, std::move(breaks));
+  impl->laws_name = "kappa and tau";
   const law::Law outs[2] = {kappa, tau};
   impl->laws = compile(outs, parameter, "kappa");
   impl->kind = IntegrationKind::FrenetSerret;
@@ -527,83 +575,138 @@ NurbsFitResult fit_nurbs(const IntrinsicCurve& curve, const NurbsFitOptions& opt
     const double size = distance(lo, hi);
     tolerance *= size > 0.0 ? size : L;
   }
-  // Greedy longest segments (header). Half the tolerance as the target leaves room for the final,
-  // independent measurement on the NURBS itself.
+  // Greedy longest segments within each smooth piece (header). Half the tolerance as the target
+  // leaves room for the final, independent measurement on the NURBS itself.
   const double target = 0.5 * tolerance;
   const int m = options.check_samples;
   // Below this length a segment is accepted even if it misses the target (the tolerance is then
   // below what the integration resolves): converged = false.
   const double min_length = 1e-9 * L;
-  std::vector<FramePoint> pts{curve.evaluate(0.0)};
+  std::vector<double> edges{0.0};
+  edges.insert(edges.end(), curve.breakpoints().begin(), curve.breakpoints().end());
+  edges.push_back(L);
+  // The curve at a piece's end with κ from inside the piece (its one-sided limit, equal to κ there
+  // unless κ jumps): κ at δ inside, δ far below any length the fit resolves.
+  const auto piece_end = [&](double at, double inside) {
+    FramePoint q = curve.evaluate(at);
+    const double delta = std::min(1e-11 * std::max(1.0, L), 0.25 * std::abs(inside - at));
+    q.curvature = curve.evaluate(at + std::copysign(delta, inside - at)).curvature;
+    return q;
+  };
+  // Runs of breakpoints with C2 joins; a new run starts where κ jumps.
+  std::vector<std::vector<FramePoint>> runs{{piece_end(0.0, edges[1])}};
+  std::size_t segments = 0;
   bool converged = true;
-  while (pts.back().s < L) {
-    const FramePoint a = pts.back();
-    if (pts.size() > options.max_segments) {
-      pts.push_back(curve.evaluate(L));
-      converged = false;
-      break;
-    }
-    const auto fits = [&](const FramePoint& b) { return segment_deviation(curve, a, b, m) <= target; };
-    FramePoint good = curve.evaluate(L);
-    if (!fits(good)) {
-      // Halve the remaining length until a segment fits, then bisect between fitting and failing ends.
-      double fail = L, ok = a.s + 0.5 * (L - a.s);
-      bool too_short = false;
-      for (;;) {
-        good = curve.evaluate(ok);
-        if (fits(good)) break;
-        fail = ok;
-        if (ok - a.s <= min_length) {
-          too_short = true;
-          converged = false;
-          break;
+  for (std::size_t e = 0; e + 1 < edges.size(); ++e) {
+    const double end = edges[e + 1];
+    const FramePoint last = piece_end(end, edges[e]);
+    std::vector<FramePoint>& pts = runs.back();
+    while (pts.back().s < end) {
+      const FramePoint a = pts.back();
+      ++segments;
+      if (segments > options.max_segments) {
+        // Out of budget: one segment to the end of the piece.
+        pts.push_back(last);
+        converged = false;
+        break;
+      }
+      const auto fits = [&](const FramePoint& b) { return segment_deviation(curve, a, b, m) <= target; };
+      FramePoint good = last;
+      if (!fits(good)) {
+        // Halve the remaining length until a segment fits, then bisect between fitting and failing ends.
+        double fail = end, ok = a.s + 0.5 * (end - a.s);
+        bool too_short = false;
+        for (;;) {
+          good = curve.evaluate(ok);
+          if (fits(good)) break;
+          fail = ok;
+          if (ok - a.s <= min_length) {
+            too_short = true;
+            converged = false;
+            break;
+          }
+          ok = a.s + 0.5 * (ok - a.s);
         }
-        ok = a.s + 0.5 * (ok - a.s);
+        for (int step = 0; step < 8 && !too_short; ++step) {
+          const double mid = 0.5 * (good.s + fail);
+          const FramePoint trial = curve.evaluate(mid);
+          if (fits(trial))
+            good = trial;
+          else
+            fail = mid;
+        }
       }
-      for (int step = 0; step < 8 && !too_short; ++step) {
-        const double mid = 0.5 * (good.s + fail);
-        const FramePoint trial = curve.evaluate(mid);
-        if (fits(trial))
-          good = trial;
-        else
-          fail = mid;
-      }
+      pts.push_back(good);
     }
-    pts.push_back(good);
+    if (e + 2 < edges.size()) {
+      const FramePoint next = piece_end(end, edges[e + 2]);
+      // κ jumps: r'' = κN jumps, so the join can only be C1 (a new run, knot multiplicity 5).
+      if (std::abs(next.curvature - last.curvature) >
+          1e-9 * std::max({1.0, std::abs(next.curvature), std::abs(last.curvature)}))
+        runs.push_back({next});
+    }
   }
-  std::vector<Vec3> p, d, a;
-  std::vector<double> params;
-  p.reserve(pts.size());
-  d.reserve(pts.size());
-  a.reserve(pts.size());
-  params.reserve(pts.size());
-  // hermite_quintic maps the parameters to [0, 1]: derivatives are given in that parameter
-  // (d/dt = L d/ds), then the knots are scaled back to arc length.
-  for (const FramePoint& q : pts) {
-    p.push_back(q.position);
-    d.push_back(L * q.tangent);
-    a.push_back((L * L * q.curvature) * q.normal);
-    params.push_back(q.s);
+  // Each run as a quintic Hermite (C2, triple knots) on its arc-length interval, then the runs
+  // joined end to start with a knot of multiplicity 5 (the shared end point kept once).
+  std::vector<double> knots;
+  std::vector<Vec3> cps;
+  for (const std::vector<FramePoint>& run : runs) {
+    const double s0 = run.front().s, s1 = run.back().s, span = s1 - s0;
+    std::vector<Vec3> p, d, a;
+    std::vector<double> params;
+    p.reserve(run.size());
+    d.reserve(run.size());
+    a.reserve(run.size());
+    params.reserve(run.size());
+    // hermite_quintic maps the parameters to [0, 1]: derivatives are given in that parameter
+    // (d/dt = span d/ds), then the knots are mapped back to arc length.
+    for (const FramePoint& q : run) {
+      p.push_back(q.position);
+      d.push_back(span * q.tangent);
+      a.push_back((span * span * q.curvature) * q.normal);
+      params.push_back(q.s);
+    }
+    const nurbs::NurbsCurve piece = nurbs::hermite_quintic(p, d, a, params, 3);
+    const std::span<const double> u = piece.knots().values();
+    const std::span<const Vec3> c = piece.control_points();
+    // The unit knots end exactly at 0 and 1: the ends map exactly to s0 and s1.
+    const auto to_s = [&](double k) { return k == 1.0 ? s1 : s0 + k * span; };
+    if (knots.empty()) {
+      for (std::size_t i = 0; i + 6 < u.size(); ++i) knots.push_back(to_s(u[i]));
+      cps.assign(c.begin(), c.end());
+    } else {
+      for (std::size_t i = 6; i + 6 < u.size(); ++i) knots.push_back(to_s(u[i]));
+      cps.insert(cps.end(), c.begin() + 1, c.end());
+    }
+    // The run's end: multiplicity 6 at L, 5 at a join (the next run's interior knots follow).
+    knots.insert(knots.end(), &run == &runs.back() ? 6 : 5, s1);
   }
-  const nurbs::NurbsCurve unit_curve = nurbs::hermite_quintic(p, d, a, params, 3);
-  std::vector<double> knots(unit_curve.knots().values().begin(), unit_curve.knots().values().end());
-  // The unit knots end exactly at 0 and 1, so the scaled ones end exactly at 0 and L.
-  for (double& k : knots) k *= L;
-  std::vector<Vec3> cps(unit_curve.control_points().begin(), unit_curve.control_points().end());
   nurbs::NurbsCurve fitted(5, std::move(knots), std::move(cps));
+  // The deviation re-measured on the NURBS, segment by segment (consecutive points of each run).
   double worst = 0.0;
-  for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
-    const double h = pts[i + 1].s - pts[i].s;
-    for (int j = 1; j <= m; ++j) {
-      const double at = pts[i].s + h * static_cast<double>(j) / (m + 1);
-      const std::vector<Vec3> c = fitted.derivatives(at, 0);
-      worst = std::max(worst, distance(c[0], curve.evaluate(at).position));
+  for (const std::vector<FramePoint>& run : runs) {
+    for (std::size_t i = 0; i + 1 < run.size(); ++i) {
+      const double h = run[i + 1].s - run[i].s;
+      for (int j = 1; j <= m; ++j) {
+        const double at = run[i].s + h * static_cast<double>(j) / (m + 1);
+        worst = std::max(worst, distance(fitted.derivatives(at, 0)[0], curve.evaluate(at).position));
+      }
+      worst = std::max(worst, distance(fitted.derivatives(run[i].s, 0)[0], run[i].position));
     }
-    worst = std::max(worst, distance(fitted.derivatives(pts[i].s, 0)[0], pts[i].position));
+    worst = std::max(worst, distance(fitted.derivatives(run.back().s, 0)[0], run.back().position));
   }
-  worst = std::max(worst, distance(fitted.derivatives(L, 0)[0], pts.back().position));
-  const std::size_t segments = pts.size() - 1;
   return NurbsFitResult{std::move(fitted), worst, segments, tolerance, converged && worst <= tolerance};
+}
+
+NurbsFitResult fit_nurbs_converged(const IntrinsicCurve& curve, const NurbsFitOptions& options) {
+  NurbsFitResult fit = fit_nurbs(curve, options);
+  if (!fit.converged)
+    throw Error(Errc::NumericalFailure,
+                "kappa: the NURBS fit does not hold the tolerance " + format_number(fit.tolerance) +
+                    " within max_segments = " + std::to_string(options.max_segments) +
+                    " segments (reached a deviation of " + format_number(fit.max_deviation) + ")",
+                ErrorWhere{.field = "kappa"});
+  return fit;
 }
 
 }  // namespace hula::intrinsic

@@ -117,6 +117,11 @@ class IntrinsicCurve {
   [[nodiscard]] std::span<const double> nodes() const noexcept;
   /// Number of rejected step attempts (a measure of difficulty).
   [[nodiscard]] std::size_t rejected_steps() const noexcept;
+  /// Interior arc lengths where κ or τ is not smooth (kinks and jumps of abs, min/max, sign,
+  /// piecewise, NURBS knots, … found by law::singularities), increasing. Every integration step
+  /// ends on them (they are among nodes()), so each step integrates a smooth piece; fit_nurbs()
+  /// puts a knot on each.
+  [[nodiscard]] std::span<const double> breakpoints() const noexcept;
 
   /// Position and frame at arc length s.
   /// @param s arc length in [0, L] (within 1e-12 L; clamped to the ends there)
@@ -164,7 +169,8 @@ class IntrinsicCurve {
 /// @throws hula::Error(Errc::InvalidOption) from options.validate()
 /// @throws hula::Error(Errc::NumericalFailure) naming "kappa"/"tau" and s where a law is
 ///   undefined or infinite, or when the step budget is exhausted
-/// Complexity: O(number of steps × cost of κ, τ); steps grow as tolerance^(−1/8).
+/// Complexity: O(number of steps × cost of κ, τ); steps grow as tolerance^(−1/8), plus one step
+/// end per kink of κ or τ (breakpoints()).
 [[nodiscard]] IntrinsicCurve reconstruct(const law::Law& kappa, const law::Law& tau, std::string_view parameter,
                                          double length, const StartFrame& start = {},
                                          const ReconstructionOptions& options = {});
@@ -197,11 +203,13 @@ struct NurbsFitOptions {
 
 /// Result of fit_nurbs().
 struct NurbsFitResult {
-  /// Quintic, C2, parameterised by arc length on [0, L]; knots of multiplicity 3 at the breakpoints.
+  /// Quintic, parameterised by arc length on [0, L]; knots of multiplicity 3 at the breakpoints (C2),
+  /// 5 where κ jumps (C1: the curve itself is only C1 there).
   nurbs::NurbsCurve curve;
   /// Largest |C(s) − r(s)| found by dense sampling (check_samples per segment).
   double max_deviation = 0.0;
-  /// Number of Hermite segments (the NURBS has 3 × (segments + 1) control points).
+  /// Number of Hermite segments (the NURBS has 3 × (segments + 1) + 2 j control points, j the
+  /// number of jumps of κ).
   std::size_t segments = 0;
   /// The absolute tolerance applied (options.tolerance, times the curve's size when relative).
   double tolerance = 0.0;
@@ -212,13 +220,17 @@ struct NurbsFitResult {
 /// Fits a quintic NURBS to a reconstructed curve: Hermite interpolation through breakpoints with
 /// the exact first (T) and second (κN) arc-length derivatives, then re-measuring by dense sampling.
 ///
-/// Knot placement (greedy longest segments): from each breakpoint s_a the next one is the
-/// farthest s_b for which the Hermite segment [s_a, s_b] stays within half the tolerance at
-/// check_samples interior points — the whole rest of the curve if it does, else found by halving
-/// the remaining length until a segment fits and then bisecting between the longest fitting and
-/// the shortest failing end (8 steps, so within 1/256 of the longest). Where the deviation grows
-/// with the segment length (the h⁶ error of quintic Hermite), greedy covering gives the fewest
-/// segments, hence the fewest control points for the tolerance.
+/// Knot placement: a knot at each of the curve's breakpoints() (kinks of κ or τ; where κ jumps
+/// the segments on either side take its one-sided values and the knot has multiplicity 5), and
+/// within each smooth piece between them greedy longest segments: from each breakpoint s_a the
+/// next one is the farthest s_b for which the Hermite segment [s_a, s_b] stays within half the
+/// tolerance at check_samples interior points — the whole rest of the piece if it does, else
+/// found by halving the remaining length until a segment fits and then bisecting between the
+/// longest fitting and the shortest failing end (8 steps, so within 1/256 of the longest). Where
+/// the deviation grows with the segment length (the h⁶ error of quintic Hermite), greedy covering
+/// gives the fewest segments, hence the fewest control points for the tolerance.
+/// Past max_segments each remaining piece gets one segment (converged = false), so the work is
+/// bounded by max_segments + breakpoints segments.
 /// Complexity: O(segments × 12 × check_samples) dense evaluations.
 /// @param curve a reconstructed curve
 /// @param options tolerance, segment budget, check density
@@ -226,5 +238,23 @@ struct NurbsFitResult {
 ///   the curve is then the last refinement)
 /// @throws hula::Error(Errc::InvalidOption) from options.validate()
 [[nodiscard]] NurbsFitResult fit_nurbs(const IntrinsicCurve& curve, const NurbsFitOptions& options = {});
+
+/// fit_nurbs() that fails instead of returning a fit outside the tolerance (converged = false):
+/// the form of the front ends, where a curve that misses the tolerance is of no use.
+/// @throws hula::Error(Errc::NumericalFailure) naming "kappa" (the law whose roughness needs the
+///   segments), with max_segments, the tolerance and the deviation reached
+/// @throws as fit_nurbs()
+[[nodiscard]] NurbsFitResult fit_nurbs_converged(const IntrinsicCurve& curve, const NurbsFitOptions& options = {});
+
+/// Defaults and work limits of the front ends (`hula reconstruct`, POST /api/reconstruct). The fit
+/// tolerance is relative to the curve's size (NurbsFitOptions::relative): 1e-6 of the diagonal
+/// gives a compact curve (issue 14: few control points) far below what a viewport or a CAD
+/// exchange resolves. The budgets bound the work of one request: at most kFrontEndMaxSteps step
+/// attempts of the integration (ReconstructionOptions::max_steps) and kFrontEndMaxSegments Hermite
+/// segments of the fit (3 × 2,001 control points), past which the request fails with an error
+/// naming kappa and the limit rather than running for minutes.
+inline constexpr double kFrontEndFitTolerance = 1e-6;
+inline constexpr std::size_t kFrontEndMaxSteps = 100'000;
+inline constexpr std::size_t kFrontEndMaxSegments = 2'000;
 
 }  // namespace hula::intrinsic

@@ -39,6 +39,8 @@ FinStyle fin_style(diffgeom::FinKind kind) {
       return {"#d35400", "Bishop fins P - sU"};
     case diffgeom::FinKind::BishopV:
       return {"#16a085", "Bishop fins P - sV"};
+    case diffgeom::FinKind::Combescure:
+      return {"#b7950b", "Combescure fins P + s(\u03C4/\u03BA T + B)"};
   }
   return {"#000000", ""};
 }
@@ -158,14 +160,12 @@ std::vector<diffgeom::FinKind> parse_fin_kinds(std::string_view list, std::strin
     const std::size_t comma = std::min(list.find(',', start), list.size());
     const std::string_view name = list.substr(start, comma - start);
     bool known = false;
-    for (const FinKind k :
-         {FinKind::Curvature, FinKind::Torsion, FinKind::Normal, FinKind::Binormal, FinKind::BishopU, FinKind::BishopV})
-      if (name == diffgeom::fin_kind_name(k)) add(k), known = true;
+    if (const std::optional<FinKind> k = diffgeom::fin_kind_from_name(name)) add(*k), known = true;
     if (name == "bishop") add(FinKind::BishopU), add(FinKind::BishopV), known = true;
     if (!known)
       throw Error(Errc::InvalidOption,
                   std::string(field) + "[" + std::to_string(index) + "] = '" + std::string(name.substr(0, 32)) +
-                      "': expected curvature, torsion, normal, binormal, bishop, bishop-u or bishop-v",
+                      "': expected curvature, torsion, normal, binormal, bishop, bishop-u, bishop-v or combescure",
                   {.field = std::string(field), .index = index});
     start = comma + 1;
     ++index;
@@ -199,11 +199,12 @@ CurveFigures curve_figures(const curve::Curve& subject, const CurveFigureOptions
   diffgeom::frenet(subject, ts, pts);
 
   Box3 box;
-  double kmax = 0.0, tmax = 0.0;
+  double kmax = 0.0, tmax = 0.0, cmax = 0.0;  // cmax: the Combescure fin's |τ/κ T + B| = √(1 + (τ/κ)²)
   for (const auto& p : pts) {
     box.add(p.position);
     if (p.tangent_defined) kmax = std::max(kmax, p.curvature);
     if (p.torsion_defined) tmax = std::max(tmax, std::fabs(p.torsion));
+    if (p.torsion_defined && p.curvature > 0.0) cmax = std::max(cmax, std::hypot(1.0, p.torsion / p.curvature));
   }
   const double size = std::max(box.diagonal(), 1e-300);
   // Automatic fin length: a fifth of the curve's size, less for curves that coil many times
@@ -228,7 +229,10 @@ CurveFigures curve_figures(const curve::Curve& subject, const CurveFigureOptions
   curve_fig.set_equal_aspect(true);
   std::string kinds;
   for (const diffgeom::FinKind kind : options.fins) {
-    const double qmax = kind == diffgeom::FinKind::Curvature ? kmax : kind == diffgeom::FinKind::Torsion ? tmax : 1.0;
+    const double qmax = kind == diffgeom::FinKind::Curvature    ? kmax
+                        : kind == diffgeom::FinKind::Torsion    ? tmax
+                        : kind == diffgeom::FinKind::Combescure ? cmax
+                                                                : 1.0;
     diffgeom::FinOptions fo;
     fo.kind = kind;
     fo.density = options.fin_density;

@@ -36,7 +36,8 @@ enum class CurveView {
 /// @throws hula::Error(Errc::InvalidOption) naming `field` and the allowed names
 [[nodiscard]] CurveView parse_curve_view(std::string_view name, std::string_view field = "view");
 /// The fin kinds of a comma-separated list of "curvature", "torsion", "normal", "binormal", "bishop"
-/// (both Bishop fins, U and V), "bishop-u", "bishop-v"; duplicates are kept once, in list order.
+/// (both Bishop fins, U and V), "bishop-u", "bishop-v", "combescure"; duplicates are kept once, in list
+/// order.
 /// @throws hula::Error(Errc::InvalidOption) naming `field`, the unknown entry and the allowed names
 [[nodiscard]] std::vector<diffgeom::FinKind> parse_fin_kinds(std::string_view list, std::string_view field = "fins");
 

@@ -43,6 +43,33 @@ std::pair<double, double> key(const Problem& problem, std::span<const double> va
   return {problem.violation(values), values[0]};
 }
 
+// The feasible non-dominated members of `pool`, one per objective vector (the first met), thinned by
+// iterative crowding distance to at most `capacity`.
+std::vector<Solution> thinned_front(std::vector<Solution> pool, std::size_t m, std::size_t capacity) {
+  std::vector<double> objectives, violation;
+  objectives.reserve(pool.size() * m);
+  for (const Solution& s : pool) {
+    objectives.insert(objectives.end(), s.objectives.begin(), s.objectives.end());
+    violation.push_back(s.violation);
+  }
+  const ParetoRanking ranking = non_dominated_sort(objectives, m, violation);
+  std::vector<std::size_t> members;
+  for (std::size_t i = 0; i < pool.size(); ++i)
+    if (ranking.rank[i] == 0 && pool[i].violation == 0.0) members.push_back(i);
+  // Equal objective vectors add nothing to a front: keep the first of each.
+  std::stable_sort(members.begin(), members.end(),
+                   [&](std::size_t a, std::size_t b) { return pool[a].objectives < pool[b].objectives; });
+  members.erase(std::unique(members.begin(), members.end(),
+                            [&](std::size_t a, std::size_t b) { return pool[a].objectives == pool[b].objectives; }),
+                members.end());
+  std::vector<double> kept;
+  kept.reserve(members.size() * m);
+  for (const std::size_t i : members) kept.insert(kept.end(), pool[i].objectives.begin(), pool[i].objectives.end());
+  std::vector<Solution> front;
+  for (const std::size_t q : thin_by_crowding(kept, m, capacity)) front.push_back(std::move(pool[members[q]]));
+  return front;
+}
+
 // The migration hook of one island: every `interval` generations, send the best, receive, replace the worst.
 class Migration {
  public:
@@ -57,6 +84,7 @@ class Migration {
         from_(in_neighbours(options, island)) {}
 
   void operator()(std::size_t generation, MigrationView& view) {
+    if (options_.archive && problem_.objectives > 1) update_archive(view);
     if (generation % options_.interval != 0 || options_.islands == 1) return;
     const std::size_t epoch = generation / options_.interval;
     const std::size_t n = view.rows, d = view.dimension, k = view.values_per_point;
@@ -98,6 +126,21 @@ class Migration {
   }
 
  private:
+  // Adds the population's feasible non-dominated rows to the archive, thinned to K x the population.
+  void update_archive(const MigrationView& view) {
+    const std::size_t m = problem_.objectives, d = view.dimension, k = view.values_per_point;
+    std::vector<Solution> pool = std::move(report_.archive);
+    for (std::size_t i = 0; i < view.rows; ++i) {
+      const std::span<const double> values = view.values.subspan(i * k, k);
+      if (view.failed[i] != 0 || problem_.violation(values) != 0.0) continue;
+      pool.push_back(Solution{{view.x.begin() + static_cast<std::ptrdiff_t>(i * d),
+                               view.x.begin() + static_cast<std::ptrdiff_t>((i + 1) * d)},
+                              {values.begin(), values.begin() + static_cast<std::ptrdiff_t>(m)},
+                              0.0});
+    }
+    report_.archive = thinned_front(std::move(pool), m, options_.islands * view.rows);
+  }
+
   // True when migrant m should replace row `row`.
   bool accepts(const MigrationView& view, std::size_t row, const Migrant& m) const {
     if (view.failed[row] != 0) return true;
@@ -283,8 +326,8 @@ IslandsResult merge_islands(const Problem& problem, std::vector<IslandReport> is
   IslandsResult result;
   result.seconds = seconds;
   bool first = true;
-  std::vector<double> objectives, violation;
-  std::vector<const Solution*> members;
+  std::vector<Solution> pool;
+  std::size_t total = 0;
   for (const IslandReport& r : islands) {
     result.evaluations += r.report.evaluations;
     if (problem.objectives == 1 && r.population.empty()) {
@@ -294,23 +337,11 @@ IslandsResult merge_islands(const Problem& problem, std::vector<IslandReport> is
       if (first || better(r.best, result.best)) result.best = r.best;
       first = false;
     }
-    for (const Solution& s : r.population) {
-      members.push_back(&s);
-      objectives.insert(objectives.end(), s.objectives.begin(), s.objectives.end());
-      violation.push_back(s.violation);
-    }
+    total += r.population.size();
+    pool.insert(pool.end(), r.archive.begin(), r.archive.end());
+    pool.insert(pool.end(), r.population.begin(), r.population.end());
   }
-  if (!members.empty()) {
-    const ParetoRanking ranking = non_dominated_sort(objectives, problem.objectives, violation);
-    for (std::size_t i = 0; i < members.size(); ++i) {
-      const Solution& s = *members[i];
-      if (ranking.rank[i] != 0 || s.violation != 0.0) continue;
-      // Islands that exchanged migrants can hold the same point: keep one copy.
-      const bool duplicate = std::any_of(result.front.begin(), result.front.end(),
-                                         [&](const Solution& f) { return f.variables == s.variables; });
-      if (!duplicate) result.front.push_back(s);
-    }
-  }
+  if (!pool.empty()) result.front = thinned_front(std::move(pool), problem.objectives, total);
   result.islands = std::move(islands);
   return result;
 }

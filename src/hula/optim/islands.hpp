@@ -67,6 +67,10 @@ struct IslandOptions {
   std::size_t random_degree = 2;
   /// Asynchronous migration: never wait for neighbours (not deterministic). Default false.
   bool asynchronous = false;
+  /// Several objectives: each island keeps an external archive of the feasible non-dominated points
+  /// its population has held, at most K x its population, thinned by iterative crowding distance
+  /// (thin_by_crowding); the merged front is drawn from the archives. Default true.
+  bool archive = true;
 
   /// @throws hula::Error(Errc::InvalidOption) naming the field if islands, interval, migrants
   ///   or random_degree is 0.
@@ -124,6 +128,7 @@ struct IslandReport {
   std::uint64_t seed = 0;
   Solution best{};                   ///< champion (one objective)
   std::vector<Solution> population;  ///< final population (NSGA-II) for the merged front
+  std::vector<Solution> archive;     ///< external archive (NSGA-II with IslandOptions::archive)
   RunReport report{};
   std::size_t sent = 0;      ///< migrants sent (all neighbours)
   std::size_t received = 0;  ///< migrants received
@@ -133,8 +138,10 @@ struct IslandReport {
 
 /// The archipelago's result.
 struct IslandsResult {
-  Solution best{};              ///< best champion over the islands (one objective)
-  std::vector<Solution> front;  ///< non-dominated feasible set of the merged populations (NSGA-II)
+  Solution best{};  ///< best champion over the islands (one objective)
+  /// Non-dominated feasible set of the merged populations and archives (NSGA-II), thinned by
+  /// iterative crowding distance to at most the archipelago's total population.
+  std::vector<Solution> front;
   std::vector<IslandReport> islands;
   std::size_t evaluations = 0;  ///< total over the islands
   double seconds = 0.0;         ///< wall time of the whole run

@@ -114,6 +114,8 @@ std::vector<char> serialise(const IslandReport& r) {
   w.put_solution(r.best);
   w.put<std::uint64_t>(r.population.size());
   for (const Solution& s : r.population) w.put_solution(s);
+  w.put<std::uint64_t>(r.archive.size());
+  for (const Solution& s : r.archive) w.put_solution(s);
   w.put<std::uint8_t>(static_cast<std::uint8_t>(r.report.termination));
   w.put_string(r.report.message);
   w.put<std::uint64_t>(r.report.generations);
@@ -153,6 +155,8 @@ IslandReport deserialise(const std::vector<char>& bytes) {
   out.best = r.get_solution();
   out.population.resize(r.get<std::uint64_t>());
   for (Solution& s : out.population) s = r.get_solution();
+  out.archive.resize(r.get<std::uint64_t>());
+  for (Solution& s : out.archive) s = r.get_solution();
   out.report.termination = static_cast<Termination>(r.get<std::uint8_t>());
   out.report.message = r.get_string();
   out.report.generations = r.get<std::uint64_t>();

@@ -235,6 +235,22 @@ void crowding_distance(std::span<const double> objectives, std::size_t m, std::s
   }
 }
 
+std::vector<std::size_t> thin_by_crowding(std::span<const double> objectives, std::size_t m, std::size_t keep) {
+  const std::size_t n = m == 0 ? 0 : objectives.size() / m;
+  std::vector<std::size_t> members(n);
+  std::iota(members.begin(), members.end(), std::size_t{0});
+  std::vector<double> distance(n);
+  std::vector<std::size_t> scratch(n);
+  while (members.size() > keep) {
+    crowding_distance(objectives, m, members, distance, scratch);
+    const auto worst = std::min_element(members.begin(), members.end(), [&](std::size_t a, std::size_t b) {
+      return distance[a] < distance[b] || (distance[a] == distance[b] && a < b);
+    });
+    members.erase(worst);
+  }
+  return members;
+}
+
 double hypervolume(std::span<const double> points, std::size_t m, std::span<const double> reference) {
   if (m == 0) throw Error(Errc::InvalidArgument, "objectives m = 0 must be >= 1", {.field = "m"});
   if (reference.size() != m) {

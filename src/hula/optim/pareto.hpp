@@ -68,6 +68,19 @@ struct ParetoRanking {
 void crowding_distance(std::span<const double> objectives, std::size_t m, std::span<const std::size_t> front,
                        std::span<double> distance, std::span<std::size_t> scratch) noexcept;
 
+/// Thins a set of mutually non-dominated points to `keep` of them by removing,
+/// one at a time, the member with the smallest crowding distance and
+/// recomputing its neighbours' distances (Kukkonen & Deb 2006): a more even
+/// spread than NSGA-II's one-shot truncation. The extremes of each objective
+/// (infinite distance) are kept. Ties remove the lowest index.
+/// @param objectives n x m values, row-major, finite.
+/// @param m number of objectives >= 1.
+/// @param keep number of points to keep (all when keep >= n).
+/// @returns the indices kept, increasing.
+/// Complexity: O((n - keep) m n log n).
+[[nodiscard]] std::vector<std::size_t> thin_by_crowding(std::span<const double> objectives, std::size_t m,
+                                                        std::size_t keep);
+
 /// Hypervolume dominated by a point set and bounded by a reference point
 /// (minimisation). Points that do not strictly dominate the reference in every
 /// objective contribute nothing.

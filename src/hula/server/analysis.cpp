@@ -2,7 +2,10 @@
 // The viewport analysis of a curve (analysis.hpp).
 #include "hula/server/analysis.hpp"
 
+#include <charconv>
 #include <cmath>
+#include <optional>
+#include <span>
 #include <string_view>
 
 #include "hula/diffgeom/continuity.hpp"
@@ -17,21 +20,11 @@ namespace {
 
 namespace json = io::json;
 
-Json number(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
-
-Json vec(const Vec3& v) {
-  if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) return nullptr;
-  return Json::array({v.x, v.y, v.z});
-}
-
 diffgeom::FinKind fin_kind(const std::string& name, std::size_t index) {
-  using diffgeom::FinKind;
-  for (const FinKind k :
-       {FinKind::Curvature, FinKind::Torsion, FinKind::Normal, FinKind::Binormal, FinKind::BishopU, FinKind::BishopV})
-    if (diffgeom::fin_kind_name(k) == name) return k;
+  if (const std::optional<diffgeom::FinKind> k = diffgeom::fin_kind_from_name(name)) return *k;
   throw Error(Errc::InvalidOption,
               "fins[" + std::to_string(index) + "] = \"" + name +
-                  "\" is not a fin (curvature, torsion, normal, binormal, bishop-u, bishop-v)",
+                  "\" is not a fin (curvature, torsion, normal, binormal, bishop-u, bishop-v, combescure)",
               ErrorWhere{.field = "fins", .index = index});
 }
 
@@ -66,7 +59,79 @@ AnalysisRequest analysis_request_from_json(const Json& body) {
   return r;
 }
 
-Json analyse(const nurbs::NurbsCurve& curve, const AnalysisRequest& request) {
+namespace {
+
+// The response is written as text, column by column, into one buffer: a JSON tree of its ~3,000
+// numbers cost a node and often a vector per value (a third of the request's CPU time in a perf
+// profile, docs/benchmarks.md). Numbers are the shortest text that reads back to the same double
+// (std::to_chars), with ".0" on integral values as nlohmann writes them; non-finite ones are null.
+class Writer {
+ public:
+  explicit Writer(std::string& out) : out_(out) {}
+
+  Writer& raw(std::string_view text) {
+    out_ += text;
+    return *this;
+  }
+  Writer& number(double v) {
+    if (!std::isfinite(v)) return raw("null");
+    char buffer[32];
+    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v);
+    const std::string_view text(buffer, static_cast<std::size_t>(end - buffer));
+    out_ += text;
+    if (text.find_first_of(".e") == std::string_view::npos) out_ += ".0";
+    return *this;
+  }
+  Writer& integer(long long v) {
+    char buffer[24];
+    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v);
+    out_.append(buffer, end);
+    return *this;
+  }
+  // [x,y,z], or null when a coordinate is not finite.
+  Writer& vec(const Vec3& v) {
+    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) return raw("null");
+    raw("[").number(v.x).raw(",").number(v.y).raw(",").number(v.z);
+    return raw("]");
+  }
+  // [f(0),...,f(n-1)], where f writes one element.
+  template <class F>
+  Writer& array(std::size_t n, F&& element) {
+    raw("[");
+    for (std::size_t i = 0; i < n; ++i) {
+      if (i > 0) raw(",");
+      element(i);
+    }
+    return raw("]");
+  }
+
+ private:
+  std::string& out_;
+};
+
+// The frames' columns: one array per quantity, with null where it is undefined.
+void write_columns(Writer& w, std::span<const diffgeom::FrenetPoint> f) {
+  const std::size_t n = f.size();
+  w.raw("\"t\":").array(n, [&](std::size_t i) { w.number(f[i].t); });
+  w.raw(",\"points\":").array(n, [&](std::size_t i) { w.vec(f[i].position); });
+  w.raw(",\"frames\":{\"T\":").array(n, [&](std::size_t i) {
+    f[i].tangent_defined ? w.vec(f[i].tangent) : w.raw("null");
+  });
+  w.raw(",\"N\":").array(n, [&](std::size_t i) { f[i].frame_defined ? w.vec(f[i].normal) : w.raw("null"); });
+  w.raw(",\"B\":").array(n, [&](std::size_t i) { f[i].frame_defined ? w.vec(f[i].binormal) : w.raw("null"); });
+  w.raw("},\"curvature\":").array(n, [&](std::size_t i) {
+    f[i].tangent_defined ? w.number(f[i].curvature) : w.raw("null");
+  });
+  w.raw(",\"torsion\":").array(n, [&](std::size_t i) {
+    f[i].torsion_defined ? w.number(f[i].torsion) : w.raw("null");
+  });
+  w.raw(",\"speed\":").array(n, [&](std::size_t i) { w.number(f[i].speed); });
+}
+
+}  // namespace
+
+std::string analysis_json(const curve::Curve& subject, const AnalysisRequest& request, std::uint64_t revision) {
+  const nurbs::NurbsCurve& curve = subject.nurbs();
   const auto n = static_cast<std::size_t>(request.samples);
   const nurbs::Interval domain = curve.domain();
   std::vector<double> ts(n);
@@ -84,84 +149,52 @@ Json analyse(const nurbs::NurbsCurve& curve, const AnalysisRequest& request) {
   }
   std::vector<diffgeom::FrenetPoint> frames(n);
   diffgeom::frenet(curve, ts, frames);
-  Json t = Json::array(), points = Json::array(), T = Json::array(), N = Json::array(), B = Json::array();
-  Json kappa = Json::array(), tau = Json::array(), speed = Json::array();
-  for (const diffgeom::FrenetPoint& f : frames) {
-    t.push_back(f.t);
-    points.push_back(vec(f.position));
-    T.push_back(f.tangent_defined ? vec(f.tangent) : Json(nullptr));
-    N.push_back(f.frame_defined ? vec(f.normal) : Json(nullptr));
-    B.push_back(f.frame_defined ? vec(f.binormal) : Json(nullptr));
-    kappa.push_back(f.tangent_defined ? number(f.curvature) : Json(nullptr));
-    tau.push_back(f.torsion_defined ? number(f.torsion) : Json(nullptr));
-    speed.push_back(number(f.speed));
-  }
-  Json out = Json::object();
-  out["t"] = std::move(t);
-  out["points"] = std::move(points);
-  Json frames_json = Json::object();
-  frames_json["T"] = std::move(T);
-  frames_json["N"] = std::move(N);
-  frames_json["B"] = std::move(B);
-  out["frames"] = std::move(frames_json);
-  out["curvature"] = std::move(kappa);
-  out["torsion"] = std::move(tau);
-  out["speed"] = std::move(speed);
-  Json fins = Json::array();
-  for (const diffgeom::FinKind kind : request.fins) {
+
+  std::string text;
+  // About 560 bytes per sample with one comb, most of it numbers of up to 24 characters.
+  text.reserve(256 + n * (330 + 230 * request.fins.size()));
+  Writer w(text);
+  w.raw("{");
+  write_columns(w, frames);
+  w.raw(",\"fins\":").array(request.fins.size(), [&](std::size_t k) {
     diffgeom::FinOptions o;
-    o.kind = kind;
+    o.kind = request.fins[k];
     o.scale = request.scale;
     o.density = request.samples;
-    const diffgeom::Fins f = diffgeom::fins(curve, o);
-    Json comb = Json::object();
-    comb["kind"] = std::string(diffgeom::fin_kind_name(kind));
-    Json ft = Json::array(), base = Json::array(), tip = Json::array();
-    for (std::size_t i = 0; i < f.t.size(); ++i) {
-      ft.push_back(f.t[i]);
-      base.push_back(vec(f.base[i]));
-      tip.push_back(f.defined[i] ? vec(f.tip[i]) : Json(nullptr));
-    }
-    comb["t"] = std::move(ft);
-    comb["base"] = std::move(base);
-    comb["tip"] = std::move(tip);
-    fins.push_back(std::move(comb));
-  }
-  out["fins"] = std::move(fins);
+    // A law curve's fins are exact from its law. Otherwise, sampled by parameter, the fins stand at the
+    // samples: they are built from the frames already evaluated there (the same parameters, bit for bit)
+    // instead of evaluating them again.
+    const diffgeom::Fins f = subject.law() != nullptr             ? diffgeom::fins(subject, o)
+                             : request.by == SampleBy::Parameter ? diffgeom::fins(frames, o)
+                                                                 : diffgeom::fins(curve, o);
+    w.raw("{\"kind\":\"").raw(diffgeom::fin_kind_name(o.kind)).raw("\",\"t\":");
+    w.array(f.t.size(), [&](std::size_t i) { w.number(f.t[i]); });
+    w.raw(",\"base\":").array(f.t.size(), [&](std::size_t i) { w.vec(f.base[i]); });
+    w.raw(",\"tip\":").array(f.t.size(), [&](std::size_t i) { f.defined[i] ? w.vec(f.tip[i]) : w.raw("null"); });
+    w.raw("}");
+  });
   if (request.features) {
-    Json features = Json::object();
-    Json inflections = Json::array();
-    for (const diffgeom::Feature& f : diffgeom::inflections(curve)) {
-      Json j = Json::object();
-      j["t"] = f.t;
-      j["point"] = vec(f.position);
-      inflections.push_back(std::move(j));
-    }
-    features["inflections"] = std::move(inflections);
-    Json extrema = Json::array();
-    for (const diffgeom::Feature& f : diffgeom::curvature_extrema(curve)) {
-      Json j = Json::object();
-      j["kind"] = std::string(diffgeom::feature_kind_name(f.kind));
-      j["t"] = f.t;
-      j["point"] = vec(f.position);
-      j["curvature"] = number(f.curvature);
-      extrema.push_back(std::move(j));
-    }
-    features["curvature_extrema"] = std::move(extrema);
-    Json knots = Json::array();
-    for (const diffgeom::Continuity& c : diffgeom::knot_continuity(curve)) {
-      Json j = Json::object();
-      j["t"] = c.t;
-      j["multiplicity"] = c.multiplicity;
-      j["parametric"] = c.parametric;
-      j["geometric"] = c.geometric;
-      j["tangent_angle"] = number(c.tangent_angle);
-      knots.push_back(std::move(j));
-    }
-    features["knots"] = std::move(knots);
-    out["features"] = std::move(features);
+    const std::vector<diffgeom::Feature> inflections = diffgeom::inflections(curve);
+    w.raw(",\"features\":{\"inflections\":").array(inflections.size(), [&](std::size_t i) {
+      w.raw("{\"t\":").number(inflections[i].t).raw(",\"point\":").vec(inflections[i].position).raw("}");
+    });
+    const std::vector<diffgeom::Feature> extrema = diffgeom::curvature_extrema(curve);
+    w.raw(",\"curvature_extrema\":").array(extrema.size(), [&](std::size_t i) {
+      const diffgeom::Feature& f = extrema[i];
+      w.raw("{\"kind\":\"").raw(diffgeom::feature_kind_name(f.kind)).raw("\",\"t\":").number(f.t);
+      w.raw(",\"point\":").vec(f.position).raw(",\"curvature\":").number(f.curvature).raw("}");
+    });
+    const std::vector<diffgeom::Continuity> knots = diffgeom::knot_continuity(curve);
+    w.raw(",\"knots\":").array(knots.size(), [&](std::size_t i) {
+      const diffgeom::Continuity& c = knots[i];
+      w.raw("{\"t\":").number(c.t).raw(",\"multiplicity\":").integer(c.multiplicity);
+      w.raw(",\"parametric\":").integer(c.parametric).raw(",\"geometric\":").integer(c.geometric);
+      w.raw(",\"tangent_angle\":").number(c.tangent_angle).raw("}");
+    });
+    w.raw("}");
   }
-  return out;
+  w.raw(",\"revision\":").integer(static_cast<long long>(revision)).raw("}");
+  return text;
 }
 
 }  // namespace hula::server

@@ -2,15 +2,19 @@
 // What a viewport draws for one curve, computed without changing anything
 // (POST /api/documents/{name}/entities/{label}/analysis): samples by
 // parameter or by arc length with points, Frenet frames, κ, τ and speed
-// (diffgeom::frenet), fin combs (diffgeom::fins, equally spaced in the
-// parameter), and the features: inflections, curvature extrema and the
-// continuity at every interior knot (diffgeom). Undefined values are null.
+// (diffgeom::frenet of the curve's NURBS), fin combs (diffgeom::fins,
+// equally spaced in the parameter, exactly from the law of a law curve;
+// "combescure" is the Combescure compound of thesis 8.3/8.5), and the
+// features: inflections, curvature extrema and the continuity at every
+// interior knot (diffgeom). Undefined values are null.
 #pragma once
 
+#include <cstdint>
+#include <string>
 #include <vector>
 
+#include "hula/curve/curve.hpp"
 #include "hula/diffgeom/fins.hpp"
-#include "hula/nurbs/nurbs_curve.hpp"
 #include "hula/server/http.hpp"
 
 namespace hula::server {
@@ -23,10 +27,12 @@ struct AnalysisRequest {
   int samples = 100;
   /// Equal steps in the parameter or in arc length. Default parameter.
   SampleBy by = SampleBy::Parameter;
-  /// Fin combs to draw ("curvature", "torsion", "normal", "binormal", "bishop-u", "bishop-v"), each with
-  /// `samples` fins. Default none.
+  /// Fin combs to draw ("curvature", "torsion", "normal", "binormal", "bishop-u", "bishop-v",
+  /// "combescure": Q − P = scale · (τ/κ T + B), null at planar points), each with `samples` fins.
+  /// Default none.
   std::vector<diffgeom::FinKind> fins{};
-  /// Fin scale (model units per unit of the quantity), finite. Default 1.
+  /// Fin scale (model units per unit of the quantity; the constant C of the Combescure fin), finite.
+  /// Default 1.
   double scale = 1.0;
   /// Include features (inflections, curvature extrema, knot continuity). Default true.
   bool features = true;
@@ -37,11 +43,13 @@ struct AnalysisRequest {
 ///   value out of range, naming the member
 [[nodiscard]] AnalysisRequest analysis_request_from_json(const Json& body);
 
-/// Columns, one entry per sample: {"t", "points", "frames": {"T", "N", "B"}, "curvature", "torsion",
-/// "speed"}, plus "fins": [{"kind", "t", "base", "tip"}] and, when asked, "features":
-/// {"inflections": [{"t", "point"}], "curvature_extrema": [{"kind", "t", "point", "curvature"}],
-/// "knots": [{"t", "multiplicity", "parametric", "geometric", "tangent_angle"}]}.
+/// The response body (compact JSON text): columns, one entry per sample: {"t", "points", "frames":
+/// {"T", "N", "B"}, "curvature", "torsion", "speed"}, plus "fins": [{"kind", "t", "base", "tip"}] and,
+/// when asked, "features": {"inflections": [{"t", "point"}], "curvature_extrema": [{"kind", "t",
+/// "point", "curvature"}], "knots": [{"t", "multiplicity", "parametric", "geometric",
+/// "tangent_angle"}]}, and the document's "revision". Every double reads back bit for bit.
 /// @throws hula::Error as diffgeom::frenet, fins, inflections, curvature_extrema and knot_continuity
-[[nodiscard]] Json analyse(const nurbs::NurbsCurve& curve, const AnalysisRequest& request);
+[[nodiscard]] std::string analysis_json(const curve::Curve& curve, const AnalysisRequest& request,
+                                        std::uint64_t revision);
 
 }  // namespace hula::server

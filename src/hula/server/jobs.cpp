@@ -2,10 +2,15 @@
 // The bounded job pool (jobs.hpp).
 #include "hula/server/jobs.hpp"
 
+#include <pthread.h>
+#include <sched.h>
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <cerrno>
+#include <cstring>
 #include <exception>
+#include <latch>
 
 #include "hula/io/error_json.hpp"
 
@@ -13,9 +18,34 @@ namespace hula::server {
 
 namespace {
 
-// Job threads run at a lower scheduling priority (nice +10 on Linux, per thread) than the HTTP
-// threads, so interrogation and drag requests are served first when jobs keep every core busy.
-constexpr int kJobNice = 10;
+// The nice value of a job thread: the lowest there is. Under SCHED_IDLE the scheduler ignores it,
+// but tools show it, and the I/O priority of the thread follows the policy (idle class).
+constexpr int kJobNice = 19;
+
+// Puts the calling thread at the lowest scheduling priority Linux has (docs/server.md
+// "Concurrency"): nice 19, then SCHED_IDLE, under which the kernel runs the thread only on a core
+// no other thread wants and preempts it as soon as one wakes (an I/O thread with a request). Both
+// only lower the priority, which needs no privilege. Returns what failed, or "" when both held.
+std::string lower_thread_priority() {
+  std::string failed;
+  if (::setpriority(PRIO_PROCESS, static_cast<id_t>(::gettid()), kJobNice) != 0)
+    failed = std::string("setpriority(nice ") + std::to_string(kJobNice) + "): " + std::strerror(errno);
+  sched_param param{};
+  param.sched_priority = 0;
+  if (const int rc = ::pthread_setschedparam(::pthread_self(), SCHED_IDLE, &param); rc != 0)
+    failed += (failed.empty() ? "" : "; ") + std::string("pthread_setschedparam(SCHED_IDLE): ") + std::strerror(rc);
+  return failed;
+}
+
+// A cancelled job's thread goes back to SCHED_OTHER (keeping nice 19; an unprivileged process may do
+// this for its own threads), so winding down to the next generation is not starved by every other
+// busy thread of the machine. Best effort: if refused, the job still stops, only later.
+void wind_down(pid_t thread) {
+  if (thread == 0) return;
+  sched_param param{};
+  param.sched_priority = 0;
+  (void)::sched_setscheduler(thread, SCHED_OTHER, &param);
+}
 
 }  // namespace
 
@@ -56,7 +86,24 @@ Json Job::to_json() const {
 
 JobPool::JobPool(JobPoolOptions options) : options_(options) {
   if (options_.workers == 0) options_.workers = 1;
-  for (std::size_t i = 0; i < options_.workers; ++i) workers_.emplace_back([this] { worker(); });
+  // Every worker has lowered its priority (or said why not) before the pool takes a job.
+  std::latch lowered(static_cast<std::ptrdiff_t>(options_.workers));
+  for (std::size_t i = 0; i < options_.workers; ++i)
+    workers_.emplace_back([this, &lowered] {
+      std::string failed = lower_thread_priority();
+      {
+        std::lock_guard lock(mutex_);
+        if (priority_error_.empty()) priority_error_ = std::move(failed);
+      }
+      lowered.count_down();
+      worker();
+    });
+  lowered.wait();
+}
+
+std::string JobPool::priority_error() const {
+  std::lock_guard lock(mutex_);
+  return priority_error_;
 }
 
 JobPool::~JobPool() { shutdown(); }
@@ -96,6 +143,7 @@ void JobPool::cancel(Job& job) {
     std::lock_guard lock(job.mutex_);
     job.cancel_.cancel();
     was_queued = job.state_ == JobState::Queued;
+    if (job.state_ == JobState::Running) wind_down(job.thread_);
   }
   if (was_queued) finish(job, JobState::Cancelled);
 }
@@ -119,8 +167,6 @@ void JobPool::finish(Job& job, JobState state) {
 }
 
 void JobPool::worker() {
-  // Best effort: a failure (no permission to change it) leaves the normal priority.
-  (void)::setpriority(PRIO_PROCESS, static_cast<id_t>(::gettid()), kJobNice);
   while (true) {
     std::shared_ptr<Job> job;
     {
@@ -140,8 +186,11 @@ void JobPool::run(const std::shared_ptr<Job>& job) {
     std::lock_guard lock(job->mutex_);
     if (job->state_ != JobState::Queued) return;
     job->state_ = JobState::Running;
+    job->thread_ = ::gettid();
     work = job->work_;
   }
+  // Again for every job: the last one on this thread may have been cancelled (wind_down).
+  (void)lower_thread_priority();
   EventLog& events = *job->events_;
   JobContext context{job->cancel_, [&events](const Json& e) { events.append("generation", e); }};
   try {
@@ -184,6 +233,7 @@ void JobPool::shutdown() {
   for (auto& job : all) {
     std::lock_guard lock(job->mutex_);
     job->cancel_.cancel();
+    if (job->state_ == JobState::Running) wind_down(job->thread_);
   }
   for (auto& job : queued) finish(*job, JobState::Cancelled);
   wake_.notify_all();

@@ -5,7 +5,11 @@
 // generation, then the final state) go to an EventLog that any number of SSE
 // clients follow. Cancelling a running job sets its CancellationToken: the
 // algorithm stops at the next generation and the job keeps the best so far.
+// The worker threads run at the lowest scheduling priority (SCHED_IDLE and
+// nice 19 on Linux), so a request never waits for a core a job holds.
 #pragma once
+
+#include <sys/types.h>
 
 #include <condition_variable>
 #include <cstddef>
@@ -67,6 +71,8 @@ class Job {
   JobOutcome outcome_{};
   Json error_ = nullptr;
   optim::CancellationToken cancel_;
+  /// The thread running the job (Linux thread id), 0 before it starts.
+  pid_t thread_ = 0;
   JobWork work_;
   std::shared_ptr<EventLog> events_ = std::make_shared<EventLog>();
 };
@@ -96,11 +102,16 @@ class JobPool {
   [[nodiscard]] std::shared_ptr<Job> find(const std::string& id) const;
 
   /// Cancels a job: a queued one ends cancelled at once (no result), a running one stops at its
-  /// next generation keeping the best so far; a finished one is left as it is.
+  /// next generation keeping the best so far (its thread leaves SCHED_IDLE for SCHED_OTHER at nice
+  /// 19 until then); a finished one is left as it is.
   void cancel(Job& job);
 
   /// Cancels every job, waits for the running ones to store their outcome and joins the workers.
   void shutdown();
+
+  /// Why a worker thread could not lower its scheduling priority (SCHED_IDLE, nice 19), or "" when
+  /// every worker runs at it (known once the constructor returns).
+  [[nodiscard]] std::string priority_error() const;
 
  private:
   void worker();
@@ -114,6 +125,7 @@ class JobPool {
   std::deque<std::string> finished_order_;
   std::size_t next_id_ = 1;
   bool stopping_ = false;
+  std::string priority_error_;
   std::vector<std::thread> workers_;
 };
 

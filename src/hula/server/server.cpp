@@ -447,4 +447,6 @@ void Server::run() {
 
 void Server::stop() { impl_->stop(); }
 
+std::string Server::job_priority_error() const { return impl_->jobs.priority_error(); }
+
 }  // namespace hula::server

@@ -73,6 +73,9 @@ class Server {
   /// Asks run() to return; safe from any thread.
   void stop();
 
+  /// Why the job threads could not take the lowest scheduling priority, or "" (JobPool::priority_error).
+  [[nodiscard]] std::string job_priority_error() const;
+
   /// The implementation (server.cpp), named here so the connection sessions can reach it.
   struct Impl;
 

@@ -11,6 +11,8 @@ import type {
   DocumentSummary,
   Entity,
   ErrorBody,
+  FairPreview,
+  FairPreviewRequest,
   Health,
   History as DocHistory,
   Label,
@@ -200,6 +202,16 @@ export class Client {
       times,
     });
   }
+  /** Reverse the direction of traversal, C*(u) = C(a + b − u) (one undo step). */
+  reverse(doc: string, label: string): Promise<ChangeReply> {
+    return this.request('POST', `${this.doc(doc)}/entities/${encodeURIComponent(label)}/reverse`);
+  }
+  /** Split at t into pieces on [a, t] and [t, b], whose labels come back in that order (one undo step). */
+  split(doc: string, label: string, t: number): Promise<ChangeReply & { labels: Label[] }> {
+    return this.request('POST', `${this.doc(doc)}/entities/${encodeURIComponent(label)}/split`, {
+      t,
+    });
+  }
   /** Import an uploaded STEP, IGES or JSON file's curves (one undo step); their labels come back. */
   importFile(
     doc: string,
@@ -233,6 +245,26 @@ export class Client {
       signal,
     );
     return analysisFromServer(j, req.by);
+  }
+
+  /** The fairing assistant's ghost of an entity (the document is not changed). */
+  async fairPreview(
+    doc: string,
+    label: string,
+    req: FairPreviewRequest,
+    signal?: AbortSignal,
+  ): Promise<FairPreview> {
+    const j = await this.request<Record<string, unknown> & Omit<FairPreview, 'analysis'>>(
+      'POST',
+      `${this.doc(doc)}/entities/${encodeURIComponent(label)}/fair-preview`,
+      req,
+      signal,
+    );
+    const a = j['analysis'] as Record<string, unknown> | undefined;
+    return {
+      ...j,
+      analysis: a && req.analysis ? analysisFromServer(a, req.analysis.by) : undefined,
+    };
   }
 
   law(req: LawRequest): Promise<LawResponse> {

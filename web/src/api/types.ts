@@ -124,7 +124,8 @@ export interface History {
   current?: number;
 }
 
-export type FinKind = 'curvature' | 'torsion' | 'normal' | 'binormal' | 'bishop-u' | 'bishop-v';
+export type FinKind =
+  'curvature' | 'torsion' | 'normal' | 'binormal' | 'bishop-u' | 'bishop-v' | 'combescure';
 
 export interface AnalysisRequest {
   samples: number;
@@ -167,6 +168,34 @@ export interface Analysis {
   features: Feature[];
 }
 
+/** POST .../entities/{label}/fair-preview (the fairing assistant). */
+export interface FairPreviewRequest {
+  /** Largest distance a data point may move, model units. */
+  tolerance: number;
+  method?: FairMethod;
+  /** Wall-clock budget of the optimisation, seconds. */
+  budget?: number;
+  analysis?: AnalysisRequest;
+}
+export type FairMethod = 'min-variation' | 'knots';
+
+export interface FairPreview {
+  revision: number;
+  method: FairMethod;
+  tolerance: number;
+  curve: CurveFile;
+  /** ∫(dκ/ds)² ds of the entity's curve and of the ghost. */
+  energy_before: number;
+  energy_after: number;
+  max_deviation: number;
+  data_points: number[][];
+  faired_points: number[][];
+  iterations: number;
+  stopped: boolean;
+  seconds: number;
+  analysis: Analysis | undefined;
+}
+
 export interface LawRequest {
   expression: string;
   parameter?: string;
@@ -187,6 +216,7 @@ export interface ReconstructRequest {
   start_point?: number[];
   start_frame?: { tangent: number[]; normal: number[] };
   tolerance?: number;
+  fit_tolerance?: number;
   at?: number[];
 }
 export interface FramePoint {
@@ -200,6 +230,8 @@ export interface ReconstructResponse {
   points: FramePoint[];
   curve: CurveFile;
   max_deviation: number;
+  integration: { method: string; steps: number; rejected_steps: number; breakpoints: number };
+  fit: { control_points: number; segments: number; tolerance: number; max_deviation: number };
 }
 
 export type JobState = 'queued' | 'running' | 'done' | 'failed' | 'cancelled';

@@ -357,6 +357,9 @@ export function finTips(
     let q = 1;
     let ok = p.frameDefined;
     switch (kind) {
+      case 'combescure':
+        // The server's alone (App keeps such a drag on the server's analysis).
+        return null;
       case 'curvature':
         // κN is 0 (not undefined) where κ = 0: a fin of length 0.
         ok = p.tangentDefined;

@@ -5,7 +5,7 @@
 import uPlot from 'uplot';
 import 'uplot/dist/uPlot.min.css';
 import type { Analysis } from '../api/types';
-import { logMagnitude, nearestIndex, paddedRange, radius, type Range } from './scale';
+import { logMagnitude, nearestIndex, paddedRange, radius, tickLabels, type Range } from './scale';
 
 export type Quantity = 'kappa' | 'radius' | 'tau' | 'speed' | 'logkappa' | 'logtau';
 export type Abscissa = 't' | 's';
@@ -165,6 +165,8 @@ export class Graph {
         x: { time: false },
         y: { range: () => [this.yRange.min, this.yRange.max] },
       },
+      // Tick labels with the digits their spacing needs (tickLabels): uPlot's default keeps three
+      // decimals, so a torsion axis over [0.0020, 0.0025] read "0.002" at several ticks.
       axes: [
         {
           stroke: '#aab4c3',
@@ -172,8 +174,18 @@ export class Graph {
           label: this.abscissa,
           labelSize: 14,
           size: 30,
+          values: (_u, splits) => tickLabels(splits),
         },
-        { stroke: '#aab4c3', grid: { stroke: '#2b323d' }, size: 50 },
+        {
+          stroke: '#aab4c3',
+          grid: { stroke: '#2b323d' },
+          values: (_u, splits) => tickLabels(splits),
+          // Wide enough for the longest label: 8 px a character (DejaVu Sans digits at uPlot's 12 px
+          // font are 7.6 px) plus the tick (10 px) and gap (5 px); uPlot asks once with null before
+          // the labels exist (its typings omit the null).
+          size: (_u, values: string[] | null) =>
+            Math.max(50, 16 + 8 * Math.max(0, ...(values ?? []).map((v) => v.length))),
+        },
       ],
       series,
       cursor: { drag: { x: false, y: false }, points: { size: 6 } },

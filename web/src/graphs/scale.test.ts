@@ -1,3 +1,4 @@
+import uPlot from 'uplot';
 import { describe, expect, it } from 'vitest';
 import {
   bumpProfile,
@@ -7,7 +8,26 @@ import {
   paddedRange,
   pixelToValue,
   radius,
+  stepDecimals,
+  tickLabels,
 } from './scale';
+
+/** Tick positions as uPlot places them: multiples of the increment, rounded to its decimals. */
+function uplotSplits(min: number, max: number, incr: number): number[] {
+  const dec = Math.max(0, stepDecimals(incr));
+  const out: number[] = [];
+  for (let v = Math.ceil(min / incr) * incr; v <= max; v += incr) out.push(Number(v.toFixed(dec)));
+  return out;
+}
+
+/** A seeded linear congruential generator in [0, 1) (property tests are reproducible). */
+function lcg(seed: number): () => number {
+  let s = seed >>> 0;
+  return () => {
+    s = (Math.imul(s, 1664525) + 1013904223) >>> 0;
+    return s / 2 ** 32;
+  };
+}
 
 describe('plot scaling', () => {
   // Padded range by hand: [0, 10] padded 5% is [-0.5, 10.5]; NaN samples are ignored.
@@ -50,5 +70,51 @@ describe('plot scaling', () => {
     const xs = [0, 0.25, 0.5, 0.75, 1];
     const out = bumpProfile(xs, [1, 1, 1, 1, 1], 0.5, 2, 0.5);
     expect(Array.from(out).map((v) => Number(v.toFixed(12)))).toEqual([1, 2, 3, 2, 1]);
+  });
+
+  // The torsion graph's bug: over [0.00201, 0.00249] with ticks 0.0001 apart, uPlot's default
+  // formatter (3 decimals) prints "0.002" five times; tickLabels gives 4 decimals, all distinct.
+  it('labels close ticks distinctly where the default repeats them', () => {
+    const splits = uplotSplits(0.00201, 0.00249, 0.0001);
+    expect(splits).toHaveLength(4);
+    const defaults = splits.map((v) => uPlot.fmtNum(v));
+    expect(new Set(defaults).size).toBeLessThan(splits.length);
+    expect(tickLabels(splits)).toEqual(['0.0021', '0.0022', '0.0023', '0.0024']);
+  });
+
+  // Digits by hand from the spacing: 2.5 steps keep two decimals, round steps none, a zero computed
+  // as 1e-19 prints "0.0000" (no "-0"), large and tiny values switch to scientific notation.
+  it('takes its digits from the tick spacing', () => {
+    expect(stepDecimals(0.0025)).toBe(4);
+    expect(stepDecimals(0.2)).toBe(1);
+    expect(stepDecimals(500)).toBe(-2);
+    expect(tickLabels([0, 0.25, 0.5, 0.75])).toEqual(['0.00', '0.25', '0.50', '0.75']);
+    expect(tickLabels([-20, 0, 20, 40])).toEqual(['-20', '0', '20', '40']);
+    expect(tickLabels([-0.0002, -1e-19, 0.0002])).toEqual(['-0.0002', '0.0000', '0.0002']);
+    expect(tickLabels([1e6, 1.5e6, 2e6])).toEqual(['1.0e+6', '1.5e+6', '2.0e+6']);
+    expect(tickLabels([2e-7, 4e-7, 6e-7])).toEqual(['2e-7', '4e-7', '6e-7']);
+    expect(tickLabels([1.2e-6, 1.4e-6])).toEqual(['1.2e-6', '1.4e-6']);
+    expect(tickLabels([0.5])).toEqual(['0.5']);
+  });
+
+  // Property (seeded, 2000 ranges from 1e-9 to 1e8 wide, anywhere): for uPlot's 1, 2, 2.5, 5 × 10^k
+  // steps the labels are distinct and each reads back as its own tick within 1e-6 of the spacing
+  // (the labels stay aligned with their positions: only formatted, never moved).
+  it('gives distinct labels that read back as their ticks', () => {
+    const random = lcg(20261202);
+    const repeated: string[] = [];
+    let worst = 0;
+    for (let n = 0; n < 2000; n++) {
+      const incr = [1, 2, 2.5, 5][Math.floor(random() * 4)]! * 10 ** Math.floor(-9 + random() * 17);
+      const min = (random() - 0.5) * incr * 10 ** Math.floor(random() * 4);
+      const splits = uplotSplits(min, min + incr * (2 + Math.floor(random() * 8)), incr);
+      const labels = tickLabels(splits);
+      if (new Set(labels).size !== splits.length) repeated.push(labels.join(' '));
+      labels.forEach((l, i) => {
+        worst = Math.max(worst, Math.abs(Number(l) - splits[i]!) / incr);
+      });
+    }
+    expect(repeated).toEqual([]);
+    expect(worst).toBeLessThanOrEqual(1e-6);
   });
 });

@@ -1,5 +1,5 @@
-// Plot scaling for the linked graphs: ranges, ticks, log axes, hover lookup,
-// and the profile edit of the design-by-curvature graph. Pure functions.
+// Plot scaling for the linked graphs: ranges, ticks, axis labels, log axes,
+// hover lookup, and the profile edit of the design-by-curvature graph. Pure functions.
 
 /** A closed range [min, max] with min < max. */
 export interface Range {
@@ -48,6 +48,58 @@ export function niceTicks(range: Range, count = 5): number[] {
     ticks.push(Number((k * step).toPrecision(12)));
   }
   return ticks;
+}
+
+/**
+ * The power of ten of a tick spacing's last significant digit: the smallest
+ * d with `step` · 10^d an integer (to 1e-9 relative), so 0.0025 gives 4,
+ * 0.2 gives 1, 500 gives −2. uPlot's steps are 1, 2, 2.5 or 5 × 10^k.
+ */
+export function stepDecimals(step: number): number {
+  // One below the leading digit's power, so a spacing computed as 9.999999999999998e-5 (0.0023 −
+  // 0.0022) finds 4 like 1e-4 does.
+  let d = -Math.floor(Math.log10(step)) - 1;
+  for (let i = 0; i < 18; i++, d++) {
+    const x = step * 10 ** d;
+    if (Math.abs(x - Math.round(x)) <= 1e-9 * x) return d;
+  }
+  return d;
+}
+
+/**
+ * Axis labels of uPlot tick positions (the `values` formatter of an axis),
+ * with as many digits as the spacing of the ticks needs, so neighbouring
+ * labels never read the same (uPlot's default keeps 3 decimals: ticks
+ * 0.0021 and 0.0024 both read "0.002"). Fixed notation while that needs at
+ * most 6 decimals and the values are below 10^6, else the mantissa of
+ * scientific notation has the digits down to the spacing's. Each label
+ * belongs to its own tick position; labels are only formatted, never moved.
+ * If rounding still makes two labels equal, one more digit is used.
+ */
+export function tickLabels(splits: readonly number[]): string[] {
+  let step = Infinity;
+  for (let i = 1; i < splits.length; i++) {
+    const d = Math.abs(splits[i]! - splits[i - 1]!);
+    if (d > 0 && d < step) step = d;
+  }
+  const finite = splits.filter((v) => Number.isFinite(v));
+  const largest = Math.max(0, ...finite.map(Math.abs));
+  if (!Number.isFinite(step)) return splits.map((v) => String(v));
+  // A tick at zero computed as 1e-19 (k · step in floating point) prints as "0", not "-0.000".
+  const clean = splits.map((v) => (Math.abs(v) < step * 1e-6 ? 0 : v));
+  let decimals = stepDecimals(step);
+  const scientific = decimals > 6 || largest >= 1e6;
+  const exponent = largest > 0 ? Math.floor(Math.log10(largest)) : 0;
+  for (let extra = 0; extra < 4; extra++) {
+    const labels = clean.map((v) =>
+      scientific
+        ? v.toExponential(Math.min(20, Math.max(0, exponent + decimals)))
+        : v.toFixed(Math.max(0, decimals)),
+    );
+    if (new Set(labels).size === labels.length) return labels;
+    decimals++;
+  }
+  return clean.map((v) => String(v));
 }
 
 /**

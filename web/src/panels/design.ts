@@ -164,9 +164,9 @@ export class DesignByCurvature {
           length,
           start_point: [p0[0] ?? 0, p0[1] ?? 0, p0[2] ?? 0],
           start_frame: { tangent, normal: startNormal },
-          // 1e-5 of the length: a 130-long arch fits in ~21 control points (0.2 s) where the
-          // route's default tolerance gave 2,295 (a band of handles, heavy to drag).
-          tolerance: Math.min(0.1, Math.max(1e-9, 1e-5 * length)),
+          // The fit within 1e-5 of the curve's size (the route's default is 1e-6): few handles
+          // to drag, where an absolute 1e-10 gave 2,295 for a 130-long arch.
+          fit_tolerance: 1e-5,
         }),
       );
       if (!r) return;

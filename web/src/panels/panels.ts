@@ -3,7 +3,7 @@
 // badges), history; and the dialogs (law curve, natural equations, open/new, help).
 
 import type { App } from '../app';
-import { ALL_FINS, handlesOf } from '../app';
+import { ALL_FINS, SPACE_FINS, handlesOf } from '../app';
 import type { CurveFile, EndCondition, FinKind, Parameterisation } from '../api/types';
 
 function el<K extends keyof HTMLElementTagNameMap>(
@@ -41,6 +41,9 @@ export const SHORTCUTS: [string, string][] = [
   ['Delete', 'delete the selected curve'],
   ['U', 'insert a knot into the selected curve (at the hovered point, else mid-span)'],
   ['D', 'raise the degree of the selected curve by one'],
+  ['X', 'split the selected curve in two (at the hovered point, else mid-domain)'],
+  ['W', 'reverse the direction of the selected curve'],
+  ['A', "accept the fairing assistant's ghost (one undo step; turn the assistant on in its panel)"],
   ['F', 'fit all'],
   ['Q', 'single / four views'],
   ['1 2 3 4', 'top, front, side, 3-D view alone'],
@@ -286,8 +289,8 @@ export class Panels {
       const s = this.app.settingsOf(label);
       for (const [f, cb] of this.finBoxes) {
         cb.checked = s.fins.includes(f);
-        // Planar curves: torsion and binormal fins carry nothing (8.4, 8.6).
-        cb.disabled = a?.planar === true && (f === 'torsion' || f === 'binormal');
+        // Planar curves: torsion, binormal and Combescure fins carry nothing (8.3–8.6).
+        cb.disabled = a?.planar === true && SPACE_FINS.has(f);
       }
       this.scaleInput.value = String(s.scale);
       this.samplesInput.value = String(s.samples);

@@ -27,6 +27,7 @@ export const FIN_COLOURS: Record<FinKind, number> = {
   binormal: 0x2bb5d6,
   'bishop-u': 0xe0c020,
   'bishop-v': 0x9a7fe0,
+  combescure: 0xf25c54,
 };
 
 interface View {
@@ -499,6 +500,25 @@ export class Viewports {
     this.requestRender();
   }
 
+  /**
+   * The fin segments in the scene for a curve, read back from its geometry
+   * with their colour (FIN_COLOURS): what is drawn, for inspection and tests.
+   */
+  finSegments(label: string): { from: Vec3; to: Vec3; colour: number }[] {
+    const g = this.curves.get(label)?.fins.geometry;
+    const pos = g?.getAttribute('position');
+    const col = g?.getAttribute('color');
+    if (!pos || !col) return [];
+    const out: { from: Vec3; to: Vec3; colour: number }[] = [];
+    for (let i = 0; i + 1 < pos.count; i += 2)
+      out.push({
+        from: [pos.getX(i), pos.getY(i), pos.getZ(i)],
+        to: [pos.getX(i + 1), pos.getY(i + 1), pos.getZ(i + 1)],
+        colour: new THREE.Color(col.getX(i), col.getY(i), col.getZ(i)).getHex(),
+      });
+    return out;
+  }
+
   removeCurve(label: string): void {
     const cv = this.curves.get(label);
     if (!cv) return;
@@ -523,6 +543,39 @@ export class Viewports {
     this.ghost.visible = points !== null && points.length > 1;
     if (points) setPositions(this.ghost.geometry, points);
     this.root.dataset['ghost'] = this.ghost.visible ? String(points!.length) : '';
+    this.requestRender();
+  }
+
+  /** The fairing assistant's ghost (curve and curvature comb), made on first use. */
+  private faired: { curve: THREE.Line; comb: THREE.LineSegments } | null = null;
+
+  /** Show the fairing assistant's ghost: the faired curve and its comb polylines, or hide it. */
+  setFaired(points: readonly Point[] | null, comb: readonly (readonly Point[])[] = []): void {
+    if (!this.faired) {
+      this.faired = {
+        curve: new THREE.Line(
+          new THREE.BufferGeometry(),
+          new THREE.LineDashedMaterial({ color: 0x7fe3a0, dashSize: 2, gapSize: 1 }),
+        ),
+        comb: new THREE.LineSegments(
+          new THREE.BufferGeometry(),
+          new THREE.LineBasicMaterial({ vertexColors: true, transparent: true, opacity: 0.6 }),
+        ),
+      };
+      this.scene.add(this.faired.curve, this.faired.comb);
+    }
+    const shown = points !== null && points.length > 1;
+    this.faired.curve.visible = shown;
+    this.faired.comb.visible = shown;
+    if (shown) {
+      setPositions(this.faired.curve.geometry, points);
+      this.faired.curve.computeLineDistances();
+      const segs = new Segments(this.faired.comb.geometry);
+      const col = new THREE.Color(0x7fe3a0);
+      for (const line of comb) segs.strip(line, col);
+      segs.done();
+    }
+    this.root.dataset['faired'] = shown ? String(points.length) : '';
     this.requestRender();
   }
 

@@ -12,8 +12,12 @@
 
 #include <array>
 #include <cerrno>
+#include <condition_variable>
 #include <cstring>
+#include <memory>
+#include <mutex>
 #include <string_view>
+#include <thread>
 #include <utility>
 
 #include "hula/core/error.hpp"
@@ -113,12 +117,85 @@ void check_header(const std::filesystem::path& path) {
 
 }  // namespace
 
+// WAL pages after a commit from which a checkpoint is due (SQLite's own default for its
+// automatic checkpoint, which this replaces).
+constexpr int kCheckpointPages = 1000;
+
+// Checkpoints a writer's WAL on a thread of its own, with a connection of its own (store.hpp): a
+// checkpoint syncs the WAL and then the database file, tens of milliseconds each on a busy disk,
+// which SQLite's automatic checkpoint spends inside the commit that crosses kCheckpointPages.
+// PASSIVE: it copies what no reader still needs and never blocks the writer; whatever it cannot
+// copy waits for the next round, and closing the last connection checkpoints the rest.
+class Checkpointer {
+ public:
+  explicit Checkpointer(std::filesystem::path path) : path_(std::move(path)), thread_([this] { run(); }) {}
+  ~Checkpointer() {
+    {
+      std::lock_guard lock(mutex_);
+      stopping_ = true;
+    }
+    wake_.notify_one();
+    thread_.join();
+  }
+  Checkpointer(const Checkpointer&) = delete;
+  Checkpointer& operator=(const Checkpointer&) = delete;
+
+  // Called by the writer's commit (sqlite3_wal_hook) with the pages now in the WAL.
+  void committed(int wal_pages) {
+    if (wal_pages < kCheckpointPages) return;
+    {
+      std::lock_guard lock(mutex_);
+      due_ = true;
+    }
+    wake_.notify_one();
+  }
+
+ private:
+  void run() {
+    sqlite3* db = nullptr;
+    std::unique_lock lock(mutex_);
+    while (true) {
+      wake_.wait(lock, [this] { return stopping_ || due_; });
+      if (stopping_) break;
+      due_ = false;
+      lock.unlock();
+      if (db == nullptr &&
+          sqlite3_open_v2(path_.c_str(), &db, SQLITE_OPEN_READWRITE | SQLITE_OPEN_NOMUTEX, nullptr) == SQLITE_OK) {
+        sqlite3_busy_timeout(db, kBusyTimeoutMs);
+        // A connection that has read nothing has not opened the WAL yet, and its checkpoint would
+        // do nothing: read the schema once.
+        sqlite3_exec(db, "SELECT count(*) FROM sqlite_master", nullptr, nullptr, nullptr);
+      }
+      // A failure (busy, I/O) leaves the pages in the WAL, where they are as durable as before; the
+      // next commit past the threshold asks again.
+      if (db != nullptr) sqlite3_wal_checkpoint_v2(db, nullptr, SQLITE_CHECKPOINT_PASSIVE, nullptr, nullptr);
+      lock.lock();
+    }
+    lock.unlock();
+    if (db != nullptr) sqlite3_close(db);
+  }
+
+  std::filesystem::path path_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  bool due_ = false;
+  bool stopping_ = false;
+  std::thread thread_;  // last: starts once the members above exist
+};
+
+int on_wal_commit(void* checkpointer, sqlite3*, const char*, int wal_pages) {
+  static_cast<Checkpointer*>(checkpointer)->committed(wal_pages);
+  return SQLITE_OK;
+}
+
 // The connection, its prepared statements and the writer lock.
 struct Store::Impl {
   std::filesystem::path path;
   Access access = Access::ReadWrite;
   sqlite3* db = nullptr;
   LockFd lock;
+  // A writer's checkpoints (stopped and closed before the writer's own connection).
+  std::unique_ptr<Checkpointer> checkpointer;
 
   // A prepared statement, finalised with the connection.
   struct Stmt {
@@ -130,6 +207,7 @@ struct Store::Impl {
   bool prepared = false;
 
   ~Impl() {
+    checkpointer.reset();
     for (Stmt* st : {&begin, &commit, &rollback, &put_entity, &delete_entity, &delete_steps_from, &delete_steps_through,
                      &put_step, &delete_step_entities, &put_step_entity, &set_applied, &put_document})
       if (st->s != nullptr) sqlite3_finalize(st->s);
@@ -203,6 +281,9 @@ struct Store::Impl {
   void configure_writer() {
     exec("PRAGMA foreign_keys = ON", "enable foreign keys");
     exec("PRAGMA synchronous = NORMAL", "set synchronous");
+    // Replaces SQLite's automatic checkpoint (also a WAL hook) by the checkpointer's thread.
+    checkpointer = std::make_unique<Checkpointer>(path);
+    sqlite3_wal_hook(db, on_wal_commit, checkpointer.get());
   }
 
   // Brings the schema from `from` to kSchemaVersion, one transaction per migration.

@@ -10,7 +10,13 @@
 // checkpoints only: a committed transaction survives the process being killed
 // (its pages are in the operating system's cache) but the last few may be lost
 // if the machine itself loses power; the file is never corrupted either way
-// (sqlite.org/pragma.html#pragma_synchronous).
+// (sqlite.org/pragma.html#pragma_synchronous). Those syncs happen at
+// checkpoints, which a writer runs on a thread of its own (PASSIVE, with its
+// own connection, once a commit leaves 1,000 pages in the WAL), not inside
+// the commit that crosses the threshold, as SQLite's automatic checkpoint
+// would: a commit costs no fsync, whatever the disk's latency. The guarantee is
+// the same: a commit is in the WAL before apply returns; closing the store
+// checkpoints what is left.
 //
 // Schema: numbered, append-only migrations (store/migrations/NNNN_*.sql), each
 // run inside one transaction, the version kept in PRAGMA user_version and the

@@ -2,18 +2,25 @@
 // Entities of a document: POST /api/documents/{name}/entities {"curve": curve
 // file, "name"?, "attributes"?} (201), GET|PUT|PATCH|DELETE
 // /api/documents/{name}/entities/{label}, and POST .../{label}/analysis
-// (analysis.hpp, read-only), POST .../{label}/insert-knot {"u", "times"?} and
-// .../{label}/elevate {"times"?} (oli::Edit through the document's kernel). A PATCH {"move": [{"index", "to"}],
+// (analysis.hpp, read-only), POST .../{label}/fair-preview (the fairing
+// assistant's ghost, studies::fair_within_tolerance, read-only: accepted by a
+// PUT of its curve), POST .../{label}/insert-knot {"u", "times"?},
+// .../{label}/elevate {"times"?}, .../{label}/reverse and .../{label}/split {"t"}
+// (oli::Edit through the document's kernel; split answers the two pieces'
+// labels, first [a, t] then [t, b]). A PATCH {"move": [{"index", "to"}],
 // "continue": true} continues the previous "move points" step, so a drag is
 // one undo step (oli::TransactMode::Continue). Every change answers
 // {"revision", "changes"} (the change set, also pushed to the document's
 // event stream).
+#include <optional>
+
 #include "hula/curve/curve.hpp"
 #include "hula/io/json_curve.hpp"
 #include "hula/io/json_read.hpp"
 #include "hula/server/analysis.hpp"
 #include "hula/server/documents.hpp"
 #include "hula/server/routes/routes.hpp"
+#include "hula/studies/fairing_assistant.hpp"
 
 namespace hula::server::routes {
 
@@ -75,6 +82,32 @@ std::vector<Move> read_moves(const Json& list) {
 int read_times(const Json& body) {
   const Json* t = json::optional_member(body, "times");
   return t ? static_cast<int>(json::get_integer(*t, json::root_path("times"), 1, 64)) : 1;
+}
+
+// {"tolerance", "method"?, "budget"?, "analysis"?} of a fairing preview.
+struct FairPreviewRequest {
+  studies::AssistantOptions options{};
+  std::optional<AnalysisRequest> analysis{};
+};
+
+FairPreviewRequest read_fair_preview(const Json& body) {
+  const json::JsonPath root;
+  json::reject_unknown_members(body, root, {"tolerance", "method", "budget", "analysis"});
+  FairPreviewRequest r;
+  r.options.tolerance = json::get_number(json::require_member(body, root, "tolerance"), root.member("tolerance"));
+  if (const Json* m = json::optional_member(body, "method"))
+    r.options.method = studies::assistant_method_from_name(json::get_string(*m, root.member("method")));
+  if (const Json* b = json::optional_member(body, "budget"))
+    r.options.time_budget_seconds = json::get_number(*b, root.member("budget"));
+  if (const Json* a = json::optional_member(body, "analysis")) r.analysis = analysis_request_from_json(*a);
+  r.options.validate();
+  return r;
+}
+
+Json points_json(const std::vector<Vec3>& points) {
+  Json out = Json::array();
+  for (const Vec3& p : points) out.push_back({p.x, p.y, p.z});
+  return out;
 }
 
 }  // namespace
@@ -174,14 +207,58 @@ void add_entities(Router& router, const Context& context) {
     }),
                             200);
   });
+  router.add("POST", "/api/documents/{name}/entities/{label}/reverse", [&docs](const Request& request) {
+    const Json body = request.body.empty() ? Json::object() : request.json();
+    json::reject_unknown_members(body, json::JsonPath(), std::span<const std::string_view>());  // no members
+    const auto [doc, label] = entity_of(docs, request);
+    return outcome_response(
+        doc->write([&](oli::Document& d) { return d.transact("reverse", [&](oli::Edit& e) { e.reverse(label); }); }),
+        200);
+  });
+  router.add("POST", "/api/documents/{name}/entities/{label}/split", [&docs](const Request& request) {
+    const Json body = request.json();
+    json::reject_unknown_members(body, json::JsonPath(), {"t"});
+    const double t = json::get_number(json::require_member(body, json::JsonPath(), "t"), json::root_path("t"));
+    const auto [doc, label] = entity_of(docs, request);
+    std::pair<oli::Label, oli::Label> pieces;
+    const oli::Outcome o = doc->write(
+        [&](oli::Document& d) { return d.transact("split", [&](oli::Edit& e) { pieces = e.split(label, t); }); });
+    Json out = Json::parse(outcome_response(o, 201).body);  // throws the error of a refused split
+    out["labels"] = Json::array({pieces.first.value, pieces.second.value});
+    return json_response(201, out);
+  });
+  router.add("POST", "/api/documents/{name}/entities/{label}/fair-preview", [&docs](const Request& request) {
+    const FairPreviewRequest preview = read_fair_preview(request.json());
+    const auto [doc, label] = entity_of(docs, request);
+    const auto [e, revision] = doc->read([&](const oli::Document& d) { return std::pair(d.get(label), d.revision()); });
+    // Computed outside the lock from the immutable snapshot; the document is not changed.
+    const studies::AssistantResult r = studies::fair_within_tolerance(e.curve(), preview.options);
+    Json out = Json::object();
+    out["revision"] = revision;
+    out["method"] = std::string(studies::assistant_method_name(preview.options.method));
+    out["tolerance"] = preview.options.tolerance;
+    out["curve"] = io::curve_to_json(r.curve);
+    out["energy_before"] = r.energy_before;
+    out["energy_after"] = r.energy_after;
+    out["max_deviation"] = r.max_deviation;
+    out["data_points"] = points_json(r.data_points);
+    out["faired_points"] = points_json(r.faired_points);
+    out["iterations"] = r.iterations;
+    out["stopped"] = r.stopped;
+    out["seconds"] = r.seconds;
+    if (preview.analysis) {
+      out["analysis"] = Json::parse(analysis_json(r.curve, *preview.analysis, revision));
+    }
+    return json_response(200, out);
+  });
   router.add("POST", "/api/documents/{name}/entities/{label}/analysis", [&docs](const Request& request) {
     const AnalysisRequest options = analysis_request_from_json(request.body.empty() ? Json::object() : request.json());
     const auto [doc, label] = entity_of(docs, request);
     const auto [e, revision] = doc->read([&](const oli::Document& d) { return std::pair(d.get(label), d.revision()); });
     // Computed outside the lock from the immutable snapshot: edits go on meanwhile.
-    Json out = analyse(e.curve().nurbs(), options);
-    out["revision"] = revision;
-    return json_response(200, out);
+    Response r;
+    r.body = analysis_json(e.curve(), options, revision);
+    return r;
   });
 }
 

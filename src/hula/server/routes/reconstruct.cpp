@@ -1,11 +1,15 @@
 // SPDX-License-Identifier: MIT
 // POST /api/reconstruct {"kappa", "tau", "length", "start_point"?,
-// "start_frame"? {"tangent", "normal"}, "tolerance"?, "at"?} → {"points":
-// [{"s", "position", "T", "N", "B"}], "curve": the fitted NURBS as a curve
-// file, "max_deviation"}: the curve with curvature κ(s) and torsion τ(s)
-// (intrinsic::reconstruct, thesis 8.2.2), as `hula reconstruct` prints it.
+// "start_frame"? {"tangent", "normal"}, "tolerance"?, "fit_tolerance"?, "at"?}
+// → {"points": [{"s", "position", "T", "N", "B"}], "curve": the fitted NURBS
+// as a curve file, "max_deviation", "integration", "fit"}: the curve with
+// curvature κ(s) and torsion τ(s) (intrinsic::reconstruct, thesis 8.2.2), as
+// `hula reconstruct` prints it, with its work bounded
+// (intrinsic::kFrontEndMaxSteps, kFrontEndMaxSegments) so that a rough law is
+// answered with an error naming kappa and the limit, never minutes of work.
 #include "hula/intrinsic/natural_equations.hpp"
 #include "hula/io/json_read.hpp"
+#include "hula/io/reconstruction_json.hpp"
 #include "hula/law/parser.hpp"
 #include "hula/server/routes/routes.hpp"
 
@@ -34,7 +38,8 @@ Json vec_json(const Vec3& v) { return Json::array({v.x, v.y, v.z}); }
 Response reconstruct(const Request& request) {
   const Json body = request.json();
   const json::JsonPath root;
-  json::reject_unknown_members(body, root, {"kappa", "tau", "length", "start_point", "start_frame", "tolerance", "at"});
+  json::reject_unknown_members(
+      body, root, {"kappa", "tau", "length", "start_point", "start_frame", "tolerance", "fit_tolerance", "at"});
   law::Context ctx;
   const law::Law kappa = read_law(body, "kappa", ctx);
   const law::Law tau = read_law(body, "tau", ctx);
@@ -51,6 +56,19 @@ Response reconstruct(const Request& request) {
   intrinsic::ReconstructionOptions options;
   if (const Json* t = json::optional_member(body, "tolerance"))
     options.tolerance = json::get_number(*t, json::root_path("tolerance"));
+  options.max_steps = intrinsic::kFrontEndMaxSteps;
+  intrinsic::NurbsFitOptions fit_options;
+  fit_options.tolerance = intrinsic::kFrontEndFitTolerance;
+  fit_options.relative = true;
+  fit_options.max_segments = intrinsic::kFrontEndMaxSegments;
+  if (const Json* t = json::optional_member(body, "fit_tolerance")) {
+    fit_options.tolerance = json::get_number(*t, json::root_path("fit_tolerance"));
+    try {
+      fit_options.validate();
+    } catch (const Error& e) {
+      throw Error(e.code(), "fit_" + e.message(), ErrorWhere{.field = "fit_tolerance"});
+    }
+  }
   const intrinsic::IntrinsicCurve curve = intrinsic::reconstruct(kappa, tau, "s", length, start, options);
   std::vector<double> ss;
   if (const Json* at = json::optional_member(body, "at"))
@@ -67,13 +85,13 @@ Response reconstruct(const Request& request) {
     j["B"] = vec_json(p.binormal);
     points.push_back(std::move(j));
   }
-  intrinsic::NurbsFitOptions fit_options;
-  fit_options.tolerance = options.tolerance;
-  const intrinsic::NurbsFitResult fit = intrinsic::fit_nurbs(curve, fit_options);
+  const intrinsic::NurbsFitResult fit = intrinsic::fit_nurbs_converged(curve, fit_options);
   Json out = Json::object();
   out["points"] = std::move(points);
   out["curve"] = io::curve_to_json(fit.curve);
   out["max_deviation"] = fit.max_deviation;
+  out["integration"] = io::integration_summary(curve);
+  out["fit"] = io::fit_summary(fit);
   return json_response(200, out);
 }
 
