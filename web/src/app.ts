@@ -4,7 +4,15 @@
 
 import { ApiError, Client } from './api/client';
 import { finLines } from './api/adapt';
-import type { Analysis, ChangeReply, ChangeSet, CurveFile, Entity, FinKind } from './api/types';
+import type {
+  Analysis,
+  ChangeReply,
+  ChangeSet,
+  CurveFile,
+  DocumentState,
+  Entity,
+  FinKind,
+} from './api/types';
 import { DocumentStore } from './store/store';
 import { Graph, type Abscissa, type Quantity } from './graphs/graph';
 import { Viewports, toVec3 } from './viewport/viewports';
@@ -26,6 +34,8 @@ import {
   type ToolName,
 } from './tools/tools';
 import { Panels } from './panels/panels';
+import { NurbsEvaluator } from './geometry/nurbs';
+import { analyseNurbs } from './geometry/analysis';
 import { DesignByCurvature } from './panels/design';
 import { OptimisePanel } from './panels/optimise';
 import { FairingAssistant } from './tools/fairing';
@@ -103,6 +113,22 @@ interface Drag {
   pending: Vec3 | null;
   pendingStamp: number;
   handles: Vec3[];
+  /** A NURBS or Bézier curve: drawn from the page's own evaluation while dragged. */
+  local: boolean;
+  /** Moved since the last frame drew it. */
+  dirty: boolean;
+}
+
+/**
+ * The dragged curve as the page computes it (geometry/analysis.ts), drawn
+ * instead of the server's analysis from the first move until the server's
+ * analysis of the final position arrives (request number `until` or later).
+ */
+interface Preview {
+  label: string;
+  analysis: Analysis;
+  handles: Vec3[];
+  until: number;
 }
 
 export class App {
@@ -121,6 +147,13 @@ export class App {
   private readonly analysisBusy = new Set<string>();
   private readonly analysisDirty = new Set<string>();
   private drag: Drag | null = null;
+  private preview: Preview | null = null;
+  /** The curve of the last drag until the server has answered all its moves. */
+  private settling: string | null = null;
+  /** Analysis requests started so far (Preview.until counts in them). */
+  private analysisSeq = 0;
+  /** Panels and history wait for the end of a drag (rebuilding them per move cost whole frames). */
+  private panelsStale = false;
   private events: EventSource | null = null;
   private offline = false;
   private navigating: { view: ViewName; x: number; y: number; mode: 'pan' | 'orbit' } | null = null;
@@ -131,13 +164,15 @@ export class App {
    * is selected or Escape clears it.
    */
   ghost: { label: string; analysis: Analysis } | null = null;
-  /** Timestamps of pointer events of the current drag, for the latency benchmark. */
+  /**
+   * Benchmarks of the current drag (ms): from a pointer event (its timeStamp)
+   * to the end of the frame that draws the curve moved there (the earliest
+   * event not yet drawn, when several come in one frame) …
+   */
   readonly latencies: number[] = [];
-  /** Pointer event to the frame that draws the server's curve for that position. */
-  readonly curveLatencies: number[] = [];
+  /** … and from a pointer event to the server's reply to the move it sent. */
+  readonly serverLatencies: number[] = [];
   private pointerStamp = 0;
-  private sentStamp = 0;
-  private curveStamp = 0;
 
   constructor(
     readonly client: Client,
@@ -161,7 +196,14 @@ export class App {
           this.fairing.edited(this.selected);
           break;
         case 'entity':
-          if (this.drag?.label !== e.label) this.redrawCurve(e.label);
+          if (this.drag?.label === e.label) {
+            // The server's echo of a drag move: analysed and listed once the drag ends
+            // (a curve the page cannot evaluate is still analysed as it moves).
+            if (!this.drag.local) this.refreshAnalysis(e.label);
+            this.panelsStale = true;
+            return;
+          }
+          this.redrawCurve(e.label);
           this.refreshAnalysis(e.label);
           this.refreshHistory();
           this.fairing.edited(e.label);
@@ -172,30 +214,26 @@ export class App {
           this.refreshHistory();
           break;
         case 'analysis':
-          if (this.drag?.label === e.label && this.sentStamp) {
-            this.curveStamp = this.sentStamp;
-            this.sentStamp = 0;
-          }
           this.redrawCurve(e.label);
           if (e.label === this.selected) this.updateGraphs();
           break;
         case 'history':
           break;
       }
-      this.panels.update();
+      if (this.drag) this.panelsStale = true;
+      else this.panels.update();
     });
     client.onOffline = () => {
       this.goOffline();
     };
+    this.viewports.beforeFrame.add(() => {
+      this.drawDrag();
+    });
     this.viewports.afterFrame.add(() => {
       const now = performance.now();
       if (this.pointerStamp) {
         this.latencies.push(now - this.pointerStamp);
         this.pointerStamp = 0;
-      }
-      if (this.curveStamp) {
-        this.curveLatencies.push(now - this.curveStamp);
-        this.curveStamp = 0;
       }
     });
     this.setTool('select');
@@ -204,7 +242,8 @@ export class App {
 
   // ---- document ------------------------------------------------------------
 
-  async open(name: string): Promise<void> {
+  /** Open a document; `prefetched` is its GET already under way (started before the views were built). */
+  async open(name: string, prefetched?: Promise<DocumentState>): Promise<void> {
     this.events?.close();
     this.events = null;
     this.select(null);
@@ -214,7 +253,7 @@ export class App {
     this.store.name = name;
     let doc;
     try {
-      doc = await this.client.getDocument(name);
+      doc = await (prefetched ?? this.client.getDocument(name));
     } catch (e) {
       if (e instanceof ApiError && e.status === 404) doc = await this.client.createDocument(name);
       else throw e;
@@ -353,6 +392,12 @@ export class App {
 
   private fetchStale(labels: string[]): void {
     for (const label of labels) {
+      // A curve being dragged is fetched once, when its last move is answered (dragSettled):
+      // the page sent every position, and a fetch per move doubled the drag's requests.
+      if (label === this.settling) {
+        this.panelsStale = true;
+        continue;
+      }
       void this.client
         .getEntity(this.store.name, label)
         .then((e) => {
@@ -495,13 +540,18 @@ export class App {
 
   /** The analysis as drawn: its combs scaled by the fin factors. */
   drawnAnalysis(label: string): Analysis | undefined {
-    const a = this.store.analyses.get(label);
+    const a = this.analysisOf(label);
     if (!a) return undefined;
     const base = this.finBase(label, a);
     const fins: Analysis['fins'] = {};
     for (const [kind, c] of Object.entries(a.combs) as [FinKind, Analysis['combs'][FinKind]][])
       if (c) fins[kind] = finLines(c.base, c.tip, base[kind] ?? 1);
     return { ...a, fins };
+  }
+
+  /** What the views and graphs draw for a curve: the drag's preview, else the server's analysis. */
+  analysisOf(label: string): Analysis | undefined {
+    return this.preview?.label === label ? this.preview.analysis : this.store.analyses.get(label);
   }
 
   /** Ask the server for what the views draw; one request per curve in flight, the latest wins. */
@@ -514,6 +564,7 @@ export class App {
     }
     this.analysisBusy.add(label);
     const s = this.settingsOf(label);
+    const seq = ++this.analysisSeq;
     void this.client
       .analysis(this.store.name, label, {
         samples: s.samples,
@@ -522,6 +573,8 @@ export class App {
         scale: s.scale,
       })
       .then((a) => {
+        const p = this.preview;
+        if (p?.label === label && this.drag?.label !== label && seq >= p.until) this.preview = null;
         this.store.setAnalysis(label, a);
       })
       .catch((e: unknown) => {
@@ -551,12 +604,17 @@ export class App {
   redrawCurve(label: string, handlesOverride?: Vec3[]): void {
     const e = this.store.entities.get(label);
     if (!e) return;
-    const a = this.store.analyses.get(label);
+    const a = this.analysisOf(label);
     const s = this.settingsOf(label);
     this.viewports.drawCurve(label, {
       analysis: this.drawnAnalysis(label),
       handles:
-        handlesOverride ?? (this.drag?.label === label ? this.drag.handles : handlesOf(e.curve)),
+        handlesOverride ??
+        (this.drag?.label === label
+          ? this.drag.handles
+          : this.preview?.label === label
+            ? this.preview.handles
+            : handlesOf(e.curve)),
       polygon:
         e.curve?.kind === 'nurbs' || e.curve?.kind === 'bezier' || e.curve?.kind === 'hermite',
       selected: label === this.selected,
@@ -565,7 +623,7 @@ export class App {
     });
     const root = this.viewports.root;
     root.dataset['fins'] = this.selected
-      ? this.shownFins(this.selected, this.store.analyses.get(this.selected)).join(' ')
+      ? this.shownFins(this.selected, this.analysisOf(this.selected)).join(' ')
       : '';
   }
 
@@ -644,7 +702,7 @@ export class App {
   }
 
   updateGraphs(): void {
-    const a = this.selected ? this.store.analyses.get(this.selected) : undefined;
+    const a = this.selected ? this.analysisOf(this.selected) : undefined;
     // The fairing assistant's ghost, when there is one, else the curve before the last edit.
     const ghost =
       this.fairing.analysis ??
@@ -800,9 +858,14 @@ export class App {
     const vp = this.viewports.viewProj(view);
     // A handle of the selected curve first (drag), then any curve (select).
     if (this.selected) {
-      const handles = handlesOf(this.store.entities.get(this.selected)?.curve);
+      // The last drag's points until the server's copy of the curve is back.
+      const handles =
+        this.preview?.label === this.selected
+          ? this.preview.handles
+          : handlesOf(this.store.entities.get(this.selected)?.curve);
       const hit = pickNearest([x, y], handles, vp, w, h, 8);
       if (hit) {
+        const curve = this.store.entities.get(this.selected)?.curve;
         this.drag = {
           label: this.selected,
           index: hit.index,
@@ -812,9 +875,16 @@ export class App {
           pending: null,
           pendingStamp: 0,
           handles: handles.slice(),
+          // Combescure fins are the server's alone: such a drag follows its analysis.
+          local:
+            curve !== undefined &&
+            NurbsEvaluator.of(curve) !== null &&
+            !this.settingsOf(this.selected).fins.includes('combescure'),
+          dirty: false,
         };
+        this.settling = this.selected;
         this.latencies.length = 0;
-        this.curveLatencies.length = 0;
+        this.serverLatencies.length = 0;
         this.setGhost(this.selected);
         this.setStatus(`Dragging point ${hit.index}`);
         return;
@@ -838,7 +908,10 @@ export class App {
     if ((hit?.index ?? null) !== this.hoverIndex) this.hoverSample(hit?.index ?? null);
   }
 
-  /** Move the dragged point on the plane through it parallel to the view (the page's drawing). */
+  /**
+   * Move the dragged point on the plane through it parallel to the view. The
+   * next frame draws it (drawDrag); the server hears of it through flushDrag.
+   */
   private dragTo(view: ViewName, ev: PointerEvent): void {
     const d = this.drag!;
     const [x, y] = this.local(view, ev);
@@ -847,11 +920,47 @@ export class App {
     if (!p) return;
     d.handles[d.index] = p;
     this.fairing.pointerMoved();
-    this.pointerStamp = performance.now();
-    d.pendingStamp = this.pointerStamp;
-    this.redrawCurve(d.label, d.handles);
+    // The event's own time: the latency includes the wait for the page to take the event.
+    if (!this.pointerStamp) this.pointerStamp = ev.timeStamp;
+    d.pendingStamp = ev.timeStamp;
+    d.dirty = true;
+    this.viewports.requestRender();
     d.pending = p;
     this.flushDrag();
+  }
+
+  /**
+   * Once per frame during a drag: the curve with the moved point, its fins and
+   * graphs, evaluated in the page for a NURBS or Bézier curve (the server's
+   * analysis for other kinds follows as it arrives).
+   */
+  private drawDrag(): void {
+    const d = this.drag;
+    if (!d?.dirty) return;
+    d.dirty = false;
+    const e = this.store.entities.get(d.label);
+    const evaluator = d.local && e?.curve ? NurbsEvaluator.of(e.curve, d.handles) : null;
+    if (evaluator) {
+      const s = this.settingsOf(d.label);
+      const analysis = analyseNurbs(evaluator, {
+        samples: s.samples,
+        by: this.abscissa === 's' ? 'arclength' : 'parameter',
+        fins: s.fins,
+        scale: s.scale,
+      });
+      // Knots stay where they are in t; inflections and extrema wait for the server.
+      const before = this.store.analyses.get(d.label) ?? this.preview?.analysis;
+      for (const f of before?.features ?? []) {
+        if (f.kind !== 'knot') continue;
+        let best = 0;
+        for (let i = 1; i < analysis.t.length; i++)
+          if (Math.abs(analysis.t[i]! - f.t) < Math.abs(analysis.t[best]! - f.t)) best = i;
+        analysis.features.push(analysis.s.length ? { ...f, s: analysis.s[best]! } : { ...f });
+      }
+      this.preview = { label: d.label, analysis, handles: d.handles, until: Infinity };
+      if (d.label === this.selected) this.updateGraphs();
+    }
+    this.redrawCurve(d.label, d.handles);
   }
 
   /** Send the latest drag position; one PATCH in flight, `continue` after the first. */
@@ -860,14 +969,19 @@ export class App {
     if (!d || d.inFlight || !d.pending) return;
     const to = d.pending;
     d.pending = null;
-    this.sentStamp = d.pendingStamp;
+    const stamp = d.pendingStamp;
     d.inFlight = true;
     const continued = !d.first;
     d.first = false;
     this.client
       .movePoints(this.store.name, d.label, [{ index: d.index, to: [...to] }], continued)
       .then((reply) => {
+        this.serverLatencies.push(performance.now() - stamp);
         this.applyReply(reply);
+        // A curve the page cannot evaluate follows through the server's analysis.
+        if (!d.local) this.refreshAnalysis(d.label);
+        // The fairing assistant refits what the server now holds.
+        this.fairing.edited(d.label);
       })
       .catch((e: unknown) => {
         this.toast(e);
@@ -879,19 +993,38 @@ export class App {
           this.drag = d;
           this.flushDrag();
           this.drag = null;
-        }
+        } else this.dragSettled(d);
       });
+  }
+
+  /**
+   * The drag's last move is answered: the curve is fetched as the server holds
+   * it (refused moves included) and its analysis, with features, replaces the
+   * preview; panels and history catch up.
+   */
+  private dragSettled(d: Drag): void {
+    if (this.settling === d.label) this.settling = null;
+    if (!d.first) {
+      if (this.preview?.label === d.label) this.preview.until = this.analysisSeq + 1;
+      this.fetchStale([d.label]);
+    }
+    if (this.panelsStale) {
+      this.panelsStale = false;
+      this.panels.update();
+    }
   }
 
   private endDrag(): void {
     const d = this.drag;
-    this.drag = null;
     if (!d) return;
+    // The last position is drawn even when no frame came between it and the release.
+    this.drawDrag();
+    this.drag = null;
     if (d.pending && !d.inFlight) {
       this.drag = d;
       this.flushDrag();
       this.drag = null;
-    }
+    } else if (!d.inFlight) this.dragSettled(d);
     this.setStatus(`Moved point ${d.index}`);
     this.redrawCurve(d.label);
   }

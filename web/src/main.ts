@@ -19,8 +19,11 @@ declare global {
 const client = new Client(location.origin);
 const hash = new URLSearchParams(location.hash.slice(1));
 const docName = hash.get('doc') ?? 'workbench.hula';
+// The document is fetched while the views (WebGL) are built: first load waits for the slower, not both.
+const prefetched = client.getDocument(docName);
+prefetched.catch(() => undefined); // open() reports the failure
 const app = new App(client, docName);
-const ready = app.open(docName).catch((e: unknown) => {
+const ready = app.open(docName, prefetched).catch((e: unknown) => {
   app.toast(e);
 });
 window.__hula = {

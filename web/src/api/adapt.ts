@@ -107,10 +107,18 @@ export function analysisFromServer(j: Json, by: 'parameter' | 'arclength'): Anal
       if (Math.abs(t[i]! - feat.t) < Math.abs(t[best]! - feat.t)) best = i;
     if (s.length) feat.s = s[best]!;
   }
-  // A curve is planar when its torsion is zero (or undefined) at every sample.
-  const kmax = Math.max(1e-300, ...kappa.map((k) => Math.abs(k ?? 0)));
-  const planar = tau.every((v) => v === null || Math.abs(v) <= 1e-9 * Math.max(1, kmax));
+  const planar = isPlanar(kappa, tau);
   return { t, s, points: pts, kappa, tau, speed, planar, frames, fins, combs, features };
+}
+
+/** A curve is planar when its torsion is zero (or undefined) at every sample. */
+export function isPlanar(
+  kappa: readonly (number | null)[],
+  tau: readonly (number | null)[],
+): boolean {
+  let kmax = 1e-300;
+  for (const k of kappa) kmax = Math.max(kmax, Math.abs(k ?? 0));
+  return tau.every((v) => v === null || Math.abs(v) <= 1e-9 * Math.max(1, kmax));
 }
 
 /**

@@ -87,9 +87,14 @@ export class Viewports {
   /** Frames drawn so far (benchmarks) and callbacks after each frame. */
   frames = 0;
   readonly afterFrame = new Set<(time: number) => void>();
+  /**
+   * Callbacks at the start of each frame, before it is drawn: where a drag
+   * updates the scene once per frame however many pointer events came.
+   */
+  readonly beforeFrame = new Set<(time: number) => void>();
 
   constructor(readonly root: HTMLElement) {
-    this.renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+    this.renderer = makeRenderer();
     this.renderer.setPixelRatio(Math.min(2, window.devicePixelRatio));
     this.renderer.setScissorTest(true);
     this.renderer.domElement.className = 'viewport-canvas';
@@ -282,6 +287,8 @@ export class Viewports {
   requestRender(): void {
     if (this.frameRequested) return;
     this.frameRequested = requestAnimationFrame((time) => {
+      // Still marked as requested: what the hooks change is drawn in this frame.
+      for (const f of this.beforeFrame) f(time);
       this.frameRequested = 0;
       this.render();
       for (const f of this.afterFrame) f(time);
@@ -460,17 +467,15 @@ export class Viewports {
     cv.polygon.visible = d.polygon && d.selected;
     cv.handles.visible = d.selected;
     // Fins: every polyline of every requested kind, as segments in the kind's colour.
-    const segs: number[] = [];
-    const cols: number[] = [];
+    const segs = new Segments(cv.fins.geometry);
     for (const kind of d.fins) {
       const lines = a?.fins[kind] ?? [];
       const col = new THREE.Color(FIN_COLOURS[kind]);
-      for (const line of lines) pushStrip(line, col, segs, cols);
+      for (const line of lines) segs.strip(line, col);
     }
-    setSegments(cv.fins.geometry, segs, cols);
+    segs.done();
     // Frames: short T (red), N (green), B (blue) axes every few samples.
-    const fsegs: number[] = [];
-    const fcols: number[] = [];
+    const fsegs = new Segments(cv.frames.geometry);
     const frames = d.frames ? a?.frames : undefined;
     if (a && frames && frames.length === a.points.length) {
       const b = bounds(a.points.map(toVec3));
@@ -487,16 +492,11 @@ export class Viewports {
         [f.T, f.N, f.B].forEach((axis, k) => {
           if (!axis.every(Number.isFinite)) return;
           const q = toVec3(axis);
-          pushStrip(
-            [p, [p[0] + q[0] * len, p[1] + q[1] * len, p[2] + q[2] * len]],
-            axisCols[k]!,
-            fsegs,
-            fcols,
-          );
+          fsegs.strip([p, [p[0] + q[0] * len, p[1] + q[1] * len, p[2] + q[2] * len]], axisCols[k]!);
         });
       }
     }
-    setSegments(cv.frames.geometry, fsegs, fcols);
+    fsegs.done();
     this.requestRender();
   }
 
@@ -570,11 +570,10 @@ export class Viewports {
     if (shown) {
       setPositions(this.faired.curve.geometry, points);
       this.faired.curve.computeLineDistances();
-      const segs: number[] = [];
-      const cols: number[] = [];
+      const segs = new Segments(this.faired.comb.geometry);
       const col = new THREE.Color(0x7fe3a0);
-      for (const line of comb) pushStrip(line, col, segs, cols);
-      setSegments(this.faired.comb.geometry, segs, cols);
+      for (const line of comb) segs.strip(line, col);
+      segs.done();
     }
     this.root.dataset['faired'] = shown ? String(points.length) : '';
     this.requestRender();
@@ -618,23 +617,97 @@ function setPositions(g: THREE.BufferGeometry, pts: readonly (Point | Vec3)[]): 
   g.computeBoundingSphere();
 }
 
-function pushStrip(
-  line: readonly (Point | Vec3)[],
-  col: THREE.Color,
-  segs: number[],
-  cols: number[],
-): void {
-  for (let i = 0; i + 1 < line.length; i++) {
-    const a = toVec3(line[i]!);
-    const b = toVec3(line[i + 1]!);
-    if (![...a, ...b].every((x) => Number.isFinite(x))) continue;
-    segs.push(...a, ...b);
-    cols.push(col.r, col.g, col.b, col.r, col.g, col.b);
+/**
+ * Line segments written into a geometry's own position and colour buffers,
+ * which are kept and grown by doubling (no allocation per redraw of a drag).
+ */
+class Segments {
+  private pos: Float32Array;
+  private col: Float32Array;
+  private n = 0;
+
+  constructor(private readonly g: THREE.BufferGeometry) {
+    const p = g.getAttribute('position') as THREE.BufferAttribute | undefined;
+    const c = g.getAttribute('color') as THREE.BufferAttribute | undefined;
+    this.pos = p && c ? (p.array as Float32Array) : new Float32Array(0);
+    this.col = p && c ? (c.array as Float32Array) : new Float32Array(0);
+  }
+
+  /** The segments of a polyline (those with a non-finite end are skipped). */
+  strip(line: readonly (Point | Vec3)[], c: THREE.Color): void {
+    for (let i = 0; i + 1 < line.length; i++) {
+      const a: readonly number[] = line[i]!;
+      const b: readonly number[] = line[i + 1]!;
+      const ax = a[0] ?? 0,
+        ay = a[1] ?? 0,
+        az = a[2] ?? 0,
+        bx = b[0] ?? 0,
+        by = b[1] ?? 0,
+        bz = b[2] ?? 0;
+      if (!Number.isFinite(ax + ay + az + bx + by + bz)) continue;
+      if (6 * (this.n + 2) > this.pos.length) this.grow();
+      const k = 3 * this.n;
+      const pos = this.pos;
+      const col = this.col;
+      pos[k] = ax;
+      pos[k + 1] = ay;
+      pos[k + 2] = az;
+      pos[k + 3] = bx;
+      pos[k + 4] = by;
+      pos[k + 5] = bz;
+      for (let j = 0; j < 6; j += 3) {
+        col[k + j] = c.r;
+        col[k + j + 1] = c.g;
+        col[k + j + 2] = c.b;
+      }
+      this.n += 2;
+    }
+  }
+
+  private grow(): void {
+    const size = Math.max(96, 2 * this.pos.length);
+    const pos = new Float32Array(size);
+    const col = new Float32Array(size);
+    pos.set(this.pos.subarray(0, 3 * this.n));
+    col.set(this.col.subarray(0, 3 * this.n));
+    this.pos = pos;
+    this.col = col;
+  }
+
+  /** Hand the buffers to the geometry (new attributes only when they grew). */
+  done(): void {
+    const p = this.g.getAttribute('position') as THREE.BufferAttribute | undefined;
+    if (p?.array === this.pos) {
+      p.needsUpdate = true;
+      (this.g.getAttribute('color') as THREE.BufferAttribute).needsUpdate = true;
+    } else {
+      const pa = new THREE.BufferAttribute(this.pos, 3);
+      const ca = new THREE.BufferAttribute(this.col, 3);
+      pa.setUsage(THREE.DynamicDrawUsage);
+      ca.setUsage(THREE.DynamicDrawUsage);
+      this.g.setAttribute('position', pa);
+      this.g.setAttribute('color', ca);
+    }
+    this.g.setDrawRange(0, this.n);
+    this.g.computeBoundingSphere();
   }
 }
 
-function setSegments(g: THREE.BufferGeometry, segs: number[], cols: number[]): void {
-  g.setAttribute('position', new THREE.Float32BufferAttribute(segs, 3));
-  g.setAttribute('color', new THREE.Float32BufferAttribute(cols, 3));
-  g.computeBoundingSphere();
+/**
+ * The WebGL renderer: antialiased on a GPU; without multisampling when the
+ * browser renders WebGL in software (SwiftShader, llvmpipe: the headless e2e
+ * runs), where multisampling doubled the cost of every frame
+ * (docs/benchmarks.md). A 1×1 probe context names the renderer.
+ */
+function makeRenderer(): THREE.WebGLRenderer {
+  return new THREE.WebGLRenderer({ antialias: !softwareWebGL() });
+}
+
+export function softwareWebGL(): boolean {
+  const gl = document.createElement('canvas').getContext('webgl2', { antialias: false });
+  if (!gl) return false;
+  const info = gl.getExtension('WEBGL_debug_renderer_info');
+  const name = String(gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER));
+  gl.getExtension('WEBGL_lose_context')?.loseContext();
+  return /swiftshader|llvmpipe|softpipe|software/i.test(name);
 }

@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# Regenerates the kernel's reference values for web/src/geometry/*.test.ts
+# from the curve files here: `hula eval` (derivatives to order 3) and
+# `hula analyse` (Frenet samples by arc length and by parameter, fins).
+# Usage: web/src/geometry/testdata/generate.sh [path/to/hula]
+set -euo pipefail
+cd "$(dirname "$0")"
+hula=${1:-../../../../build/ci/apps/hula/hula}
+fins=curvature,torsion,normal,binormal,bishop-u,bishop-v
+for c in space straight; do
+  "$hula" eval "$c.json" --at 0,0.1,0.2,0.35,0.5,0.65,0.8,0.93,1 --derivatives 3 >"$c.eval.json"
+  "$hula" analyse "$c.json" --samples 9 --by arclength --fins "$fins" --fin-scale 0.5 \
+    --fin-density 9 >"$c.arclength.json"
+  "$hula" analyse "$c.json" --samples 7 --by parameter >"$c.parameter.json"
+done
+(cd ../../.. && npx prettier --write src/geometry/testdata >/dev/null)
