@@ -136,8 +136,9 @@ struct IslandsResult {
   Solution best{};              ///< best champion over the islands (one objective)
   std::vector<Solution> front;  ///< non-dominated feasible set of the merged populations (NSGA-II)
   std::vector<IslandReport> islands;
-  std::size_t evaluations = 0;  ///< total over the islands
-  double seconds = 0.0;         ///< wall time of the whole run
+  /// The archipelago's report: island 0's termination and message, the most generations an island ran,
+  /// evaluations and failed evaluations summed over the islands, the wall time of the whole run.
+  RunReport report{};
 };
 
 /// Runs island `island` of `options.islands` with `algorithm` on `problem`, migrating through `exchange`.
