@@ -78,7 +78,7 @@ TEST_P(LmTermination, IterationBudget) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Solvers, LmTermination, ::testing::Values(LsqSolver::ClampedLm, LsqSolver::Ceres),
-                         [](const auto& info) { return std::string(lsq_solver_name(info.param)); });
+                         [](const auto& solver) { return std::string(lsq_solver_name(solver.param)); });
 
 // checks: residuals defined only at the start x = 3: every step is rejected and the damping grows 4× per step
 // until it overflows 1e16 (about 32 steps from 1e-3), so the clamped LM ends Stagnation
