@@ -214,8 +214,8 @@ TEST(CliOptimise, SigintCancelsWithTheBestSoFar) {
 TEST(CliOptimise, LogFilesParse) {
   TempDir dir;
   const auto csv = dir / "run.csv";
-  hula::testing::stdout_json(hula({"--problem", "sphere", "--dimension", "3", "--algorithm", "ga-real", "--population",
-                                   "4", "--generations", "2", "--log", csv.string()}));
+  (void)hula::testing::stdout_json(hula({"--problem", "sphere", "--dimension", "3", "--algorithm", "ga-real",
+                                         "--population", "4", "--generations", "2", "--log", csv.string()}));
   std::istringstream lines(slurp(csv));
   std::string header, row;
   std::getline(lines, header);
@@ -225,7 +225,7 @@ TEST(CliOptimise, LogFilesParse) {
   EXPECT_EQ(rows, 4u * 3u);
 
   const auto js = dir / "run.json";
-  hula::testing::stdout_json(hula(
+  (void)hula::testing::stdout_json(hula(
       {"--problem", "zdt1", "--algorithm", "nsga2", "--population", "8", "--generations", "2", "--log", js.string()}));
   const json log = json::parse(slurp(js));
   ASSERT_EQ(log["generations"].size(), 3u);
