@@ -128,8 +128,10 @@ class OptimiseResult:
         best_per_generation, mean_per_generation: the convergence graph, one
             value per generation (generation 0 = the initial population);
             None for island runs.
-        report: termination (``"MaxGenerations"``, ``"TargetReached"`` ...),
-            message, generations, evaluations, failed_evaluations, seconds.
+        report: the run report exactly as ``hula optimise`` prints it under
+            ``"report"``: termination (``"MaxGenerations"``, ``"TargetReached"``,
+            ``"Converged"`` ...), message, generations, evaluations,
+            failed_evaluations, seconds, seed, threads, algorithm, problem.
         islands: for island runs, one dict per island: seed, x, f, report,
             sent, received, accepted, its archive size (``archive``, NSGA-II:
             the island's external archive of non-dominated points, from which
@@ -159,7 +161,11 @@ def optimise(problem: Any, algorithm: str = "ga-real", *, dimension: int = 0, ob
     Args:
         problem: a :class:`Problem`, a pygmo UDP, or a built-in problem name.
         algorithm: ``"ga-real"`` (SBX + polynomial mutation), ``"ga-binary"``
-            (the thesis's binary GA: roulette, power boosting) or ``"nsga2"``.
+            (the thesis's binary GA: roulette, power boosting), ``"nsga2"`` or
+            ``"nelder-mead"`` (the deterministic downhill simplex from
+            ``start``, default the centre of the bounds; one objective, no
+            constraints; points outside the bounds rank worst). All run through
+            the same C++ entry as ``hula optimise`` (``optim::solve``).
         dimension, objectives: for built-in problems (0 = the problem's default).
         precision: binary coding resolution in the variables' units (one number
             or one per variable); required by ``"ga-binary"``.
@@ -176,6 +182,9 @@ def optimise(problem: Any, algorithm: str = "ga-real", *, dimension: int = 0, ob
             (10 generations), ``migrants`` (2 per neighbour), ``topology``
             (``"ring"``, ``"fully-connected"``, ``"random"``), ``topology_seed``,
             ``asynchronous`` (False: synchronous migration, repeatable).
+            ``"nelder-mead"`` takes ``start``, ``initial_step`` (0.1),
+            ``x_tolerance`` (1e-10), ``f_tolerance`` (1e-14),
+            ``max_evaluations`` (20000), ``restarts`` (3) and ``wall_time``.
             Unknown options raise :class:`~hulahoops.InvalidOptionError` naming them.
 
     The same seed gives the same result on every run and thread count.

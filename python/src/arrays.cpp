@@ -89,4 +89,6 @@ py::array to_array(std::span<const double> values) {
   return out;
 }
 
+py::object to_python(const io::Json& value) { return py::module_::import("json").attr("loads")(value.dump()); }
+
 }  // namespace hula::python

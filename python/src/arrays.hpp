@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "hula/core/vec.hpp"
+#include "hula/io/json_curve.hpp"
 
 namespace hula::python {
 
@@ -62,5 +63,9 @@ struct Points {
 
 /// A std::vector<double> as a 1-D array.
 [[nodiscard]] py::array to_array(std::span<const double> values);
+
+/// A JSON value as Python's json.loads reads the text the CLI prints (dicts, lists, floats, ints, str,
+/// bool, None): the one way a library JSON document (a run report, a study result) reaches Python.
+[[nodiscard]] py::object to_python(const io::Json& value);
 
 }  // namespace hula::python

@@ -14,15 +14,15 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "hula/core/error.hpp"
-#include "hula/optim/ga.hpp"
-#include "hula/optim/islands.hpp"
-#include "hula/optim/nsga2.hpp"
+#include "hula/io/run_report_json.hpp"
 #include "hula/optim/run_log.hpp"
+#include "hula/optim/solve.hpp"
 #include "hula/optim/test_problems.hpp"
 
 namespace hula::python {
@@ -61,7 +61,7 @@ class Options {
   std::set<std::string> used_;
 };
 
-optim::RunSettings run_settings(Options& o, std::size_t population) {
+optim::RunSettings run_settings(Options& o) {
   optim::RunSettings r;
   r.seed = o.get<std::uint64_t>("seed").value_or(0);
   r.threads = o.get<std::size_t>("threads").value_or(1);
@@ -70,19 +70,7 @@ optim::RunSettings run_settings(Options& o, std::size_t population) {
   r.stop.target = o.get<double>("target");
   r.stop.stagnation_generations = o.get<std::size_t>("stagnation_generations").value_or(0);
   r.stop.wall_time_seconds = o.get<double>("wall_time").value_or(0.0);
-  (void)population;
   return r;
-}
-
-py::dict report_dict(const optim::RunReport& r) {
-  py::dict d;
-  d["termination"] = std::string(optim::termination_name(r.termination));
-  d["message"] = r.message;
-  d["generations"] = r.generations;
-  d["evaluations"] = r.evaluations;
-  d["failed_evaluations"] = r.failed_evaluations;
-  d["seconds"] = r.seconds;
-  return d;
 }
 
 py::array rows(const std::vector<optim::Solution>& s, bool variables, std::size_t width) {
@@ -94,8 +82,8 @@ py::array rows(const std::vector<optim::Solution>& s, bool variables, std::size_
   return a;
 }
 
-// The island options (islands = 0: one population).
-optim::IslandOptions island_options(Options& o) {
+// The island options; none when "islands" is absent or 0 (one population).
+std::optional<optim::IslandOptions> island_options(Options& o) {
   optim::IslandOptions i;
   i.islands = o.get<std::size_t>("islands").value_or(0);
   i.interval = o.get<std::size_t>("migration_interval").value_or(i.interval);
@@ -103,81 +91,13 @@ optim::IslandOptions island_options(Options& o) {
   i.topology = optim::topology_from_name(o.get<std::string>("topology").value_or("ring"));
   i.topology_seed = o.get<std::uint64_t>("topology_seed").value_or(0);
   i.asynchronous = o.get<bool>("asynchronous").value_or(false);
+  if (i.islands == 0) return std::nullopt;
   return i;
 }
 
-// Runs the archipelago (GIL released; a Python objective re-acquires it per batch) into `out`.
-// A single-objective GA's result: its best design and the run report.
-void put_ga_result(const optim::GaResult& r, py::dict& out) {
-  out["x"] = to_array(r.best.variables);
-  out["f"] = to_array(r.best.objectives);
-  out["violation"] = r.best.violation;
-  out["report"] = report_dict(r.report);
-}
-
-void run_islands(const optim::Problem& problem, const optim::IslandAlgorithm& algorithm,
-                 const optim::IslandOptions& options, py::dict& out) {
-  optim::IslandsResult r;
-  {
-    const py::gil_scoped_release release;
-    r = optim::solve_islands(problem, algorithm, options);
-  }
-  if (problem.objectives == 1) {
-    out["x"] = to_array(r.best.variables);
-    out["f"] = to_array(r.best.objectives);
-    out["violation"] = r.best.violation;
-  } else {
-    out["front_x"] = rows(r.front, true, problem.dimension());
-    out["front_f"] = rows(r.front, false, problem.objectives);
-  }
-  py::list per;
-  for (const optim::IslandReport& i : r.islands) {
-    py::dict d;
-    d["island"] = i.island;
-    d["seed"] = i.seed;
-    if (problem.objectives == 1) {
-      d["x"] = to_array(i.best.variables);
-      d["f"] = to_array(i.best.objectives);
-    }
-    d["report"] = report_dict(i.report);
-    d["sent"] = i.sent;
-    d["received"] = i.received;
-    d["accepted"] = i.accepted;
-    if (problem.objectives > 1) d["archive"] = i.archive.size();
-    py::list events;
-    for (const optim::MigrationEvent& e : i.migrations)
-      events.append(py::dict(py::arg("generation") = e.generation, py::arg("from") = e.from,
-                             py::arg("received") = e.received, py::arg("accepted") = e.accepted));
-    d["migrations"] = events;
-    per.append(d);
-  }
-  py::dict report;
-  report["termination"] = std::string(optim::termination_name(r.islands.front().report.termination));
-  report["message"] = r.islands.front().report.message;
-  report["generations"] = r.islands.front().report.generations;
-  report["evaluations"] = r.evaluations;
-  std::size_t failed = 0;
-  for (const optim::IslandReport& i : r.islands) failed += i.report.failed_evaluations;
-  report["failed_evaluations"] = failed;
-  report["seconds"] = r.seconds;
-  out["report"] = report;
-  out["islands"] = per;
-}
-
-py::dict run(const optim::Problem& problem, const std::string& algorithm, const py::dict& options) {
-  Options o(options);
+// The algorithm's options from the dict (names as `hula optimise --algorithm`).
+optim::SolverOptions solver_options(const std::string& algorithm, Options& o, const optim::RunSettings& settings) {
   const std::size_t population = o.get<std::size_t>("population").value_or(100);
-  optim::RunSettings settings = run_settings(o, population);
-  const optim::IslandOptions islands = island_options(o);
-  std::vector<double> best_per_generation, mean_per_generation;
-  // The convergence graph of a single population; islands report per-island statistics instead.
-  if (islands.islands == 0)
-    settings.on_generation = [&](const optim::GenerationLog& g) {
-      const optim::GenerationStatistics s = optim::statistics(g);
-      best_per_generation.push_back(s.best);
-      mean_per_generation.push_back(s.mean);
-    };
-  py::dict out;
   if (algorithm == "ga-real") {
     optim::RealGaOptions a;
     a.population = population;
@@ -188,18 +108,9 @@ py::dict run(const optim::Problem& problem, const std::string& algorithm, const 
     a.tournament_size = o.get<std::size_t>("tournament_size").value_or(a.tournament_size);
     a.elites = o.get<std::size_t>("elites").value_or(a.elites);
     a.run = settings;
-    o.check_all_used(algorithm);
-    if (islands.islands > 0) {
-      run_islands(problem, a, islands, out);
-      return out;
-    }
-    optim::GaResult r;
-    {
-      const py::gil_scoped_release release;
-      r = optim::solve_real_ga(problem, a);
-    }
-    put_ga_result(r, out);
-  } else if (algorithm == "ga-binary") {
+    return a;
+  }
+  if (algorithm == "ga-binary") {
     optim::BinaryGaOptions a;
     a.population = population;
     a.crossover_probability = o.get<double>("crossover_probability").value_or(a.crossover_probability);
@@ -221,18 +132,9 @@ py::dict run(const optim::Problem& problem, const std::string& algorithm, const 
     }
     a.crossover = crossover == "uniform" ? optim::BinaryCrossover::Uniform : optim::BinaryCrossover::SinglePoint;
     a.run = settings;
-    o.check_all_used(algorithm);
-    if (islands.islands > 0) {
-      run_islands(problem, a, islands, out);
-      return out;
-    }
-    optim::GaResult r;
-    {
-      const py::gil_scoped_release release;
-      r = optim::solve_binary_ga(problem, a);
-    }
-    put_ga_result(r, out);
-  } else if (algorithm == "nsga2") {
+    return a;
+  }
+  if (algorithm == "nsga2") {
     optim::Nsga2Options a;
     a.population = population;
     a.crossover_probability = o.get<double>("crossover_probability").value_or(a.crossover_probability);
@@ -240,26 +142,102 @@ py::dict run(const optim::Problem& problem, const std::string& algorithm, const 
     a.mutation_probability = o.get<double>("mutation_probability");
     a.mutation_eta = o.get<double>("mutation_eta").value_or(a.mutation_eta);
     a.run = settings;
-    o.check_all_used(algorithm);
-    if (islands.islands > 0) {
-      run_islands(problem, a, islands, out);
-      return out;
-    }
-    optim::Nsga2Result r;
-    {
-      const py::gil_scoped_release release;
-      r = optim::solve_nsga2(problem, a);
-    }
-    out["front_x"] = rows(r.front, true, problem.dimension());
-    out["front_f"] = rows(r.front, false, problem.objectives);
+    return a;
+  }
+  throw Error(Errc::InvalidArgument,
+              "algorithm = \"" + algorithm +
+                  "\" is not an algorithm (expected \"ga-real\", \"ga-binary\", \"nsga2\" or \"nelder-mead\")",
+              {.field = "algorithm"});
+}
+
+// Nelder–Mead's options: the simplex settings, the evaluation budget and wall time.
+optim::NelderMeadOptions nelder_mead_options(Options& o) {
+  optim::NelderMeadOptions a;
+  a.initial_step = o.get<double>("initial_step").value_or(a.initial_step);
+  a.x_tolerance = o.get<double>("x_tolerance").value_or(a.x_tolerance);
+  a.f_tolerance = o.get<double>("f_tolerance").value_or(a.f_tolerance);
+  a.max_evaluations = o.get<std::size_t>("max_evaluations").value_or(a.max_evaluations);
+  a.restarts = o.get<std::size_t>("restarts").value_or(a.restarts);
+  a.wall_time_seconds = o.get<double>("wall_time").value_or(a.wall_time_seconds);
+  return a;
+}
+
+// The run report as `hula optimise` prints it under "report" (io::run_report_to_json with the same identity).
+py::object report_object(const optim::RunReport& r, const optim::Problem& problem, const std::string& algorithm,
+                         std::uint64_t seed, std::size_t threads) {
+  return to_python(
+      io::run_report_to_json(r, {.seed = seed, .threads = threads, .algorithm = algorithm, .problem = problem.name}));
+}
+
+py::dict run(const optim::Problem& problem, const std::string& algorithm, const py::dict& options) {
+  Options o(options);
+  optim::SolveOptions solve;
+  std::uint64_t seed = 0;
+  std::size_t threads = 1;
+  std::vector<double> best_per_generation, mean_per_generation;
+  if (algorithm == "nelder-mead") {
+    solve.algorithm = nelder_mead_options(o);
+    if (const auto start = o.get<std::vector<double>>("start")) solve.start = *start;
+  } else {
+    optim::RunSettings settings = run_settings(o);
+    seed = settings.seed;
+    threads = settings.threads;
+    solve.islands = island_options(o);
+    // The convergence graph of a single population; islands report per-island statistics instead.
+    if (!solve.islands)
+      settings.on_generation = [&](const optim::GenerationLog& g) {
+        const optim::GenerationStatistics s = optim::statistics(g);
+        best_per_generation.push_back(s.best);
+        mean_per_generation.push_back(s.mean);
+      };
+    solve.algorithm = solver_options(algorithm, o, settings);
+  }
+  o.check_all_used(algorithm);
+  optim::SolveResult r;
+  {
+    const py::gil_scoped_release release;
+    r = optim::solve(problem, solve);
+  }
+  py::dict out;
+  const bool front = problem.objectives > 1 || std::holds_alternative<optim::Nsga2Options>(solve.algorithm);
+  if (!front) {
+    const optim::Solution& best = r.solutions.front();
+    out["x"] = to_array(best.variables);
+    out["f"] = to_array(best.objectives);
+    out["violation"] = best.violation;
+  } else {
+    out["front_x"] = rows(r.solutions, true, problem.dimension());
+    out["front_f"] = rows(r.solutions, false, problem.objectives);
+  }
+  if (!r.population.empty()) {
     out["population_x"] = rows(r.population, true, problem.dimension());
     out["population_f"] = rows(r.population, false, problem.objectives);
-    out["report"] = report_dict(r.report);
-  } else {
-    throw Error(
-        Errc::InvalidArgument,
-        "algorithm = \"" + algorithm + "\" is not an algorithm (expected \"ga-real\", \"ga-binary\" or \"nsga2\")",
-        {.field = "algorithm"});
+  }
+  out["report"] = report_object(r.report, problem, algorithm, seed, threads);
+  if (solve.islands) {
+    py::list per;
+    for (const optim::IslandReport& i : r.islands) {
+      py::dict d;
+      d["island"] = i.island;
+      d["seed"] = i.seed;
+      if (problem.objectives == 1) {
+        d["x"] = to_array(i.best.variables);
+        d["f"] = to_array(i.best.objectives);
+      }
+      d["report"] = to_python(io::run_report_to_json(i.report));
+      d["sent"] = i.sent;
+      d["received"] = i.received;
+      d["accepted"] = i.accepted;
+      if (problem.objectives > 1) d["archive"] = i.archive.size();
+      py::list events;
+      for (const optim::MigrationEvent& e : i.migrations)
+        events.append(py::dict(py::arg("generation") = e.generation, py::arg("from") = e.from,
+                               py::arg("received") = e.received, py::arg("accepted") = e.accepted));
+      d["migrations"] = events;
+      per.append(d);
+    }
+    out["islands"] = per;
+    return out;
   }
   out["best_per_generation"] = to_array(best_per_generation);
   out["mean_per_generation"] = to_array(mean_per_generation);

@@ -43,12 +43,12 @@ py::dict evaluation(const studies::ParameterEvaluation& e) {
   return d;
 }
 
+// The run as the CLI prints it (io::fairing_result_to_json), with the parameters as an array, the curve as
+// a NurbsCurve and the convergence graph added.
 py::dict fairing(const studies::FairingResult& r, double chord_energy) {
-  py::dict d = evaluation(r.best);
-  d["improvement"] = chord_energy > 0.0 ? 1.0 - r.best.energy / chord_energy : 0.0;
-  d["evaluations"] = r.evaluations;
-  d["rounds"] = r.rounds;
-  d["seconds"] = r.seconds;
+  py::dict d = to_python(io::fairing_result_to_json(r, chord_energy));
+  d["parameters"] = to_array(r.best.parameters);
+  d["curve"] = py::cast(r.best.curve);
   d["convergence"] = to_array(r.convergence);
   return d;
 }
@@ -73,7 +73,7 @@ py::dict fair_knots(const py::handle& setup) {
     if (run_det) det = studies::fair_knots_deterministic(s, start, study.deterministic);
   }
   py::dict out;
-  out["study"] = py::module_::import("json").attr("loads")(io::fair_knots_study_to_json(study).dump());
+  out["study"] = to_python(io::fair_knots_study_to_json(study));
   out["energy"] = std::string(studies::fairing_energy_name(s.energy));
   out["chord_length"] = evaluation(*chord);
   if (given) out["given"] = evaluation(*given);

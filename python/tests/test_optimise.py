@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 import hulahoops as hh
+from conftest import hula
 
 
 def builtin_as_python(name, d, m=0):
@@ -139,3 +140,44 @@ def test_nan_rows_are_failed_evaluations():
 
     r = hh.optimise(hh.Problem(f, -np.ones(2), np.ones(2)), population=20, generations=20, seed=4)
     assert r.report["failed_evaluations"] > 0 and np.isfinite(r.f[0]) and r.x[0] <= 0.5
+
+
+@pytest.mark.parametrize("algorithm,problem,args", [
+    ("ga-real", "rastrigin", dict(population=20, generations=15)),
+    ("ga-binary", "rastrigin", dict(population=20, generations=15, precision=1e-4)),
+    ("nsga2", "zdt1", dict(population=20, generations=10)),
+    ("ga-real", "sphere", dict(population=20, generations=12, islands=2, migration_interval=4)),
+    ("nelder-mead", "rosenbrock", dict(max_evaluations=300)),
+])
+def test_report_equals_the_cli_report(algorithm, problem, args):
+    # checks Python's run report is the one `hula optimise` prints for the same problem and seed (one writer,
+    # io::run_report_to_json): every member equal but the wall time, and the same best point
+    flags = {"population": "--population", "generations": "--generations", "precision": "--precision",
+             "islands": "--islands", "migration_interval": "--migration-interval",
+             "max_evaluations": "--evaluations"}
+    cli_args = ["optimise", "--problem", problem, "--dimension", 4, "--algorithm", algorithm]
+    if algorithm != "nelder-mead":
+        cli_args += ["--seed", 5]
+    for key, value in args.items():
+        cli_args += [flags[key], value]
+    cli = hula(*cli_args)
+    options = dict(args)
+    precision = options.pop("precision", None)
+    if algorithm != "nelder-mead":
+        options["seed"] = 5
+    py = hh.optimise(problem, algorithm, dimension=4, precision=precision, **options)
+    cli_report, py_report = dict(cli["report"]), dict(py.report)
+    assert list(py_report) == list(cli_report)
+    cli_report.pop("seconds"), py_report.pop("seconds")
+    assert py_report == cli_report
+    if py.x is not None:
+        assert py.x.tolist() == cli["best"]["variables"] and py.f.tolist() == cli["best"]["objectives"]
+
+
+def test_nelder_mead_terminations():
+    # checks Nelder–Mead through optimise reports Converged on sphere-3 (minimum 0 at the origin, reached from
+    # (1, 2, 3)) and MaxEvaluations when its budget of 10 evaluations cannot solve Rosenbrock
+    done = hh.optimise("sphere", "nelder-mead", dimension=3, start=[1.0, 2.0, 3.0])
+    assert done.report["termination"] == "Converged" and np.allclose(done.x, 0.0, atol=1e-6)
+    cut = hh.optimise("rosenbrock", "nelder-mead", dimension=2, max_evaluations=10, start=[-1.2, 1.0])
+    assert cut.report["termination"] == "MaxEvaluations" and cut.report["evaluations"] <= 12

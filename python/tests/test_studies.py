@@ -25,6 +25,9 @@ def test_fair_knots_matches_cli_bit_for_bit():
             assert np.array_equal(getattr(r, method).parameters, cli[method]["parameters"])
             assert getattr(r, method).energy == cli[method]["energy"]
             assert getattr(r, method).energy <= r.chord_length.energy
+            # the run's report members are the CLI's (one writer, io::fairing_result_to_json)
+            for key in ("evaluations", "rounds", "stopped", "termination", "message"):
+                assert getattr(r, method)[key] == cli[method][key], key
     assert isinstance(r.chord_length.curve, hh.NurbsCurve)
 
 

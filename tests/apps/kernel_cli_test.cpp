@@ -26,6 +26,7 @@
 #include "hula/nurbs/refine.hpp"
 #include "hula/nurbs/reparam.hpp"
 #include "hula/testing/curve_generators.hpp"
+#include "hula/testing/process_json.hpp"
 #include "hula/testing/run_process.hpp"
 #include "hula/testing/temp_dir.hpp"
 
@@ -43,14 +44,7 @@ using testing::ProcessResult;
 constexpr int kCases = 6;  // random curves per property (each case runs the binary)
 
 json run_ok(const std::vector<std::string>& args) {
-  const ProcessResult r = testing::run_process(HULA_CLI_PATH, args);
-  EXPECT_EQ(r.exit_code, 0) << r.err;
-  try {
-    return json::parse(r.out);
-  } catch (const std::exception&) {
-    ADD_FAILURE() << "stdout is not JSON: " << r.out << r.err;
-    return json::object();
-  }
+  return testing::stdout_json(testing::run_process(HULA_CLI_PATH, args));
 }
 
 struct Case {

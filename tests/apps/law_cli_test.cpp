@@ -15,6 +15,7 @@
 #include "hula/io/json_curve.hpp"
 #include "hula/law/convert.hpp"
 #include "hula/law/parser.hpp"
+#include "hula/testing/process_json.hpp"
 #include "hula/testing/run_process.hpp"
 #include "hula/testing/temp_dir.hpp"
 
@@ -33,31 +34,12 @@ ProcessResult law(const std::vector<std::string>& args) {
   return hula::testing::run_process(HULA_CLI_PATH, all);
 }
 
-json output(const ProcessResult& r) {
-  EXPECT_EQ(r.exit_code, 0) << r.err;
-  try {
-    return json::parse(r.out);
-  } catch (const std::exception&) {
-    ADD_FAILURE() << "stdout is not JSON: " << r.out;
-    return json::object();
-  }
-}
-
-json error_of(const ProcessResult& r) {
-  try {
-    return json::parse(r.err)["error"];
-  } catch (const std::exception&) {
-    ADD_FAILURE() << "stderr is not JSON: " << r.err;
-    return json::object();
-  }
-}
-
 // checks (issue 10 defect): `vec(exp(1000*t),0,0) --at 1` exited 0 printing null; e^1000
 // exceeds DBL_MAX, so it is exit 4 NumericalFailure naming exp(1000*t) and t[0] = 1.
 TEST(LawCli, OverflowIsExit4NamingSubexpressionAndParameter) {
   const ProcessResult r = law({"vec(exp(1000*t), 0, 0)", "--at", "0,1"});
   EXPECT_EQ(r.exit_code, 4) << r.out;
-  const json e = error_of(r);
+  const json e = hula::testing::stderr_error(r);
   EXPECT_EQ(e["code"], "NumericalFailure");
   const std::string m = e["message"];
   EXPECT_NE(m.find("t[1] = 1"), std::string::npos) << m;
@@ -65,7 +47,7 @@ TEST(LawCli, OverflowIsExit4NamingSubexpressionAndParameter) {
   EXPECT_NE(m.find("overflow"), std::string::npos) << m;
   EXPECT_EQ(e["where"]["index"], 1);
   // e^500 is finite: no error, the value itself.
-  const json ok = output(law({"exp(500*t)", "--at", "1"}));
+  const json ok = hula::testing::stdout_json(law({"exp(500*t)", "--at", "1"}));
   EXPECT_DOUBLE_EQ(ok["results"][0]["derivatives"][0][0].get<double>(), std::exp(500.0));
 }
 
@@ -74,14 +56,14 @@ TEST(LawCli, OverflowIsExit4NamingSubexpressionAndParameter) {
 TEST(LawCli, DivergentIntegralIsExit4UnlessAllowUnconverged) {
   const ProcessResult r = law({"1/(t-1)", "--integrate", "0,2"});
   EXPECT_EQ(r.exit_code, 4) << r.out;
-  const json e = error_of(r);
+  const json e = hula::testing::stderr_error(r);
   EXPECT_EQ(e["code"], "NumericalFailure");
   EXPECT_NE(e["message"].get<std::string>().find("--integrate 0,2"), std::string::npos) << e;
   EXPECT_NE(e["message"].get<std::string>().find("--allow-unconverged"), std::string::npos) << e;
-  const json j = output(law({"1/(t-1)", "--integrate", "0,2", "--allow-unconverged"}));
+  const json j = hula::testing::stdout_json(law({"1/(t-1)", "--integrate", "0,2", "--allow-unconverged"}));
   EXPECT_FALSE(j["integral"]["converged"].get<bool>());
   // a convergent integral is unaffected: ∫_0^π sin = 2
-  const json s = output(law({"sin(t)", "--integrate", "0,3.141592653589793"}));
+  const json s = hula::testing::stdout_json(law({"sin(t)", "--integrate", "0,3.141592653589793"}));
   EXPECT_NEAR(s["integral"]["value"].get<double>(), 2.0, 1e-12);
 }
 
@@ -90,15 +72,16 @@ TEST(LawCli, DivergentIntegralIsExit4UnlessAllowUnconverged) {
 TEST(LawCli, PoleIsNotARootAndIsExit4UnlessAllowUnconverged) {
   const ProcessResult r = law({"1/(t-1)", "--roots", "0,2.3"});
   EXPECT_EQ(r.exit_code, 4) << r.out;
-  EXPECT_NE(error_of(r)["message"].get<std::string>().find("--roots 0,2.3: the sign change at t = 0.99999"),
+  EXPECT_NE(hula::testing::stderr_error(r)["message"].get<std::string>().find(
+                "--roots 0,2.3: the sign change at t = 0.99999"),
             std::string::npos)
       << r.err;
-  const json j = output(law({"1/(t-1)", "--roots", "0,2.3", "--allow-unconverged"}));
+  const json j = hula::testing::stdout_json(law({"1/(t-1)", "--roots", "0,2.3", "--allow-unconverged"}));
   EXPECT_TRUE(j["roots"]["roots"].empty());
   ASSERT_EQ(j["roots"]["unresolved"].size(), 1U);
   EXPECT_NEAR(j["roots"]["unresolved"][0].get<double>(), 1.0, 1e-12);
   EXPECT_FALSE(j["roots"]["converged"].get<bool>());
-  const json p = output(law({"t^2 - 2", "--roots", "0,2"}));
+  const json p = hula::testing::stdout_json(law({"t^2 - 2", "--roots", "0,2"}));
   EXPECT_NEAR(p["roots"]["roots"][0].get<double>(), std::sqrt(2.0), 1e-14);
   EXPECT_TRUE(p["roots"]["converged"].get<bool>());
 }
@@ -107,7 +90,7 @@ TEST(LawCli, PoleIsNotARootAndIsExit4UnlessAllowUnconverged) {
 // the kink; now the value |0| = 0 is kept, the derivatives are null and "undefined" says why.
 // Away from the kink the derivative is sign(t) = -1 as before.
 TEST(LawCli, DerivativeOfAbsAtItsKinkIsNullWithReason) {
-  const json j = output(law({"abs(t)", "--at", "0,-0.5", "--derivatives", "2"}));
+  const json j = hula::testing::stdout_json(law({"abs(t)", "--at", "0,-0.5", "--derivatives", "2"}));
   const json& at0 = j["results"][0];
   EXPECT_EQ(at0["derivatives"][0][0], 0.0);
   EXPECT_TRUE(at0["derivatives"][1][0].is_null()) << at0;
@@ -119,16 +102,16 @@ TEST(LawCli, DerivativeOfAbsAtItsKinkIsNullWithReason) {
   EXPECT_EQ(away["derivatives"][1][0], -1.0);
   EXPECT_FALSE(away.contains("undefined"));
   // a piecewise join and a min/max tie are kinks too
-  const json pw = output(law({"piecewise(t < 1, t, 2 - t)", "--at", "1", "--derivatives", "1"}));
+  const json pw = hula::testing::stdout_json(law({"piecewise(t < 1, t, 2 - t)", "--at", "1", "--derivatives", "1"}));
   EXPECT_EQ(pw["results"][0]["undefined"]["order"], 1);
-  const json mx = output(law({"max(t, 1 - t)", "--at", "0.5", "--derivatives", "1"}));
+  const json mx = hula::testing::stdout_json(law({"max(t, 1 - t)", "--at", "0.5", "--derivatives", "1"}));
   EXPECT_EQ(mx["results"][0]["undefined"]["kind"], "MinMaxSwitch");
 }
 
 // checks: --singularities lists the kink, the pole and the undefined interval of a law known in
 // closed form (abs(t + 0.5) at −0.5, 1/(t − 1) at 1, sqrt(t + 2) undefined below −2).
 TEST(LawCli, SingularitiesListsKinksPolesAndUndefinedIntervals) {
-  const json j = output(law({"abs(t + 0.5) + 1/(t - 1) + sqrt(t + 2)", "--singularities", "-3,3"}));
+  const json j = hula::testing::stdout_json(law({"abs(t + 0.5) + 1/(t - 1) + sqrt(t + 2)", "--singularities", "-3,3"}));
   const json& s = j["singularities"];
   bool kink = false, pole = false;
   for (const json& p : s["points"]) {
@@ -147,7 +130,7 @@ TEST(LawCli, SingularitiesListsKinksPolesAndUndefinedIntervals) {
 TEST(LawCli, ToNurbsWritesCurveWithinTolerance) {
   hula::testing::TempDir dir;
   const std::string out = (dir / "helix.json").string();
-  const json j = output(
+  const json j = hula::testing::stdout_json(
       law({"vec(2*cos(t), 2*sin(t), 0.5*t)", "--to-nurbs", "0,6.283185307179586", "--tolerance", "1e-7", "-o", out}));
   EXPECT_LE(j["nurbs"]["max_deviation"].get<double>(), 1e-7);
   const hula::nurbs::NurbsCurve c = hula::io::read_curve_file(out).nurbs();
@@ -166,14 +149,14 @@ TEST(LawCli, ToNurbsWritesCurveWithinTolerance) {
 // says how long the full text would have been.
 TEST(LawCli, PrintedEighthDerivativeStaysCompact) {
   const ProcessResult r = law({"normalize(vec(cos(t), sin(t)*t, t^2))", "--print-derivative", "8"});
-  const json j = output(r);
+  const json j = hula::testing::stdout_json(r);
   EXPECT_LT(r.out.size(), 1'000'000U);
   EXPECT_EQ(j["derivative"]["order"], 8);
   EXPECT_GT(j["derivative"]["printed_length"].get<double>(), 1e8);
   EXPECT_FALSE(j["derivative"]["definitions"].empty());
   EXPECT_EQ(j["derivative"]["definitions"][0]["name"], "_q1");
   // low orders are printed whole and simplified: d/dt (t^3 + t*t) = 3*t^2 + 2*t
-  const json low = output(law({"t^3 + t*t", "--print-derivative", "1"}));
+  const json low = hula::testing::stdout_json(law({"t^3 + t*t", "--print-derivative", "1"}));
   EXPECT_EQ(low["derivative"]["expression"], "3*t^2 + 2*t");
 }
 

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "hula/io/atomic_file.hpp"
+#include "hula/testing/process_json.hpp"
 #include "hula/testing/run_process.hpp"
 #include "hula/testing/temp_dir.hpp"
 
@@ -35,26 +36,6 @@ ProcessResult hula(const std::vector<std::string>& args) {
   return hula::testing::run_process(HULA_CLI_PATH, all);
 }
 
-json output(const ProcessResult& r) {
-  EXPECT_EQ(r.exit_code, 0) << r.err;
-  try {
-    return json::parse(r.out);
-  } catch (const std::exception&) {
-    ADD_FAILURE() << "stdout is not JSON: " << r.out;
-    return json::object();
-  }
-}
-
-// Parses stderr as the error JSON and returns its "error" object.
-json error_of(const ProcessResult& r) {
-  try {
-    return json::parse(r.err)["error"];
-  } catch (const std::exception&) {
-    ADD_FAILURE() << "stderr is not JSON: " << r.err;
-    return json::object();
-  }
-}
-
 std::string slurp(const std::filesystem::path& p) {
   std::ifstream in(p);
   std::ostringstream s;
@@ -66,8 +47,8 @@ std::string slurp(const std::filesystem::path& p) {
 // whose hypervolume for the default reference (1.1, 1.1) exceeds 0.6 (the true front's is 0.8690).
 // (Seeds 1-10 give 0.80-0.85 here; the default 30 variables need about 150 generations for that.)
 TEST(CliOptimise, Zdt1Nsga2FrontAndHypervolume) {
-  const json j = output(hula({"--problem", "zdt1", "--dimension", "10", "--algorithm", "nsga2", "--population", "40",
-                              "--generations", "60", "--seed", "1"}));
+  const json j = hula::testing::stdout_json(hula({"--problem", "zdt1", "--dimension", "10", "--algorithm", "nsga2",
+                                                  "--population", "40", "--generations", "60", "--seed", "1"}));
   ASSERT_TRUE(j.contains("front"));
   ASSERT_GT(j["front"].size(), 5u);
   for (const json& s : j["front"]) {
@@ -92,7 +73,7 @@ TEST(CliOptimise, Zdt1Nsga2FrontAndHypervolume) {
 
 // checks: the real-coded GA brings the 10-D sphere below 1e-3 and prints {"best", "report"}.
 TEST(CliOptimise, SphereRealGaReachesSmallObjective) {
-  const json j = output(hula(
+  const json j = hula::testing::stdout_json(hula(
       {"--problem", "sphere", "--algorithm", "ga-real", "--population", "40", "--generations", "150", "--seed", "3"}));
   ASSERT_TRUE(j.contains("best"));
   EXPECT_FALSE(j.contains("front"));
@@ -105,10 +86,10 @@ TEST(CliOptimise, SphereRealGaReachesSmallObjective) {
 TEST(CliOptimise, SameSeedSameOutputOnOneAndTwoThreads) {
   for (const std::string algorithm : {"ga-real", "nsga2"}) {
     const std::string problem = algorithm == "nsga2" ? "zdt2" : "rastrigin";
-    json one = output(hula({"--problem", problem, "--algorithm", algorithm, "--population", "20", "--generations", "10",
-                            "--seed", "7", "--threads", "1"}));
-    json two = output(hula({"--problem", problem, "--algorithm", algorithm, "--population", "20", "--generations", "10",
-                            "--seed", "7", "--threads", "2"}));
+    json one = hula::testing::stdout_json(hula({"--problem", problem, "--algorithm", algorithm, "--population", "20",
+                                                "--generations", "10", "--seed", "7", "--threads", "1"}));
+    json two = hula::testing::stdout_json(hula({"--problem", problem, "--algorithm", algorithm, "--population", "20",
+                                                "--generations", "10", "--seed", "7", "--threads", "2"}));
     EXPECT_EQ(two["report"]["threads"], 2);
     for (json* j : {&one, &two}) {
       (*j)["report"].erase("seconds");
@@ -139,7 +120,7 @@ TEST(CliOptimise, BadOptionsExit3NamingTheField) {
     const ProcessResult r = hula(c.args);
     EXPECT_EQ(r.exit_code, 3) << c.field << ": " << r.err;
     EXPECT_TRUE(r.out.empty()) << r.out;
-    const json e = error_of(r);
+    const json e = hula::testing::stderr_error(r);
     EXPECT_EQ(e["code"], "InvalidOption") << r.err;
     EXPECT_EQ(e["where"]["field"], c.field) << r.err;
     EXPECT_NE(e["message"].get<std::string>().find(c.in_message), std::string::npos) << r.err;
@@ -151,11 +132,11 @@ TEST(CliOptimise, BadOptionsExit3NamingTheField) {
 TEST(CliOptimise, UnknownNamesExit3UsageErrorsExit2) {
   const ProcessResult p = hula({"--problem", "zdt5", "--algorithm", "nsga2"});
   EXPECT_EQ(p.exit_code, 3);
-  EXPECT_EQ(error_of(p)["where"]["field"], "problem");
+  EXPECT_EQ(hula::testing::stderr_error(p)["where"]["field"], "problem");
   const ProcessResult a = hula({"--problem", "zdt1", "--algorithm", "pagmo-simplex"});
   EXPECT_EQ(a.exit_code, 3);
-  EXPECT_EQ(error_of(a)["where"]["field"], "algorithm");
-  EXPECT_NE(error_of(a)["message"].get<std::string>().find("pagmo-simplex"), std::string::npos);
+  EXPECT_EQ(hula::testing::stderr_error(a)["where"]["field"], "algorithm");
+  EXPECT_NE(hula::testing::stderr_error(a)["message"].get<std::string>().find("pagmo-simplex"), std::string::npos);
   for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
            {"--algorithm", "nsga2"},
            {"--problem", "zdt1"},
@@ -168,22 +149,39 @@ TEST(CliOptimise, UnknownNamesExit3UsageErrorsExit2) {
            {"--problem", "sphere", "--algorithm", "ga-real", "--time", "-1"}}) {
     const ProcessResult r = hula(args);
     EXPECT_EQ(r.exit_code, 2) << r.err;
-    EXPECT_EQ(error_of(r)["code"], "UsageError");
+    EXPECT_EQ(hula::testing::stderr_error(r)["code"], "UsageError");
   }
+}
+
+// checks: nelder-mead on 2-variable Rosenbrock from the centre of [-5.12, 5.12]^2 reaches the known minimum (1, 1)
+// and reports Converged; a budget of 10 evaluations ends it MaxEvaluations; --seed (it draws nothing) is refused
+TEST(CliOptimise, NelderMeadTerminations) {
+  const json j =
+      hula::testing::stdout_json(hula({"--problem", "rosenbrock", "--dimension", "2", "--algorithm", "nelder-mead"}));
+  EXPECT_EQ(j["report"]["termination"], "Converged") << j["report"];
+  EXPECT_EQ(j["report"]["algorithm"], "nelder-mead");
+  for (const double x : j["best"]["variables"]) EXPECT_NEAR(x, 1.0, 1e-6);
+  const json cut = hula::testing::stdout_json(
+      hula({"--problem", "rosenbrock", "--dimension", "2", "--algorithm", "nelder-mead", "--evaluations", "10"}));
+  EXPECT_EQ(cut["report"]["termination"], "MaxEvaluations") << cut["report"];
+  const ProcessResult seeded =
+      hula({"--problem", "rosenbrock", "--dimension", "2", "--algorithm", "nelder-mead", "--seed", "3"});
+  EXPECT_EQ(seeded.exit_code, 3);
+  EXPECT_EQ(hula::testing::stderr_error(seeded)["where"]["field"], "seed");
 }
 
 // checks: --evaluations is the binding budget and the report says so.
 TEST(CliOptimise, EvaluationBudget) {
-  const json j =
-      output(hula({"--problem", "rastrigin", "--algorithm", "ga-real", "--population", "20", "--evaluations", "200"}));
+  const json j = hula::testing::stdout_json(
+      hula({"--problem", "rastrigin", "--algorithm", "ga-real", "--population", "20", "--evaluations", "200"}));
   EXPECT_EQ(j["report"]["termination"], "MaxEvaluations");
   EXPECT_LE(j["report"]["evaluations"].get<int>(), 200);
 }
 
 // checks: --time 0.2 on a run of a hundred million generations ends with WallTime and a best solution.
 TEST(CliOptimise, WallTimeEndsTheRunWithTheBestSoFar) {
-  const json j = output(hula({"--problem", "sphere", "--algorithm", "ga-real", "--population", "10", "--generations",
-                              "100000000", "--time", "0.2"}));
+  const json j = hula::testing::stdout_json(hula({"--problem", "sphere", "--algorithm", "ga-real", "--population", "10",
+                                                  "--generations", "100000000", "--time", "0.2"}));
   EXPECT_EQ(j["report"]["termination"], "WallTime");
   EXPECT_GE(j["report"]["seconds"].get<double>(), 0.2);
   ASSERT_EQ(j["best"]["objectives"].size(), 1u);
@@ -216,8 +214,8 @@ TEST(CliOptimise, SigintCancelsWithTheBestSoFar) {
 TEST(CliOptimise, LogFilesParse) {
   TempDir dir;
   const auto csv = dir / "run.csv";
-  output(hula({"--problem", "sphere", "--dimension", "3", "--algorithm", "ga-real", "--population", "4",
-               "--generations", "2", "--log", csv.string()}));
+  (void)hula::testing::stdout_json(hula({"--problem", "sphere", "--dimension", "3", "--algorithm", "ga-real",
+                                         "--population", "4", "--generations", "2", "--log", csv.string()}));
   std::istringstream lines(slurp(csv));
   std::string header, row;
   std::getline(lines, header);
@@ -227,7 +225,7 @@ TEST(CliOptimise, LogFilesParse) {
   EXPECT_EQ(rows, 4u * 3u);
 
   const auto js = dir / "run.json";
-  output(hula(
+  (void)hula::testing::stdout_json(hula(
       {"--problem", "zdt1", "--algorithm", "nsga2", "--population", "8", "--generations", "2", "--log", js.string()}));
   const json log = json::parse(slurp(js));
   ASSERT_EQ(log["generations"].size(), 3u);
@@ -245,8 +243,8 @@ TEST(CliOptimise, ProblemFile) {
     "objectives": ["x^2 + y^2"],
     "constraints": [{"expression": "1 - x - y", "type": "inequality"}]
   })j");
-  const json j = output(hula({"--problem-file", (dir / "p.json").string(), "--algorithm", "ga-real", "--population",
-                              "40", "--generations", "100", "--seed", "2"}));
+  const json j = hula::testing::stdout_json(hula({"--problem-file", (dir / "p.json").string(), "--algorithm", "ga-real",
+                                                  "--population", "40", "--generations", "100", "--seed", "2"}));
   EXPECT_NEAR(j["best"]["objectives"][0].get<double>(), 0.5, 1e-2);
   EXPECT_LE(j["best"]["violation"].get<double>(), 0.0);
   EXPECT_EQ(j["report"]["problem"], "circle-cut");
@@ -256,8 +254,8 @@ TEST(CliOptimise, ProblemFile) {
     "objectives": ["x", "1 - sqrt(x)"],
     "reference": [2, 2]
 })j");
-  const json m = output(hula({"--problem-file", (dir / "mo.json").string(), "--algorithm", "nsga2", "--population",
-                              "20", "--generations", "20"}));
+  const json m = hula::testing::stdout_json(hula({"--problem-file", (dir / "mo.json").string(), "--algorithm", "nsga2",
+                                                  "--population", "20", "--generations", "20"}));
   EXPECT_EQ(m["reference"], json::array({2, 2}));
   EXPECT_GT(m["hypervolume"].get<double>(), 3.0);
 }
@@ -271,7 +269,7 @@ TEST(CliOptimise, ProblemFileErrors) {
   })j");
   const ProcessResult r = hula({"--problem-file", (dir / "bad.json").string(), "--algorithm", "nsga2"});
   EXPECT_EQ(r.exit_code, 3);
-  const json e = error_of(r);
+  const json e = hula::testing::stderr_error(r);
   EXPECT_EQ(e["code"], "ParseError");
   EXPECT_EQ(e["where"]["field"], "objectives");
   EXPECT_EQ(e["where"]["index"], 1);
@@ -281,7 +279,7 @@ TEST(CliOptimise, ProblemFileErrors) {
 
   const ProcessResult m = hula({"--problem-file", (dir / "none.json").string(), "--algorithm", "nsga2"});
   EXPECT_EQ(m.exit_code, 3);
-  EXPECT_EQ(error_of(m)["code"], "IoError");
+  EXPECT_EQ(hula::testing::stderr_error(m)["code"], "IoError");
 }
 
 }  // namespace

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "hula/io/json_curve.hpp"
+#include "hula/testing/process_json.hpp"
 #include "hula/testing/run_process.hpp"
 #include "hula/testing/temp_dir.hpp"
 
@@ -31,15 +32,6 @@ using nlohmann::json;
 using testing::ProcessResult;
 
 ProcessResult hula(const std::vector<std::string>& args) { return testing::run_process(HULA_CLI_PATH, args); }
-
-json error_of(const ProcessResult& r) {
-  try {
-    return json::parse(r.err)["error"];
-  } catch (const std::exception&) {
-    ADD_FAILURE() << "stderr is not JSON: " << r.err;
-    return json::object();
-  }
-}
 
 // checks: the helix κ = a/(a²+b²) = 0.16, τ = b/(a²+b²) = 0.08 (a = 5, b = 2.5) prints exactly the documented keys,
 // matches the closed form at s = 7 to 1e-9 and is fitted within the default 1e-6 of its size (box diagonal ≤ 23).
@@ -93,7 +85,7 @@ TEST(ReconstructCli, BadExpressionExit3NamesColumn) {
   const ProcessResult r = hula({"reconstruct", "--kappa", "1", "--tau", "0.3*cos(2*s", "--length", "2"});
   EXPECT_EQ(r.exit_code, 3);
   EXPECT_TRUE(r.out.empty());
-  const json e = error_of(r);
+  const json e = testing::stderr_error(r);
   EXPECT_EQ(e["code"], "ParseError");
   EXPECT_EQ(e["where"]["field"], "tau");
   EXPECT_EQ(e["where"]["column"], 12);  // end of input, just after the 11 characters
@@ -101,7 +93,7 @@ TEST(ReconstructCli, BadExpressionExit3NamesColumn) {
   // An unknown parameter: only s is allowed.
   const ProcessResult u = hula({"reconstruct", "--kappa", "t", "--tau", "0", "--length", "2"});
   EXPECT_EQ(u.exit_code, 3);
-  EXPECT_EQ(error_of(u)["where"]["field"], "kappa");
+  EXPECT_EQ(testing::stderr_error(u)["where"]["field"], "kappa");
 }
 
 // checks: bad values exit 3 naming the field; missing required options exit 2.
@@ -129,11 +121,11 @@ TEST(ReconstructCli, BadValuesAndUsage) {
   for (const Case& c : cases) {
     const ProcessResult r = hula(c.args);
     EXPECT_EQ(r.exit_code, c.code) << r.err;
-    EXPECT_EQ(error_of(r)["where"]["field"], c.field) << r.err;
+    EXPECT_EQ(testing::stderr_error(r)["where"]["field"], c.field) << r.err;
   }
   const ProcessResult usage = hula({"reconstruct", "--kappa", "1", "--length", "1"});
   EXPECT_EQ(usage.exit_code, 2);
-  EXPECT_EQ(error_of(usage)["code"], "UsageError");
+  EXPECT_EQ(testing::stderr_error(usage)["code"], "UsageError");
 }
 
 // checks: with --end-point on the unit circle's own quarter-turn end (1, 1, 0) the boundary-value route needs no
@@ -171,7 +163,7 @@ TEST(ReconstructCli, EndPointAndTangentHeldInSpace) {
   for (std::size_t k = 0; k < 3; ++k) EXPECT_NEAR(j["points"][0]["position"][k].get<double>(), expected[k], 2e-8);
   const ProcessResult bad = hula({"reconstruct", "--kappa", "1", "--tau", "0", "--length", "1", "--free-length"});
   EXPECT_EQ(bad.exit_code, 3);
-  EXPECT_EQ(error_of(bad)["where"]["field"], "free-length") << bad.err;
+  EXPECT_EQ(testing::stderr_error(bad)["where"]["field"], "free-length") << bad.err;
 }
 
 // Angle θ(s) of the 64-hat κ below in closed form: each hat max(0, 1 − |s − c|/h) integrates to a
@@ -231,7 +223,7 @@ TEST(ReconstructCli, KinkedHatCurvatureFinishes) {
 TEST(ReconstructCli, WorkLimitNamesKappa) {
   const ProcessResult r = hula({"reconstruct", "--kappa", "abs(sin(20000*s))", "--tau", "0", "--length", "8"});
   EXPECT_EQ(r.exit_code, 4) << r.out;
-  const json e = error_of(r);
+  const json e = testing::stderr_error(r);
   EXPECT_EQ(e["code"], "NumericalFailure");
   EXPECT_EQ(e["where"]["field"], "kappa");
   EXPECT_NE(e["message"].get<std::string>().find("max_segments = 2000"), std::string::npos) << e["message"];

@@ -14,6 +14,7 @@
 
 #include "hula/io/atomic_file.hpp"
 #include "hula/io/json_curve.hpp"
+#include "hula/testing/process_json.hpp"
 #include "hula/testing/run_process.hpp"
 #include "hula/testing/temp_dir.hpp"
 
@@ -39,17 +40,11 @@ using testing::TempDir;
 
 // Parses stderr as the error JSON and checks its code.
 json expect_error_json(const ProcessResult& r, const std::string& code) {
-  json j;
-  try {
-    j = json::parse(r.err);
-  } catch (const std::exception& e) {
-    ADD_FAILURE() << "stderr is not JSON: " << r.err;
-    return j;
-  }
-  EXPECT_EQ(j["error"]["code"], code) << r.err;
-  EXPECT_TRUE(j["error"]["message"].is_string());
-  EXPECT_TRUE(j["error"]["where"].is_object());
-  return j;
+  const json e = testing::stderr_error(r);
+  EXPECT_EQ(e.value("code", ""), code) << r.err;
+  EXPECT_TRUE(e.contains("message") && e["message"].is_string()) << r.err;
+  EXPECT_TRUE(e.contains("where") && e["where"].is_object()) << r.err;
+  return json{{"error", e}};
 }
 
 // checks: --version prints the version and exits 0.

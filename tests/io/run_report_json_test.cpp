@@ -44,7 +44,8 @@ TEST(RunReportJson, MembersInContractOrder) {
 TEST(RunReportJson, ReadAfterWrite) {
   for (const optim::Termination t :
        {optim::Termination::MaxGenerations, optim::Termination::MaxEvaluations, optim::Termination::TargetReached,
-        optim::Termination::Stagnation, optim::Termination::WallTime, optim::Termination::Cancelled}) {
+        optim::Termination::Stagnation, optim::Termination::WallTime, optim::Termination::Cancelled,
+        optim::Termination::Converged}) {
     optim::RunReport r = sample();
     r.termination = t;
     const optim::RunReport back = run_report_from_json(Json::parse(run_report_to_json(r, {.seed = 1}).dump()));

@@ -71,7 +71,7 @@ TEST(OptimIslands, SynchronousRunsRepeatExactly) {
       EXPECT_EQ(a.islands[i].best.variables, b.islands[i].best.variables);
       EXPECT_EQ(a.islands[i].accepted, b.islands[i].accepted);
     }
-    EXPECT_EQ(a.evaluations, 4U * 20U * 31U);
+    EXPECT_EQ(a.report.evaluations, 4U * 20U * 31U);
   }
 }
 

@@ -1,12 +1,16 @@
 // SPDX-License-Identifier: MIT
 // Tests of the downhill simplex: known minima of Rosenbrock's function and of
-// a shifted quadratic in 6 variables, the budget, and the documented errors.
+// a shifted quadratic in 6 variables, each termination reason on a run that
+// provably ends that way, and the documented errors.
 #include "hula/optim/nelder_mead.hpp"
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <limits>
+#include <string>
+#include <thread>
 #include <vector>
 
 #include "hula/testing/expect_error.hpp"
@@ -22,12 +26,15 @@ double rosenbrock(std::span<const double> x) {
 TEST(OptimNelderMead, RosenbrockReachesKnownMinimum) {
   const std::vector<double> start{-1.2, 1.0};
   const NelderMeadResult r = nelder_mead(rosenbrock, start);
-  EXPECT_TRUE(r.converged);
+  EXPECT_EQ(r.report.termination, Termination::Converged) << r.report.message;
   EXPECT_NEAR(r.x[0], 1.0, 1e-7);
   EXPECT_NEAR(r.x[1], 1.0, 1e-7);
   EXPECT_LT(r.value, 1e-14);
-  EXPECT_GT(r.evaluations, 50u);
+  EXPECT_GT(r.report.evaluations, 50u);
+  EXPECT_EQ(r.report.failed_evaluations, 0u);
   EXPECT_FALSE(r.history.empty());
+  EXPECT_EQ(r.report.generations, r.history.size());
+  EXPECT_NE(r.report.message.find("x_tolerance"), std::string::npos) << r.report.message;
 }
 
 // checks: a 6-variable quadratic sum (i+1)(x_i - i/10)^2 has its minimum at x_i = i/10
@@ -39,7 +46,7 @@ TEST(OptimNelderMead, QuadraticInSixVariables) {
   };
   const std::vector<double> start(6, 1.0);
   const NelderMeadResult r = nelder_mead(f, start);
-  EXPECT_TRUE(r.converged);
+  EXPECT_EQ(r.report.termination, Termination::Converged) << r.report.message;
   for (std::size_t i = 0; i < 6; ++i) EXPECT_NEAR(r.x[i], 0.1 * i, 1e-6) << i;
 }
 
@@ -52,16 +59,49 @@ TEST(OptimNelderMead, NanRanksWorst) {
   const NelderMeadResult r = nelder_mead(f, start);
   EXPECT_NEAR(r.x[0], 1.0, 1e-6);  // d/dx (x - ln x) = 0 at x = 1
   EXPECT_NEAR(r.value, 1.0, 1e-12);
+  EXPECT_GT(r.report.failed_evaluations, 0u);  // the NaN wall was hit and counted
 }
 
-// checks: the evaluation budget is honoured (stops unconverged)
+// checks: 20 evaluations cannot solve Rosenbrock from (-1.2, 1) (it needs > 50 above): the run ends
+// MaxEvaluations with the budget honoured
 TEST(OptimNelderMead, BudgetStops) {
   NelderMeadOptions o;
   o.max_evaluations = 20;
   const std::vector<double> start{-1.2, 1.0};
   const NelderMeadResult r = nelder_mead(rosenbrock, start, o);
-  EXPECT_FALSE(r.converged);
-  EXPECT_LE(r.evaluations, 22u);  // the last iteration may add its reflection and expansion
+  EXPECT_EQ(r.report.termination, Termination::MaxEvaluations) << r.report.message;
+  EXPECT_LE(r.report.evaluations, 22u);  // the last iteration may add its reflection and expansion
+  EXPECT_NE(r.report.message.find("max_evaluations = 20"), std::string::npos) << r.report.message;
+}
+
+// checks: a token cancelled before the run ends it at the first iteration check with Cancelled and the
+// start (the only point seen besides the first simplex) as its best
+TEST(OptimNelderMead, CancelledBeforeTheFirstIteration) {
+  CancellationToken token;
+  token.cancel();
+  NelderMeadOptions o;
+  o.cancel = &token;
+  const std::vector<double> start{-1.2, 1.0};
+  const NelderMeadResult r = nelder_mead(rosenbrock, start, o);
+  EXPECT_EQ(r.report.termination, Termination::Cancelled) << r.report.message;
+  EXPECT_EQ(r.report.generations, 0u);
+  EXPECT_EQ(r.report.evaluations, 3u);  // the start and the two other simplex vertices
+  EXPECT_LE(r.value, rosenbrock(start));
+}
+
+// checks: an objective that sleeps 1 ms per call against a 1 µs wall-time limit: the limit has passed
+// by the first iteration check (after three calls), so the run ends WallTime with no iteration
+TEST(OptimNelderMead, WallTimeEndsTheRun) {
+  NelderMeadOptions o;
+  o.wall_time_seconds = 1e-6;
+  const auto slow = [](std::span<const double> x) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    return rosenbrock(x);
+  };
+  const std::vector<double> start{-1.2, 1.0};
+  const NelderMeadResult r = nelder_mead(slow, start, o);
+  EXPECT_EQ(r.report.termination, Termination::WallTime) << r.report.message;
+  EXPECT_EQ(r.report.generations, 0u);
 }
 
 // checks: the documented errors name the input at fault

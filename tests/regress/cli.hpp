@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "hula/io/atomic_file.hpp"
+#include "hula/testing/process_json.hpp"
 #include "hula/testing/run_process.hpp"
 #include "hula/testing/temp_dir.hpp"
 
@@ -30,15 +31,8 @@ inline ProcessResult hula(const std::vector<std::string>& args, const ProcessOpt
   return testing::run_process(HULA_CLI_PATH, args, options);
 }
 
-/// The error JSON on stderr (a failure is recorded when it is not JSON).
-inline json error_of(const ProcessResult& r) {
-  try {
-    return json::parse(r.err);
-  } catch (const std::exception&) {
-    ADD_FAILURE() << "stderr is not the error JSON: " << r.err;
-    return json::object();
-  }
-}
+/// The error JSON on stderr, {"error": {...}} (a failure is recorded when it is not the error JSON).
+inline json error_of(const ProcessResult& r) { return json{{"error", testing::stderr_error(r)}}; }
 
 /// The error message on stderr.
 inline std::string message_of(const ProcessResult& r) {

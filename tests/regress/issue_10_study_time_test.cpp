@@ -66,7 +66,8 @@ TEST(Issue10StudyTime, DocRunSigintStoresBestSoFar) {
   EXPECT_EQ(json::parse(list.out)["entities"].size(), 2u) << list.out;
 }
 
-// checks: the deterministic fair-knots case of the issue ends under --time with "stopped": true and a result.
+// checks: the deterministic fair-knots case of the issue ends under --time with a result, "stopped": true and
+// the simplex's termination WallTime (its evaluation budget of 1e8 cannot end it within 1 s).
 TEST(Issue10StudyTime, FairKnotsDeterministicTimeEndsWithBestSoFar) {
   TempDir dir;
   write(dir / "s.json", R"({"format": "hula-study", "version": 1, "study": "fair-knots",
@@ -76,6 +77,8 @@ TEST(Issue10StudyTime, FairKnotsDeterministicTimeEndsWithBestSoFar) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const json j = json::parse(r.out);
   EXPECT_TRUE(j["deterministic"]["energy"].is_number()) << r.out.substr(0, 400);
+  EXPECT_EQ(j["deterministic"]["stopped"], true);
+  EXPECT_EQ(j["deterministic"]["termination"], "WallTime");
 }
 
 // checks: the editing studies (no optimiser) refuse --time instead of ignoring it.

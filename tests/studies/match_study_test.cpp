@@ -112,7 +112,7 @@ void expect_hybrid_recovers(const std::vector<Vec3>& truth, int dim, std::size_t
   std::printf("hybrid %zu variables: before %.3g after GA %.3g after LM %.3g (%zu LM steps, %.3f s)\n", free,
               r.before.mean, r.after_ga.mean, r.after.mean, r.lm->iterations, seconds);
   EXPECT_GT(r.before.mean, 1e-3);
-  EXPECT_LE(r.after.mean, 1e-6) << free << " variables, LM " << r.lm->termination;
+  EXPECT_LE(r.after.mean, 1e-6) << free << " variables, LM " << r.lm->message;
   EXPECT_LE(r.after.mean, r.after_ga.mean);
 }
 
@@ -163,7 +163,7 @@ FarStart far_start(std::size_t free, std::uint64_t seed, hula::studies::LmOption
   st.ga.generations = generations;
   st.lm = lm;
   const auto r = hula::studies::run_curvature_match(match, st);
-  return {r.before.mean, r.after.mean, r.lm->iterations, r.lm->evaluations, r.lm->termination, r.lm_start};
+  return {r.before.mean, r.after.mean, r.lm->iterations, r.lm->evaluations, r.lm->message, r.lm_start};
 }
 
 // checks: from starts 15 % of the point spacing away with 20 free variables, on five seeded known convex arcs, the

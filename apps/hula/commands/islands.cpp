@@ -2,8 +2,9 @@
 // `hula optimise --islands K`; see islands.hpp.
 #include "commands/islands.hpp"
 
-#include <algorithm>
 #include <optional>
+#include <utility>
+#include <variant>
 
 #include "hula/io/run_report_json.hpp"
 
@@ -25,8 +26,7 @@ void add_island_options(CLI::App* sub, IslandArgs& args) {
                 "Never wait for neighbours' migrants (faster with uneven islands; not repeatable)");
 }
 
-IslandOutcome run_islands(const optim::Problem& problem, const optim::IslandAlgorithm& algorithm,
-                          const IslandArgs& args) {
+optim::IslandOptions island_options(const IslandArgs& args) {
   optim::IslandOptions o;
   o.islands = args.islands;
   o.interval = args.interval;
@@ -34,40 +34,31 @@ IslandOutcome run_islands(const optim::Problem& problem, const optim::IslandAlgo
   o.topology = optim::topology_from_name(args.topology, "topology");
   o.topology_seed = args.topology_seed;
   o.asynchronous = args.asynchronous;
-  IslandOutcome out;
-  const char* transport = "threads";
-  optim::IslandsResult r;
+  return o;
+}
+
+std::optional<IslandRun> run_islands_or_solve(const optim::Problem& problem, const optim::SolveOptions& options) {
 #if defined(HULA_WITH_MPI)
-  if (optim::launched_by_mpi()) {
-    transport = "mpi";
-    std::optional<optim::IslandsResult> merged = optim::solve_islands_mpi(problem, algorithm, o);
-    if (!merged) {
-      out.quiet = true;
-      return out;
-    }
-    r = std::move(*merged);
-  } else {
-    r = optim::solve_islands(problem, algorithm, o);
+  if (options.islands && optim::launched_by_mpi()) {
+    optim::IslandAlgorithm algorithm;
+    if (const auto* o = std::get_if<optim::RealGaOptions>(&options.algorithm))
+      algorithm = *o;
+    else if (const auto* b = std::get_if<optim::BinaryGaOptions>(&options.algorithm))
+      algorithm = *b;
+    else
+      algorithm = std::get<optim::Nsga2Options>(options.algorithm);
+    std::optional<optim::IslandsResult> merged = optim::solve_islands_mpi(problem, algorithm, *options.islands);
+    if (!merged) return std::nullopt;
+    return IslandRun{optim::solve_result(problem, std::move(*merged)), "mpi"};
   }
-#else
-  r = optim::solve_islands(problem, algorithm, o);
 #endif
+  return IslandRun{optim::solve(problem, options), "threads"};
+}
 
-  if (problem.objectives == 1)
-    out.solutions.push_back(r.best);
-  else
-    out.solutions = r.front;
-  out.report = r.islands.front().report;
-  out.report.evaluations = r.evaluations;
-  out.report.failed_evaluations = 0;
-  for (const optim::IslandReport& i : r.islands) {
-    out.report.failed_evaluations += i.report.failed_evaluations;
-    out.report.generations = std::max(out.report.generations, i.report.generations);
-  }
-  out.report.seconds = r.seconds;
-
+Json islands_json(const optim::IslandOptions& o, const optim::SolveResult& result, const optim::Problem& problem,
+                  const std::string& transport) {
   Json per = Json::array();
-  for (const optim::IslandReport& i : r.islands) {
+  for (const optim::IslandReport& i : result.islands) {
     Json migrations = Json::array();
     for (const optim::MigrationEvent& e : i.migrations)
       migrations.push_back(
@@ -84,15 +75,14 @@ IslandOutcome run_islands(const optim::Problem& problem, const optim::IslandAlgo
     j["migrations"] = std::move(migrations);
     per.push_back(std::move(j));
   }
-  out.islands = Json{{"count", o.islands},
-                     {"interval", o.interval},
-                     {"migrants", o.migrants},
-                     {"topology", std::string(optim::topology_name(o.topology))},
-                     {"topology_seed", o.topology_seed},
-                     {"mode", o.asynchronous ? "asynchronous" : "synchronous"},
-                     {"transport", transport},
-                     {"per_island", std::move(per)}};
-  return out;
+  return Json{{"count", o.islands},
+              {"interval", o.interval},
+              {"migrants", o.migrants},
+              {"topology", std::string(optim::topology_name(o.topology))},
+              {"topology_seed", o.topology_seed},
+              {"mode", o.asynchronous ? "asynchronous" : "synchronous"},
+              {"transport", transport},
+              {"per_island", std::move(per)}};
 }
 
 }  // namespace hula::cli

@@ -8,11 +8,13 @@
 #include <CLI/CLI.hpp>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "commands/common.hpp"
 #include "hula/optim/islands.hpp"
+#include "hula/optim/solve.hpp"
 
 namespace hula::cli {
 
@@ -29,18 +31,26 @@ struct IslandArgs {
 /// Adds --islands, --migration-interval, --migrants, --topology, --topology-seed, --async-migration.
 void add_island_options(CLI::App* sub, IslandArgs& args);
 
-/// What an island run gives `hula optimise`.
-struct IslandOutcome {
-  std::vector<optim::Solution> solutions;  ///< the best champion, or the merged non-dominated front
-  optim::RunReport report;                 ///< totals: evaluations summed, wall time, island 0's termination
-  Json islands;                            ///< {"count", "topology", ..., "per_island": [...]} with the migration log
-  bool quiet = false;                      ///< an MPI rank other than 0: rank 0 prints the result
+/// The island options of the command line.
+/// @throws hula::Error(Errc::InvalidOption) naming --topology for an unknown topology
+[[nodiscard]] optim::IslandOptions island_options(const IslandArgs& args);
+
+/// A run of `hula optimise` and where its islands ran.
+struct IslandRun {
+  optim::SolveResult result;
+  std::string transport = "threads";  ///< "threads" or "mpi"
 };
 
-/// Runs `algorithm` as args.islands islands on threads, or, under mpirun (built with HULA_MPI),
-/// one island per rank (args.islands must equal the number of ranks).
-/// @throws hula::Error(Errc::InvalidOption) for bad island options; the first island's error.
-[[nodiscard]] IslandOutcome run_islands(const optim::Problem& problem, const optim::IslandAlgorithm& algorithm,
-                                        const IslandArgs& args);
+/// Runs optim::solve, or, with islands under mpirun (built with HULA_MPI), one island per rank
+/// (options.islands->islands must equal the number of ranks).
+/// @returns the result, or nothing on an MPI rank other than 0 (rank 0 prints the result)
+/// @throws as optim::solve and optim::solve_islands_mpi
+[[nodiscard]] std::optional<IslandRun> run_islands_or_solve(const optim::Problem& problem,
+                                                            const optim::SolveOptions& options);
+
+/// {"count", "interval", "migrants", "topology", "topology_seed", "mode", "transport", "per_island": [...]}
+/// with each island's champion (one objective), run report and migration log.
+[[nodiscard]] Json islands_json(const optim::IslandOptions& options, const optim::SolveResult& result,
+                                const optim::Problem& problem, const std::string& transport);
 
 }  // namespace hula::cli

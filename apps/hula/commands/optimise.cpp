@@ -34,11 +34,9 @@
 #include "hula/io/atomic_file.hpp"
 #include "hula/io/problem_file.hpp"
 #include "hula/io/run_report_json.hpp"
-#include "hula/optim/ga.hpp"
-#include "hula/optim/nsga2.hpp"
-#include "hula/optim/pagmo_adapter.hpp"
 #include "hula/optim/pareto.hpp"
 #include "hula/optim/run_log.hpp"
+#include "hula/optim/solve.hpp"
 #include "hula/optim/test_problems.hpp"
 
 namespace hula::cli {
@@ -73,7 +71,7 @@ struct OptimiseArgs {
   IslandArgs islands;
 };
 
-enum class Algorithm { BinaryGa, RealGa, Nsga2, Pagmo };
+enum class Algorithm { BinaryGa, RealGa, Nsga2, NelderMead, Pagmo };
 
 struct AlgorithmChoice {
   Algorithm kind = Algorithm::RealGa;
@@ -84,6 +82,7 @@ AlgorithmChoice parse_algorithm(const std::string& name) {
   if (name == "ga-binary") return {Algorithm::BinaryGa};
   if (name == "ga-real") return {Algorithm::RealGa};
   if (name == "nsga2") return {Algorithm::Nsga2};
+  if (name == "nelder-mead") return {Algorithm::NelderMead};
   constexpr std::string_view kPagmo = "pagmo-";
   if (name.starts_with(kPagmo)) {
     try {
@@ -94,8 +93,8 @@ AlgorithmChoice parse_algorithm(const std::string& name) {
   }
   throw Error(Errc::InvalidArgument,
               "algorithm = \"" + name +
-                  "\" is not an algorithm (expected ga-binary, ga-real, nsga2 or pagmo-<name> with <name> one of "
-                  "cmaes, de, sade, pso, sga, moead, nsga2)",
+                  "\" is not an algorithm (expected ga-binary, ga-real, nsga2, nelder-mead or pagmo-<name> with "
+                  "<name> one of cmaes, de, sade, pso, sga, moead, nsga2)",
               {.field = "algorithm"});
 }
 
@@ -145,15 +144,6 @@ std::vector<double> parse_boost(const std::string& text) {
   return b;
 }
 
-struct Outcome {
-  // One objective: the best solution. Several: the final first front.
-  std::vector<Solution> solutions;
-  RunReport report;
-  std::size_t threads = 1;
-  Json islands{};      // per-island statistics and migration log (--islands)
-  bool quiet = false;  // an MPI rank other than 0 (rank 0 prints)
-};
-
 optim::StopCriteria stop_criteria(const OptimiseArgs& a, std::size_t population) {
   optim::StopCriteria stop;
   if (a.generations) stop.generations = *a.generations;
@@ -192,59 +182,55 @@ void fill_run(Options& o, const OptimiseArgs& a, RunLogFile* log) {
   o.run.threads = a.threads.value_or(1);
   o.run.stop = stop_criteria(a, o.population);
   o.run.on_generation = generation_callback(a, log);
+  if (a.crossover) o.crossover_probability = *a.crossover;
+  if (a.mutation) o.mutation_probability = *a.mutation;
 }
 
-// --islands: the same algorithm options, run as an archipelago on threads.
-Outcome island_outcome(const Problem& problem, const optim::IslandAlgorithm& algorithm, const OptimiseArgs& a) {
-  IslandOutcome r = run_islands(problem, algorithm, a.islands);
-  return Outcome{std::move(r.solutions), std::move(r.report), a.threads.value_or(1), std::move(r.islands), r.quiet};
-}
-
-Outcome run_flexo(const Problem& problem, const OptimiseArgs& a, Algorithm kind, RunLogFile* log) {
-  Outcome out;
-  out.threads = a.threads.value_or(1);
-  const InterruptGuard guard;
+// The algorithm's options from the command line, refusing the options it does not take.
+optim::SolverOptions solver_options(const OptimiseArgs& a, const AlgorithmChoice& choice, RunLogFile* log) {
   const bool islands = a.islands.islands > 0;
-  // One log and one progress stream per run: the islands' generations interleave.
-  refuse(islands && a.log.has_value(), "log", a.algorithm + " with --islands");
-  refuse(islands && a.progress, "progress", a.algorithm + " with --islands");
-  if (kind == Algorithm::RealGa) {
-    optim::RealGaOptions o;
-    fill_run(o, a, log);
-    if (a.crossover) o.crossover_probability = *a.crossover;
-    if (a.mutation) o.mutation_probability = *a.mutation;
-    if (islands) return island_outcome(problem, o, a);
-    optim::GaResult r = optim::solve_real_ga(problem, o);
-    out.solutions.push_back(std::move(r.best));
-    out.report = std::move(r.report);
-  } else if (kind == Algorithm::BinaryGa) {
-    optim::BinaryGaOptions o;
-    fill_run(o, a, log);
-    if (a.crossover) o.crossover_probability = *a.crossover;
-    if (a.mutation) o.mutation_probability = *a.mutation;
-    if (a.boost) {
-      const std::vector<double> b = parse_boost(*a.boost);
-      o.boost_start = b[0];
-      o.boost_end = b[1];
+  switch (choice.kind) {
+    case Algorithm::RealGa: {
+      optim::RealGaOptions o;
+      fill_run(o, a, log);
+      return o;
     }
-    if (islands) return island_outcome(problem, o, a);
-    optim::GaResult r = optim::solve_binary_ga(problem, o);
-    out.solutions.push_back(std::move(r.best));
-    out.report = std::move(r.report);
-  } else {
-    optim::Nsga2Options o;
-    fill_run(o, a, log);
-    if (a.crossover) o.crossover_probability = *a.crossover;
-    if (a.mutation) o.mutation_probability = *a.mutation;
-    if (islands) return island_outcome(problem, o, a);
-    optim::Nsga2Result r = optim::solve_nsga2(problem, o);
-    out.solutions = std::move(r.front);
-    out.report = std::move(r.report);
+    case Algorithm::BinaryGa: {
+      optim::BinaryGaOptions o;
+      fill_run(o, a, log);
+      if (a.boost) {
+        const std::vector<double> b = parse_boost(*a.boost);
+        o.boost_start = b[0];
+        o.boost_end = b[1];
+      }
+      return o;
+    }
+    case Algorithm::Nsga2: {
+      optim::Nsga2Options o;
+      fill_run(o, a, log);
+      return o;
+    }
+    case Algorithm::NelderMead: {
+      // A deterministic local method from the centre of the bounds: no population, generations, seed,
+      // operators or threads.
+      refuse(a.population.has_value(), "population", a.algorithm);
+      refuse(a.generations.has_value(), "generations", a.algorithm);
+      refuse(a.seed.has_value(), "seed", a.algorithm);
+      refuse(a.crossover.has_value(), "crossover", a.algorithm);
+      refuse(a.mutation.has_value(), "mutation", a.algorithm);
+      refuse(a.threads.value_or(1) != 1, "threads", a.algorithm);
+      refuse(a.log.has_value(), "log", a.algorithm);
+      refuse(a.progress, "progress", a.algorithm);
+      refuse(islands, "islands", a.algorithm);
+      optim::NelderMeadOptions o;
+      if (a.evaluations) o.max_evaluations = *a.evaluations;
+      if (a.time) o.wall_time_seconds = *a.time;
+      o.cancel = &interrupt_token();
+      return o;
+    }
+    case Algorithm::Pagmo:
+      break;
   }
-  return out;
-}
-
-Outcome run_pagmo(const Problem& problem, const OptimiseArgs& a, optim::PagmoAlgorithm algorithm) {
   // pagmo runs its own loop: no per-generation callback, stop criteria,
   // cancellation or evaluation threads reach it through the adapter.
   refuse(a.evaluations.has_value(), "evaluations", a.algorithm);
@@ -254,21 +240,13 @@ Outcome run_pagmo(const Problem& problem, const OptimiseArgs& a, optim::PagmoAlg
   refuse(a.crossover.has_value(), "crossover", a.algorithm);
   refuse(a.mutation.has_value(), "mutation", a.algorithm);
   refuse(a.threads.value_or(1) != 1, "threads", a.algorithm);
-  refuse(a.islands.islands > 0, "islands", a.algorithm);
+  refuse(islands, "islands", a.algorithm);
   optim::PagmoOptions o;
-  o.algorithm = algorithm;
+  o.algorithm = choice.pagmo;
   if (a.population) o.population = *a.population;
   if (a.generations) o.generations = *a.generations;
   o.seed = a.seed.value_or(0);
-  optim::PagmoResult r = optim::solve_with_pagmo(problem, o);
-  Outcome out;
-  if (problem.objectives == 1) {
-    out.solutions.push_back(std::move(r.best));
-  } else {
-    out.solutions = std::move(r.front);
-  }
-  out.report = std::move(r.report);
-  return out;
+  return o;
 }
 
 Json solution_json(const Solution& s, bool constrained) {
@@ -361,17 +339,27 @@ int run_optimise(const OptimiseArgs& a) {
   }
   if (algorithm.kind != Algorithm::BinaryGa) refuse(a.boost.has_value(), "boost", a.algorithm);
   // The Flexo algorithms make offspring in pairs.
-  if (algorithm.kind != Algorithm::Pagmo && a.population)
+  if (algorithm.kind != Algorithm::Pagmo && algorithm.kind != Algorithm::NelderMead && a.population)
     (void)parse_integer_option(std::to_string(*a.population), "--population", 2, kMaxPopulation, true);
   if (a.log) io::check_output_path(*a.log, "--log");
 
+  // One log and one progress stream per run: the islands' generations interleave.
+  const bool islands = a.islands.islands > 0;
+  refuse(islands && a.log.has_value(), "log", a.algorithm + " with --islands");
+  refuse(islands && a.progress, "progress", a.algorithm + " with --islands");
   // The log streams to its temporary file as the run goes, and replaces the target only when the run is done.
   std::optional<RunLogFile> log;
-  if (a.log && algorithm.kind != Algorithm::Pagmo) log.emplace(*a.log);
-  const Outcome out = algorithm.kind == Algorithm::Pagmo ? run_pagmo(problem, a, algorithm.pagmo)
-                                                         : run_flexo(problem, a, algorithm.kind, log ? &*log : nullptr);
+  if (a.log && algorithm.kind != Algorithm::Pagmo && algorithm.kind != Algorithm::NelderMead) log.emplace(*a.log);
+  optim::SolveOptions options;
+  options.algorithm = solver_options(a, algorithm, log ? &*log : nullptr);
+  if (islands) options.islands = island_options(a.islands);
+  // pagmo never looks at the token: Ctrl-C ends it at once, as the shell would.
+  std::optional<InterruptGuard> guard;
+  if (algorithm.kind != Algorithm::Pagmo) guard.emplace();
+  std::optional<IslandRun> run = run_islands_or_solve(problem, options);
   if (log) log->commit();
-  if (out.quiet) return kExitOk;
+  if (!run) return kExitOk;  // an MPI rank other than 0: rank 0 prints the result
+  const optim::SolveResult& out = run->result;
 
   Json doc = Json::object();
   if (problem.objectives == 1) {
@@ -380,8 +368,8 @@ int run_optimise(const OptimiseArgs& a) {
   } else {
     doc = front_json(out.solutions, problem, reference);
   }
-  doc["report"] = report_json(out.report, a, problem, out.threads);
-  if (!out.islands.is_null()) doc["islands"] = out.islands;
+  doc["report"] = report_json(out.report, a, problem, a.threads.value_or(1));
+  if (islands) doc["islands"] = islands_json(*options.islands, out, problem, run->transport);
   print_json(doc);
   return kExitOk;
 }
@@ -390,8 +378,8 @@ int run_optimise(const OptimiseArgs& a) {
 
 Command add_optimise(CLI::App& app) {
   auto a = std::make_shared<OptimiseArgs>();
-  CLI::App* sub =
-      app.add_subcommand("optimise", "Run a genetic algorithm (Flexo or pagmo2) on an optimisation problem");
+  CLI::App* sub = app.add_subcommand(
+      "optimise", "Run an optimiser (Flexo's GAs, NSGA-II or Nelder-Mead, or pagmo2's) on an optimisation problem");
   CLI::Option_group* source = sub->add_option_group("problem source", "Exactly one of --problem, --problem-file");
   CLI::Option* problem = source->add_option(
       "--problem", a->problem,
@@ -408,7 +396,7 @@ Command add_optimise(CLI::App& app) {
       ->needs(problem)
       ->excludes(file);
   sub->add_option("--algorithm", a->algorithm,
-                  "ga-binary | ga-real | nsga2 | pagmo-<cmaes|de|sade|pso|sga|moead|nsga2>")
+                  "ga-binary | ga-real | nsga2 | nelder-mead | pagmo-<cmaes|de|sade|pso|sga|moead|nsga2>")
       ->required();
   add_integer_option(sub, "--population", a->population, 1, kMaxPopulation,
                      "Individuals per generation (default: the algorithm's own; even for the Flexo algorithms; at "

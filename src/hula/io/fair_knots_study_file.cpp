@@ -256,7 +256,9 @@ Json fairing_result_to_json(const studies::FairingResult& r, double chord_energy
   out["evaluations"] = r.evaluations;
   out["rounds"] = r.rounds;
   out["seconds"] = r.seconds;
-  out["stopped"] = r.stopped;
+  out["stopped"] = r.stopped();
+  out["termination"] = std::string(optim::termination_name(r.termination));
+  out["message"] = r.message;
   if (!r.bounds.lower.empty()) out["bounds"] = Json{{"lower", r.bounds.lower}, {"upper", r.bounds.upper}};
   return out;
 }

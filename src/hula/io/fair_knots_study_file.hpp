@@ -29,7 +29,8 @@ namespace hula::io {
 [[nodiscard]] Json fairing_evaluation_to_json(const studies::ParameterEvaluation& evaluation);
 
 /// A fairing run (GA or deterministic): its best evaluation plus "improvement" (1 − E / chord_energy, 0
-/// when chord_energy is 0), "evaluations", "rounds", "seconds", "stopped" and, for the GA, "bounds".
+/// when chord_energy is 0), "evaluations", "rounds", "seconds", "stopped", "termination" and "message" (why
+/// the last optimiser run ended, optim::termination_name) and, for the GA, "bounds".
 [[nodiscard]] Json fairing_result_to_json(const studies::FairingResult& result, double chord_energy);
 
 /// The energy map as CSV: header `k1,k2,energy`, one row per grid node (k1

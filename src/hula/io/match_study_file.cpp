@@ -417,7 +417,8 @@ Json match_result_to_json(const CurvatureMatch& match, const MatchStudyFile& fil
     Json lm = Json::object();
     lm["iterations"] = result.lm->iterations;
     lm["evaluations"] = result.lm->evaluations;
-    lm["termination"] = result.lm->termination;
+    lm["termination"] = std::string(optim::termination_name(result.lm->termination));
+    lm["message"] = result.lm->message;
     lm["start"] = result.lm_start;
     lm["seconds"] = result.lm->seconds;
     out["lm"] = lm;
@@ -558,7 +559,8 @@ Json torsion_match_result_to_json(const CurvatureMatch& match, const TorsionMatc
   if (result.lm)
     out["polish"] = {{"iterations", result.lm->iterations},
                      {"evaluations", result.lm->evaluations},
-                     {"termination", result.lm->termination},
+                     {"termination", std::string(optim::termination_name(result.lm->termination))},
+                     {"message", result.lm->message},
                      {"seconds", result.lm->seconds}};
   out["evaluations"] = result.report.evaluations + (result.lm ? result.lm->evaluations : 0);
   out["seconds"] = result.seconds;

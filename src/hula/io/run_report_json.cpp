@@ -3,6 +3,7 @@
 #include "hula/io/run_report_json.hpp"
 
 #include <limits>
+#include <optional>
 
 #include "hula/core/error.hpp"
 #include "hula/io/json_read.hpp"
@@ -30,17 +31,11 @@ optim::RunReport run_report_from_json(const Json& json) {
   optim::RunReport r;
   const std::string name =
       json::get_string(json::require_member(json, root, "termination"), root.member("termination"));
-  bool known = false;
-  for (const optim::Termination t :
-       {optim::Termination::MaxGenerations, optim::Termination::MaxEvaluations, optim::Termination::TargetReached,
-        optim::Termination::Stagnation, optim::Termination::WallTime, optim::Termination::Cancelled})
-    if (optim::termination_name(t) == name) {
-      r.termination = t;
-      known = true;
-    }
-  if (!known)
+  const std::optional<optim::Termination> termination = optim::termination_from_name(name);
+  if (!termination)
     throw Error(Errc::ParseError, "report.termination = " + json::quote(name) + " is not a termination name",
                 {.field = "report.termination"});
+  r.termination = *termination;
   if (const Json* m = json::optional_member(json, "message")) r.message = json::get_string(*m, root.member("message"));
   constexpr long long kMax = std::numeric_limits<long long>::max();
   const auto count = [&](const char* member) {

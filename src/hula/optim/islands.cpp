@@ -324,12 +324,18 @@ IslandReport run_island(const Problem& problem, const IslandAlgorithm& algorithm
 
 IslandsResult merge_islands(const Problem& problem, std::vector<IslandReport> islands, double seconds) {
   IslandsResult result;
-  result.seconds = seconds;
+  if (!islands.empty()) {
+    result.report.termination = islands.front().report.termination;
+    result.report.message = islands.front().report.message;
+  }
+  result.report.seconds = seconds;
   bool first = true;
   std::vector<Solution> pool;
   std::size_t total = 0;
   for (const IslandReport& r : islands) {
-    result.evaluations += r.report.evaluations;
+    result.report.evaluations += r.report.evaluations;
+    result.report.failed_evaluations += r.report.failed_evaluations;
+    result.report.generations = std::max(result.report.generations, r.report.generations);
     if (problem.objectives == 1 && r.population.empty()) {
       const auto better = [](const Solution& a, const Solution& b) {
         return std::pair(a.violation, a.objectives[0]) < std::pair(b.violation, b.objectives[0]);

@@ -143,8 +143,9 @@ struct IslandsResult {
   /// iterative crowding distance to at most the archipelago's total population.
   std::vector<Solution> front;
   std::vector<IslandReport> islands;
-  std::size_t evaluations = 0;  ///< total over the islands
-  double seconds = 0.0;         ///< wall time of the whole run
+  /// The archipelago's report: island 0's termination and message, the most generations an island ran,
+  /// evaluations and failed evaluations summed over the islands, the wall time of the whole run.
+  RunReport report{};
 };
 
 /// Runs island `island` of `options.islands` with `algorithm` on `problem`, migrating through `exchange`.

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <string>
 
 #include "hula/core/error.hpp"
@@ -56,9 +57,12 @@ NelderMeadResult nelder_mead(const ObjectiveFn& f, std::span<const double> start
   std::vector<std::size_t> order(n + 1);
   std::vector<double> centroid(n), trial(n), trial2(n);
   auto vertex = [&](std::size_t k) { return std::span<double>(simplex.data() + k * n, n); };
+  RunReport& report = result.report;
   auto eval = [&](std::span<const double> x) {
-    ++result.evaluations;
-    return rank_value(f(x));
+    ++report.evaluations;
+    const double v = f(x);
+    if (!std::isfinite(v)) ++report.failed_evaluations;
+    return rank_value(v);
   };
 
   std::vector<double> best(start.begin(), start.end());
@@ -66,7 +70,7 @@ NelderMeadResult nelder_mead(const ObjectiveFn& f, std::span<const double> start
   if (!std::isfinite(best_value)) {
     throw Error(Errc::NumericalFailure, "nelder_mead: the objective is not finite at the start point");
   }
-  result.converged = false;
+  bool converged = false;
   const auto started = std::chrono::steady_clock::now();
   const auto stop_requested = [&] {
     if (options.cancel != nullptr && options.cancel->is_cancelled()) return true;
@@ -74,7 +78,10 @@ NelderMeadResult nelder_mead(const ObjectiveFn& f, std::span<const double> start
            std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() >=
                options.wall_time_seconds;
   };
-  for (std::size_t round = 0; round <= options.restarts && !result.stopped; ++round) {
+  std::optional<Termination> stopped;
+  std::size_t rounds = 0;
+  for (std::size_t round = 0; round <= options.restarts && !stopped; ++round) {
+    ++rounds;
     // Fresh simplex around the best point.
     for (std::size_t k = 0; k <= n; ++k) {
       auto v = vertex(k);
@@ -83,10 +90,11 @@ NelderMeadResult nelder_mead(const ObjectiveFn& f, std::span<const double> start
       values[k] = k == 0 ? best_value : eval(v);
     }
     const double round_start = best_value;
-    bool converged = false;
-    while (result.evaluations < options.max_evaluations) {
+    converged = false;
+    while (report.evaluations < options.max_evaluations) {
       if (stop_requested()) {
-        result.stopped = true;
+        stopped = options.cancel != nullptr && options.cancel->is_cancelled() ? Termination::Cancelled
+                                                                              : Termination::WallTime;
         break;
       }
       std::iota(order.begin(), order.end(), std::size_t{0});
@@ -154,13 +162,28 @@ NelderMeadResult nelder_mead(const ObjectiveFn& f, std::span<const double> start
       best_value = values[lo];
       std::copy(vertex(lo).begin(), vertex(lo).end(), best.begin());
     }
-    result.converged = converged;
     if (!converged) break;
     // A restart that found nothing better ends the run.
     if (round > 0 && !(best_value < round_start - options.f_tolerance)) break;
   }
   result.x = std::move(best);
   result.value = best_value;
+  report.generations = result.history.size();
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  const std::string after = " after " + std::to_string(report.generations) + " iterations and " +
+                            std::to_string(report.evaluations) + " evaluations";
+  if (stopped) {
+    report.termination = *stopped;
+    report.message = (*stopped == Termination::Cancelled ? "cancelled" : "wall-time limit reached") + after;
+  } else if (converged) {
+    report.termination = Termination::Converged;
+    report.message = "simplex within x_tolerance and f_tolerance" + after + " (" + std::to_string(rounds) +
+                     (rounds == 1 ? " round)" : " rounds)");
+  } else {
+    report.termination = Termination::MaxEvaluations;
+    report.message =
+        "evaluation budget max_evaluations = " + std::to_string(options.max_evaluations) + " spent" + after;
+  }
   return result;
 }
 

@@ -37,10 +37,11 @@ struct NelderMeadOptions {
   /// improve f. Default 3.
   std::size_t restarts = 3;
   /// Wall-clock limit in seconds (finite, >= 0); 0 = none. The run ends with
-  /// the best point so far and `stopped` set. Default 0.
+  /// the best point so far and Termination::WallTime. Default 0.
   double wall_time_seconds = 0.0;
   /// Optional cancellation token (e.g. set on SIGINT), not owned; checked
-  /// every iteration. The run ends with the best point so far. Default none.
+  /// every iteration. The run ends with the best point so far and
+  /// Termination::Cancelled. Default none.
   const CancellationToken* cancel = nullptr;
   /// @throws hula::Error(Errc::InvalidOption) naming the field and its value.
   void validate() const;
@@ -52,12 +53,10 @@ struct NelderMeadResult {
   std::vector<double> x{};
   /// f(x).
   double value = 0.0;
-  /// Evaluations of f.
-  std::size_t evaluations = 0;
-  /// True when the tolerances were met (false: the budget ran out or the run was stopped).
-  bool converged = false;
-  /// True when wall_time_seconds or the cancellation token ended the run early.
-  bool stopped = false;
+  /// Why the run ended — Converged (the tolerances were met), MaxEvaluations,
+  /// WallTime or Cancelled — with a message; generations = iterations,
+  /// evaluations of f, failed_evaluations = evaluations that were NaN or +inf.
+  RunReport report{};
   /// Best value after each iteration (a convergence graph).
   std::vector<double> history{};
 };
@@ -66,7 +65,7 @@ struct NelderMeadResult {
 /// @param f the objective (called on the caller's thread only)
 /// @param start the first point, at least one finite coordinate
 /// @param options steps, tolerances, budget, restarts
-/// @returns the best point, its value and the evaluation count
+/// @returns the best point, its value and the run report
 /// @throws hula::Error(Errc::InvalidArgument) for an empty start
 /// @throws hula::Error(Errc::NonFiniteInput) naming start[i] if it is not finite
 /// @throws hula::Error(Errc::NumericalFailure) if f is not finite at the start

@@ -21,8 +21,18 @@ std::string_view termination_name(Termination reason) noexcept {
       return "WallTime";
     case Termination::Cancelled:
       return "Cancelled";
+    case Termination::Converged:
+      return "Converged";
   }
   return "Unknown";
+}
+
+std::optional<Termination> termination_from_name(std::string_view name) noexcept {
+  for (const Termination t :
+       {Termination::MaxGenerations, Termination::MaxEvaluations, Termination::TargetReached, Termination::Stagnation,
+        Termination::WallTime, Termination::Cancelled, Termination::Converged})
+    if (termination_name(t) == name) return t;
+  return std::nullopt;
 }
 
 void StopCriteria::validate() const {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
-// Stop criteria, cancellation and the run report shared by every Flexo
-// algorithm. Modelled on Ceres' Solver::Summary (termination type + message)
+// Stop criteria, cancellation and the run report shared by every iterative
+// solver: the Flexo algorithms, pagmo's through the adapter, Nelder–Mead and
+// the studies' Levenberg–Marquardt stage (one termination enum and message,
+// issue 10). Modelled on Ceres' Solver::Summary (termination type + message)
 // and pagmo's up-front option checks: StopCriteria::validate() refuses bad
 // values before any work, and the report says why and when a run ended.
 #pragma once
@@ -27,18 +29,23 @@ class CancellationToken {
   std::atomic<bool> flag_{false};
 };
 
-/// Why a run ended.
+/// Why a run ended. The names are a JSON contract (io/run_report_json.hpp): append, never rename.
 enum class Termination {
-  MaxGenerations,  ///< StopCriteria::generations were run
-  MaxEvaluations,  ///< another generation would exceed StopCriteria::max_evaluations
-  TargetReached,   ///< the best objective reached StopCriteria::target
-  Stagnation,      ///< no improvement for StopCriteria::stagnation_generations
-  WallTime,        ///< StopCriteria::wall_time_seconds elapsed
+  MaxGenerations,  ///< StopCriteria::generations were run (local methods: their iteration budget)
+  MaxEvaluations,  ///< another generation (or step) would exceed the evaluation budget
+  TargetReached,   ///< the best objective reached its target (StopCriteria::target, LmOptions::target_mean)
+  Stagnation,      ///< no improvement for StopCriteria::stagnation_generations (local methods: no step
+                   ///< lowers the cost any more, e.g. Levenberg–Marquardt's damping overflowed)
+  WallTime,        ///< the wall-time limit elapsed
   Cancelled,       ///< the CancellationToken was set
+  Converged,       ///< a local method met its convergence tolerances (Nelder–Mead's simplex size and spread,
+                   ///< Levenberg–Marquardt's relative cost reduction)
 };
 
 /// Stable name of a termination reason, e.g. "MaxGenerations".
 [[nodiscard]] std::string_view termination_name(Termination reason) noexcept;
+/// The reason of a name termination_name() gives; empty for any other text.
+[[nodiscard]] std::optional<Termination> termination_from_name(std::string_view name) noexcept;
 
 /// When to stop. Every criterion that is set can end the run; the first met
 /// (checked after each generation, in the order of the Termination enum) wins.
@@ -76,7 +83,7 @@ struct RunReport {
   Termination termination = Termination::MaxGenerations;
   /// One line for humans, e.g. "250 generations run".
   std::string message{};
-  /// Generations run after the initial population.
+  /// Generations run after the initial population (local methods: iterations).
   std::size_t generations = 0;
   /// Evaluations of the problem, failed ones included.
   std::size_t evaluations = 0;

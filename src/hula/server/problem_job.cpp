@@ -5,12 +5,13 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <utility>
+#include <variant>
 
 #include "hula/io/json_read.hpp"
 #include "hula/io/problem_file.hpp"
 #include "hula/io/run_report_json.hpp"
-#include "hula/optim/ga.hpp"
-#include "hula/optim/nsga2.hpp"
+#include "hula/optim/solve.hpp"
 
 namespace hula::server {
 
@@ -84,53 +85,50 @@ Json report_json(const optim::RunReport& r, const ProblemJob& job) {
   return io::run_report_to_json(r, {.seed = job.seed, .algorithm = job.algorithm_name, .problem = job.problem.name});
 }
 
-template <class Options>
-void fill_run(Options& o, const ProblemJob& job) {
-  if (job.population) o.population = *job.population;
-  o.run.seed = job.seed;
-  o.run.stop.generations = job.generations;
+// The job's algorithm and its options; with a context, its progress events and cancellation.
+optim::SolverOptions solver_options(const ProblemJob& job, JobContext* context) {
+  const auto start = std::chrono::steady_clock::now();
+  const auto fill_run = [&](auto& o) {
+    if (job.population) o.population = *job.population;
+    o.run.seed = job.seed;
+    o.run.stop.generations = job.generations;
+    if (context == nullptr) return;
+    o.run.stop.cancel = &context->cancel;
+    o.run.on_generation = [start, context](const optim::GenerationLog& g) {
+      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      context->publish(generation_event(g, elapsed));
+    };
+  };
+  if (job.algorithm == Algorithm::Nsga2) {
+    optim::Nsga2Options o;
+    fill_run(o);
+    return o;
+  }
+  if (job.algorithm == Algorithm::RealGa) {
+    optim::RealGaOptions o;
+    fill_run(o);
+    return o;
+  }
+  optim::BinaryGaOptions o;
+  fill_run(o);
+  return o;
 }
 
 JobOutcome run(const ProblemJob& job, JobContext& context) {
-  const auto start = std::chrono::steady_clock::now();
-  const auto on_generation = [&](const optim::GenerationLog& g) {
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    context.publish(generation_event(g, elapsed));
-  };
+  optim::SolveOptions options;
+  options.algorithm = solver_options(job, &context);
+  const optim::SolveResult r = optim::solve(job.problem, options);
   JobOutcome out;
-  optim::RunReport report;
+  out.result = Json::object();
   if (job.algorithm == Algorithm::Nsga2) {
-    optim::Nsga2Options o;
-    fill_run(o, job);
-    o.run.on_generation = on_generation;
-    o.run.stop.cancel = &context.cancel;
-    optim::Nsga2Result r = optim::solve_nsga2(job.problem, o);
     Json front = Json::array();
-    for (const optim::Solution& s : r.front) front.push_back(solution_json(s));
-    out.result = Json::object();
+    for (const optim::Solution& s : r.solutions) front.push_back(solution_json(s));
     out.result["front"] = std::move(front);
-    report = r.report;
   } else {
-    optim::GaResult r;
-    if (job.algorithm == Algorithm::RealGa) {
-      optim::RealGaOptions o;
-      fill_run(o, job);
-      o.run.on_generation = on_generation;
-      o.run.stop.cancel = &context.cancel;
-      r = optim::solve_real_ga(job.problem, o);
-    } else {
-      optim::BinaryGaOptions o;
-      fill_run(o, job);
-      o.run.on_generation = on_generation;
-      o.run.stop.cancel = &context.cancel;
-      r = optim::solve_binary_ga(job.problem, o);
-    }
-    out.result = Json::object();
-    out.result["best"] = solution_json(r.best);
-    report = r.report;
+    out.result["best"] = solution_json(r.solutions.front());
   }
-  out.report = report_json(report, job);
-  out.cancelled = report.termination == optim::Termination::Cancelled;
+  out.report = report_json(r.report, job);
+  out.cancelled = r.report.termination == optim::Termination::Cancelled;
   return out;
 }
 
@@ -163,23 +161,13 @@ JobWork problem_job(const Json& request) {
   if (const Json* s = io::json::optional_member(request, "seed"))
     job->seed = static_cast<std::uint64_t>(io::json::get_integer(*s, root_path("seed"), 0, (1ll << 53)));
   // Validate the options the run will use now, so a bad population is a 400, not a failed job.
+  std::visit([](const auto& o) { o.validate(); }, solver_options(*job, nullptr));
   if (job->algorithm == Algorithm::Nsga2) {
-    optim::Nsga2Options o;
-    fill_run(o, *job);
-    o.validate();
     if (job->problem.objectives < 2)
       throw Error(Errc::InvalidOption,
                   "algorithm nsga2 needs a problem with at least 2 objectives; '" + job->problem.name +
                       "' has 1 (use ga-real or ga-binary)",
                   ErrorWhere{.field = "algorithm"});
-  } else if (job->algorithm == Algorithm::RealGa) {
-    optim::RealGaOptions o;
-    fill_run(o, *job);
-    o.validate();
-  } else {
-    optim::BinaryGaOptions o;
-    fill_run(o, *job);
-    o.validate();
   }
   if (job->algorithm != Algorithm::Nsga2 && job->problem.objectives != 1)
     throw Error(Errc::InvalidOption,

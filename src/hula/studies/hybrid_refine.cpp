@@ -167,13 +167,18 @@ LmResult refine_levenberg_marquardt(const LeastSquaresProblem& problem, std::spa
   std::vector<double> jacobian_rows(problem.jacobian ? m * n : 0);
 
   // Damped Gauss-Newton steps from x until `target` or `budget` steps.
+  using optim::Termination;
+  const auto end_with = [&](Termination termination, std::string message) {
+    result.termination = termination;
+    result.message = std::move(message);
+  };
   auto solve = [&](double target, std::size_t budget) {
-    if (!eval(x, r)) return std::string("degenerate");
+    (void)eval(x, r);  // the start, checked above
     double cost = r.squaredNorm();
     double lambda = options.initial_lambda;
     bool need_jacobian = true;
     for (std::size_t step = 0; step < budget; ++step) {
-      if (mean_abs(r) <= target) return std::string("target reached");
+      if (mean_abs(r) <= target) return end_with(Termination::TargetReached, "target_mean reached");
       if (need_jacobian) {
         if (problem.jacobian) {
           ++result.evaluations;
@@ -210,17 +215,19 @@ LmResult refine_levenberg_marquardt(const LeastSquaresProblem& problem, std::spa
         cost = cost_try;
         lambda = std::max(lambda / 3.0, 1e-15);
         need_jacobian = true;
-        if (reduction < options.relative_tolerance) return std::string("converged");
+        if (reduction < options.relative_tolerance)
+          return end_with(Termination::Converged, "a step lowered the cost by less than relative_tolerance");
       } else {
         lambda *= 4.0;
-        if (lambda > 1e16) return std::string("damping overflow");
+        if (lambda > 1e16) return end_with(Termination::Stagnation, "damping overflow: no step lowers the cost");
       }
     }
-    return mean_abs(r) <= target ? std::string("target reached") : std::string("max iterations");
+    if (mean_abs(r) <= target) return end_with(Termination::TargetReached, "target_mean reached");
+    end_with(Termination::MaxGenerations, "max_iterations = " + std::to_string(budget) + " steps run");
   };
 
   if (options.solver == LsqSolver::ClampedLm) {
-    result.termination = solve(options.target_mean, options.max_iterations);
+    solve(options.target_mean, options.max_iterations);
   } else {
     // Ceres: bounded trust-region LM on the same residuals and Jacobian.
     ceres::Problem::Options problem_options;
@@ -238,7 +245,7 @@ LmResult refine_levenberg_marquardt(const LeastSquaresProblem& problem, std::spa
       cp.SetParameterUpperBound(x.data(), static_cast<int>(j), vars[j].upper);
     }
     if (fixed.size() == n) {
-      result.termination = "converged: every variable is fixed";
+      end_with(Termination::Converged, "every variable is fixed");
     } else {
       if (!fixed.empty()) cp.SetManifold(x.data(), new ceres::SubsetManifold(static_cast<int>(n), fixed));
       ceres::Solver::Options so;
@@ -264,11 +271,13 @@ LmResult refine_levenberg_marquardt(const LeastSquaresProblem& problem, std::spa
       if (!eval(x, r))
         throw Error(Errc::NumericalFailure, "the residuals are undefined at the solver's result", {.field = "start"});
       if (mean_abs(r) <= t)
-        result.termination = "target reached";
+        end_with(Termination::TargetReached, "target_mean reached");
+      else if (summary.termination_type == ceres::CONVERGENCE)
+        end_with(Termination::Converged, summary.message);
+      else if (summary.termination_type == ceres::NO_CONVERGENCE)
+        end_with(Termination::MaxGenerations, summary.message);
       else
-        result.termination =
-            std::string(summary.termination_type == ceres::CONVERGENCE ? "converged: " : "no convergence: ") +
-            summary.message;
+        end_with(Termination::Stagnation, "Ceres failed: " + summary.message);
     }
   }
   result.mean_after = mean_abs(r);

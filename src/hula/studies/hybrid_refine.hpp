@@ -35,6 +35,7 @@
 #include <string_view>
 #include <vector>
 
+#include "hula/optim/run_report.hpp"
 #include "hula/studies/curvature_match.hpp"
 
 namespace hula::studies {
@@ -91,9 +92,11 @@ struct LmResult {
   /// Steps tried (accepted or not) and residual evaluations (Jacobian columns included).
   std::size_t iterations = 0;
   std::size_t evaluations = 0;
-  /// Why it stopped: "target reached", "converged", "max iterations", "damping overflow" (ClampedLm), or
-  /// Ceres's "converged: <its message>", "no convergence: <message>" (Ceres).
-  std::string termination{};
+  /// Why it stopped: TargetReached, Converged (an accepted step lowered ‖r‖² by less than relative_tolerance,
+  /// or Ceres's CONVERGENCE), MaxGenerations (max_iterations steps), Stagnation (the damping overflowed: no
+  /// step lowers the cost; Ceres's FAILURE), with a message (Ceres's own for its solver).
+  optim::Termination termination = optim::Termination::MaxGenerations;
+  std::string message{};
   /// Wall time in seconds.
   double seconds = 0.0;
 };

@@ -362,8 +362,8 @@ FairingResult fair_knots_ga(const KnotFairingSetup& setup, std::span<const doubl
     }
     result.evaluations += r.report.evaluations;
     ++result.rounds;
-    result.stopped =
-        r.report.termination == optim::Termination::Cancelled || r.report.termination == optim::Termination::WallTime;
+    result.termination = r.report.termination;
+    result.message = "round " + std::to_string(round) + ": " + r.report.message;
     const double e = r.best.objectives.at(0) * scale;
     const double before = best_energy;
     if (e < best_energy) {
@@ -390,7 +390,7 @@ FairingResult fair_knots_ga(const KnotFairingSetup& setup, std::span<const doubl
     // "The bound should be re-initialised through the optimisation, based on the
     // best solution found so far" (7.4.1): also while a round still improves.
     const bool improving = best_energy < before * (1.0 - options.recentre_improvement);
-    if (!(on_bound || improving) || round == options.max_recentres || result.stopped) break;
+    if (!(on_bound || improving) || round == options.max_recentres || result.stopped()) break;
     centre = best;
   }
   result.best = evaluate_parameters(setup, best);
@@ -449,9 +449,10 @@ FairingResult fair_knots_deterministic(const KnotFairingSetup& setup, std::span<
   };
   const optim::NelderMeadResult r = optim::nelder_mead(f, y0, options);
   FairingResult result;
-  result.evaluations = r.evaluations + 1;
+  result.evaluations = r.report.evaluations + 1;
   result.rounds = 1;
-  result.stopped = r.stopped;
+  result.termination = r.report.termination;
+  result.message = r.report.message;
   result.convergence.reserve(r.history.size());
   for (const double h : r.history) result.convergence.push_back(h * scale);
   std::vector<double> best = log_ratios_to_parameters(r.x);

@@ -17,6 +17,7 @@
 #include <cstddef>
 #include <functional>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -240,9 +241,15 @@ struct FairingResult {
   KnotBounds bounds{};
   /// Best energy so far after each generation (GA, all rounds in turn) or iteration (simplex).
   std::vector<double> convergence{};
-  /// True when a wall-time limit or a cancellation token (the options' run.stop,
-  /// NelderMeadOptions) ended the optimiser early: `best` is the best so far.
-  bool stopped = false;
+  /// Why the (last) optimiser run ended, and its message: WallTime or Cancelled
+  /// (the options' run.stop, NelderMeadOptions) mean it ended early and `best`
+  /// is the best so far.
+  optim::Termination termination = optim::Termination::MaxGenerations;
+  std::string message{};
+  /// True when a wall-time limit or a cancellation token ended the optimiser early.
+  [[nodiscard]] bool stopped() const noexcept {
+    return termination == optim::Termination::WallTime || termination == optim::Termination::Cancelled;
+  }
 };
 
 /// GA fairing (7.4): the internal parameters are the variables, boxed by the

@@ -151,6 +151,9 @@ void RunControl::finish(RunReport& report, Termination reason, std::size_t gener
     case Termination::Cancelled:
       report.message = "cancelled after " + std::to_string(generation) + " generations";
       break;
+    case Termination::Converged:  // the local methods' reason; no stop criterion of a population gives it
+      HULA_ASSERT(false, "a population-based run cannot end Converged");
+      break;
   }
 }
 
