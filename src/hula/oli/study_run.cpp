@@ -157,6 +157,7 @@ void run_hermite(const io::StudyDocument& doc, ComputedStudy& out) {
   out.curves.emplace_back(r.curve, "hermite result");
 }
 
+// The study kinds run inside a document (the header comment says what each stores).
 constexpr const char* kKinds[] = {
     "match-curvature", "match-curvature-torsion", "fair-knots", "edit-projection", "fin-compound", "hermite"};
 
@@ -174,12 +175,13 @@ PreparedStudy prepare(const Json& setup, const Document& document, std::optional
   out.kind = out.resolved.contains("study") && out.resolved["study"].is_string()
                  ? out.resolved["study"].get<std::string>()
                  : std::string();
-  if (std::find(std::begin(kKinds), std::end(kKinds), out.kind) == std::end(kKinds))
+  if (std::find(std::begin(kKinds), std::end(kKinds), out.kind) == std::end(kKinds)) {
+    std::string supported;
+    for (const char* k : kKinds) supported += (supported.empty() ? "" : ", ") + std::string(k);
     throw Error(Errc::InvalidArgument,
-                "study kind \"" + out.kind +
-                    "\" cannot run inside a document (supported: match-curvature, match-curvature-torsion, "
-                    "fair-knots, edit-projection, fin-compound, hermite)",
+                "study kind \"" + out.kind + "\" cannot run inside a document (supported: " + supported + ")",
                 {.field = "study"});
+  }
   return out;
 }
 
