@@ -7,9 +7,12 @@
 
 #include <gtest/gtest.h>
 
+#include <condition_variable>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
 #include <sstream>
+#include <thread>
 
 #include "hula/io/json_curve.hpp"
 #include "hula/testing/run_process.hpp"
@@ -135,6 +138,76 @@ TEST(StudyRun, CancelStoresBestSoFar) {
   EXPECT_EQ(stored.runs[0].result["ga"]["termination"], "Cancelled");
   ASSERT_EQ(r.curves.size(), 1u);
   EXPECT_EQ(doc.get(r.curves[0]).provenance()->details["cancelled"], true);
+}
+
+// Checks the phases let the document be read and edited from another thread while a study computes: the
+// computation is paused at generation 1 (a gate in the progress callback) while this thread moves a point of
+// the input point set and reads it back; the stored run equals run_study's on an unedited document bit for
+// bit (curve, best points, distances: it ran on the points as read at prepare), and its curve's provenance names the
+// changed input.
+TEST(StudyRun, DocumentStaysEditableWhileAStudyComputes) {
+  Document reference;
+  StudyRunResult expected;
+  const Label rp = add_points(reference);
+  reference.transact("run", [&](Edit& e) { expected = run_study(e, study_on(rp), "."); }).throw_if_failed();
+
+  Document doc;
+  const Label p = add_points(doc);
+  PreparedStudy prepared = prepare_study(doc, study_on(p));
+  std::mutex mutex;
+  std::condition_variable changed;
+  bool paused = false, resume = false;
+  StudyRunOptions options;
+  options.on_generation = [&](const optim::GenerationLog& g) {
+    if (g.generation != 1) return;
+    std::unique_lock lock(mutex);
+    paused = true;
+    changed.notify_all();
+    changed.wait(lock, [&] { return resume; });
+  };
+  ComputedStudy computed;
+  std::thread worker([&] { computed = compute_study(std::move(prepared), ".", options); });
+  {
+    std::unique_lock lock(mutex);
+    changed.wait(lock, [&] { return paused; });
+  }
+  doc.transact("drag", [&](Edit& e) { e.move_point(p, 1, {5, 25, 0}); }).throw_if_failed();
+  EXPECT_EQ(doc.get(p).point_set().points[1], (Vec3{5, 25, 0}));
+  {
+    std::lock_guard lock(mutex);
+    resume = true;
+  }
+  changed.notify_all();
+  worker.join();
+  StudyRunResult r;
+  doc.transact("run", [&](Edit& e) { r = commit_study(e, std::move(computed)); }).throw_if_failed();
+  EXPECT_EQ(doc.revision(), 3u);
+  for (const char* member : {"curve", "best_points", "after", "start_points"})
+    EXPECT_EQ(r.result[member].dump(), expected.result[member].dump()) << member;
+  ASSERT_EQ(r.curves.size(), 1u);
+  EXPECT_EQ(io::curve_to_json(doc.get(r.curves[0]).curve()).dump(),
+            io::curve_to_json(reference.get(expected.curves[0]).curve()).dump());
+  const Provenance& prov = *doc.get(r.curves[0]).provenance();
+  EXPECT_EQ(prov.inputs, (std::vector<Label>{r.study, p}));
+  EXPECT_EQ(prov.details["inputs_changed"], Json::array({p.value}));
+  EXPECT_EQ(prov.details["read_at_revision"], 1u);
+  EXPECT_FALSE(reference.get(expected.curves[0]).provenance()->details.contains("inputs_changed"));
+}
+
+// Checks a rerun whose study entity is removed while it computes fails at commit (InvalidArgument naming
+// the label) and leaves the document as it was.
+TEST(StudyRun, RerunOfARemovedStudyFailsAtCommit) {
+  Document doc;
+  const Label p = add_points(doc);
+  StudyRunResult first;
+  doc.transact("run", [&](Edit& e) { first = run_study(e, study_on(p), "."); }).throw_if_failed();
+  ComputedStudy computed = compute_study(prepare_rerun(doc, first.study), ".");
+  doc.transact("remove", [&](Edit& e) { e.remove(first.study); }).throw_if_failed();
+  const std::uint64_t revision = doc.revision();
+  const Outcome out = doc.transact("rerun", [&](Edit& e) { (void)commit_study(e, std::move(computed)); });
+  EXPECT_EQ(out.error_code, "InvalidArgument");
+  EXPECT_NE(out.error_message.find(std::to_string(first.study.value)), std::string::npos);
+  EXPECT_EQ(doc.revision(), revision);
 }
 
 // Checks a fair-knots study (thesis 7.3 Example 2's asymmetric points, both optimisers) stores both optima

@@ -714,6 +714,53 @@ class DocumentTest(unittest.TestCase):
         self.assertTrue(os.path.exists(os.path.join(self.server.workspace, ".trash", gone["trash"])))
         self.assertFalse(os.path.exists(os.path.join(self.server.workspace, "life.hula")))
 
+    # checks a running study job leaves its document open to others (docs/server.md "Concurrency"): after
+    # its first generation, three concurrent GETs of the document and GET /api/health each answer within
+    # 10 s and an entity is added, while the job is still running; once stopped, its result is stored as
+    # one history step ("run study") after the edit, with the study entity and its result curve
+    def test_study_job_does_not_lock_its_document(self):
+        self.new_document("busy.hula")
+        base = "/api/documents/busy.hula"
+        job = self.call("POST", "/api/jobs", {"document": "busy.hula", "study": match_study(100000)}, expect=202)
+        path = f"/api/jobs/{job['job']}"
+        conn, response = open_events(self.server, path + "/events")
+        events = read_events(response)
+        self.assertEqual(next(events)[0], "generation")
+        answers = {}
+
+        def get(key, route):
+            c = self.server.connection(timeout=10)
+            try:
+                answers[key] = self.server.request("GET", route, conn=c, token=key != "health")
+            finally:
+                c.close()
+
+        readers = [threading.Thread(target=get, args=(f"doc{i}", base)) for i in range(3)]
+        readers.append(threading.Thread(target=get, args=("health", "/api/health")))
+        for t in readers:
+            t.start()
+        for t in readers:
+            t.join(30)
+        self.assertEqual(sorted(answers), ["doc0", "doc1", "doc2", "health"])
+        for key, (status, headers, data) in answers.items():
+            self.assertEqual(status, 200, data)
+            route = "/api/health" if key == "health" else base
+            self.api.validate("GET", route, status, data, headers.get("content-type", ""))
+        added = self.call("POST", base + "/entities", {"curve": CURVE50, "name": "spine"}, expect=201)
+        self.assertEqual(self.call("GET", path)["state"], "running")
+        self.call("DELETE", path)
+        rest = list(events)
+        conn.close()
+        self.assertEqual(rest[-1][0], "cancelled")
+        final = self.call("GET", path)
+        history = self.call("GET", base + "/history")["history"]
+        self.assertEqual([h["name"] for h in history], ["add curve", "run study"])
+        self.assertEqual(final["result"]["revision"], added["revision"] + 1)
+        listed = self.call("GET", base)
+        [curve] = final["result"]["curves"]
+        self.assertEqual({e["label"]: e["kind"] for e in listed["entities"]},
+                         {added["label"]: "curve", final["result"]["study"]: "study", curve: "curve"})
+
     # checks add, get, patch move (continue folds into one undo step), undo, redo, history and delete
     def test_entities_undo_redo(self):
         self.new_document("edit.hula")

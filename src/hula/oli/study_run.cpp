@@ -2,6 +2,8 @@
 // Study runs stored in the document (study_run.hpp).
 #include "hula/oli/study_run.hpp"
 
+#include <algorithm>
+#include <iterator>
 #include <set>
 #include <sstream>
 
@@ -54,13 +56,6 @@ void resolve_entities(Json& value, const Document& document, std::set<Label>& re
     for (Json& element : value) resolve_entities(element, document, read);
 }
 
-// Runs one study; returns the run and its result curves (with the names they get in the document).
-struct Ran {
-  StudyRun run;
-  std::vector<std::pair<curve::Curve, std::string>> curves;
-  std::string kind;
-};
-
 Json log_json(const optim::RunLog& log) {
   std::ostringstream text;
   log.write_json(text);
@@ -68,7 +63,7 @@ Json log_json(const optim::RunLog& log) {
 }
 
 void run_match(const io::StudyDocument& doc, const std::filesystem::path& base, const StudyRunOptions& options,
-               Ran& out) {
+               ComputedStudy& out) {
   // Files a study names stay inside the document's folder (io::confined_to), as on a server.
   io::MatchStudyFile file = io::match_study_from_json(doc, io::confined_to(base));
   file.study.header.cancel = options.cancel;
@@ -78,11 +73,11 @@ void run_match(const io::StudyDocument& doc, const std::filesystem::path& base, 
   out.run.seed = file.study.header.seed;
   out.run.result = io::match_result_to_json(match, file, result);
   out.run.log = log_json(result.log);
-  out.curves.emplace_back(io::curve_from_json(out.run.result.at("curve")), out.kind + " result");
+  out.curves.emplace_back(io::curve_from_json(out.run.result.at("curve")), out.prepared.kind + " result");
 }
 
 void run_match_torsion(const io::StudyDocument& doc, const std::filesystem::path& base, const StudyRunOptions& options,
-                       Ran& out) {
+                       ComputedStudy& out) {
   io::TorsionMatchStudyFile file = io::torsion_match_study_from_json(doc, io::confined_to(base));
   studies::TorsionMatchStudy& study = file.study;
   study.settings.cancel = options.cancel;
@@ -95,12 +90,12 @@ void run_match_torsion(const io::StudyDocument& doc, const std::filesystem::path
   out.run.log = log_json(result.log);
   const Json& compromise = out.run.result.value("compromise", Json());
   if (compromise.is_object() && compromise.contains("curve"))
-    out.curves.emplace_back(io::curve_from_json(compromise.at("curve")), out.kind + " compromise");
+    out.curves.emplace_back(io::curve_from_json(compromise.at("curve")), out.prepared.kind + " compromise");
 }
 
 // As `hula fair-knots` without the energy map and figures: the chord-length start, the given
 // parameters, and the GA and/or deterministic optimum, each optimum a result curve.
-void run_fair_knots(const io::StudyDocument& doc, const StudyRunOptions& options, Ran& out) {
+void run_fair_knots(const io::StudyDocument& doc, const StudyRunOptions& options, ComputedStudy& out) {
   studies::FairKnotsStudy study = io::fair_knots_study_from_json(doc);
   for (optim::RunSettings* run : {&study.ga.binary.run, &study.ga.real.run}) {
     run->stop.cancel = options.cancel;
@@ -133,7 +128,7 @@ void run_fair_knots(const io::StudyDocument& doc, const StudyRunOptions& options
 }
 
 // As `hula edit-projection` (thesis 8.1): deterministic, no generations; the rebuilt curve is the result.
-void run_edit_projection(const io::StudyDocument& doc, Ran& out) {
+void run_edit_projection(const io::StudyDocument& doc, ComputedStudy& out) {
   const io::EditProjectionStudy study = io::read_edit_projection_study(doc);
   const studies::ProjectionEditResult r =
       studies::edit_projection(study.curve.nurbs(), study.edited.nurbs(), study.plane);
@@ -144,7 +139,7 @@ void run_edit_projection(const io::StudyDocument& doc, Ran& out) {
 
 // As `hula fin-compound` (thesis 8.3) without its figures; the result curve is the one `-o` writes (the
 // rebuilt 3-D curve, the compound or the parent). Deterministic, no generations.
-void run_fin_compound(const io::StudyDocument& doc, Ran& out) {
+void run_fin_compound(const io::StudyDocument& doc, ComputedStudy& out) {
   const io::FinCompoundStudy study = io::read_fin_compound_study(doc);
   const io::FinCompoundRun run = io::run_fin_compound_study(study);
   out.run.seed = study.header.seed;
@@ -154,7 +149,7 @@ void run_fin_compound(const io::StudyDocument& doc, Ran& out) {
 }
 
 // As `hula hermite` (thesis 7.5.2) without its figures: the curve rebuilt from the edited handles.
-void run_hermite(const io::StudyDocument& doc, Ran& out) {
+void run_hermite(const io::StudyDocument& doc, ComputedStudy& out) {
   const io::HermiteStudy study = io::read_hermite_study(doc);
   const studies::HermiteEditResult r = studies::hermite_edit(study.spline.points, study.edits, study.options);
   out.run.seed = study.header.seed;
@@ -162,24 +157,95 @@ void run_hermite(const io::StudyDocument& doc, Ran& out) {
   out.curves.emplace_back(r.curve, "hermite result");
 }
 
-Ran run_once(const Json& setup, const Document& document, const std::filesystem::path& base,
-             std::optional<std::uint64_t> seed, std::set<Label>& read, const StudyRunOptions& options) {
-  Json resolved = setup;
-  resolve_entities(resolved, document, read);
-  if (seed) resolved["seed"] = *seed;
-  const std::string kind = resolved.contains("study") && resolved["study"].is_string()
-                               ? resolved["study"].get<std::string>()
-                               : std::string();
-  Ran out;
-  out.kind = kind;
-  if (kind != "match-curvature" && kind != "match-curvature-torsion" && kind != "fair-knots" &&
-      kind != "edit-projection" && kind != "fin-compound" && kind != "hermite")
+// The study kinds run inside a document (the header comment says what each stores).
+constexpr const char* kKinds[] = {
+    "match-curvature", "match-curvature-torsion", "fair-knots", "edit-projection", "fin-compound", "hermite"};
+
+PreparedStudy prepare(const Json& setup, const Document& document, std::optional<std::uint64_t> seed,
+                      std::optional<Label> study) {
+  PreparedStudy out;
+  out.setup = setup;
+  out.resolved = setup;
+  out.study = study;
+  out.revision = document.revision();
+  std::set<Label> read;
+  resolve_entities(out.resolved, document, read);
+  for (const Label l : read) out.inputs.push_back(document.get(l));
+  if (seed) out.resolved["seed"] = *seed;
+  out.kind = out.resolved.contains("study") && out.resolved["study"].is_string()
+                 ? out.resolved["study"].get<std::string>()
+                 : std::string();
+  if (std::find(std::begin(kKinds), std::end(kKinds), out.kind) == std::end(kKinds)) {
+    std::string supported;
+    for (const char* k : kKinds) supported += (supported.empty() ? "" : ", ") + std::string(k);
     throw Error(Errc::InvalidArgument,
-                "study kind \"" + kind +
-                    "\" cannot run inside a document (supported: match-curvature, match-curvature-torsion, "
-                    "fair-knots, edit-projection, fin-compound, hermite)",
+                "study kind \"" + out.kind + "\" cannot run inside a document (supported: " + supported + ")",
                 {.field = "study"});
-  const io::StudyDocument doc = io::parse_study_json(resolved.dump(), kind);
+  }
+  return out;
+}
+
+// The inputs whose data changed, or which were removed, since they were read (attributes do not count).
+std::vector<Label> inputs_changed(const Document& document, const std::vector<Entity>& inputs) {
+  std::vector<Label> changed;
+  for (const Entity& was : inputs) {
+    if (!document.contains(was.label())) {
+      changed.push_back(was.label());
+      continue;
+    }
+    const Entity now = document.get(was.label());
+    if (now.kind() != was.kind() || now.state()->curve != was.state()->curve ||
+        now.state()->points != was.state()->points)
+      changed.push_back(was.label());
+  }
+  return changed;
+}
+
+// Stores the run and its result curves; a cancelled run (best so far) says so in the curves' provenance.
+StudyRunResult record(Edit& edit, Label study, ComputedStudy ran) {
+  StudyRunResult out;
+  out.study = study;
+  out.kind = ran.prepared.kind;
+  out.cancelled = ran.cancelled;
+  Provenance p;
+  p.operation = "study:" + ran.prepared.kind;
+  p.inputs.push_back(study);
+  for (const Entity& e : ran.prepared.inputs) p.inputs.push_back(e.label());
+  p.seed = ran.run.seed;
+  p.tool_version = HULA_VERSION;
+  Study stored = edit.get(study).study();
+  p.details["run"] = stored.runs.size();
+  if (out.cancelled) p.details["cancelled"] = true;
+  if (const std::vector<Label> changed = inputs_changed(edit.document(), ran.prepared.inputs); !changed.empty()) {
+    Json labels = Json::array();
+    for (const Label l : changed) labels.push_back(l.value);
+    p.details["inputs_changed"] = std::move(labels);
+    p.details["read_at_revision"] = ran.prepared.revision;
+  }
+  for (const auto& [curve, name] : ran.curves) out.curves.push_back(edit.add_curve(curve, {.name = name}, p));
+  ran.run.result_curves = out.curves;
+  out.result = ran.run.result;
+  stored.runs.push_back(std::move(ran.run));
+  edit.set_study(study, std::move(stored));
+  return out;
+}
+
+}  // namespace
+
+PreparedStudy prepare_study(const Document& document, const Json& study_file) {
+  if (!study_file.is_object()) throw Error(Errc::ParseError, "a study file must be a JSON object", {.field = "study"});
+  return prepare(study_file, document, std::nullopt, std::nullopt);
+}
+
+PreparedStudy prepare_rerun(const Document& document, Label study, std::optional<std::uint64_t> seed) {
+  return prepare(document.get(study).study().setup, document, seed, study);
+}
+
+ComputedStudy compute_study(PreparedStudy prepared, const std::filesystem::path& base, const StudyRunOptions& options) {
+  ComputedStudy out;
+  out.prepared = std::move(prepared);
+  const std::string& kind = out.prepared.kind;
+  const io::StudyDocument doc = io::parse_study_json(out.prepared.resolved.dump(), kind);
   if (kind == "match-curvature")
     run_match(doc, base, options, out);
   else if (kind == "match-curvature-torsion")
@@ -192,54 +258,28 @@ Ran run_once(const Json& setup, const Document& document, const std::filesystem:
     run_fin_compound(doc, out);
   else
     run_hermite(doc, out);
+  out.cancelled = options.cancel != nullptr && options.cancel->is_cancelled();
   return out;
 }
 
-// Stores the run and its result curves; a cancelled run (best so far) says so in the curves' provenance.
-StudyRunResult record(Edit& edit, Label study, Ran ran, const std::set<Label>& read,
-                      const optim::CancellationToken* cancel) {
-  StudyRunResult out;
-  out.study = study;
-  out.kind = ran.kind;
-  out.cancelled = cancel != nullptr && cancel->is_cancelled();
+StudyRunResult commit_study(Edit& edit, ComputedStudy computed) {
+  if (computed.prepared.study) return record(edit, *computed.prepared.study, std::move(computed));
   Provenance p;
-  p.operation = "study:" + ran.kind;
-  p.inputs.push_back(study);
-  p.inputs.insert(p.inputs.end(), read.begin(), read.end());
-  p.seed = ran.run.seed;
+  p.operation = "study";
+  for (const Entity& e : computed.prepared.inputs) p.inputs.push_back(e.label());
   p.tool_version = HULA_VERSION;
-  Study stored = edit.get(study).study();
-  p.details["run"] = stored.runs.size();
-  if (out.cancelled) p.details["cancelled"] = true;
-  for (const auto& [curve, name] : ran.curves) out.curves.push_back(edit.add_curve(curve, {.name = name}, p));
-  ran.run.result_curves = out.curves;
-  out.result = ran.run.result;
-  stored.runs.push_back(std::move(ran.run));
-  edit.set_study(study, std::move(stored));
-  return out;
+  const Label study = edit.add_study({computed.prepared.setup, {}}, {.name = computed.prepared.kind}, p);
+  return record(edit, study, std::move(computed));
 }
-
-}  // namespace
 
 StudyRunResult run_study(Edit& edit, const Json& study_file, const std::filesystem::path& base,
                          const StudyRunOptions& options) {
-  if (!study_file.is_object()) throw Error(Errc::ParseError, "a study file must be a JSON object", {.field = "study"});
-  std::set<Label> read;
-  Ran ran = run_once(study_file, edit.document(), base, std::nullopt, read, options);
-  Provenance p;
-  p.operation = "study";
-  p.inputs.assign(read.begin(), read.end());
-  p.tool_version = HULA_VERSION;
-  const Label study = edit.add_study({study_file, {}}, {.name = ran.kind}, p);
-  return record(edit, study, std::move(ran), read, options.cancel);
+  return commit_study(edit, compute_study(prepare_study(edit.document(), study_file), base, options));
 }
 
 StudyRunResult rerun_study(Edit& edit, Label study, const std::filesystem::path& base,
                            std::optional<std::uint64_t> seed, const StudyRunOptions& options) {
-  const Json setup = edit.get(study).study().setup;
-  std::set<Label> read;
-  Ran ran = run_once(setup, edit.document(), base, seed, read, options);
-  return record(edit, study, std::move(ran), read, options.cancel);
+  return commit_study(edit, compute_study(prepare_rerun(edit.document(), study, seed), base, options));
 }
 
 }  // namespace hula::oli

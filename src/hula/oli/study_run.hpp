@@ -23,6 +23,19 @@
 // results of these three are what their commands print, without seed, threads
 // and log, and no figures are stored.
 //
+// Phases (so a server need not hold the document's writer lock while a study
+// computes): prepare_study / prepare_rerun resolve the entity references
+// against the document as it is then (a reader is enough), compute_study runs
+// the study without touching the document, and commit_study stores the study
+// entity, the run and its result curves in the caller's transaction.
+// run_study and rerun_study are the three in a row inside one transaction.
+// When the document changes between prepare and commit, the run is still
+// stored: it is the run of the setup on the entities as read at prepare (the
+// revision and their data then), its result curves' provenance lists the
+// entities read (a removed one stays named; labels are never reused) and, under
+// details "inputs_changed", the labels whose data changed or which were removed
+// since; a study entity removed meanwhile (rerun) fails the commit.
+//
 // Progress and cancellation (StudyRunOptions): the caller's callback sees
 // every generation of the study's optimiser(s); a cancellation token stops
 // them at the next generation, and the best so far is stored like a finished
@@ -32,8 +45,11 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <string>
+#include <utility>
 #include <vector>
 
+#include "hula/curve/curve.hpp"
 #include "hula/oli/document.hpp"
 #include "hula/optim/run_log.hpp"
 #include "hula/optim/run_report.hpp"
@@ -63,6 +79,54 @@ struct StudyRunOptions {
   /// best so far, which is stored. Not owned; must outlive the run. Default none.
   const optim::CancellationToken* cancel = nullptr;
 };
+
+/// A study file with its entity references resolved against one revision of a document (phase 1).
+struct PreparedStudy {
+  /// The setup as given (stored in the study entity, references kept).
+  Json setup = Json::object();
+  /// The setup with every {"entity": L} replaced by L's data (and the seed of a rerun).
+  Json resolved = Json::object();
+  /// The study kind ("match-curvature", ...), checked to be one run here.
+  std::string kind{};
+  /// The entities the setup read, in label order, as they were at `revision`.
+  std::vector<Entity> inputs{};
+  /// The document's revision when the references were resolved.
+  std::uint64_t revision = 0;
+  /// The stored study a rerun appends to; none for a new study.
+  std::optional<Label> study{};
+};
+
+/// A computed run not yet stored (phase 2).
+struct ComputedStudy {
+  PreparedStudy prepared{};
+  /// The run (seed, result, log); its result curves are set when committed.
+  StudyRun run{};
+  /// The result curves with the names they get in the document.
+  std::vector<std::pair<curve::Curve, std::string>> curves{};
+  /// True when the cancellation token was set when the computation ended.
+  bool cancelled = false;
+};
+
+/// Resolves `study_file`'s entity references against `document` (phase 1; reads only).
+/// @throws hula::Error(Errc::ParseError) when `study_file` is not an object or a reference is not a
+///   label; hula::Error(Errc::InvalidArgument) naming the kind when it is not supported, or an
+///   entity reference to a missing label or a study
+PreparedStudy prepare_study(const Document& document, const Json& study_file);
+
+/// Resolves the stored setup of `study` (with `seed` in place of its own, if given) against `document`.
+/// @throws as prepare_study; hula::Error(Errc::InvalidArgument) when `study` is not a study
+PreparedStudy prepare_rerun(const Document& document, Label study, std::optional<std::uint64_t> seed = std::nullopt);
+
+/// Runs a prepared study (phase 2); reads no document, so it needs no lock.
+/// @param base the directory relative paths of the study file are read from
+/// @throws the study's own errors (ParseError naming the member, InvalidOption, NumericalFailure)
+ComputedStudy compute_study(PreparedStudy prepared, const std::filesystem::path& base,
+                            const StudyRunOptions& options = {});
+
+/// Stores a computed run (phase 3, inside the caller's transaction): a new study entity for a
+/// prepare_study, then the run and its result curves (see the header comment for inputs changed meanwhile).
+/// @throws hula::Error(Errc::InvalidArgument) when a rerun's study entity is gone
+StudyRunResult commit_study(Edit& edit, ComputedStudy computed);
 
 /// Adds a study entity for `study_file` and runs it once (inside the caller's transaction).
 /// @param base the directory relative paths of the study file are read from

@@ -4,9 +4,13 @@
 // → Server-Sent Events (one "generation" event per generation, then one of
 // "done", "failed", "cancelled" carrying the job); DELETE /api/jobs/{id}
 // cancels, keeping the best so far (jobs.hpp, problem_job.hpp).
-// POST /api/jobs {"document": name, "study": study file} runs the study in one
-// transaction of the document (oli::run_study): the study entity, its run and
-// its result curves are stored in the document, or nothing is if it fails.
+// POST /api/jobs {"document": name, "study": study file} runs the study in the
+// three phases of oli (study_run.hpp): its entity references are resolved
+// under the document's read lock, the study computes holding no lock (the
+// document stays readable and editable), and one transaction under the writer
+// lock stores the study entity, its run and its result curves — or nothing, if
+// it fails. A run whose inputs changed meanwhile is stored as computed from the
+// inputs as read at start (docs/server.md "Study jobs").
 // Its events are the problem job's plus "study" (the kind), with generations
 // counted across the study's optimiser runs (docs/server.md "Study jobs");
 // cancelling it stores the best so far.
@@ -27,7 +31,7 @@ std::shared_ptr<Job> find_job(JobPool& jobs, const Request& request) {
   return job;
 }
 
-// The work of a study job: one transaction of the document, holding its writer lock while it runs.
+// The work of a study job: prepare (read lock), compute (no lock), commit (writer lock, one transaction).
 JobWork study_job(std::shared_ptr<OpenDocument> doc, Json study, std::filesystem::path workspace) {
   return [doc = std::move(doc), study = std::move(study), workspace = std::move(workspace)](JobContext& context) {
     const auto start = std::chrono::steady_clock::now();
@@ -46,9 +50,11 @@ JobWork study_job(std::shared_ptr<OpenDocument> doc, Json study, std::filesystem
       e["study"] = kind;
       context.publish(e);
     };
+    oli::PreparedStudy prepared = doc->read([&](const oli::Document& d) { return oli::prepare_study(d, study); });
+    oli::ComputedStudy computed = oli::compute_study(std::move(prepared), workspace, options);
     oli::StudyRunResult run;
     const oli::Outcome o = doc->write([&](oli::Document& d) {
-      return d.transact("run study", [&](oli::Edit& e) { run = oli::run_study(e, study, workspace, options); });
+      return d.transact("run study", [&](oli::Edit& e) { run = oli::commit_study(e, std::move(computed)); });
     });
     o.throw_if_failed();
     JobOutcome out;
