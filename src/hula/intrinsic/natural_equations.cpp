@@ -696,8 +696,7 @@ NurbsFitResult fit_nurbs(const IntrinsicCurve& curve, const NurbsFitOptions& opt
     }
     worst = std::max(worst, distance(fitted.derivatives(run.back().s, 0)[0], run.back().position));
   }
-  if (!converged || worst > tolerance)
-    return NurbsFitResult{std::move(fitted), worst, segments, tolerance, false};
+  if (!converged || worst > tolerance) return NurbsFitResult{std::move(fitted), worst, segments, tolerance, false};
   // Knot removal within what the fit left of the tolerance (The NURBS Book A5.8): the Hermite form
   // spends 3 control points per segment and keeps κ continuous only as C2; most of its knots come
   // out, and the removal's bound (rigorous against the fitted NURBS) keeps the result within the

@@ -184,18 +184,18 @@ KnotRemovalResult remove_knots(const NurbsCurve& curve, double tolerance) {
       if (!(cost[r] < best_cost) || cost[r] > tol) continue;
       const auto R = static_cast<std::ptrdiff_t>(r);
       const std::ptrdiff_t s = last_multiplicity(R);
-      const auto [lo, hi] = spans_of(w.U[r - static_cast<std::size_t>(w.p)],
-                                     w.U[static_cast<std::size_t>(R - s + w.p + 1)]);
+      const auto [lo, hi] =
+          spans_of(w.U[r - static_cast<std::size_t>(w.p)], w.U[static_cast<std::size_t>(R - s + w.p + 1)]);
       const double used = *std::max_element(span_error.begin() + static_cast<std::ptrdiff_t>(lo),
-                                             span_error.begin() + static_cast<std::ptrdiff_t>(hi));
+                                            span_error.begin() + static_cast<std::ptrdiff_t>(hi));
       if (cost[r] > tol - used) continue;
       best = R;
       best_cost = cost[r];
     }
     if (best < 0) break;
     const Trial t = trial(w, best, last_multiplicity(best));
-    const auto [lo, hi] = spans_of(w.U[static_cast<std::size_t>(t.first)],
-                                   w.U[static_cast<std::size_t>(t.last + w.p + 1)]);
+    const auto [lo, hi] =
+        spans_of(w.U[static_cast<std::size_t>(t.first)], w.U[static_cast<std::size_t>(t.last + w.p + 1)]);
     for (std::size_t k = lo; k < hi; ++k) span_error[k] += best_cost;
     apply(w, t);
     cost.erase(cost.begin() + best);

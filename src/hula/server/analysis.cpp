@@ -164,7 +164,7 @@ std::string analysis_json(const curve::Curve& subject, const AnalysisRequest& re
     // A law curve's fins are exact from its law. Otherwise, sampled by parameter, the fins stand at the
     // samples: they are built from the frames already evaluated there (the same parameters, bit for bit)
     // instead of evaluating them again.
-    const diffgeom::Fins f = subject.law() != nullptr             ? diffgeom::fins(subject, o)
+    const diffgeom::Fins f = subject.law() != nullptr            ? diffgeom::fins(subject, o)
                              : request.by == SampleBy::Parameter ? diffgeom::fins(frames, o)
                                                                  : diffgeom::fins(curve, o);
     w.raw("{\"kind\":\"").raw(diffgeom::fin_kind_name(o.kind)).raw("\",\"t\":");
