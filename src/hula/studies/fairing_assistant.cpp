@@ -261,7 +261,7 @@ AssistantResult fair_knots_within(const curve::Curve& c, const AssistantOptions&
   const FairingResult f = fair_knots_deterministic(setup, start, nm);
   AssistantResult out{.curve = c};
   out.iterations = f.evaluations;
-  out.stopped = f.stopped;
+  out.stopped = f.stopped();
   out.data_points = data.points;
   out.faired_points = data.points;
   curve::InterpolatedData faired = data;
