@@ -173,7 +173,8 @@ TEST(NaturalEquations, FitShape) {
   EXPECT_EQ(fit.curve.degree(), 5);
   EXPECT_EQ(fit.curve.knots().values().front(), 0.0);
   EXPECT_EQ(fit.curve.knots().values().back(), 6.0);
-  EXPECT_EQ(fit.curve.control_points().size(), 3 * (fit.segments + 1));
+  // Knot removal takes out what the tolerance allows from the Hermite form's 3 (segments + 1) points.
+  EXPECT_LE(fit.curve.control_points().size(), 3 * (fit.segments + 1));
   EXPECT_LT(distance(fit.curve.derivatives(6.0, 0)[0], c.evaluate(6.0).position), 1e-12);
   NurbsFitOptions tight;
   tight.max_segments = 2;
@@ -182,7 +183,7 @@ TEST(NaturalEquations, FitShape) {
 
 // checks: κ = 1 − |s − 1| (a kink at s = 1) is one breakpoint, a node of the exact-angle quadrature; the end point
 // matches composite 8-point Gauss–Legendre of the closed-form angle (two clothoid arcs) to 1e-9, and the fit within
-// 1e-9 has a triple knot (C2: κ is continuous) at s = 1.
+// 1e-9 keeps a triple knot (C2: κ is continuous, κ′ is not) at s = 1 through knot removal.
 TEST(NaturalEquations, KinkIsABreakpoint) {
   Laws l;
   const IntrinsicCurve c = reconstruct_planar(l.parse("1 - abs(s - 1)"), "s", 2.0);
@@ -209,13 +210,14 @@ TEST(NaturalEquations, KinkIsABreakpoint) {
   const NurbsFitResult fit = fit_nurbs(c);
   EXPECT_TRUE(fit.converged);
   EXPECT_EQ(static_cast<int>(fit.curve.knots().multiplicity(c.breakpoints()[0])), 3);
-  EXPECT_EQ(fit.curve.control_points().size(), 3 * (fit.segments + 1));
+  EXPECT_LE(fit.curve.control_points().size(), 3 * (fit.segments + 1));
 }
 
 // checks: a jump of κ (a line of length 1, then the unit circle: piecewise(s < 1, 0, 1)) is stepped onto and fitted
-// with a knot of multiplicity 5 there; the dense curve and the NURBS match the closed form (s, 0) then
-// (1 + sin(s − 1), 1 − cos(s − 1)) at 401 arc lengths to 1e-9 (the NURBS, fitted within 1e-9, to 2e-9), with 3
-// (segments + 1) + 2 control points.
+// with a knot of multiplicity 4 or 5 there (C1 at most: the Hermite join is 5-fold, knot removal may take one
+// copy, never two); the dense curve and the NURBS match the closed form (s, 0) then (1 + sin(s − 1),
+// 1 − cos(s − 1)) at 401 arc lengths to 1e-9 (the NURBS, fitted within 1e-9, to 2e-9), with at most
+// 3 (segments + 1) + 2 control points.
 TEST(NaturalEquations, CurvatureJumpGivesC1Knot) {
   Laws l;
   const IntrinsicCurve c = reconstruct_planar(l.parse("piecewise(s < 1, 0, 1)"), "s", 3.0);
@@ -223,8 +225,8 @@ TEST(NaturalEquations, CurvatureJumpGivesC1Knot) {
   EXPECT_NEAR(c.breakpoints()[0], 1.0, 1e-14);
   const NurbsFitResult fit = fit_nurbs(c);
   EXPECT_TRUE(fit.converged);
-  EXPECT_EQ(static_cast<int>(fit.curve.knots().multiplicity(c.breakpoints()[0])), 5);
-  EXPECT_EQ(fit.curve.control_points().size(), 3 * (fit.segments + 1) + 2);
+  EXPECT_GE(static_cast<int>(fit.curve.knots().multiplicity(c.breakpoints()[0])), 4);
+  EXPECT_LE(fit.curve.control_points().size(), 3 * (fit.segments + 1) + 2);
   for (int i = 0; i <= 400; ++i) {
     const double s = 3.0 * i / 400;
     const Vec3 exact = s <= 1 ? Vec3{s, 0, 0} : Vec3{1 + std::sin(s - 1), 1 - std::cos(s - 1), 0};

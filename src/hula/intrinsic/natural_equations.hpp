@@ -203,13 +203,14 @@ struct NurbsFitOptions {
 
 /// Result of fit_nurbs().
 struct NurbsFitResult {
-  /// Quintic, parameterised by arc length on [0, L]; knots of multiplicity 3 at the breakpoints (C2),
-  /// 5 where κ jumps (C1: the curve itself is only C1 there).
+  /// Quintic, parameterised by arc length on [0, L]. The Hermite fit has knots of multiplicity 3 at
+  /// the breakpoints (C2), 5 where κ jumps (C1: the curve itself is only C1 there); then every knot
+  /// whose removal keeps the curve within the tolerance is removed (nurbs::remove_knots).
   nurbs::NurbsCurve curve;
   /// Largest |C(s) − r(s)| found by dense sampling (check_samples per segment).
   double max_deviation = 0.0;
-  /// Number of Hermite segments (the NURBS has 3 × (segments + 1) + 2 j control points, j the
-  /// number of jumps of κ).
+  /// Number of Hermite segments (before knot removal the NURBS has 3 × (segments + 1) + 2 j control
+  /// points, j the number of jumps of κ; after it, usually far fewer).
   std::size_t segments = 0;
   /// The absolute tolerance applied (options.tolerance, times the curve's size when relative).
   double tolerance = 0.0;
@@ -231,6 +232,10 @@ struct NurbsFitResult {
 /// gives the fewest segments, hence the fewest control points for the tolerance.
 /// Past max_segments each remaining piece gets one segment (converged = false), so the work is
 /// bounded by max_segments + breakpoints segments.
+/// Then knot removal (The NURBS Book A5.8, nurbs::remove_knots) within what the fit left of the
+/// tolerance (tolerance − max deviation): the cheapest knot first, its bound accumulated per span,
+/// so the result stays within the tolerance; the deviation is measured again at the same samples
+/// (and the Hermite fit kept if that measurement missed the tolerance).
 /// Complexity: O(segments × 12 × check_samples) dense evaluations.
 /// @param curve a reconstructed curve
 /// @param options tolerance, segment budget, check density

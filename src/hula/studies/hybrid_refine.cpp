@@ -183,7 +183,8 @@ LmResult refine_levenberg_marquardt(const LeastSquaresProblem& problem, std::spa
         if (problem.jacobian) {
           ++result.evaluations;
           if (!problem.jacobian(x, std::span<double>(r_plus.data(), m), jacobian_rows))
-            return end_with(Termination::Stagnation, "the exact Jacobian is undefined at the current design (degenerate)");
+            return end_with(Termination::Stagnation,
+                            "the exact Jacobian is undefined at the current design (degenerate)");
           J = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
               jacobian_rows.data(), M, Nv);
         } else {
