@@ -510,7 +510,9 @@ export class Viewports {
     const col = g?.getAttribute('color');
     if (!pos || !col) return [];
     const out: { from: Vec3; to: Vec3; colour: number }[] = [];
-    for (let i = 0; i + 1 < pos.count; i += 2)
+    // The buffers are reused and may be longer than what is drawn: only the draw range counts.
+    const drawn = Math.min(pos.count, g.drawRange.count);
+    for (let i = 0; i + 1 < drawn; i += 2)
       out.push({
         from: [pos.getX(i), pos.getY(i), pos.getZ(i)],
         to: [pos.getX(i + 1), pos.getY(i + 1), pos.getZ(i + 1)],
