@@ -508,7 +508,7 @@ export class Viewports {
     const g = this.curves.get(label)?.fins.geometry;
     const pos = g?.getAttribute('position');
     const col = g?.getAttribute('color');
-    if (!pos || !col) return [];
+    if (!g || !pos || !col) return [];
     const out: { from: Vec3; to: Vec3; colour: number }[] = [];
     // The buffers are reused and may be longer than what is drawn: only the draw range counts.
     const drawn = Math.min(pos.count, g.drawRange.count);
