@@ -41,7 +41,7 @@ LONG_GA = {
         "variables": [{"name": f"x{i}", "lower": -5, "upper": 5} for i in range(20)],
         "objectives": [" + ".join(f"(x{i}^2 - 10*cos(2*pi*x{i}) + 10)" for i in range(20))],
     },
-    "algorithm": "ga-real", "population": 200, "generations": 100000,
+    "algorithm": "ga-real", "population": 2000, "generations": 100000,
 }
 
 
