@@ -5,17 +5,7 @@
 import type { App } from '../app';
 import { ALL_FINS, SPACE_FINS, handlesOf } from '../app';
 import type { CurveFile, EndCondition, FinKind, Parameterisation } from '../api/types';
-
-function el<K extends keyof HTMLElementTagNameMap>(
-  tag: K,
-  attrs: Record<string, string> = {},
-  text?: string,
-): HTMLElementTagNameMap[K] {
-  const e = document.createElement(tag);
-  for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, v);
-  if (text !== undefined) e.textContent = text;
-  return e;
-}
+import { el } from './dom';
 
 function section(parent: HTMLElement, title: string, id: string): HTMLElement {
   const d = el('details', { id, open: '' });

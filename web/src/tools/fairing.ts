@@ -9,22 +9,12 @@ import { ApiError } from '../api/client';
 import { finLines } from '../api/adapt';
 import type { Analysis, FairMethod, FairPreview } from '../api/types';
 import type { App } from '../app';
+import { el } from '../panels/dom';
 
 /** Pause after the last edit before the preview is asked for (the pointer has stopped). */
 const DEBOUNCE_MS = 10;
 /** The optimisation budget the page asks for, seconds: with the round trip and a frame, ≤ 150 ms. */
 const BUDGET_S = 0.08;
-
-function el<K extends keyof HTMLElementTagNameMap>(
-  tag: K,
-  attrs: Record<string, string> = {},
-  text?: string,
-): HTMLElementTagNameMap[K] {
-  const e = document.createElement(tag);
-  for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, v);
-  if (text !== undefined) e.textContent = text;
-  return e;
-}
 
 export class FairingAssistant {
   enabled = false;
