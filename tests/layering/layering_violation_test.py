@@ -2,8 +2,9 @@
 # SPDX-License-Identifier: MIT
 """Checks scripts/check_layering.py against deliberate violations: a copy of the
 real tree passes; the same copy with an upward include (nurbs including io), a
-header-only upward include (a curve header including diffgeom) and a foreign
-detail/ include fails, naming each file, line and included header."""
+header-only upward include (a curve header including diffgeom), a foreign
+detail/ include and a server route including studies (below it, but reached
+through oli) fails, naming each file, line and included header."""
 import pathlib
 import shutil
 import subprocess
@@ -36,14 +37,17 @@ with tempfile.TemporaryDirectory() as tmp:
     l1 = append(tree / "src/hula/nurbs/knot_vector.cpp", '#include "hula/io/json_curve.hpp"')
     l2 = append(tree / "src/hula/curve/curve.hpp", '#include "hula/diffgeom/frenet.hpp"')
     l3 = append(tree / "src/hula/studies/knot_fairing.cpp", '#include "hula/nurbs/detail/homogeneous.hpp"')
+    l4 = append(tree / "src/hula/server/routes/entities.cpp", '#include "hula/studies/fairing_assistant.hpp"')
     bad = run(tree)
     assert bad.returncode == 1, "violations must fail the check:\n" + bad.stdout
     expected = [
         f'src/hula/nurbs/knot_vector.cpp:{l1} includes "hula/io/json_curve.hpp" (io is not below nurbs)',
         f'src/hula/curve/curve.hpp:{l2} includes "hula/diffgeom/frenet.hpp" (diffgeom is not below curve)',
         f'src/hula/studies/knot_fairing.cpp:{l3} includes "hula/nurbs/detail/homogeneous.hpp" (detail/ is private to nurbs)',
+        f'src/hula/server/routes/entities.cpp:{l4} includes "hula/studies/fairing_assistant.hpp" '
+        '(server reaches studies through oli or io)',
     ]
     for e in expected:
         assert ("layering violation: " + e) in bad.stdout, f"missing: {e}\n--- output:\n{bad.stdout}"
-    assert bad.stdout.count("layering violation:") == 3, bad.stdout
-print("layering check: clean tree passes, 3 deliberate violations reported")
+    assert bad.stdout.count("layering violation:") == 4, bad.stdout
+print("layering check: clean tree passes, 4 deliberate violations reported")

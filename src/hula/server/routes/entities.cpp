@@ -3,8 +3,8 @@
 // file, "name"?, "attributes"?} (201), GET|PUT|PATCH|DELETE
 // /api/documents/{name}/entities/{label}, and POST .../{label}/analysis
 // (analysis.hpp, read-only), POST .../{label}/fair-preview (the fairing
-// assistant's ghost, studies::fair_within_tolerance, read-only: accepted by a
-// PUT of its curve), POST .../{label}/insert-knot {"u", "times"?},
+// assistant's ghost, oli::fair_preview with io/fair_preview_json.hpp, read-only:
+// accepted by a PUT of its curve), POST .../{label}/insert-knot {"u", "times"?},
 // .../{label}/elevate {"times"?}, .../{label}/reverse and .../{label}/split {"t"}
 // (oli::Edit through the document's kernel; split answers the two pieces'
 // labels, first [a, t] then [t, b]). A PATCH {"move": [{"index", "to"}],
@@ -15,12 +15,13 @@
 #include <optional>
 
 #include "hula/curve/curve.hpp"
+#include "hula/io/fair_preview_json.hpp"
 #include "hula/io/json_curve.hpp"
 #include "hula/io/json_read.hpp"
+#include "hula/oli/fair_preview.hpp"
 #include "hula/server/analysis.hpp"
 #include "hula/server/documents.hpp"
 #include "hula/server/routes/routes.hpp"
-#include "hula/studies/fairing_assistant.hpp"
 
 namespace hula::server::routes {
 
@@ -82,32 +83,6 @@ std::vector<Move> read_moves(const Json& list) {
 int read_times(const Json& body) {
   const Json* t = json::optional_member(body, "times");
   return t ? static_cast<int>(json::get_integer(*t, json::root_path("times"), 1, 64)) : 1;
-}
-
-// {"tolerance", "method"?, "budget"?, "analysis"?} of a fairing preview.
-struct FairPreviewRequest {
-  studies::AssistantOptions options{};
-  std::optional<AnalysisRequest> analysis{};
-};
-
-FairPreviewRequest read_fair_preview(const Json& body) {
-  const json::JsonPath root;
-  json::reject_unknown_members(body, root, {"tolerance", "method", "budget", "analysis"});
-  FairPreviewRequest r;
-  r.options.tolerance = json::get_number(json::require_member(body, root, "tolerance"), root.member("tolerance"));
-  if (const Json* m = json::optional_member(body, "method"))
-    r.options.method = studies::assistant_method_from_name(json::get_string(*m, root.member("method")));
-  if (const Json* b = json::optional_member(body, "budget"))
-    r.options.time_budget_seconds = json::get_number(*b, root.member("budget"));
-  if (const Json* a = json::optional_member(body, "analysis")) r.analysis = analysis_request_from_json(*a);
-  r.options.validate();
-  return r;
-}
-
-Json points_json(const std::vector<Vec3>& points) {
-  Json out = Json::array();
-  for (const Vec3& p : points) out.push_back({p.x, p.y, p.z});
-  return out;
 }
 
 }  // namespace
@@ -228,26 +203,16 @@ void add_entities(Router& router, const Context& context) {
     return json_response(201, out);
   });
   router.add("POST", "/api/documents/{name}/entities/{label}/fair-preview", [&docs](const Request& request) {
-    const FairPreviewRequest preview = read_fair_preview(request.json());
+    const io::FairPreviewRequest preview = io::fair_preview_request_from_json(request.json());
+    const std::optional<AnalysisRequest> analysis =
+        preview.analysis ? std::optional(analysis_request_from_json(*preview.analysis)) : std::nullopt;
     const auto [doc, label] = entity_of(docs, request);
     const auto [e, revision] = doc->read([&](const oli::Document& d) { return std::pair(d.get(label), d.revision()); });
     // Computed outside the lock from the immutable snapshot; the document is not changed.
-    const studies::AssistantResult r = studies::fair_within_tolerance(e.curve(), preview.options);
-    Json out = Json::object();
-    out["revision"] = revision;
-    out["method"] = std::string(studies::assistant_method_name(preview.options.method));
-    out["tolerance"] = preview.options.tolerance;
-    out["curve"] = io::curve_to_json(r.curve);
-    out["energy_before"] = r.energy_before;
-    out["energy_after"] = r.energy_after;
-    out["max_deviation"] = r.max_deviation;
-    out["data_points"] = points_json(r.data_points);
-    out["faired_points"] = points_json(r.faired_points);
-    out["iterations"] = r.iterations;
-    out["stopped"] = r.stopped;
-    out["seconds"] = r.seconds;
-    if (preview.analysis) {
-      out["analysis"] = Json::parse(analysis_json(r.curve, *preview.analysis, revision));
+    const studies::AssistantResult r = oli::fair_preview(e, preview.options);
+    Json out = io::fair_preview_to_json(r, preview.options, revision);
+    if (analysis) {
+      out["analysis"] = Json::parse(analysis_json(r.curve, *analysis, revision));
     }
     return json_response(200, out);
   });

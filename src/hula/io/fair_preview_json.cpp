@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: MIT
+// The fairing preview's request and ghost as JSON (fair_preview_json.hpp).
+#include "hula/io/fair_preview_json.hpp"
+
+#include <string>
+#include <vector>
+
+#include "hula/io/json_read.hpp"
+
+namespace hula::io {
+
+namespace {
+
+Json points_json(const std::vector<Vec3>& points) {
+  Json out = Json::array();
+  for (const Vec3& p : points) out.push_back({p.x, p.y, p.z});
+  return out;
+}
+
+}  // namespace
+
+FairPreviewRequest fair_preview_request_from_json(const Json& body) {
+  const json::JsonPath root;
+  json::reject_unknown_members(body, root, {"tolerance", "method", "budget", "analysis"});
+  FairPreviewRequest r;
+  r.options.tolerance = json::get_number(json::require_member(body, root, "tolerance"), root.member("tolerance"));
+  if (const Json* m = json::optional_member(body, "method"))
+    r.options.method = studies::assistant_method_from_name(json::get_string(*m, root.member("method")));
+  if (const Json* b = json::optional_member(body, "budget"))
+    r.options.time_budget_seconds = json::get_number(*b, root.member("budget"));
+  if (const Json* a = json::optional_member(body, "analysis")) r.analysis = *a;
+  r.options.validate();
+  return r;
+}
+
+Json fair_preview_to_json(const studies::AssistantResult& r, const studies::AssistantOptions& options,
+                          std::uint64_t revision) {
+  Json out = Json::object();
+  out["revision"] = revision;
+  out["method"] = std::string(studies::assistant_method_name(options.method));
+  out["tolerance"] = options.tolerance;
+  out["curve"] = curve_to_json(r.curve);
+  out["energy_before"] = r.energy_before;
+  out["energy_after"] = r.energy_after;
+  out["max_deviation"] = r.max_deviation;
+  out["data_points"] = points_json(r.data_points);
+  out["faired_points"] = points_json(r.faired_points);
+  out["iterations"] = r.iterations;
+  out["stopped"] = r.stopped;
+  out["seconds"] = r.seconds;
+  return out;
+}
+
+}  // namespace hula::io
