@@ -10,6 +10,7 @@ import json
 import math
 import os
 import resource
+import shutil
 import signal
 import socket
 import subprocess
@@ -760,6 +761,36 @@ class DocumentTest(unittest.TestCase):
         [curve] = final["result"]["curves"]
         self.assertEqual({e["label"]: e["kind"] for e in listed["entities"]},
                          {added["label"]: "curve", final["result"]["study"]: "study", curve: "curve"})
+
+    # checks DELETE of a document while a study job computes on it: the job, cancelled after, fails with an
+    # InvalidArgument naming the document instead of storing its run, and the trashed file, copied back into
+    # the workspace and opened by the server, holds exactly what it held before the job (one curve, one step)
+    def test_delete_document_during_study_job(self):
+        self.new_document("doomed.hula")
+        base = "/api/documents/doomed.hula"
+        added = self.call("POST", base + "/entities", {"curve": CURVE50, "name": "spine"}, expect=201)
+        job = self.call("POST", "/api/jobs", {"document": "doomed.hula", "study": match_study(100000)}, expect=202)
+        path = f"/api/jobs/{job['job']}"
+        conn, response = open_events(self.server, path + "/events")
+        events = read_events(response)
+        self.assertEqual(next(events)[0], "generation")
+        gone = self.call("DELETE", base)
+        self.call("DELETE", path)  # the study stops at its next generation and tries to store its best so far
+        rest = list(events)
+        conn.close()
+        self.assertEqual(rest[-1][0], "failed")
+        final = self.call("GET", path)
+        self.assertEqual(final["state"], "failed")
+        self.assertEqual((final["error"]["code"], final["error"]["where"]["field"]), ("InvalidArgument", "document"))
+        self.assertIn("document 'doomed.hula' was deleted", final["error"]["message"])
+        trashed = os.path.join(self.server.workspace, ".trash", gone["trash"])
+        self.assertFalse(os.path.exists(trashed + "-wal"))
+        shutil.copyfile(trashed, os.path.join(self.server.workspace, "back.hula"))
+        back = self.call("GET", "/api/documents/back.hula")
+        self.assertEqual([(e["label"], e["kind"]) for e in back["entities"]], [(added["label"], "curve")])
+        self.assertEqual(back["revision"], added["revision"])
+        history = self.call("GET", "/api/documents/back.hula/history")["history"]
+        self.assertEqual([h["name"] for h in history], ["add curve"])
 
     # checks add, get, patch move (continue folds into one undo step), undo, redo, history and delete
     def test_entities_undo_redo(self):

@@ -44,7 +44,22 @@ Json change_set_to_json(const oli::ChangeSet& c) {
 
 OpenDocument::OpenDocument(std::string name, oli::Document document)
     : name_(std::move(name)), document_(std::move(document)) {
-  document_.observe([events = events_](const oli::ChangeSet& c) { events->append("change", change_set_to_json(c)); });
+  document_->observe([events = events_](const oli::ChangeSet& c) { events->append("change", change_set_to_json(c)); });
+}
+
+void OpenDocument::throw_if_closed() const {
+  if (!document_)
+    throw Error(Errc::InvalidArgument,
+                "document '" + name_ + "' was " + closed_why_ + " while in use: nothing was stored in it",
+                ErrorWhere{.field = "document"});
+}
+
+void OpenDocument::close(std::string_view why) {
+  std::unique_lock lock(mutex_);
+  if (!document_) return;
+  document_.reset();
+  closed_why_ = why;
+  events_->close();
 }
 
 DocumentRegistry::DocumentRegistry(std::filesystem::path workspace) : workspace_(std::move(workspace)) {}
@@ -101,20 +116,17 @@ std::shared_ptr<OpenDocument> DocumentRegistry::get(const std::string& name) {
 
 std::filesystem::path DocumentRegistry::trash(const std::string& name) {
   const std::filesystem::path path = document_path(workspace_, name);
-  std::shared_ptr<OpenDocument> doc;
   std::lock_guard lock(mutex_);
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))
     throw HttpError(404, "NotFound", "no document '" + name + "' in the workspace");
   if (const auto it = open_.find(name); it != open_.end()) {
-    doc = it->second;
+    // Closed before the file moves: a request or job still holding the document (a study between its
+    // compute and its commit) can no longer write into the trashed file, and SQLite has folded its
+    // WAL back into the file.
+    it->second->close("deleted");
     open_.erase(it);
-    doc->events()->close();
   }
-  // Closing: the registry held the last long-lived reference; a request still using the document
-  // keeps it alive until it returns, and the file is moved only after, so SQLite's WAL and SHM files
-  // move with it once the document is closed.
-  doc.reset();
   const std::filesystem::path dir = workspace_ / ".trash";
   std::filesystem::create_directories(dir, ec);
   if (ec) throw Error(Errc::IoError, "cannot create the trash folder '" + dir.string() + "': " + ec.message());
@@ -133,7 +145,7 @@ std::filesystem::path DocumentRegistry::trash(const std::string& name) {
 
 void DocumentRegistry::close_all() {
   std::lock_guard lock(mutex_);
-  for (auto& [name, doc] : open_) doc->events()->close();
+  for (auto& [name, doc] : open_) doc->close("closed");
   open_.clear();
 }
 

@@ -7,6 +7,10 @@
 // change, and a long analysis never blocks an edit. Every committed change
 // set is appended to the document's event log (SSE of
 // /api/documents/{name}/events), so every client sees every change.
+// Deleting (trash) or closing a document closes it under the exclusive lock:
+// a request or job still holding it (a study job between its compute and its
+// commit) then fails with an error naming the document, and nothing reaches
+// the file, which is closed before it moves to the trash.
 #pragma once
 
 #include <filesystem>
@@ -14,8 +18,11 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <shared_mutex>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "hula/oli/document.hpp"
@@ -37,24 +44,37 @@ class OpenDocument {
   [[nodiscard]] std::shared_ptr<EventLog> events() const noexcept { return events_; }
 
   /// Runs `read` under the shared lock.
+  /// @throws hula::Error(Errc::InvalidArgument) naming the document once it was closed
   template <class F>
   auto read(F&& read) const {
     std::shared_lock lock(mutex_);
-    return read(document_);
+    throw_if_closed();
+    return read(std::as_const(*document_));
   }
 
   /// Runs `write` (a transaction, undo or redo) under the exclusive lock; the change set of a
   /// committed outcome reaches the event log through the document's observer.
+  /// @throws hula::Error(Errc::InvalidArgument) naming the document once it was closed (nothing written)
   template <class F>
   auto write(F&& write) {
     std::unique_lock lock(mutex_);
-    return write(document_);
+    throw_if_closed();
+    return write(*document_);
   }
 
+  /// Closes the document once the reader or writer holding it is done: its file is closed (SQLite
+  /// folds its WAL back in), and every later read or write throws, saying the document was `why`
+  /// ("deleted", "closed"). Idempotent.
+  void close(std::string_view why);
+
  private:
+  // The error of a closed document (called under mutex_).
+  void throw_if_closed() const;
+
   std::string name_;
   mutable std::shared_mutex mutex_;
-  oli::Document document_;
+  std::optional<oli::Document> document_;
+  std::string closed_why_{};
   std::shared_ptr<EventLog> events_ = std::make_shared<EventLog>();
 };
 
