@@ -14,6 +14,7 @@
 #include <sstream>
 #include <string>
 
+#include "hula/testing/process_json.hpp"
 #include "hula/testing/run_process.hpp"
 #include "hula/testing/temp_dir.hpp"
 
@@ -43,8 +44,7 @@ constexpr const char* kLine = R"J({"kind": "bezier", "control_points": [[0, 0, 0
 TEST(AnalyseCli, HelixShapeAndValues) {
   const testing::TempDir dir;
   const ProcessResult r = hula({"analyse", write(dir, "helix.json", kHelix), "--at", "0,1,2.5"});
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const json j = json::parse(r.out);
+  const json j = testing::stdout_json(r);
   ASSERT_EQ(j.size(), 1U);
   ASSERT_EQ(j["points"].size(), 3U);
   for (const json& p : j["points"]) {
@@ -65,8 +65,7 @@ TEST(AnalyseCli, HelixShapeAndValues) {
 TEST(AnalyseCli, NullWhereUndefined) {
   const testing::TempDir dir;
   const ProcessResult r = hula({"analyse", write(dir, "line.json", kLine), "--samples", "3"});
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const json j = json::parse(r.out);
+  const json j = testing::stdout_json(r);
   ASSERT_EQ(j["points"].size(), 3U);
   for (const json& p : j["points"]) {
     EXPECT_TRUE(p["N"].is_null());
@@ -84,8 +83,7 @@ TEST(AnalyseCli, NullWhereUndefined) {
 TEST(AnalyseCli, ByArcLength) {
   const testing::TempDir dir;
   const ProcessResult r = hula({"analyse", write(dir, "helix.json", kHelix), "--samples", "5", "--by", "arclength"});
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const json j = json::parse(r.out);
+  const json j = testing::stdout_json(r);
   const double L = std::sqrt(4.25) * 4 * M_PI;
   for (std::size_t i = 0; i < 5; ++i) {
     EXPECT_NEAR(j["points"][i]["s"].get<double>(), L * static_cast<double>(i) / 4, 1e-9);
@@ -102,8 +100,7 @@ TEST(AnalyseCli, Features) {
       "control_points": [[-1, 0], [-0.6666666666666666, 0.6666666666666666], [-0.3333333333333333, 0.3333333333333333],
                          [0.3333333333333333, -0.3333333333333333], [0.6666666666666666, -0.6666666666666666], [1, 0]]})J");
   const ProcessResult r = hula({"analyse", f, "--samples", "2", "--features"});
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const json j = json::parse(r.out);
+  const json j = testing::stdout_json(r);
   ASSERT_TRUE(j.contains("features"));
   const json& ft = j["features"];
   ASSERT_EQ(ft["inflections"].size(), 1U);
@@ -136,8 +133,7 @@ TEST(AnalyseCli, SvgFiles) {
   const testing::TempDir dir;
   const ProcessResult r =
       hula({"analyse", write(dir, "helix.json", kHelix), "--samples", "2", "--svg", (dir.path() / "fig").string()});
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(json::parse(r.out)["points"].size(), 2U);
+  ASSERT_EQ(testing::stdout_json(r)["points"].size(), 2U);
   for (const char* name : {"curve.svg", "kappa.svg", "tau.svg"}) {
     std::ifstream in(dir.path() / "fig" / name);
     std::ostringstream buffer;
@@ -171,8 +167,7 @@ TEST(AnalyseCli, FinsOfEveryKindWithScaleAndDensity) {
   const testing::TempDir dir;
   const ProcessResult r = hula({"analyse", write(dir, "helix.json", kHelix), "--samples", "2", "--fins",
                                 "normal,bishop", "--fin-scale", "0.5", "--fin-density", "5"});
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const json fins = json::parse(r.out)["fins"];
+  const json fins = testing::stdout_json(r)["fins"];
   ASSERT_EQ(fins.size(), 3U);
   EXPECT_EQ(fins[0]["kind"], "normal");
   EXPECT_EQ(fins[1]["kind"], "bishop-u");
@@ -186,7 +181,8 @@ TEST(AnalyseCli, FinsOfEveryKindWithScaleAndDensity) {
   const ProcessResult bad =
       hula({"analyse", write(dir, "h.json", kHelix), "--samples", "2", "--fins", "curvature,tosion"});
   EXPECT_EQ(bad.exit_code, 3);
-  EXPECT_NE(bad.err.find("--fins[1] = 'tosion'"), std::string::npos) << bad.err;
+  EXPECT_NE(testing::stderr_error(bad)["message"].get<std::string>().find("--fins[1] = 'tosion'"), std::string::npos)
+      << bad.err;
 }
 
 // checks --fins combescure against the helix closed form Q − P = s (τ/κ T + B) = (0, 0, s √(a² + b²)/a)
@@ -195,8 +191,7 @@ TEST(AnalyseCli, CombescureFinsOfTheHelix) {
   const testing::TempDir dir;
   const ProcessResult r = hula({"analyse", write(dir, "helix.json", kHelix), "--samples", "2", "--fins", "combescure",
                                 "--fin-scale", "0.5", "--fin-density", "7"});
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const json fins = json::parse(r.out)["fins"];
+  const json fins = testing::stdout_json(r)["fins"];
   ASSERT_EQ(fins.size(), 1U);
   EXPECT_EQ(fins[0]["kind"], "combescure");
   ASSERT_EQ(fins[0]["tip"].size(), 7U);
@@ -240,9 +235,9 @@ TEST(AnalyseCli, ExitCodes) {
   EXPECT_EQ(hula({"analyse", f, "--by", "speed", "--samples", "3"}).exit_code, 2);
   const ProcessResult out = hula({"analyse", f, "--at", "0,20"});
   EXPECT_EQ(out.exit_code, 3);
-  const json e = json::parse(out.err);
-  EXPECT_EQ(e["error"]["code"], "OutOfDomain");
-  EXPECT_EQ(e["error"]["where"]["index"], 1);
+  const json e = testing::stderr_error(out);
+  EXPECT_EQ(e["code"], "OutOfDomain");
+  EXPECT_EQ(e["where"]["index"], 1);
   EXPECT_EQ(hula({"analyse", (dir.path() / "missing.json").string(), "--samples", "2"}).exit_code, 3);
   EXPECT_EQ(hula({"analyse", f}).exit_code, 3);
 }

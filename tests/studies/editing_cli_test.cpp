@@ -17,6 +17,7 @@
 #include <string>
 
 #include "hula/io/json_curve.hpp"
+#include "hula/testing/process_json.hpp"
 #include "hula/testing/run_process.hpp"
 #include "hula/testing/temp_dir.hpp"
 
@@ -37,11 +38,7 @@ using testing::ProcessResult;
 ProcessResult hula(const std::vector<std::string>& args) { return testing::run_process(HULA_CLI_PATH, args); }
 std::string example(const std::string& name) { return (fs::path(HULA_EXAMPLES_DIR) / name).string(); }
 
-json run_ok(const std::vector<std::string>& args) {
-  const ProcessResult r = hula(args);
-  EXPECT_EQ(r.exit_code, 0) << r.err;
-  return json::parse(r.out);
-}
+json run_ok(const std::vector<std::string>& args) { return testing::stdout_json(hula(args)); }
 
 std::string write(const fs::path& dir, const std::string& name, const std::string& text) {
   const fs::path p = dir / name;
@@ -57,9 +54,9 @@ void expect_bad(const std::string& command, const std::string& text, const std::
   const fs::path svg = dir.path() / "figures";
   const ProcessResult r = hula({command, file, "--svg", svg.string()});
   EXPECT_EQ(r.exit_code, 3) << r.out << r.err;
-  const json e = json::parse(r.err);
-  EXPECT_EQ(e["error"]["code"], code) << r.err;
-  EXPECT_NE(e["error"]["message"].get<std::string>().find(member), std::string::npos) << r.err;
+  const json e = testing::stderr_error(r);
+  EXPECT_EQ(e["code"], code) << r.err;
+  EXPECT_NE(e["message"].get<std::string>().find(member), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(svg)) << "figures written before the error";
 }
 
@@ -101,8 +98,7 @@ TEST(EditingCli, EditProjectionChangesTwoComponents) {
   const fs::path log = dir.path() / "run.json";
   const ProcessResult r = hula(
       {"edit-projection", example("edit-projection.json"), "--seed", "7", "--threads", "2", "--log", log.string()});
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const json out = json::parse(r.out);
+  const json out = testing::stdout_json(r);
   EXPECT_LT(out["max_deviation"].get<double>(), 1e-12);
   EXPECT_LT(out["max_change"][1].get<double>(), 1e-12);
   EXPECT_GT(out["max_change"][0].get<double>(), 0.1);
