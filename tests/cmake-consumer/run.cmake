@@ -1,9 +1,9 @@
 # SPDX-License-Identifier: MIT
 # ctest driver of the consumer test: installs the build tree into a fresh
 # prefix, configures, builds and runs tests/cmake-consumer against it with
-# find_package(HulaHoops), then compiles the same program with the flags of
+# find_package(HulaHoops) (and the oli kernel consumer when WITH_OCCT), then compiles the same program with the flags of
 # hulahoops.pc (pkg-config) and runs it too.
-#   cmake -DBUILD_DIR=... -DSOURCE_DIR=... -DWORK_DIR=... -DCXX=... -P run.cmake
+#   cmake -DBUILD_DIR=... -DSOURCE_DIR=... -DWORK_DIR=... -DCXX=... [-DWITH_OCCT=ON] -P run.cmake
 foreach(var BUILD_DIR SOURCE_DIR WORK_DIR CXX)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "run.cmake needs -D${var}=...")
@@ -33,6 +33,9 @@ run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/cmake-consumer -B ${WORK_DIR}/build 
     -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_CXX_COMPILER=${CXX} -DCMAKE_BUILD_TYPE=Release)
 run(${CMAKE_COMMAND} --build ${WORK_DIR}/build)
 run(${WORK_DIR}/build/consumer)
+if(WITH_OCCT)
+  run(${WORK_DIR}/build/consumer_kernel)
+endif()
 
 # pkg-config route (the .pc finds its prefix from its own directory: relocatable).
 find_program(PKG_CONFIG pkg-config REQUIRED)
