@@ -50,10 +50,11 @@ std::array<double, 2> integrate_phase(double a, double b, double c, double h) {
   return {0.5 * w * sx, 0.5 * w * sy};
 }
 
-// The three integrals of the G1 equation on τ ∈ [0, 1] with φ(τ) = A τ² + (δ − A) τ + φ0:
-// X = ∫ cos φ, Y = ∫ sin φ, D = ∫ (τ² − τ) cos φ = dY/dA.
+// The integrals of the G1 equation on τ ∈ [0, 1] with φ(τ) = A τ² + (δ − A) τ + φ0 and w = τ² − τ = ∂φ/∂A:
+// X = ∫ cos φ, Y = ∫ sin φ and their A-derivatives Y′ = ∫ w cos φ, Y″ = −∫ w² sin φ, X′ = −∫ w sin φ,
+// X″ = −∫ w² cos φ (the same cosines and sines, so the derivatives cost a few multiplications).
 struct G1Integrals {
-  double x = 0.0, y = 0.0, d = 0.0;
+  double x = 0.0, y = 0.0, dy = 0.0, d2y = 0.0, dx = 0.0, d2x = 0.0;
 };
 
 G1Integrals g1_integrals(double big_a, double delta, double phi0) {
@@ -67,16 +68,24 @@ G1Integrals g1_integrals(double big_a, double delta, double phi0) {
       for (const double sign : {-1.0, 1.0}) {
         const double t = mid + sign * kNodes[k] * 0.5 * w;
         const double ph = phi0 + t * (b + big_a * t);
-        const double cs = std::cos(ph), sn = std::sin(ph);
-        r.x += kWeights[k] * cs;
-        r.y += kWeights[k] * sn;
-        r.d += kWeights[k] * (t * t - t) * cs;
+        const double cs = kWeights[k] * std::cos(ph), sn = kWeights[k] * std::sin(ph);
+        const double dw = t * t - t;
+        r.x += cs;
+        r.y += sn;
+        r.dy += dw * cs;
+        r.dx -= dw * sn;
+        r.d2y -= dw * dw * sn;
+        r.d2x -= dw * dw * cs;
       }
     }
   }
-  r.x *= 0.5 * w;
-  r.y *= 0.5 * w;
-  r.d *= 0.5 * w;
+  const double scale = 0.5 * w;
+  r.x *= scale;
+  r.y *= scale;
+  r.dy *= scale;
+  r.dx *= scale;
+  r.d2y *= scale;
+  r.d2x *= scale;
   return r;
 }
 
@@ -303,19 +312,23 @@ ClothoidG1Result fit_clothoid_g1(const Vec3& p0, double theta0, const Vec3& p1, 
   const double phi = std::atan2(dy, dx);
   const double phi0 = reduce_angle(theta0 - phi), phi1 = reduce_angle(theta1 - phi);
   const double delta = phi1 - phi0;
-  // Bertolazzi–Frego's guess, then Newton on g(A) = Y(A) (their proof: the relevant root is the unique
-  // one in the bracket their guess starts in, and g is monotone enough there for plain Newton).
+  // Bertolazzi–Frego's guess, then Halley's method on g(A) = Y(A) (their proof: the relevant root is
+  // the unique one in the bracket their guess starts in, where g is monotone enough for Newton; Halley's
+  // cubic correction falls back to the Newton step where it would more than halve or double it).
   double big_a = 3.0 * (phi0 + phi1);
   int it = 0;
   bool converged = false;
   G1Integrals q;
+  double step = 0.0;
   while (it < options.max_iterations) {
     ++it;
     q = g1_integrals(big_a, delta, phi0);
-    if (!(q.d != 0.0) || !std::isfinite(q.d)) break;
-    const double step = q.y / q.d;
+    if (!(q.dy != 0.0) || !std::isfinite(q.dy)) break;
+    const double newton = q.y / q.dy, c = 0.5 * newton * q.d2y / q.dy;
+    step = std::abs(c) <= 0.5 ? newton / (1.0 - c) : newton;
     big_a -= step;
-    if (std::abs(step) <= options.tolerance * std::max(1.0, std::abs(big_a))) {
+    // Cubic convergence: the error left after a step of size h is of order h³.
+    if (std::abs(step * step * step) <= options.tolerance * std::max(1.0, std::abs(big_a))) {
       converged = true;
       break;
     }
@@ -325,8 +338,10 @@ ClothoidG1Result fit_clothoid_g1(const Vec3& p0, double theta0, const Vec3& p1, 
                 "G1 clothoid: Newton did not converge in " + std::to_string(it) + " iterations (phi0 = " +
                     format_number(phi0) + ", phi1 = " + format_number(phi1) + ", residual " + format_number(q.y) + ")",
                 ErrorWhere{.field = "theta1"});
-  // The last step changed A by at most tolerance·|A|: X from the last evaluation is exact to that order.
-  const double length = r / q.x;
+  // X at the final A from the last evaluation by Taylor to second order (the error is of order step³, below
+  // the tolerance), instead of one more evaluation.
+  const double x_end = q.x - step * q.dx + 0.5 * step * step * q.d2x;
+  const double length = r / x_end;
   ClothoidG1Result result;
   result.segment.start = {p0.x, p0.y, p0.z};
   result.segment.theta0 = theta0;

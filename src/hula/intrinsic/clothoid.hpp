@@ -4,7 +4,7 @@
 // Fresnel integrals behind them, and G1 Hermite interpolation by one clothoid
 // (Bertolazzi & Frego, "G1 fitting with clothoids", Math. Meth. Appl. Sci.
 // 2015, the reference algorithm: the three G1 equations reduced to one
-// equation in one unknown, solved by Newton from their guess A = 3(φ0 + φ1)),
+// equation in one unknown, solved from their guess A = 3(φ0 + φ1) by Newton-type iteration),
 // and G2 Hermite interpolation by three clothoids (Bertolazzi & Frego, "On the
 // G2 Hermite interpolation problem with clothoids", J. Comput. Appl. Math. 341
 // (2018) 99–116: outer arcs of fixed length, the reduced 2×2 system in the
@@ -78,10 +78,10 @@ struct ClothoidSegment {
 
 /// Options of fit_clothoid_g1().
 struct ClothoidG1Options {
-  /// Newton stops when the step in A is below this times max(1, |A|). Default 1e-14; valid
-  /// [1e-16, 1e-6].
+  /// The iteration stops when the cube of the last step in A (the order of the error Halley's method
+  /// leaves) is below this times max(1, |A|). Default 1e-14; valid [1e-16, 1e-6].
   double tolerance = 1e-14;
-  /// Largest number of Newton iterations. Default 20; valid 1 … 1000.
+  /// Largest number of iterations. Default 20; valid 1 … 1000.
   int max_iterations = 20;
   /// @throws hula::Error(Errc::InvalidOption) naming the field, its value and the valid range
   void validate() const;
@@ -91,7 +91,7 @@ struct ClothoidG1Options {
 struct ClothoidG1Result {
   /// The clothoid from (p0, θ0) to (p1, θ1).
   ClothoidSegment segment{};
-  /// Newton iterations used.
+  /// Iterations (evaluations of the integrals) used.
   int iterations = 0;
 };
 
@@ -103,9 +103,12 @@ struct ClothoidG1Result {
 /// φ1 = θ1 − φ reduced to (−π, π] and δ = φ1 − φ0, the angle on τ = s/L ∈ [0, 1] is
 /// φ0 + (δ − A) τ + A τ², and the end point condition reduces to
 ///     g(A) = ∫₀¹ sin(A τ² + (δ − A) τ + φ0) dτ = 0,
-/// solved by Newton from A = 3(φ0 + φ1) with g′(A) = ∫₀¹ (τ² − τ) cos(…) dτ; then
-/// L = r / ∫₀¹ cos(…) dτ, κ0 = (δ − A) / L, κ′ = 2A / L². The integrals are 10-point
-/// Gauss–Legendre sums (on panels of at most 4 rad of turning), exact to rounding.
+/// solved from their guess A = 3(φ0 + φ1) by Halley's method (g′(A) = ∫₀¹ (τ² − τ) cos(…) dτ,
+/// g″(A) = −∫₀¹ (τ² − τ)² sin(…) dτ; the Newton step where Halley's correction is large), stopping
+/// once the last step cubed is below the tolerance; then L = r / ∫₀¹ cos(…) dτ (its value at the
+/// final A by a second-order Taylor step from the last evaluation), κ0 = (δ − A) / L, κ′ = 2A / L².
+/// The integrals are 10-point Gauss–Legendre sums (on panels of at most 4 rad of turning), exact to
+/// rounding; each iteration evaluates them once, with the derivatives from the same cosines and sines.
 ///
 /// Example:
 /// ```
@@ -115,14 +118,14 @@ struct ClothoidG1Result {
 /// @param p0 start point (z ignored); @param theta0 start tangent angle, radians
 /// @param p1 end point (z ignored); @param theta1 end tangent angle, radians (any multiple of 2π
 ///   away from the intended one: only the direction counts)
-/// @param options Newton tolerance and budget
+/// @param options iteration tolerance and budget
 /// @returns the segment (start = p0, theta0 as given) and the iteration count
 /// @throws hula::Error(Errc::NonFiniteInput) naming "p0", "p1", "theta0" or "theta1"
 /// @throws hula::Error(Errc::CoincidentPoints) naming "p1" when p1 = p0 (no direction)
 /// @throws hula::Error(Errc::InvalidOption) from options.validate()
-/// @throws hula::Error(Errc::NumericalFailure) if Newton does not converge (never seen on the
+/// @throws hula::Error(Errc::NumericalFailure) if the iteration does not converge (never seen on the
 ///   seeded property sweep over all φ0, φ1 in (−π, π])
-/// Complexity: O(iterations × panels × 10) sine/cosine pairs; typically 2–4 iterations, 1 panel.
+/// Complexity: O(iterations × panels × 10) sine/cosine pairs; typically 2–3 iterations, 1 panel.
 [[nodiscard]] ClothoidG1Result fit_clothoid_g1(const Vec3& p0, double theta0, const Vec3& p1, double theta1,
                                                const ClothoidG1Options& options = {});
 
