@@ -53,9 +53,9 @@ TEST(ClothoidCli, G1QuarterCircle) {
 // checks: G2 on Bertolazzi–Frego's test_G2_1 data prints three segments whose printed end values equal the next
 // segment's start values and the last one's the request (angle modulo 2π), to 1e-10, and lengths that sum.
 TEST(ClothoidCli, G2JoinsAndEnd) {
-  const ProcessResult r = hula({"clothoid", "--start-point", "-2,3", "--start-angle", "1.0471975511965976",
-                                "--start-curvature", "-0.2", "--end-point", "3,2", "--end-angle",
-                                "-0.7853981633974483", "--end-curvature", "0.5"});
+  const ProcessResult r =
+      hula({"clothoid", "--start-point", "-2,3", "--start-angle", "1.0471975511965976", "--start-curvature", "-0.2",
+            "--end-point", "3,2", "--end-angle", "-0.7853981633974483", "--end-curvature", "0.5"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const json j = json::parse(r.out);
   EXPECT_EQ(j["kind"], "g2");
@@ -92,9 +92,9 @@ TEST(ClothoidCli, ErrorsNameTheInput) {
     a.insert(a.end(), extra.begin(), extra.end());
     return a;
   };
-  for (const Case& c : {Case{with({"--end-point", "0,0"}), 3, "p1"},
-                        Case{with({"--end-point", "1,0,0"}), 3, "end-point"},
-                        Case{with({"--end-point", "1,0", "--at", "0,99"}), 3, "at"}}) {
+  for (const Case& c :
+       {Case{with({"--end-point", "0,0"}), 3, "p1"}, Case{with({"--end-point", "1,0,0"}), 3, "end-point"},
+        Case{with({"--end-point", "1,0", "--at", "0,99"}), 3, "at"}}) {
     const ProcessResult r = hula(c.args);
     EXPECT_EQ(r.exit_code, c.code) << r.err;
     EXPECT_EQ(testing::stderr_error(r)["where"]["field"], c.field) << r.err;

@@ -16,9 +16,7 @@ namespace {
 
 // A double in [lo, hi] at a resolution of (hi − lo) / 10^6, uniform whatever the test's size (inRange alone
 // narrows its range at small sizes, which would crowd the data at lo).
-double in(double lo, double hi) {
-  return lo + (hi - lo) * *rc::gen::resize(100, rc::gen::inRange(0, 1000001)) / 1e6;
-}
+double in(double lo, double hi) { return lo + (hi - lo) * *rc::gen::resize(100, rc::gen::inRange(0, 1000001)) / 1e6; }
 
 // checks: admissible data — chord 0.1 … 10 in any direction from anywhere in [−10, 10]², end angles within
 // 0.99π of the chord (either side), curvatures |κ| · chord ≤ 10 — give three arcs of positive length whose

@@ -4,6 +4,8 @@
 // as well, the G2 spline of three clothoids (Bertolazzi–Frego 2018). JSON out:
 // {"kind": "g1" | "g2", "segments": [...], "length", "iterations"} (io::clothoid_spline_to_json),
 // and with --at the points, angles and curvatures at given arc lengths along the whole result.
+#include "hula/intrinsic/clothoid.hpp"
+
 #include <limits>
 #include <memory>
 #include <optional>
@@ -12,7 +14,6 @@
 
 #include "commands/common.hpp"
 #include "hula/core/error.hpp"
-#include "hula/intrinsic/clothoid.hpp"
 #include "hula/io/clothoid_json.hpp"
 
 namespace hula::cli {
