@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
-// Benchmark of G1 Hermite clothoid interpolation (Bertolazzi–Frego, intrinsic/clothoid.hpp; issue 14 item 6
-// target: at most 1 µs per segment). A ring of 1024 seeded G1 problems (end angles relative to the chord
-// uniform in (−π/2, π/2), chords of length 0.5–2 in any direction) is solved round-robin; every problem's
-// end point is checked once outside the timed loop (the segment's quadrature end within 1e-12 of the target).
+// Benchmark of G1 and G2 Hermite clothoid interpolation (Bertolazzi–Frego, intrinsic/clothoid.hpp; issue 14
+// item 6 target: at most 1 µs per G1 segment). A ring of 1024 seeded problems (end angles relative to the
+// chord uniform in (−π/2, π/2), chords of length 0.5–2 in any direction, for G2 end curvatures with
+// |κ| · chord ≤ 5) is solved round-robin; every problem's end point is checked once outside the timed loop
+// (the last segment's quadrature end within 1e-12 of the target).
 //
 // Run: cmake --preset bench && cmake --build --preset bench --target bench_intrinsic_clothoid
 //      ./build/bench/bench/intrinsic/bench_intrinsic_clothoid
@@ -23,7 +24,7 @@ using namespace hula::intrinsic;
 
 struct Problem {
   Vec3 p0, p1;
-  double theta0 = 0.0, theta1 = 0.0;
+  double theta0 = 0.0, theta1 = 0.0, kappa0 = 0.0, kappa1 = 0.0;
 };
 
 std::vector<Problem> problems() {
@@ -36,9 +37,15 @@ std::vector<Problem> problems() {
     p.p1 = p.p0 + Vec3{r * std::cos(dir), r * std::sin(dir), 0.0};
     p.theta0 = dir + std::numbers::pi * (u(rng) - 0.5);
     p.theta1 = dir + std::numbers::pi * (u(rng) - 0.5);
+    p.kappa0 = 10.0 * (u(rng) - 0.5) / r;
+    p.kappa1 = 10.0 * (u(rng) - 0.5) / r;
     const ClothoidSegment s = fit_clothoid_g1(p.p0, p.theta0, p.p1, p.theta1).segment;
     if (distance(s.point(s.length), p.p1) > 1e-12 * std::max(1.0, s.length))
       throw std::runtime_error("clothoid bench: a G1 fit misses its end point");
+    const ClothoidG2Result g2 = fit_clothoid_g2(p.p0, p.theta0, p.kappa0, p.p1, p.theta1, p.kappa1);
+    const ClothoidSegment& last = g2.segments[2];
+    if (distance(last.point(last.length), p.p1) > 1e-12 * std::max(1.0, g2.length()))
+      throw std::runtime_error("clothoid bench: a G2 fit misses its end point");
   }
   return out;
 }
@@ -53,6 +60,18 @@ void BM_intrinsic_clothoid_g1_fit(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
 }
 BENCHMARK(BM_intrinsic_clothoid_g1_fit);
+
+// One G2 fit: the G1 start, then Newton on the reduced 2×2 system (about 4 iterations, 3 arcs each).
+void BM_intrinsic_clothoid_g2_fit(benchmark::State& state) {
+  const std::vector<Problem> ring = problems();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const Problem& p = ring[i++ & 1023];
+    benchmark::DoNotOptimize(fit_clothoid_g2(p.p0, p.theta0, p.kappa0, p.p1, p.theta1, p.kappa1));
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
+}
+BENCHMARK(BM_intrinsic_clothoid_g2_fit);
 
 void BM_intrinsic_fresnel(benchmark::State& state) {
   double x = 0.0;

@@ -2,7 +2,8 @@
 // Clothoid segments, Fresnel integrals and G1 Hermite clothoid interpolation (intrinsic/clothoid.hpp)
 // against independent references: the Fresnel integrals of mpmath 1.3.0 at 40 digits, the closed form
 // of a clothoid through C and S, the Euler spiral (C(s), S(s)), lines and circular arcs, the exact-angle
-// natural-equation integrator, and Bertolazzi–Frego's published test configurations.
+// natural-equation integrator, and Bertolazzi–Frego's published test configurations; G2 Hermite
+// interpolation by three clothoids against the same closed forms, known clothoids and circles.
 #include "hula/intrinsic/clothoid.hpp"
 
 #include <gtest/gtest.h>
@@ -14,6 +15,7 @@
 #include <numbers>
 #include <random>
 
+#include "hula/testing/clothoid_check.hpp"
 #include "hula/testing/expect_error.hpp"
 
 namespace hula::intrinsic {
@@ -171,6 +173,80 @@ TEST(ClothoidG1, RefusesBadInput) {
   ClothoidG1Options o;
   o.max_iterations = 0;
   HULA_EXPECT_ERROR(fit_clothoid_g1({0, 0, 0}, 0.0, {1, 0, 0}, 0.0, o), Errc::InvalidOption, "max_iterations");
+}
+
+// checks: Bertolazzi–Frego's G2 test data (Clothoids toolbox test_G2_1.m: (−2, 3, π/3, κ −0.2) → (3, 2, −π/4,
+// κ 0.5); testG2.m: (−1, 0, 0.9π, κ 0.2) → (1, 0, −1.001π, κ 0.2)) and an S-shaped case give three arcs of
+// positive length whose joins are G2 and whose end meets p1, θ1, κ1, all within 1e-10 by closed-form Fresnel.
+TEST(ClothoidG2, PublishedDataJoinG2AndMeetTheEnd) {
+  struct Case {
+    Vec3 p0;
+    double t0, k0;
+    Vec3 p1;
+    double t1, k1;
+  };
+  for (const Case& c : {Case{{-2, 3, 0}, kPi / 3, -0.2, {3, 2, 0}, -kPi / 4, 0.5},
+                        Case{{-1, 0, 0}, 0.9 * kPi, 0.2, {1, 0, 0}, -1.001 * kPi, 0.2},
+                        Case{{0, 0, 0}, 0.0, 2.0, {4, 1, 0}, 0.0, -3.0}}) {
+    const ClothoidG2Result r = fit_clothoid_g2(c.p0, c.t0, c.k0, c.p1, c.t1, c.k1);
+    for (const ClothoidSegment& s : r.segments) EXPECT_GT(s.length, 0.0);
+    EXPECT_LT(testing::g2_violation(r, c.p0, c.t0, c.k0, c.p1, c.t1, c.k1), 1e-10) << c.p0.x;
+    EXPECT_LE(r.iterations, 10);
+  }
+}
+
+// checks: end data sampled from one known clothoid (p, θ, κ at s = a and s = b, with and without an inflection)
+// give that clothoid back: the same total length b − a and the same κ(s) along it (at 41 arc lengths across
+// the three arcs), to 1e-10.
+TEST(ClothoidG2, ReproducesASingleClothoid) {
+  for (const ClothoidSegment& c :
+       {ClothoidSegment{.start = {1, -2, 0}, .theta0 = 0.7, .kappa0 = -0.4, .dkappa = 0.9, .length = 3.0},
+        ClothoidSegment{.start = {0, 0, 0}, .theta0 = 0.0, .kappa0 = 0.5, .dkappa = -0.3, .length = 2.5},
+        ClothoidSegment{.start = {5, 5, 0}, .theta0 = -2.0, .kappa0 = 0.0, .dkappa = kPi, .length = 1.0}}) {
+    const double a = 0.1 * c.length, b = 0.9 * c.length;
+    const ClothoidG2Result r =
+        fit_clothoid_g2(c.point(a), c.angle(a), c.curvature(a), c.point(b), c.angle(b), c.curvature(b));
+    EXPECT_NEAR(r.length(), b - a, 1e-10);
+    for (int i = 0; i <= 40; ++i) {
+      double s = (b - a) * i / 40.0;
+      const double at = a + s;
+      std::size_t j = 0;
+      while (j < 2 && s > r.segments[j].length) s -= r.segments[j++].length;
+      EXPECT_NEAR(r.segments[j].curvature(s), c.curvature(at), 1e-10) << i;
+    }
+  }
+}
+
+// checks: a circular arc (radius 2, centre (1, −1), from polar angle −0.3 to 2.2, κ0 = κ1 = 1/2) comes out with
+// constant curvature 1/2 (κ′ = 0 on every arc, to 1e-12) and the arc's length 2 × 2.5, to 1e-10.
+TEST(ClothoidG2, CircularArcHasConstantCurvature) {
+  const double radius = 2.0, a0 = -0.3, a1 = 2.2;
+  const Vec3 centre{1, -1, 0};
+  const auto on = [&](double a) { return centre + radius * Vec3{std::cos(a), std::sin(a), 0.0}; };
+  const ClothoidG2Result r = fit_clothoid_g2(on(a0), a0 + kPi / 2, 1.0 / radius, on(a1), a1 + kPi / 2, 1.0 / radius);
+  for (const ClothoidSegment& s : r.segments) {
+    EXPECT_NEAR(s.kappa0, 0.5, 1e-12);
+    EXPECT_NEAR(s.dkappa, 0.0, 1e-12);
+  }
+  EXPECT_NEAR(r.length(), radius * (a1 - a0), 1e-10);
+  EXPECT_LT(testing::g2_violation(r, on(a0), a0 + kPi / 2, 0.5, on(a1), a1 + kPi / 2, 0.5), 1e-10);
+}
+
+// checks: bad input is refused, naming it: coincident points, NaN curvature and angle, options out of range,
+// and (with a one-iteration budget, so that Newton cannot finish) the numerical failure naming the end
+// curvature furthest from the G1 clothoid's.
+TEST(ClothoidG2, RefusesBadInputNamingIt) {
+  HULA_EXPECT_ERROR(fit_clothoid_g2({1, 2, 0}, 0.0, 1.0, {1, 2, 0}, 1.0, 0.0), Errc::CoincidentPoints, "p1");
+  HULA_EXPECT_ERROR(fit_clothoid_g2({0, 0, 0}, 0.0, std::nan(""), {1, 0, 0}, 1.0, 0.0), Errc::NonFiniteInput, "kappa0");
+  HULA_EXPECT_ERROR(fit_clothoid_g2({0, 0, 0}, 0.0, 0.0, {1, 0, 0}, 1.0, std::numeric_limits<double>::infinity()),
+                    Errc::NonFiniteInput, "kappa1");
+  HULA_EXPECT_ERROR(fit_clothoid_g2({0, 0, 0}, 0.0, 0.0, {1, 0, 0}, std::nan(""), 0.0), Errc::NonFiniteInput, "theta1");
+  ClothoidG2Options o;
+  o.tolerance = 0.1;
+  HULA_EXPECT_ERROR(fit_clothoid_g2({0, 0, 0}, 0.0, 0.0, {1, 0, 0}, 0.0, 0.0, o), Errc::InvalidOption, "tolerance");
+  o = {};
+  o.max_iterations = 1;
+  HULA_EXPECT_ERROR(fit_clothoid_g2({0, 0, 0}, 0.0, 0.5, {1, 0, 0}, 1.0, -40.0, o), Errc::NumericalFailure, "kappa1");
 }
 
 }  // namespace

@@ -186,6 +186,8 @@ struct Command {
 [[nodiscard]] Command add_approximate(CLI::App& app);
 /// `hula closest`: nearest points of a curve.
 [[nodiscard]] Command add_closest(CLI::App& app);
+/// `hula clothoid`: G1 / G2 Hermite interpolation by clothoids.
+[[nodiscard]] Command add_clothoid(CLI::App& app);
 /// `hula deviation`: distance between two curves.
 [[nodiscard]] Command add_deviation(CLI::App& app);
 /// `hula continuity`: continuity of the join of two curves.

@@ -4,7 +4,11 @@
 // Fresnel integrals behind them, and G1 Hermite interpolation by one clothoid
 // (Bertolazzi & Frego, "G1 fitting with clothoids", Math. Meth. Appl. Sci.
 // 2015, the reference algorithm: the three G1 equations reduced to one
-// equation in one unknown, solved by Newton from their guess A = 3(φ0 + φ1)).
+// equation in one unknown, solved from their guess A = 3(φ0 + φ1) by Newton-type iteration),
+// and G2 Hermite interpolation by three clothoids (Bertolazzi & Frego, "On the
+// G2 Hermite interpolation problem with clothoids", J. Comput. Appl. Math. 341
+// (2018) 99–116: outer arcs of fixed length, the reduced 2×2 system in the
+// middle arc's length and mid angle solved by Newton from the G1 solution).
 //
 // Notation: a segment starts at (x0, y0) with tangent angle θ0 and curvature
 // κ0, its curvature changes at the rate κ′ = dκ/ds, and it is L long:
@@ -13,6 +17,7 @@
 // (the normalisation of Abramowitz & Stegun 7.3.1–2).
 #pragma once
 
+#include <array>
 #include <string_view>
 
 #include "hula/core/vec.hpp"
@@ -73,10 +78,10 @@ struct ClothoidSegment {
 
 /// Options of fit_clothoid_g1().
 struct ClothoidG1Options {
-  /// Newton stops when the step in A is below this times max(1, |A|). Default 1e-14; valid
-  /// [1e-16, 1e-6].
+  /// The iteration stops when the cube of the last step in A (the order of the error Halley's method
+  /// leaves) is below this times max(1, |A|). Default 1e-14; valid [1e-16, 1e-6].
   double tolerance = 1e-14;
-  /// Largest number of Newton iterations. Default 20; valid 1 … 1000.
+  /// Largest number of iterations. Default 20; valid 1 … 1000.
   int max_iterations = 20;
   /// @throws hula::Error(Errc::InvalidOption) naming the field, its value and the valid range
   void validate() const;
@@ -86,7 +91,7 @@ struct ClothoidG1Options {
 struct ClothoidG1Result {
   /// The clothoid from (p0, θ0) to (p1, θ1).
   ClothoidSegment segment{};
-  /// Newton iterations used.
+  /// Iterations (evaluations of the integrals) used.
   int iterations = 0;
 };
 
@@ -98,9 +103,12 @@ struct ClothoidG1Result {
 /// φ1 = θ1 − φ reduced to (−π, π] and δ = φ1 − φ0, the angle on τ = s/L ∈ [0, 1] is
 /// φ0 + (δ − A) τ + A τ², and the end point condition reduces to
 ///     g(A) = ∫₀¹ sin(A τ² + (δ − A) τ + φ0) dτ = 0,
-/// solved by Newton from A = 3(φ0 + φ1) with g′(A) = ∫₀¹ (τ² − τ) cos(…) dτ; then
-/// L = r / ∫₀¹ cos(…) dτ, κ0 = (δ − A) / L, κ′ = 2A / L². The integrals are 10-point
-/// Gauss–Legendre sums (on panels of at most 4 rad of turning), exact to rounding.
+/// solved from their guess A = 3(φ0 + φ1) by Halley's method (g′(A) = ∫₀¹ (τ² − τ) cos(…) dτ,
+/// g″(A) = −∫₀¹ (τ² − τ)² sin(…) dτ; the Newton step where Halley's correction is large), stopping
+/// once the last step cubed is below the tolerance; then L = r / ∫₀¹ cos(…) dτ (its value at the
+/// final A by a second-order Taylor step from the last evaluation), κ0 = (δ − A) / L, κ′ = 2A / L².
+/// The integrals are 10-point Gauss–Legendre sums (on panels of at most 4 rad of turning), exact to
+/// rounding; each iteration evaluates them once, with the derivatives from the same cosines and sines.
 ///
 /// Example:
 /// ```
@@ -110,15 +118,80 @@ struct ClothoidG1Result {
 /// @param p0 start point (z ignored); @param theta0 start tangent angle, radians
 /// @param p1 end point (z ignored); @param theta1 end tangent angle, radians (any multiple of 2π
 ///   away from the intended one: only the direction counts)
-/// @param options Newton tolerance and budget
+/// @param options iteration tolerance and budget
 /// @returns the segment (start = p0, theta0 as given) and the iteration count
 /// @throws hula::Error(Errc::NonFiniteInput) naming "p0", "p1", "theta0" or "theta1"
 /// @throws hula::Error(Errc::CoincidentPoints) naming "p1" when p1 = p0 (no direction)
 /// @throws hula::Error(Errc::InvalidOption) from options.validate()
-/// @throws hula::Error(Errc::NumericalFailure) if Newton does not converge (never seen on the
+/// @throws hula::Error(Errc::NumericalFailure) if the iteration does not converge (never seen on the
 ///   seeded property sweep over all φ0, φ1 in (−π, π])
-/// Complexity: O(iterations × panels × 10) sine/cosine pairs; typically 2–4 iterations, 1 panel.
+/// Complexity: O(iterations × panels × 10) sine/cosine pairs; typically 2–3 iterations, 1 panel.
 [[nodiscard]] ClothoidG1Result fit_clothoid_g1(const Vec3& p0, double theta0, const Vec3& p1, double theta1,
                                                const ClothoidG1Options& options = {});
+
+/// Options of fit_clothoid_g2().
+struct ClothoidG2Options {
+  /// Newton stops when the end-point residual, relative to the chord |p1 − p0|, is at most this:
+  /// |end of the third arc − p1| ≤ tolerance · |p1 − p0|. Default 1e-13; valid [1e-15, 1e-6].
+  double tolerance = 1e-13;
+  /// Largest number of Newton iterations (each with its own line search). Default 50; valid 1 … 1000.
+  int max_iterations = 50;
+  /// @throws hula::Error(Errc::InvalidOption) naming the field, its value and the valid range
+  void validate() const;
+};
+
+/// Result of fit_clothoid_g2(): three clothoid arcs joined with G2 continuity.
+struct ClothoidG2Result {
+  /// The arcs in order: segments[0] starts at p0 with (θ0, κ0), segments[2] ends at p1 with (θ1, κ1);
+  /// each starts where the one before ends, with its angle and curvature.
+  std::array<ClothoidSegment, 3> segments{};
+  /// Newton iterations used (summed over the restarts with shorter outer arcs, if any).
+  int iterations = 0;
+  /// Total length, the sum of the three arcs' lengths.
+  [[nodiscard]] double length() const noexcept { return segments[0].length + segments[1].length + segments[2].length; }
+};
+
+/// G2 Hermite interpolation by three clothoids (Bertolazzi–Frego 2018): from p0 with tangent angle θ0
+/// and curvature κ0 to p1 with θ1 and κ1, a G2 spline of three clothoid arcs (position, tangent angle
+/// and curvature continuous at the two joins).
+///
+/// Method. In the frame where p0 = (0, 0), p1 = (1, 0) (lengths divided by r = |p1 − p0|, curvatures
+/// multiplied by it, angles φ0, φ1 relative to the chord as in fit_clothoid_g1()), the outer arcs get
+/// fixed lengths s0, s1 and the middle arc, of length sM, is written about its midpoint,
+/// θ(t) = θM + KM t + aM t²/2 for t ∈ [−sM/2, sM/2]. The outer arcs are then determined by their end
+/// data and the middle arc's: arc 0 runs from (φ0, K0) to the middle arc's start curvature KA, so its
+/// angle gain is s0 (K0 + KA)/2, and arc 1 likewise ends at (φ1, K1). Given (sM, θM) the two angle
+/// conditions are linear in (KM, aM) (a 2×2 system, solved in closed form), and the remaining
+/// unknowns solve the end-point condition
+///     F(sM, θM) = ∫arc 0 + ∫middle + ∫arc 1 of (cos θ, sin θ) ds − (1, 0) = 0,
+/// by Newton with the exact Jacobian (moments ∫ tᵏ (cos θ, sin θ), k ≤ 2, by the same Gauss–Legendre
+/// panels as fit_clothoid_g1()) and a backtracking line search on |F| that keeps sM > 0. The start is
+/// the G1 clothoid through (p0, θ0), (p1, θ1) (length L, curvature κG(s)): sM = L − s0 − s1 and θM its
+/// angle at the middle of the middle arc. Outer lengths (our heuristic, after their idea of keeping the
+/// outer arcs close to the G1 guess): s_i = min(L/3, 2 d / |K_i − κG(end i)|) with d = π/8, so that an
+/// outer arc turns at most about d away from the G1 clothoid; when Newton fails, s0 and s1 are halved
+/// (up to 6 times). Data that lie on one clothoid (or one circle) give back that clothoid, split into
+/// thirds: the start is then already the solution.
+///
+/// Example:
+/// ```
+/// ClothoidG2Result r = fit_clothoid_g2({0, 0, 0}, 0.0, 1.0, {1, 1, 0}, std::numbers::pi / 2, 1.0);
+/// // the quarter circle of radius 1 in three arcs of length π/6, κ = 1 and κ′ = 0 on each
+/// ```
+/// @param p0 start point (z ignored, copied to the segments); @param theta0 start tangent angle,
+///   radians; @param kappa0 start curvature (> 0 turns left), 1 / model units
+/// @param p1 end point (z ignored); @param theta1 end tangent angle (only its direction counts, as in
+///   fit_clothoid_g1()); @param kappa1 end curvature
+/// @param options Newton tolerance and budget
+/// @returns the three arcs (segments[0] starts with theta0 and kappa0 as given) and the iterations
+/// @throws hula::Error(Errc::NonFiniteInput) naming "p0", "p1", "theta0", "theta1", "kappa0" or "kappa1"
+/// @throws hula::Error(Errc::CoincidentPoints) naming "p1" when p1 = p0 (no chord, no G1 start)
+/// @throws hula::Error(Errc::InvalidOption) from options.validate()
+/// @throws hula::Error(Errc::NumericalFailure) naming the end curvature ("kappa0" or "kappa1") that is
+///   furthest from the G1 clothoid's when Newton fails after every restart (none seen on the seeded
+///   sweep over |φ0|, |φ1| < π and |κ0|·r, |κ1|·r ≤ 10 of the tests)
+/// Complexity: O(iterations × 3 arcs × panels × 10) sine/cosine pairs, plus one fit_clothoid_g1().
+[[nodiscard]] ClothoidG2Result fit_clothoid_g2(const Vec3& p0, double theta0, double kappa0, const Vec3& p1,
+                                               double theta1, double kappa1, const ClothoidG2Options& options = {});
 
 }  // namespace hula::intrinsic

@@ -1,0 +1,109 @@
+// SPDX-License-Identifier: MIT
+// `hula clothoid`: Hermite interpolation by clothoids (intrinsic/clothoid.hpp). With end points and
+// tangent angles only, the G1 clothoid (Bertolazzi–Frego 2015, one segment); with the end curvatures
+// as well, the G2 spline of three clothoids (Bertolazzi–Frego 2018). JSON out:
+// {"kind": "g1" | "g2", "segments": [...], "length", "iterations"} (io::clothoid_spline_to_json),
+// and with --at the points, angles and curvatures at given arc lengths along the whole result.
+#include "hula/intrinsic/clothoid.hpp"
+
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "commands/common.hpp"
+#include "hula/core/error.hpp"
+#include "hula/io/clothoid_json.hpp"
+
+namespace hula::cli {
+
+namespace {
+
+struct ClothoidArgs {
+  std::string start_point, end_point, at;
+  std::optional<double> start_angle, end_angle, start_curvature, end_curvature;
+};
+
+// A planar point x,y given as --<field>.
+Vec3 parse_xy(const std::string& text, const char* field) {
+  const std::vector<double> v = parse_number_list(text, field);
+  if (v.size() != 2)
+    throw Error(Errc::InvalidArgument,
+                std::string("--") + field + " needs 2 numbers x,y (a planar point), got " + std::to_string(v.size()),
+                ErrorWhere{.field = field});
+  return {v[0], v[1], 0.0};
+}
+
+// The point, tangent angle and curvature at arc length s along consecutive segments; `index` is the
+// position of s in --at, for the error.
+Json sample(const std::vector<intrinsic::ClothoidSegment>& segments, double s, std::size_t index) {
+  double total = 0.0;
+  for (const auto& c : segments) total += c.length;
+  if (!(s >= 0.0 && s <= total))
+    throw Error(Errc::OutOfDomain, "--at " + format_number(s) + " is outside [0, " + format_number(total) + "]",
+                ErrorWhere{.field = "at", .index = index});
+  double local = s;
+  std::size_t j = 0;
+  while (j + 1 < segments.size() && local > segments[j].length) local -= segments[j++].length;
+  const intrinsic::ClothoidSegment& c = segments[j];
+  Json p = Json::object();
+  p["s"] = s;
+  p["point"] = vec_to_json(c.point(local), 2);
+  p["theta"] = c.angle(local);
+  p["kappa"] = c.curvature(local);
+  return p;
+}
+
+int run_clothoid(const ClothoidArgs& a) {
+  const Vec3 p0 = parse_xy(a.start_point, "start-point"), p1 = parse_xy(a.end_point, "end-point");
+  std::vector<intrinsic::ClothoidSegment> segments;
+  Json doc = Json::object();
+  if (a.start_curvature) {
+    const intrinsic::ClothoidG2Result r =
+        intrinsic::fit_clothoid_g2(p0, *a.start_angle, *a.start_curvature, p1, *a.end_angle, *a.end_curvature);
+    segments.assign(r.segments.begin(), r.segments.end());
+    doc["kind"] = "g2";
+    doc.update(io::clothoid_spline_to_json(segments));
+    doc["iterations"] = r.iterations;
+  } else {
+    const intrinsic::ClothoidG1Result r = intrinsic::fit_clothoid_g1(p0, *a.start_angle, p1, *a.end_angle);
+    segments.push_back(r.segment);
+    doc["kind"] = "g1";
+    doc.update(io::clothoid_spline_to_json(segments));
+    doc["iterations"] = r.iterations;
+  }
+  if (!a.at.empty()) {
+    const std::vector<double> at = parse_number_list(a.at, "at");
+    Json points = Json::array();
+    for (std::size_t i = 0; i < at.size(); ++i) points.push_back(sample(segments, at[i], i));
+    doc["points"] = std::move(points);
+  }
+  print_json(doc);
+  return kExitOk;
+}
+
+}  // namespace
+
+Command add_clothoid(CLI::App& app) {
+  auto a = std::make_shared<ClothoidArgs>();
+  CLI::App* sub = app.add_subcommand(
+      "clothoid", "Hermite interpolation by clothoids: G1 (one segment) or, with both curvatures, G2 (three)");
+  constexpr double kMax = std::numeric_limits<double>::max();
+  sub->add_option("--start-point", a->start_point, "Start point x,y")->required();
+  add_real_option(sub, "--start-angle", a->start_angle, -kMax, kMax, false,
+                  "Start tangent angle, radians from +x, counter-clockwise")
+      ->required();
+  sub->add_option("--end-point", a->end_point, "End point x,y")->required();
+  add_real_option(sub, "--end-angle", a->end_angle, -kMax, kMax, false, "End tangent angle, radians")->required();
+  CLI::Option* k0 = add_real_option(sub, "--start-curvature", a->start_curvature, -kMax, kMax, false,
+                                    "Start curvature (> 0 turns left): asks for the G2 spline");
+  CLI::Option* k1 = add_real_option(sub, "--end-curvature", a->end_curvature, -kMax, kMax, false,
+                                    "End curvature: asks for the G2 spline");
+  k0->needs(k1);
+  k1->needs(k0);
+  sub->add_option("--at", a->at, "Arc lengths s0,s1,... along the result at which to print point, angle, curvature");
+  return {sub, [a] { return run_clothoid(*a); }};
+}
+
+}  // namespace hula::cli

@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: MIT
+// JSON form of clothoid segments and splines; see the header.
+#include "hula/io/clothoid_json.hpp"
+
+namespace hula::io {
+
+namespace {
+
+Json xy(const Vec3& p) { return Json::array({p.x, p.y}); }
+
+}  // namespace
+
+Json clothoid_segment_to_json(const intrinsic::ClothoidSegment& segment) {
+  Json j = Json::object();
+  j["start"] = xy(segment.start);
+  j["theta0"] = segment.theta0;
+  j["kappa0"] = segment.kappa0;
+  j["dkappa"] = segment.dkappa;
+  j["length"] = segment.length;
+  j["end"] = xy(segment.point(segment.length));
+  j["theta1"] = segment.angle(segment.length);
+  j["kappa1"] = segment.curvature(segment.length);
+  return j;
+}
+
+Json clothoid_spline_to_json(std::span<const intrinsic::ClothoidSegment> segments) {
+  Json list = Json::array();
+  double length = 0.0;
+  for (const intrinsic::ClothoidSegment& s : segments) {
+    list.push_back(clothoid_segment_to_json(s));
+    length += s.length;
+  }
+  Json j = Json::object();
+  j["segments"] = std::move(list);
+  j["length"] = length;
+  return j;
+}
+
+}  // namespace hula::io

@@ -1,0 +1,113 @@
+// SPDX-License-Identifier: MIT
+// Contract tests of `hula clothoid` run as a process: the JSON shape ({"kind", "segments": [{"start",
+// "theta0", "kappa0", "dkappa", "length", "end", "theta1", "kappa1"}], "length", "iterations"(, "points")}),
+// the G1 quarter circle against its closed form, the G2 result's joins and end values against the request,
+// `--at` sampling, and exit codes 2/3 with the error JSON naming the input.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "hula/testing/process_json.hpp"
+#include "hula/testing/run_process.hpp"
+
+#ifndef HULA_CLI_PATH
+#error "HULA_CLI_PATH must name the hula binary"
+#endif
+
+namespace hula::intrinsic {
+namespace {
+
+using nlohmann::json;
+using testing::ProcessResult;
+
+ProcessResult hula(const std::vector<std::string>& args) { return testing::run_process(HULA_CLI_PATH, args); }
+
+// checks: G1 from (0, 0) heading +x to (1, 1) heading +y is the unit quarter circle (κ0 = 1, κ′ = 0, L = π/2,
+// closed form) with exactly the documented keys; --at π/4 is the circle's point (1 − cos, sin)(π/4), to 1e-12.
+TEST(ClothoidCli, G1QuarterCircle) {
+  const ProcessResult r = hula({"clothoid", "--start-point", "0,0", "--start-angle", "0", "--end-point", "1,1",
+                                "--end-angle", "1.5707963267948966", "--at", "0.7853981633974483"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_EQ(j.size(), 5u);
+  EXPECT_EQ(j["kind"], "g1");
+  ASSERT_EQ(j["segments"].size(), 1u);
+  const json& s = j["segments"][0];
+  EXPECT_EQ(s.size(), 8u);
+  EXPECT_NEAR(s["kappa0"].get<double>(), 1.0, 1e-12);
+  EXPECT_NEAR(s["dkappa"].get<double>(), 0.0, 1e-12);
+  EXPECT_NEAR(j["length"].get<double>(), std::numbers::pi / 2, 1e-12);
+  EXPECT_NEAR(s["end"][0].get<double>(), 1.0, 1e-12);
+  EXPECT_NEAR(s["end"][1].get<double>(), 1.0, 1e-12);
+  const json& p = j["points"][0];
+  EXPECT_NEAR(p["point"][0].get<double>(), std::sin(std::numbers::pi / 4), 1e-12);
+  EXPECT_NEAR(p["point"][1].get<double>(), 1.0 - std::cos(std::numbers::pi / 4), 1e-12);
+  EXPECT_NEAR(p["theta"].get<double>(), std::numbers::pi / 4, 1e-12);
+  EXPECT_NEAR(p["kappa"].get<double>(), 1.0, 1e-12);
+}
+
+// checks: G2 on Bertolazzi–Frego's test_G2_1 data prints three segments whose printed end values equal the next
+// segment's start values and the last one's the request (angle modulo 2π), to 1e-10, and lengths that sum.
+TEST(ClothoidCli, G2JoinsAndEnd) {
+  const ProcessResult r =
+      hula({"clothoid", "--start-point", "-2,3", "--start-angle", "1.0471975511965976", "--start-curvature", "-0.2",
+            "--end-point", "3,2", "--end-angle", "-0.7853981633974483", "--end-curvature", "0.5"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_EQ(j["kind"], "g2");
+  const json& s = j["segments"];
+  ASSERT_EQ(s.size(), 3u);
+  double total = 0.0;
+  for (std::size_t i = 0; i < 3; ++i) {
+    total += s[i]["length"].get<double>();
+    if (i == 2) break;
+    for (std::size_t k = 0; k < 2; ++k)
+      EXPECT_NEAR(s[i]["end"][k].get<double>(), s[i + 1]["start"][k].get<double>(), 1e-10) << i;
+    EXPECT_NEAR(s[i]["theta1"].get<double>(), s[i + 1]["theta0"].get<double>(), 1e-10) << i;
+    EXPECT_NEAR(s[i]["kappa1"].get<double>(), s[i + 1]["kappa0"].get<double>(), 1e-10) << i;
+  }
+  EXPECT_NEAR(j["length"].get<double>(), total, 1e-12);
+  EXPECT_NEAR(s[0]["kappa0"].get<double>(), -0.2, 1e-15);
+  EXPECT_NEAR(s[2]["end"][0].get<double>(), 3.0, 1e-10);
+  EXPECT_NEAR(s[2]["end"][1].get<double>(), 2.0, 1e-10);
+  EXPECT_NEAR(std::remainder(s[2]["theta1"].get<double>() + std::numbers::pi / 4, 2 * std::numbers::pi), 0.0, 1e-10);
+  EXPECT_NEAR(s[2]["kappa1"].get<double>(), 0.5, 1e-10);
+}
+
+// checks: bad input exits 3 naming the field (coincident points, a 3-number point, --at past the end); one
+// curvature without the other and a missing angle are usage errors (exit 2).
+TEST(ClothoidCli, ErrorsNameTheInput) {
+  struct Case {
+    std::vector<std::string> args;
+    int code;
+    std::string field;
+  };
+  const std::vector<std::string> base = {"clothoid", "--start-point", "0,0", "--start-angle", "0", "--end-angle", "1"};
+  const auto with = [&](std::vector<std::string> extra) {
+    std::vector<std::string> a = base;
+    a.insert(a.end(), extra.begin(), extra.end());
+    return a;
+  };
+  for (const Case& c :
+       {Case{with({"--end-point", "0,0"}), 3, "p1"}, Case{with({"--end-point", "1,0,0"}), 3, "end-point"},
+        Case{with({"--end-point", "1,0", "--at", "0,99"}), 3, "at"}}) {
+    const ProcessResult r = hula(c.args);
+    EXPECT_EQ(r.exit_code, c.code) << r.err;
+    EXPECT_EQ(testing::stderr_error(r)["where"]["field"], c.field) << r.err;
+  }
+  const ProcessResult at = hula(with({"--end-point", "1,0", "--at", "0,99"}));
+  EXPECT_EQ(testing::stderr_error(at)["where"]["index"], 1) << at.err;
+  for (const auto& args : {with({"--end-point", "1,0", "--start-curvature", "1"}),
+                           std::vector<std::string>{"clothoid", "--start-point", "0,0", "--end-point", "1,0"}}) {
+    const ProcessResult r = hula(args);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_EQ(testing::stderr_error(r)["code"], "UsageError");
+  }
+}
+
+}  // namespace
+}  // namespace hula::intrinsic
