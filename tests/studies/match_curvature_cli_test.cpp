@@ -176,8 +176,8 @@ TEST(MatchCurvatureCli, FarStartExamples) {
 // on a bound (warned in rounds[0].on_bound), every re-centred round's box is the previous round's best ± 5 (the
 // study's widths), the last round reaches the known curve (16, 20), (20, 30), (40, 0) it was built from; the map's
 // value at the result is the result's distance (no proximity: the fitness objective is the mean distance), its
-// nodes span the last box, fitness = 1/(1 + objective) (eq. 32), the resolved study echoes the members, and --svg
-// writes the map figure and CSV.
+// nodes span the last box, fitness = 1/(1 + objective) (eq. 32), the resolved study echoes the members and repeats
+// the rounds, and --svg writes the map figure and CSV.
 TEST(MatchCurvatureCli, RecentredRoundsAndFitnessMap) {
   const hula::testing::TempDir dir;
   const std::string study = std::string(HULA_SOURCE_DIR) + "/examples/studies/match-curvature-recentre.json";
@@ -232,6 +232,11 @@ TEST(MatchCurvatureCli, RecentredRoundsAndFitnessMap) {
   std::size_t rows = 0;
   while (std::getline(csv, line)) ++rows;
   EXPECT_EQ(rows, 21U * 21U);
+  // The resolved study repeats the rounds exactly.
+  std::ofstream(dir.path() / "again.json") << j["study"].dump();
+  const ProcessResult again = hula_run({"match-curvature", (dir.path() / "again.json").string()});
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_EQ(Json::parse(again.out)["rounds"], rounds);
 }
 
 // Bad study files are refused before any run, with exit code 3 and a message naming the member.
