@@ -170,24 +170,27 @@ TorsionMatchResult run_curvature_torsion_match(const CurvatureMatch& match, cons
   if (settings.map) (void)settings.map->axes(match.variables());
   const auto clock_start = std::chrono::steady_clock::now();
   TorsionMatchResult result;
-  result.rounds = run_recentred(match, settings.max_recentres, [&](const CurvatureMatch& m, std::size_t round) {
-    TorsionMatchResult r = run_once(m, settings, seed + round, threads, keep_log);
-    const optim::Termination t = r.report.termination;
-    RoundOutcome outcome{r.front.empty() ? m.start_variables() : r.front[r.compromise].variables,
-                         r.report.evaluations + (r.lm ? r.lm->evaluations : 0),
-                         t == optim::Termination::WallTime || t == optim::Termination::Cancelled};
-    if (round > 0) {
-      // The start errors are the designer's start's; the convergence record and the log go on over the rounds.
-      r.start_curvature = result.start_curvature;
-      r.start_torsion = result.start_torsion;
-      r.best_curvature.insert(r.best_curvature.begin(), result.best_curvature.begin(), result.best_curvature.end());
-      r.best_torsion.insert(r.best_torsion.begin(), result.best_torsion.begin(), result.best_torsion.end());
-      for (const optim::GenerationLog& g : r.log.generations()) result.log.append(g);
-      r.log = std::move(result.log);
-    }
-    result = std::move(r);
-    return outcome;
-  });
+  // Each round's result replaces `result` (keeping the start's errors); the rounds are set after the last.
+  std::vector<RecentreRound> rounds =
+      run_recentred(match, settings.max_recentres, [&](const CurvatureMatch& m, std::size_t round) {
+        TorsionMatchResult r = run_once(m, settings, seed + round, threads, keep_log);
+        const optim::Termination t = r.report.termination;
+        RoundOutcome outcome{r.front.empty() ? m.start_variables() : r.front[r.compromise].variables,
+                             r.report.evaluations + (r.lm ? r.lm->evaluations : 0),
+                             t == optim::Termination::WallTime || t == optim::Termination::Cancelled};
+        if (round > 0) {
+          // The start errors are the designer's start's; the convergence record and the log go on over the rounds.
+          r.start_curvature = result.start_curvature;
+          r.start_torsion = result.start_torsion;
+          r.best_curvature.insert(r.best_curvature.begin(), result.best_curvature.begin(), result.best_curvature.end());
+          r.best_torsion.insert(r.best_torsion.begin(), result.best_torsion.begin(), result.best_torsion.end());
+          for (const optim::GenerationLog& g : r.log.generations()) result.log.append(g);
+          r.log = std::move(result.log);
+        }
+        result = std::move(r);
+        return outcome;
+      });
+  result.rounds = std::move(rounds);
   result.variables = result.rounds.back().variables;
   if (settings.map) {
     optim::Problem problem = curvature_torsion_problem(match);

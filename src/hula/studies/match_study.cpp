@@ -376,28 +376,31 @@ MatchResult run_curvature_match(const CurvatureMatch& match, const MatchStudy& s
   if (study.method == MatchMethod::Direct) {
     result = run_once(match, study, keep_log);
   } else {
-    result.rounds = run_recentred(match, study.max_recentres, [&](const CurvatureMatch& m, std::size_t round) {
-      MatchStudy s = study;
-      if (round > 0) {
-        // "Each new GA run takes the best results of the previous run as initial variable values" (8.2.1).
-        s.header.seed = study.header.seed + round;
-        s.ga.seed_start = true;
-      }
-      MatchResult r = run_once(m, s, keep_log);
-      const optim::Termination t = r.ga_report.termination;
-      RoundOutcome outcome{r.best, r.ga_report.evaluations + (r.lm ? r.lm->evaluations : 0),
-                           t == optim::Termination::WallTime || t == optim::Termination::Cancelled};
-      if (round > 0) {
-        // The study's start stays the designer's; the convergence record and the log go on over the rounds.
-        r.start = std::move(result.start);
-        r.before = result.before;
-        r.convergence.insert(r.convergence.begin(), result.convergence.begin(), result.convergence.end());
-        for (const optim::GenerationLog& g : r.log.generations()) result.log.append(g);
-        r.log = std::move(result.log);
-      }
-      result = std::move(r);
-      return outcome;
-    });
+    // Each round's result replaces `result` (keeping the designer's start); the rounds are set after the last.
+    std::vector<RecentreRound> rounds =
+        run_recentred(match, study.max_recentres, [&](const CurvatureMatch& m, std::size_t round) {
+          MatchStudy s = study;
+          if (round > 0) {
+            // "Each new GA run takes the best results of the previous run as initial variable values" (8.2.1).
+            s.header.seed = study.header.seed + round;
+            s.ga.seed_start = true;
+          }
+          MatchResult r = run_once(m, s, keep_log);
+          const optim::Termination t = r.ga_report.termination;
+          RoundOutcome outcome{r.best, r.ga_report.evaluations + (r.lm ? r.lm->evaluations : 0),
+                               t == optim::Termination::WallTime || t == optim::Termination::Cancelled};
+          if (round > 0) {
+            // The study's start stays the designer's; the convergence record and the log go on over the rounds.
+            r.start = std::move(result.start);
+            r.before = result.before;
+            r.convergence.insert(r.convergence.begin(), result.convergence.begin(), result.convergence.end());
+            for (const optim::GenerationLog& g : r.log.generations()) result.log.append(g);
+            r.log = std::move(result.log);
+          }
+          result = std::move(r);
+          return outcome;
+        });
+    result.rounds = std::move(rounds);
   }
   result.variables = result.rounds.empty() ? match.variables() : result.rounds.back().variables;
   if (study.map) {
