@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
+#include <stdexcept>
 #include <vector>
 
 #include "hula/optim/test_problems.hpp"
@@ -40,6 +42,32 @@ TEST(OptimSweep, TwoVariableFitnessMap) {
   ASSERT_EQ(boosted.fitness.size(), 11U);
   EXPECT_NEAR(boosted.fitness[10], 1.0 / 8.0, 1e-15);
   EXPECT_EQ(boosted.x_values[0], 0.0);
+}
+
+// checks: SweepResult::values holds every objective of each node — ZDT1 (Zitzler, Deb, Thiele 2000) at x = (x0, 0, …):
+// f1 = x0, f2 = 1 − √x0 in closed form — while objective/fitness follow the chosen one; a failed node is NaN there.
+TEST(OptimSweep, ValuesHoldEveryObjective) {
+  Problem p = zdt(1, 3);
+  SweepOptions o;
+  o.nominal = {0.0, 0.0, 0.0};
+  o.x = {.variable = 0, .from = 0.0, .to = 1.0, .steps = 5};
+  o.objective = 1;
+  const SweepResult r = sweep(p, o);
+  ASSERT_EQ(r.values.size(), 10U);
+  for (std::size_t i = 0; i < 5; ++i) {
+    const double x = r.x_values[i];
+    EXPECT_NEAR(r.values[2 * i], x, 1e-15);
+    EXPECT_NEAR(r.values[2 * i + 1], 1.0 - std::sqrt(x), 1e-15);
+    EXPECT_EQ(r.objective[i], r.values[2 * i + 1]);
+  }
+  const auto evaluate = p.evaluate;
+  p.evaluate = [evaluate](std::span<const double> x, std::span<double> f) {
+    if (x[0] == 0.5) throw std::runtime_error("fails at 0.5");
+    evaluate(x, f);
+  };
+  const SweepResult failed = sweep(p, o);
+  EXPECT_EQ(failed.failed, 1U);
+  EXPECT_TRUE(std::isnan(failed.values[4]) && std::isnan(failed.values[5]));
 }
 
 // checks: sweep option errors name the field and value

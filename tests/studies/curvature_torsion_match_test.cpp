@@ -112,6 +112,48 @@ TEST(CurvatureTorsionMatch, ParetoSetContainsACurveMatchingBoth) {
   }
 }
 
+// checks: with boxes of ±0.5 around a start moved by up to 0.9 from the known helix (closed-form truth outside the
+// first box), the re-centred rounds (thesis 7.4.1) centre each box on the previous round's best compromise with the
+// same widths and end with a compromise matching both profiles to 1e-3; the map's nodes are both objectives at those
+// designs (CurvatureMatch::distances evaluated here).
+TEST(CurvatureTorsionMatch, RecentredRoundsAndMap) {
+  const auto truth = helix_points(5);
+  CurvatureMatchSetup s = known_curve_problem(truth, 100).setup();
+  for (std::size_t k = 1; k < s.points.size(); ++k) s.lower[k] = s.upper[k] = Vec3{0.5, 0.5, 0.5};
+  const CurvatureMatch match(s);
+  hula::studies::TorsionMatchSettings settings;
+  settings.population = 40;
+  settings.generations = 40;
+  settings.max_recentres = 6;
+  hula::studies::MatchMapSettings m;
+  m.variables = {"points[1].x", "points[2].z"};
+  m.grid = 3;
+  settings.map = m;
+  const auto r = hula::studies::run_curvature_torsion_match(match, settings, 3);
+  ASSERT_GE(r.rounds.size(), 2U);
+  EXPECT_FALSE(r.rounds.front().on_bound.empty());
+  for (std::size_t k = 1; k < r.rounds.size(); ++k)
+    for (std::size_t j = 0; j < match.dimension(); ++j) {
+      EXPECT_NEAR(r.rounds[k].variables[j].lower, r.rounds[k - 1].best[j] - 0.5, 1e-12);
+      EXPECT_NEAR(r.rounds[k].variables[j].upper, r.rounds[k - 1].best[j] + 0.5, 1e-12);
+    }
+  const auto& best = r.front[r.compromise];
+  EXPECT_EQ(best.variables, r.rounds.back().best);
+  EXPECT_LT(best.curvature, 1e-3);
+  EXPECT_LT(best.torsion, 1e-3);
+  EXPECT_DOUBLE_EQ(r.start_curvature, match.distances(match.start_variables()).mean);
+  ASSERT_TRUE(r.map.has_value());
+  for (std::size_t row = 0; row < 3; ++row)
+    for (std::size_t col = 0; col < 3; ++col) {
+      std::vector<double> x = best.variables;
+      x[0] = r.map->x_values[col];
+      x[5] = r.map->y_values[row];
+      const auto d = match.distances(x);
+      EXPECT_NEAR(r.map->values[(row * 3 + col) * 2], d.mean, 1e-12);
+      EXPECT_NEAR(r.map->values[(row * 3 + col) * 2 + 1], d.torsion_mean, 1e-12);
+    }
+}
+
 TEST(CurvatureTorsionMatch, PlanarOrTorsionlessProblemsAreRefused) {
   CurvatureMatchSetup s;
   s.dimension = 3;

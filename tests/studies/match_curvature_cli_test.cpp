@@ -172,6 +172,73 @@ TEST(MatchCurvatureCli, FarStartExamples) {
   EXPECT_LE(k["after"]["mean"].get<double>(), 1e-2 * k["before"]["mean"].get<double>());
 }
 
+// checks: the thesis's bounds experiment (examples/studies/match-curvature-recentre.json, 8.2.1): the first run ends
+// on a bound (warned in rounds[0].on_bound), every re-centred round's box is the previous round's best ± 5 (the
+// study's widths), the last round reaches the known curve (16, 20), (20, 30), (40, 0) it was built from; the map's
+// value at the result is the result's distance (no proximity: the fitness objective is the mean distance), its
+// nodes span the last box, fitness = 1/(1 + objective) (eq. 32), the resolved study echoes the members and repeats
+// the rounds, and --svg writes the map figure and CSV.
+TEST(MatchCurvatureCli, RecentredRoundsAndFitnessMap) {
+  const hula::testing::TempDir dir;
+  const std::string study = std::string(HULA_SOURCE_DIR) + "/examples/studies/match-curvature-recentre.json";
+  const ProcessResult r = hula_run({"match-curvature", study, "--svg", (dir.path() / "svg").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Json j = Json::parse(r.out);
+  const Json& rounds = j["rounds"];
+  ASSERT_GE(rounds.size(), 2U);
+  EXPECT_FALSE(rounds[0]["on_bound"].empty());
+  EXPECT_TRUE(rounds.back()["on_bound"].empty());
+  EXPECT_TRUE(j["on_bound"].empty());
+  const std::vector<double> start{10, 28, 23, 22, 40};
+  std::size_t evaluations = 0;
+  for (std::size_t k = 0; k < rounds.size(); ++k) {
+    const Json& best = k == 0 ? Json(nullptr) : rounds[k - 1]["best_points"];
+    const std::vector<double> centre =
+        k == 0 ? start
+               : std::vector<double>{best[1][0].get<double>(), best[1][1].get<double>(), best[2][0].get<double>(),
+                                     best[2][1].get<double>(), best[3][0].get<double>()};
+    for (std::size_t v = 0; v < centre.size(); ++v) {
+      EXPECT_NEAR(rounds[k]["lower"][v].get<double>(), centre[v] - 5.0, 1e-12) << k << " " << v;
+      EXPECT_NEAR(rounds[k]["upper"][v].get<double>(), centre[v] + 5.0, 1e-12) << k << " " << v;
+    }
+    EXPECT_EQ(rounds[k]["round"].get<std::size_t>(), k);
+    evaluations += rounds[k]["evaluations"].get<std::size_t>();
+  }
+  EXPECT_EQ(j["evaluations"].get<std::size_t>(), evaluations);
+  EXPECT_EQ(j["best_points"], rounds.back()["best_points"]);
+  EXPECT_EQ(j["start_points"][1], Json::array({10.0, 28.0}));
+  EXPECT_LT(j["after"]["mean"].get<double>(), 1e-8);
+  EXPECT_NEAR(j["best_points"][1][0].get<double>(), 16.0, 1e-6);
+  EXPECT_NEAR(j["best_points"][1][1].get<double>(), 20.0, 1e-6);
+  EXPECT_NEAR(j["best_points"][2][1].get<double>(), 30.0, 1e-6);
+  const Json& map = j["map"];
+  EXPECT_EQ(map["variables"], Json::array({"points[1].x", "points[1].y"}));
+  ASSERT_EQ(map["x"].size(), 21U);
+  ASSERT_EQ(map["objective"].size(), 21U);
+  ASSERT_EQ(map["objective"][0].size(), 21U);
+  EXPECT_NEAR(map["x"][0].get<double>(), rounds.back()["lower"][0].get<double>(), 1e-12);
+  EXPECT_NEAR(map["y"][20].get<double>(), rounds.back()["upper"][1].get<double>(), 1e-12);
+  EXPECT_NEAR(map["result"]["objective"].get<double>(), j["after"]["mean"].get<double>(), 1e-15);
+  EXPECT_EQ(map["result"]["x"], j["best_points"][1][0]);
+  EXPECT_NEAR(map["fitness"][3][4].get<double>(), 1.0 / (1.0 + map["objective"][3][4].get<double>()), 1e-15);
+  EXPECT_LE(map["min"]["objective"].get<double>(), map["objective"][3][4].get<double>());
+  EXPECT_EQ(j["study"]["max_recentres"].get<int>(), 5);
+  EXPECT_EQ(j["study"]["map"]["grid"].get<int>(), 21);
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "svg" / "fitness_map.svg"));
+  std::ifstream csv(dir.path() / "svg" / "fitness_map.csv");
+  std::string header, line;
+  std::getline(csv, header);
+  EXPECT_EQ(header, "x,y,objective");
+  std::size_t rows = 0;
+  while (std::getline(csv, line)) ++rows;
+  EXPECT_EQ(rows, 21U * 21U);
+  // The resolved study repeats the rounds exactly.
+  std::ofstream(dir.path() / "again.json") << j["study"].dump();
+  const ProcessResult again = hula_run({"match-curvature", (dir.path() / "again.json").string()});
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_EQ(Json::parse(again.out)["rounds"], rounds);
+}
+
 // Bad study files are refused before any run, with exit code 3 and a message naming the member.
 TEST(MatchCurvatureCli, BadStudyFilesNameTheMember) {
   const hula::testing::TempDir dir;
@@ -198,6 +265,12 @@ TEST(MatchCurvatureCli, BadStudyFilesNameTheMember) {
       {head + bounds + target + R"(, "lm": {"difference_step": 2}})", "lm.difference_step"},
       {head + bounds + target + R"(, "lm": {"exact_jacobian": 1}})", "lm.exact_jacobian"},
       {head + bounds + target + R"(, "abscissa": "length"})", "abscissa"},
+      {head + bounds + target + R"(, "max_recentres": -1})", "max_recentres"},
+      {head + bounds + target + R"(, "map": {"variables": ["points[2].x", "points[1].y"]}})",
+       "points[2].x\\\" is not a free design variable (points[1].x, points[1].y)"},
+      {head + bounds + target + R"(, "map": {"variables": ["points[1].x"]}})", "map.variables"},
+      {head + bounds + target + R"(, "map": {"variables": ["points[1].x", "points[1].y"], "grid": 1}})", "map.grid"},
+      {head + bounds + target + R"(, "map": {"variables": ["points[1].x", "points[1].y"], "step": 1}})", "step"},
   };
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const auto path = dir.path() / ("bad" + std::to_string(i) + ".json");

@@ -52,6 +52,48 @@ TEST(MatchCurvatureTorsionCli, HelixExampleMatchesBothProfiles) {
   EXPECT_EQ(Json::parse(again.out)["front"], j["front"]);
 }
 
+// checks: with boxes of ±0.5 the helix example's start (moved by about 1) cannot reach the known helix in one run;
+// "max_recentres" re-runs with each box centred on the previous best compromise (the study's widths) until both errors
+// are below 1e-3; the "map" holds both objectives on its grid, its "result" values are the compromise's own errors, the
+// resolved study echoes both members and --svg writes both map figures and the CSV.
+TEST(MatchCurvatureTorsionCli, RecentredRoundsAndMap) {
+  const hula::testing::TempDir dir;
+  Json study = Json::parse(std::ifstream(kExample));
+  for (std::size_t k = 1; k < study["lower"].size(); ++k)
+    study["lower"][k] = study["upper"][k] = Json::array({0.5, 0.5, 0.5});
+  study["nsga2"] = Json{{"population", 40}, {"generations", 40}};
+  study["samples"] = 100;
+  study["max_recentres"] = 6;
+  study["map"] = Json{{"variables", Json::array({"points[1].x", "points[2].z"})}, {"grid", 5}};
+  const auto path = dir.path() / "recentre.json";
+  std::ofstream(path) << study.dump();
+  const ProcessResult r = hula_run({"match-curvature-torsion", path.string(), "--svg", (dir.path() / "svg").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Json j = Json::parse(r.out);
+  const Json& rounds = j["rounds"];
+  ASSERT_GE(rounds.size(), 2U);
+  EXPECT_FALSE(rounds[0]["on_bound"].empty());
+  for (std::size_t k = 1; k < rounds.size(); ++k) {
+    const Json& p = rounds[k - 1]["best_points"];
+    const double centre[] = {p[1][0].get<double>(), p[1][1].get<double>(), p[1][2].get<double>()};
+    for (std::size_t v = 0; v < 3; ++v) {
+      EXPECT_NEAR(rounds[k]["lower"][v].get<double>(), centre[v] - 0.5, 1e-12);
+      EXPECT_NEAR(rounds[k]["upper"][v].get<double>(), centre[v] + 0.5, 1e-12);
+    }
+  }
+  EXPECT_LT(j["compromise"]["curvature"].get<double>(), 1e-3);
+  EXPECT_LT(j["compromise"]["torsion"].get<double>(), 1e-3);
+  const Json& map = j["map"];
+  ASSERT_EQ(map["curvature"].size(), 5U);
+  ASSERT_EQ(map["torsion"][4].size(), 5U);
+  EXPECT_NEAR(map["result"]["curvature"].get<double>(), j["compromise"]["curvature"].get<double>(), 1e-15);
+  EXPECT_NEAR(map["result"]["torsion"].get<double>(), j["compromise"]["torsion"].get<double>(), 1e-15);
+  EXPECT_EQ(j["study"]["max_recentres"].get<int>(), 6);
+  EXPECT_EQ(j["study"]["map"]["variables"][1], "points[2].z");
+  for (const char* f : {"fitness_map.svg", "torsion_map.svg", "fitness_map.csv"})
+    EXPECT_TRUE(std::filesystem::exists(dir.path() / "svg" / f)) << f;
+}
+
 TEST(MatchCurvatureTorsionCli, BadStudiesAreRefusedBeforeAnyRun) {
   const hula::testing::TempDir dir;
   Json base = Json::parse(std::ifstream(kExample));
@@ -84,6 +126,11 @@ TEST(MatchCurvatureTorsionCli, BadStudiesAreRefusedBeforeAnyRun) {
        },
        "3-D points"},
       {[](Json& j) { j.erase("end_tangent"); }, "torsion of the curve is undefined"},
+      {[](Json& j) {
+         j["map"] = Json{{"variables", Json::array({"points[1].x", "points[0].y"})}};
+       },
+       "is not a free design variable"},
+      {[](Json& j) { j["max_recentres"] = "3"; }, "max_recentres"},
   };
   for (const Case& c : cases) {
     const ProcessResult r = run_with(c.edit);

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -307,6 +308,146 @@ TEST(MatchGa, SeededStartAndDistinctDesigns) {
       EXPECT_LE(r.distinct[a].objectives[0], r.distinct[b].objectives[0]);
     }
   EXPECT_TRUE(r.log.generations().empty());  // collected for the niches only, not kept
+}
+
+// The thesis's bounds experiment (8.2.1 "Variable bounds"): the test curve (0, 0), (16, 20), (20, 30), (40, 0) as
+// listed, the GA started at pt2 = (10, 28), pt3 = (23, 22) with bounds of ±5, which exclude the solution (pt2.x <= 15,
+// pt2.y >= 23, pt3.y <= 27); pt4.x free by ±5 too. The target is the known curve's own profile (closed-form truth).
+CurvatureMatchSetup thesis_bounds_experiment() {
+  const std::vector<Vec3> truth{{0, 0, 0}, {16, 20, 0}, {20, 30, 0}, {40, 0, 0}};
+  CurvatureMatchSetup s;
+  s.points = {{0, 0, 0}, {10, 28, 0}, {23, 22, 0}, {40, 0, 0}};
+  s.lower = {{0, 0, 0}, {5, 5, 0}, {5, 5, 0}, {5, 0, 0}};
+  s.upper = s.lower;
+  s.target =
+      Profile::from_samples(hula::studies::uniform_abscissae(200), hula::studies::curvature_profile_of(truth, 2, 200));
+  return s;
+}
+
+// checks: the first run ends on a bound; each re-centred round's box is centred on the previous round's result with
+// the first box's widths (10), leaving the first box; the rounds stop once the result is off every bound and the last
+// round's result is the known curve (the closed-form truth) to 1e-6 in the points, 1e-8 in mean curvature distance.
+TEST(MatchRecentre, RoundsReachTheOptimumOutsideTheFirstBox) {
+  const CurvatureMatch match(thesis_bounds_experiment());
+  MatchStudy st = ga_study(MatchMethod::Hybrid);
+  st.ga.generations = 20;
+  st.max_recentres = 5;
+  const auto r = hula::studies::run_curvature_match(match, st);
+  ASSERT_GE(r.rounds.size(), 2U);
+  EXPECT_FALSE(r.rounds.front().on_bound.empty());
+  const auto first = match.variables();
+  for (std::size_t k = 0; k < r.rounds.size(); ++k) {
+    const auto& round = r.rounds[k];
+    for (std::size_t j = 0; j < first.size(); ++j) {
+      const double centre = k == 0 ? match.start_variables()[j] : r.rounds[k - 1].best[j];
+      EXPECT_NEAR(round.variables[j].lower, centre - 5.0, 1e-12) << k << " " << j;
+      EXPECT_NEAR(round.variables[j].upper, centre + 5.0, 1e-12) << k << " " << j;
+      EXPECT_GE(round.best[j], round.variables[j].lower);
+      EXPECT_LE(round.best[j], round.variables[j].upper);
+    }
+    if (k + 1 < r.rounds.size()) {
+      EXPECT_FALSE(round.on_bound.empty()) << k;
+    }
+    EXPECT_GT(round.evaluations, 0U);
+  }
+  EXPECT_TRUE(r.rounds.back().on_bound.empty());
+  EXPECT_EQ(r.best, r.rounds.back().best);
+  EXPECT_EQ(r.variables[0].lower, r.rounds.back().variables[0].lower);
+  EXPECT_LT(r.after.mean, 1e-8);
+  const std::vector<double> truth{16, 20, 20, 30, 40};
+  for (std::size_t j = 0; j < truth.size(); ++j) EXPECT_NEAR(r.best[j], truth[j], 1e-6) << j;
+  EXPECT_GT(r.best[0], first[0].upper);  // pt2.x = 16 lies outside the first box [5, 15]
+  EXPECT_EQ(r.start, match.start_variables());
+  EXPECT_DOUBLE_EQ(r.before.mean, match.distances(r.start).mean);
+}
+
+// checks: without max_recentres the same study stops on the bound after one round (the thesis's "intermediate
+// solution"), and the result's box is the study's own.
+TEST(MatchRecentre, NoRoundsWithoutMaxRecentres) {
+  const CurvatureMatch match(thesis_bounds_experiment());
+  MatchStudy st = ga_study(MatchMethod::Hybrid);
+  st.ga.generations = 20;
+  const auto r = hula::studies::run_curvature_match(match, st);
+  ASSERT_EQ(r.rounds.size(), 1U);
+  EXPECT_FALSE(r.rounds[0].on_bound.empty());
+  EXPECT_GT(r.after.mean, 1e-4);
+  EXPECT_EQ(r.variables[0].upper, match.variables()[0].upper);
+}
+
+// checks: recentred_setup moves the data points to the design and keeps offsets, targets and the proximity centre
+// (the designer's start) — against the setup's own values.
+TEST(MatchRecentre, RecentredSetupKeepsWidthsAndProximityCentre) {
+  CurvatureMatchSetup s = thesis_bounds_experiment();
+  s.proximity = {0, 0.1, 0.1, 0.1};
+  const CurvatureMatch match(s);
+  const std::vector<double> x{14, 24, 19, 27, 41};
+  const CurvatureMatchSetup r = hula::studies::recentred_setup(match, x);
+  EXPECT_EQ(r.points[1], (Vec3{14, 24, 0}));
+  EXPECT_EQ(r.points[2], (Vec3{19, 27, 0}));
+  EXPECT_EQ(r.points[3], (Vec3{41, 0, 0}));
+  EXPECT_EQ(r.lower[1], s.lower[1]);
+  EXPECT_EQ(r.proximity_centre[1], s.points[1]);
+  const CurvatureMatch moved(r);
+  // The penalty is measured from the designer's start (10, 28), (23, 22), (40, 0): 0.1 (4² + 4²) + 0.1 (4² + 5²) +
+  // 0.1 · 1² at x.
+  const hula::optim::Problem p = moved.problem();
+  std::vector<double> v(1);
+  p.evaluate(x, v);
+  EXPECT_NEAR(v[0] - moved.distances(x).mean, 0.1 * 32 + 0.1 * 41 + 0.1 * 1, 1e-9);
+  EXPECT_EQ(moved.proximity_variables(), match.start_variables());
+}
+
+// checks: every map node's objective and fitness equal the study's fitness evaluated directly at that design (mean
+// curvature distance by CurvatureMatch::distances, plus Σ w |p − p⁰|² computed here, fitness 1/(1 + e), eq. 32), and
+// the node at the result's coordinates (grid centred on it) equals the result's own value.
+TEST(MatchMap, NodesAreTheFitnessAtThoseDesigns) {
+  CurvatureMatchSetup s = thesis_bounds_experiment();
+  s.proximity = {0, 0.001, 0, 0};
+  const CurvatureMatch match(s);
+  MatchStudy st = ga_study(MatchMethod::Ga);
+  st.ga.generations = 5;
+  hula::studies::MatchMapSettings m;
+  m.variables = {"points[2].x", "points[1].y"};
+  m.grid = 5;
+  st.map = m;
+  const auto r = hula::studies::run_curvature_match(match, st);
+  ASSERT_TRUE(r.map.has_value());
+  ASSERT_EQ(r.map->x_values.size(), 5U);
+  ASSERT_EQ(r.map->y_values.size(), 5U);
+  EXPECT_DOUBLE_EQ(r.map->x_values.front(), r.variables[2].lower);
+  EXPECT_DOUBLE_EQ(r.map->y_values.back(), r.variables[1].upper);
+  for (std::size_t row = 0; row < 5; ++row)
+    for (std::size_t col = 0; col < 5; ++col) {
+      std::vector<double> x = r.best;
+      x[2] = r.map->x_values[col];
+      x[1] = r.map->y_values[row];
+      const double dx = x[0] - 10.0, dy = x[1] - 28.0;
+      const double e = match.distances(x).mean + 0.001 * (dx * dx + dy * dy);
+      EXPECT_NEAR(r.map->objective[row * 5 + col], e, 1e-12) << row << " " << col;
+      EXPECT_NEAR(r.map->fitness[row * 5 + col], 1.0 / (1.0 + e), 1e-12);
+    }
+  // A grid centred on the result: its middle node is the result.
+  st.map->from = std::array<double, 2>{r.best[2] - 1.0, r.best[1] - 2.0};
+  st.map->to = std::array<double, 2>{r.best[2] + 1.0, r.best[1] + 2.0};
+  const auto c = hula::studies::run_curvature_match(match, st);
+  const double dx = c.best[0] - 10.0, dy = c.best[1] - 28.0;
+  EXPECT_NEAR(c.map->objective[2 * 5 + 2], c.after.mean + 0.001 * (dx * dx + dy * dy), 1e-12);
+}
+
+// checks: map settings are refused before any run, naming the member and the variables there are.
+TEST(MatchMap, BadSettingsAreRefused) {
+  const CurvatureMatch match(thesis_bounds_experiment());
+  MatchStudy st = ga_study(MatchMethod::Ga);
+  hula::studies::MatchMapSettings m;
+  m.variables = {"points[0].x", "points[1].y"};
+  st.map = m;
+  HULA_EXPECT_ERROR((void)hula::studies::run_curvature_match(match, st), Errc::InvalidOption,
+                    "map.variables[0] = \"points[0].x\" is not a free design variable (points[1].x, points[1].y");
+  st.map->variables = {"points[1].y", "points[1].y"};
+  HULA_EXPECT_ERROR((void)hula::studies::run_curvature_match(match, st), Errc::InvalidOption, "twice");
+  st.map->variables = {"points[1].x", "points[1].y"};
+  st.map->grid = 1;
+  HULA_EXPECT_ERROR((void)hula::studies::run_curvature_match(match, st), Errc::InvalidOption, "map.grid = 1");
 }
 
 // LM options are checked before any work, naming the field.

@@ -12,9 +12,11 @@
 // torsion as two objectives by NSGA-II, with the optional LM polish of the best compromise
 // (studies/curvature_torsion_match.hpp). Prints the Pareto set with both errors of every curve.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -23,6 +25,7 @@
 #include "commands/fairing_baselines.hpp"
 #include "commands/study_common.hpp"
 #include "hula/diffgeom/frenet.hpp"
+#include "hula/io/atomic_file.hpp"
 #include "hula/io/match_study_file.hpp"
 #include "hula/studies/curvature_torsion_match.hpp"
 #include "hula/studies/match_study.hpp"
@@ -114,8 +117,37 @@ void write_direct_figures(const std::filesystem::path& dir, const studies::Curva
   write_svg(dir, "profile", fig);
 }
 
+// The fitness map (the study's `map` member) of one objective, log10 as fair-knots' energy map (the distance
+// rises by decades away from the minimum), with the start and the result marked; and the map as CSV.
+void write_map_figure(const std::filesystem::path& dir, const std::string& name, const std::string& title,
+                      const studies::MatchMapSettings& settings, const optim::SweepResult& map, std::size_t objective,
+                      std::size_t objectives, std::span<const double> start, std::span<const double> best,
+                      std::span<const optim::Variable> variables) {
+  const std::array<std::size_t, 2> axes = settings.axes(variables);
+  std::vector<double> shown(map.objective.size());
+  for (std::size_t i = 0; i < shown.size(); ++i) {
+    const double e = map.values[i * objectives + objective];
+    shown[i] = e > 0.0 ? std::log10(e) : std::numeric_limits<double>::quiet_NaN();
+  }
+  io::SvgFigure fig(800, 700);
+  fig.set_title(title + " over " + settings.variables[0] + " and " + settings.variables[1] +
+                " (other variables at the result)");
+  fig.set_axes(settings.variables[0], settings.variables[1]);
+  fig.add_heatmap(map.x_values, map.y_values, shown, "log10 " + title);
+  fig.add_points(std::vector<double>{start[axes[0]]}, std::vector<double>{start[axes[1]]},
+                 io::SvgStyle{.stroke = "#ffffff", .fill = "#ffffff"}, 5.0, "start");
+  fig.add_points(std::vector<double>{best[axes[0]]}, std::vector<double>{best[axes[1]]},
+                 io::SvgStyle{.stroke = "#d62728", .fill = "#d62728"}, 5.0, "result");
+  write_svg(dir, name, fig);
+}
+
 void write_figures(const std::filesystem::path& dir, const studies::CurvatureMatch& match,
-                   const studies::MatchResult& r) {
+                   const studies::MatchResult& r, const studies::MatchStudy& study) {
+  if (r.map) {
+    write_map_figure(dir, "fitness_map", "mean |k - k*|", *study.map, *r.map, 0, 1, r.start, r.best, r.variables);
+    const std::vector<std::string> names{"objective"};
+    io::write_file_atomically(dir / "fitness_map.csv", io::match_map_csv(*r.map, names));
+  }
   const std::size_t n = match.setup().points.size();
   std::vector<Vec3> before(n), after(n);
   match.points_from(r.start, before);
@@ -175,7 +207,7 @@ int run_match(const MatchArgs& a) {
   const InterruptGuard guard;  // Ctrl-C ends the GA with its best so far, as --time does
   const studies::MatchResult result = studies::run_curvature_match(match, study, a.study.log.has_value());
   if (a.study.log) write_run_log(result.log, *a.study.log);
-  if (a.study.svg) write_figures(*a.study.svg, match, result);
+  if (a.study.svg) write_figures(*a.study.svg, match, result, study);
   Json out = io::match_result_to_json(match, file, result);
   if (a.occt) {
     // Open CASCADE's fairing baselines with the ends of the best curve (the direct route's NURBS, else the spline
@@ -209,10 +241,16 @@ std::vector<double> torsion_samples(const studies::CurvatureMatch& match, std::s
 }
 
 void write_torsion_figures(const std::filesystem::path& dir, const studies::CurvatureMatch& match,
-                           const studies::TorsionMatchResult& r) {
+                           const studies::TorsionMatchResult& r, const studies::TorsionMatchSettings& settings) {
   const std::size_t n = match.setup().points.size();
   const std::vector<double> start = match.start_variables();
   const std::vector<double>& best = r.front.empty() ? start : r.front[r.compromise].variables;
+  if (r.map) {
+    write_map_figure(dir, "fitness_map", "mean |k - k*|", *settings.map, *r.map, 0, 2, start, best, r.variables);
+    write_map_figure(dir, "torsion_map", "mean |tau - tau*|", *settings.map, *r.map, 1, 2, start, best, r.variables);
+    const std::vector<std::string> names{"curvature", "torsion"};
+    io::write_file_atomically(dir / "fitness_map.csv", io::match_map_csv(*r.map, names));
+  }
   std::vector<Vec3> before(n), after(n);
   match.points_from(start, before);
   match.points_from(best, after);
@@ -283,7 +321,7 @@ int run_match_torsion(const StudyArgs& a) {
   const studies::TorsionMatchResult result = studies::run_curvature_torsion_match(
       match, study.settings, study.header.seed, study.header.threads, a.log.has_value());
   if (a.log) write_run_log(result.log, *a.log);
-  if (a.svg) write_torsion_figures(*a.svg, match, result);
+  if (a.svg) write_torsion_figures(*a.svg, match, result, study.settings);
   const Json out = io::torsion_match_result_to_json(match, file, result);
   if (out.contains("warnings"))
     for (const auto& w : out["warnings"]) std::cerr << "hula: warning: " << w.get<std::string>() << "\n";
@@ -299,6 +337,9 @@ Command add_match_curvature_torsion(CLI::App& app) {
       "match-curvature-torsion",
       "Match prescribed curvature and torsion profiles as two objectives (NSGA-II, optional LM polish)");
   add_study_options(sub, *a);
+  sub->footer(
+      "--svg DIR writes curve_before.svg, curve_after.svg, profile.svg, torsion_profile.svg, pareto.svg, "
+      "convergence.svg, and with a \"map\" fitness_map.svg, torsion_map.svg and fitness_map.csv.");
   return {sub, [a] { return run_match_torsion(*a); }};
 }
 
@@ -308,6 +349,9 @@ Command add_match_curvature(CLI::App& app) {
       "match-curvature",
       "Match a prescribed curvature profile by moving data points (GA, or GA + Levenberg-Marquardt)");
   add_study_options(sub, a->study);
+  sub->footer(
+      "--svg DIR writes curve_before.svg, curve_after.svg, profile.svg, convergence.svg, and with a \"map\" "
+      "fitness_map.svg and fitness_map.csv.");
   sub->add_option("--method", a->method, "ga | hybrid | direct (overrides the study file's \"method\")");
   sub->add_option("--abscissa", a->abscissa,
                   "arclength | parameter: what the target's u measures (overrides the study file's \"abscissa\"; "

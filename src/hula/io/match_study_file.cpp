@@ -2,7 +2,9 @@
 // The codecs of the curvature-matching study kinds (match_study_file.hpp).
 #include "hula/io/match_study_file.hpp"
 
+#include <array>
 #include <cmath>
+#include <optional>
 #include <span>
 #include <string>
 #include <utility>
@@ -210,17 +212,87 @@ Json lm_options_to_json(const LmOptions& o) {
 
 namespace {
 
-// "on_bound" (every variable of x on a bound) and "warnings" (one line each) of a result (issue 14 items 2, 7).
-void bound_report(const CurvatureMatch& match, std::span<const double> x, Json& out) {
-  const std::vector<optim::Variable> vars = match.variables();
-  // Within 2 % of the box width: a GA's best pressing against a bound rarely lands exactly on it (Example 3's GA
-  // stops at x = 49.8 of 50 with a box of 20).
-  const std::vector<optim::BoundHit> hits = optim::bound_hits(vars, x, 0.02);
-  out["on_bound"] = Json::array();
+Json on_bound_json(std::span<const optim::Variable> vars, std::span<const optim::BoundHit> hits) {
+  Json a = Json::array();
   for (const optim::BoundHit& h : hits)
-    out["on_bound"].push_back(
-        {{"variable", vars[h.variable].name}, {"bound", h.upper ? "upper" : "lower"}, {"value", h.value}});
+    a.push_back({{"variable", vars[h.variable].name}, {"bound", h.upper ? "upper" : "lower"}, {"value", h.value}});
+  return a;
+}
+
+// "on_bound" (every variable of x on a bound of `vars`, the box of the round that gave x) and "warnings" (one line
+// each) of a result (issue 14 items 2, 7).
+void bound_report(std::span<const optim::Variable> vars, std::span<const double> x, Json& out) {
+  const std::vector<optim::BoundHit> hits = match_bound_hits(vars, x);
+  out["on_bound"] = on_bound_json(vars, hits);
   out["warnings"] = optim::bound_warnings(vars, hits);
+}
+
+// The "map" settings: {"variables", "grid", "from"?, "to"?}.
+MatchMapSettings map_settings_from_json(const Json& m) {
+  const jr::JsonPath p = jr::root_path("map");
+  jr::reject_unknown_members(m, p, {"variables", "grid", "from", "to"});
+  MatchMapSettings o;
+  const Json& names = jr::require_member(m, p, "variables");
+  const Json& arr = jr::get_array(names, p.member("variables"));
+  if (arr.size() != 2) jr::type_error(names, p.member("variables"), "two variable names [\"points[i].x\", ...]");
+  for (std::size_t k = 0; k < 2; ++k) o.variables[k] = jr::get_string(arr[k], p.member("variables").element(k));
+  if (const Json* v = jr::optional_member(m, "grid"))
+    o.grid = static_cast<std::size_t>(jr::get_integer(*v, p.member("grid"), 2, 500));
+  for (auto [name, range] : {std::pair{"from", &o.from}, std::pair{"to", &o.to}})
+    if (const Json* v = jr::optional_member(m, name)) {
+      const std::vector<double> a = jr::get_number_array(*v, p.member(name));
+      if (a.size() != 2) jr::type_error(*v, p.member(name), "two numbers (one per mapped variable)");
+      *range = std::array<double, 2>{a[0], a[1]};
+    }
+  return o;
+}
+
+Json map_settings_to_json(const MatchMapSettings& o) {
+  Json m = {{"variables", Json::array({o.variables[0], o.variables[1]})}, {"grid", o.grid}};
+  if (o.from) m["from"] = Json::array({(*o.from)[0], (*o.from)[1]});
+  if (o.to) m["to"] = Json::array({(*o.to)[0], (*o.to)[1]});
+  return m;
+}
+
+// Row-major grid values as rows of a JSON array (null where the evaluation failed).
+Json grid_json(std::span<const double> values, std::size_t columns, std::size_t stride, std::size_t offset) {
+  Json rows = Json::array();
+  const std::size_t count = values.size() / stride;
+  for (std::size_t row = 0; row * columns < count; ++row) {
+    Json r = Json::array();
+    for (std::size_t col = 0; col < columns; ++col) {
+      const double v = values[(row * columns + col) * stride + offset];
+      r.push_back(std::isfinite(v) ? Json(v) : Json(nullptr));
+    }
+    rows.push_back(std::move(r));
+  }
+  return rows;
+}
+
+// The "map" result: the axes, one grid per objective name (row j = y_values[j], column i = x_values[i]), the
+// result's own values and the grid's smallest first objective.
+Json map_json(const MatchMapSettings& settings, const optim::SweepResult& map, std::span<const double> at,
+              std::span<const std::string> objectives, const optim::Problem& problem) {
+  const std::array<std::size_t, 2> axes = settings.axes(problem.variables);
+  const std::size_t nx = map.x_values.size(), k = objectives.size();
+  Json out = {{"variables", Json::array({settings.variables[0], settings.variables[1]})},
+              {"x", map.x_values},
+              {"y", map.y_values},
+              {"failed", map.failed}};
+  for (std::size_t o = 0; o < k; ++o) out[objectives[o]] = grid_json(map.values, nx, k, o);
+  if (k == 1) out["fitness"] = grid_json(map.fitness, nx, 1, 0);
+  std::vector<double> values(problem.objectives);
+  problem.evaluate(at, values);
+  Json result = {{"x", at[axes[0]]}, {"y", at[axes[1]]}};
+  for (std::size_t o = 0; o < k; ++o) result[objectives[o]] = values[o];
+  out["result"] = std::move(result);
+  std::size_t best = map.objective.size();
+  for (std::size_t i = 0; i < map.objective.size(); ++i)
+    if (std::isfinite(map.objective[i]) && (best == map.objective.size() || map.objective[i] < map.objective[best]))
+      best = i;
+  if (best < map.objective.size())
+    out["min"] = {{"x", map.x_values[best % nx]}, {"y", map.y_values[best / nx]}, {objectives[0], map.objective[best]}};
+  return out;
 }
 
 Json point_json(const Vec3& p, int dimension) {
@@ -242,6 +314,40 @@ Json distances_json(const MatchDistances& d) {
   o["max"] = num(d.max);
   if (std::isfinite(d.torsion_mean)) o["torsion_mean"] = d.torsion_mean;
   return o;
+}
+
+// "rounds": one entry per round of the re-centred re-runs (thesis 7.4.1).
+Json rounds_json(const CurvatureMatch& match, std::span<const RecentreRound> rounds, int dimension) {
+  Json out = Json::array();
+  std::vector<Vec3> pts(match.setup().points.size());
+  for (std::size_t i = 0; i < rounds.size(); ++i) {
+    const RecentreRound& r = rounds[i];
+    std::vector<double> lower, upper;
+    for (const optim::Variable& v : r.variables) {
+      lower.push_back(v.lower);
+      upper.push_back(v.upper);
+    }
+    match.points_from(r.best, pts);
+    out.push_back({{"round", i},
+                   {"lower", lower},
+                   {"upper", upper},
+                   {"best_points", points_json(pts, dimension)},
+                   {"after", distances_json(r.after)},
+                   {"on_bound", on_bound_json(r.variables, r.on_bound)},
+                   {"evaluations", r.evaluations}});
+  }
+  return out;
+}
+
+// "max_recentres" and "map", checked against the setup's design variables before any run.
+void read_recentre_and_map(const Json& body, const CurvatureMatchSetup& setup, std::size_t& max_recentres,
+                           std::optional<MatchMapSettings>& map) {
+  if (const Json* v = jr::optional_member(body, "max_recentres"))
+    max_recentres = static_cast<std::size_t>(jr::get_integer(*v, jr::root_path("max_recentres"), 0, 1000));
+  if (const Json* v = jr::optional_member(body, "map")) {
+    map = map_settings_from_json(*v);
+    (void)map->axes(CurvatureMatch(setup).variables());
+  }
 }
 
 }  // namespace
@@ -324,7 +430,7 @@ void match_setup_to_json(const MatchSetupJson& setup, Json& out) {
 MatchStudyFile match_study_from_json(const StudyDocument& document, const PathResolver& resolver) {
   const Json& body = document.body;
   check_members(body, {"points", "lower", "upper", "movable", "proximity", "start_tangent", "end_tangent", "target",
-                       "abscissa", "samples", "method", "ga", "lm", "direct"});
+                       "abscissa", "samples", "method", "ga", "lm", "direct", "max_recentres", "map"});
   MatchStudy study;
   study.header = document.header;
   if (const Json* v = jr::optional_member(body, "method"))
@@ -362,6 +468,7 @@ MatchStudyFile match_study_from_json(const StudyDocument& document, const PathRe
   }
   MatchSetupJson setup = match_setup_from_json(body, resolver, false);
   study.setup = std::move(setup.setup);
+  read_recentre_and_map(body, study.setup, study.max_recentres, study.map);
   return {std::move(study), std::move(setup.target)};
 }
 
@@ -394,6 +501,8 @@ Json match_study_to_json(const MatchStudyFile& file) {
   direct["length_weight"] = study.direct.length_weight;
   direct["end_tolerance"] = study.direct.end_tolerance;
   out["direct"] = direct;
+  out["max_recentres"] = study.max_recentres;
+  if (study.map) out["map"] = map_settings_to_json(*study.map);
   return out;
 }
 
@@ -424,6 +533,11 @@ Json match_result_to_json(const CurvatureMatch& match, const MatchStudyFile& fil
     out["lm"] = lm;
   }
   out["after"] = distances_json(result.after);
+  if (result.map) {
+    optim::Problem problem = match.problem();
+    problem.variables = result.variables;
+    out["map"] = map_json(*study.map, *result.map, result.best, std::vector<std::string>{"objective"}, problem);
+  }
   if (result.direct) {
     // The direct curve matches the profile by construction (up to the correction that holds its end); its
     // distance from the target and where its end lands are what to compare with the GA routes.
@@ -440,9 +554,12 @@ Json match_result_to_json(const CurvatureMatch& match, const MatchStudyFile& fil
     return out;
   }
   out["ga"] = run_report_to_json(result.ga_report);
-  out["evaluations"] = result.ga_report.evaluations + (result.lm ? result.lm->evaluations : 0);
+  std::size_t evaluations = 0;
+  for (const RecentreRound& r : result.rounds) evaluations += r.evaluations;
+  out["evaluations"] = evaluations;
   out["seconds"] = result.seconds;
-  bound_report(match, result.best, out);
+  bound_report(result.variables, result.best, out);
+  out["rounds"] = rounds_json(match, result.rounds, dim);
   if (study.ga.distinct > 0) {
     out["distinct"] = Json::array();
     for (const optim::Solution& d : result.distinct) {
@@ -472,7 +589,8 @@ Json number_or_null(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr
 TorsionMatchStudyFile torsion_match_study_from_json(const StudyDocument& document, const PathResolver& resolver) {
   const Json& body = document.body;
   check_members(body, {"points", "lower", "upper", "movable", "proximity", "start_tangent", "end_tangent", "target",
-                       "torsion_target", "abscissa", "samples", "nsga2", "polish", "torsion_weight", "lm"});
+                       "torsion_target", "abscissa", "samples", "nsga2", "polish", "torsion_weight", "lm",
+                       "max_recentres", "map"});
   TorsionMatchStudy study;
   study.header = document.header;
   TorsionMatchSettings& t = study.settings;
@@ -504,6 +622,7 @@ TorsionMatchStudyFile torsion_match_study_from_json(const StudyDocument& documen
   t.validate();
   MatchSetupJson setup = match_setup_from_json(body, resolver, true);
   study.setup = std::move(setup.setup);
+  read_recentre_and_map(body, study.setup, t.max_recentres, t.map);
   return {std::move(study), std::move(setup.target), std::move(setup.torsion_target)};
 }
 
@@ -523,6 +642,8 @@ Json torsion_match_study_to_json(const TorsionMatchStudyFile& file) {
   out["polish"] = t.polish;
   out["torsion_weight"] = t.torsion_weight;
   out["lm"] = lm_options_to_json(t.lm);
+  out["max_recentres"] = t.max_recentres;
+  if (t.map) out["map"] = map_settings_to_json(*t.map);
   return out;
 }
 
@@ -553,7 +674,14 @@ Json torsion_match_result_to_json(const CurvatureMatch& match, const TorsionMatc
                          {"curvature", best.curvature},
                          {"torsion", best.torsion},
                          {"curve", curve_to_json(match.sampler().curve(pts))}};
-    bound_report(match, best.variables, out);
+    bound_report(result.variables, best.variables, out);
+  }
+  out["rounds"] = rounds_json(match, result.rounds, 3);
+  if (result.map) {
+    optim::Problem problem = curvature_torsion_problem(match);
+    problem.variables = result.variables;
+    out["map"] = map_json(*file.study.settings.map, *result.map, result.rounds.back().best,
+                          std::vector<std::string>{"curvature", "torsion"}, problem);
   }
   out["nsga2"] = run_report_to_json(result.report);
   if (result.lm)
@@ -562,9 +690,29 @@ Json torsion_match_result_to_json(const CurvatureMatch& match, const TorsionMatc
                      {"termination", std::string(optim::termination_name(result.lm->termination))},
                      {"message", result.lm->message},
                      {"seconds", result.lm->seconds}};
-  out["evaluations"] = result.report.evaluations + (result.lm ? result.lm->evaluations : 0);
+  std::size_t evaluations = 0;
+  for (const RecentreRound& r : result.rounds) evaluations += r.evaluations;
+  out["evaluations"] = evaluations;
   out["seconds"] = result.seconds;
   out["study"] = torsion_match_study_to_json(file);
+  return out;
+}
+
+std::string match_map_csv(const optim::SweepResult& map, std::span<const std::string> objectives) {
+  std::string out = "x,y";
+  for (const std::string& name : objectives) out += "," + name;
+  out += "\n";
+  const std::size_t nx = map.x_values.size(), k = objectives.size();
+  HULA_ASSERT(map.values.size() == map.objective.size() * k, "match_map_csv: one name per objective");
+  for (std::size_t i = 0; i < map.objective.size(); ++i) {
+    // nlohmann's number form: the shortest text that reads back to the same double.
+    out += Json(map.x_values[i % nx]).dump() + "," + Json(map.y_values[i / nx]).dump();
+    for (std::size_t o = 0; o < k; ++o) {
+      out += ',';
+      if (std::isfinite(map.values[i * k + o])) out += Json(map.values[i * k + o]).dump();
+    }
+    out += '\n';
+  }
   return out;
 }
 

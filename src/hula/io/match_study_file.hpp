@@ -7,6 +7,9 @@
 // through the caller's PathResolver.
 #pragma once
 
+#include <span>
+#include <string>
+
 #include "hula/io/json_read.hpp"
 #include "hula/io/path_resolver.hpp"
 #include "hula/io/study_file.hpp"
@@ -60,8 +63,10 @@ void match_setup_to_json(const MatchSetupJson& setup, Json& out);
 [[nodiscard]] MatchStudyFile match_study_from_json(const StudyDocument& document, const PathResolver& resolver);
 /// The resolved study as a study file (seed included), so the run can be repeated exactly.
 [[nodiscard]] Json match_study_to_json(const MatchStudyFile& file);
-/// The run's report: start/best points, distances before/after (after GA / after LM for hybrid), evaluations,
-/// time, the curve as a curve document and the resolved setup under "study".
+/// The run's report: start/best points, distances before/after (after GA / after LM for hybrid), evaluations
+/// (every round's), time, the curve as a curve document, "on_bound" / "warnings" (against the box of the round
+/// that gave the result), "rounds" (the re-centred re-runs), "map" (with a map member) and the resolved setup under
+/// "study".
 [[nodiscard]] Json match_result_to_json(const studies::CurvatureMatch& match, const MatchStudyFile& file,
                                         const studies::MatchResult& result);
 
@@ -76,6 +81,11 @@ void match_setup_to_json(const MatchSetupJson& setup, Json& out);
 /// compromise marked, its curve as a curve document), NSGA-II and polish reports, and the resolved study.
 [[nodiscard]] Json torsion_match_result_to_json(const studies::CurvatureMatch& match, const TorsionMatchStudyFile& file,
                                                 const studies::TorsionMatchResult& result);
+
+/// A matching study's fitness map as CSV: header `x,y,<objectives...>`, one row per grid node (x fastest), a
+/// value empty where the evaluation failed; doubles written to round-trip (shortest form).
+/// @param objectives one name per objective of the mapped problem
+[[nodiscard]] std::string match_map_csv(const optim::SweepResult& map, std::span<const std::string> objectives);
 
 /// A JSON summary of a direct reconstruction for the CLI and study logs: planar, length, end errors,
 /// profile deviations, iterations, reconstructions, seconds, the correction coefficients, and the

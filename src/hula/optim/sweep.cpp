@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include "hula/core/error.hpp"
 
@@ -105,7 +106,9 @@ SweepResult sweep(const Problem& problem, const SweepOptions& options) {
   }
   for (std::size_t i = 0; i < nx * ny; ++i) {
     r.fitness[i] = failed[i] ? 0.0 : boosted_fitness(r.objective[i] - shift, options.power);
+    if (failed[i]) std::fill_n(values.begin() + static_cast<std::ptrdiff_t>(i * k), k, kNaN);
   }
+  r.values = std::move(values);
   return r;
 }
 

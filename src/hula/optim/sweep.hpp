@@ -61,6 +61,9 @@ struct SweepResult {
   std::vector<double> y_values{};
   /// Objective values, row-major rows = y samples (1 if no y), columns = x samples; NaN where failed.
   std::vector<double> objective{};
+  /// Every objective of each sample (Problem::objectives per sample, samples in the order of `objective`); NaN
+  /// where failed.
+  std::vector<double> values{};
   /// Fitness (1/(1+e))^power of each sample, 0 where failed (e is shifted so that min e >= 0).
   std::vector<double> fitness{};
   /// Constraint violation of each sample (NaN where failed).

@@ -486,6 +486,16 @@ void CurvatureMatchSetup::validate() const {
       throw Error(Errc::InvalidArgument,
                   indexed("proximity", i) + " = " + format_number(proximity[i]) + " must be finite and >= 0",
                   {.field = "proximity", .index = i});
+  if (!proximity_centre.empty() && proximity_centre.size() != points.size())
+    throw Error(Errc::InvalidArgument,
+                "proximity_centre has " + std::to_string(proximity_centre.size()) + " points but there are " +
+                    std::to_string(points.size()),
+                {.field = "proximity_centre"});
+  for (std::size_t i = 0; i < proximity_centre.size(); ++i)
+    if (!(std::isfinite(proximity_centre[i].x) && std::isfinite(proximity_centre[i].y) &&
+          std::isfinite(proximity_centre[i].z)))
+      throw Error(Errc::NonFiniteInput, indexed("proximity_centre", i) + " is not finite",
+                  {.field = "proximity_centre", .index = i});
   bool any_free = false;
   for (std::size_t i = 0; i < points.size(); ++i)
     for (std::size_t c = 0; c < 3; ++c) any_free = any_free || lower[i][c] > 0.0 || upper[i][c] > 0.0;
@@ -543,8 +553,10 @@ CurvatureMatch::CurvatureMatch(CurvatureMatchSetup setup) : setup_(std::move(set
         free_.push_back({i, c});
         free_flat_.push_back(3 * i + c);
       }
+  if (setup_.proximity_centre.empty()) setup_.proximity_centre = setup_.points;
   if (setup_.dimension == 2)
-    for (Vec3& p : setup_.points) p.z = 0.0;
+    for (auto* points : {&setup_.points, &setup_.proximity_centre})
+      for (Vec3& p : *points) p.z = 0.0;
 }
 
 std::vector<optim::Variable> CurvatureMatch::variables(double precision) const {
@@ -649,11 +661,13 @@ std::vector<double> CurvatureMatch::curvature_samples(std::span<const double> x)
 double CurvatureMatch::proximity_penalty(std::span<const Vec3> points) const {
   double sum = 0.0;
   for (std::size_t i = 0; i < setup_.proximity.size(); ++i) {
-    const Vec3 d = points[i] - setup_.points[i];
+    const Vec3 d = points[i] - setup_.proximity_centre[i];
     sum += setup_.proximity[i] * dot(d, d);
   }
   return sum;
 }
+
+std::vector<double> CurvatureMatch::proximity_variables() const { return variables_from(setup_.proximity_centre); }
 
 optim::Problem CurvatureMatch::problem(double precision) const {
   optim::Problem p;

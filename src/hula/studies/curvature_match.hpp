@@ -133,6 +133,9 @@ struct CurvatureMatchSetup {
   /// that the term is a curvature like e), and the least-squares refinement appends the residuals
   /// √w_i (x_j − x_j⁰) for each free coordinate j of point i. Reported distances stay pure curvature distances.
   std::vector<double> proximity{};
+  /// The points the proximity regularisation pulls towards, one per point, or empty (default: `points`). The
+  /// re-centred rounds of thesis 7.4.1 (recentred_setup) move `points` and keep the designer's start here.
+  std::vector<Vec3> proximity_centre{};
   /// Samples N >= 2. Default 200.
   std::size_t samples = 200;
   /// Where the samples are: at the parameter (thesis, default) or at the normalised arc length.
@@ -140,9 +143,9 @@ struct CurvatureMatchSetup {
 
   /// @throws hula::Error(Errc::TooFewPoints) if fewer than 2 points
   /// @throws hula::Error(Errc::InvalidArgument) naming `proximity[i]` if negative or the count differs from the
-  ///   points'; naming `lower[i]`/`upper[i]` (and the coordinate) for a count
-  ///   mismatch, a negative offset (bounds that exclude the start value), any offset on points[0] (the start point is
-  ///   fixed), a z offset in 2-D, no free coordinate at all; `samples` < 2; no target
+  ///   points', and `proximity_centre` if its count differs; naming `lower[i]`/`upper[i]` (and the coordinate) for a
+  ///   count mismatch, a negative offset (bounds that exclude the start value), any offset on points[0] (the start
+  ///   point is fixed), a z offset in 2-D, no free coordinate at all; `samples` < 2; no target
   /// @throws hula::Error(Errc::NonFiniteInput) naming the point or offset that is NaN or infinite
   void validate() const;
 };
@@ -211,8 +214,11 @@ class CurvatureMatch {
   [[nodiscard]] MatchDistances distances(std::span<const double> x) const;
   /// κ(u_i) of x (allocates; for reports and figures).
   [[nodiscard]] std::vector<double> curvature_samples(std::span<const double> x) const;
-  /// Σ_i w_i |p_i − p_i⁰|² of CurvatureMatchSetup::proximity for the points `points` (0 without weights).
+  /// Σ_i w_i |p_i − p_i⁰|² of CurvatureMatchSetup::proximity for the points `points` (0 without weights), p⁰ the
+  /// proximity centre.
   [[nodiscard]] double proximity_penalty(std::span<const Vec3> points) const;
+  /// The design variables of the proximity centre (CurvatureMatchSetup::proximity_centre, else the start).
+  [[nodiscard]] std::vector<double> proximity_variables() const;
   /// The single-objective Flexo problem "mean curvature distance" (+ the proximity penalty); evaluation uses one
   /// workspace per thread and refers to this object, which must outlive the problem.
   /// @param precision as variables()

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "hula/core/error.hpp"
 #include "hula/optim/pareto.hpp"
@@ -66,10 +67,11 @@ void TorsionMatchSettings::validate() const {
   lm.validate();
 }
 
-TorsionMatchResult run_curvature_torsion_match(const CurvatureMatch& match, const TorsionMatchSettings& settings,
-                                               std::uint64_t seed, std::size_t threads, bool keep_log) {
-  require_torsion(match);
-  settings.validate();
+namespace {
+
+// One NSGA-II run (and polish) on one problem: one round of run_recentred.
+TorsionMatchResult run_once(const CurvatureMatch& match, const TorsionMatchSettings& settings, std::uint64_t seed,
+                            std::size_t threads, bool keep_log) {
   const auto clock_start = std::chrono::steady_clock::now();
   const optim::Problem problem = curvature_torsion_problem(match);
   TorsionMatchResult result;
@@ -155,6 +157,46 @@ TorsionMatchResult run_curvature_torsion_match(const CurvatureMatch& match, cons
   result.compromise = 0;
   for (std::size_t i = 1; i < result.front.size(); ++i)
     if (worst(result.front[i]) < worst(result.front[result.compromise])) result.compromise = i;
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
+  return result;
+}
+
+}  // namespace
+
+TorsionMatchResult run_curvature_torsion_match(const CurvatureMatch& match, const TorsionMatchSettings& settings,
+                                               std::uint64_t seed, std::size_t threads, bool keep_log) {
+  require_torsion(match);
+  settings.validate();
+  if (settings.map) (void)settings.map->axes(match.variables());
+  const auto clock_start = std::chrono::steady_clock::now();
+  TorsionMatchResult result;
+  // Each round's result replaces `result` (keeping the start's errors); the rounds are set after the last.
+  std::vector<RecentreRound> rounds =
+      run_recentred(match, settings.max_recentres, [&](const CurvatureMatch& m, std::size_t round) {
+        TorsionMatchResult r = run_once(m, settings, seed + round, threads, keep_log);
+        const optim::Termination t = r.report.termination;
+        RoundOutcome outcome{r.front.empty() ? m.start_variables() : r.front[r.compromise].variables,
+                             r.report.evaluations + (r.lm ? r.lm->evaluations : 0),
+                             t == optim::Termination::WallTime || t == optim::Termination::Cancelled};
+        if (round > 0) {
+          // The start errors are the designer's start's; the convergence record and the log go on over the rounds.
+          r.start_curvature = result.start_curvature;
+          r.start_torsion = result.start_torsion;
+          r.best_curvature.insert(r.best_curvature.begin(), result.best_curvature.begin(), result.best_curvature.end());
+          r.best_torsion.insert(r.best_torsion.begin(), result.best_torsion.begin(), result.best_torsion.end());
+          for (const optim::GenerationLog& g : r.log.generations()) result.log.append(g);
+          r.log = std::move(result.log);
+        }
+        result = std::move(r);
+        return outcome;
+      });
+  result.rounds = std::move(rounds);
+  result.variables = result.rounds.back().variables;
+  if (settings.map) {
+    optim::Problem problem = curvature_torsion_problem(match);
+    problem.variables = result.variables;
+    result.map = match_fitness_map(problem, result.rounds.back().best, *settings.map, threads);
+  }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
   return result;
 }

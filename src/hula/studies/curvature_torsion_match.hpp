@@ -53,6 +53,11 @@ struct TorsionMatchSettings {
   double torsion_weight = 1.0;
   /// Levenberg–Marquardt settings of the polish.
   LmOptions lm{};
+  /// Re-runs with the bounds re-centred on the best compromise while it sits on a bound (run_recentred).
+  /// Default 0 = none.
+  std::size_t max_recentres = 0;
+  /// The map of both objectives around the best compromise, when asked for.
+  std::optional<MatchMapSettings> map{};
   /// Wall-clock limit of the NSGA-II run in seconds, 0 = none (`--time`; not a file member).
   double wall_time_seconds = 0.0;
   /// Cancellation token (SIGINT), not owned; the run ends with its front so far. Not a file member.
@@ -92,8 +97,15 @@ struct TorsionMatchResult {
   std::vector<double> best_curvature{}, best_torsion{};
   /// The polish report, when run.
   std::optional<LmResult> lm{};
-  /// Every individual of every generation, when asked for.
+  /// Every individual of every generation (of every round), when asked for.
   optim::RunLog log{};
+  /// The design variables and bounds of the round that gave the result.
+  std::vector<optim::Variable> variables{};
+  /// The re-centred rounds (TorsionMatchSettings::max_recentres), the first run first; the last is the result.
+  std::vector<RecentreRound> rounds{};
+  /// The map (TorsionMatchSettings::map) of both objectives (SweepResult::values: curvature + proximity
+  /// penalty, torsion) around the best compromise.
+  std::optional<optim::SweepResult> map{};
   /// Total wall time in seconds.
   double seconds = 0.0;
 };
@@ -103,7 +115,7 @@ struct TorsionMatchResult {
 /// @param settings the algorithm settings; @param seed, threads as every Flexo run
 /// @param keep_log collect every individual into the result's log
 /// @throws hula::Error(Errc::InvalidArgument) if the problem has no torsion target or is planar
-/// @throws hula::Error(Errc::InvalidOption) for invalid settings (before any evaluation)
+/// @throws hula::Error(Errc::InvalidOption) for invalid settings, map included (before any evaluation)
 /// @throws hula::Error(Errc::NumericalFailure) if no candidate could be evaluated
 [[nodiscard]] TorsionMatchResult run_curvature_torsion_match(const CurvatureMatch& match,
                                                              const TorsionMatchSettings& settings, std::uint64_t seed,

@@ -295,7 +295,7 @@ LmResult refine_levenberg_marquardt(const CurvatureMatch& match, std::span<const
   const std::vector<double>& w = match.setup().proximity;
   std::vector<double> root_weight, x0;
   if (!w.empty()) {
-    x0 = match.start_variables();
+    x0 = match.proximity_variables();
     for (std::size_t j = 0; j < x0.size(); ++j) root_weight.push_back(std::sqrt(w[match.variable_point(j)]));
   }
   problem.residual_count = m + root_weight.size();

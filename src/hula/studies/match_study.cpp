@@ -5,6 +5,8 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <string>
 #include <utility>
 
 #include "hula/core/error.hpp"
@@ -194,13 +196,8 @@ std::optional<std::vector<double>> direct_start(const CurvatureMatch& match, con
   }
 }
 
-}  // namespace
-
-MatchResult run_curvature_match(const CurvatureMatch& match, const MatchStudy& study, bool keep_log) {
-  study.lm.validate();
-  if (!(study.ga.precision > 0.0) || !std::isfinite(study.ga.precision))
-    throw Error(Errc::InvalidOption, "ga.precision = " + format_number(study.ga.precision) + " must be > 0",
-                {.field = "ga.precision"});
+// One run of the study's method on one problem (one round of run_recentred).
+MatchResult run_once(const CurvatureMatch& match, const MatchStudy& study, bool keep_log) {
   const auto t0 = std::chrono::steady_clock::now();
   MatchResult result;
   result.start = match.start_variables();
@@ -277,6 +274,141 @@ MatchResult run_curvature_match(const CurvatureMatch& match, const MatchStudy& s
       break;
   }
   result.after = match.distances(result.best);
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return result;
+}
+
+}  // namespace
+
+std::vector<optim::BoundHit> match_bound_hits(std::span<const optim::Variable> variables, std::span<const double> x) {
+  return optim::bound_hits(variables, x, kOnBoundFraction);
+}
+
+CurvatureMatchSetup recentred_setup(const CurvatureMatch& match, std::span<const double> x) {
+  CurvatureMatchSetup s = match.setup();  // its proximity_centre is filled in (the start, unless given)
+  match.points_from(x, s.points);
+  return s;
+}
+
+std::vector<RecentreRound> run_recentred(
+    const CurvatureMatch& match, std::size_t max_recentres,
+    const std::function<RoundOutcome(const CurvatureMatch&, std::size_t round)>& run) {
+  std::vector<RecentreRound> rounds;
+  std::optional<CurvatureMatch> recentred;
+  for (std::size_t round = 0;; ++round) {
+    const CurvatureMatch& m = recentred ? *recentred : match;
+    RoundOutcome outcome = run(m, round);
+    RecentreRound r;
+    r.variables = m.variables();
+    r.on_bound = match_bound_hits(r.variables, outcome.best);
+    r.after = m.distances(outcome.best);
+    r.best = std::move(outcome.best);
+    r.evaluations = outcome.evaluations;
+    const bool again = !r.on_bound.empty() && round < max_recentres && !outcome.stopped;
+    rounds.push_back(std::move(r));
+    if (!again) break;
+    recentred.emplace(recentred_setup(m, rounds.back().best));
+  }
+  return rounds;
+}
+
+std::array<std::size_t, 2> MatchMapSettings::axes(std::span<const optim::Variable> candidates) const {
+  std::array<std::size_t, 2> index{};
+  for (std::size_t k = 0; k < 2; ++k) {
+    const std::string field = "map.variables[" + std::to_string(k) + "]";
+    const auto it = std::find_if(candidates.begin(), candidates.end(),
+                                 [&](const optim::Variable& v) { return v.name == variables[k]; });
+    if (it == candidates.end()) {
+      std::string names;
+      for (const optim::Variable& v : candidates) names += (names.empty() ? "" : ", ") + v.name;
+      throw Error(Errc::InvalidOption,
+                  field + " = \"" + variables[k] + "\" is not a free design variable (" + names + ")",
+                  {.field = "map.variables", .index = k});
+    }
+    index[k] = static_cast<std::size_t>(it - candidates.begin());
+  }
+  if (index[0] == index[1])
+    throw Error(Errc::InvalidOption, "map.variables names \"" + variables[0] + "\" twice",
+                {.field = "map.variables", .index = 1});
+  if (grid < 2 || grid > 500)
+    throw Error(Errc::InvalidOption, "map.grid = " + std::to_string(grid) + " must be in 2 … 500",
+                {.field = "map.grid"});
+  for (const auto& [name, range] : {std::pair{"map.from", &from}, std::pair{"map.to", &to}})
+    if (*range)
+      for (std::size_t k = 0; k < 2; ++k)
+        if (!std::isfinite((**range)[k]))
+          throw Error(
+              Errc::InvalidOption,
+              std::string(name) + "[" + std::to_string(k) + "] = " + format_number((**range)[k]) + " must be finite",
+              {.field = name, .index = k});
+  return index;
+}
+
+optim::SweepResult match_fitness_map(const optim::Problem& problem, std::span<const double> at,
+                                     const MatchMapSettings& settings, std::size_t threads) {
+  const std::array<std::size_t, 2> axes = settings.axes(problem.variables);
+  optim::SweepOptions o;
+  o.nominal.assign(at.begin(), at.end());
+  o.threads = threads;
+  optim::SweepAxis x{.variable = axes[0], .steps = settings.grid};
+  optim::SweepAxis y{.variable = axes[1], .steps = settings.grid};
+  if (settings.from) {
+    x.from = (*settings.from)[0];
+    y.from = (*settings.from)[1];
+  }
+  if (settings.to) {
+    x.to = (*settings.to)[0];
+    y.to = (*settings.to)[1];
+  }
+  o.x = x;
+  o.y = y;
+  return optim::sweep(problem, o);
+}
+
+MatchResult run_curvature_match(const CurvatureMatch& match, const MatchStudy& study, bool keep_log) {
+  study.lm.validate();
+  if (!(study.ga.precision > 0.0) || !std::isfinite(study.ga.precision))
+    throw Error(Errc::InvalidOption, "ga.precision = " + format_number(study.ga.precision) + " must be > 0",
+                {.field = "ga.precision"});
+  if (study.map) (void)study.map->axes(match.variables());
+  const auto t0 = std::chrono::steady_clock::now();
+  MatchResult result;
+  if (study.method == MatchMethod::Direct) {
+    result = run_once(match, study, keep_log);
+  } else {
+    // Each round's result replaces `result` (keeping the designer's start); the rounds are set after the last.
+    std::vector<RecentreRound> rounds =
+        run_recentred(match, study.max_recentres, [&](const CurvatureMatch& m, std::size_t round) {
+          MatchStudy s = study;
+          if (round > 0) {
+            // "Each new GA run takes the best results of the previous run as initial variable values" (8.2.1).
+            s.header.seed = study.header.seed + round;
+            s.ga.seed_start = true;
+          }
+          MatchResult r = run_once(m, s, keep_log);
+          const optim::Termination t = r.ga_report.termination;
+          RoundOutcome outcome{r.best, r.ga_report.evaluations + (r.lm ? r.lm->evaluations : 0),
+                               t == optim::Termination::WallTime || t == optim::Termination::Cancelled};
+          if (round > 0) {
+            // The study's start stays the designer's; the convergence record and the log go on over the rounds.
+            r.start = std::move(result.start);
+            r.before = result.before;
+            r.convergence.insert(r.convergence.begin(), result.convergence.begin(), result.convergence.end());
+            for (const optim::GenerationLog& g : r.log.generations()) result.log.append(g);
+            r.log = std::move(result.log);
+          }
+          result = std::move(r);
+          return outcome;
+        });
+    result.rounds = std::move(rounds);
+  }
+  result.variables = result.rounds.empty() ? match.variables() : result.rounds.back().variables;
+  if (study.map) {
+    // The GA's objective (mean distance + proximity penalty towards the designer's start in every round).
+    optim::Problem problem = match.problem();
+    problem.variables = result.variables;
+    result.map = match_fitness_map(problem, result.best, *study.map, study.header.threads);
+  }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return result;
 }

@@ -10,14 +10,18 @@
 // one case in run_curvature_match.
 #pragma once
 
+#include <array>
 #include <cstddef>
+#include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "hula/optim/ga.hpp"
 #include "hula/optim/run_log.hpp"
+#include "hula/optim/sweep.hpp"
 #include "hula/studies/curvature_match.hpp"
 #include "hula/studies/direct_reconstruction.hpp"
 #include "hula/studies/hybrid_refine.hpp"
@@ -93,6 +97,79 @@ struct MatchDirectSettings {
   double end_tolerance = 1e-9;
 };
 
+/// A design variable within this fraction of its box width from a bound is reported "on the bound" and starts
+/// a re-centred round (issue 14 item 2): a GA's best pressing against a bound rarely lands exactly on it (Example
+/// 3's GA stops at x = 49.8 of 50 with a box of 20).
+inline constexpr double kOnBoundFraction = 0.02;
+
+/// The variables of x on a bound of `variables` (optim::bound_hits with kOnBoundFraction).
+[[nodiscard]] std::vector<optim::BoundHit> match_bound_hits(std::span<const optim::Variable> variables,
+                                                            std::span<const double> x);
+
+/// One round of the re-centred re-runs (thesis 7.4.1, 8.2.1): round 0 is the run on the study's own bounds.
+struct RecentreRound {
+  /// The round's design variables and bounds (round k > 0: centred on round k − 1's result, same widths).
+  std::vector<optim::Variable> variables{};
+  /// The round's result (the best design; the best compromise of the curvature + torsion study).
+  std::vector<double> best{};
+  /// Its distances from the targets.
+  MatchDistances after{};
+  /// Its variables on a bound of this round's box (match_bound_hits).
+  std::vector<optim::BoundHit> on_bound{};
+  /// Fitness evaluations of the round.
+  std::size_t evaluations = 0;
+};
+
+/// What one round of run_recentred reports back.
+struct RoundOutcome {
+  /// The round's result in the design variables of the round's problem.
+  std::vector<double> best{};
+  /// Its fitness evaluations.
+  std::size_t evaluations = 0;
+  /// The round was cut short (wall time, cancellation): no further round runs.
+  bool stopped = false;
+};
+
+/// The setup re-centred on design x (thesis 7.4.1): the data points moved to x, the offsets (the box widths) and
+/// everything else kept; the proximity regularisation still pulls towards the original start
+/// (CurvatureMatchSetup::proximity_centre).
+/// @param x match.dimension() values
+[[nodiscard]] CurvatureMatchSetup recentred_setup(const CurvatureMatch& match, std::span<const double> x);
+
+/// The re-centred re-runs of thesis 7.4.1: runs `run` on `match`; while the round's result sits on a bound
+/// (match_bound_hits) and fewer than `max_recentres` re-runs have been made, runs it again on the problem
+/// re-centred on that result (recentred_setup: same widths, free to leave the first box, which is what the
+/// thesis's remedy needs; optim::rerun_recentred shrinks inside the first box instead), unless the round was
+/// stopped (RoundOutcome::stopped). The free coordinates are
+/// the same in every round, so each round's design variables are the first problem's.
+/// @param run runs one round on the given problem (valid during the call) with its round number (0 first)
+/// @returns every round, the first one first; the last round's result is the study's
+[[nodiscard]] std::vector<RecentreRound> run_recentred(
+    const CurvatureMatch& match, std::size_t max_recentres,
+    const std::function<RoundOutcome(const CurvatureMatch&, std::size_t round)>& run);
+
+/// A fitness map over two design variables with the others held at the result (thesis appendix 6.1, 8.2.1
+/// "fitness function test"; the match studies' `map` member).
+struct MatchMapSettings {
+  /// Names of the two mapped variables (CurvatureMatch::variables(), e.g. "points[2].x"): columns, rows.
+  std::array<std::string, 2> variables{};
+  /// Samples per axis, 2 … 500 (bounds included). Default 21.
+  std::size_t grid = 21;
+  /// Ranges of the two variables; unset = the bounds of the round that gave the result.
+  std::optional<std::array<double, 2>> from{}, to{};
+
+  /// The indices of the two variables.
+  /// @throws hula::Error(Errc::InvalidOption) naming `map.variables[k]` (with the names there are) for an
+  ///   unknown or repeated name, `map.grid` out of range, `map.from` / `map.to` not finite
+  [[nodiscard]] std::array<std::size_t, 2> axes(std::span<const optim::Variable> candidates) const;
+};
+
+/// The map: optim::sweep of `problem` (the study's fitness problem with the result's box as its bounds) over the
+/// two variables, the others at `at`.
+/// @throws hula::Error(Errc::InvalidOption) as MatchMapSettings::axes
+[[nodiscard]] optim::SweepResult match_fitness_map(const optim::Problem& problem, std::span<const double> at,
+                                                   const MatchMapSettings& settings, std::size_t threads);
+
 /// A complete study: everything needed to repeat a run.
 struct MatchStudy {
   /// Envelope: seed and threads.
@@ -107,6 +184,11 @@ struct MatchStudy {
   LmOptions lm{};
   /// Direct-method settings.
   MatchDirectSettings direct{};
+  /// Re-runs with the bounds re-centred on a result that sits on a bound (run_recentred; GA and hybrid
+  /// methods). Default 0 = none.
+  std::size_t max_recentres = 0;
+  /// The fitness map around the result, when asked for.
+  std::optional<MatchMapSettings> map{};
 };
 
 /// Outcome of a run.
@@ -134,6 +216,12 @@ struct MatchResult {
   optim::RunLog log{};
   /// The best mutually distinct designs of the GA (MatchGaSettings::distinct), best first.
   std::vector<optim::Solution> distinct{};
+  /// The design variables and bounds of the round that gave `best` (the study's own without re-centring).
+  std::vector<optim::Variable> variables{};
+  /// The re-centred rounds (MatchStudy::max_recentres), the first run first; empty for the direct method.
+  std::vector<RecentreRound> rounds{};
+  /// The fitness map (MatchStudy::map) of the GA's objective (mean distance + proximity penalty) around `best`.
+  std::optional<optim::SweepResult> map{};
   /// Total wall time in seconds.
   double seconds = 0.0;
 };
@@ -141,8 +229,8 @@ struct MatchResult {
 /// Runs the study's method on the problem.
 /// @param match the problem (built from study.setup)
 /// @param study method and settings; header.seed and header.threads are used
-/// @param keep_log collect every individual into MatchResult::log
-/// @throws hula::Error(Errc::InvalidOption) for invalid GA or LM settings (before any evaluation)
+/// @param keep_log collect every individual into MatchResult::log (every round's)
+/// @throws hula::Error(Errc::InvalidOption) for invalid GA, LM or map settings (before any evaluation)
 /// @throws hula::Error(Errc::NumericalFailure) if no candidate could be evaluated
 [[nodiscard]] MatchResult run_curvature_match(const CurvatureMatch& match, const MatchStudy& study,
                                               bool keep_log = false);
