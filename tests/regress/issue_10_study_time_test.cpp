@@ -6,7 +6,6 @@
 #include <signal.h>
 
 #include <chrono>
-#include <thread>
 
 #include "cli.hpp"
 
@@ -37,8 +36,8 @@ TEST(Issue10StudyTime, MatchCurvatureSigintEndsWithBestSoFar) {
   TempDir dir;
   write(dir / "s.json", long_match_study());
   testing::RunningProcess p = testing::start_process(HULA_CLI_PATH, {"match-curvature", (dir / "s.json").string()});
-  // Give the process time to install its handler; a bounded wait, not a timing assertion.
-  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  // Wait (bounded) until the handler is installed: a SIGINT before it would end the process by the default action.
+  ASSERT_TRUE(p.wait_until_catches(SIGINT, std::chrono::seconds(20))) << "no SIGINT handler installed";
   ASSERT_TRUE(p.send(SIGINT));
   const ProcessResult r = p.wait();
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -53,8 +52,8 @@ TEST(Issue10StudyTime, DocRunSigintStoresBestSoFar) {
   const std::string file = (dir / "d.hula").string();
   ASSERT_EQ(hula({"doc", "new", file}).exit_code, 0);
   testing::RunningProcess p = testing::start_process(HULA_CLI_PATH, {"doc", "run", file, (dir / "s.json").string()});
-  // Give the process time to install its handler; a bounded wait, not a timing assertion.
-  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  // Wait (bounded) until the handler is installed: a SIGINT before it would end the process by the default action.
+  ASSERT_TRUE(p.wait_until_catches(SIGINT, std::chrono::seconds(20))) << "no SIGINT handler installed";
   ASSERT_TRUE(p.send(SIGINT));
   const ProcessResult r = p.wait();
   ASSERT_EQ(r.exit_code, 0) << r.err;

@@ -15,6 +15,8 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <string>
+#include <thread>
 #include <utility>
 
 extern char** environ;
@@ -61,6 +63,26 @@ std::string RunningProcess::err_so_far() const {
   std::ostringstream s;
   s << in.rdbuf();
   return s.str();
+}
+
+bool RunningProcess::catches(int signal) const {
+  std::ifstream in("/proc/" + std::to_string(pid_) + "/status");
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.rfind("SigCgt:", 0) != 0) continue;
+    const unsigned long long mask = std::strtoull(line.c_str() + 7, nullptr, 16);
+    return signal >= 1 && signal <= 64 && ((mask >> (signal - 1)) & 1ULL) != 0;
+  }
+  return false;
+}
+
+bool RunningProcess::wait_until_catches(int signal, std::chrono::milliseconds timeout) const {
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  while (!catches(signal)) {
+    if (std::chrono::steady_clock::now() >= deadline) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  return true;
 }
 
 bool RunningProcess::send(int signal) const noexcept { return ::kill(pid_, signal) == 0; }

@@ -5,6 +5,7 @@
 
 #include <sys/types.h>
 
+#include <chrono>
 #include <optional>
 #include <string>
 #include <vector>
@@ -33,6 +34,11 @@ class RunningProcess {
   [[nodiscard]] pid_t pid() const noexcept { return pid_; }
   /// What the process has written to stderr so far.
   [[nodiscard]] std::string err_so_far() const;
+  /// Whether the process has installed a handler for `signal` (the SigCgt mask of /proc/<pid>/status, Linux).
+  [[nodiscard]] bool catches(int signal) const;
+  /// Waits, polling every 5 ms, until the process catches `signal` (a handler is installed) or `timeout` passes:
+  /// what a test waits for before sending SIGINT, instead of sleeping and hoping. @returns whether it does.
+  [[nodiscard]] bool wait_until_catches(int signal, std::chrono::milliseconds timeout) const;
   /// Sends a signal (e.g. SIGINT). @returns false if kill() failed.
   bool send(int signal) const noexcept;
   /// Waits for the process to end and collects its output (once).
