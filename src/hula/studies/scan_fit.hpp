@@ -120,7 +120,7 @@ struct ScanFitResult {
 /// @throws hula::Error(Errc::CoincidentPoints) if all points coincide
 /// @throws hula::Error(Errc::NumericalFailure) if no count up to max_control_points meets the tolerance
 /// @throws hula::Error(Errc::InvalidOption) from options.validate()
-/// Complexity O(n k log n) for the ordering plus O(n p²) per least-squares solve (about 40–70 solves).
+/// Complexity O(n k log n) for the ordering plus O(n p²) per least-squares solve (about 35–55 solves).
 /// Example: `fit_scan(cloud, {}).faired` is the A-class curve; `.strays` the rejected indices.
 [[nodiscard]] ScanFitResult fit_scan(std::span<const Vec3> points, const ScanFitOptions& options = {});
 
