@@ -22,6 +22,10 @@ using testing::KnownCurve;
 struct CloudCase {
   KnownCurve curve;
   double noise;
+  // Most control points the tolerance fit may use: the largest count measured on seeds 1–15
+  // (shuffled and in scan order) when the count search took corrected feet and degrees 3–5;
+  // Open CASCADE's GeomAPI_PointsToBSpline needs 4, 4, 4, 6, 7, 7 on these clouds (seed 1).
+  std::size_t max_control_points;
 };
 
 class ScanFitOnKnownCurves : public ::testing::TestWithParam<CloudCase> {};
@@ -29,7 +33,8 @@ class ScanFitOnKnownCurves : public ::testing::TestWithParam<CloudCase> {};
 // Checks the judged properties on three known curves × noise 0.05 / 0.1 × 1 % strays, three seeds
 // each: every stray (by construction ≥ 2 from the curve) is rejected and no inlier is, every inlier
 // lies within the A-class 0.3 of the faired curve, and the faired curve has the known curve's
-// inflection count (the sine's / the arc's, by construction).
+// inflection count (the sine's / the arc's, by construction); the tolerance fit uses no more control
+// points than measured when this bound was set (a single cubic for the arc and the S-curve).
 TEST_P(ScanFitOnKnownCurves, FindsStraysKeepsInliersAndInflections) {
   const CloudCase c = GetParam();
   for (std::uint64_t seed : {1u, 2u, 3u}) {
@@ -48,13 +53,16 @@ TEST_P(ScanFitOnKnownCurves, FindsStraysKeepsInliersAndInflections) {
     // Fairing never makes the curvature variation worse than the tolerance fit's.
     EXPECT_LE(r.after.curvature_variation, r.before.curvature_variation * (1.0 + 1e-9));
     EXPECT_EQ(r.faired.dimension(), 2);
+    EXPECT_LE(r.fit.control_points().size(), c.max_control_points);
+    EXPECT_EQ(r.faired.control_points().size(), r.fit.control_points().size());
   }
 }
 
 INSTANTIATE_TEST_SUITE_P(Clouds, ScanFitOnKnownCurves,
-                         ::testing::Values(CloudCase{KnownCurve::Arc, 0.05}, CloudCase{KnownCurve::Arc, 0.1},
-                                           CloudCase{KnownCurve::SCurve, 0.05}, CloudCase{KnownCurve::SCurve, 0.1},
-                                           CloudCase{KnownCurve::Wave, 0.05}, CloudCase{KnownCurve::Wave, 0.1}));
+                         ::testing::Values(CloudCase{KnownCurve::Arc, 0.05, 4}, CloudCase{KnownCurve::Arc, 0.1, 4},
+                                           CloudCase{KnownCurve::SCurve, 0.05, 4},
+                                           CloudCase{KnownCurve::SCurve, 0.1, 4}, CloudCase{KnownCurve::Wave, 0.05, 5},
+                                           CloudCase{KnownCurve::Wave, 0.1, 6}));
 
 // Checks that the faired curve stays near the known curve where there are data: at the foot of
 // every kept point its distance to the sampled curve (dense polyline) is within the tolerance (the
@@ -77,6 +85,20 @@ TEST(ScanFit, OrderedInputSkipsOrdering) {
   const ScanFitResult r = fit_scan(cloud.points, ScanFitOptions{.ordered = true});
   EXPECT_EQ(r.strays, cloud.strays);
   EXPECT_EQ(r.after.inflections, 1u);
+}
+
+// Checks that min_degree = degree fixes the degree: the S-curve then needs a quintic (6 control points,
+// one piece) where degrees 3–5 find a single cubic (4), both within the tolerance.
+TEST(ScanFit, MinDegreeFixesTheDegree) {
+  const testing::Cloud cloud = testing::scanned_cloud(CloudSpec{.curve = KnownCurve::SCurve, .noise = 0.1, .seed = 2});
+  const ScanFitResult any = fit_scan(cloud.points);
+  const ScanFitResult quintic = fit_scan(cloud.points, ScanFitOptions{.degree = 5, .min_degree = 5});
+  EXPECT_EQ(any.fit.degree(), 3);
+  EXPECT_EQ(any.fit.control_points().size(), 4u);
+  EXPECT_EQ(quintic.fit.degree(), 5);
+  EXPECT_EQ(quintic.fit.control_points().size(), 6u);
+  EXPECT_LE(quintic.after.max_deviation, kClassATolerance);
+  EXPECT_EQ(quintic.strays, cloud.strays);
 }
 
 // Checks the B-class tolerance 0.5 gives no more control points than A-class 0.3 on the same cloud.
@@ -115,6 +137,8 @@ TEST(ScanFit, RejectsBadInputNamingIt) {
                     "tolerance");
   HULA_EXPECT_ERROR(static_cast<void>(fit_scan(cloud.points, ScanFitOptions{.degree = 2})), Errc::InvalidOption,
                     "degree");
+  HULA_EXPECT_ERROR(static_cast<void>(fit_scan(cloud.points, ScanFitOptions{.degree = 4, .min_degree = 5})),
+                    Errc::InvalidOption, "min_degree");
   std::vector<Vec3> same(20, Vec3{1, 1, 0});
   HULA_EXPECT_ERROR(static_cast<void>(order_along_curve(same)), Errc::CoincidentPoints, "coincide");
 }

@@ -26,6 +26,7 @@ struct FitArgs {
   std::optional<std::string> surface_class;
   std::optional<double> tolerance;
   std::optional<int> degree;
+  std::optional<int> min_degree;
   bool ordered = false;
   bool no_fair = false;
   std::string output;
@@ -103,6 +104,7 @@ int run_fit(const FitArgs& a) {
     study.options.tolerance = *a.surface_class == "A" ? studies::kClassATolerance : studies::kClassBTolerance;
   if (a.tolerance) study.options.tolerance = *a.tolerance;
   if (a.degree) study.options.degree = *a.degree;
+  if (a.min_degree) study.options.min_degree = *a.min_degree;
   if (a.ordered) study.options.ordered = true;
   if (a.no_fair) study.options.fair = false;
   const studies::ScanFitResult r = studies::fit_scan(study.points, study.options);
@@ -130,7 +132,10 @@ Command add_fit(CLI::App& app) {
       ->check(CLI::IsMember({"A", "B"}));
   sub->add_option("--tolerance", a->tolerance, "Largest distance of a kept point from the curve (default 0.3)")
       ->check(CLI::PositiveNumber);
-  sub->add_option("--degree", a->degree, "Degree p in [3, 9] (default 5)")->check(CLI::Range(3, 9));
+  sub->add_option("--degree", a->degree, "Highest degree p in [3, 9] (default 5)")->check(CLI::Range(3, 9));
+  sub->add_option("--min-degree", a->min_degree,
+                  "Lowest degree in [3, degree], taken only when it needs fewer control points (default 3)")
+      ->check(CLI::Range(3, 9));
   sub->add_flag("--ordered", a->ordered, "The points are already in order along the curve");
   sub->add_flag("--no-fair", a->no_fair, "Stop after the tolerance fit (no fairing)");
   sub->add_option("-o,--output", a->output, "Curve file to write (the faired curve, atomically)")->required();

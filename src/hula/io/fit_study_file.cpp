@@ -14,7 +14,7 @@ namespace jr = json;
 
 FitStudy fit_study_from_json(const StudyDocument& document, const PathResolver& resolver) {
   const Json& body = document.body;
-  check_members(body, {"points", "class", "tolerance", "degree", "ordered", "fair"});
+  check_members(body, {"points", "class", "tolerance", "degree", "min_degree", "ordered", "fair"});
   FitStudy s;
   s.header = document.header;
   s.header.kind = "fit";
@@ -42,6 +42,8 @@ FitStudy fit_study_from_json(const StudyDocument& document, const PathResolver& 
   if (tol != nullptr) s.options.tolerance = jr::get_number(*tol, jr::root_path("tolerance"));
   if (const Json* d = jr::optional_member(body, "degree"))
     s.options.degree = static_cast<int>(jr::get_integer(*d, jr::root_path("degree"), 3, 9));
+  if (const Json* d = jr::optional_member(body, "min_degree"))
+    s.options.min_degree = static_cast<int>(jr::get_integer(*d, jr::root_path("min_degree"), 3, 9));
   auto flag = [&](std::string_view name, bool fallback) {
     const Json* v = jr::optional_member(body, name);
     if (v == nullptr) return fallback;
@@ -65,6 +67,7 @@ Json fit_study_to_json(const FitStudy& study) {
   }
   j["tolerance"] = study.options.tolerance;
   j["degree"] = study.options.degree;
+  j["min_degree"] = study.options.min_degree;
   j["ordered"] = study.options.ordered;
   j["fair"] = study.options.fair;
   return j;

@@ -22,7 +22,7 @@ struct FitStudy {
   std::vector<Vec3> points;
   /// The points file name as written, empty for inline points.
   std::string points_file{};
-  /// "class" ("A" → 0.3, "B" → 0.5) or "tolerance" (> 0), "degree", "ordered", "fair".
+  /// "class" ("A" → 0.3, "B" → 0.5) or "tolerance" (> 0), "degree", "min_degree", "ordered", "fair".
   studies::ScanFitOptions options{};
 };
 
@@ -32,7 +32,7 @@ struct FitStudy {
 ///   the path); hula::Error(Errc::InvalidOption) naming the option out of range
 [[nodiscard]] FitStudy fit_study_from_json(const StudyDocument& document, const PathResolver& resolver);
 
-/// The resolved setup (points inline or by file name, tolerance, degree, ordered, fair) as a study document.
+/// The resolved setup (points inline or by file name, tolerance, degrees, ordered, fair) as a study document.
 [[nodiscard]] Json fit_study_to_json(const FitStudy& study);
 
 /// The result: tolerance, strays (indices), noise scale, smoothing, fits, and for "before" (the

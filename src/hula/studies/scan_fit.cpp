@@ -6,8 +6,10 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <array>
 #include <boost/math/quadrature/gauss.hpp>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <optional>
 #include <string>
@@ -27,6 +29,10 @@ void ScanFitOptions::validate() const {
   if (degree < 3 || degree > 9)
     throw Error(Errc::InvalidOption, "degree must be in [3, 9], got " + std::to_string(degree),
                 ErrorWhere{.field = "degree"});
+  if (min_degree < 3 || min_degree > degree)
+    throw Error(Errc::InvalidOption,
+                "min_degree must be in [3, degree = " + std::to_string(degree) + "], got " + std::to_string(min_degree),
+                ErrorWhere{.field = "min_degree"});
   if (max_control_points < static_cast<std::size_t>(degree) + 1)
     throw Error(Errc::InvalidOption,
                 "max_control_points must be at least degree + 1, got " + std::to_string(max_control_points),
@@ -60,6 +66,14 @@ constexpr double kRidge = 1e-9;
 constexpr double kLogLambdaLow = -10.0;
 constexpr double kLogLambdaHigh = 4.0;
 constexpr int kFairingSteps = 24;
+// Rounds of one count-search candidate (a point-distance solve, then tangent-distance solves, each
+// followed by the foot correction), and the stall rule: a round that lowers the root of the sum of
+// squared distances by less than this fraction ends a candidate that has not met the tolerance.
+constexpr int kCorrectionRounds = 12;
+constexpr double kStallFraction = 0.01;
+// Share α of the point distance in the tangent-distance solve (the rest is the distance to the
+// tangent line at the foot).
+constexpr double kPointDistanceShare = 0.1;
 // Rounds of stage 3 that re-admit rejected points the tolerance fit passes within the tolerance.
 constexpr int kReadmissionPasses = 3;
 
@@ -152,6 +166,119 @@ std::vector<Vec3> solve(const Normal& ne, const Matrix& g, double lambda_rel) {
   return ctrl;
 }
 
+// The curve as one polynomial per knot span in the local variable x = t − u_s, its Taylor
+// coefficients at the span start (A2.3 once per span): C, C' and C'' by Horner in a few flops,
+// for the foot corrections and tangent-distance solves that evaluate every point each round.
+class SpanPolynomials {
+ public:
+  SpanPolynomials(const nurbs::KnotVector& knots, std::span<const Vec3> ctrl) : p1_(knots.degree() + 1) {
+    const int p = knots.degree();
+    const auto u = knots.values();
+    nurbs::BasisWorkspace work;
+    for (std::size_t s = static_cast<std::size_t>(p); s + 1 < u.size() - static_cast<std::size_t>(p); ++s) {
+      if (!(u[s + 1] > u[s])) continue;
+      starts_.push_back(u[s]);
+      const auto ders = nurbs::basis_derivatives(knots, s, u[s], p, work);
+      double factorial = 1.0;
+      for (int k = 0; k <= p; ++k) {
+        if (k > 0) factorial *= k;
+        Vec3 a{};
+        for (int j = 0; j <= p; ++j)
+          a = a + ders[static_cast<std::size_t>(k * p1_ + j)] * ctrl[s - static_cast<std::size_t>(p - j)];
+        coefficients_.push_back((1.0 / factorial) * a);
+      }
+    }
+  }
+
+  // {C(t), C'(t), C''(t)} (order 0 leaves the derivatives zero).
+  std::array<Vec3, 3> evaluate(double t, int order) const {
+    const auto it = std::upper_bound(starts_.begin() + 1, starts_.end(), t);
+    const auto s = static_cast<std::size_t>(it - starts_.begin()) - 1;
+    const double x = t - starts_[s];
+    const Vec3* a = &coefficients_[s * static_cast<std::size_t>(p1_)];
+    Vec3 c = a[p1_ - 1], d1{}, d2{};
+    for (int k = p1_ - 2; k >= 0; --k) {
+      if (order >= 2) d2 = d2 * x + 2.0 * d1;
+      if (order >= 1) d1 = d1 * x + c;
+      c = c * x + a[k];
+    }
+    return {c, d1, d2};
+  }
+
+ private:
+  int p1_;
+  std::vector<double> starts_;      // first parameter of each non-empty span
+  std::vector<Vec3> coefficients_;  // p + 1 Taylor coefficients per span
+};
+
+// Tangent-distance step (Wang, Pottmann, Liu, "Fitting B-spline curves to point clouds by
+// curvature-based squared distance minimization", ACM TOG 25, 2006: TDM with a share α of the
+// point distance): minimises Σ wᵢ (|rᵢ|² − (1 − α)(rᵢ·Tᵢ)²) over the control points, rᵢ = C(tᵢ) − Qᵢ and
+// Tᵢ the unit tangent of the current curve `ctrl` at the foot tᵢ — the squared distance to the
+// tangent line, a Gauss–Newton step of the foot-point distance. It moves the curve across the
+// data, where plain parameter correction mostly slides the feet along it and crawls. The α share
+// keeps the tangential motion of the control points determined. `dim` is 2 (planar, z = 0) or 3.
+std::vector<Vec3> solve_tangent_distance(const nurbs::KnotVector& knots, std::span<const Vec3> ctrl,
+                                         std::span<const Vec3> pts, std::span<const double> params,
+                                         std::span<const double> weights, const Matrix& g, int dim) {
+  const int p = knots.degree();
+  const std::size_t p1 = static_cast<std::size_t>(p) + 1;
+  const auto d = static_cast<Eigen::Index>(dim);
+  const auto size = static_cast<Eigen::Index>(ctrl.size()) * d;
+  Matrix a = Matrix::Zero(size, size);
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(size);
+  const SpanPolynomials curve(knots, ctrl);
+  std::vector<double> ders(p1);
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const double wi = weights[i];
+    if (wi <= 0.0) continue;
+    const std::size_t span = knots.find_span(params[i]);
+    nurbs::basis_functions(knots, span, params[i], ders);
+    const std::size_t first = span - static_cast<std::size_t>(p);
+    Vec3 tangent = curve.evaluate(params[i], 1)[1];
+    const double speed = std::sqrt(norm_squared(tangent));
+    if (speed > 0.0) tangent = (1.0 / speed) * tangent;
+    // M = I − (1 − α) T Tᵀ (T = 0 where the curve stops: the point distance alone).
+    const double tv[3] = {tangent.x, tangent.y, tangent.z};
+    const double qv[3] = {pts[i].x, pts[i].y, pts[i].z};
+    double mm[3][3];
+    double mq[3];
+    for (Eigen::Index r = 0; r < d; ++r) {
+      mq[r] = 0.0;
+      for (Eigen::Index c = 0; c < d; ++c) {
+        mm[r][c] = (r == c ? 1.0 : 0.0) - (1.0 - kPointDistanceShare) * tv[r] * tv[c];
+        mq[r] += mm[r][c] * qv[c];
+      }
+    }
+    for (std::size_t j = 0; j < p1; ++j) {
+      const double wj = wi * ders[j];
+      const Eigen::Index rj = static_cast<Eigen::Index>(first + j) * d;
+      for (Eigen::Index r = 0; r < d; ++r) rhs(rj + r) += wj * mq[r];
+      for (std::size_t k = 0; k < p1; ++k) {
+        const double wjk = wj * ders[k];
+        const Eigen::Index ck = static_cast<Eigen::Index>(first + k) * d;
+        for (Eigen::Index r = 0; r < d; ++r)
+          for (Eigen::Index c = 0; c < d; ++c) a(rj + r, ck + c) += wjk * mm[r][c];
+      }
+    }
+  }
+  const double scale = a.trace() / (static_cast<double>(dim) * std::max(g.trace(), std::numeric_limits<double>::min()));
+  for (Eigen::Index j = 0; j < g.rows(); ++j)
+    for (Eigen::Index k = 0; k < g.cols(); ++k)
+      for (Eigen::Index r = 0; r < d; ++r) a(j * d + r, k * d + r) += kRidge * scale * g(j, k);
+  const Eigen::LDLT<Matrix> ldlt(a);
+  const Eigen::VectorXd x = ldlt.solve(rhs);
+  if (ldlt.info() != Eigen::Success || !x.allFinite())
+    throw Error(Errc::NumericalFailure, "the tangent-distance system of the scan fit is singular",
+                ErrorWhere{.field = "points"});
+  std::vector<Vec3> out(ctrl.size());
+  for (std::size_t j = 0; j < ctrl.size(); ++j) {
+    const Eigen::Index r = static_cast<Eigen::Index>(j) * d;
+    out[j] = {x(r), x(r + 1), dim == 3 ? x(r + 2) : 0.0};
+  }
+  return out;
+}
+
 // C(tᵢ) from a design.
 Vec3 eval_design(const Design& d, std::size_t i, std::span<const Vec3> ctrl) {
   Vec3 c{};
@@ -164,23 +291,12 @@ Vec3 eval_design(const Design& d, std::size_t i, std::span<const Vec3> ctrl) {
 // returns the distances |C(t) − Q| at the corrected parameters.
 void correct_parameters(const nurbs::KnotVector& knots, std::span<const Vec3> ctrl, std::span<const Vec3> pts,
                         std::span<double> params, std::span<double> dist, int steps) {
-  const int p = knots.degree();
-  const std::size_t p1 = static_cast<std::size_t>(p) + 1;
-  nurbs::BasisWorkspace work;
-  std::vector<double> n0(p1);
+  const SpanPolynomials curve(knots, ctrl);
   for (std::size_t i = 0; i < pts.size(); ++i) {
     double t = params[i];
     bool moved = true;
     for (int it = 0; it < steps; ++it) {
-      const std::size_t span = knots.find_span(t);
-      const auto ders = nurbs::basis_derivatives(knots, span, t, 2, work);
-      Vec3 d0{}, d1{}, d2{};
-      for (std::size_t j = 0; j < p1; ++j) {
-        const Vec3& cp = ctrl[span - static_cast<std::size_t>(p) + j];
-        d0 = d0 + ders[j] * cp;
-        d1 = d1 + ders[p1 + j] * cp;
-        d2 = d2 + ders[2 * p1 + j] * cp;
-      }
+      const auto [d0, d1, d2] = curve.evaluate(t, 2);
       const Vec3 r = d0 - pts[i];
       const double f = dot(d1, r);
       const double df = dot(d2, r) + dot(d1, d1);
@@ -194,14 +310,8 @@ void correct_parameters(const nurbs::KnotVector& knots, std::span<const Vec3> ct
       t = next;
     }
     params[i] = t;
-    if (moved) {
-      // The distance at the last Newton iterate needs the position only (A2.2, no derivatives).
-      const std::size_t span = knots.find_span(t);
-      nurbs::basis_functions(knots, span, t, n0);
-      Vec3 c{};
-      for (std::size_t j = 0; j < p1; ++j) c = c + n0[j] * ctrl[span - static_cast<std::size_t>(p) + j];
-      dist[i] = std::sqrt(norm_squared(pts[i] - c));
-    }
+    // The distance at the last Newton iterate needs the position only.
+    if (moved) dist[i] = std::sqrt(norm_squared(pts[i] - curve.evaluate(t, 0)[0]));
   }
 }
 
@@ -314,32 +424,69 @@ ScanFitResult fit_scan(std::span<const Vec3> points, const ScanFitOptions& optio
     for (std::size_t i = 0; i < m; ++i) weights[i] = dist[i] > options.tolerance ? 0.0 : 1.0;
   }
 
-  // Stage 3: the fewest control points (uniform knots) within the tolerance at the foot parameters.
-  // Least-squares fit with n control points at the parameters t and its deviation there
-  // (|C(tᵢ) − Qᵢ| ≥ the closest-point distance, so the test is conservative).
-  auto fit_count = [&](std::size_t n, std::span<const double> t) {
-    const nurbs::KnotVector knots = nurbs::KnotVector::uniform_clamped(n, p, {0.0, 1.0});
-    const Design d = make_design(knots, t);
-    std::vector<Vec3> ctrl = solve(assemble(d, n, points, weights), penalty_matrix(knots), kRidge);
-    ++out.fits;
-    const double worst = max_design_deviation(d, ctrl, points, weights);
-    return std::pair{nurbs::NurbsCurve(knots, std::move(ctrl), {}, dimension), worst};
+  // Stage 3: the fewest control points within the tolerance, measured at corrected feet.
+  // A candidate (degree q, n control points, uniform knots) is fitted with parameter correction
+  // (Hoschek's intrinsic parametrisation): a least-squares solve at the current feet t, then each
+  // foot moved to its Newton projection on the new curve, then tangent-distance solves (the
+  // Gauss–Newton step of the foot-point distance, solve_tangent_distance) each followed by the
+  // projection. The deviation of a round is |C(tᵢ) − Qᵢ| at the corrected feet of the curve just
+  // solved: at least the closest-point distance and close to it, so a candidate meets the tolerance
+  // only if every kept point truly lies within it. Rounds stop when the tolerance is met, after
+  // kCorrectionRounds, or when the root of the sum of squares stalls (a count that fails); the round
+  // with the lowest worst deviation is the candidate's curve.
+  struct Candidate {
+    nurbs::NurbsCurve curve;
+    std::vector<double> params, dist;
+    double worst = 0.0;
   };
-  std::optional<nurbs::NurbsCurve> fit_found;
+  auto fit_count = [&](int q, std::size_t n, std::span<const double> t0) {
+    const nurbs::KnotVector knots = nurbs::KnotVector::uniform_clamped(n, q, {0.0, 1.0});
+    const Matrix g = penalty_matrix(knots);
+    std::vector<double> t(t0.begin(), t0.end()), d(m, 0.0);
+    std::optional<Candidate> last;
+    double previous_rms = std::numeric_limits<double>::infinity();
+    for (int round = 0; round < kCorrectionRounds; ++round) {
+      std::vector<Vec3> ctrl =
+          !last ? solve(assemble(make_design(knots, t), n, points, weights), g, kRidge)
+                : solve_tangent_distance(knots, last->curve.control_points(), points, t, weights, g, dimension);
+      ++out.fits;
+      correct_parameters(knots, ctrl, points, t, d, kProjectionSteps);
+      double worst = 0.0, squares = 0.0;
+      for (std::size_t i = 0; i < m; ++i)
+        if (weights[i] > 0.0) {
+          worst = std::max(worst, d[i]);
+          squares += d[i] * d[i];
+        }
+      // The worst deviation is not monotone over the rounds (the squares are): the lowest is kept.
+      if (!last || worst < last->worst)
+        last = Candidate{nurbs::NurbsCurve(knots, std::move(ctrl), {}, dimension), t, d, worst};
+      if (last->worst <= options.tolerance) break;
+      const double rms = std::sqrt(squares);
+      if (rms > (1.0 - kStallFraction) * previous_rms) break;
+      previous_rms = rms;
+    }
+    return *last;
+  };
+  std::optional<Candidate> chosen;
   for (int pass = 0;; ++pass) {
     std::size_t kept = 0;
     for (std::size_t i = 0; i < m; ++i) kept += weights[i] > 0.0 ? 1 : 0;
-    if (kept < static_cast<std::size_t>(p) + 1)
+    if (kept < static_cast<std::size_t>(options.min_degree) + 1)
       throw Error(Errc::TooFewPoints, "only " + std::to_string(kept) + " points are kept after rejecting strays",
                   ErrorWhere{.field = "points"});
-    // Growth by half from p + 1 until a count meets the tolerance, then bisection between the last
-    // count that failed and the first that met it (counts far above the need overfit the noise and
-    // make the foot correction unreliable, so they are not tried first).
     const std::size_t n_max = std::min(options.max_control_points, kept);
-    std::size_t lo = static_cast<std::size_t>(p), hi = static_cast<std::size_t>(p) + 1;
+    // At the highest degree p: growth by half from p + 1 until a count meets the tolerance, then
+    // bisection between the last count that failed and the first that met it (counts far above the
+    // need overfit the noise and make the foot correction unreliable, so they are not tried first).
+    const int top = std::min(p, static_cast<int>(n_max) - 1);  // ≥ min_degree: kept > min_degree
+    std::size_t lo = static_cast<std::size_t>(top), hi = lo + 1;
+    std::optional<Candidate> best;
     for (;;) {
-      if (fit_count(hi, params).second <= options.tolerance) break;
-      if (hi == n_max)
+      if (Candidate c = fit_count(top, hi, params); c.worst <= options.tolerance) {
+        best = std::move(c);
+        break;
+      }
+      if (hi >= n_max)
         throw Error(Errc::NumericalFailure,
                     "no fit with up to " + std::to_string(n_max) + " control points keeps every kept point within " +
                         std::to_string(options.tolerance),
@@ -349,25 +496,34 @@ ScanFitResult fit_scan(std::span<const Vec3> points, const ScanFitOptions& optio
     }
     while (hi - lo > 1) {
       const std::size_t mid = lo + (hi - lo) / 2;
-      if (fit_count(mid, params).second <= options.tolerance)
+      Candidate c = fit_count(top, mid, params);
+      if (c.worst <= options.tolerance) {
         hi = mid;
-      else
+        best = std::move(c);
+      } else {
         lo = mid;
+      }
     }
-    fit_found = fit_count(hi, params).first;
-    // Foot correction on the chosen fit and a re-fit at the feet, kept if it still meets the tolerance.
-    correct_parameters(fit_found->knots(), fit_found->control_points(), points, params, dist, kProjectionSteps);
-    if (auto refit = fit_count(hi, params); refit.second <= options.tolerance) {
-      fit_found = std::move(refit.first);
-      correct_parameters(fit_found->knots(), fit_found->control_points(), points, params, dist, kProjectionSteps);
-    }
+    // Lower degrees (as Open CASCADE's approximation tries degree after degree): at degree q < p a
+    // single Bézier piece needs only q + 1 control points, so fewer counts than p + 1 are reachable;
+    // from the best count minus one, downward while the count still meets the tolerance. Among equal
+    // counts the higher degree (smoother, Cᵖ⁻¹ at the knots) is kept.
+    for (int q = top - 1; q >= options.min_degree; --q)
+      for (std::size_t n = best->curve.control_points().size() - 1; n >= static_cast<std::size_t>(q) + 1; --n) {
+        Candidate c = fit_count(q, n, params);
+        if (c.worst > options.tolerance) break;
+        best = std::move(c);
+      }
+    chosen = std::move(best);
+    params = chosen->params;
+    dist = chosen->dist;
     if (pass == kReadmissionPasses) break;
     // Re-admission: a rejected point the tolerance fit passes within the tolerance (by the global
     // closest point) was rejected only because the robust fit fell short there (typically at an end).
     bool readmitted = false;
     for (std::size_t i = 0; i < m; ++i)
       if (weights[i] == 0.0) {
-        const nurbs::ClosestPointResult foot = nurbs::closest_point(*fit_found, points[i]);
+        const nurbs::ClosestPointResult foot = nurbs::closest_point(chosen->curve, points[i]);
         if (foot.distance <= options.tolerance) {
           weights[i] = 1.0;
           params[i] = foot.t;
@@ -378,7 +534,7 @@ ScanFitResult fit_scan(std::span<const Vec3> points, const ScanFitOptions& optio
   }
   for (std::size_t i = 0; i < m; ++i)
     if (weights[i] == 0.0) out.strays.push_back(i);
-  const nurbs::NurbsCurve fit = *fit_found;
+  const nurbs::NurbsCurve fit = chosen->curve;
 
   // Stage 4: fairing on fit's knots at the fit's foot parameters: the largest λ within the tolerance.
   nurbs::NurbsCurve faired = fit;

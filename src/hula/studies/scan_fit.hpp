@@ -13,10 +13,18 @@
 //     vanishes beyond c = max(4.685 σ̂, tolerance). A point farther than the
 //     tolerance from the converged robust fit is a stray (no curve within the
 //     class band may keep it);
-//  3. tolerance fit: the fewest control points (uniform knots, found by bisection
-//     on the count) whose least-squares fit of the kept points keeps each within
-//     the tolerance; a stray that this fit passes within the tolerance (global
-//     closest point) is re-admitted and the stage repeated (at most 3 times);
+//  3. tolerance fit: the fewest control points (uniform knots) whose fit keeps
+//     every kept point within the tolerance, measured at corrected feet: each
+//     candidate is fitted with parameter correction — a least-squares solve,
+//     Newton projection of the feet, then tangent-distance solves (Wang, Pottmann
+//     and Liu's TDM, the Gauss–Newton step of the foot-point distance) each with
+//     its projection — so a count passes only if the curve itself is within the
+//     tolerance. At the highest degree the count grows by half from p + 1, then
+//     bisection; lower degrees down to min_degree are then tried below the count
+//     found (a single Bézier piece of degree q needs only q + 1 control points),
+//     the higher degree kept among equal counts. A stray that this fit passes
+//     within the tolerance (global closest point) is re-admitted and the stage
+//     repeated (at most 3 times);
 //  4. fairing: on the same knots, the fit minimises Σ|C(tᵢ) − Qᵢ|² + λ ∫|C'''(t)|² dt
 //     with the largest λ (bisection on log λ) that still keeps every kept point within
 //     the tolerance. For a curve parameterised near arc length, |C'''|² = κ'² + κ⁴
@@ -46,8 +54,12 @@ inline constexpr double kClassBTolerance = 0.5;
 struct ScanFitOptions {
   /// Largest distance of a kept point from the curve, model units. Default A-class 0.3; valid > 0.
   double tolerance = kClassATolerance;
-  /// Degree p of the B-spline. Default 5 (C⁴: κ' continuous); valid [3, 9] (the penalty needs C''').
+  /// Highest degree p of the B-spline. Default 5 (C⁴: κ' continuous); valid [3, 9] (the penalty needs C''').
   int degree = 5;
+  /// Lowest degree stage 3 may choose, only when it needs fewer control points than every higher
+  /// degree (as Open CASCADE's approximation tries degree after degree). Default 3; valid
+  /// [3, degree]; min_degree = degree fixes the degree.
+  int min_degree = 3;
   /// The points are already in order along the curve (skip stage 1; keys = index / (n − 1)). Default false.
   bool ordered = false;
   /// Ordering options (stage 1). Default {}.
@@ -108,7 +120,7 @@ struct ScanFitResult {
 /// @throws hula::Error(Errc::CoincidentPoints) if all points coincide
 /// @throws hula::Error(Errc::NumericalFailure) if no count up to max_control_points meets the tolerance
 /// @throws hula::Error(Errc::InvalidOption) from options.validate()
-/// Complexity O(n k log n) for the ordering plus O(n p²) per least-squares solve (about 40 solves).
+/// Complexity O(n k log n) for the ordering plus O(n p²) per least-squares solve (about 35–55 solves).
 /// Example: `fit_scan(cloud, {}).faired` is the A-class curve; `.strays` the rejected indices.
 [[nodiscard]] ScanFitResult fit_scan(std::span<const Vec3> points, const ScanFitOptions& options = {});
 
