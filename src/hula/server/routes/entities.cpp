@@ -3,8 +3,9 @@
 // file, "name"?, "attributes"?} (201), GET|PUT|PATCH|DELETE
 // /api/documents/{name}/entities/{label}, and POST .../{label}/analysis
 // (analysis.hpp, read-only), POST .../{label}/fair-preview (the fairing
-// assistant's ghost, studies::fair_within_tolerance, read-only: accepted by a
-// PUT of its curve), POST .../{label}/insert-knot {"u", "times"?},
+// assistant's ghost of the entity or of a "curve" sent with it,
+// studies::fair_within_tolerance, read-only: accepted by a PUT of its curve), POST .../{label}/insert-knot {"u",
+// "times"?},
 // .../{label}/elevate {"times"?}, .../{label}/reverse and .../{label}/split {"t"}
 // (oli::Edit through the document's kernel; split answers the two pieces'
 // labels, first [a, t] then [t, b]). A PATCH {"move": [{"index", "to"}],
@@ -84,15 +85,18 @@ int read_times(const Json& body) {
   return t ? static_cast<int>(json::get_integer(*t, json::root_path("times"), 1, 64)) : 1;
 }
 
-// {"tolerance", "method"?, "budget"?, "analysis"?} of a fairing preview.
+// {"tolerance", "method"?, "budget"?, "analysis"?, "curve"?} of a fairing preview; "curve", when
+// given, is faired instead of the entity (the page's edit in flight: a drag's latest position, sent
+// beside the PATCH that stores it rather than after its answer).
 struct FairPreviewRequest {
   studies::AssistantOptions options{};
   std::optional<AnalysisRequest> analysis{};
+  std::optional<curve::Curve> curve{};
 };
 
 FairPreviewRequest read_fair_preview(const Json& body) {
   const json::JsonPath root;
-  json::reject_unknown_members(body, root, {"tolerance", "method", "budget", "analysis"});
+  json::reject_unknown_members(body, root, {"tolerance", "method", "budget", "analysis", "curve"});
   FairPreviewRequest r;
   r.options.tolerance = json::get_number(json::require_member(body, root, "tolerance"), root.member("tolerance"));
   if (const Json* m = json::optional_member(body, "method"))
@@ -100,6 +104,7 @@ FairPreviewRequest read_fair_preview(const Json& body) {
   if (const Json* b = json::optional_member(body, "budget"))
     r.options.time_budget_seconds = json::get_number(*b, root.member("budget"));
   if (const Json* a = json::optional_member(body, "analysis")) r.analysis = analysis_request_from_json(*a);
+  if (const Json* c = json::optional_member(body, "curve")) r.curve = io::curve_from_json(*c);
   r.options.validate();
   return r;
 }
@@ -232,7 +237,8 @@ void add_entities(Router& router, const Context& context) {
     const auto [doc, label] = entity_of(docs, request);
     const auto [e, revision] = doc->read([&](const oli::Document& d) { return std::pair(d.get(label), d.revision()); });
     // Computed outside the lock from the immutable snapshot; the document is not changed.
-    const studies::AssistantResult r = studies::fair_within_tolerance(e.curve(), preview.options);
+    const studies::AssistantResult r =
+        studies::fair_within_tolerance(preview.curve ? *preview.curve : e.curve(), preview.options);
     Json out = Json::object();
     out["revision"] = revision;
     out["method"] = std::string(studies::assistant_method_name(preview.options.method));
