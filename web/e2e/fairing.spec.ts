@@ -1,7 +1,8 @@
 // The fairing assistant (issue 13 item 6), in chromium against the real
 // server, on the thesis's 7.4.2 Example 1–3 point sets (examples/workspace):
 // drag a data point twice with the assistant on (minimal curvature variation,
-// tolerance 1); the ghost of the final position (its data points are the
+// tolerance 1), released at once after the last move and then held still; the
+// ghost of the final position (its data points are the
 // entity's, read over the API) is drawn with its comb and its κ overlaid on the
 // graph; `A` accepts it as one undo step, and the API confirms the lower
 // ∫κ′² ds and every data point within the tolerance. The latency from the last
@@ -120,6 +121,33 @@ test('fairing assistant: ghost after a drag, accepted with A (Examples 1–3)', 
       await page.mouse.move(from.x, from.y);
       await page.mouse.down();
       for (let i = 1; i <= 4; i++) await page.mouse.move(from.x + 6 * i, from.y - 8 * i);
+      // The second drag rests with the button held: the ghost of the held position comes once the
+      // pointer stops, before the release (which then asks nothing more: the ghost is of that position).
+      let held = 0;
+      if (drag === 1) {
+        await expect
+          .poll(() =>
+            page.evaluate(
+              ([l, k]) => {
+                const app = window.__hula.app;
+                const ghost = app.fairing.preview?.result.data_points[k];
+                const curve = app.heldCurve(l) as { points: number[][] } | undefined;
+                const p = curve?.points[k];
+                // ... and drawn: nothing asked or scheduled, no frame pending.
+                return (
+                  !!ghost &&
+                  !!p &&
+                  Math.hypot(ghost[0]! - p[0]!, ghost[1]! - p[1]!) < 1e-9 &&
+                  !app.fairing.busy &&
+                  !app.viewports.renderPending
+                );
+              },
+              [label, example.point] as const,
+            ),
+          )
+          .toBe(true);
+        held = await page.evaluate(() => window.__hula.app.fairing.latencies.length);
+      }
       await page.mouse.up();
       await idle(page);
       const state = await page.evaluate(() => {
@@ -133,6 +161,8 @@ test('fairing assistant: ghost after a drag, accepted with A (Examples 1–3)', 
       // The ghost on screen is of the curve the server now holds: its data points are the entity's.
       const stored = pointsOf((await entity(doc, label)).curve!);
       expect(stored[example.point]).not.toEqual(point);
+      if (drag === 1)
+        expect(await page.evaluate(() => window.__hula.app.fairing.latencies.length)).toBe(held);
       expect(state.dataPoints).toHaveLength(stored.length);
       state.dataPoints!.forEach((p, k) => {
         expect(Math.hypot(...p.map((x, j) => x - stored[k]![j]!))).toBeLessThan(1e-9);
