@@ -111,6 +111,8 @@ test('fairing assistant: ghost after a drag, accepted with A (Examples 1–3)', 
     await page.locator('#fair-tolerance').fill(String(tolerance));
     await page.locator('#fair-tolerance').dispatchEvent('change');
     await page.locator('#fair-on').check();
+    // Small drags off the grid: with Snap on, a few pixels can land on the same grid point.
+    await page.locator('#snap').uncheck();
     await idle(page);
 
     // Two drags of the corner; after each, the ghost of the final position and its latency.
@@ -120,7 +122,7 @@ test('fairing assistant: ghost after a drag, accepted with A (Examples 1–3)', 
       const from = await pixelOf(page, 'top', point as [number, number, number]);
       await page.mouse.move(from.x, from.y);
       await page.mouse.down();
-      for (let i = 1; i <= 4; i++) await page.mouse.move(from.x + 6 * i, from.y - 8 * i);
+      for (let i = 1; i <= 4; i++) await page.mouse.move(from.x + 2 * i, from.y - 3 * i);
       // The second drag rests with the button held: the ghost of the held position comes once the
       // pointer stops, before the release (which then asks nothing more: the ghost is of that position).
       let held = 0;

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { valueFloor } from './graph';
+import { spanOf, valueFloor } from './graph';
 import { boxDiagonal, paddedRange } from './scale';
 
 /** A seeded linear congruential generator in [-1, 1) (the noise is reproducible). */
@@ -46,6 +46,10 @@ describe('value axis floor', () => {
     const r = paddedRange(kappa, 0.05, valueFloor('kappa', kappa, boxDiagonal(points)));
     expect(heightShare(kappa, r)).toBeLessThan(1e-4);
     expect((r.min + r.max) / 2).toBeCloseTo(0.1, 6);
+    // Flatter than its floor: the graph marks no extrema of this noise.
+    expect(spanOf(kappa)).toBeLessThan(valueFloor('kappa', kappa, boxDiagonal(points)));
+    expect(spanOf([NaN, 2, -1])).toBe(3);
+    expect(spanOf([])).toBe(0);
     // The radius (10 ± 1e-5) and speed graphs are floored by their own size the same way.
     const radius = kappa.map((k) => 1 / k);
     expect(

@@ -74,6 +74,19 @@ export function valueFloor(q: Quantity, values: ArrayLike<number>, size: number)
   }
 }
 
+/** max − min of the finite values (0 for none). */
+export function spanOf(values: ArrayLike<number>): number {
+  let min = Infinity;
+  let max = -Infinity;
+  for (let i = 0; i < values.length; i++) {
+    const v = values[i]!;
+    if (!Number.isFinite(v)) continue;
+    if (v < min) min = v;
+    if (v > max) max = v;
+  }
+  return max >= min ? max - min : 0;
+}
+
 export interface Marker {
   x: number;
   y: number;
@@ -145,7 +158,10 @@ export class Graph {
     this.markers = [];
     if (a) {
       const byS = this.abscissa === 's' && a.s.length === a.t.length;
+      // A graph flatter than its floor is rounding noise (a helix's κ): its extrema are not marked.
+      const flat = spanOf(this.ys) < valueFloor(this.quantity, this.ys, this.size);
       for (const f of a.features) {
+        if (flat && /-(max|min)$/.test(f.kind)) continue;
         const x = byS ? (f.s ?? NaN) : f.t;
         if (!Number.isFinite(x) || this.xs.length === 0) continue;
         const i = nearestIndex(this.xs, x);
