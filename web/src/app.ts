@@ -922,7 +922,9 @@ export class App {
     const [x, y] = this.local(view, ev);
     const start = d.handles[d.index]!;
     const p = this.viewports.pointOn(view, x, y, dragPlane(view, start));
-    if (!p) return;
+    // A pointer event that does not move the point (the one a release may bring, or a move
+    // within a snapped grid cell) is no move: nothing to send, and the pointer has not moved.
+    if (!p || p.every((v, k) => v === start[k])) return;
     d.handles[d.index] = p;
     this.moved = { label: d.label, handles: d.handles };
     this.fairing.pointerMoved();

@@ -113,6 +113,9 @@ export class FairingAssistant {
   /** The pointer moved a point of the selected curve (the latency clock starts here). */
   pointerMoved(): void {
     this.lastMove = performance.now();
+    // A ghost drawn but not yet shown is of the position before this move: its frame is not the
+    // one the clock waits for.
+    this.pendingLatency = 0;
     if (this.enabled) this.schedule(HOLD_MS);
   }
 
@@ -164,7 +167,7 @@ export class FairingAssistant {
     if (this.preview?.key === want.key) {
       // The ghost on screen is already of this curve (the drag came back, or the store caught
       // up with the position the ghost was asked for): nothing to ask.
-      this.pendingLatency = this.lastMove > 0;
+      this.pendingLatency = this.lastMove;
       this.app.viewports.requestRender();
       return;
     }
@@ -221,7 +224,8 @@ export class FairingAssistant {
       });
   }
 
-  private pendingLatency = false;
+  /** The pointer move whose ghost the next frame shows (performance.now() of it), or 0. */
+  private pendingLatency = 0;
 
   private draw(): void {
     const p = this.preview!;
@@ -244,13 +248,13 @@ export class FairingAssistant {
     this.readout.dataset['revision'] = String(r.revision);
     // The ghost is of the last pointer position (request() drew it only if so): the clock stops at
     // the frame that shows it.
-    this.pendingLatency = this.lastMove > 0;
+    this.pendingLatency = this.lastMove;
   }
 
   private frameDrawn(): void {
     if (!this.pendingLatency) return;
-    this.pendingLatency = false;
-    const ms = performance.now() - this.lastMove;
+    const ms = performance.now() - this.pendingLatency;
+    this.pendingLatency = 0;
     this.lastMove = 0;
     this.latencies.push(ms);
     this.app.viewports.root.dataset['fairLatency'] = ms.toFixed(1);
