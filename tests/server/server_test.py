@@ -1032,7 +1032,8 @@ class DocumentTest(unittest.TestCase):
     # ghost's ∫κ'² ds is below the curve's; every data point is within the tolerance of the ghost's own data
     # point (the ghost interpolates them), read from the ghost's curve file, not from the server's report;
     # the preview leaves the document as it was; a PUT of the ghost is one undo step after which the entity's
-    # energy (the next preview's energy_before) is the ghost's; knot fairing keeps the points exactly
+    # energy (the next preview's energy_before) is the ghost's; knot fairing keeps the points exactly; a
+    # "curve" sent with the request (a drag's position) gives the ghost the entity has once PATCHed there
     def test_fair_preview(self):
         self.new_document("fair.hula")
         base = "/api/documents/fair.hula"
@@ -1069,6 +1070,19 @@ class DocumentTest(unittest.TestCase):
             self.assertEqual(knots["curve"]["points"], curve["points"])
             self.assertLess(knots["energy_after"], knots["energy_before"], f"Example {n}")
             self.assertEqual(knots["max_deviation"], 0.0)
+            # "curve": the ghost of a drag's position sent beside its PATCH is the ghost of the entity once
+            # the PATCH is stored (same data points, same energies), and the preview leaves the entity as it was
+            dragged = dict(curve, points=[list(p) for p in curve["points"]])
+            dragged["points"][1] = [dragged["points"][1][0] + 3, dragged["points"][1][1] - 2]
+            request = {"tolerance": tolerance, "budget": 5}
+            sent = self.call("POST", entity + "/fair-preview", dict(request, curve=dragged))
+            self.assertEqual(self.call("GET", entity)["points"], curve["points"])
+            self.call("PATCH", entity, {"move": [{"index": 1, "to": dragged["points"][1] + [0]}]})
+            stored = self.call("POST", entity + "/fair-preview", request)
+            self.assertEqual(sent["data_points"], stored["data_points"])
+            self.assertEqual(sent["energy_before"], stored["energy_before"])
+            self.assertAlmostEqual(sent["energy_after"], stored["energy_after"], delta=1e-9 * sent["energy_before"])
+            self.call("POST", base + "/undo")
         # bad input names the field; a law curve has no data points; unknown entities are 404
         e = self.call("POST", entity + "/fair-preview", {"tolerance": 0}, expect=400)["error"]
         self.assertEqual((e["code"], e["where"]["field"]), ("InvalidOption", "tolerance"))
@@ -1076,6 +1090,8 @@ class DocumentTest(unittest.TestCase):
         self.assertEqual(e["where"]["field"], "method")
         self.call("POST", entity + "/fair-preview", {}, expect=400)
         self.call("POST", f"{base}/entities/999/fair-preview", {"tolerance": 1}, expect=404)
+        e = self.call("POST", entity + "/fair-preview", {"tolerance": 1, "curve": {"kind": "bezier"}}, expect=400)["error"]
+        self.assertEqual(e["code"], "ParseError")
         law = {"kind": "law", "expression": "vec(t, t^2)", "domain": [0, 1]}
         law_label = self.call("POST", base + "/entities", {"curve": law}, expect=201)["label"]
         e = self.call("POST", f"{base}/entities/{law_label}/fair-preview", {"tolerance": 1}, expect=400)["error"]

@@ -3,7 +3,7 @@
 // replies and document events; the page draws, picks and snaps.
 
 import { ApiError, Client } from './api/client';
-import { finLines } from './api/adapt';
+import { finLines, withHandles } from './api/adapt';
 import type {
   Analysis,
   ChangeReply,
@@ -147,6 +147,8 @@ export class App {
   private readonly analysisBusy = new Set<string>();
   private readonly analysisDirty = new Set<string>();
   private drag: Drag | null = null;
+  /** The handles of the last drag, until the store holds the curve with its final position. */
+  private moved: { label: string; handles: Vec3[] } | null = null;
   private preview: Preview | null = null;
   /** The curve of the last drag until the server has answered all its moves. */
   private settling: string | null = null;
@@ -190,6 +192,7 @@ export class App {
     this.store.subscribe((e) => {
       switch (e.type) {
         case 'document':
+          if (!this.drag && this.settling === null) this.moved = null;
           for (const label of this.store.entities.keys()) this.refreshAnalysis(label);
           this.redrawAll();
           this.refreshHistory();
@@ -203,6 +206,8 @@ export class App {
             this.panelsStale = true;
             return;
           }
+          // The store now has the curve as the server holds it, a drag's last move included.
+          if (this.moved?.label === e.label && this.settling !== e.label) this.moved = null;
           this.redrawCurve(e.label);
           this.refreshAnalysis(e.label);
           this.refreshHistory();
@@ -917,8 +922,11 @@ export class App {
     const [x, y] = this.local(view, ev);
     const start = d.handles[d.index]!;
     const p = this.viewports.pointOn(view, x, y, dragPlane(view, start));
-    if (!p) return;
+    // A pointer event that does not move the point (the one a release may bring, or a move
+    // within a snapped grid cell) is no move: nothing to send, and the pointer has not moved.
+    if (!p || p.every((v, k) => v === start[k])) return;
     d.handles[d.index] = p;
+    this.moved = { label: d.label, handles: d.handles };
     this.fairing.pointerMoved();
     // The event's own time: the latency includes the wait for the page to take the event.
     if (!this.pointerStamp) this.pointerStamp = ev.timeStamp;
@@ -980,8 +988,6 @@ export class App {
         this.applyReply(reply);
         // A curve the page cannot evaluate follows through the server's analysis.
         if (!d.local) this.refreshAnalysis(d.label);
-        // The fairing assistant refits what the server now holds.
-        this.fairing.edited(d.label);
       })
       .catch((e: unknown) => {
         this.toast(e);
@@ -1027,10 +1033,21 @@ export class App {
     } else if (!d.inFlight) this.dragSettled(d);
     this.setStatus(`Moved point ${d.index}`);
     this.redrawCurve(d.label);
+    this.fairing.dragEnded();
   }
 
   get dragging(): boolean {
     return this.drag !== null;
+  }
+
+  /**
+   * The curve `label` as the page holds it: the store's, with the handles of a
+   * drag whose final position the store has not fetched yet (the fairing
+   * assistant asks for the ghost of this, beside the drag's PATCH).
+   */
+  heldCurve(label: string): CurveFile | undefined {
+    const curve = this.store.entities.get(label)?.curve;
+    return curve && this.moved?.label === label ? withHandles(curve, this.moved.handles) : curve;
   }
 
   /** A drag position not yet answered by the server. */

@@ -21,7 +21,7 @@ Json points_json(const std::vector<Vec3>& points) {
 
 FairPreviewRequest fair_preview_request_from_json(const Json& body) {
   const json::JsonPath root;
-  json::reject_unknown_members(body, root, {"tolerance", "method", "budget", "analysis"});
+  json::reject_unknown_members(body, root, {"tolerance", "method", "budget", "analysis", "curve"});
   FairPreviewRequest r;
   r.options.tolerance = json::get_number(json::require_member(body, root, "tolerance"), root.member("tolerance"));
   if (const Json* m = json::optional_member(body, "method"))
@@ -29,6 +29,7 @@ FairPreviewRequest fair_preview_request_from_json(const Json& body) {
   if (const Json* b = json::optional_member(body, "budget"))
     r.options.time_budget_seconds = json::get_number(*b, root.member("budget"));
   if (const Json* a = json::optional_member(body, "analysis")) r.analysis = *a;
+  if (const Json* c = json::optional_member(body, "curve")) r.curve = curve_from_json(*c);
   r.options.validate();
   return r;
 }

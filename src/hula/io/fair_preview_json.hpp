@@ -2,7 +2,8 @@
 // The codec of the fairing assistant's preview (studies::fair_within_tolerance,
 // POST /api/documents/{name}/entities/{label}/fair-preview, docs/server.md):
 // the request {"tolerance", "method"?: "min-variation"|"knots", "budget"?,
-// "analysis"?} and the ghost it answers {"revision", "method", "tolerance",
+// "analysis"?, "curve"?} ("curve": the page's edit in flight, faired instead of
+// the stored entity) and the ghost it answers {"revision", "method", "tolerance",
 // "curve", "energy_before", "energy_after", "max_deviation", "data_points",
 // "faired_points", "iterations", "stopped", "seconds"} (then "analysis" when
 // asked, written by the server). Member names and order are a contract
@@ -23,6 +24,9 @@ struct FairPreviewRequest {
   studies::AssistantOptions options{};
   /// The "analysis" member as given (the viewport analysis options of the ghost), when present.
   std::optional<Json> analysis{};
+  /// The "curve" member (docs/formats.md curve JSON), when present: a drag's latest position, sent beside the
+  /// PATCH that stores it rather than after its answer, faired instead of the stored entity.
+  std::optional<curve::Curve> curve{};
 };
 
 /// Reads a fairing-preview request body.

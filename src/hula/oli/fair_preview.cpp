@@ -4,8 +4,10 @@
 
 namespace hula::oli {
 
-studies::AssistantResult fair_preview(const Entity& entity, const studies::AssistantOptions& options) {
-  return studies::fair_within_tolerance(entity.curve(), options);
+studies::AssistantResult fair_preview(const Entity& entity, const studies::AssistantOptions& options,
+                                      const curve::Curve* edit) {
+  const curve::Curve& stored = entity.curve();  // refuses a non-curve entity, naming its label
+  return studies::fair_within_tolerance(edit != nullptr ? *edit : stored, options);
 }
 
 }  // namespace hula::oli

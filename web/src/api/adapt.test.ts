@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { analysisFromServer, entityFromServer, historyFromServer } from './adapt';
+import { analysisFromServer, entityFromServer, historyFromServer, withHandles } from './adapt';
+import type { CurveFile } from './types';
 
 describe('server JSON adapters', () => {
   // A curve entity (curve file members + label/attributes) splits into entity and curve file.
@@ -96,5 +97,61 @@ describe('server JSON adapters', () => {
       history: [{ revision: 1, name: 'add curve', time: 'x', changed: [1], applied: true }],
     });
     expect(h.steps).toEqual([{ revision: 1, name: 'add curve', time: 'x', applied: true }]);
+  });
+
+  // withHandles against the server's move semantics by hand: an interpolated 2-D curve's data point 1
+  // moves (its z dropped, parameters kept); a NURBS curve's control point; a law curve has no handles.
+  it('moves the handles a drag moves', () => {
+    const spline: CurveFile = {
+      kind: 'interpolated',
+      points: [
+        [0, 0],
+        [10, 0],
+        [20, 5],
+      ],
+      parameters: [0, 0.4, 1],
+    };
+    expect(
+      withHandles(spline, [
+        [0, 0, 0],
+        [12, -3, 0],
+        [20, 5, 0],
+      ]),
+    ).toEqual({
+      ...spline,
+      points: [
+        [0, 0],
+        [12, -3],
+        [20, 5],
+      ],
+    });
+    // The original is not changed.
+    expect(spline).toEqual({
+      ...spline,
+      points: [
+        [0, 0],
+        [10, 0],
+        [20, 5],
+      ],
+    });
+    const nurbs: CurveFile = {
+      kind: 'nurbs',
+      degree: 1,
+      knots: [0, 0, 1, 1],
+      control_points: [
+        [0, 0, 0],
+        [1, 1, 1],
+      ],
+    };
+    const n = withHandles(nurbs, [
+      [0, 0, 0],
+      [2, 2, 2],
+    ]);
+    expect(n.kind === 'nurbs' && n.control_points).toEqual([
+      [0, 0, 0],
+      [2, 2, 2],
+    ]);
+    const law: CurveFile = { kind: 'law', expression: 'vec(t, t^2)', domain: [0, 1] };
+    expect(withHandles(law, [])).toBe(law);
   });
 });

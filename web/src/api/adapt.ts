@@ -9,6 +9,29 @@ type Json = Record<string, unknown>;
 const CURVE_KINDS = new Set(['nurbs', 'bezier', 'interpolated', 'hermite', 'law', 'natural']);
 const ENTITY_MEMBERS = new Set(['label', 'attributes', 'provenance', 'constraints', 'name']);
 
+/**
+ * The curve file with its construction points (a NURBS or Bézier curve's
+ * control points, an interpolated or Hermite curve's data points: the handles
+ * a drag moves) replaced by `handles`, each keeping its original dimension;
+ * what the server holds once PATCH {"move"} has moved them (oli::Edit::move_point).
+ * A law or natural-equation curve has no handles and comes back as it was.
+ */
+export function withHandles(curve: CurveFile, handles: readonly (readonly number[])[]): CurveFile {
+  const moved = (points: Point[]): Point[] =>
+    points.map((p, i) => (handles[i] ? handles[i].slice(0, p.length) : p));
+  switch (curve.kind) {
+    case 'nurbs':
+    case 'bezier':
+      return { ...curve, control_points: moved(curve.control_points) };
+    case 'interpolated':
+    case 'hermite':
+      return { ...curve, points: moved(curve.points) };
+    case 'law':
+    case 'natural':
+      return curve;
+  }
+}
+
 /** GET …/entities/{label}: the curve file's members with label, attributes, provenance, constraints. */
 export function entityFromServer(j: Json): Entity {
   const attributes = (j['attributes'] ?? {}) as Record<string, unknown>;

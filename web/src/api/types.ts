@@ -176,6 +176,8 @@ export interface FairPreviewRequest {
   /** Wall-clock budget of the optimisation, seconds. */
   budget?: number;
   analysis?: AnalysisRequest;
+  /** Fair this curve instead of the entity's (the page's edit in flight: a drag's latest position). */
+  curve?: CurveFile;
 }
 export type FairMethod = 'min-variation' | 'knots';
 

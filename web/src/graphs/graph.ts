@@ -5,7 +5,17 @@
 import uPlot from 'uplot';
 import 'uplot/dist/uPlot.min.css';
 import type { Analysis } from '../api/types';
-import { logMagnitude, nearestIndex, paddedRange, radius, tickLabels, type Range } from './scale';
+import {
+  boxDiagonal,
+  logMagnitude,
+  nearestIndex,
+  paddedRange,
+  radius,
+  spanFloor,
+  SPAN_FLOOR_FRACTION,
+  tickLabels,
+  type Range,
+} from './scale';
 
 export type Quantity = 'kappa' | 'radius' | 'tau' | 'speed' | 'logkappa' | 'logtau';
 export type Abscissa = 't' | 's';
@@ -43,6 +53,40 @@ export function quantityValues(a: Analysis, q: Quantity): Float64Array {
   }
 }
 
+/**
+ * The least span of a quantity's value axis (paddedRange's `minSpan`), so the
+ * rounding noise of a straight line's or a circle's κ is not stretched to the
+ * graph's height: κ and τ are floored by a fraction of max(max |v|, 1/size),
+ * size the curve's bounding-box diagonal; radius and speed by a fraction of
+ * their largest value; the log graphs by the same fraction of |κ| in decades.
+ */
+export function valueFloor(q: Quantity, values: ArrayLike<number>, size: number): number {
+  switch (q) {
+    case 'kappa':
+    case 'tau':
+      return spanFloor(values, size > 0 ? 1 / size : 0);
+    case 'radius':
+    case 'speed':
+      return spanFloor(values);
+    case 'logkappa':
+    case 'logtau':
+      return Math.log10(1 + SPAN_FLOOR_FRACTION);
+  }
+}
+
+/** max − min of the finite values (0 for none). */
+export function spanOf(values: ArrayLike<number>): number {
+  let min = Infinity;
+  let max = -Infinity;
+  for (let i = 0; i < values.length; i++) {
+    const v = values[i]!;
+    if (!Number.isFinite(v)) continue;
+    if (v < min) min = v;
+    if (v > max) max = v;
+  }
+  return max >= min ? max - min : 0;
+}
+
 export interface Marker {
   x: number;
   y: number;
@@ -63,6 +107,8 @@ export class Graph {
   /** Drag on the graph (design by curvature): abscissa and value at the pointer. */
   onDrag: ((phase: 'start' | 'move' | 'end', x: number, y: number) => void) | null = null;
   private yRange: Range = { min: 0, max: 1 };
+  /** The curve's size (bounding-box diagonal of the shown analysis), for valueFloor. */
+  private size = 0;
   private dragging = false;
 
   constructor(
@@ -96,6 +142,7 @@ export class Graph {
     } else {
       this.xs = Float64Array.from(this.abscissa === 's' && a.s.length === a.t.length ? a.s : a.t);
       this.ys = quantityValues(a, this.quantity);
+      this.size = boxDiagonal(a.points);
     }
     this.overlay = null;
     if (a && overlay && overlay.points.length > 0) {
@@ -111,7 +158,10 @@ export class Graph {
     this.markers = [];
     if (a) {
       const byS = this.abscissa === 's' && a.s.length === a.t.length;
+      // A graph flatter than its floor is rounding noise (a helix's κ): its extrema are not marked.
+      const flat = spanOf(this.ys) < valueFloor(this.quantity, this.ys, this.size);
       for (const f of a.features) {
+        if (flat && /-(max|min)$/.test(f.kind)) continue;
         const x = byS ? (f.s ?? NaN) : f.t;
         if (!Number.isFinite(x) || this.xs.length === 0) continue;
         const i = nearestIndex(this.xs, x);
@@ -136,10 +186,10 @@ export class Graph {
     // The value axis stays put while the graph is dragged: rescaling it under
     // the pointer made each move read a larger value than the last (the edit
     // ran away: a 0.01 pull set κ 0.06 higher). It refits on the next show().
-    if (!this.dragging)
-      this.yRange = paddedRange(
-        this.overlay ? Float64Array.from([...this.ys, ...this.overlay]) : this.ys,
-      );
+    if (!this.dragging) {
+      const ys = this.overlay ? Float64Array.from([...this.ys, ...this.overlay]) : this.ys;
+      this.yRange = paddedRange(ys, 0.05, valueFloor(this.quantity, ys, this.size));
+    }
     const data: uPlot.AlignedData = [this.xs, this.ys, ...(this.overlay ? [this.overlay] : [])];
     const seriesCount = this.overlay ? 3 : 2;
     if (this.plot && this.plot.series.length === seriesCount) {

@@ -1,6 +1,7 @@
 import uPlot from 'uplot';
 import { describe, expect, it } from 'vitest';
 import {
+  boxDiagonal,
   bumpProfile,
   logMagnitude,
   nearestIndex,
@@ -8,6 +9,7 @@ import {
   paddedRange,
   pixelToValue,
   radius,
+  spanFloor,
   stepDecimals,
   tickLabels,
 } from './scale';
@@ -36,6 +38,29 @@ describe('plot scaling', () => {
     expect(paddedRange([2, 2])).toEqual({ min: 1.9, max: 2.1 });
     expect(paddedRange([0, 0])).toEqual({ min: -1, max: 1 });
     expect(paddedRange([NaN])).toEqual({ min: 0, max: 1 });
+  });
+
+  // Span floor by hand: [1, 1.001] floored to span 0.1 is centred, [0.9505, 1.0505], then padded
+  // 5 % of 0.1; a constant series gets the floor; a range wider than the floor is untouched.
+  it('widens a range to its floor about its centre', () => {
+    const r = paddedRange([1, 1.001], 0.05, 0.1);
+    expect(r.min).toBeCloseTo(0.9505 - 0.005, 12);
+    expect(r.max).toBeCloseTo(1.0505 + 0.005, 12);
+    expect(paddedRange([2, 2], 0.05, 1)).toEqual({ min: 1.45, max: 2.55 });
+    expect(paddedRange([0, 10], 0.05, 1)).toEqual(paddedRange([0, 10]));
+    // spanFloor: 5 % of the larger of max |v| and the reference; NaN skipped.
+    expect(spanFloor([NaN, -4, 2])).toBeCloseTo(0.2, 15);
+    expect(spanFloor([1e-7, 0], 0.01)).toBeCloseTo(5e-4, 15);
+    expect(spanFloor([], Infinity)).toBe(0);
+    // boxDiagonal of a 3-4-12 box is 13.
+    expect(
+      boxDiagonal([
+        [0, 0, 0],
+        [3, 4, 12],
+        [1, 1, 1],
+      ]),
+    ).toBe(13);
+    expect(boxDiagonal([])).toBe(0);
   });
 
   // 1-2-5 ticks: [0, 1] in ~5 ticks steps by 0.2; [-3, 7] by 2.

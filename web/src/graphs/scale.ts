@@ -10,9 +10,11 @@ export interface Range {
 /**
  * The range of the finite values of `values`, padded by `pad` of its span on
  * each side. A constant series gets ±(|v|·pad or 1); no finite value gives [0, 1].
- * NaN marks undefined samples (torsion where κ = 0) and is skipped.
+ * NaN marks undefined samples (torsion where κ = 0) and is skipped. With
+ * `minSpan` > 0 the range, before padding, is at least `minSpan` wide, centred
+ * on the values (see spanFloor): rounding noise is then drawn as the flat line it is.
  */
-export function paddedRange(values: ArrayLike<number>, pad = 0.05): Range {
+export function paddedRange(values: ArrayLike<number>, pad = 0.05, minSpan = 0): Range {
   let min = Infinity;
   let max = -Infinity;
   for (let i = 0; i < values.length; i++) {
@@ -22,12 +24,55 @@ export function paddedRange(values: ArrayLike<number>, pad = 0.05): Range {
     if (v > max) max = v;
   }
   if (min === Infinity) return { min: 0, max: 1 };
+  if (max - min < minSpan) {
+    const mid = (min + max) / 2;
+    min = mid - minSpan / 2;
+    max = mid + minSpan / 2;
+  }
   if (min === max) {
     const h = Math.abs(min) * pad || 1;
     return { min: min - h, max: max + h };
   }
   const h = (max - min) * pad;
   return { min: min - h, max: max + h };
+}
+
+/** The share of a graph's scale below which a variation is not stretched to full height. */
+export const SPAN_FLOOR_FRACTION = 0.05;
+
+/**
+ * The least span of a graph's value axis (paddedRange's `minSpan`): a fraction
+ * of the quantity's own scale, max |v| over the finite values, or of
+ * `reference` when that is larger — 1 / (the curve's size) for κ and τ, so a
+ * straight line (κ ≈ 1e-7 of rounding) is not drawn as wild wiggles, while a
+ * circle's constant κ = 1/R is floored by R itself. A variation of the curve's
+ * scale still fills the graph; one of 1e-7 of it stays below a pixel.
+ */
+export function spanFloor(
+  values: ArrayLike<number>,
+  reference = 0,
+  fraction = SPAN_FLOOR_FRACTION,
+): number {
+  let largest = 0;
+  for (let i = 0; i < values.length; i++) {
+    const a = Math.abs(values[i]!);
+    if (Number.isFinite(a) && a > largest) largest = a;
+  }
+  return fraction * Math.max(largest, Number.isFinite(reference) ? Math.abs(reference) : 0);
+}
+
+/** The diagonal of the bounding box of `points` (a curve's size for spanFloor); 0 for none. */
+export function boxDiagonal(points: readonly (readonly number[])[]): number {
+  if (points.length === 0) return 0;
+  const lo = [Infinity, Infinity, Infinity];
+  const hi = [-Infinity, -Infinity, -Infinity];
+  for (const p of points)
+    for (let j = 0; j < 3; j++) {
+      const v = p[j] ?? 0;
+      if (v < lo[j]!) lo[j] = v;
+      if (v > hi[j]!) hi[j] = v;
+    }
+  return Math.hypot(hi[0]! - lo[0]!, hi[1]! - lo[1]!, hi[2]! - lo[2]!);
 }
 
 /**

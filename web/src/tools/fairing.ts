@@ -5,30 +5,45 @@
 // dashed with its curvature comb, and its κ graph overlaid on the curve's. `A`
 // accepts it: a PUT of the ghost's curve, one undo step. The numerics are the
 // server's (studies::fair_within_tolerance); this module only asks and draws.
+//
+// The request carries the curve as the page holds it (App.heldCurve: a drag's
+// latest position included), so the ghost of a drag's final position is asked
+// for when the pointer is released (or has rested HOLD_MS while held), beside
+// the PATCH that stores that position rather than after its answer: one round
+// trip from the pointer stopping to the ghost. A ghost is drawn, and can be
+// accepted, only while the page still holds the curve it was computed from.
 import { ApiError } from '../api/client';
 import { finLines } from '../api/adapt';
-import type { Analysis, FairMethod, FairPreview } from '../api/types';
+import type { Analysis, CurveFile, FairMethod, FairPreview } from '../api/types';
 import type { App } from '../app';
 import { el } from '../panels/dom';
 
-/** Pause after the last edit before the preview is asked for (the pointer has stopped). */
-const DEBOUNCE_MS = 10;
+/**
+ * A held pointer that has not moved for this long has stopped (pointer events come every
+ * 8–17 ms while it moves); a released one has stopped at once.
+ */
+const HOLD_MS = 30;
 /** The optimisation budget the page asks for, seconds: with the round trip and a frame, ≤ 150 ms. */
 const BUDGET_S = 0.08;
+
+/** What a ghost is of: the curve and the assistant's settings (tolerance, method). */
+function ghostKey(curve: CurveFile, tolerance: number, method: FairMethod): string {
+  return `${tolerance} ${method} ${JSON.stringify(curve)}`;
+}
 
 export class FairingAssistant {
   enabled = false;
   tolerance = 1;
   method: FairMethod = 'min-variation';
-  /** The ghost on screen: for which curve and document revision. */
-  preview: { label: string; result: FairPreview } | null = null;
+  /** The ghost on screen: for which curve (label and ghostKey of the curve it fairs). */
+  preview: { label: string; key: string; result: FairPreview } | null = null;
   /** Last pointer move of a drag to the frame that drew the ghost for its final position, ms. */
   readonly latencies: number[] = [];
   /** Per ghost drawn: the preview request's round trip and the server's optimisation time, ms. */
   readonly timings: { roundTripMs: number; serverMs: number }[] = [];
   private timer = 0;
-  private inFlight = false;
-  private again = false;
+  /** The request on the way: what it is the ghost of, and how to call it off. */
+  private inFlight: { key: string; abort: AbortController } | null = null;
   private lastMove = 0;
   private readonly readout: HTMLElement;
   private readonly toggle: HTMLInputElement;
@@ -98,8 +113,15 @@ export class FairingAssistant {
   /** The pointer moved a point of the selected curve (the latency clock starts here). */
   pointerMoved(): void {
     this.lastMove = performance.now();
-    window.clearTimeout(this.timer);
-    this.timer = 0;
+    // A ghost drawn but not yet shown is of the position before this move: its frame is not the
+    // one the clock waits for.
+    this.pendingLatency = 0;
+    if (this.enabled) this.schedule(HOLD_MS);
+  }
+
+  /** The pointer was released after a drag: the ghost of its final position, at once. */
+  dragEnded(): void {
+    if (this.enabled) this.schedule(0);
   }
 
   /** The curve changed (an edit, an undo, another tab) or was selected: ask for a new ghost. */
@@ -108,11 +130,8 @@ export class FairingAssistant {
       if (label === null || label !== this.app.selected) this.clear();
       return;
     }
-    window.clearTimeout(this.timer);
-    this.timer = window.setTimeout(() => {
-      this.timer = 0;
-      this.request();
-    }, DEBOUNCE_MS);
+    // While the pointer drags it, the drag's own moves say when (pointerMoved, dragEnded).
+    if (!this.app.dragging) this.schedule(0);
   }
 
   /** The ghost's analysis for the graph overlay, when it belongs to the selected curve. */
@@ -123,43 +142,68 @@ export class FairingAssistant {
   }
 
   get busy(): boolean {
-    return this.inFlight || this.timer !== 0;
+    return this.inFlight !== null || this.timer !== 0;
+  }
+
+  private schedule(delay: number): void {
+    window.clearTimeout(this.timer);
+    this.timer = window.setTimeout(() => {
+      this.timer = 0;
+      this.request();
+    }, delay);
+  }
+
+  /** The key of the ghost the page wants now: of the selected curve as the page holds it. */
+  private wanted(): { label: string; curve: CurveFile; key: string } | null {
+    const label = this.app.selected;
+    const curve = label ? this.app.heldCurve(label) : undefined;
+    if (!this.enabled || !label || !curve) return null;
+    return { label, curve, key: ghostKey(curve, this.tolerance, this.method) };
   }
 
   private request(): void {
-    const label = this.app.selected;
-    if (!this.enabled || !label || !this.app.store.entities.get(label)?.curve) return;
-    if (this.inFlight || this.app.dragPending) {
-      this.again = true;
+    const want = this.wanted();
+    if (!want) return;
+    if (this.preview?.key === want.key) {
+      // The ghost on screen is already of this curve (the drag came back, or the store caught
+      // up with the position the ghost was asked for): nothing to ask.
+      this.pendingLatency = this.lastMove;
+      this.app.viewports.requestRender();
       return;
     }
-    this.inFlight = true;
-    const s = this.app.settingsOf(label);
-    const revision = this.app.store.revision;
+    if (this.inFlight?.key === want.key) return;
+    // A request for a curve the page no longer holds is called off (the server's few ms are lost,
+    // not the round trip the new ghost would wait behind it).
+    this.inFlight?.abort.abort();
+    const s = this.app.settingsOf(want.label);
+    const abort = new AbortController();
+    const mine = { key: want.key, abort };
+    this.inFlight = mine;
     const sent = performance.now();
     void this.app.client
-      .fairPreview(this.app.store.name, label, {
-        tolerance: this.tolerance,
-        method: this.method,
-        budget: BUDGET_S,
-        analysis: {
-          samples: s.samples,
-          by: this.app.abscissa === 's' ? 'arclength' : 'parameter',
-          fins: ['curvature'],
-          scale: s.scale,
-          features: false,
+      .fairPreview(
+        this.app.store.name,
+        want.label,
+        {
+          tolerance: this.tolerance,
+          method: this.method,
+          budget: BUDGET_S,
+          curve: want.curve,
+          analysis: {
+            samples: s.samples,
+            by: this.app.abscissa === 's' ? 'arclength' : 'parameter',
+            fins: ['curvature'],
+            scale: s.scale,
+            features: false,
+          },
         },
-      })
+        abort.signal,
+      )
       .then((result) => {
-        // Only a ghost of the curve as the page has it is drawn (and can be accepted); another
-        // revision means an edit came in meanwhile, and `finally` asks again.
-        if (
-          result.revision !== this.app.store.revision ||
-          label !== this.app.selected ||
-          !this.enabled
-        )
-          return;
-        this.preview = { label, result };
+        // Only a ghost of the curve as the page holds it now is drawn (and can be accepted).
+        const now = this.wanted();
+        if (!now || now.key !== want.key || now.label !== want.label) return;
+        this.preview = { label: want.label, key: want.key, result };
         this.timings.push({
           roundTripMs: performance.now() - sent,
           serverMs: 1000 * result.seconds,
@@ -167,19 +211,21 @@ export class FairingAssistant {
         this.draw();
       })
       .catch((e: unknown) => {
+        if (e instanceof DOMException && e.name === 'AbortError') return;
         this.clear();
         if (!(e instanceof ApiError && (e.offline || e.status === 404))) this.app.toast(e);
       })
       .finally(() => {
-        this.inFlight = false;
-        if (this.again || this.app.store.revision !== revision) {
-          this.again = false;
-          this.edited(this.app.selected);
-        }
+        if (this.inFlight !== mine) return;
+        this.inFlight = null;
+        // The curve changed while this one was computed: ask for the current one.
+        const now = this.wanted();
+        if (now && now.key !== this.preview?.key && this.timer === 0) this.schedule(0);
       });
   }
 
-  private pendingLatency = false;
+  /** The pointer move whose ghost the next frame shows (performance.now() of it), or 0. */
+  private pendingLatency = 0;
 
   private draw(): void {
     const p = this.preview!;
@@ -200,14 +246,15 @@ export class FairingAssistant {
     this.readout.dataset['before'] = String(r.energy_before);
     this.readout.dataset['after'] = String(r.energy_after);
     this.readout.dataset['revision'] = String(r.revision);
-    // The latency clock stops only for the ghost of the last pointer position (no move pending).
-    this.pendingLatency = this.lastMove > 0 && !this.app.dragPending;
+    // The ghost is of the last pointer position (request() drew it only if so): the clock stops at
+    // the frame that shows it.
+    this.pendingLatency = this.lastMove;
   }
 
   private frameDrawn(): void {
     if (!this.pendingLatency) return;
-    this.pendingLatency = false;
-    const ms = performance.now() - this.lastMove;
+    const ms = performance.now() - this.pendingLatency;
+    this.pendingLatency = 0;
     this.lastMove = 0;
     this.latencies.push(ms);
     this.app.viewports.root.dataset['fairLatency'] = ms.toFixed(1);
@@ -231,7 +278,14 @@ export class FairingAssistant {
       this.app.setStatus('Fairing: no ghost to accept (turn the assistant on and edit a curve)');
       return;
     }
-    if (p.result.revision !== this.app.store.revision) {
+    // The PUT must follow the drag's last PATCH and be of the curve the server now holds.
+    const stored = this.app.store.entities.get(p.label)?.curve;
+    if (
+      this.app.dragPending ||
+      this.app.heldCurve(p.label) !== stored ||
+      !stored ||
+      ghostKey(stored, this.tolerance, this.method) !== p.key
+    ) {
       this.app.setStatus('Fairing: the ghost is out of date; wait for the new one');
       return;
     }

@@ -3,8 +3,9 @@
 // file, "name"?, "attributes"?} (201), GET|PUT|PATCH|DELETE
 // /api/documents/{name}/entities/{label}, and POST .../{label}/analysis
 // (analysis.hpp, read-only), POST .../{label}/fair-preview (the fairing
-// assistant's ghost, oli::fair_preview with io/fair_preview_json.hpp, read-only:
-// accepted by a PUT of its curve), POST .../{label}/insert-knot {"u", "times"?},
+// assistant's ghost of the entity or of a "curve" sent with it, oli::fair_preview with
+// io/fair_preview_json.hpp, read-only: accepted by a PUT of its curve), POST .../{label}/insert-knot {"u",
+// "times"?},
 // .../{label}/elevate {"times"?}, .../{label}/reverse and .../{label}/split {"t"}
 // (oli::Edit through the document's kernel; split answers the two pieces'
 // labels, first [a, t] then [t, b]). A PATCH {"move": [{"index", "to"}],
@@ -209,7 +210,7 @@ void add_entities(Router& router, const Context& context) {
     const auto [doc, label] = entity_of(docs, request);
     const auto [e, revision] = doc->read([&](const oli::Document& d) { return std::pair(d.get(label), d.revision()); });
     // Computed outside the lock from the immutable snapshot; the document is not changed.
-    const studies::AssistantResult r = oli::fair_preview(e, preview.options);
+    const studies::AssistantResult r = oli::fair_preview(e, preview.options, preview.curve ? &*preview.curve : nullptr);
     Json out = io::fair_preview_to_json(r, preview.options, revision);
     if (analysis) {
       out["analysis"] = Json::parse(analysis_json(r.curve, *analysis, revision));
