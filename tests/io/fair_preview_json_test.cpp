@@ -34,6 +34,21 @@ TEST(FairPreviewJson, RequestEveryMember) {
   EXPECT_EQ(*r.analysis, Json::parse(R"({"samples": 5, "by": "x"})"));
 }
 
+// checks the "curve" member (an edit in flight) is read as a curve: written back it is the curve sent; absent, none
+TEST(FairPreviewJson, RequestCurveInFlight) {
+  curve::BezierData bezier;
+  bezier.control_points = {{0, 0, 0}, {1, 2, 0}, {3, 0, 1}};
+  const Json sent = curve_to_json(curve::Curve::bezier(bezier));
+  Json body = Json::parse(R"({"tolerance": 0.5})");
+  EXPECT_FALSE(fair_preview_request_from_json(body).curve.has_value());
+  body["curve"] = sent;
+  const FairPreviewRequest r = fair_preview_request_from_json(body);
+  ASSERT_TRUE(r.curve.has_value());
+  EXPECT_EQ(curve_to_json(*r.curve), sent);
+  body["curve"] = Json::parse(R"({"kind": "spiral"})");
+  EXPECT_THROW((void)fair_preview_request_from_json(body), Error);
+}
+
 // checks bad requests are refused naming the member: unknown, missing, mistyped, out of range, unknown method
 TEST(FairPreviewJson, RequestErrorsNameTheMember) {
   HULA_EXPECT_ERROR(fair_preview_request_from_json(Json::parse(R"({"tolerance": 1, "colour": 2})")), Errc::ParseError,
