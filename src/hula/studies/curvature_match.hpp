@@ -242,6 +242,30 @@ class CurvatureMatch {
                                                        std::optional<Vec3> end_tangent = std::nullopt,
                                                        ProfileAbscissa abscissa = ProfileAbscissa::Parameter);
 
+/// What spline_profile_breaks reads off a curvature profile.
+struct SplineProfileBreaks {
+  /// 0, the interior data parameters ascending, 1.
+  std::vector<double> parameters{};
+  /// The samples with their sign changed past each zero crossing of the unsigned κ (an inflection), positive on
+  /// the whole where the profile turns most: a signed curvature profile to integrate.
+  std::vector<double> signed_samples{};
+};
+
+/// The data parameters of the cubic spline whose curvature profile `kappa` is (samples at uniform abscissae
+/// u_i = i / (N − 1), as curvature_profile_of). The spline is C2, so κ is C1 between the data parameters and its
+/// slope dκ/du jumps at them: a jump J at ξ ∈ (u_j, u_j+1] adds J Δu (1 − α) and J Δu α (α = (ξ − u_j) / Δu) to
+/// the second differences at j and j + 1. Each pair is measured against the straight line through its flanking
+/// second differences (the smooth part), the `interior` strongest non-overlapping pairs are taken, and ξ is read
+/// from their ratio. Kinks as large as κ itself are the unsigned κ crossing zero; they give the sign changes.
+/// @param kappa the profile samples, N >= 7
+/// @param interior the number of interior data parameters sought (data points − 2)
+/// @param separation how many times stronger the weakest pair taken must be than the strongest left out
+/// @returns the breaks; none when they cannot be told from the samples: a span would hold fewer than four samples,
+///   or the weakest pair taken is not `separation` times stronger than the strongest left out (a smooth profile,
+///   a law, noise)
+[[nodiscard]] std::optional<SplineProfileBreaks> spline_profile_breaks(std::span<const double> kappa,
+                                                                       std::size_t interior, double separation = 2.0);
+
 /// The torsion profile τ(u_i) of the 3-D spline through `points`, as curvature_profile_of.
 /// @throws hula::Error as curvature_profile_of, and Errc::OutOfDomain naming u where τ is undefined (the
 ///   curvature vanishes there, as at a natural end)
