@@ -252,17 +252,19 @@ struct SplineProfileBreaks {
 };
 
 /// The data parameters of the cubic spline whose curvature profile `kappa` is (samples at uniform abscissae
-/// u_i = i / (N − 1), as curvature_profile_of). The spline is C2, so κ is C1 between the data parameters and its
-/// slope dκ/du jumps at them: a jump J at ξ ∈ (u_j, u_j+1] adds J Δu (1 − α) and J Δu α (α = (ξ − u_j) / Δu) to
-/// the second differences at j and j + 1. Each pair is measured against the straight line through its flanking
-/// second differences (the smooth part), the `interior` strongest non-overlapping pairs are taken, and ξ is read
-/// from their ratio. Kinks as large as κ itself are the unsigned κ crossing zero; they give the sign changes.
-/// @param kappa the profile samples, N >= 7
+/// u_i = i / (N − 1), as curvature_profile_of). The spline is C2, so κ is smooth between the data parameters and its
+/// slope dκ/du jumps at them. On the ten samples around each sample interval, a cubic is fitted by least squares
+/// against the cubic plus a kink J (i − ξ)₊ (ξ on a grid of 1/50 of the interval); the interval's score is the root
+/// of the squares the kink explains. The strongest local maxima, none within four samples of another, are taken,
+/// as many as `interior`. A local minimum of the unsigned κ that the straight lines through its two neighbours on
+/// either side carry below zero is an inflection (κ crossing zero): its kink is not a data parameter, and the
+/// signed samples change sign there.
+/// @param kappa the profile samples (unsigned, as the thesis's)
 /// @param interior the number of interior data parameters sought (data points − 2)
-/// @param separation how many times stronger the weakest pair taken must be than the strongest left out
-/// @returns the breaks; none when they cannot be told from the samples: a span would hold fewer than four samples,
-///   or the weakest pair taken is not `separation` times stronger than the strongest left out (a smooth profile,
-///   a law, noise)
+/// @param separation how many times stronger the weakest interval taken must be than the strongest left out
+/// @returns the breaks; none when they cannot be told from the samples: a span would hold fewer than six samples,
+///   a sample is not finite, or the weakest interval taken is not `separation` times stronger than the strongest
+///   left out (a smooth profile, a law, noise). Accuracy: within 1.5 sample spacings, mostly a tenth (tests).
 [[nodiscard]] std::optional<SplineProfileBreaks> spline_profile_breaks(std::span<const double> kappa,
                                                                        std::size_t interior, double separation = 2.0);
 
