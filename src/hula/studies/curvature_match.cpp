@@ -764,7 +764,7 @@ std::optional<SplineProfileBreaks> spline_profile_breaks(std::span<const double>
     if (score[j] > 0.0 && score[j] >= score[j - 1] && score[j] >= score[j + 1]) order.push_back(j);
   std::stable_sort(order.begin(), order.end(), [&](std::size_t p, std::size_t q) { return score[p] > score[q]; });
   std::vector<double> taken;
-  double left_out = 0.0;
+  double weakest = 0.0, left_out = 0.0;
   auto near = [&](const std::vector<double>& v, double x) {
     return std::any_of(v.begin(), v.end(), [&](double w) { return std::fabs(w - x) < static_cast<double>(kReach); });
   };
@@ -775,19 +775,16 @@ std::optional<SplineProfileBreaks> spline_profile_breaks(std::span<const double>
       break;
     }
     taken.push_back(where[j]);
+    weakest = score[j];
   }
-  if (taken.size() != interior) return std::nullopt;
-  double weakest = std::numeric_limits<double>::infinity();
-  for (const std::size_t j : order)
-    if (std::find(taken.begin(), taken.end(), where[j]) != taken.end()) weakest = std::min(weakest, score[j]);
-  if (interior > 0 && !(weakest >= separation * left_out)) return std::nullopt;
+  if (taken.size() != interior || (interior > 0 && !(weakest >= separation * left_out))) return std::nullopt;
   SplineProfileBreaks r;
   const double du = 1.0 / static_cast<double>(n - 1);
   r.parameters.push_back(0.0);
   for (const double x : taken) r.parameters.push_back(x * du);
   r.parameters.push_back(1.0);
   std::sort(r.parameters.begin(), r.parameters.end());
-
+  // The sign flips past each crossing (in order of i), and is positive where the profile turns most.
   r.signed_samples.assign(kappa.begin(), kappa.end());
   double sign = 1.0, total = 0.0;
   for (std::size_t i = 0, next = 0; i < n; ++i) {
