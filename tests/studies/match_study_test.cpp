@@ -195,6 +195,28 @@ TEST(MatchHybrid, FarStartReaches1e6With35Variables) { expect_far_start_reaches_
 // checks: 50 variables from 15 % far starts reach 1e-6 on five seeded known arcs.
 TEST(MatchHybrid, FarStartReaches1e6With50Variables) { expect_far_start_reaches_1e6(50); }
 
+// checks: with an arc-length target (the profile over normalised arc length, abscissa "arclength": central
+// differences, no exact Jacobian) the data parameters read off it are arc-length fractions, and 20 variables from 15 %
+// far starts on two seeded arcs still reach 1e-6 from the direct start.
+TEST(MatchHybrid, FarStartArcLengthTargetReaches1e6) {
+  for (std::uint64_t seed = 1; seed <= 2; ++seed) {
+    const std::vector<Vec3> truth = seeded_arc(11, seed);
+    const Vec3 tangent = truth[1] - truth[0];
+    CurvatureMatchSetup s = known_curve_setup(truth, 2, 20, 0.15 * 4.0, 0.75 * 4.0, 100 + seed, tangent);
+    s.abscissa = hula::studies::ProfileAbscissa::ArcLength;
+    s.target = Profile::from_samples(hula::studies::uniform_abscissae(200),
+                                     hula::studies::curvature_profile_of(truth, 2, 200, tangent, std::nullopt,
+                                                                         hula::studies::ProfileAbscissa::ArcLength));
+    const CurvatureMatch match(s);
+    MatchStudy st = ga_study(MatchMethod::Hybrid);
+    st.ga.generations = 10;
+    const auto r = hula::studies::run_curvature_match(match, st);
+    EXPECT_GT(r.before.mean, 1e-2) << "seed " << seed;
+    EXPECT_LE(r.after.mean, 1e-6) << "seed " << seed << ": " << r.lm->message;
+    EXPECT_EQ(r.lm_start, "direct") << "seed " << seed;
+  }
+}
+
 // checks: on the 20-variable far starts, the exact Jacobian (default) and central differences both reach 1e-6
 // from the direct start, the exact one with at most half the residual evaluations (one per Jacobian instead of
 // 2 x 20 + 1).

@@ -222,8 +222,10 @@ std::optional<LmResult> knot_refine(const CurvatureMatch& match, const LmOptions
   const std::vector<double>& t = breaks->parameters;
   const std::vector<optim::Variable> vars = match.variables();
   std::vector<Vec3> pts(n);
-  // The chain for length L; the data points where their chord-length fractions are t_k (three corrections from
-  // s_k = L t_k: a chord is shorter than its arc by O(h³ κ²), which shifts the fractions as much as L does).
+  // The chain for length L; the data points at s_k = L t_k for an arc-length target, else where their chord-length
+  // fractions are t_k (three corrections: a chord is shorter than its arc by O(h³ κ²), which shifts the fractions as
+  // much as L does).
+  const int corrections = s.abscissa == ProfileAbscissa::ArcLength ? 0 : 3;
   std::vector<intrinsic::ClothoidSegment> chain(u.size() - 1);
   std::vector<double> at(n);
   auto point_at = [&](double arc, double length) {
@@ -250,7 +252,7 @@ std::optional<LmResult> knot_refine(const CurvatureMatch& match, const LmOptions
         pts[k] = point_at(at[k], length);
         if (k > 0) total += distance(pts[k - 1], pts[k]);
       }
-      if (pass == 3 || !(total > 0.0)) break;
+      if (pass == corrections || !(total > 0.0)) break;
       double chord = 0.0;
       for (std::size_t k = 1; k + 1 < n; ++k) {
         chord += distance(pts[k - 1], pts[k]);
