@@ -193,7 +193,8 @@ std::vector<Vec3> seeded_arc(std::size_t n, std::uint64_t seed) {
 
 // The far-start hybrid at 50 free variables (docs/studies.md, "Far starts", variables 50 / seed 1): 26 points of a
 // seeded arc moved by up to 15 % of the spacing, bounds of 75 %, start point and tangent fixed; GA 50 x 10, then
-// Ceres from the direct start and from the GA's best. Arg 0 = finite-difference Jacobian, 1 = exact Jacobian.
+// Ceres from the direct start through the data parameters read off the target (with the length search of
+// knot_refine, match_study.cpp). Arg 0 = finite-difference Jacobian, 1 = exact Jacobian.
 void BM_match_hybrid_far_50(benchmark::State& state) {
   constexpr std::size_t kPoints = 26;
   constexpr std::uint64_t kSeed = 1;

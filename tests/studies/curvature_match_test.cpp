@@ -211,3 +211,47 @@ TEST(CurvatureMatch, CurvatureAndTorsionDistancesForTheTwoObjectiveStudy) {
 }
 
 }  // namespace
+
+namespace {
+
+// checks: the data parameters read off the curvature profile of a C2 cubic (200 samples) equal the chord-length
+// parameters of its data points (nurbs::parameterise) to within 1.5 sample spacings (most to a tenth), on seeded convex
+// point sets with uneven spacing, clamped start or natural ends.
+TEST(SplineProfileBreaks, FindsTheDataParametersOfSeededSplines) {
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    hula::Rng rng(seed);
+    const std::size_t n = 6 + static_cast<std::size_t>(rng.uniform(0.0, 8.0));
+    std::vector<Vec3> pts(n);
+    double s = 0.0;
+    for (std::size_t k = 0; k < n; ++k, s += rng.uniform(0.7, 1.3))
+      pts[k] = {10.0 * std::sin(0.15 * s), 10.0 * (1.0 - std::cos(0.15 * s)), 0.0};
+    const std::optional<Vec3> tangent = seed % 2 == 0 ? std::optional<Vec3>(pts[1] - pts[0]) : std::nullopt;
+    const std::vector<double> kappa = hula::studies::curvature_profile_of(pts, 2, 200, tangent);
+    const auto breaks = hula::studies::spline_profile_breaks(kappa, n - 2);
+    ASSERT_TRUE(breaks.has_value()) << "seed " << seed;
+    const std::vector<double> t = hula::nurbs::parameterise(pts, hula::nurbs::Parameterisation::ChordLength);
+    ASSERT_EQ(breaks->parameters.size(), n);
+    for (std::size_t k = 0; k < n; ++k)
+      EXPECT_NEAR(breaks->parameters[k], t[k], 1.5 / 199.0) << "seed " << seed << " k " << k;
+  }
+}
+
+// checks: a smooth law profile has no data parameters to find (none returned), and the unsigned profile of an S-shaped
+// spline (one inflection) comes back signed, changing sign once, where the spline's signed curvature does.
+TEST(SplineProfileBreaks, SmoothProfilesHaveNoneAndInflectionsChangeTheSign) {
+  std::vector<double> smooth(200);
+  for (std::size_t i = 0; i < 200; ++i) smooth[i] = 0.05 + 0.02 * std::sin(3.0 * static_cast<double>(i) / 199.0);
+  EXPECT_FALSE(hula::studies::spline_profile_breaks(smooth, 5).has_value());
+  std::vector<Vec3> pts;
+  for (int k = 0; k <= 6; ++k) pts.push_back({5.0 * k, 6.0 * std::sin(0.2 * M_PI * k), 0.0});
+  const std::vector<double> kappa = hula::studies::curvature_profile_of(pts, 2, 200);
+  const auto breaks = hula::studies::spline_profile_breaks(kappa, pts.size() - 2);
+  ASSERT_TRUE(breaks.has_value());
+  int changes = 0;
+  for (std::size_t i = 1; i < 200; ++i)
+    if ((breaks->signed_samples[i] < 0.0) != (breaks->signed_samples[i - 1] < 0.0)) ++changes;
+  EXPECT_EQ(changes, 1);
+  for (std::size_t i = 0; i < 200; ++i) EXPECT_EQ(std::fabs(breaks->signed_samples[i]), kappa[i]);
+}
+
+}  // namespace

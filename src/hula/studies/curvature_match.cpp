@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "hula/studies/curvature_match.hpp"
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -718,6 +719,96 @@ std::vector<double> curvature_profile_of(std::span<const Vec3> points, int dimen
                                          std::optional<Vec3> start_tangent, std::optional<Vec3> end_tangent,
                                          ProfileAbscissa abscissa) {
   return profile_of(points, dimension, samples, start_tangent, end_tangent, abscissa, false);
+}
+
+std::optional<SplineProfileBreaks> spline_profile_breaks(std::span<const double> kappa, std::size_t interior,
+                                                         double separation) {
+  const std::size_t n = kappa.size();
+  constexpr std::size_t kReach = 4;  // window of a pair (j, j + 1): samples j − 4 … j + 5
+  constexpr int kSteps = 50;         // positions tried per sample interval
+  if (n < 2 * kReach + 2 || n - 1 < (2 * kReach - 2) * (interior + 1)) return std::nullopt;
+  for (const double k : kappa)
+    if (!std::isfinite(k)) return std::nullopt;
+  // Per interval (j, j + 1): least squares on its window, a cubic in the sample index against the cubic plus
+  // J (i − ξ)_+ for ξ in [j, j + 1]; the score is the root of the squares the kink explains, ξ the best position.
+  std::vector<double> score(n, 0.0), where(n, 0.0);
+  const Eigen::Index rows = 2 * static_cast<Eigen::Index>(kReach) + 2;
+  Eigen::MatrixXd basis(rows, 5);
+  Eigen::VectorXd y(rows);
+  for (std::size_t j = kReach; j + kReach + 1 < n; ++j) {
+    for (Eigen::Index r = 0; r < rows; ++r) {
+      const double x = static_cast<double>(r) - static_cast<double>(kReach) - 0.5;
+      basis.row(r) << 1.0, x, x * x, x * x * x, 0.0;
+      y(r) = kappa[j - kReach + static_cast<std::size_t>(r)];
+    }
+    const double scale = std::max(y.cwiseAbs().maxCoeff(), 1e-300);
+    y /= scale;
+    const double smooth = (basis.leftCols(4) * basis.leftCols(4).colPivHouseholderQr().solve(y) - y).squaredNorm();
+    double best = smooth;
+    for (int k = 0; k <= kSteps; ++k) {
+      const double xi = static_cast<double>(k) / kSteps - 0.5;
+      for (Eigen::Index r = 0; r < rows; ++r) basis(r, 4) = std::max(0.0, basis(r, 1) - xi);
+      const Eigen::VectorXd c = basis.colPivHouseholderQr().solve(y);
+      const double rss = (basis * c - y).squaredNorm();
+      if (rss < best) best = rss, where[j] = static_cast<double>(j) + 0.5 + xi;
+    }
+    score[j] = std::sqrt(std::max(0.0, smooth - best)) * scale;
+  }
+  // The unsigned κ crossing zero (an inflection): a local minimum that the straight lines through the two samples
+  // on either side carry below zero. κ changes sign between the two samples where the signed ones are straighter.
+  std::vector<double> flips;
+  for (std::size_t i = 2; i + 2 < n; ++i) {
+    if (!(kappa[i] <= kappa[i - 1] && kappa[i] <= kappa[i + 1])) continue;
+    const double left = 2.0 * kappa[i - 1] - kappa[i - 2], right = 2.0 * kappa[i + 1] - kappa[i + 2];
+    if (!(std::min(left, right) < 0.0)) continue;
+    auto bend = [&](std::size_t f) {  // samples after f negated
+      double sum = 0.0;
+      for (std::size_t m = i - 1; m <= i + 1; ++m) {
+        auto v = [&](std::size_t q) { return q > f ? -kappa[q] : kappa[q]; };
+        sum += std::fabs(v(m - 1) - 2.0 * v(m) + v(m + 1));
+      }
+      return sum;
+    };
+    flips.push_back(static_cast<double>(bend(i - 1) < bend(i) ? i - 1 : i) + 0.5);
+  }
+  // Intervals strongest first, each a local maximum, none within four samples of one taken before or of a zero
+  // crossing (whose kink is not a data parameter).
+  std::vector<std::size_t> order;
+  for (std::size_t j = kReach; j + kReach + 1 < n; ++j)
+    if (score[j] > 0.0 && score[j] >= score[j - 1] && score[j] >= score[j + 1]) order.push_back(j);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t p, std::size_t q) { return score[p] > score[q]; });
+  std::vector<double> taken;
+  double weakest = 0.0, left_out = 0.0;
+  auto near = [&](const std::vector<double>& v, double x) {
+    return std::any_of(v.begin(), v.end(), [&](double w) { return std::fabs(w - x) < static_cast<double>(kReach); });
+  };
+  for (const std::size_t j : order) {
+    if (near(taken, where[j]) || near(flips, where[j])) continue;
+    if (taken.size() == interior) {
+      left_out = score[j];
+      break;
+    }
+    taken.push_back(where[j]);
+    weakest = score[j];
+  }
+  if (taken.size() != interior || (interior > 0 && !(weakest >= separation * left_out))) return std::nullopt;
+  SplineProfileBreaks r;
+  const double du = 1.0 / static_cast<double>(n - 1);
+  r.parameters.push_back(0.0);
+  for (const double x : taken) r.parameters.push_back(x * du);
+  r.parameters.push_back(1.0);
+  std::sort(r.parameters.begin(), r.parameters.end());
+  // The sign flips past each crossing (in order of i), and is positive where the profile turns most.
+  r.signed_samples.assign(kappa.begin(), kappa.end());
+  double sign = 1.0, total = 0.0;
+  for (std::size_t i = 0, next = 0; i < n; ++i) {
+    while (next < flips.size() && flips[next] < static_cast<double>(i)) sign = -sign, ++next;
+    r.signed_samples[i] *= sign;
+    total += r.signed_samples[i];
+  }
+  if (total < 0.0)
+    for (double& v : r.signed_samples) v = -v;
+  return r;
 }
 
 std::vector<double> torsion_profile_of(std::span<const Vec3> points, std::size_t samples,

@@ -24,8 +24,10 @@
 // best stalls at 1e-3..1e-2 with either solver: Ceres converges there too
 // (parameter tolerance), so these are local minima, not a solver failure. The
 // hybrid therefore also starts from the direct route (LmOptions::direct_start,
-// match_study.cpp). A continuation over the profile (κ0 → κ* in 4 steps) was
-// measured and did not help. docs/studies.md gives the measured table.
+// match_study.cpp): where the target is a spline's profile, through the data
+// parameters read off it (spline_profile_breaks), which reaches 1e-6 with 20,
+// 35 and 50 free coordinates. A continuation over the profile (κ0 → κ* in 4
+// steps) was measured and did not help. docs/studies.md gives the measured table.
 #pragma once
 
 #include <cstddef>
@@ -58,10 +60,13 @@ struct LmOptions {
   /// The solver. Default Ceres; ClampedLm only to compare with the issue-6 results.
   LsqSolver solver = LsqSolver::Ceres;
   /// Matching studies (run_curvature_match, planar): also build starts by integrating the target profile from
-  /// the start point and tangent (the direct route, the profile read as one of normalised arc length, length of
-  /// the start spline), with the data points at the start's chord fractions or equally spaced along it, and
-  /// refine from the closer of it and the GA's best first, then from the other if the target was not reached,
-  /// keeping the better (MatchResult::lm_start says which; the iterations add up). Default true.
+  /// the start point and tangent (the direct route, the profile read as one of normalised arc length). Where the
+  /// target shows the data parameters of a spline (spline_profile_breaks), the data points go there along the
+  /// integrated curve, its length chosen by a scan and, if the end may slide, a golden-section search over
+  /// lengths on the distance after a 20-step refinement; that refinement comes first. Otherwise the length is the
+  /// start spline's, the points at the start's chord fractions or equally spaced, and the refinement starts from
+  /// the closer of it and the GA's best. If the target was not reached, the other start is refined too, keeping
+  /// the better (MatchResult::lm_start says which; the iterations add up). Default true.
   bool direct_start = true;
   /// Steps (accepted or rejected) at most; >= 1. Default 200.
   std::size_t max_iterations = 200;

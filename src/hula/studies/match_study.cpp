@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "hula/core/error.hpp"
+#include "hula/intrinsic/clothoid.hpp"
 #include "hula/nurbs/arc_length.hpp"
 #include "hula/nurbs/interpolate.hpp"
 #include "hula/optim/sweep.hpp"
@@ -196,6 +197,143 @@ std::optional<std::vector<double>> direct_start(const CurvatureMatch& match, con
   }
 }
 
+// The hybrid's start through the target's own data parameters (issue 14 item 1). A target that is the curvature
+// profile of a spline through the data points tells where they sit: its slope jumps at their parameters t_k, and
+// its zero crossings give the sign of κ (spline_profile_breaks). The signed samples, read as a profile of the
+// normalised arc length (a chord-length parameter differs from it by O(h² κ²) within a span) and joined linearly,
+// are a chain of clothoids: integrated exactly from the start point and tangent with length L, the data points are
+// put at L t_k along it. L is left free by the profile up to the spline's interpolation ripples: it is chosen by a
+// scan over ±20 % of the start spline's length and a golden-section search on the mean curvature distance, then
+// refined (LM). Where that does not reach the target (the end may slide: the scan is flat over a range of lengths),
+// a golden-section search over that range on the distance after a 20-step refinement from each length, and LM from
+// the best. Returns the refinement (its iterations and evaluations summed); unset where the breaks cannot be told
+// (a smooth law profile, too few samples per span), for space studies, or where the start is degenerate.
+std::optional<LmResult> knot_refine(const CurvatureMatch& match, const LmOptions& lm) try {
+  const CurvatureMatchSetup& s = match.setup();
+  if (s.dimension != 2) return std::nullopt;
+  const std::size_t n = s.points.size();
+  const std::optional<SplineProfileBreaks> breaks = spline_profile_breaks(match.target_samples(), n - 2);
+  if (!breaks) return std::nullopt;
+  const nurbs::NurbsCurve start_curve = match.sampler().curve(s.points);
+  const Vec3 tangent =
+      normalized(s.start_tangent ? *s.start_tangent : start_curve.derivatives(start_curve.domain().start, 1)[1]);
+  // Unsigned profiles turn towards the last data point where they turn most (as direct_problem).
+  const double side = cross(tangent, s.points.back() - s.points.front()).z < 0.0 ? -1.0 : 1.0;
+  const std::vector<double>& u = match.sampler().abscissae();
+  const std::vector<double>& kappa = breaks->signed_samples;
+  const std::vector<double>& t = breaks->parameters;
+  const std::vector<optim::Variable> vars = match.variables();
+  std::vector<Vec3> pts(n);
+  // The chain for length L; the data points at s_k = L t_k for an arc-length target, else where their chord-length
+  // fractions are t_k (three corrections: a chord is shorter than its arc by O(h³ κ²), which shifts the fractions as
+  // much as L does).
+  const int corrections = s.abscissa == ProfileAbscissa::ArcLength ? 0 : 3;
+  std::vector<intrinsic::ClothoidSegment> chain(u.size() - 1);
+  std::vector<double> at(n);
+  auto point_at = [&](double arc, double length) {
+    const double f = std::clamp(arc / length, 0.0, 1.0);
+    const auto i = static_cast<std::size_t>(std::upper_bound(u.begin(), u.end(), f) - u.begin());
+    const std::size_t seg = std::min(i == 0 ? 0 : i - 1, chain.size() - 1);
+    return chain[seg].point(arc - length * u[seg]);
+  };
+  auto design = [&](double length) {
+    intrinsic::ClothoidSegment c{.start = s.points.front(), .theta0 = std::atan2(tangent.y, tangent.x)};
+    for (std::size_t i = 0; i + 1 < u.size(); ++i) {
+      c.length = length * (u[i + 1] - u[i]);
+      c.kappa0 = side * kappa[i];
+      c.dkappa = side * (kappa[i + 1] - kappa[i]) / c.length;
+      chain[i] = c;
+      const double theta = c.angle(c.length);
+      c.start = c.point(c.length);
+      c.theta0 = theta;
+    }
+    for (std::size_t k = 0; k < n; ++k) at[k] = length * t[k];
+    for (int pass = 0;; ++pass) {
+      double total = 0.0;
+      for (std::size_t k = 0; k < n; ++k) {
+        pts[k] = point_at(at[k], length);
+        if (k > 0) total += distance(pts[k - 1], pts[k]);
+      }
+      if (pass == corrections || !(total > 0.0)) break;
+      double chord = 0.0;
+      for (std::size_t k = 1; k + 1 < n; ++k) {
+        chord += distance(pts[k - 1], pts[k]);
+        at[k] += total * (t[k] - chord / total);
+      }
+    }
+    std::vector<double> x = match.variables_from(pts);
+    for (std::size_t j = 0; j < x.size(); ++j) x[j] = std::clamp(x[j], vars[j].lower, vars[j].upper);
+    return x;
+  };
+  auto cost = [&](double length) {
+    const double m = mean_of(design(length), match);
+    return std::isfinite(m) ? m : std::numeric_limits<double>::infinity();
+  };
+  const double l0 = nurbs::arc_length(start_curve);
+  constexpr int kScan = 80;
+  constexpr double kRange = 0.2;  // lengths l0 exp(±0.2)
+  std::vector<double> lengths, costs;
+  for (int i = 0; i <= kScan; ++i) {
+    lengths.push_back(l0 * std::exp(kRange * (2.0 * i / kScan - 1.0)));
+    costs.push_back(cost(lengths.back()));
+  }
+  const auto best = static_cast<std::size_t>(std::min_element(costs.begin(), costs.end()) - costs.begin());
+  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+  // Golden-section search for the least f on [a, b] (f evaluated at most 2 + steps times, until done()); returns the
+  // better abscissa.
+  auto golden = [g](double a, double b, int steps, auto&& f, auto&& done) {
+    double c = b - g * (b - a), e = a + g * (b - a), fc = f(c), fe = done() ? fc : f(e);
+    for (int it = 0; it < steps && !done(); ++it) {
+      if (fc < fe) {
+        b = e, e = c, fe = fc, c = b - g * (b - a), fc = f(c);
+      } else {
+        a = c, c = e, fc = fe, e = a + g * (b - a), fe = f(e);
+      }
+    }
+    return fc < fe ? c : e;
+  };
+  const double l1 = golden(lengths[best > 0 ? best - 1 : 0], lengths[std::min<std::size_t>(best + 1, kScan)], 30, cost,
+                           [] { return false; });
+  LmResult result = refine_levenberg_marquardt(match, design(l1), lm);
+  result.mean_before = mean_of(design(l1), match);
+  if (result.mean_after <= lm.target_mean) return result;
+  // Where the free end lets L slide (a plateau of the scan), the lengths differ only by the interpolation ripples,
+  // below what reading the profile as one of arc length costs; a short refinement from each length removes that
+  // cost, and a golden-section search over the plateau on the refined distance finds L.
+  constexpr std::size_t kPolishIterations = 20;
+  constexpr int kPolishSteps = 12;
+  std::size_t lo = best, hi = best;
+  while (lo > 0 && costs[lo - 1] <= 10.0 * costs[best]) --lo;
+  while (hi < kScan && costs[hi + 1] <= 10.0 * costs[best]) ++hi;
+  LmOptions polish = lm;
+  polish.max_iterations = kPolishIterations;
+  auto accumulate = [&](LmResult r) {
+    r.iterations += result.iterations;
+    r.evaluations += result.evaluations;
+    r.seconds += result.seconds;
+    r.mean_before = result.mean_before;
+    if (r.mean_after < result.mean_after) {
+      result = std::move(r);
+    } else {
+      result.iterations = r.iterations, result.evaluations = r.evaluations, result.seconds = r.seconds;
+    }
+  };
+  auto reached = [&] { return result.mean_after <= lm.target_mean; };
+  golden(
+      lengths[lo], lengths[hi], kPolishSteps,
+      [&](double length) {
+        LmResult r = refine_levenberg_marquardt(match, design(length), polish);
+        const double m = r.mean_after;
+        accumulate(std::move(r));
+        return m;
+      },
+      reached);
+  if (!reached()) accumulate(refine_levenberg_marquardt(match, result.variables, lm));
+  return result;
+} catch (const Error&) {
+  return std::nullopt;
+}
+
 // One run of the study's method on one problem (one round of run_recentred).
 MatchResult run_once(const CurvatureMatch& match, const MatchStudy& study, bool keep_log) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -238,18 +376,11 @@ MatchResult run_once(const CurvatureMatch& match, const MatchStudy& study, bool 
     case MatchMethod::Direct:
       break;
     case MatchMethod::Hybrid: {
-      // Multi-start: LM from the closer of the GA's best and the direct start; if that does not reach the target,
-      // also from the other, keeping the better (a close start can lie in a worse basin than a farther one).
+      // Multi-start: where the target shows its data parameters, first the refinement from the direct start through
+      // them (knot_refine); otherwise LM from the closer of the GA's best and the direct start. If that does not
+      // reach the target, also from the other, keeping the better (a close start can lie in a worse basin).
       std::vector<std::pair<std::string, std::vector<double>>> starts{{"ga", result.ga_best}};
-      if (study.lm.direct_start)
-        if (auto d = direct_start(match, study)) {
-          if (mean_of(*d, match) < result.after_ga.mean)
-            starts.insert(starts.begin(), {"direct", std::move(*d)});
-          else
-            starts.emplace_back("direct", std::move(*d));
-        }
-      for (const auto& [name, from] : starts) {
-        LmResult lm = refine_levenberg_marquardt(match, from, study.lm);
+      auto keep = [&](const std::string& name, LmResult lm) {
         const bool better = !result.lm || lm.mean_after < result.lm->mean_after;
         if (result.lm) {
           lm.iterations += result.lm->iterations;
@@ -265,7 +396,20 @@ MatchResult run_once(const CurvatureMatch& match, const MatchStudy& study, bool 
           result.lm->evaluations = lm.evaluations;
           result.lm->seconds = lm.seconds;
         }
-        if (result.lm->mean_after <= study.lm.target_mean) break;
+      };
+      if (study.lm.direct_start) {
+        if (std::optional<LmResult> k = knot_refine(match, study.lm)) {
+          keep("direct", std::move(*k));
+        } else if (auto d = direct_start(match, study)) {
+          if (mean_of(*d, match) < result.after_ga.mean)
+            starts.insert(starts.begin(), {"direct", std::move(*d)});
+          else
+            starts.emplace_back("direct", std::move(*d));
+        }
+      }
+      for (const auto& [name, from] : starts) {
+        if (result.lm && result.lm->mean_after <= study.lm.target_mean) break;
+        keep(name, refine_levenberg_marquardt(match, from, study.lm));
       }
     }
       // LM minimises the sum of squares; where no exact solution exists that can raise the mean |r| of eq. 31
