@@ -15,6 +15,9 @@
 #include <thread>
 
 #include "hula/io/json_curve.hpp"
+#include "hula/io/match_study_file.hpp"
+#include "hula/io/study_file.hpp"
+#include "hula/studies/curvature_match.hpp"
 #include "hula/testing/run_process.hpp"
 #include "hula/testing/temp_dir.hpp"
 
@@ -256,6 +259,40 @@ TEST(StudyRun, CurvatureTorsionStoresCompromise) {
   EXPECT_EQ(objectives, 2u);
   ASSERT_EQ(r.curves.size(), 1u);
   EXPECT_EQ(io::curve_to_json(doc.get(r.curves[0]).curve()), r.result["compromise"]["curve"]);
+  // Every front member's curve passes through its points at their chord-length parameters, and κ, τ taken
+  // from that curve's own derivatives (κ = |C' × C''| / |C'|³, τ = (C' × C'') · C''' / |C' × C''|²) at the
+  // study's abscissae give back its two errors against the study's targets (the workbench previews and
+  // applies these curves).
+  const io::TorsionMatchStudyFile file = io::torsion_match_study_from_json(
+      io::parse_study_json(r.result["study"].dump(), "match-curvature-torsion"), io::confined_to("."));
+  const studies::CurvatureMatch match(file.study.setup);
+  const std::vector<double>& u = match.sampler().abscissae();
+  ASSERT_FALSE(r.result["front"].empty());
+  for (const char* set : {"front", "nsga2_front"})
+    for (const Json& m : r.result[set]) {
+      const nurbs::NurbsCurve c = io::curve_from_json(m["curve"]).nurbs();
+      const nurbs::Interval d = c.domain();
+      std::vector<Vec3> pts;
+      for (const Json& p : m["points"]) pts.push_back({p[0].get<double>(), p[1].get<double>(), p[2].get<double>()});
+      ASSERT_EQ(pts.size(), 5u);
+      std::vector<double> chord{0.0};
+      for (std::size_t k = 1; k < pts.size(); ++k) chord.push_back(chord.back() + norm(pts[k] - pts[k - 1]));
+      for (std::size_t k = 0; k < pts.size(); ++k)
+        EXPECT_LT(norm(c.evaluate(d.start + d.length() * chord[k] / chord.back()) - pts[k]), 1e-9) << set << k;
+      double kappa = 0.0, tau = 0.0;
+      std::size_t defined = 0;
+      for (std::size_t i = 0; i < u.size(); ++i) {
+        const std::vector<Vec3> D = c.derivatives(d.start + u[i] * d.length(), 3);
+        const Vec3 b = cross(D[1], D[2]);
+        const double s = norm(D[1]);
+        kappa += std::abs(norm(b) / (s * s * s) - match.target_samples()[i]);
+        if (norm(b) <= 1e-12 * s * s * s) continue;
+        tau += std::abs(dot(b, D[3]) / dot(b, b) - match.torsion_target_samples()[i]);
+        ++defined;
+      }
+      EXPECT_NEAR(kappa / static_cast<double>(u.size()), m["curvature"].get<double>(), 1e-9) << set;
+      EXPECT_NEAR(tau / static_cast<double>(defined), m["torsion"].get<double>(), 1e-9) << set;
+    }
 }
 
 // Checks an edit-projection study whose original curve is a document entity (examples/studies/edit-projection):

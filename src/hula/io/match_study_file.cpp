@@ -657,11 +657,16 @@ Json torsion_match_result_to_json(const CurvatureMatch& match, const TorsionMatc
                   {"points", points_of(match, match.start_variables())}};
   const auto members = [&](const std::vector<TorsionFrontMember>& set) {
     Json front = Json::array();
-    for (const TorsionFrontMember& m : set)
+    std::vector<Vec3> pts(match.setup().points.size());
+    for (const TorsionFrontMember& m : set) {
+      match.points_from(m.variables, pts);
+      // Each member's curve (the spline its errors were measured on), so a client can preview and apply any of them.
       front.push_back({{"curvature", m.curvature},
                        {"torsion", m.torsion},
                        {"polished", m.polished},
-                       {"points", points_of(match, m.variables)}});
+                       {"points", points_json(pts, 3)},
+                       {"curve", curve_to_json(match.sampler().curve(pts))}});
+    }
     return front;
   };
   out["front"] = members(result.front);
