@@ -335,6 +335,73 @@ test('pick a Pareto point', async ({ page }) => {
   await shot(page, 'pareto-explorer');
 });
 
+// The curvature + torsion study (NSGA-II) on a space curve: every front member carries its curve,
+// hovering a point previews that curve in the viewports, clicking puts it on the curve the study was
+// run from (checked over the API: the entity's curve is the member's, one new history step).
+test('preview and apply a curvature + torsion Pareto point', async ({ page }) => {
+  needsDocuments();
+  const doc = await newDoc('pareto-study');
+  const label = await addCurve(doc, 'space', spaceBezier);
+  await openApp(page, doc);
+  await selectCurve(page, label);
+  await page.locator('#opt-kind').selectOption('match-curvature-torsion');
+  const study = JSON.parse(await page.locator('#opt-study').inputValue()) as Record<
+    string,
+    unknown
+  >;
+  // A small run (a few seconds) without the polish, which could collapse the set to one curve.
+  study['nsga2'] = { population: 16, generations: 8 };
+  study['polish'] = false;
+  await page.locator('#opt-study').fill(JSON.stringify(study));
+  await page.locator('#opt-start').click();
+  await expect(page.locator('#opt-info')).toHaveAttribute('data-state', 'done', {
+    timeout: 45_000,
+  });
+  await idle(page);
+  const pareto = page.locator('#opt-pareto');
+  await expect(pareto).toBeVisible();
+  const n = Number(await pareto.getAttribute('data-points'));
+  expect(n).toBeGreaterThanOrEqual(2);
+  const k = Math.floor(n / 2);
+  const member = await page.evaluate((i) => window.__hula.app.optimise.front[i]!, k);
+  expect(member.curve?.kind).toBe('nurbs');
+  const steps0 = (await history(doc)).steps.length;
+  await pareto.scrollIntoViewIfNeeded();
+  const at = await page.evaluate((i) => window.__hula.app.optimise.paretoPixel(i), k);
+  await page.mouse.move(at!.x, at!.y);
+  await expect(pareto).toHaveAttribute('data-hover', String(k));
+  await expect(page.locator('#viewports')).toHaveAttribute('data-preview', '200');
+  // The preview's first and last points are the member curve's ends (its first and last data points),
+  // up to the float32 of the GPU buffer.
+  const ends = await page.evaluate(() => {
+    const line = (
+      window.__hula.app.viewports as unknown as {
+        preview: { geometry: { getAttribute(n: string): { array: ArrayLike<number> } } };
+      }
+    ).preview.geometry.getAttribute('position').array;
+    // 200 points (data-preview) in a float32 buffer that may be longer.
+    return [
+      [line[0]!, line[1]!, line[2]!],
+      [line[597]!, line[598]!, line[599]!],
+    ];
+  });
+  const pts = (member.curve as { control_points: number[][] }).control_points;
+  for (const [p, q] of [
+    [ends[0]!, pts[0]!],
+    [ends[1]!, pts[pts.length - 1]!],
+  ] as const)
+    for (let c = 0; c < 3; c++) expect(Math.abs(p[c]! - q[c]!)).toBeLessThan(1e-4);
+  await shot(page, 'pareto-study-preview');
+  await page.mouse.click(at!.x, at!.y);
+  await expect(pareto).toHaveAttribute('data-picked', String(k));
+  await idle(page);
+  await expect
+    .poll(async () => (await entity(doc, label)).curve, { timeout: 10_000 })
+    .toEqual(member.curve);
+  expect((await history(doc)).steps.length).toBe(steps0 + 1);
+  await expect(page.locator('.toast')).toHaveCount(0);
+});
+
 // Reload: the document (persisted by the server) comes back as it was.
 test('reload finds everything persisted', async ({ page }) => {
   needsDocuments();

@@ -243,6 +243,18 @@ export interface Solution {
   violation: number | null;
   curve?: CurveFile;
 }
+/** One curve of a match-curvature-torsion study's Pareto set (docs/formats.md). */
+export interface TorsionFrontMember {
+  curvature: number;
+  torsion: number;
+  polished: boolean;
+  points: number[][];
+  curve: CurveFile;
+}
+/** The members of a study's result the page reads (the rest is shown as stored). */
+export interface StudyResult {
+  front?: TorsionFrontMember[];
+}
 export interface JobReport {
   termination: string;
   message: string;
@@ -257,7 +269,17 @@ export interface Job {
   kind: string;
   state: JobState;
   report: JobReport | null;
-  result: { best?: Solution; front?: Solution[]; curve?: CurveFile } | null;
+  /**
+   * A problem job's best, front and curve; a study job's stored entities and
+   * the study's own result (docs/server.md "Study jobs").
+   */
+  result: {
+    best?: Solution;
+    front?: Solution[];
+    curve?: CurveFile;
+    curves?: string[];
+    result?: StudyResult;
+  } | null;
   error: ErrorBody | null;
 }
 export interface GenerationEvent {

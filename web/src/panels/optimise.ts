@@ -6,8 +6,10 @@
 import uPlot from 'uplot';
 import type { App } from '../app';
 import { handlesOf } from '../app';
-import type { CurveFile, GenerationEvent, Job, Solution } from '../api/types';
-import { logMagnitude, paddedRange } from '../graphs/scale';
+import type { CurveFile, GenerationEvent, Job, Solution, TorsionFrontMember } from '../api/types';
+import { NurbsEvaluator } from '../geometry/nurbs';
+import { logMagnitude, paddedRange, tickLabels } from '../graphs/scale';
+import type { Vec3 } from '../viewport/math';
 import { toVec3 } from '../viewport/viewports';
 
 export type StudyKind = 'match-curvature' | 'match-curvature-torsion' | 'fair-knots';
@@ -248,6 +250,8 @@ export class OptimisePanel {
     const best = job.result?.best?.objectives ?? [];
     this.info.textContent = `job ${job.job}: ${job.state}${job.report ? ` after ${job.report.generations} generations, ${job.report.evaluations} evaluations (${job.report.termination})` : ''}${best.length ? ` · best ${best.map((b) => (b ?? NaN).toExponential(3)).join(', ')}` : ''}${job.error ? ` · ${job.error.code}: ${job.error.message}` : ''}`;
     if (job.result?.front && job.result.front.length > 0) this.drawPareto(job.result.front);
+    const members = job.result?.result?.front;
+    if (members && members.length > 0) this.drawPareto(members.map(studySolution));
     const li = document.createElement('li');
     li.textContent = `${job.job} ${job.state}`;
     const again = document.createElement('button');
@@ -319,9 +323,20 @@ export class OptimisePanel {
         height: 170,
         legend: { show: false },
         scales: { x: { time: false, range: [xr.min, xr.max] }, y: { range: [yr.min, yr.max] } },
+        // Tick labels with the digits their spacing needs: a study's front can span 1e-5.
         axes: [
-          { stroke: '#aab4c3', label: this.objectiveNames[0], size: 30 },
-          { stroke: '#aab4c3', label: this.objectiveNames[1], size: 55 },
+          {
+            stroke: '#aab4c3',
+            label: this.objectiveNames[0],
+            size: 30,
+            values: (_u, splits) => tickLabels(splits),
+          },
+          {
+            stroke: '#aab4c3',
+            label: this.objectiveNames[1],
+            size: 65,
+            values: (_u, splits) => tickLabels(splits),
+          },
         ],
         series: [
           {},
@@ -369,10 +384,11 @@ export class OptimisePanel {
     };
   }
 
-  /** Hover: show the candidate's curve handles as a preview polygon. */
+  /** Hover: show the candidate's curve (its polyline and handles) as a preview. */
   private preview(i: number | null): void {
     const c = i === null ? undefined : this.front[i]?.curve;
-    this.app.viewports.setPreview(c ? handlesOf(c) : []);
+    if (c) this.app.viewports.setPreview(curvePolyline(c), handlesOf(c));
+    else this.app.viewports.setPreview([]);
     this.paretoEl.dataset['hover'] = i === null ? '' : String(i);
   }
 
@@ -390,6 +406,32 @@ export class OptimisePanel {
     await this.app.replaceCurve(label, s.curve);
     this.info.textContent = `applied Pareto point ${i}: ${s.objectives.map((o) => (o ?? NaN).toExponential(3)).join(', ')}`;
   }
+}
+
+/**
+ * A match-curvature-torsion front member as a Pareto point: its two errors,
+ * its data coordinates as the variables, and its spline (the curve the errors
+ * were measured on) to preview and apply.
+ */
+export function studySolution(m: TorsionFrontMember): Solution {
+  return {
+    objectives: [m.curvature, m.torsion],
+    variables: m.points.flat(),
+    violation: null,
+    curve: m.curve,
+  };
+}
+
+/** The preview polyline of a curve: 200 points along a NURBS, else its handles. */
+function curvePolyline(c: CurveFile): Vec3[] {
+  const e = NurbsEvaluator.of(c);
+  if (!e) return handlesOf(c);
+  const [a, b] = e.domain;
+  const out = new Float64Array(3);
+  return Array.from({ length: 200 }, (_, i) => {
+    e.derivatives(a + ((b - a) * i) / 199, 0, out);
+    return [out[0]!, out[1]!, out[2]!] as Vec3;
+  });
 }
 
 function isPlanar(c: CurveFile): boolean {

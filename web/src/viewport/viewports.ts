@@ -532,11 +532,15 @@ export class Viewports {
     this.requestRender();
   }
 
-  /** Rubber-band preview of the tool being used (points entered so far). */
-  setPreview(points: readonly Vec3[]): void {
+  /**
+   * Rubber-band preview of the tool being used (points entered so far), or a
+   * candidate curve (its polyline) with its data points as `markers`.
+   */
+  setPreview(points: readonly Vec3[], markers: readonly Vec3[] = points): void {
     setPositions(this.preview.geometry, points);
     this.preview.computeLineDistances();
-    setPositions(this.previewPoints.geometry, points);
+    setPositions(this.previewPoints.geometry, markers);
+    this.root.dataset['preview'] = points.length ? String(points.length) : '';
     this.requestRender();
   }
 
