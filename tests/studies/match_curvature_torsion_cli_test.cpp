@@ -21,7 +21,7 @@ ProcessResult hula_run(const std::vector<std::string>& args) { return hula::test
 const std::string kExample = std::string(HULA_SOURCE_DIR) + "/examples/studies/match-curvature-torsion-helix.json";
 
 // Issue 6: κ and τ both prescribed from a known space curve; the Pareto set contains a curve matching both
-// within 1e-3 (the polished best compromise), and every member carries both errors.
+// within 1e-3 (the polished best compromise), and every member carries both errors and its curve.
 TEST(MatchCurvatureTorsionCli, HelixExampleMatchesBothProfiles) {
   const hula::testing::TempDir dir;
   const ProcessResult r = hula_run({"match-curvature-torsion", kExample, "--svg", (dir.path() / "svg").string(),
@@ -31,7 +31,8 @@ TEST(MatchCurvatureTorsionCli, HelixExampleMatchesBothProfiles) {
   ASSERT_FALSE(j["front"].empty());
   bool both = false;
   for (const Json& m : j["front"]) {
-    ASSERT_TRUE(m.contains("curvature") && m.contains("torsion") && m.contains("points"));
+    ASSERT_TRUE(m.contains("curvature") && m.contains("torsion") && m.contains("points") && m.contains("curve"));
+    EXPECT_EQ(m["curve"]["kind"], "nurbs");
     both = both || (m["curvature"].get<double>() < 1e-3 && m["torsion"].get<double>() < 1e-3);
   }
   EXPECT_TRUE(both);
