@@ -1012,7 +1012,11 @@ export class App {
     if (this.settling === d.label) this.settling = null;
     if (!d.first) {
       if (this.preview?.label === d.label) this.preview.until = this.analysisSeq + 1;
-      this.fetchStale([d.label]);
+      // The stored curve (and so its analysis with features and the history) once the fairing
+      // assistant's ghost of the final position is on screen: it would otherwise queue before it.
+      this.fairing.afterGhost(() => {
+        this.fetchStale([d.label]);
+      });
     }
     if (this.panelsStale) {
       this.panelsStale = false;
@@ -1023,6 +1027,9 @@ export class App {
   private endDrag(): void {
     const d = this.drag;
     if (!d) return;
+    // The fairing assistant's ghost of the final position is asked for first, the page's own
+    // redrawing and storing of that position after.
+    this.fairing.dragEnded();
     // The last position is drawn even when no frame came between it and the release.
     this.drawDrag();
     this.drag = null;
@@ -1033,7 +1040,6 @@ export class App {
     } else if (!d.inFlight) this.dragSettled(d);
     this.setStatus(`Moved point ${d.index}`);
     this.redrawCurve(d.label);
-    this.fairing.dragEnded();
   }
 
   get dragging(): boolean {

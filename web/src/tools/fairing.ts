@@ -22,7 +22,7 @@ import { el } from '../panels/dom';
  * A held pointer that has not moved for this long has stopped (pointer events come every
  * 8–17 ms while it moves); a released one has stopped at once.
  */
-const HOLD_MS = 30;
+const HOLD_MS = 20;
 /** The optimisation budget the page asks for, seconds: with the round trip and a frame, ≤ 150 ms. */
 const BUDGET_S = 0.08;
 
@@ -119,9 +119,28 @@ export class FairingAssistant {
     if (this.enabled) this.schedule(HOLD_MS);
   }
 
-  /** The pointer was released after a drag: the ghost of its final position, at once. */
+  /**
+   * The pointer was released after a drag: the ghost of its final position is asked for at once,
+   * before the page redraws the curve and stores the position (App.endDrag).
+   */
   dragEnded(): void {
-    if (this.enabled) this.schedule(0);
+    if (!this.enabled) return;
+    window.clearTimeout(this.timer);
+    this.timer = 0;
+    this.request();
+  }
+
+  /**
+   * Run `work` (the page's catching up after a drag: the stored curve, its analysis with
+   * features, the history) once the ghost being asked for is on screen, so that its answer and
+   * frame do not queue behind it; at once when no ghost is on the way.
+   */
+  afterGhost(work: () => void): void {
+    if (!this.enabled || !this.busy) {
+      work();
+      return;
+    }
+    this.deferred.push(work);
   }
 
   /** The curve changed (an edit, an undo, another tab) or was selected: ask for a new ghost. */
@@ -142,7 +161,23 @@ export class FairingAssistant {
   }
 
   get busy(): boolean {
-    return this.inFlight !== null || this.timer !== 0;
+    return this.inFlight !== null || this.timer !== 0 || this.graphsTimer !== 0;
+  }
+
+  /** What waits for the ghost to be shown (afterGhost). */
+  private deferred: (() => void)[] = [];
+  /** The graphs' overlay of a ghost just drawn, updated after the frame that shows it. */
+  private graphsTimer = 0;
+
+  private runDeferred(): void {
+    const work = this.deferred;
+    this.deferred = [];
+    for (const w of work) w();
+  }
+
+  /** Nothing more is coming for the ghost the page wants: let the deferred work run. */
+  private settled(): void {
+    if (this.inFlight === null && this.timer === 0 && !this.shownPending) this.runDeferred();
   }
 
   private schedule(delay: number): void {
@@ -163,11 +198,15 @@ export class FairingAssistant {
 
   private request(): void {
     const want = this.wanted();
-    if (!want) return;
+    if (!want) {
+      this.settled();
+      return;
+    }
     if (this.preview?.key === want.key) {
       // The ghost on screen is already of this curve (the drag came back, or the store caught
       // up with the position the ghost was asked for): nothing to ask.
       this.pendingLatency = this.lastMove;
+      this.shownPending = true;
       this.app.viewports.requestRender();
       return;
     }
@@ -221,6 +260,7 @@ export class FairingAssistant {
         // The curve changed while this one was computed: ask for the current one.
         const now = this.wanted();
         if (now && now.key !== this.preview?.key && this.timer === 0) this.schedule(0);
+        else this.settled();
       });
   }
 
@@ -236,7 +276,7 @@ export class FairingAssistant {
       a ? a.points : null,
       comb ? finLines(comb.base, comb.tip, factor) : [],
     );
-    this.app.updateGraphs();
+    // The κ overlay follows in the task after the frame that shows the ghost (frameDrawn).
     const r = p.result;
     const drop =
       r.energy_before > 0 ? (100 * (r.energy_before - r.energy_after)) / r.energy_before : 0;
@@ -249,21 +289,36 @@ export class FairingAssistant {
     // The ghost is of the last pointer position (request() drew it only if so): the clock stops at
     // the frame that shows it.
     this.pendingLatency = this.lastMove;
+    this.shownPending = true;
   }
 
+  /** A ghost was drawn (setFaired) and the frame that shows it has not come yet. */
+  private shownPending = false;
+
   private frameDrawn(): void {
-    if (!this.pendingLatency) return;
-    const ms = performance.now() - this.pendingLatency;
-    this.pendingLatency = 0;
-    this.lastMove = 0;
-    this.latencies.push(ms);
-    this.app.viewports.root.dataset['fairLatency'] = ms.toFixed(1);
+    if (!this.shownPending) return;
+    this.shownPending = false;
+    if (this.pendingLatency) {
+      const ms = performance.now() - this.pendingLatency;
+      this.pendingLatency = 0;
+      this.lastMove = 0;
+      this.latencies.push(ms);
+      this.app.viewports.root.dataset['fairLatency'] = ms.toFixed(1);
+    }
+    // Not in this frame's task: the frame with the ghost is presented first.
+    window.clearTimeout(this.graphsTimer);
+    this.graphsTimer = window.setTimeout(() => {
+      this.graphsTimer = 0;
+      this.app.updateGraphs();
+      this.settled();
+    }, 0);
   }
 
   /** Hide the ghost. */
   clear(): void {
     window.clearTimeout(this.timer);
     this.timer = 0;
+    this.runDeferred();
     if (!this.preview) return;
     this.preview = null;
     this.app.viewports.setFaired(null);
