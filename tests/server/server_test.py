@@ -632,6 +632,17 @@ class LifecycleTest(unittest.TestCase):
         finally:
             os.unlink(f.name)
 
+    # checks --io-threads: one thread still serves requests; 0 is refused naming the option (exit 2, CLI11's range check)
+    def test_io_threads_option(self):
+        with Server(HULA, args=["--io-threads", "1"]) as server:
+            reply = server.request("GET", "/api/health")
+            self.assertEqual(reply[0], 200, reply)
+        import subprocess
+        with tempfile.TemporaryDirectory() as ws:
+            r = subprocess.run([HULA, "serve", "--workspace", ws, "--io-threads", "0"], capture_output=True, timeout=10)
+        self.assertEqual(r.returncode, 2)
+        self.assertIn("--io-threads", r.stderr.decode())
+
     # checks static files: index.html at /, content types, no escape by .. or symlink
     def test_static_files(self):
         with tempfile.TemporaryDirectory() as web, tempfile.TemporaryDirectory() as outside:

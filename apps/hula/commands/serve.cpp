@@ -39,6 +39,7 @@ struct ServeArgs {
   std::size_t max_connections = 16384;
   double read_timeout = 10.0;
   std::size_t max_body_mib = 64;
+  std::size_t io_threads = 2;
 };
 
 bool is_loopback(const std::string& host) { return host == "127.0.0.1" || host == "::1"; }
@@ -93,6 +94,7 @@ int run_serve(const ServeArgs& a) {
   o.max_connections = a.max_connections;
   o.read_timeout = a.read_timeout;
   o.max_body = static_cast<std::uint64_t>(a.max_body_mib) * 1024 * 1024;
+  o.io_threads = a.io_threads;
   o.version = HULA_VERSION;
   raise_descriptor_limit();
   keep_freed_memory();
@@ -147,6 +149,9 @@ Command add_serve(CLI::App& app) {
                   "(default 10)");
   sub->add_option("--max-body", a->max_body_mib, "Largest request body in MiB (default 64)")
       ->check(CLI::Range(1, 4096));
+  sub->add_option("--io-threads", a->io_threads,
+                  "Threads serving HTTP requests, each request on one to its end (default 2)")
+      ->check(CLI::Range(1, 256));
   return {sub, [a] { return run_serve(*a); }};
 }
 

@@ -31,7 +31,8 @@ struct ServerOptions {
   std::size_t jobs = 1;
   /// Jobs allowed to wait for a worker; one more gets 429. ≥ 1.
   std::size_t queue_limit = 16;
-  /// Threads serving HTTP, ≥ 1.
+  /// Threads serving HTTP, ≥ 1; each request runs on one to its end. Two on a 2-core machine: four did not shorten
+  /// the fairing ghost's wait (docs/benchmarks.md, "Fairing ghost before the page's own catching up").
   std::size_t io_threads = 2;
   /// Open connections at most; one more is answered 503 and closed. ≥ 1.
   std::size_t max_connections = 16384;
