@@ -229,6 +229,28 @@ void check_finite(double v, const char* field) {
                 ErrorWhere{.field = field});
 }
 
+// The chord of a Hermite problem from (p0, θ0) to (p1, θ1), its data checked: finite, p1 ≠ p0 (the error says
+// which interpolation, `what`, needs two points).
+struct Chord {
+  double length = 0.0;  ///< |p1 − p0| in the xy-plane
+  double angle = 0.0;   ///< its direction
+};
+
+Chord hermite_chord(const Vec3& p0, double theta0, const Vec3& p1, double theta1, const char* what) {
+  check_finite(p0.x, "p0");
+  check_finite(p0.y, "p0");
+  check_finite(p1.x, "p1");
+  check_finite(p1.y, "p1");
+  check_finite(theta0, "theta0");
+  check_finite(theta1, "theta1");
+  const double dx = p1.x - p0.x, dy = p1.y - p0.y;
+  const double r = std::hypot(dx, dy);
+  if (!(r > 0.0))
+    throw Error(Errc::CoincidentPoints, std::string("p1 coincides with p0: ") + what + " needs two distinct points",
+                ErrorWhere{.field = "p1"});
+  return {r, std::atan2(dy, dx)};
+}
+
 }  // namespace
 
 FresnelValues fresnel(double x) {
@@ -298,18 +320,7 @@ void ClothoidG1Options::validate() const {
 ClothoidG1Result fit_clothoid_g1(const Vec3& p0, double theta0, const Vec3& p1, double theta1,
                                  const ClothoidG1Options& options) {
   options.validate();
-  check_finite(p0.x, "p0");
-  check_finite(p0.y, "p0");
-  check_finite(p1.x, "p1");
-  check_finite(p1.y, "p1");
-  check_finite(theta0, "theta0");
-  check_finite(theta1, "theta1");
-  const double dx = p1.x - p0.x, dy = p1.y - p0.y;
-  const double r = std::hypot(dx, dy);
-  if (!(r > 0.0))
-    throw Error(Errc::CoincidentPoints, "p1 coincides with p0: a G1 clothoid needs two distinct points",
-                ErrorWhere{.field = "p1"});
-  const double phi = std::atan2(dy, dx);
+  const auto [r, phi] = hermite_chord(p0, theta0, p1, theta1, "a G1 clothoid");
   const double phi0 = reduce_angle(theta0 - phi), phi1 = reduce_angle(theta1 - phi);
   const double delta = phi1 - phi0;
   // Bertolazzi–Frego's guess, then Halley's method on g(A) = Y(A) (their proof: the relevant root is
@@ -366,20 +377,9 @@ void ClothoidG2Options::validate() const {
 ClothoidG2Result fit_clothoid_g2(const Vec3& p0, double theta0, double kappa0, const Vec3& p1, double theta1,
                                  double kappa1, const ClothoidG2Options& options) {
   options.validate();
-  check_finite(p0.x, "p0");
-  check_finite(p0.y, "p0");
-  check_finite(p1.x, "p1");
-  check_finite(p1.y, "p1");
-  check_finite(theta0, "theta0");
-  check_finite(theta1, "theta1");
   check_finite(kappa0, "kappa0");
   check_finite(kappa1, "kappa1");
-  const double dx = p1.x - p0.x, dy = p1.y - p0.y;
-  const double r = std::hypot(dx, dy);
-  if (!(r > 0.0))
-    throw Error(Errc::CoincidentPoints, "p1 coincides with p0: a G2 clothoid spline needs two distinct points",
-                ErrorWhere{.field = "p1"});
-  const double phi = std::atan2(dy, dx);
+  const auto [r, phi] = hermite_chord(p0, theta0, p1, theta1, "a G2 clothoid spline");
   G2Scaled d;
   d.th0 = reduce_angle(theta0 - phi);
   d.th1 = reduce_angle(theta1 - phi);
@@ -405,7 +405,7 @@ ClothoidG2Result fit_clothoid_g2(const Vec3& p0, double theta0, double kappa0, c
     G2State g;
     if (!g2_newton(d, sm, thm, options, iterations, g)) continue;
     // Back to model coordinates: lengths × r, curvatures / r, rates / r², angles + (θ0 − φ0).
-    const double c = dx / r, sn = dy / r, offset = theta0 - d.th0, h = 0.5 * sm;
+    const double c = std::cos(phi), sn = std::sin(phi), offset = theta0 - d.th0, h = 0.5 * sm;
     const auto to_model = [&](const std::array<double, 2>& v) {
       return Vec3{p0.x + r * (c * v[0] - sn * v[1]), p0.y + r * (sn * v[0] + c * v[1]), p0.z};
     };

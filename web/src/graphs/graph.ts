@@ -7,6 +7,7 @@ import 'uplot/dist/uPlot.min.css';
 import type { Analysis } from '../api/types';
 import {
   boxDiagonal,
+  finiteExtent,
   logMagnitude,
   nearestIndex,
   paddedRange,
@@ -76,15 +77,8 @@ export function valueFloor(q: Quantity, values: ArrayLike<number>, size: number)
 
 /** max − min of the finite values (0 for none). */
 export function spanOf(values: ArrayLike<number>): number {
-  let min = Infinity;
-  let max = -Infinity;
-  for (let i = 0; i < values.length; i++) {
-    const v = values[i]!;
-    if (!Number.isFinite(v)) continue;
-    if (v < min) min = v;
-    if (v > max) max = v;
-  }
-  return max >= min ? max - min : 0;
+  const extent = finiteExtent(values);
+  return extent ? extent.max - extent.min : 0;
 }
 
 export interface Marker {

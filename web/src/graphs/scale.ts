@@ -7,14 +7,8 @@ export interface Range {
   readonly max: number;
 }
 
-/**
- * The range of the finite values of `values`, padded by `pad` of its span on
- * each side. A constant series gets ±(|v|·pad or 1); no finite value gives [0, 1].
- * NaN marks undefined samples (torsion where κ = 0) and is skipped. With
- * `minSpan` > 0 the range, before padding, is at least `minSpan` wide, centred
- * on the values (see spanFloor): rounding noise is then drawn as the flat line it is.
- */
-export function paddedRange(values: ArrayLike<number>, pad = 0.05, minSpan = 0): Range {
+/** The least and greatest finite values of `values` (NaN and ±Infinity skipped); null when there is none. */
+export function finiteExtent(values: ArrayLike<number>): { min: number; max: number } | null {
   let min = Infinity;
   let max = -Infinity;
   for (let i = 0; i < values.length; i++) {
@@ -23,7 +17,20 @@ export function paddedRange(values: ArrayLike<number>, pad = 0.05, minSpan = 0):
     if (v < min) min = v;
     if (v > max) max = v;
   }
-  if (min === Infinity) return { min: 0, max: 1 };
+  return min === Infinity ? null : { min, max };
+}
+
+/**
+ * The range of the finite values of `values`, padded by `pad` of its span on
+ * each side. A constant series gets ±(|v|·pad or 1); no finite value gives [0, 1].
+ * NaN marks undefined samples (torsion where κ = 0) and is skipped. With
+ * `minSpan` > 0 the range, before padding, is at least `minSpan` wide, centred
+ * on the values (see spanFloor): rounding noise is then drawn as the flat line it is.
+ */
+export function paddedRange(values: ArrayLike<number>, pad = 0.05, minSpan = 0): Range {
+  const extent = finiteExtent(values);
+  if (!extent) return { min: 0, max: 1 };
+  let { min, max } = extent;
   if (max - min < minSpan) {
     const mid = (min + max) / 2;
     min = mid - minSpan / 2;
