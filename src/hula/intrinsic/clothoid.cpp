@@ -320,7 +320,8 @@ void ClothoidG1Options::validate() const {
 ClothoidG1Result fit_clothoid_g1(const Vec3& p0, double theta0, const Vec3& p1, double theta1,
                                  const ClothoidG1Options& options) {
   options.validate();
-  const auto [r, phi] = hermite_chord(p0, theta0, p1, theta1, "a G1 clothoid");
+  const Chord chord = hermite_chord(p0, theta0, p1, theta1, "a G1 clothoid");
+  const double r = chord.length, phi = chord.angle;
   const double phi0 = reduce_angle(theta0 - phi), phi1 = reduce_angle(theta1 - phi);
   const double delta = phi1 - phi0;
   // Bertolazzi–Frego's guess, then Halley's method on g(A) = Y(A) (their proof: the relevant root is
@@ -379,7 +380,8 @@ ClothoidG2Result fit_clothoid_g2(const Vec3& p0, double theta0, double kappa0, c
   options.validate();
   check_finite(kappa0, "kappa0");
   check_finite(kappa1, "kappa1");
-  const auto [r, phi] = hermite_chord(p0, theta0, p1, theta1, "a G2 clothoid spline");
+  const Chord chord = hermite_chord(p0, theta0, p1, theta1, "a G2 clothoid spline");
+  const double r = chord.length, phi = chord.angle;  // not a structured binding: clang 14 cannot capture one
   G2Scaled d;
   d.th0 = reduce_angle(theta0 - phi);
   d.th1 = reduce_angle(theta1 - phi);
