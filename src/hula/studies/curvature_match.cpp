@@ -732,25 +732,34 @@ std::optional<SplineProfileBreaks> spline_profile_breaks(std::span<const double>
   // Per interval (j, j + 1): least squares on its window, a cubic in the sample index against the cubic plus
   // J (i − ξ)_+ for ξ in [j, j + 1]; the score is the root of the squares the kink explains, ξ the best position.
   std::vector<double> score(n, 0.0), where(n, 0.0);
-  const Eigen::Index rows = 2 * static_cast<Eigen::Index>(kReach) + 2;
-  Eigen::MatrixXd basis(rows, 5);
-  Eigen::VectorXd y(rows);
+  // The window's design matrices depend on the sample offset and ξ only, not on the interval: factored once.
+  constexpr Eigen::Index rows = 2 * static_cast<Eigen::Index>(kReach) + 2;
+  using Window = Eigen::Matrix<double, rows, 5>;
+  Window basis;
+  for (Eigen::Index r = 0; r < rows; ++r) {
+    const double x = static_cast<double>(r) - static_cast<double>(kReach) - 0.5;
+    basis.row(r) << 1.0, x, x * x, x * x * x, 0.0;
+  }
+  const Eigen::Matrix<double, rows, 4> cubic = basis.leftCols(4);
+  const Eigen::ColPivHouseholderQR<Eigen::Matrix<double, rows, 4>> cubic_qr(cubic);
+  std::vector<Window> kinked(kSteps + 1, basis);
+  std::vector<Eigen::ColPivHouseholderQR<Window>> kinked_qr;
+  kinked_qr.reserve(kSteps + 1);
+  for (int k = 0; k <= kSteps; ++k) {
+    const double xi = static_cast<double>(k) / kSteps - 0.5;
+    for (Eigen::Index r = 0; r < rows; ++r) kinked[k](r, 4) = std::max(0.0, basis(r, 1) - xi);
+    kinked_qr.emplace_back(kinked[k]);
+  }
+  Eigen::Matrix<double, rows, 1> y;
   for (std::size_t j = kReach; j + kReach + 1 < n; ++j) {
-    for (Eigen::Index r = 0; r < rows; ++r) {
-      const double x = static_cast<double>(r) - static_cast<double>(kReach) - 0.5;
-      basis.row(r) << 1.0, x, x * x, x * x * x, 0.0;
-      y(r) = kappa[j - kReach + static_cast<std::size_t>(r)];
-    }
+    for (Eigen::Index r = 0; r < rows; ++r) y(r) = kappa[j - kReach + static_cast<std::size_t>(r)];
     const double scale = std::max(y.cwiseAbs().maxCoeff(), 1e-300);
     y /= scale;
-    const double smooth = (basis.leftCols(4) * basis.leftCols(4).colPivHouseholderQr().solve(y) - y).squaredNorm();
+    const double smooth = (cubic * cubic_qr.solve(y) - y).squaredNorm();
     double best = smooth;
     for (int k = 0; k <= kSteps; ++k) {
-      const double xi = static_cast<double>(k) / kSteps - 0.5;
-      for (Eigen::Index r = 0; r < rows; ++r) basis(r, 4) = std::max(0.0, basis(r, 1) - xi);
-      const Eigen::VectorXd c = basis.colPivHouseholderQr().solve(y);
-      const double rss = (basis * c - y).squaredNorm();
-      if (rss < best) best = rss, where[j] = static_cast<double>(j) + 0.5 + xi;
+      const double rss = (kinked[k] * kinked_qr[k].solve(y) - y).squaredNorm();
+      if (rss < best) best = rss, where[j] = static_cast<double>(j) + 0.5 + (static_cast<double>(k) / kSteps - 0.5);
     }
     score[j] = std::sqrt(std::max(0.0, smooth - best)) * scale;
   }

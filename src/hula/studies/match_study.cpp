@@ -294,8 +294,9 @@ std::optional<LmResult> knot_refine(const CurvatureMatch& match, const LmOptions
   };
   const double l1 = golden(lengths[best > 0 ? best - 1 : 0], lengths[std::min<std::size_t>(best + 1, kScan)], 30, cost,
                            [] { return false; });
-  LmResult result = refine_levenberg_marquardt(match, design(l1), lm);
-  result.mean_before = mean_of(design(l1), match);
+  const std::vector<double> x1 = design(l1);
+  LmResult result = refine_levenberg_marquardt(match, x1, lm);
+  result.mean_before = mean_of(x1, match);
   if (result.mean_after <= lm.target_mean) return result;
   // Where the free end lets L slide (a plateau of the scan), the lengths differ only by the interpolation ripples,
   // below what reading the profile as one of arc length costs; a short refinement from each length removes that
