@@ -40,14 +40,8 @@ optim::IslandOptions island_options(const IslandArgs& args) {
 std::optional<IslandRun> run_islands_or_solve(const optim::Problem& problem, const optim::SolveOptions& options) {
 #if defined(HULA_WITH_MPI)
   if (options.islands && optim::launched_by_mpi()) {
-    optim::IslandAlgorithm algorithm;
-    if (const auto* o = std::get_if<optim::RealGaOptions>(&options.algorithm))
-      algorithm = *o;
-    else if (const auto* b = std::get_if<optim::BinaryGaOptions>(&options.algorithm))
-      algorithm = *b;
-    else
-      algorithm = std::get<optim::Nsga2Options>(options.algorithm);
-    std::optional<optim::IslandsResult> merged = optim::solve_islands_mpi(problem, algorithm, *options.islands);
+    std::optional<optim::IslandsResult> merged =
+        optim::solve_islands_mpi(problem, optim::island_algorithm(options.algorithm), *options.islands);
     if (!merged) return std::nullopt;
     return IslandRun{optim::solve_result(problem, std::move(*merged)), "mpi"};
   }

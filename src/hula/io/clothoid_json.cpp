@@ -4,20 +4,14 @@
 
 namespace hula::io {
 
-namespace {
-
-Json xy(const Vec3& p) { return Json::array({p.x, p.y}); }
-
-}  // namespace
-
 Json clothoid_segment_to_json(const intrinsic::ClothoidSegment& segment) {
   Json j = Json::object();
-  j["start"] = xy(segment.start);
+  j["start"] = point_to_json(segment.start, 2);
   j["theta0"] = segment.theta0;
   j["kappa0"] = segment.kappa0;
   j["dkappa"] = segment.dkappa;
   j["length"] = segment.length;
-  j["end"] = xy(segment.point(segment.length));
+  j["end"] = point_to_json(segment.point(segment.length), 2);
   j["theta1"] = segment.angle(segment.length);
   j["kappa1"] = segment.curvature(segment.length);
   return j;

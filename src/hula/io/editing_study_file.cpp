@@ -78,23 +78,16 @@ Json fit_json(const LawCurveFit& f) {
   return j;
 }
 
-// A point as 2 or 3 numbers.
-Json point_json(const Vec3& v, int dimension) {
-  Json a = Json::array({v.x, v.y});
-  if (dimension != 2) a.push_back(v.z);
-  return a;
-}
-
 Json handles_json(const HermiteHandles& h, int dim) {
   Json arr = Json::array();
   for (std::size_t i = 0; i < h.points.size(); ++i) {
     Json k = Json::object();
     k["t"] = h.parameters[i];
-    k["point"] = point_json(h.points[i], dim);
-    k["first"] = point_json(h.first[i], dim);
-    k["second"] = point_json(h.second[i], dim);
-    k["tangent_handle"] = point_json(h.first[i], dim);
-    k["normal_handle"] = point_json(h.normal_handle[i], dim);
+    k["point"] = point_to_json(h.points[i], dim);
+    k["first"] = point_to_json(h.first[i], dim);
+    k["second"] = point_to_json(h.second[i], dim);
+    k["tangent_handle"] = point_to_json(h.first[i], dim);
+    k["normal_handle"] = point_to_json(h.normal_handle[i], dim);
     arr.push_back(std::move(k));
   }
   return arr;

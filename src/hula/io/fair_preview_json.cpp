@@ -9,16 +9,6 @@
 
 namespace hula::io {
 
-namespace {
-
-Json points_json(const std::vector<Vec3>& points) {
-  Json out = Json::array();
-  for (const Vec3& p : points) out.push_back({p.x, p.y, p.z});
-  return out;
-}
-
-}  // namespace
-
 FairPreviewRequest fair_preview_request_from_json(const Json& body) {
   const json::JsonPath root;
   json::reject_unknown_members(body, root, {"tolerance", "method", "budget", "analysis", "curve"});
@@ -44,8 +34,8 @@ Json fair_preview_to_json(const studies::AssistantResult& r, const studies::Assi
   out["energy_before"] = r.energy_before;
   out["energy_after"] = r.energy_after;
   out["max_deviation"] = r.max_deviation;
-  out["data_points"] = points_json(r.data_points);
-  out["faired_points"] = points_json(r.faired_points);
+  out["data_points"] = points_to_json(r.data_points, 3);
+  out["faired_points"] = points_to_json(r.faired_points, 3);
   out["iterations"] = r.iterations;
   out["stopped"] = r.stopped;
   out["seconds"] = r.seconds;

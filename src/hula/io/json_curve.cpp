@@ -78,8 +78,6 @@ nurbs::EndCondition end_condition_from_json(const Json& value, std::string_view 
                    "{\"direction\": [x, y, z]})");
 }
 
-namespace {
-
 Json point_to_json(const Vec3& p, int dimension) {
   Json a = Json::array({p.x, p.y});
   if (dimension != 2) a.push_back(p.z);
@@ -91,6 +89,8 @@ Json points_to_json(std::span<const Vec3> points, int dimension) {
   for (const Vec3& p : points) a.push_back(point_to_json(p, dimension));
   return a;
 }
+
+namespace {
 
 Json numbers_to_json(std::span<const double> values) {
   Json a = Json::array();

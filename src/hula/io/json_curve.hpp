@@ -28,6 +28,7 @@
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -100,6 +101,11 @@ inline constexpr int kCurveFormatVersion = 1;
 /// (2-D curves write [x, y] points; weights are null for a non-rational NURBS). Doubles are
 /// written so that curve_from_json(curve_to_json(c)) == c bit for bit.
 [[nodiscard]] Json curve_to_json(const curve::Curve& curve);
+
+/// A point as [x, y] (dimension 2) or [x, y, z] (otherwise), as the curve files write them.
+[[nodiscard]] Json point_to_json(const Vec3& p, int dimension);
+/// Points as an array of point_to_json.
+[[nodiscard]] Json points_to_json(std::span<const Vec3> points, int dimension);
 /// Serialises a document as the files are written (format_json: 2-space indentation, arrays of
 /// numbers on one line, final newline).
 [[nodiscard]] std::string to_file_text(const Json& document);

@@ -295,18 +295,6 @@ Json map_json(const MatchMapSettings& settings, const optim::SweepResult& map, s
   return out;
 }
 
-Json point_json(const Vec3& p, int dimension) {
-  Json a = Json::array({p.x, p.y});
-  if (dimension == 3) a.push_back(p.z);
-  return a;
-}
-
-Json points_json(std::span<const Vec3> pts, int dimension) {
-  Json a = Json::array();
-  for (const Vec3& p : pts) a.push_back(point_json(p, dimension));
-  return a;
-}
-
 Json distances_json(const MatchDistances& d) {
   Json o = Json::object();
   auto num = [](double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); };
@@ -331,7 +319,7 @@ Json rounds_json(const CurvatureMatch& match, std::span<const RecentreRound> rou
     out.push_back({{"round", i},
                    {"lower", lower},
                    {"upper", upper},
-                   {"best_points", points_json(pts, dimension)},
+                   {"best_points", points_to_json(pts, dimension)},
                    {"after", distances_json(r.after)},
                    {"on_bound", on_bound_json(r.variables, r.on_bound)},
                    {"evaluations", r.evaluations}});
@@ -415,12 +403,12 @@ MatchSetupJson match_setup_from_json(const Json& body, const PathResolver& resol
 
 void match_setup_to_json(const MatchSetupJson& setup, Json& out) {
   const CurvatureMatchSetup& s = setup.setup;
-  out["points"] = points_json(s.points, s.dimension);
-  out["lower"] = points_json(s.lower, s.dimension);
-  out["upper"] = points_json(s.upper, s.dimension);
+  out["points"] = points_to_json(s.points, s.dimension);
+  out["lower"] = points_to_json(s.lower, s.dimension);
+  out["upper"] = points_to_json(s.upper, s.dimension);
   if (!s.proximity.empty()) out["proximity"] = s.proximity;
-  if (s.start_tangent) out["start_tangent"] = point_json(*s.start_tangent, s.dimension);
-  if (s.end_tangent) out["end_tangent"] = point_json(*s.end_tangent, s.dimension);
+  if (s.start_tangent) out["start_tangent"] = point_to_json(*s.start_tangent, s.dimension);
+  if (s.end_tangent) out["end_tangent"] = point_to_json(*s.end_tangent, s.dimension);
   out["target"] = setup.target;
   if (s.torsion_target) out["torsion_target"] = setup.torsion_target;
   out["abscissa"] = std::string(profile_abscissa_name(s.abscissa));
@@ -515,10 +503,10 @@ Json match_result_to_json(const CurvatureMatch& match, const MatchStudyFile& fil
   out["variables"] = Json::array();
   for (const auto& v : match.variables()) out["variables"].push_back(v.name);
   match.points_from(result.start, pts);
-  out["start_points"] = points_json(pts, dim);
+  out["start_points"] = points_to_json(pts, dim);
   match.points_from(result.best, pts);
   // The direct route moves no data point: its best points are the reconstructed curve at the data abscissae.
-  out["best_points"] = points_json(result.direct ? result.direct_points : pts, dim);
+  out["best_points"] = points_to_json(result.direct ? result.direct_points : pts, dim);
   out["before"] = distances_json(result.before);
   out["after_ga"] = distances_json(result.after_ga);
   if (result.lm) {
@@ -564,7 +552,7 @@ Json match_result_to_json(const CurvatureMatch& match, const MatchStudyFile& fil
     out["distinct"] = Json::array();
     for (const optim::Solution& d : result.distinct) {
       match.points_from(d.variables, pts);
-      out["distinct"].push_back({{"objective", d.objectives.at(0)}, {"points", points_json(pts, dim)}});
+      out["distinct"].push_back({{"objective", d.objectives.at(0)}, {"points", points_to_json(pts, dim)}});
     }
   }
   out["curve"] = curve_to_json(match.sampler().curve(pts));
@@ -664,7 +652,7 @@ Json torsion_match_result_to_json(const CurvatureMatch& match, const TorsionMatc
       front.push_back({{"curvature", m.curvature},
                        {"torsion", m.torsion},
                        {"polished", m.polished},
-                       {"points", points_json(pts, 3)},
+                       {"points", points_to_json(pts, 3)},
                        {"curve", curve_to_json(match.sampler().curve(pts))}});
     }
     return front;

@@ -42,6 +42,11 @@ enum class Termination {
                    ///< Levenberg–Marquardt's relative cost reduction)
 };
 
+/// Whether a run ended early by the user's limits (wall time or cancellation), keeping its best so far.
+[[nodiscard]] constexpr bool stopped_early(Termination reason) noexcept {
+  return reason == Termination::WallTime || reason == Termination::Cancelled;
+}
+
 /// Stable name of a termination reason, e.g. "MaxGenerations".
 [[nodiscard]] std::string_view termination_name(Termination reason) noexcept;
 /// The reason of a name termination_name() gives; empty for any other text.

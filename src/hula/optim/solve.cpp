@@ -81,21 +81,18 @@ SolveResult solve_result(const Problem& problem, IslandsResult islands) {
   return out;
 }
 
+IslandAlgorithm island_algorithm(const SolverOptions& algorithm) {
+  if (const auto* o = std::get_if<RealGaOptions>(&algorithm)) return *o;
+  if (const auto* b = std::get_if<BinaryGaOptions>(&algorithm)) return *b;
+  if (const auto* n = std::get_if<Nsga2Options>(&algorithm)) return *n;
+  refuse("islands run the GAs and NSGA-II only", "islands");
+}
+
 SolveResult solve(const Problem& problem, const SolveOptions& options) {
   const bool nelder_mead_chosen = std::holds_alternative<NelderMeadOptions>(options.algorithm);
   if (!options.start.empty() && !nelder_mead_chosen) refuse("start is taken by nelder-mead only", "start");
-  if (options.islands) {
-    IslandAlgorithm algorithm;
-    if (const auto* o = std::get_if<RealGaOptions>(&options.algorithm))
-      algorithm = *o;
-    else if (const auto* b = std::get_if<BinaryGaOptions>(&options.algorithm))
-      algorithm = *b;
-    else if (const auto* n = std::get_if<Nsga2Options>(&options.algorithm))
-      algorithm = *n;
-    else
-      refuse("islands run the GAs and NSGA-II only", "islands");
-    return solve_result(problem, solve_islands(problem, algorithm, *options.islands));
-  }
+  if (options.islands)
+    return solve_result(problem, solve_islands(problem, island_algorithm(options.algorithm), *options.islands));
   SolveResult out;
   if (const auto* o = std::get_if<RealGaOptions>(&options.algorithm)) {
     GaResult r = solve_real_ga(problem, *o);

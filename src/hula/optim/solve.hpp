@@ -56,6 +56,10 @@ struct SolveResult {
 /// The result of an archipelago (from solve_islands or solve_islands_mpi) as optim::solve returns it.
 [[nodiscard]] SolveResult solve_result(const Problem& problem, IslandsResult islands);
 
+/// The island algorithm of `algorithm` (the GAs and NSGA-II run as islands).
+/// @throws hula::Error(Errc::InvalidOption) naming "islands" for Nelder–Mead or pagmo's algorithms
+[[nodiscard]] IslandAlgorithm island_algorithm(const SolverOptions& algorithm);
+
 /// Runs the chosen algorithm on `problem`.
 ///
 /// Nelder–Mead minimises the single objective of an unconstrained problem from `options.start` (the centre

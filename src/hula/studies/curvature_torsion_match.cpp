@@ -176,8 +176,7 @@ TorsionMatchResult run_curvature_torsion_match(const CurvatureMatch& match, cons
         TorsionMatchResult r = run_once(m, settings, seed + round, threads, keep_log);
         const optim::Termination t = r.report.termination;
         RoundOutcome outcome{r.front.empty() ? m.start_variables() : r.front[r.compromise].variables,
-                             r.report.evaluations + (r.lm ? r.lm->evaluations : 0),
-                             t == optim::Termination::WallTime || t == optim::Termination::Cancelled};
+                             r.report.evaluations + (r.lm ? r.lm->evaluations : 0), optim::stopped_early(t)};
         if (round > 0) {
           // The start errors are the designer's start's; the convergence record and the log go on over the rounds.
           r.start_curvature = result.start_curvature;

@@ -247,9 +247,7 @@ struct FairingResult {
   optim::Termination termination = optim::Termination::MaxGenerations;
   std::string message{};
   /// True when a wall-time limit or a cancellation token ended the optimiser early.
-  [[nodiscard]] bool stopped() const noexcept {
-    return termination == optim::Termination::WallTime || termination == optim::Termination::Cancelled;
-  }
+  [[nodiscard]] bool stopped() const noexcept { return optim::stopped_early(termination); }
 };
 
 /// GA fairing (7.4): the internal parameters are the variables, boxed by the

@@ -533,7 +533,7 @@ MatchResult run_curvature_match(const CurvatureMatch& match, const MatchStudy& s
           MatchResult r = run_once(m, s, keep_log);
           const optim::Termination t = r.ga_report.termination;
           RoundOutcome outcome{r.best, r.ga_report.evaluations + (r.lm ? r.lm->evaluations : 0),
-                               t == optim::Termination::WallTime || t == optim::Termination::Cancelled};
+                               optim::stopped_early(t)};
           if (round > 0) {
             // The study's start stays the designer's; the convergence record and the log go on over the rounds.
             r.start = std::move(result.start);
