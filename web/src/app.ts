@@ -15,6 +15,7 @@ import type {
 } from './api/types';
 import { DocumentStore } from './store/store';
 import { Graph, type Abscissa, type Quantity } from './graphs/graph';
+import { boxDiagonal, nearestIndex } from './graphs/scale';
 import { Viewports, toVec3 } from './viewport/viewports';
 import {
   dragPlane,
@@ -516,14 +517,7 @@ export class App {
   finBase(label: string, a: Analysis): Partial<Record<FinKind, number>> {
     const s = this.settingsOf(label);
     s.finBase ??= {};
-    const lo = [Infinity, Infinity, Infinity];
-    const hi = [-Infinity, -Infinity, -Infinity];
-    for (const p of a.points)
-      for (let k = 0; k < 3; k++) {
-        lo[k] = Math.min(lo[k]!, p[k] ?? 0);
-        hi[k] = Math.max(hi[k]!, p[k] ?? 0);
-      }
-    const extent = Math.hypot(...hi.map((h, k) => h - lo[k]!)) || 1;
+    const extent = boxDiagonal(a.points) || 1;
     const largest = (v: (number | null)[]): number =>
       Math.max(0, ...v.map((x) => (x !== null && Number.isFinite(x) ? Math.abs(x) : 0)));
     for (const kind of Object.keys(a.combs) as FinKind[]) {
@@ -960,9 +954,7 @@ export class App {
       const before = this.store.analyses.get(d.label) ?? this.preview?.analysis;
       for (const f of before?.features ?? []) {
         if (f.kind !== 'knot') continue;
-        let best = 0;
-        for (let i = 1; i < analysis.t.length; i++)
-          if (Math.abs(analysis.t[i]! - f.t) < Math.abs(analysis.t[best]! - f.t)) best = i;
+        const best = nearestIndex(analysis.t, f.t);
         analysis.features.push(analysis.s.length ? { ...f, s: analysis.s[best]! } : { ...f });
       }
       this.preview = { label: d.label, analysis, handles: d.handles, until: Infinity };

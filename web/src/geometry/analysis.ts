@@ -47,7 +47,7 @@ export interface FrenetSample {
 const NAN3 = (): [number, number, number] => [NaN, NaN, NaN];
 
 /** Frenet quantities from r, r', r'', r''' (frenet_from_derivatives, same tests). */
-export function frenetSample(
+function frenetSample(
   t: number,
   d: Float64Array,
   zeroSpeed: number,
@@ -287,7 +287,7 @@ const norm = (a: V3): number => Math.sqrt(dot(a, a));
 const finite = (a: V3): boolean => a.every(Number.isFinite);
 
 /** Double-reflection rotation-minimising frames u (Wang et al. 2008), as bishop_frame. */
-export function bishopU(samples: readonly FrenetSample[]): (V3 | null)[] {
+function bishopU(samples: readonly FrenetSample[]): (V3 | null)[] {
   const out: (V3 | null)[] = samples.map(() => null);
   let prev = -1;
   for (let i = 0; i < samples.length; i++) {
@@ -346,11 +346,7 @@ function anyNormal(T: V3): V3 {
 }
 
 /** Fin tips of one kind at the samples (null where the fin is undefined), as diffgeom::fins. */
-export function finTips(
-  kind: FinKind,
-  samples: readonly FrenetSample[],
-  scale: number,
-): (Point | null)[] {
+function finTips(kind: FinKind, samples: readonly FrenetSample[], scale: number): (Point | null)[] {
   const u = kind === 'bishop-u' || kind === 'bishop-v' ? bishopU(samples) : [];
   return samples.map((p, i) => {
     let dir: V3 = [0, 0, 0];
@@ -446,7 +442,8 @@ export function analyseNurbs(c: NurbsEvaluator, o: LocalAnalysisOptions): Analys
   const combs: Analysis['combs'] = {};
   const fins: Analysis['fins'] = {};
   if (o.fins.length > 0) {
-    const finSamples = frenetSamples(c, parameterGrid(c, n));
+    // Fins are on the parameter grid (as the server's): the samples themselves when they are on it.
+    const finSamples = o.by === 'parameter' ? samples : frenetSamples(c, parameterGrid(c, n));
     const base = finSamples.map((f) => f.position as Point);
     for (const kind of o.fins) {
       const tip = finTips(kind, finSamples, o.scale);

@@ -11,7 +11,7 @@
 import type { CurveFile } from '../api/types';
 
 /** The largest derivative order the evaluator gives (what Frenet quantities need). */
-export const MAX_ORDER = 3;
+const MAX_ORDER = 3;
 
 export class NurbsEvaluator {
   readonly degree: number;

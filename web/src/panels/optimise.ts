@@ -413,7 +413,7 @@ export class OptimisePanel {
  * its data coordinates as the variables, and its spline (the curve the errors
  * were measured on) to preview and apply.
  */
-export function studySolution(m: TorsionFrontMember): Solution {
+function studySolution(m: TorsionFrontMember): Solution {
   return {
     objectives: [m.curvature, m.torsion],
     variables: m.points.flat(),

@@ -709,7 +709,7 @@ function makeRenderer(): THREE.WebGLRenderer {
   return new THREE.WebGLRenderer({ antialias: !softwareWebGL() });
 }
 
-export function softwareWebGL(): boolean {
+function softwareWebGL(): boolean {
   const gl = document.createElement('canvas').getContext('webgl2', { antialias: false });
   if (!gl) return false;
   const info = gl.getExtension('WEBGL_debug_renderer_info');
