@@ -48,17 +48,9 @@ struct ReconstructArgs {
   double end_tolerance = 1e-9;
 };
 
-// Parses a law of s given as --<field>, naming the option and the expression in errors.
+// A law of s given as --<field>, naming the option and the expression in errors.
 law::Law parse_law(const std::string& text, law::Context& ctx, const char* field) {
-  law::ParseOptions po;
-  po.parameters = {"s"};
-  try {
-    return law::parse(text, ctx, po);
-  } catch (const Error& e) {
-    ErrorWhere where = e.where();
-    where.field = field;
-    throw Error(e.code(), std::string("--") + field + " '" + text + "': " + e.message(), where);
-  }
+  return io::natural_equation_law(text, ctx, field, std::string("--") + field);
 }
 
 Vec3 parse_vec(const std::string& text, const char* field) {
@@ -68,16 +60,6 @@ Vec3 parse_vec(const std::string& text, const char* field) {
                 std::string("--") + field + " needs 3 numbers x,y,z, got " + std::to_string(v.size()),
                 ErrorWhere{.field = field});
   return {v[0], v[1], v[2]};
-}
-
-Json point_json(const intrinsic::FramePoint& p) {
-  Json j = Json::object();
-  j["s"] = p.s;
-  j["position"] = vec_to_json(p.position, 3);
-  j["T"] = vec_to_json(p.tangent, 3);
-  j["N"] = vec_to_json(p.normal, 3);
-  j["B"] = vec_to_json(p.binormal, 3);
-  return j;
 }
 
 int run_reconstruct(const ReconstructArgs& a) {
@@ -147,8 +129,7 @@ int run_reconstruct(const ReconstructArgs& a) {
     for (int i = 0; i <= 4; ++i) ss.push_back(i == 4 ? length : length * i / 4.0);
   else
     ss = parse_number_list(a.at, "at");
-  Json points = Json::array();
-  for (const intrinsic::FramePoint& p : curve->evaluate(ss)) points.push_back(point_json(p));
+  Json points = io::frame_points_json(curve->evaluate(ss));
   if (!a.output.empty()) io::write_curve_file(a.output, fit->curve);
   doc["points"] = std::move(points);
   doc["integration"] = io::integration_summary(*curve);
