@@ -105,20 +105,20 @@ def main():
     checked = 0
     with Server(hula) as server:
         api = OpenApi(json.loads(server.request("GET", "/api/openapi.json")[2]))
-        status, _, body = server.request("POST", "/api/documents", {"name": "conformance"})
+        status, _, body = server.request("POST", "/api/documents", {"name": "conformance.hula"})
         assert status == 201, body
         for name in names:
             path = CORPUS / f"{name}.json"
             curve = json.loads(path.read_text())
-            status, _, body = server.request("POST", "/api/documents/conformance/entities", {"curve": curve})
+            status, _, body = server.request("POST", "/api/documents/conformance.hula/entities", {"curve": curve})
             assert status == 201, body
             label = json.loads(body)["label"]
             for by in ("parameter", "arclength"):
                 from_cli = cli(hula, path, by)
                 status, _, body = server.request(
-                    "POST", f"/api/documents/conformance/entities/{label}/analysis", dict(REQUEST, by=by))
+                    "POST", f"/api/documents/conformance.hula/entities/{label}/analysis", dict(REQUEST, by=by))
                 assert status == 200, body
-                api.validate("POST", f"/api/documents/conformance/entities/{label}/analysis", 200, body)
+                api.validate("POST", f"/api/documents/conformance.hula/entities/{label}/analysis", 200, body)
                 from_http = json.loads(body)
                 del from_http["revision"]
                 from_python = undefined_rows(plain(hh.analyse(
