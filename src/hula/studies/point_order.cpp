@@ -308,6 +308,68 @@ PointOrder order_along_curve(std::span<const Vec3> points, const PointOrderOptio
   return out;
 }
 
+namespace {
+
+// σ from scaled residuals: 1.4826 × median (planar) or median / 1.1774 (space, Rayleigh).
+double sigma_of(std::vector<double>& scaled, bool planar) {
+  if (scaled.empty()) return 0.0;
+  const auto mid = scaled.begin() + static_cast<std::ptrdiff_t>(scaled.size() / 2);
+  std::nth_element(scaled.begin(), mid, scaled.end());
+  // |N(0, σ)| has median 0.6745 σ; the norm of two N(0, σ) has median 1.1774 σ.
+  return planar ? 1.4826 * *mid : *mid / 1.1774;
+}
+
+// Wide windows for noise at or above the spacing (where chord lengths of neighbours are noise): the
+// `width` points around each one in `order`, in their principal-axis frame, a quadratic in the axial
+// coordinate fitted to each transverse coordinate, the point's transverse residual / √(1 − leverage).
+double noise_in_wide_windows(std::span<const Vec3> points, std::span<const std::size_t> order, bool closed,
+                             std::size_t width, bool planar) {
+  const std::size_t n = order.size();
+  const std::size_t half = width / 2;
+  std::vector<double> scaled;
+  const std::size_t stride = std::max<std::size_t>(1, n / 2000);  // a sample of the points suffices
+  for (std::size_t k = 0; k < n; k += stride) {
+    const std::size_t lo = closed ? (k + n - half) % n : (k < half ? 0 : std::min(k - half, n - width));
+    Vec3 mean{};
+    for (std::size_t j = 0; j < width; ++j) mean += points[order[(lo + j) % n]];
+    mean = (1.0 / static_cast<double>(width)) * mean;
+    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+    for (std::size_t j = 0; j < width; ++j) {
+      const Vec3 q = points[order[(lo + j) % n]] - mean;
+      const Eigen::Vector3d d(q.x, q.y, q.z);
+      cov += d * d.transpose();
+    }
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
+    const Eigen::Vector3d axis = eig.eigenvectors().col(2);
+    Eigen::Matrix3d xtx = Eigen::Matrix3d::Zero();
+    Eigen::Matrix3d xty = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d xc = Eigen::Vector3d::Zero(), yc = Eigen::Vector3d::Zero();
+    for (std::size_t j = 0; j < width; ++j) {
+      const Vec3 q = points[order[(lo + j) % n]] - mean;
+      const Eigen::Vector3d d(q.x, q.y, q.z);
+      const double tau = d.dot(axis);
+      const Eigen::Vector3d x(1.0, tau, tau * tau);
+      const Eigen::Vector3d across = d - tau * axis;
+      xtx += x * x.transpose();
+      xty += x * across.transpose();
+      if (order[(lo + j) % n] == order[k]) {
+        xc = x;
+        yc = across;
+      }
+    }
+    const Eigen::LDLT<Eigen::Matrix3d> ldlt(xtx);
+    if (ldlt.info() != Eigen::Success) continue;
+    const double leverage = xc.dot(ldlt.solve(xc));
+    if (!(leverage < 1.0 - 1e-9)) continue;
+    const Eigen::Vector3d r = yc - (ldlt.solve(xty)).transpose() * xc;
+    const double value = r.norm() / std::sqrt(1.0 - leverage);
+    if (std::isfinite(value)) scaled.push_back(value);
+  }
+  return sigma_of(scaled, planar);
+}
+
+}  // namespace
+
 double estimate_noise(std::span<const Vec3> points, std::span<const std::size_t> order, bool closed) {
   constexpr std::size_t kHalf = 3;  // 7-point windows
   constexpr std::size_t kWidth = 2 * kHalf + 1;
@@ -368,11 +430,28 @@ double estimate_noise(std::span<const Vec3> points, std::span<const std::size_t>
     const double value = r.norm() / std::sqrt(1.0 - leverage);
     if (std::isfinite(value)) scaled.push_back(value);
   }
-  if (scaled.empty()) return 0.0;
-  const auto mid = scaled.begin() + static_cast<std::ptrdiff_t>(scaled.size() / 2);
-  std::nth_element(scaled.begin(), mid, scaled.end());
-  // |N(0, σ)| has median 0.6745 σ; the norm of two N(0, σ) has median 1.1774 σ.
-  return planar ? 1.4826 * *mid : *mid / 1.1774;
+  double sigma = sigma_of(scaled, planar);
+  // Noise at or above a fifth of the spacing makes neighbours' chord lengths noise: the windows then
+  // widen until they span about 20 σ along the curve, twice. The spacing along the curve is the length
+  // of the polyline through the means of consecutive blocks of 21 points, over the point count.
+  constexpr std::size_t kBlock = 21;
+  if (n >= 2 * kBlock) {
+    std::vector<Vec3> means;
+    for (std::size_t b = 0; b + kBlock <= n; b += kBlock) {
+      Vec3 sum{};
+      for (std::size_t j = 0; j < kBlock; ++j) sum += points[order[b + j]];
+      means.push_back((1.0 / static_cast<double>(kBlock)) * sum);
+    }
+    double length = 0.0;
+    for (std::size_t b = 1; b < means.size(); ++b) length += distance(means[b - 1], means[b]);
+    const double spacing = length / static_cast<double>(kBlock * (means.size() - 1));
+    for (int pass = 0; pass < 2 && spacing > 0.0 && sigma > 0.2 * spacing; ++pass) {
+      const auto want = static_cast<std::size_t>(std::ceil(10.0 * sigma / spacing));
+      const std::size_t width = std::min<std::size_t>(2 * std::clamp<std::size_t>(want, 4, 150) + 1, n);
+      sigma = std::max(sigma, noise_in_wide_windows(points, order, closed, width, planar));
+    }
+  }
+  return sigma;
 }
 
 CurveOrder order_points(std::span<const Vec3> points, bool given, const PointOrderOptions& options) {

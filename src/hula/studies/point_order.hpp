@@ -78,12 +78,13 @@ struct CurveOrder {
 /// @throws as order_along_curve
 [[nodiscard]] CurveOrder order_points(std::span<const Vec3> points, bool given, const PointOrderOptions& options = {});
 
-/// Noise scale σ̂ across the curve from local polynomial residuals: for each point, the window of the
-/// 9 points nearest it in `order` (wrapping when `closed`) in its principal-axis frame, a quadratic in
-/// the axial coordinate fitted to each transverse coordinate by least squares, and the point's
-/// transverse residual divided by √(1 − hᵢᵢ) (hᵢᵢ its leverage); σ̂ is 1.4826 × the median of these
-/// (planar) or the median / 1.1774 (space: the Rayleigh median), so neither strays nor a few
-/// high-curvature windows move it.
+/// Noise scale σ̂ across the curve from local polynomial residuals: for each point, the 7 points around
+/// it in `order` (wrapping when `closed`), a cubic in their local chord length fitted to each
+/// coordinate, and the point's residual across the fitted tangent divided by √(1 − hᵢᵢ) (hᵢᵢ its
+/// leverage); σ̂ is 1.4826 × the median of these (planar) or the median / 1.1774 (space: the Rayleigh
+/// median), so neither strays nor a few high-curvature windows move it. When σ̂ exceeds a fifth of the
+/// median spacing (the chord lengths of neighbours are then noise), wider windows of about 20 σ̂
+/// along the curve in their principal-axis frame, a quadratic across, give the estimate (twice).
 /// @param order every index of points once, along the curve
 [[nodiscard]] double estimate_noise(std::span<const Vec3> points, std::span<const std::size_t> order, bool closed);
 

@@ -94,34 +94,40 @@ ScanFitResult fit_scan(std::span<const Vec3> points, const ScanFitOptions& optio
   o.fairing_shift = std::min(options.tolerance, std::max(kShiftNoise * order.noise, kShiftFloor * options.tolerance));
   ToleranceFit fit = fit_within_tolerance(points, order.parameters, left_out, o);
 
-  std::vector<std::size_t> kept;
-  for (std::size_t i = 0, k = 0; i < m; ++i) {
-    if (k < fit.outliers.size() && fit.outliers[k] == i) {
-      ++k;
-      continue;
-    }
-    kept.push_back(i);
-  }
-  const ScanCurveReport before = report(fit.fit, fit.fit_deviations, kept);
-  ScanCurveReport after = report(fit.faired, fit.deviations, kept);
   nurbs::NurbsCurve faired = fit.faired;
   double smoothing = fit.smoothing;
   std::vector<double> deviations = fit.deviations, parameters = fit.parameters;
   // The penalty is ∫|C‴|² dt, not ∫κ'² ds itself: when the faired curve's ∫κ'² ds is not below the
   // tolerance fit's, the tolerance fit is returned as faired.
-  if (after.curvature_variation > before.curvature_variation) {
+  const double fit_variation = diffgeom::curvature_variation_energy(fit.fit).value;
+  if (diffgeom::curvature_variation_energy(fit.faired).value > fit_variation) {
     faired = fit.fit;
-    after = before;
     smoothing = 0.0;
     deviations = fit.fit_deviations;
     parameters = fit.fit_parameters;
   }
+  // A stray is a point farther than the tolerance from the curve returned: one left out during the fit
+  // that the faired curve passes within the tolerance is kept (the tolerance fit before fairing may
+  // pass it a little farther: its figures in `before` are over the same kept points).
+  std::vector<std::size_t> kept, strays;
+  for (std::size_t i = 0, k = 0; i < m; ++i) {
+    if (k < fit.outliers.size() && fit.outliers[k] == i) {
+      ++k;
+      if (deviations[i] > options.tolerance) {
+        strays.push_back(i);
+        continue;
+      }
+    }
+    kept.push_back(i);
+  }
+  const ScanCurveReport before = report(fit.fit, fit.fit_deviations, kept);
+  const ScanCurveReport after = smoothing == 0.0 && faired == fit.fit ? before : report(faired, deviations, kept);
   std::vector<std::size_t> along = kept;
   std::stable_sort(along.begin(), along.end(),
                    [&](std::size_t a, std::size_t b) { return parameters[a] < parameters[b]; });
   ScanFitResult result{.fit = fit.fit,
                        .faired = std::move(faired),
-                       .strays = fit.outliers,
+                       .strays = std::move(strays),
                        .order = std::move(along),
                        .parameters = std::move(parameters),
                        .deviations = std::move(deviations),

@@ -88,6 +88,11 @@ constexpr double kLeanNoise = 2.0;
 // A kept point at an open end whose offset along the end tangent exceeds this share of the
 // tolerance lies beyond the end: the parameters are stretched to take it in.
 constexpr double kEndOvershoot = 0.25;
+// ... by more than kEndNoise σ̂ too, and at least kEndRun of them (one noisy point is no run); at most
+// kMaxStretches times per degree.
+constexpr double kEndNoise = 3.0;
+constexpr std::size_t kEndRun = 2;
+constexpr int kMaxStretches = 8;
 // Systematic deviation: windows of kBiasWindow consecutive kept points, in spans of at least
 // kBiasSpan × (p + 1) kept points (sparse design points are never judged by it).
 constexpr std::size_t kBiasWindow = 15;
@@ -530,11 +535,14 @@ Candidate fit_space(Problem& pb, const Space& s, std::span<const double> t0, std
 }
 
 // Open free ends: kept points at t = 0 or 1 whose offset along the outward end tangent exceeds
-// kEndOvershoot × tol lie beyond the curve's end (the fit was started too short); their
+// max(kEndOvershoot × tol, kEndNoise σ̂) (a run of them), or one beyond the end and farther than the
+// tolerance from the curve, lie beyond the curve's end (the fit was started too short); their
 // parameters are extended along the tangent and every parameter rescaled to [0, 1].
-bool stretch_ends(const Problem& pb, const Space& s, const Candidate& c, std::span<const double> weights,
+bool stretch_ends(const Problem& pb, const Space& s, const Candidate& c, std::span<const double> weights, double noise,
                   std::vector<double>& params) {
   const SpanPolynomials curve(s.knots, expand(s, c.unknowns));
+  // Beyond the end by more than the noise explains, and a run of points, not one noisy point.
+  const double threshold = std::max(kEndOvershoot * pb.tol, kEndNoise * noise);
   bool stretched = false;
   std::vector<double> t = c.params;
   for (const double end : {0.0, 1.0}) {
@@ -542,14 +550,20 @@ bool stretch_ends(const Problem& pb, const Space& s, const Candidate& c, std::sp
     const double speed = std::sqrt(norm_squared(d1));
     if (!(speed > 0.0)) continue;
     const Vec3 out = (end == 0.0 ? -1.0 : 1.0) / speed * d1;
-    for (std::size_t i = 0; i < t.size(); ++i) {
-      if (weights[i] <= 0.0 || t[i] != end) continue;
-      const double e = dot(pb.pts[i] - c0, out);
-      if (e > kEndOvershoot * pb.tol) {
-        t[i] = end + (end == 0.0 ? -e : e) / speed;
-        stretched = true;
+    std::vector<std::size_t> beyond;
+    bool offender = false;  // a point beyond the end farther than the tolerance: stretched for anyway
+    for (std::size_t i = 0; i < t.size(); ++i)
+      if (weights[i] > 0.0 && t[i] == end) {
+        const double e = dot(pb.pts[i] - c0, out);
+        if (e > threshold || (e > 0.0 && c.dist[i] > pb.tol)) beyond.push_back(i);
+        offender = offender || (e > 0.0 && c.dist[i] > pb.tol);
       }
+    if (beyond.size() < kEndRun && !offender) continue;
+    for (const std::size_t i : beyond) {
+      const double e = dot(pb.pts[i] - c0, out);
+      t[i] = end + (end == 0.0 ? -e : e) / speed;
     }
+    stretched = true;
   }
   if (!stretched) return false;
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
@@ -641,10 +655,12 @@ std::vector<std::size_t> biased_spans(const Space& s, const Candidate& c, std::s
                                       double limit) {
   std::vector<std::size_t> out;
   if (!(limit > 0.0)) return out;
+  // Points whose foot sits at an open end lie beyond it, their residuals along the end tangent: they
+  // say where the curve ends (stretch_ends), not that it is off its points.
   std::vector<std::size_t> kept;
   for (std::size_t i = 0; i < weights.size(); ++i)
-    if (weights[i] > 0.0) kept.push_back(i);
-  std::stable_sort(kept.begin(), kept.end(), [&](std::size_t a, std::size_t b) { return c.params[a] < c.params[b]; });
+    if (weights[i] > 0.0 && (s.closed || (c.params[i] > 0.0 && c.params[i] < 1.0))) kept.push_back(i);
+  std::sort(kept.begin(), kept.end(), [&](std::size_t a, std::size_t b) { return c.params[a] < c.params[b]; });
   auto span_of = [&](double t) {
     return static_cast<std::size_t>(std::upper_bound(s.interior.begin(), s.interior.end(), t) - s.interior.begin());
   };
@@ -696,7 +712,7 @@ struct Shortfall {
 
 std::optional<DegreeResult> fit_degree(Problem& pb, int p, std::span<const double> params0,
                                        std::span<const double> weights0, const ToleranceFitOptions& o,
-                                       std::size_t budget, Shortfall& shortfall) {
+                                       std::size_t budget, std::size_t cap, Shortfall& shortfall) {
   const std::size_t m = pb.pts.size();
   std::vector<double> params(params0.begin(), params0.end());
   std::vector<double> weights(weights0.begin(), weights0.end());
@@ -705,12 +721,18 @@ std::optional<DegreeResult> fit_degree(Problem& pb, int p, std::span<const doubl
   if (pb.closed)
     for (int k = 1; k <= p; ++k) interior.push_back(static_cast<double>(k) / (p + 1));
   std::optional<DegreeResult> result;
+  int stretches = 0;
   for (int round = 0; round < kMaxRounds; ++round) {
     Space s = make_space(p, pb.closed, interior);
-    if (s.n > budget) break;
+    // The refinement may overshoot what the knot removal brings back down: it stops at twice the cap.
+    if (s.n > budget || s.n > 2 * cap + static_cast<std::size_t>(p)) break;
     Candidate c = fit_space(pb, s, params, weights);
     params = c.params;
-    if (!pb.closed && !pb.interpolated_ends && stretch_ends(pb, s, c, weights, params)) continue;
+    if (!pb.closed && !pb.interpolated_ends && stretches < kMaxStretches &&
+        stretch_ends(pb, s, c, weights, o.noise, params)) {
+      ++stretches;
+      continue;
+    }
     // Judge every point beyond the tolerance, kept or left out.
     std::vector<std::size_t> order(m);
     std::iota(order.begin(), order.end(), std::size_t{0});
@@ -738,7 +760,10 @@ std::optional<DegreeResult> fit_degree(Problem& pb, int p, std::span<const doubl
         }
         continue;
       }
-      if (o.reject_outliers && is_spike(pb, s, i, c, weights, order, rank, span_count, o.noise)) {
+      // Beyond an open end (its foot clamped there) a point is no feature a knot can reach: a run of
+      // them stretches the parameters (stretch_ends); a lone one is a spike.
+      const bool beyond_end = !pb.closed && (params[i] <= 0.0 || params[i] >= 1.0);
+      if (o.reject_outliers && (beyond_end || is_spike(pb, s, i, c, weights, order, rank, span_count, o.noise))) {
         spikes.push_back(i);
         continue;
       }
@@ -917,9 +942,15 @@ ToleranceFit fit_within_tolerance(std::span<const Vec3> points, std::span<const 
   // reads the curvature plot), then the fewer control points, then the higher degree.
   std::vector<DegreeResult> found;
   Shortfall shortfall;
-  for (int p = options.degree; p >= options.min_degree; --p)
-    if (std::optional<DegreeResult> r = fit_degree(pb, p, parameters, weights, options, budget, shortfall))
-      found.push_back(std::move(*r));
+  for (int p = options.degree; p >= options.min_degree; --p) {
+    // A degree that needs more than the slack above the fewest so far cannot win: its search stops there.
+    std::size_t cap = budget;
+    for (const DegreeResult& r : found)
+      cap =
+          std::min(cap, r.space.n + static_cast<std::size_t>(std::ceil(kCountSlack * static_cast<double>(r.space.n))));
+    std::optional<DegreeResult> r = fit_degree(pb, p, parameters, weights, options, budget, cap, shortfall);
+    if (r && r->space.n <= cap) found.push_back(std::move(*r));
+  }
   std::optional<DegreeResult> best;
   if (!found.empty()) {
     std::size_t fewest = found.front().space.n;
@@ -1009,21 +1040,26 @@ ToleranceFit fit_within_tolerance(std::span<const Vec3> points, std::span<const 
   correct_parameters(SpanPolynomials(s.knots, expand(s, faired)), s.closed, points, params, dist, res,
                      kFinalProjectionSteps);
   for (std::size_t i = 0; i < m; ++i) {
-    if (w[i] > 0.0) {
-      out.fit_max_deviation = std::max(out.fit_max_deviation, fit_dist[i]);
-      if (dist[i] > out.max_deviation) {
-        out.max_deviation = dist[i];
-        out.max_deviation_index = i;
+    if (w[i] <= 0.0) {
+      // A point left out that the faired curve passes within the tolerance is kept: an outlier is a
+      // point the returned curve cannot keep.
+      const nurbs::ClosestPointResult foot = nurbs::closest_point(out.faired, points[i]);
+      params[i] = foot.t;
+      dist[i] = foot.distance;
+      const nurbs::ClosestPointResult fit_foot = nurbs::closest_point(out.fit, points[i]);
+      fit_params[i] = fit_foot.t;
+      fit_dist[i] = fit_foot.distance;
+      if (dist[i] > options.tolerance) {
+        out.outliers.push_back(i);
+        continue;
       }
-      continue;
+      w[i] = 1.0;
     }
-    out.outliers.push_back(i);
-    const nurbs::ClosestPointResult foot = nurbs::closest_point(out.faired, points[i]);
-    params[i] = foot.t;
-    dist[i] = foot.distance;
-    const nurbs::ClosestPointResult fit_foot = nurbs::closest_point(out.fit, points[i]);
-    fit_params[i] = fit_foot.t;
-    fit_dist[i] = fit_foot.distance;
+    out.fit_max_deviation = std::max(out.fit_max_deviation, fit_dist[i]);
+    if (dist[i] > out.max_deviation) {
+      out.max_deviation = dist[i];
+      out.max_deviation_index = i;
+    }
   }
   // Open curves end at their points: a free end fitted by foot-point distances may run on past the
   // last point (nothing holds it there), so each curve is cut to its kept points' feet.

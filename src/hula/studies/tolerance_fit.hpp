@@ -102,7 +102,9 @@ struct ToleranceFit {
   std::vector<double> fit_deviations{};
   /// Indices of the points left out, increasing.
   std::vector<std::size_t> outliers{};
-  /// Largest deviation of a kept point from `fit` and from `faired`, and the index where `faired`'s is.
+  /// Largest deviation of a kept point from `fit` and from `faired`, and the index where `faired`'s is
+  /// (every kept point is within the tolerance of `faired`; a point left out during the search that
+  /// `faired` passes within it is kept, and may lie a little beyond it from `fit`).
   double fit_max_deviation = 0.0;
   double max_deviation = 0.0;
   std::size_t max_deviation_index = 0;
