@@ -102,15 +102,15 @@ void register_document(py::module_& m) {
           py::arg("curve_json"), py::arg("name") = "")
       .def(
           "add_points",
-          [](PyDocument& d, const std::string& points_json, const std::string& name) {
-            io::PointSet points = io::parse_points_json(points_json);
+          [](PyDocument& d, const std::string& points_text, const std::string& name) {
+            io::PointSet points = io::parse_points(points_text);
             oli::Attributes attributes;
             attributes.name = name;
             oli::Label label;
             commit(d.doc(), "add points", [&](oli::Edit& e) { label = e.add_point_set(points, attributes); });
             return label.value;
           },
-          py::arg("points_json"), py::arg("name") = "")
+          py::arg("points_text"), py::arg("name") = "")
       .def("show",
            [](PyDocument& d, std::uint64_t label) { return oli::entity_to_json(d.doc().get(label_of(label))).dump(); })
       .def("set_curve",
