@@ -37,11 +37,13 @@ IntrinsicCurve = _core.IntrinsicCurve
 NurbsFit = _core.NurbsFit
 Law = _core.Law
 interpolate = _core.interpolate
+read_points = _core.read_points
 analyse = _core.analyse
 reconstruct = _core.reconstruct
 
 __all__ = [
-    "NurbsCurve", "ClosestPoint", "IntrinsicCurve", "NurbsFit", "Law", "interpolate", "analyse", "reconstruct",
+    "NurbsCurve", "ClosestPoint", "IntrinsicCurve", "NurbsFit", "Law", "interpolate", "read_points", "analyse",
+    "reconstruct",
     "optimise", "Problem", "OptimiseResult", "from_pygmo", "builtin_problem", "evaluate_builtin",
     "fair_knots", "match_curvature", "StudyResult", "Document",
     "Error", "InvalidArgumentError", "NonFiniteInputError", "TooFewPointsError", "CoincidentPointsError",

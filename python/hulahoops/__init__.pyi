@@ -99,6 +99,11 @@ def interpolate(points: ArrayLike, *, start: str | ArrayLike = "natural", end: s
     start/end: "natural", "bessel", "not-a-knot", "occt", or a tangent vector dC/dt (t in [0, 1]).
     parameters: explicit data parameters (increasing, from 0 to 1) instead of the parameterisation."""
 
+def read_points(path: str) -> Array:
+    """The points of a point file as an (n, 2) or (n, 3) array: JSON, or lines of 2 or 3 numbers separated by
+    whitespace, commas or semicolons, with header lines (an airfoil's name) and # comments; Selig and Lednicer
+    airfoil files (docs/formats.md "Point files"). Errors name the file, the line and the separator."""
+
 def analyse(curve: NurbsCurve | dict[str, Any], samples: int = 100, *, at: ArrayLike | None = None,
             by: str = "parameter", arc_lengths: bool = False, bishop: bool = False, fins: list[str] = ...,
             fin_scale: float | None = None, fin_density: int = 0, features: bool = False) -> dict[str, Any]:

@@ -25,6 +25,7 @@
 #include "hula/intrinsic/natural_equations.hpp"
 #include "hula/io/curve_analysis_json.hpp"
 #include "hula/io/json_curve.hpp"
+#include "hula/io/points_file.hpp"
 #include "hula/nurbs/arc_length.hpp"
 #include "hula/nurbs/closest_point.hpp"
 #include "hula/nurbs/elevate.hpp"
@@ -482,6 +483,14 @@ void register_geometry(py::module_& m) {
         return best;
       },
       py::arg("curve"), py::arg("t"), py::arg("out"), py::arg("repeats"));
+
+  m.def(
+      "read_points",
+      [](const std::string& path) {
+        const io::PointSet set = io::read_points_file(path);
+        return to_rows(set.points, set.dimension);
+      },
+      py::arg("path"));
 
   m.def(
       "interpolate",

@@ -25,6 +25,7 @@
 #include "hula/nurbs/knot_removal.hpp"
 #include "hula/nurbs/refine.hpp"
 #include "hula/nurbs/reparam.hpp"
+#include "hula/studies/tolerance_fit.hpp"
 #include "hula/testing/curve_generators.hpp"
 #include "hula/testing/process_json.hpp"
 #include "hula/testing/run_process.hpp"
@@ -176,10 +177,11 @@ TEST(KernelCli, SplitHalvesJoinWithTheCurvesContinuity) {
   }
 }
 
-// checks: `approximate --tolerance` meets the tolerance at the data points (re-measured from the
-// written curve), one control point fewer misses it (library fit), and the same count comes out of
-// nurbs::approximate_to_tolerance.
-TEST(KernelCli, ApproximateMeetsToleranceWithFewestControlPoints) {
+// checks: `approximate --tolerance` writes the curve of studies::fit_within_tolerance (degree 3, ends
+// on the first and last point, chord-length start): every point within the tolerance of the written
+// curve (closest point, re-measured here), the ends exact, and no more control points than the plain
+// least-squares search nurbs::approximate_to_tolerance needs.
+TEST(KernelCli, ApproximateMeetsToleranceCompactly) {
   testing::TempDir dir;
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
     Rng rng(seed);
@@ -195,13 +197,22 @@ TEST(KernelCli, ApproximateMeetsToleranceWithFewestControlPoints) {
     const double tol = 0.05;
     const json j = run_ok({"approximate", "--points", pfile, "--tolerance", "0.05", "-o", out});
     const NurbsCurve c = io::read_curve_file(out).nurbs();
-    const nurbs::ToleranceFitResult lib = nurbs::approximate_to_tolerance(pts, tol);
-    EXPECT_EQ(c, lib.fit.curve) << seed;
-    for (std::size_t i = 0; i < pts.size(); ++i) EXPECT_LE(distance(c.evaluate(lib.fit.parameters[i]), pts[i]), tol);
-    nurbs::ApproximationOptions fewer;
-    fewer.control_points = c.control_points().size() - 1;
-    EXPECT_GT(nurbs::approximate(pts, fewer).max_deviation, tol) << seed;
+    studies::ToleranceFitOptions o;
+    o.tolerance = tol;
+    o.degree = 3;
+    o.min_degree = 3;
+    o.ends = studies::FitEnds::Interpolated;
+    o.max_control_points = pts.size();
+    const studies::ToleranceFit lib =
+        studies::fit_within_tolerance(pts, nurbs::parameterise(pts, nurbs::Parameterisation::ChordLength), {}, o);
+    EXPECT_EQ(c, lib.faired) << seed;
+    for (const Vec3& q : pts) EXPECT_LE(nurbs::closest_point(c, q).distance, tol * (1 + 1e-9));
+    EXPECT_EQ(c.evaluate(0.0), pts.front());
+    EXPECT_EQ(c.evaluate(1.0), pts.back());
+    EXPECT_LE(c.control_points().size(), nurbs::approximate_to_tolerance(pts, tol).fit.curve.control_points().size())
+        << seed;
     EXPECT_EQ(j["control_points"], c.control_points().size());
+    EXPECT_LE(j["max_deviation"].get<double>(), tol);
   }
 }
 

@@ -1035,13 +1035,24 @@ class DocumentTest(unittest.TestCase):
             self.assertLessEqual(math.dist(p, q), 1e-9)
         revision = self.call("GET", base)["revision"]
         os.symlink("/etc/hostname", os.path.join(self.server.workspace, "link.json"))
-        for bad in ("../quad.json", "/etc/quad.json", "link.json", "notes.txt", ".hidden.json"):
+        for bad in ("../quad.json", "/etc/quad.json", "link.json", "notes.docx", ".hidden.json"):
             e = self.call("POST", base + "/import", {"file": bad}, expect=400)["error"]
             self.assertEqual(e["where"]["field"], "file", bad)
         self.call("POST", base + "/import", {"file": "missing.json"}, expect=404)
         self.call("POST", base + "/import", {"filename": "bad.step", "content": "not a STEP file"}, expect=400)
         self.call("POST", base + "/import", {"filename": "bad.json", "content": "{\"kind\": 1}"}, expect=400)
+        e = self.call("POST", base + "/import", {"filename": "bad.csv", "content": "x;y\n1;2\n3;z\n"}, expect=400)
+        self.assertIn("bad.csv: line 3", e["error"]["message"])
         self.assertEqual(self.call("GET", base)["revision"], revision)
+        # a Selig airfoil file as shipped (a name line, no final newline) comes in as one point set
+        airfoil = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "data", "real", "naca2412.dat")
+        with open(airfoil) as f:
+            text = f.read()
+        rows = [[float(v) for v in line.split()] for line in text.splitlines()[1:] if line.strip()]
+        r = self.call("POST", base + "/import", {"filename": "naca2412.dat", "content": text}, expect=201)
+        got = self.call("GET", f"{base}/entities/{r['labels'][0]}")
+        self.assertEqual(got["provenance"]["operation"], "import:points")
+        self.assertEqual(got["points"], rows)
 
     # checks a second client's stream receives every change set with its revision, in order
     def test_document_events(self):

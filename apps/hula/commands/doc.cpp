@@ -303,7 +303,8 @@ Command add_doc(CLI::App& app) {
   CLI::App* add = doc->add_subcommand("add", "Add a curve (or a point set) as a new entity");
   file(add);
   auto* curve_opt = add->add_option("--curve", o->curve, "Curve file (JSON)");
-  auto* points_opt = add->add_option("--points", o->points, "Points file (JSON or CSV)");
+  auto* points_opt = add->add_option("--points", o->points,
+                                     "Points file (JSON, or lines x y [z]: whitespace, comma or semicolon separated)");
   curve_opt->excludes(points_opt);
   add->add_option("--name", o->name, "The entity's name");
 
