@@ -175,9 +175,7 @@ TEST(SelfIntersect, SymmetricLoopClosesOnTheAxis) {
   const double a = 2.0;
   const std::vector<Vec3> P = {{0, 0, 0}, {a, 1, 0}, {1 - a, 1, 0}, {1, 0, 0}};
   const NurbsCurve c = make_bezier(P, {}, 2);
-  const auto x = [a](double u) {
-    return 3 * a * u * (1 - u) * (1 - u) + 3 * (1 - a) * u * u * (1 - u) + u * u * u;
-  };
+  const auto x = [a](double u) { return 3 * a * u * (1 - u) * (1 - u) + 3 * (1 - a) * u * u * (1 - u) + u * u * u; };
   // x rises from 0 above 1/2 before the middle: the crossing's s is the first root of x = 1/2.
   double u_peak = 0.0;
   for (int k = 1; k < 1000; ++k)
@@ -193,7 +191,8 @@ TEST(SelfIntersect, SymmetricLoopClosesOnTheAxis) {
   EXPECT_EQ(r.points[0].kind, IntersectionKind::Crossing);
 }
 
-// checks: a circle (closed, four arcs) and an open arc do not meet themselves; a figure eight meets itself once at its centre.
+// checks: a circle (closed, four arcs) and an open arc do not meet themselves; a figure eight meets itself once at its
+// centre.
 TEST(SelfIntersect, ClosedCurvesAndFigureEight) {
   EXPECT_TRUE(self_intersect(circle(2.0, {1, 1, 0})).points.empty());
   EXPECT_TRUE(self_intersect(circle(2.0, {1, 1, 0})).overlaps.empty());

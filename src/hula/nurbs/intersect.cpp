@@ -9,15 +9,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <deque>
 #include <limits>
 #include <numeric>
 #include <optional>
 #include <queue>
 #include <string>
 #include <utility>
-#include <cstdio>
-#include <cstdlib>
-#include <deque>
 
 #include "hula/core/error.hpp"
 #include "hula/nurbs/bezier.hpp"
@@ -55,22 +53,33 @@ double point_segment_distance(const Vec3& p, const Vec3& a, const Vec3& b) {
   return distance(p, a + u * d);
 }
 
-// Smallest cosine between `axis` and the directions a tangent of the piece can
-// take: every derivative of a rational Bézier curve is a non-negative
-// combination of P_j − P_i (j > i) (C' = Σ_{i>j} w_i w_j B_i B_j (i − j) / (u (1 − u) W²)
-// (P_i − P_j)); of a polynomial one, of the consecutive differences.
-// Zero differences add nothing. Returns -1 when the cone is empty of
-// information (all differences zero).
-double cone_cosine(std::span<const Vec3> P, bool rational, const Vec3& axis) {
-  double cmin = 2.0;
+// The tangent cone of a piece about `axis`: every derivative of a rational
+// Bézier curve is a non-negative combination of P_j − P_i (j > i)
+// (C' = Σ_{i>j} w_i w_j B_i B_j (i − j) / (u (1 − u) W²) (P_i − P_j)); of a
+// polynomial one, of the consecutive differences. Zero differences add
+// nothing. `cosine` is the smallest cosine to the axis (-1 when every
+// difference is zero); `angle` the largest angle, from atan2 so that it is
+// accurate near 0 (acos of a cosine near 1 loses half the digits).
+struct Cone {
+  double cosine = 2.0;
+  double angle = 0.0;
+};
+Cone cone_of(std::span<const Vec3> P, bool rational, const Vec3& axis) {
+  Cone c;
   const std::size_t n = P.size();
   for (std::size_t i = 0; i + 1 < n; ++i)
     for (std::size_t j = i + 1; j < (rational ? n : i + 2); ++j) {
       const Vec3 d = P[j] - P[i];
       const double len = norm(d);
-      if (len > 0.0) cmin = std::fmin(cmin, dot(d, axis) / len);
+      if (!(len > 0.0)) continue;
+      c.cosine = std::fmin(c.cosine, dot(d, axis) / len);
+      c.angle = std::fmax(c.angle, std::atan2(norm(cross(d, axis)), dot(d, axis)));
     }
-  return cmin > 1.0 ? -1.0 : cmin;
+  if (c.cosine > 1.0) c.cosine = -1.0;
+  return c;
+}
+double cone_cosine(std::span<const Vec3> P, bool rational, const Vec3& axis) {
+  return cone_of(P, rational, axis).cosine;
 }
 
 Piece make_piece(std::vector<Vec3> P, std::vector<double> w, double t0, double t1, int depth) {
@@ -87,9 +96,9 @@ Piece make_piece(std::vector<Vec3> P, std::vector<double> w, double t0, double t
   const double len = norm(chord);
   if (len > 0.0) {
     p.axis = chord / len;
-    const double c = cone_cosine(p.P, !p.w.empty(), p.axis);
-    p.monotone = c > 0.0;
-    p.alpha = p.monotone ? std::acos(std::fmin(c, 1.0)) : 0.0;
+    const Cone c = cone_of(p.P, !p.w.empty(), p.axis);
+    p.monotone = c.cosine > 0.0;
+    p.alpha = p.monotone ? c.angle : 0.0;
   }
   return p;
 }
@@ -163,13 +172,15 @@ double lower_bound(const Piece& a, const Piece& b) {
   return std::fmax(std::sqrt(g2), sc.distance - a.thickness - b.thickness);
 }
 
-// Angle between the lines of two unit axes, in [0, π/2].
-double line_angle(const Vec3& u, const Vec3& v) { return std::acos(std::fmin(1.0, std::fabs(dot(u, v)))); }
+// Angle between the lines of two unit axes, in [0, π/2] (atan2: accurate near 0).
+double line_angle(const Vec3& u, const Vec3& v) { return std::atan2(norm(cross(u, v)), std::fabs(dot(u, v))); }
 
 // No tangent of a is parallel to a tangent of b: then the pieces meet at most
-// once (A(s2) − A(s1) lies in a's cone, B(t2) − B(t1) in ±b's cone).
+// once (A(s2) − A(s1) lies in a's cone, B(t2) − B(t1) in ±b's cone). The
+// margin of 1e-9 rad keeps rounding in the cone angles from proving it for
+// parallel pieces.
 bool separated(const Piece& a, const Piece& b) {
-  return a.monotone && b.monotone && line_angle(a.axis, b.axis) > a.alpha + b.alpha + 1e-12;
+  return a.monotone && b.monotone && line_angle(a.axis, b.axis) > a.alpha + b.alpha + 1e-9;
 }
 
 // ---- local solvers --------------------------------------------------------
@@ -189,6 +200,9 @@ Eval derivs(const NurbsCurve& c, double t, int order) {
   c.derivatives(t, order, std::span<Vec3>(e.d.data(), static_cast<std::size_t>(order) + 1));
   return e;
 }
+
+// C(u) with u clamped to the domain: interpolated parameters (t0 + (t1 − t0) k / 4) may round past an end.
+Vec3 at(const NurbsCurve& c, double u) { return c.evaluate(u, {.domain = Domain::Clamp}); }
 
 Interval widened(double t0, double t1, const Interval& dom) {
   const double w = t1 - t0;
@@ -226,7 +240,7 @@ struct Solver {
       const double aa = dot(a.d[1], a.d[1]), bb = dot(b.d[1], b.d[1]), ab = dot(a.d[1], b.d[1]);
       const double ga = dot(a.d[1], D), gb = -dot(b.d[1], D);
       const double det = aa * bb - ab * ab;  // |A' × B'|²
-      if (!(det > 1e-24 * aa * bb)) break;    // parallel tangents: not a transversal point
+      if (!(det > 1e-24 * aa * bb)) break;   // parallel tangents: not a transversal point
       double ns = s - (bb * ga + ab * gb) / det;
       double nt = t - (ab * ga + aa * gb) / det;
       const bool cs = ns < bs.start || ns > bs.end, ct = nt < bt.start || nt > bt.end;
@@ -351,6 +365,7 @@ struct Solver {
 // iterate kept. Returns {t, distance}.
 std::pair<double, double> local_foot(const NurbsCurve& C, const Vec3& p, double t, const Interval& bounds, double eps0,
                                      int max_iterations) {
+  t = std::clamp(t, bounds.start, bounds.end);
   double best_t = t, best_d = HUGE_VAL;
   for (int it = 0; it < max_iterations; ++it) {
     const Eval e = derivs(C, t, 2);
@@ -376,13 +391,14 @@ std::pair<double, double> local_foot(const NurbsCurve& C, const Vec3& p, double 
 
 struct ZonePiece {
   double s0, s1, t0, t1;
-  int orientation;  // +1: the curves run the same way, -1: opposite
+  int orientation;  // +1: the curves run the same way, -1: opposite, 0: unknown (a leaf)
+  double gs, gt;    // parameter gaps that are 2 tol along each curve: pieces this close touch
 };
 
 class Engine {
  public:
-  Engine(const NurbsCurve& a, const NurbsCurve& b, double tol, double eps0, double model, int max_iterations,
-         bool self, bool closed)
+  Engine(const NurbsCurve& a, const NurbsCurve& b, double tol, double eps0, double model, int max_iterations, bool self,
+         bool closed)
       : closed_(closed),
         A_(a),
         B_(b),
@@ -515,9 +531,13 @@ class Engine {
     int orientation;
   };
 
-  ZonePiece zone_of(const Piece& a, const Piece& b) const {
-    const int o = a.monotone && b.monotone && dot(a.axis, b.axis) < 0.0 ? -1 : 1;
-    return {a.t0, a.t1, b.t0, b.t1, o};
+  // A leaf's zone piece: its pieces are too small for their chords to tell the orientation.
+  ZonePiece zone_of(const Piece& a, const Piece& b) const { return {a.t0, a.t1, b.t0, b.t1, 0, slack(a), slack(b)}; }
+
+  // The parameter step of a piece that moves its point by 2 tol (its chord speed; the box when the chord vanishes).
+  double slack(const Piece& p) const {
+    const double len = std::fmax(distance(p.P.front(), p.P.back()), p.size);
+    return len > 0.0 ? 2.0 * tol_ * (p.t1 - p.t0) / len : p.t1 - p.t0;
   }
 
   // The smaller piece lies within tol of the other (at five samples, feet
@@ -534,7 +554,7 @@ class Engine {
     const double cc = dot(chord, chord);
     double lo = HUGE_VAL, hi = -HUGE_VAL;
     for (int k = 0; k <= 4; ++k) {
-      const Vec3 x = C.evaluate(p.t0 + (p.t1 - p.t0) * k / 4.0);
+      const Vec3 x = at(C, p.t0 + (p.t1 - p.t0) * k / 4.0);
       const double lam = cc > 0.0 ? std::clamp(dot(x - q.P.front(), chord) / cc, 0.0, 1.0) : 0.5;
       const auto [t, d] = local_foot(D, x, q.t0 + lam * (q.t1 - q.t0), {q.t0, q.t1}, eps0_, max_iterations_);
       if (d > tol_) return std::nullopt;
@@ -542,10 +562,13 @@ class Engine {
       hi = std::fmax(hi, t);
     }
     const int o = dot(a.axis, b.axis) < 0.0 ? -1 : 1;
-    return a_small ? ZonePiece{a.t0, a.t1, lo, hi, o} : ZonePiece{lo, hi, b.t0, b.t1, o};
+    return a_small ? ZonePiece{a.t0, a.t1, lo, hi, o, slack(a), slack(b)}
+                   : ZonePiece{lo, hi, b.t0, b.t1, o, slack(a), slack(b)};
   }
 
-  // Connected groups of zone pieces (rectangles of (s, t) that overlap or touch).
+  // Connected groups of zone pieces (rectangles of (s, t) that overlap or
+  // come within 2 tol of each other along both curves: feet found inside a
+  // piece stop at its end, so neighbours may leave such gaps).
   std::vector<Zone> merge_zones() const {
     const std::size_t n = zones_.size();
     std::vector<std::size_t> parent(n);
@@ -557,13 +580,16 @@ class Engine {
     std::vector<std::size_t> order(n);
     std::iota(order.begin(), order.end(), std::size_t{0});
     std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return zones_[i].s0 < zones_[j].s0; });
-    const double gs = 1e-9 * A_.domain().length(), gt = 1e-9 * B_.domain().length();
+    double gs_max = 0.0;
+    for (const ZonePiece& z : zones_) gs_max = std::fmax(gs_max, z.gs);
     for (std::size_t x = 0; x < n; ++x) {
       const ZonePiece& zi = zones_[order[x]];
       for (std::size_t y = x + 1; y < n; ++y) {
         const ZonePiece& zj = zones_[order[y]];
-        if (zj.s0 > zi.s1 + gs) break;
-        if (zj.orientation == zi.orientation && zj.t0 <= zi.t1 + gt && zi.t0 <= zj.t1 + gt)
+        if (zj.s0 > zi.s1 + 2.0 * gs_max) break;
+        const double gs = std::fmax(zi.gs, zj.gs), gt = std::fmax(zi.gt, zj.gt);
+        const bool same_way = zj.orientation == zi.orientation || zi.orientation == 0 || zj.orientation == 0;
+        if (same_way && zj.s0 <= zi.s1 + gs && zj.t0 <= zi.t1 + gt && zi.t0 <= zj.t1 + gt)
           parent[find(order[x])] = find(order[y]);
       }
     }
@@ -577,12 +603,15 @@ class Engine {
         out.push_back({z.s0, z.s1, z.t0, z.t1, z.orientation});
       } else {
         Zone& m = out[index[root]];
+        if (m.orientation == 0) m.orientation = z.orientation;
         m.s0 = std::fmin(m.s0, z.s0);
         m.s1 = std::fmax(m.s1, z.s1);
         m.t0 = std::fmin(m.t0, z.t0);
         m.t1 = std::fmax(m.t1, z.t1);
       }
     }
+    for (Zone& z : out)
+      if (z.orientation == 0) z.orientation = 1;
     return out;
   }
 
@@ -606,21 +635,29 @@ class Engine {
     double len = 0.0;
     const Vec3 a0 = A_.evaluate(z.s0), b0 = B_.evaluate(z.t0);
     for (int k = 1; k <= 4; ++k) {
-      len = std::fmax(len, distance(a0, A_.evaluate(z.s0 + (z.s1 - z.s0) * k / 4.0)));
-      len = std::fmax(len, distance(b0, B_.evaluate(z.t0 + (z.t1 - z.t0) * k / 4.0)));
+      len = std::fmax(len, distance(a0, at(A_, z.s0 + (z.s1 - z.s0) * k / 4.0)));
+      len = std::fmax(len, distance(b0, at(B_, z.t0 + (z.t1 - z.t0) * k / 4.0)));
     }
     if (len > 8.0 * tol_) {
       double sep = 0.0;
       for (const double f : {0.25, 0.5, 0.75}) {
         const double s = z.s0 + f * (z.s1 - z.s0);
         const double t = z.orientation > 0 ? z.t0 + f * (z.t1 - z.t0) : z.t1 - f * (z.t1 - z.t0);
-        sep = std::fmax(sep, local_foot(B_, A_.evaluate(s), t, bt, eps0_, max_iterations_).second);
+        sep = std::fmax(sep, local_foot(B_, at(A_, s), t, bt, eps0_, max_iterations_).second);
       }
       if (sep < tol_ / 16.0) {
         overlaps.push_back(overlap_of(z, bt, bs, std::fmax(4.0 * sep, 64.0 * eps0_)));
         absorbing.push_back(z);
         return;
       }
+    }
+    // Self: the two branches of a spike (the curve turning back by nearly π
+    // at a corner or cusp) stay within tol of each other near its tip; the
+    // zone then reaches the diagonal s = t through the tip's short arc. The
+    // tip is where the curve turns, not where it meets itself.
+    if (self_ && z.orientation < 0 && z.s1 <= z.t0 && arc_within(A_, z.s1, z.t0, 2.0 * len + 2.0 * tol_)) {
+      absorbing.push_back(z);
+      return;
     }
     const double sc = 0.5 * (z.s0 + z.s1), tc = 0.5 * (z.t0 + z.t1);
     bool regular = false;
@@ -646,9 +683,7 @@ class Engine {
       const double f = (s - z.s0) / (z.s1 - z.s0);
       return z.orientation > 0 ? z.t0 + f * (z.t1 - z.t0) : z.t1 - f * (z.t1 - z.t0);
     };
-    const auto gap = [&](double s) {
-      return local_foot(B_, A_.evaluate(s), t_of(s), bt, eps0_, max_iterations_).second;
-    };
+    const auto gap = [&](double s) { return local_foot(B_, at(A_, s), t_of(s), bt, eps0_, max_iterations_).second; };
     const auto end_pair = [&](double s_out, double s_in) {
       double s = s_out;
       if (gap(s_out) > delta) {
@@ -691,9 +726,7 @@ class Engine {
     p.point = 0.5 * (a.d[0] + b.d[0]);
     p.distance = distance(a.d[0], b.d[0]);
     const double na = norm(a.d[1]), nb = norm(b.d[1]);
-    p.angle = na > 0.0 && nb > 0.0
-                  ? std::atan2(norm(cross(a.d[1], b.d[1])), std::fabs(dot(a.d[1], b.d[1])))
-                  : 0.0;
+    p.angle = na > 0.0 && nb > 0.0 ? std::atan2(norm(cross(a.d[1], b.d[1])), std::fabs(dot(a.d[1], b.d[1]))) : 0.0;
     p.kind = kind;
     return p;
   }
@@ -716,7 +749,7 @@ class Engine {
     if (u == v) return true;
     const Vec3 cu = C.evaluate(u);
     for (int k = 1; k <= 4; ++k)
-      if (distance(cu, C.evaluate(u + (v - u) * k / 4.0)) > 2.0 * tol_) return false;
+      if (distance(cu, at(C, k == 4 ? v : u + (v - u) * k / 4.0)) > 2.0 * tol_) return false;
     return true;
   }
 
@@ -726,8 +759,8 @@ class Engine {
   // direction (golden-section search; the subdivision stops short of it).
   void snap_fold(CurveOverlap& o) const {
     if (!(o.t1 < o.t0) || !same_place(A_, o.s1, o.t1)) return;
-    const Vec3 dir = A_.evaluate(o.s1) - A_.evaluate(o.s0 + 0.75 * (o.s1 - o.s0));
-    const auto reach = [&](double u) { return dot(A_.evaluate(u), dir); };
+    const Vec3 dir = A_.evaluate(o.s1) - at(A_, o.s0 + 0.75 * (o.s1 - o.s0));
+    const auto reach = [&](double u) { return dot(at(A_, u), dir); };
     constexpr double kInvPhi = 0.6180339887498949;
     double lo = std::fmin(o.s1, o.t1), hi = std::fmax(o.s1, o.t1);
     for (int k = 0; k < 200 && hi - lo > 4.0 * kEps * std::fmax(1.0, std::fabs(hi)); ++k) {
@@ -738,12 +771,21 @@ class Engine {
     o.end = A_.evaluate(o.s1);
   }
 
-  // Self: s and t are one place of the curve (the arc between them, or for a
-  // closed curve the arc through its ends, stays within 2 tol).
+  // The arc of C between u and v stays within r of C(u) (at 8 samples).
+  static bool arc_within(const NurbsCurve& C, double u, double v, double r) {
+    const Vec3 cu = C.evaluate(u);
+    for (int k = 1; k <= 8; ++k)
+      if (distance(cu, at(C, k == 8 ? v : u + (v - u) * k / 8.0)) > r) return false;
+    return true;
+  }
+
+  // Self: s and t are one place of the curve, or a loop or spike tip below the
+  // resolution: the arc between them (for a closed curve, the arc through its
+  // ends) stays within 8 tol, the length below which a zone is one point.
   bool trivial(double s, double t) const {
-    if (same_place(A_, s, t)) return true;
+    if (arc_within(A_, s, t, 8.0 * tol_)) return true;
     const Interval d = A_.domain();
-    return closed_ && same_place(A_, s, d.start) && same_place(A_, t, d.end);
+    return closed_ && arc_within(A_, s, d.start, 8.0 * tol_) && arc_within(A_, t, d.end, 8.0 * tol_);
   }
 
   bool closed_;
@@ -862,7 +904,7 @@ CurveDistanceResult curve_distance(const NurbsCurve& a, const NurbsCurve& b, con
   // within tol of the best distance found; the queue gives the most promising first.
   // Pieces live in two arenas; a piece split once keeps its halves (it meets many partners).
   struct Arena {
-    std::deque<Piece> pieces;               // a deque: pieces never move
+    std::deque<Piece> pieces;              // a deque: pieces never move
     std::vector<std::size_t> first_child;  // 0: not split yet
     std::size_t children(std::size_t i) {
       if (first_child[i] == 0) {
@@ -913,7 +955,6 @@ CurveDistanceResult curve_distance(const NurbsCurve& a, const NurbsCurve& b, con
       push(item.a, c + 1);
     }
   }
-  if (std::getenv("HULA_DBG")) std::fprintf(stderr, "pieces %zu %zu\n", pa.pieces.size(), pb.pieces.size());
   CurveDistanceResult out;
   out.s = best.s;
   out.t = best.t;
