@@ -156,6 +156,38 @@ TEST(Intersect, EndOnCurve) {
   EXPECT_NEAR(r.points[0].angle, kPi / 2, 1e-12);
 }
 
+// checks: y = x³ (a cubic Bézier) crosses its inflection tangent y = 0 once at the origin, tangentially,
+// located to rounding (the gap changes sign there; |D| vanishes to third order).
+TEST(Intersect, InflectionTangentCrossing) {
+  const std::vector<Vec3> P = {{-1, -1, 0}, {-1.0 / 3, 1, 0}, {1.0 / 3, -1, 0}, {1, 1, 0}};  // x = 2u − 1, y = x³
+  const IntersectionResult r = intersect(make_bezier(P, {}, 2), segment({-2, 0, 0}, {2, 0, 0}));
+  ASSERT_EQ(r.points.size(), 1U);
+  EXPECT_TRUE(r.overlaps.empty());
+  EXPECT_EQ(r.points[0].kind, IntersectionKind::Tangent);
+  EXPECT_LT(norm(r.points[0].point), 1e-12);
+  EXPECT_NEAR(r.points[0].s, 0.5, 1e-12);
+}
+
+// checks: a parabola dipping 1e-9 below a line crosses it twice, closer together than tol allows to separate:
+// one tangent point at the vertex (within tol everywhere between); 1e-3 below, two crossings at ±√1e-3.
+TEST(Intersect, ShallowDoubleCrossing) {
+  const auto parabola = [](double depth) {  // y = x² − depth on x ∈ [−1, 1]
+    const std::vector<Vec3> P = {{-1, 1 - depth, 0}, {0, -1 - depth, 0}, {1, 1 - depth, 0}};
+    return make_bezier(P, {}, 2);
+  };
+  const NurbsCurve line = segment({-2, 0, 0}, {2, 0, 0});
+  const IntersectionResult close = intersect(parabola(1e-9), line);
+  ASSERT_EQ(close.points.size(), 1U);
+  EXPECT_EQ(close.points[0].kind, IntersectionKind::Tangent);
+  EXPECT_LT(norm(close.points[0].point - Vec3{0, -0.5e-9, 0}), 1e-12);
+  const IntersectionResult apart = intersect(parabola(1e-3), line);
+  ASSERT_EQ(apart.points.size(), 2U);
+  for (const CurveIntersection& p : apart.points) {
+    EXPECT_NEAR(std::fabs(p.point.x), std::sqrt(1e-3), 1e-14);
+    EXPECT_EQ(p.kind, IntersectionKind::Crossing);
+  }
+}
+
 // checks: space curves crossing at a designed point; skew lines none (construction).
 TEST(Intersect, SpaceCurves) {
   const std::vector<Vec3> P = {{0, 0, 0}, {1, 2, 1}, {2, -1, 2}, {3, 0, 0}};

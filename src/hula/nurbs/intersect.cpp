@@ -389,6 +389,12 @@ std::pair<double, double> local_foot(const NurbsCurve& C, const Vec3& p, double 
 
 // ---- the intersection engine ---------------------------------------------
 
+// Both curves lie in one plane z = c (2-D curves, or 3-D ones with equal z).
+bool in_one_plane_z(const NurbsCurve& a, const NurbsCurve& b) {
+  const Box3 x = a.control_box(), y = b.control_box();
+  return x.min.z == x.max.z && y.min.z == y.max.z && x.min.z == y.min.z;
+}
+
 struct ZonePiece {
   double s0, s1, t0, t1;
   int orientation;  // +1: the curves run the same way, -1: opposite, 0: unknown (a leaf)
@@ -399,7 +405,8 @@ class Engine {
  public:
   Engine(const NurbsCurve& a, const NurbsCurve& b, double tol, double eps0, double model, int max_iterations, bool self,
          bool closed)
-      : closed_(closed),
+      : planar_(in_one_plane_z(a, b)),
+        closed_(closed),
         A_(a),
         B_(b),
         tol_(tol),
@@ -667,6 +674,37 @@ class Engine {
       absorbing.push_back(z);
       return;
     }
+    // Planar curves crossing with parallel tangents (an inflection on the
+    // contact): |D| vanishes to third order there, so Gauss–Newton stops
+    // (rounding)^⅓ away; the sign of the gap across B locates it to rounding.
+    if (planar_) {
+      const auto t_of = [&](double s) {
+        const double f = (s - z.s0) / (z.s1 - z.s0);
+        return z.orientation > 0 ? z.t0 + f * (z.t1 - z.t0) : z.t1 - f * (z.t1 - z.t0);
+      };
+      const auto gap = [&](double s) {
+        const Vec3 p = at(A_, s);
+        const double t = local_foot(B_, p, t_of(s), bt, eps0_, max_iterations_).first;
+        const Eval b = derivs(B_, t, 1);
+        return std::pair{cross(b.d[1], p - b.d[0]).z, t};
+      };
+      double lo = z.s0, hi = z.s1;
+      const double glo = gap(lo).first, ghi = gap(hi).first;
+      if ((glo < 0.0 && ghi > 0.0) || (glo > 0.0 && ghi < 0.0)) {
+        for (int k = 0; k < 200 && lo < hi; ++k) {
+          const double m = 0.5 * (lo + hi);
+          if (m == lo || m == hi) break;
+          ((gap(m).first < 0.0) == (glo < 0.0) ? lo : hi) = m;
+        }
+        const double sm = 0.5 * (lo + hi), tm = gap(sm).second;
+        const double d = distance(A_.evaluate(sm), B_.evaluate(tm));
+        if (d <= tol_) {
+          add_point(points, make_point({sm, tm, d, true}, IntersectionKind::Tangent));
+          absorbing.push_back(z);
+          return;
+        }
+      }
+    }
     for (const Root& r : roots_)
       if (inside(z, r, 1.0)) return;  // the zone's crossings are reported as such
     const Root nr = solver_.nearest(sc, tc, bs, bt);
@@ -788,6 +826,7 @@ class Engine {
     return closed_ && arc_within(A_, s, d.start, 8.0 * tol_) && arc_within(A_, t, d.end, 8.0 * tol_);
   }
 
+  bool planar_;  // both curves lie in one plane z = const
   bool closed_;
   const NurbsCurve& A_;
   const NurbsCurve& B_;
