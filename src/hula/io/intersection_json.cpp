@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: MIT
+// JSON of intersection and distance results (see the header).
+#include "hula/io/intersection_json.hpp"
+
+namespace hula::io {
+
+Json intersection_to_json(const nurbs::IntersectionResult& result, int dimension, double stand_in_deviation) {
+  Json points = Json::array();
+  for (const nurbs::CurveIntersection& p : result.points) {
+    Json j = Json::object();
+    j["s"] = p.s;
+    j["t"] = p.t;
+    j["point"] = point_to_json(p.point, dimension);
+    j["distance"] = p.distance;
+    j["angle"] = p.angle;
+    j["kind"] = nurbs::intersection_kind_name(p.kind);
+    points.push_back(std::move(j));
+  }
+  Json overlaps = Json::array();
+  for (const nurbs::CurveOverlap& o : result.overlaps) {
+    Json j = Json::object();
+    j["s"] = Json::array({o.s0, o.s1});
+    j["t"] = Json::array({o.t0, o.t1});
+    j["start"] = point_to_json(o.start, dimension);
+    j["end"] = point_to_json(o.end, dimension);
+    overlaps.push_back(std::move(j));
+  }
+  Json out = Json::object();
+  out["tolerance"] = result.tolerance;
+  out["points"] = std::move(points);
+  out["overlaps"] = std::move(overlaps);
+  if (stand_in_deviation >= 0.0) out["stand_in_deviation"] = stand_in_deviation;
+  return out;
+}
+
+Json curve_distance_to_json(const nurbs::CurveDistanceResult& result, int dimension, double stand_in_deviation) {
+  Json out = Json::object();
+  out["distance"] = result.distance;
+  out["s"] = result.s;
+  out["t"] = result.t;
+  out["point_a"] = point_to_json(result.point_a, dimension);
+  out["point_b"] = point_to_json(result.point_b, dimension);
+  if (stand_in_deviation >= 0.0) out["stand_in_deviation"] = stand_in_deviation;
+  return out;
+}
+
+}  // namespace hula::io
