@@ -25,7 +25,8 @@ constexpr std::size_t kRing = 8;
 
 NurbsCurve spline(hula::Rng& rng, std::size_t n, int dimension, double dz) {
   std::vector<Vec3> p(n);
-  for (Vec3& q : p) q = {rng.uniform(0.0, 100.0), rng.uniform(0.0, 100.0), dimension == 3 ? rng.uniform(0.0, 100.0) + dz : 0.0};
+  for (Vec3& q : p)
+    q = {rng.uniform(0.0, 100.0), rng.uniform(0.0, 100.0), dimension == 3 ? rng.uniform(0.0, 100.0) + dz : 0.0};
   hula::nurbs::InterpolationOptions o;
   o.dimension = dimension;
   return hula::nurbs::interpolate_cubic(p, o);

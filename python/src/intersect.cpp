@@ -3,6 +3,8 @@
 // for Python: nurbs::intersect / self_intersect / curve_distance with the GIL
 // released, answered as the dicts of io::intersection_to_json /
 // curve_distance_to_json (the shape `hula intersect` / `hula distance` print).
+#include "hula/nurbs/intersect.hpp"
+
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
@@ -12,7 +14,6 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "hula/io/intersection_json.hpp"
-#include "hula/nurbs/intersect.hpp"
 
 namespace hula::python {
 

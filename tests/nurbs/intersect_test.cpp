@@ -266,7 +266,10 @@ TEST(CurveDistance, CirclesClosedForm) {
   EXPECT_LT(std::fabs(norm(d.point_a) - 1.0), 1e-14);
   EXPECT_EQ(curve_distance(circle(1.0, {}), circle(1.0, {1, 0, 0})).distance <= 1e-14, true);
   // Concentric circles: every pair on a ray is nearest; the distance is R2 − R1.
-  EXPECT_NEAR(curve_distance(circle(1.0, {}), circle(1.5, {}, 2.0)).distance, 0.5, 1e-14);
+  const CurveDistanceResult concentric = curve_distance(circle(1.0, {}), circle(1.5, {}, 2.0));
+  EXPECT_NEAR(concentric.distance, 0.5, 1e-14);
+  EXPECT_GE(concentric.lower_bound, concentric.distance - 1e-6);
+  EXPECT_LE(concentric.lower_bound, concentric.distance);
 }
 
 // checks: a segment above a circle is nearest at the circle's top (closed form), a segment end when it points away.
@@ -277,6 +280,41 @@ TEST(CurveDistance, SegmentAndCircle) {
   const CurveDistanceResult e = curve_distance(segment({3, 0, 0}, {5, 0, 0}), circle(1.0, {}));
   EXPECT_NEAR(e.distance, 2.0, 1e-14);
   EXPECT_EQ(e.s, 0.0);
+}
+
+// checks: the same circle and secant at 1e200 and 1e-200 scale cross where the unit ones do, scaled (the solvers
+// work on copies scaled by a power of two; nothing overflows or underflows).
+TEST(Intersect, ExtremeScales) {
+  for (const double k : {1e200, 1e-200}) {
+    const IntersectionResult r = intersect(circle(k, {}), segment({-2 * k, 0.5 * k, 0}, {2 * k, 0.5 * k, 0}));
+    ASSERT_EQ(r.points.size(), 2U) << "scale " << k;
+    for (const CurveIntersection& p : r.points) {
+      EXPECT_NEAR(std::fabs(p.point.x) / k, std::sqrt(3.0) / 2, 1e-14) << "scale " << k;
+      EXPECT_LE(p.distance, 1e-14 * k);
+    }
+    const CurveDistanceResult d = curve_distance(circle(k, {}), circle(k, {3 * k, 0, 0}));
+    EXPECT_NEAR(d.distance / k, 1.0, 1e-14) << "scale " << k;
+  }
+}
+
+// checks: a curve collapsed to a point meets a line through it once and itself never.
+TEST(Intersect, PointCurve) {
+  const std::vector<Vec3> P = {{1, 1, 0}, {1, 1, 0}, {1, 1, 0}};
+  const NurbsCurve point = make_bezier(P, {}, 2);
+  const IntersectionResult r = intersect(point, segment({0, 0, 0}, {2, 2, 0}));
+  ASSERT_EQ(r.points.size(), 1U);
+  EXPECT_LT(distance(r.points[0].point, {1, 1, 0}), 1e-15);
+  EXPECT_TRUE(self_intersect(point).points.empty());
+  EXPECT_NEAR(curve_distance(point, segment({0, 3, 0}, {4, 3, 0})).distance, 2.0, 1e-15);
+}
+
+// checks: circles 3e-12 apart at a tolerance of 1e-12 cannot be told apart within the work limit: refused naming
+// the tolerance, not hours of subdivision.
+TEST(Intersect, RefusesNearCoincidenceBeyondTheWorkLimit) {
+  IntersectOptions o;
+  o.tolerance.resabs = 1e-12;
+  HULA_EXPECT_ERROR(static_cast<void>(intersect(circle(1.0, {}), circle(1.0 + 3e-12, {}, 0.5), o)),
+                    Errc::NumericalFailure, "tolerance");
 }
 
 // checks: invalid options name the field.

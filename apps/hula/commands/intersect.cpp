@@ -5,6 +5,8 @@
 // printed with io::intersection_to_json / io::curve_distance_to_json. Law and
 // natural-equation curves are answered through their NURBS stand-in, whose
 // deviation is printed as "stand_in_deviation".
+#include "hula/nurbs/intersect.hpp"
+
 #include <algorithm>
 #include <memory>
 #include <optional>
@@ -12,7 +14,6 @@
 #include "commands/common.hpp"
 #include "hula/core/error.hpp"
 #include "hula/io/intersection_json.hpp"
-#include "hula/nurbs/intersect.hpp"
 
 namespace hula::cli {
 

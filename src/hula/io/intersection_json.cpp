@@ -40,6 +40,7 @@ Json curve_distance_to_json(const nurbs::CurveDistanceResult& result, int dimens
   out["t"] = result.t;
   out["point_a"] = point_to_json(result.point_a, dimension);
   out["point_b"] = point_to_json(result.point_b, dimension);
+  out["lower_bound"] = result.lower_bound;
   if (stand_in_deviation >= 0.0) out["stand_in_deviation"] = stand_in_deviation;
   return out;
 }

@@ -16,7 +16,7 @@ namespace hula::io {
 [[nodiscard]] Json intersection_to_json(const nurbs::IntersectionResult& result, int dimension,
                                         double stand_in_deviation = -1.0);
 
-/// {"distance", "s", "t", "point_a", "point_b"} (and "stand_in_deviation" as above).
+/// {"distance", "s", "t", "point_a", "point_b", "lower_bound"} (and "stand_in_deviation" as above).
 [[nodiscard]] Json curve_distance_to_json(const nurbs::CurveDistanceResult& result, int dimension,
                                           double stand_in_deviation = -1.0);
 

@@ -30,6 +30,13 @@ constexpr double kEps = std::numeric_limits<double>::epsilon();
 // Halvings of one Bézier piece before it is a leaf: 2^-60 of a span is below
 // the resolution of its parameter.
 constexpr int kMaxDepth = 60;
+// Work limits. Curves that run within a few tolerances of each other (not
+// within one) over a stretch of length ℓ need about ℓ / (8 tol / κ)^½ pieces
+// before the hull bounds separate them: harmless at the default 1e-6, but
+// ~10⁷ for a 1e-14 relative tolerance. Beyond these counts intersect refuses
+// (NumericalFailure) and curve_distance returns its best with the bound it proved.
+constexpr std::size_t kMaxPairs = 1'000'000;
+constexpr std::size_t kMaxDistancePairs = 300'000;
 
 // ---- pieces ---------------------------------------------------------------
 
@@ -418,6 +425,7 @@ class Engine {
 
   // Two pieces of A and B (self: of the same curve, a's parameters below b's).
   void pair(const Piece& a, const Piece& b) {
+    count_pair();
     if (lower_bound(a, b) > tol_) return;
     const bool sa = splittable(a, tol_), sb = splittable(b, tol_);
     const SegmentClosest seed = closest_segments(a.P.front(), a.P.back(), b.P.front(), b.P.back());
@@ -456,8 +464,18 @@ class Engine {
     }
   }
 
+  void count_pair() {
+    if (++pairs_ > kMaxPairs)
+      throw Error(Errc::NumericalFailure,
+                  "the curves stay within a few tolerances (tol = " + format_number(tol_) + ") of each other " +
+                      "over a stretch too long to resolve at this tolerance (" + std::to_string(kMaxPairs) +
+                      " piece pairs examined); give a larger tolerance",
+                  {.field = "tolerance"});
+  }
+
   // One piece against itself.
   void self(const Piece& p) {
+    count_pair();
     if (p.monotone || !splittable(p, tol_)) return;
     const auto [l, r] = split(p);
     self(l);
@@ -468,6 +486,7 @@ class Engine {
   // Two pieces of one curve where l ends at r's start: they meet there, and
   // only there when the curve is monotone along one direction over both.
   void adjacent(const Piece& l, const Piece& r) {
+    count_pair();
     Vec3 u = r.P.back() - l.P.front();
     if (!(norm(u) > 0.0)) u = l.axis + r.axis;
     const double len = norm(u);
@@ -838,6 +857,7 @@ class Engine {
   int max_iterations_;
   std::vector<Root> roots_;
   std::vector<ZonePiece> zones_;
+  std::size_t pairs_ = 0;
 };
 
 struct Scale {
@@ -885,9 +905,10 @@ void IntersectOptions::validate() const {
                 {.field = "max_iterations"});
 }
 
-IntersectionResult intersect(const NurbsCurve& a, const NurbsCurve& b, const IntersectOptions& options) {
-  options.validate();
-  const Scale sc = scale_of(a, b, options);
+namespace {
+
+IntersectionResult intersect_scaled(const NurbsCurve& a, const NurbsCurve& b, const Scale& sc,
+                                    const IntersectOptions& options) {
   Engine engine(a, b, sc.tol, sc.eps0, sc.model, options.max_iterations, false, false);
   end_roots(a, b, sc.tol, engine, true);
   end_roots(b, a, sc.tol, engine, false);
@@ -897,9 +918,7 @@ IntersectionResult intersect(const NurbsCurve& a, const NurbsCurve& b, const Int
   return engine.finish();
 }
 
-IntersectionResult self_intersect(const NurbsCurve& curve, const IntersectOptions& options) {
-  options.validate();
-  const Scale sc = scale_of(curve, curve, options);
+IntersectionResult self_intersect_scaled(const NurbsCurve& curve, const Scale& sc, const IntersectOptions& options) {
   const Interval d = curve.domain();
   const bool closed = distance(curve.evaluate(d.start), curve.evaluate(d.end)) <= sc.tol;
   Engine engine(curve, curve, sc.tol, sc.eps0, sc.model, options.max_iterations, true, closed);
@@ -918,13 +937,13 @@ IntersectionResult self_intersect(const NurbsCurve& curve, const IntersectOption
   return engine.finish();
 }
 
-}  // namespace hula::nurbs
+struct DistanceFound {
+  Root best;
+  double bound = 0.0;  // no pair of points is closer (scaled units)
+};
 
-namespace hula::nurbs {
-
-CurveDistanceResult curve_distance(const NurbsCurve& a, const NurbsCurve& b, const IntersectOptions& options) {
-  options.validate();
-  const Scale sc = scale_of(a, b, options);
+DistanceFound curve_distance_scaled(const NurbsCurve& a, const NurbsCurve& b, const Scale& sc,
+                                    const IntersectOptions& options) {
   const Solver solver{a, b, sc.eps0, 64.0 * sc.eps0, options.max_iterations};
   // Start from the ends of each curve against the other (a minimum may sit on a domain end).
   Root best;
@@ -963,10 +982,11 @@ CurveDistanceResult curve_distance(const NurbsCurve& a, const NurbsCurve& b, con
   std::priority_queue<PairItem> queue;
   for (std::size_t i = 0; i < pa.pieces.size(); ++i)
     for (std::size_t j = 0; j < pb.pieces.size(); ++j) queue.push({lower_bound(pa.pieces[i], pb.pieces[j]), i, j});
+  std::size_t visits = 0;
   while (!queue.empty() && best.dist > sc.eps0) {
     const PairItem item = queue.top();
+    if (item.bound >= best.dist - sc.tol || ++visits > kMaxDistancePairs) break;
     queue.pop();
-    if (item.bound >= best.dist - sc.tol) break;
     const bool sx = splittable(pa.pieces[item.a], sc.tol), sy = splittable(pb.pieces[item.b], sc.tol);
     {
       // Newton from the chords' closest points where they promise a better
@@ -994,12 +1014,89 @@ CurveDistanceResult curve_distance(const NurbsCurve& a, const NurbsCurve& b, con
       push(item.a, c + 1);
     }
   }
+  // The queue's smallest bound is the proof; an empty queue (or a meeting) proves the best itself, to tol.
+  const double bound = queue.empty() || best.dist <= sc.eps0 ? best.dist - sc.tol : queue.top().bound;
+  return {best, std::fmax(0.0, std::fmin(best.dist, bound))};
+}
+
+// Curves whose coordinates are far from 1 are solved on copies scaled by a
+// power of two (exact), so that the squared lengths of the solvers neither
+// overflow nor underflow; parameters are unchanged, and points and distances
+// are evaluated on the curves as given.
+int scale_exponent(const NurbsCurve& a, const NurbsCurve& b) {
+  const double magnitude = std::fmax(a.control_box().extent(), b.control_box().extent());
+  return magnitude > 1e100 || (magnitude > 0.0 && magnitude < 1e-100) ? -std::ilogb(magnitude) : 0;
+}
+
+NurbsCurve scaled(const NurbsCurve& c, int exponent) {
+  std::vector<Vec3> P(c.control_points().begin(), c.control_points().end());
+  for (Vec3& p : P) p = {std::ldexp(p.x, exponent), std::ldexp(p.y, exponent), std::ldexp(p.z, exponent)};
+  return {c.knots(), std::move(P), {c.weights().begin(), c.weights().end()}, c.dimension()};
+}
+
+Scale scaled(Scale sc, const NurbsCurve& a, const NurbsCurve& b, int exponent) {
+  const Box3 x = a.control_box(), y = b.control_box();
+  sc.tol = std::ldexp(sc.tol, exponent);
+  sc.model = std::ldexp(sc.model, exponent);
+  sc.eps0 = 16.0 * kEps * std::fmax(std::fmax(x.extent(), y.extent()), sc.model);
+  return sc;
+}
+
+// The result's points and distances on the curves as given.
+IntersectionResult restored(IntersectionResult r, const NurbsCurve& a, const NurbsCurve& b, int exponent) {
+  r.tolerance = std::ldexp(r.tolerance, -exponent);
+  for (CurveIntersection& p : r.points) {
+    const Vec3 pa = a.evaluate(p.s), pb = b.evaluate(p.t);
+    p.point = 0.5 * pa + 0.5 * pb;
+    p.distance = distance(pa, pb);
+  }
+  for (CurveOverlap& o : r.overlaps) {
+    o.start = a.evaluate(o.s0);
+    o.end = a.evaluate(o.s1);
+  }
+  return r;
+}
+
+}  // namespace
+
+IntersectionResult intersect(const NurbsCurve& a, const NurbsCurve& b, const IntersectOptions& options) {
+  options.validate();
+  const Scale sc = scale_of(a, b, options);
+  const int e = scale_exponent(a, b);
+  if (e == 0) return intersect_scaled(a, b, sc, options);
+  const NurbsCurve sa = scaled(a, e), sb = scaled(b, e);
+  return restored(intersect_scaled(sa, sb, scaled(sc, sa, sb, e), options), a, b, e);
+}
+
+IntersectionResult self_intersect(const NurbsCurve& curve, const IntersectOptions& options) {
+  options.validate();
+  const Scale sc = scale_of(curve, curve, options);
+  const int e = scale_exponent(curve, curve);
+  if (e == 0) return self_intersect_scaled(curve, sc, options);
+  const NurbsCurve s = scaled(curve, e);
+  return restored(self_intersect_scaled(s, scaled(sc, s, s, e), options), curve, curve, e);
+}
+
+CurveDistanceResult curve_distance(const NurbsCurve& a, const NurbsCurve& b, const IntersectOptions& options) {
+  options.validate();
+  const Scale sc = scale_of(a, b, options);
+  const int e = scale_exponent(a, b);
+  DistanceFound found;
+  if (e == 0) {
+    found = curve_distance_scaled(a, b, sc, options);
+  } else {
+    const NurbsCurve sa = scaled(a, e), sb = scaled(b, e);
+    found = curve_distance_scaled(sa, sb, scaled(sc, sa, sb, e), options);
+    found.bound = std::ldexp(found.bound, -e);
+  }
+  const Root& best = found.best;
   CurveDistanceResult out;
   out.s = best.s;
   out.t = best.t;
   out.point_a = a.evaluate(best.s);
   out.point_b = b.evaluate(best.t);
   out.distance = distance(out.point_a, out.point_b);
+  out.lower_bound = std::fmin(found.bound, out.distance);
   return out;
 }
 

@@ -91,6 +91,9 @@ struct IntersectionResult {
 /// @param a, b any valid curves (2-D curves lie in z = 0; a 2-D and a 3-D curve may be mixed)
 /// @returns the points sorted by s; a closed curve's closure is not reported by self_intersect
 /// @throws hula::Error(Errc::InvalidOption) from options.validate()
+/// @throws hula::Error(Errc::NumericalFailure) naming "tolerance" when the curves stay within a few
+///   tolerances of each other (but not within one) over a stretch too long to resolve: more than 10⁶
+///   piece pairs (concentric arcs 2 tol apart at a tolerance of 1e-14 of their size)
 /// Complexity: O(S_a · S_b) piece pairs for S spans, plus O(log(size / tol)) levels of subdivision
 ///   around each meeting point and O(length / tol-resolution) pieces along an overlap.
 /// Example: a circle of radius 1 and the line y = 0.5 across it meet at two crossings, angle π/3.
@@ -99,8 +102,12 @@ struct IntersectionResult {
 
 /// Every point where a curve meets itself (s < t), and every stretch it runs over twice.
 /// @throws hula::Error(Errc::InvalidOption) from options.validate()
+/// @throws hula::Error(Errc::NumericalFailure) naming "tolerance" as intersect()
 /// @note a closed curve (C(start) = C(end) within tol) is not reported as meeting itself at its
-///   ends, nor is a knot where the curve merely continues.
+///   ends, nor is a knot where the curve merely continues, nor the tip of a spike (a corner or cusp
+///   where the curve turns back by nearly π, whose two sides stay within tol near the tip), nor a
+///   loop whose arc stays within 8 tol of its start (below the resolution). A curve that runs back
+///   over itself exactly overlaps itself up to the fold.
 [[nodiscard]] IntersectionResult self_intersect(const NurbsCurve& curve, const IntersectOptions& options = {});
 
 /// Result of curve_distance().
@@ -110,12 +117,17 @@ struct CurveDistanceResult {
   double t = 0.0;         ///< parameter on b
   Vec3 point_a{};         ///< A(s)
   Vec3 point_b{};         ///< B(t)
+  /// No pair of points of the curves is closer than this (model units): at least distance − tol, unless the
+  /// curves run within a few tolerances of each other over a long stretch (concentric arcs at a tolerance of
+  /// 1e-14 of their size), where the search stops after 300,000 piece pairs with the bound it proved.
+  double lower_bound = 0.0;
 };
 
 /// The smallest distance between two curves, and where it is reached.
 /// @returns a local minimum of |A(s) − B(t)| (or a domain-end foot) refined by Newton, so the distance
 ///   is exact to rounding at the pair reported; no pair of points of the curves is closer than
-///   distance − tol (branch and bound over piece pairs with the bounds of intersect())
+///   lower_bound ≥ distance − tol (best-first branch and bound over piece pairs with the bounds of
+///   intersect())
 /// @throws hula::Error(Errc::InvalidOption) from options.validate()
 [[nodiscard]] CurveDistanceResult curve_distance(const NurbsCurve& a, const NurbsCurve& b,
                                                  const IntersectOptions& options = {});

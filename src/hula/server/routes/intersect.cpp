@@ -6,13 +6,14 @@
 // HTTP: nurbs::intersect, self_intersect, curve_distance, written by
 // io::intersection_to_json / curve_distance_to_json. Law and natural curves
 // are answered through their NURBS stand-in ("stand_in_deviation").
+#include "hula/nurbs/intersect.hpp"
+
 #include <algorithm>
 #include <optional>
 
 #include "hula/io/intersection_json.hpp"
 #include "hula/io/json_curve.hpp"
 #include "hula/io/json_read.hpp"
-#include "hula/nurbs/intersect.hpp"
 #include "hula/server/routes/routes.hpp"
 
 namespace hula::server::routes {
@@ -74,8 +75,8 @@ Response distance(const Request& request) {
   const curve::Curve a = read_curve(body, "a");
   const std::optional<curve::Curve> b = read_curve(body, "b");
   const nurbs::CurveDistanceResult r = nurbs::curve_distance(a.nurbs(), b->nurbs(), read_options(body));
-  return json_response(200, io::curve_distance_to_json(r, std::max(a.nurbs().dimension(), b->nurbs().dimension()),
-                                                       stand_in(a, b)));
+  return json_response(
+      200, io::curve_distance_to_json(r, std::max(a.nurbs().dimension(), b->nurbs().dimension()), stand_in(a, b)));
 }
 
 }  // namespace
