@@ -21,6 +21,8 @@
 #include "hula/diffgeom/monotonicity.hpp"
 #include "hula/io/atomic_file.hpp"
 #include "hula/io/curve_figures.hpp"
+#include "hula/io/intersection_json.hpp"
+#include "hula/nurbs/intersect.hpp"
 
 namespace hula::cli {
 
@@ -106,6 +108,8 @@ Json features_to_json(const curve::Curve& c) {
     jv.push_back(Json{{"t", f.t}, {"kind", std::string(diffgeom::feature_kind_name(f.kind))}, {"kappa", f.curvature}});
   j["curvature_monotonicity"] =
       Json{{"monotone", mono.monotone()}, {"pieces", std::move(jp)}, {"violations", std::move(jv)}};
+  // Where the curve meets itself (thesis ch. 10: a curve that doubles back is not a valid solution).
+  j["self_intersections"] = io::intersection_to_json(nurbs::self_intersect(c.nurbs()), c.nurbs().dimension());
   return j;
 }
 
@@ -231,7 +235,8 @@ Command add_analyse(CLI::App& app) {
       ->check(CLI::IsMember({"parameter", "arclength"}));
   sub->add_flag(
       "--features", args->features,
-      "Add \"features\": inflections (planar curves), curvature extrema, knot continuity, curvature monotonicity");
+      "Add \"features\": inflections (planar curves), curvature extrema, knot continuity, curvature monotonicity, "
+      "self-intersections");
   sub->add_option("--svg", args->svg,
                   "Write curve.svg (the curve and its fins, curvature and torsion unless --fins), kappa.svg, tau.svg, "
                   "radius.svg (range-limited radius of curvature), speed.svg and logcurvature.svg into this directory");
