@@ -1049,6 +1049,15 @@ class DocumentTest(unittest.TestCase):
                 text = f.read()
         r = self.call("POST", base + "/import", {"filename": "quad.step", "content": text}, expect=201)
         self.assertEqual(len(r["labels"]), 1)
+        self.assertEqual((r["skipped"], r["warnings"]), (0, []))
+        # A STEP file from another CAD system (ST-Developer) whose curve fonts OCCT cannot read: the 22 curves come
+        # in, the presentation failures are warnings (issue 21)
+        cage = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "data", "real", "cad", "splinecage.stp")
+        with open(cage) as f:
+            caged = self.call("POST", base + "/import", {"filename": "cage.stp", "content": f.read()}, expect=201)
+        self.assertEqual(len(caged["labels"]), 22)
+        self.assertIn("entity #5: Parameter n0.2 (curve_font) not an Entity", caged["warnings"])
+        self.call("POST", base + "/undo", expect=200)
         got = self.call("GET", f"{base}/entities/{r['labels'][0]}")
         self.assertEqual(got["provenance"]["operation"], "import:step")
         self.assertEqual(len(got["control_points"]), 4)

@@ -186,7 +186,8 @@ TEST(ValidityStudy, TorsionProblemCarriesTheConstraints) {
 TEST(ValidityJson, ReadsWritesAndRefuses) {
   const io::json::JsonPath path = io::json::root_path("validity");
   const ValidityRequirements r = io::validity_from_json(
-      io::Json::parse(R"({"no_self_intersection": true, "min_speed": 0.05, "handling": "penalty", "penalty": 50})"), path);
+      io::Json::parse(R"({"no_self_intersection": true, "min_speed": 0.05, "handling": "penalty", "penalty": 50})"),
+      path);
   EXPECT_TRUE(r.no_self_intersection);
   EXPECT_EQ(r.min_speed, 0.05);
   EXPECT_EQ(r.handling, optim::ConstraintHandling::Penalty);

@@ -84,11 +84,10 @@ ValidityCheck check_validity(const nurbs::NurbsCurve& curve, const ValidityRequi
     check.self_intersections = r.points.size() + r.overlaps.size();
     if (!r.points.empty()) {
       const nurbs::CurveIntersection& p = r.points.front();
-      check.reasons.push_back("the curve meets itself at " + where(p.point, dim) + " (t = " + num(p.s) + " and " +
-                              num(p.t) + ")" +
-                              (check.self_intersections > 1
-                                   ? " and at " + std::to_string(check.self_intersections - 1) + " more place(s)"
-                                   : std::string()));
+      check.reasons.push_back(
+          "the curve meets itself at " + where(p.point, dim) + " (t = " + num(p.s) + " and " + num(p.t) + ")" +
+          (check.self_intersections > 1 ? " and at " + std::to_string(check.self_intersections - 1) + " more place(s)"
+                                        : std::string()));
     } else if (!r.overlaps.empty()) {
       const nurbs::CurveOverlap& o = r.overlaps.front();
       check.reasons.push_back("the curve runs back over itself from " + where(o.start, dim) + " to " +
@@ -98,10 +97,9 @@ ValidityCheck check_validity(const nurbs::NurbsCurve& curve, const ValidityRequi
   if (requirements.min_speed > 0.0) {
     measure_speed(curve, check);
     if (check.speed_ratio < requirements.min_speed)
-      check.reasons.push_back("cusp: the speed falls to " + num(100.0 * check.speed_ratio) +
-                              " % of its mean at t = " + num(check.slowest_at) + " " +
-                              where(curve.evaluate(check.slowest_at), dim) + ", below validity.min_speed = " +
-                              num(requirements.min_speed));
+      check.reasons.push_back("cusp: the speed falls to " + num(100.0 * check.speed_ratio) + " % of its mean at t = " +
+                              num(check.slowest_at) + " " + where(curve.evaluate(check.slowest_at), dim) +
+                              ", below validity.min_speed = " + num(requirements.min_speed));
   }
   if (requirements.monotone_curvature) {
     const diffgeom::CurvatureMonotonicity m = diffgeom::curvature_monotonicity(curve::Curve(curve), dim == 2);
@@ -115,8 +113,7 @@ ValidityCheck check_validity(const nurbs::NurbsCurve& curve, const ValidityRequi
   return check;
 }
 
-void validity_constraints(const ValidityCheck& check, const ValidityRequirements& requirements,
-                          std::span<double> out) {
+void validity_constraints(const ValidityCheck& check, const ValidityRequirements& requirements, std::span<double> out) {
   std::size_t k = 0;
   if (requirements.no_self_intersection) out[k++] = static_cast<double>(check.self_intersections);
   if (requirements.min_speed > 0.0) out[k++] = requirements.min_speed - check.speed_ratio;

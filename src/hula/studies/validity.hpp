@@ -71,7 +71,6 @@ struct ValidityCheck {
 /// monotone curvature (those asked): the number of meetings, min_speed − speed ratio, the number of
 /// curvature extrema.
 /// @param out requirements.count() values
-void validity_constraints(const ValidityCheck& check, const ValidityRequirements& requirements,
-                          std::span<double> out);
+void validity_constraints(const ValidityCheck& check, const ValidityRequirements& requirements, std::span<double> out);
 
 }  // namespace hula::studies
