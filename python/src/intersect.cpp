@@ -1,14 +1,12 @@
 // SPDX-License-Identifier: MIT
 // intersect(a, b=None, *, tolerance=None) and distance(a, b, *, tolerance=None)
-// for Python: nurbs::intersect / self_intersect / curve_distance with the GIL
-// released, answered as the dicts of io::intersection_to_json /
-// curve_distance_to_json (the shape `hula intersect` / `hula distance` print).
+// for Python: io::intersection_answer / distance_answer (the answer `hula
+// intersect` / `hula distance` print) with the GIL released, as dicts.
 #include "hula/nurbs/intersect.hpp"
 
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
-#include <algorithm>
 #include <optional>
 
 #include "arrays.hpp"
@@ -31,22 +29,24 @@ nurbs::IntersectOptions options_of(std::optional<double> tolerance) {
 
 py::object intersect(const NurbsCurve& a, const std::optional<NurbsCurve>& b, std::optional<double> tolerance) {
   const nurbs::IntersectOptions o = options_of(tolerance);
-  nurbs::IntersectionResult r;
+  io::Json answer;
   {
     const py::gil_scoped_release release;
-    r = b ? nurbs::intersect(a, *b, o) : nurbs::self_intersect(a, o);
+    const curve::Curve ca(a);
+    const std::optional<curve::Curve> cb = b ? std::optional<curve::Curve>(curve::Curve(*b)) : std::nullopt;
+    answer = io::intersection_answer(ca, cb ? &*cb : nullptr, o);
   }
-  return to_python(io::intersection_to_json(r, std::max(a.dimension(), b ? b->dimension() : 2)));
+  return to_python(answer);
 }
 
 py::object distance(const NurbsCurve& a, const NurbsCurve& b, std::optional<double> tolerance) {
   const nurbs::IntersectOptions o = options_of(tolerance);
-  nurbs::CurveDistanceResult r;
+  io::Json answer;
   {
     const py::gil_scoped_release release;
-    r = nurbs::curve_distance(a, b, o);
+    answer = io::distance_answer(curve::Curve(a), curve::Curve(b), o);
   }
-  return to_python(io::curve_distance_to_json(r, std::max(a.dimension(), b.dimension())));
+  return to_python(answer);
 }
 
 }  // namespace

@@ -34,16 +34,14 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-fs::path real(const std::string& name) {
-  return fs::path(std::getenv("HULA_TEST_DATA")) / "real" / "cad" / name;
-}
+fs::path real(const std::string& name) { return fs::path(std::getenv("HULA_TEST_DATA")) / "real" / "cad" / name; }
 
 Vec3 point(const json& p) { return {p[0].get<double>(), p[1].get<double>(), p[2].get<double>()}; }
 
 struct Expected {
   const char* file;
-  std::size_t edges;      // the count Open CASCADE's reader transfers (checked against the program too)
-  const char* warning;    // a substring of the first warning, or "" for none
+  std::size_t edges;    // the count Open CASCADE's reader transfers (checked against the program too)
+  const char* warning;  // a substring of the first warning, or "" for none
 };
 
 // checks: every real file imports exactly the edges OCCT's reader transfers, ends matched to 1e-9 of the model
@@ -66,7 +64,8 @@ TEST(ExchangeRealFiles, ImportEveryEdgeOcctTransfers) {
     EXPECT_EQ(report.skipped, 0U) << f.file;
     if (*f.warning != '\0') {
       ASSERT_FALSE(report.warnings.empty()) << f.file;
-      EXPECT_NE(report.warnings.front().find(f.warning), std::string::npos) << f.file << ": " << report.warnings.front();
+      EXPECT_NE(report.warnings.front().find(f.warning), std::string::npos)
+          << f.file << ": " << report.warnings.front();
     } else {
       EXPECT_TRUE(report.warnings.empty()) << f.file << ": " << report.warnings.front();
     }

@@ -1,13 +1,11 @@
 // SPDX-License-Identifier: MIT
 // `hula intersect A B`, `hula intersect A --self` and `hula distance A B`:
 // where two curves (or one curve with itself) meet and how far apart two
-// curves are (nurbs::intersect, nurbs::self_intersect, nurbs::curve_distance),
-// printed with io::intersection_to_json / io::curve_distance_to_json. Law and
-// natural-equation curves are answered through their NURBS stand-in, whose
-// deviation is printed as "stand_in_deviation".
+// curves are: io::intersection_answer / io::distance_answer, the answer every
+// door gives (nurbs::intersect, self_intersect, curve_distance and their
+// codec; law and natural-equation curves through their NURBS stand-in).
 #include "hula/nurbs/intersect.hpp"
 
-#include <algorithm>
 #include <memory>
 #include <optional>
 
@@ -32,35 +30,22 @@ nurbs::IntersectOptions options_of(const IntersectArgs& args) {
   return o;
 }
 
-bool has_stand_in(const curve::Curve& c) { return c.kind() == curve::Kind::Law || c.kind() == curve::Kind::Natural; }
-
-// The largest stand-in deviation of the curves that have one, else -1 (not printed).
-double stand_in(const curve::Curve& a, const curve::Curve* b) {
-  double d = has_stand_in(a) ? a.approximation_deviation() : -1.0;
-  if (b != nullptr && has_stand_in(*b)) d = std::max(d, b->approximation_deviation());
-  return d;
-}
-
 int run_intersect(const IntersectArgs& args) {
   if (args.self == !args.b.empty())
     throw Error(Errc::InvalidArgument,
                 args.self ? "give either a second curve or --self, not both" : "give a second curve or --self",
                 ErrorWhere{.field = "self"});
   const curve::Curve a = io::read_curve_file(args.a);
+  std::optional<curve::Curve> b;
+  if (!args.self) b = io::read_curve_file(args.b);
   Json doc = Json::object();
   doc["a"] = args.a;
-  Json result;
-  if (args.self) {
+  if (args.self)
     doc["self"] = true;
-    result = io::intersection_to_json(nurbs::self_intersect(a.nurbs(), options_of(args)), a.nurbs().dimension(),
-                                      stand_in(a, nullptr));
-  } else {
-    const curve::Curve b = io::read_curve_file(args.b);
+  else
     doc["b"] = args.b;
-    result = io::intersection_to_json(nurbs::intersect(a.nurbs(), b.nurbs(), options_of(args)),
-                                      std::max(a.nurbs().dimension(), b.nurbs().dimension()), stand_in(a, &b));
-  }
-  for (auto& [key, value] : result.items()) doc[key] = std::move(value);
+  Json answer = io::intersection_answer(a, b ? &*b : nullptr, options_of(args));
+  for (auto& [key, value] : answer.items()) doc[key] = std::move(value);
   print_json(doc);
   return kExitOk;
 }
@@ -71,9 +56,8 @@ int run_distance(const IntersectArgs& args) {
   Json doc = Json::object();
   doc["a"] = args.a;
   doc["b"] = args.b;
-  Json result = io::curve_distance_to_json(nurbs::curve_distance(a.nurbs(), b.nurbs(), options_of(args)),
-                                           std::max(a.nurbs().dimension(), b.nurbs().dimension()), stand_in(a, &b));
-  for (auto& [key, value] : result.items()) doc[key] = std::move(value);
+  Json answer = io::distance_answer(a, b, options_of(args));
+  for (auto& [key, value] : answer.items()) doc[key] = std::move(value);
   print_json(doc);
   return kExitOk;
 }

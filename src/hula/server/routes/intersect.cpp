@@ -3,12 +3,9 @@
 // the points where the curves meet and their overlaps (without "b": where "a"
 // meets itself); POST /api/distance {"a", "b", "tolerance"?} → the smallest
 // distance and where it is reached. `hula intersect` / `hula distance` over
-// HTTP: nurbs::intersect, self_intersect, curve_distance, written by
-// io::intersection_to_json / curve_distance_to_json. Law and natural curves
-// are answered through their NURBS stand-in ("stand_in_deviation").
-#include "hula/nurbs/intersect.hpp"
-
-#include <algorithm>
+// HTTP: io::intersection_answer / distance_answer (nurbs::intersect,
+// self_intersect, curve_distance and their codec). Law and natural curves are
+// answered through their NURBS stand-in ("stand_in_deviation").
 #include <optional>
 
 #include "hula/io/intersection_json.hpp"
@@ -48,35 +45,21 @@ nurbs::IntersectOptions read_options(const Json& body) {
   return o;
 }
 
-bool has_stand_in(const curve::Curve& c) { return c.kind() == curve::Kind::Law || c.kind() == curve::Kind::Natural; }
-
-double stand_in(const curve::Curve& a, const std::optional<curve::Curve>& b) {
-  double d = has_stand_in(a) ? a.approximation_deviation() : -1.0;
-  if (b && has_stand_in(*b)) d = std::max(d, b->approximation_deviation());
-  return d;
-}
-
 Response intersect(const Request& request) {
   const Json body = request.json();
   json::reject_unknown_members(body, json::JsonPath(), {"a", "b", "tolerance"});
   const curve::Curve a = read_curve(body, "a");
   std::optional<curve::Curve> b;
   if (json::optional_member(body, "b") != nullptr) b = read_curve(body, "b");
-  const nurbs::IntersectOptions options = read_options(body);
-  const int dimension = std::max(a.nurbs().dimension(), b ? b->nurbs().dimension() : 2);
-  const nurbs::IntersectionResult r =
-      b ? nurbs::intersect(a.nurbs(), b->nurbs(), options) : nurbs::self_intersect(a.nurbs(), options);
-  return json_response(200, io::intersection_to_json(r, dimension, stand_in(a, b)));
+  return json_response(200, io::intersection_answer(a, b ? &*b : nullptr, read_options(body)));
 }
 
 Response distance(const Request& request) {
   const Json body = request.json();
   json::reject_unknown_members(body, json::JsonPath(), {"a", "b", "tolerance"});
   const curve::Curve a = read_curve(body, "a");
-  const std::optional<curve::Curve> b = read_curve(body, "b");
-  const nurbs::CurveDistanceResult r = nurbs::curve_distance(a.nurbs(), b->nurbs(), read_options(body));
-  return json_response(
-      200, io::curve_distance_to_json(r, std::max(a.nurbs().dimension(), b->nurbs().dimension()), stand_in(a, b)));
+  const curve::Curve b = read_curve(body, "b");
+  return json_response(200, io::distance_answer(a, b, read_options(body)));
 }
 
 }  // namespace
