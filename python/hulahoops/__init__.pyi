@@ -146,6 +146,15 @@ def reconstruct(kappa: Law | str | float, tau: Law | str | float = 0.0, *, lengt
     (thesis 8.2.2), starting at `point` with unit tangent and normal (defaults: origin, +x, +y).
     τ ≡ 0 gives a planar curve with signed κ (eq. 34); otherwise Frenet–Serret is integrated."""
 
+def intersect(a: NurbsCurve, b: NurbsCurve | None = None, *, tolerance: float | None = None) -> dict[str, Any]:
+    """Where curves a and b meet, or with b omitted where a meets itself (docs/formats.md "Intersection
+    results"): {"tolerance", "points": [{"s", "t", "point", "distance", "angle", "kind"}], "overlaps":
+    [{"s": [s0, s1], "t": [t0, t1], "start", "end"}]}; kind is "crossing" or "tangent". tolerance:
+    curves closer than this (model units, default 1e-6) meet."""
+
+def distance(a: NurbsCurve, b: NurbsCurve, *, tolerance: float | None = None) -> dict[str, Any]:
+    """The smallest distance between a and b: {"distance", "s", "t", "point_a", "point_b"}."""
+
 class Law:
     """A law expression (docs/formats.md "Law expressions") of named parameters."""
     def __init__(self, text: str, parameters: Sequence[str] = ("t",)) -> None:

@@ -24,6 +24,7 @@
 #include "hula/diffgeom/analysis.hpp"
 #include "hula/intrinsic/natural_equations.hpp"
 #include "hula/io/curve_analysis_json.hpp"
+#include "hula/io/intersection_json.hpp"
 #include "hula/io/json_curve.hpp"
 #include "hula/io/points_file.hpp"
 #include "hula/nurbs/arc_length.hpp"
@@ -281,6 +282,7 @@ py::dict analysis_to_python(const diffgeom::CurveAnalysis& a) {
     mono["violations"] = violations;
     x["curvature_monotonicity"] = mono;
     x["maximum_curvature"] = to_python(io::maximum_curvature_to_json(ft.maximum_curvature));
+    x["self_intersections"] = to_python(io::intersection_to_json(ft.self_intersections, 3));
     d["features"] = x;
   }
   return d;

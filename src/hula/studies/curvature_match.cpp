@@ -439,6 +439,7 @@ nurbs::NurbsCurve SplineProfileSampler::curve(std::span<const Vec3> points) cons
 }
 
 void CurvatureMatchSetup::validate() const {
+  validity.validate();
   if (points.size() < 2)
     throw Error(Errc::TooFewPoints, "points: at least 2 data points are needed, got " + std::to_string(points.size()),
                 {.field = "points"});
@@ -683,8 +684,34 @@ optim::Problem CurvatureMatch::problem(double precision) const {
     if (points.size() != setup_.points.size()) points.resize(setup_.points.size());
     if (kappa.size() != setup_.samples) kappa.resize(setup_.samples);
     values[0] = mean_distance(x, ws, points, kappa) + proximity_penalty(points);
+    validity_constraints(points, values.subspan(1));
   };
+  p.inequality_constraints = setup_.validity.count();
   return p;
+}
+
+ValidityCheck CurvatureMatch::validity(std::span<const double> x) const {
+  if (!setup_.validity.any()) return {};
+  std::vector<Vec3> points(setup_.points.size());
+  points_from(x, points);
+  try {
+    return check_validity(sampler_.curve(points), setup_.validity);
+  } catch (const Error& e) {
+    ValidityCheck c;
+    c.reasons.push_back("no curve through these points: " + e.message());
+    return c;
+  }
+}
+
+void CurvatureMatch::validity_constraints(std::span<const Vec3> points, std::span<double> out) const {
+  const ValidityRequirements& v = setup_.validity;
+  if (!v.any()) return;
+  try {
+    studies::validity_constraints(check_validity(sampler_.curve(points), v), v, out);
+  } catch (const Error&) {
+    std::fill(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(v.count()),
+              std::numeric_limits<double>::quiet_NaN());
+  }
 }
 
 namespace {

@@ -198,6 +198,7 @@ void add_documents(Router& router, const Context& context) {
     const ImportFile file(workspace, body);
     std::vector<oli::Label> labels;
     Change outcome;
+    Json cad = Json::object();  // a CAD file's "skipped" and "warnings" (what the reader could not read)
     if (file.points()) {
       io::PointSet points;
       try {
@@ -222,6 +223,8 @@ void add_documents(Router& router, const Context& context) {
       outcome = doc->change([&](oli::Document& d) {
         return d.transact("import", [&](oli::Edit& e) { labels = oli::add_imported(e, report, file.name()); });
       });
+      cad["skipped"] = report.skipped;
+      cad["warnings"] = report.warnings;
 #else
       throw Error(Errc::Unsupported, "importing '" + file.name() + "' needs Open CASCADE, and this hula was built without it",
                   ErrorWhere{.field = "file"});
@@ -231,6 +234,7 @@ void add_documents(Router& router, const Context& context) {
     Json list = Json::array();
     for (const oli::Label l : labels) list.push_back(l.value);
     out["labels"] = std::move(list);
+    for (auto& [key, value] : cad.items()) out[key] = std::move(value);
     return json_response(201, out);
   });
   router.add("POST", "/api/documents/{name}/undo", [&docs](const Request& request) {
