@@ -151,7 +151,9 @@ Sample nurbs_sample(const nurbs::NurbsCurve& curve, const FrenetOptions& o, Quan
   return frenet_sample([&curve, o](std::span<const double> ts, std::span<FrenetPoint> p) { frenet(curve, ts, p, o); },
                        q, points);
 }
-Sample law_sample(const LawFrenet& curve, Quantity q, std::vector<FrenetPoint>& points) {
+// q sampled through an exact Frenet evaluator (LawFrenet or CurveFrenet).
+template <class Exact>
+Sample law_sample(const Exact& curve, Quantity q, std::vector<FrenetPoint>& points) {
   return frenet_sample([&curve](std::span<const double> ts, std::span<FrenetPoint> p) { curve.at(ts, p); }, q, points);
 }
 }  // namespace
@@ -205,7 +207,8 @@ std::vector<Feature> curvature_extrema(const nurbs::NurbsCurve& curve, const Fea
 }
 
 namespace {
-std::vector<Feature> law_inflections(const LawFrenet& curve, Interval domain, const FeatureOptions& options) {
+template <class Exact>
+std::vector<Feature> law_inflections(const Exact& curve, Interval domain, const FeatureOptions& options) {
   std::vector<Feature> out;
   const Eval eval = [&curve](double t) { return curve.at(t); };
   std::vector<FrenetPoint> points;
@@ -215,7 +218,8 @@ std::vector<Feature> law_inflections(const LawFrenet& curve, Interval domain, co
   return out;
 }
 
-std::vector<Feature> law_curvature_extrema(const LawFrenet& curve, Interval domain, const FeatureOptions& options) {
+template <class Exact>
+std::vector<Feature> law_curvature_extrema(const Exact& curve, Interval domain, const FeatureOptions& options) {
   std::vector<Feature> out;
   const Eval eval = [&curve](double t) { return curve.at(t); };
   std::vector<FrenetPoint> points;
@@ -228,20 +232,28 @@ std::vector<Feature> law_curvature_extrema(const LawFrenet& curve, Interval doma
 
 std::vector<Feature> inflections(const curve::Curve& curve, const FeatureOptions& options) {
   options.validate();
+  // A natural curve: the signed curvature of its exact evaluation (κ of the law, to rounding).
+  if (curve.natural_evaluator() != nullptr)
+    return law_inflections(CurveFrenet(curve, options.frenet), curve.domain(), options);
   if (!curve.law()) return inflections(curve.nurbs(), options);
   return law_inflections(LawFrenet(*curve.law_evaluator(3), curve.domain(), options.frenet), curve.domain(), options);
 }
 
 std::vector<Feature> curvature_extrema(const curve::Curve& curve, const FeatureOptions& options) {
   options.validate();
+  if (curve.natural_evaluator() != nullptr)
+    return law_curvature_extrema(CurveFrenet(curve, options.frenet), curve.domain(), options);
   if (!curve.law()) return curvature_extrema(curve.nurbs(), options);
   return law_curvature_extrema(LawFrenet(*curve.law_evaluator(3), curve.domain(), options.frenet), curve.domain(),
                                options);
 }
 
-std::vector<Feature> torsion_extrema(const nurbs::NurbsCurve& curve, const FeatureOptions& options) {
-  options.validate();
-  const FrenetScale scale = frenet_scale(curve, options.frenet.tolerance);
+namespace {
+// Sign changes of dτ/dt from the derivatives r … r'''' of a NURBS or of a curve value (natural curves:
+// exact κ, τ and their derivatives), sampled over `cuts`.
+template <class C>
+std::vector<Feature> derivative_torsion_extrema(const C& curve, const FrenetScale& scale, const Eval& eval,
+                                                const std::vector<double>& cuts, const FeatureOptions& options) {
   const FrenetOptions fo = options.frenet;
   // The sign of dτ/dt (= sign of dτ/ds): with a = r' × r'', a' = r' × r''',
   // dτ/dt = [(a' · r''' + a · r'''') |a|² − 2 (a · r''') (a · a')] / |a|⁴; only the numerator is needed.
@@ -253,7 +265,8 @@ std::vector<Feature> torsion_extrema(const nurbs::NurbsCurve& curve, const Featu
   };
   auto dtau = [&curve, fo, &dtau_of](double t) {
     std::array<Vec3, 5> d;
-    curve.derivatives(t, 4, d, fo.eval);
+    const std::array<double, 1> ts{t};
+    curve.derivatives(ts, 4, d, fo.eval);
     return dtau_of(t, d);
   };
   std::vector<Vec3> derivs;
@@ -263,9 +276,16 @@ std::vector<Feature> torsion_extrema(const nurbs::NurbsCurve& curve, const Featu
     for (std::size_t i = 0; i < ts.size(); ++i) vs[i] = dtau_of(ts[i], std::span<const Vec3>(derivs.data() + 5 * i, 5));
   };
   std::vector<Feature> out;
-  search(nurbs_eval(curve, options.frenet), sample, dtau, nurbs_cuts(curve), options.samples_per_span,
-         FeatureKind::TorsionMaximum, FeatureKind::TorsionMinimum, out);
+  search(eval, sample, dtau, cuts, options.samples_per_span, FeatureKind::TorsionMaximum, FeatureKind::TorsionMinimum,
+         out);
   return out;
+}
+}  // namespace
+
+std::vector<Feature> torsion_extrema(const nurbs::NurbsCurve& curve, const FeatureOptions& options) {
+  options.validate();
+  return derivative_torsion_extrema(curve, frenet_scale(curve, options.frenet.tolerance),
+                                    nurbs_eval(curve, options.frenet), nurbs_cuts(curve), options);
 }
 
 namespace {
@@ -375,6 +395,11 @@ std::vector<Feature> torsion_extrema(const law::Law& curve, std::string_view par
 
 std::vector<Feature> torsion_extrema(const curve::Curve& curve, const FeatureOptions& options) {
   options.validate();
+  if (curve.natural_evaluator() != nullptr) {
+    const CurveFrenet frenet(curve, options.frenet);
+    const Eval eval = [&frenet](double t) { return frenet.at(t); };
+    return derivative_torsion_extrema(curve, frenet.scale(), eval, law_cuts(curve.domain()), options);
+  }
   if (!curve.law()) return torsion_extrema(curve.nurbs(), options);
   return torsion_extrema(*curve.law(), curve.law_parameter(), curve.domain(), options);
 }

@@ -135,7 +135,9 @@ std::string analysis_json(const curve::Curve& subject, const AnalysisRequest& re
   const auto n = static_cast<std::size_t>(request.samples);
   const nurbs::Interval domain = curve.domain();
   std::vector<double> ts(n);
-  if (request.by == SampleBy::Parameter) {
+  // A natural curve's parameter is its arc length: both samplings are the same.
+  const bool natural = subject.natural_evaluator() != nullptr;
+  if (request.by == SampleBy::Parameter || natural) {
     for (std::size_t i = 0; i < n; ++i)
       ts[i] = i + 1 == n ? domain.end
                          : domain.start + domain.length() * static_cast<double>(i) / static_cast<double>(n - 1);
@@ -148,7 +150,11 @@ std::string analysis_json(const curve::Curve& subject, const AnalysisRequest& re
                   : nurbs::parameter_at_length(curve, length * static_cast<double>(i) / static_cast<double>(n - 1));
   }
   std::vector<diffgeom::FrenetPoint> frames(n);
-  diffgeom::frenet(curve, ts, frames);
+  // A natural curve is analysed exactly (κ and τ from its laws).
+  if (natural)
+    diffgeom::frenet(subject, ts, frames);
+  else
+    diffgeom::frenet(curve, ts, frames);
 
   std::string text;
   // About 560 bytes per sample with one comb, most of it numbers of up to 24 characters.
@@ -164,7 +170,7 @@ std::string analysis_json(const curve::Curve& subject, const AnalysisRequest& re
     // A law curve's fins are exact from its law. Otherwise, sampled by parameter, the fins stand at the
     // samples: they are built from the frames already evaluated there (the same parameters, bit for bit)
     // instead of evaluating them again.
-    const diffgeom::Fins f = subject.law() != nullptr            ? diffgeom::fins(subject, o)
+    const diffgeom::Fins f = subject.law() != nullptr || natural ? diffgeom::fins(subject, o)
                              : request.by == SampleBy::Parameter ? diffgeom::fins(frames, o)
                                                                  : diffgeom::fins(curve, o);
     w.raw("{\"kind\":\"").raw(diffgeom::fin_kind_name(o.kind)).raw("\",\"t\":");
@@ -174,11 +180,13 @@ std::string analysis_json(const curve::Curve& subject, const AnalysisRequest& re
     w.raw("}");
   });
   if (request.features) {
-    const std::vector<diffgeom::Feature> inflections = diffgeom::inflections(curve);
+    const std::vector<diffgeom::Feature> inflections =
+        natural ? diffgeom::inflections(subject) : diffgeom::inflections(curve);
     w.raw(",\"features\":{\"inflections\":").array(inflections.size(), [&](std::size_t i) {
       w.raw("{\"t\":").number(inflections[i].t).raw(",\"point\":").vec(inflections[i].position).raw("}");
     });
-    const std::vector<diffgeom::Feature> extrema = diffgeom::curvature_extrema(curve);
+    const std::vector<diffgeom::Feature> extrema =
+        natural ? diffgeom::curvature_extrema(subject) : diffgeom::curvature_extrema(curve);
     w.raw(",\"curvature_extrema\":").array(extrema.size(), [&](std::size_t i) {
       const diffgeom::Feature& f = extrema[i];
       w.raw("{\"kind\":\"").raw(diffgeom::feature_kind_name(f.kind)).raw("\",\"t\":").number(f.t);
