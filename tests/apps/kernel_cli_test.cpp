@@ -237,7 +237,7 @@ TEST(KernelCli, EnergyOfCircleIsClosedForm) {
 TEST(KernelCli, ToNurbsConvertsExactCurves) {
   testing::TempDir dir;
   const std::string in = (dir / "circle.json").string(), out = (dir / "circle-nurbs.json").string();
-  io::write_file_atomically(in, R"({"kind": "natural", "curvature": "2", "length": 3, "tolerance": 1e-12})");
+  io::write_file_atomically(in, R"json({"kind": "natural", "curvature": "2", "length": 3, "tolerance": 1e-12})json");
   const json j = run_ok({"edit", "to-nurbs", in, "--tolerance", "1e-9", "-o", out});
   EXPECT_EQ(j["operation"], "to-nurbs");
   EXPECT_EQ(j["from"], "natural");
@@ -251,19 +251,18 @@ TEST(KernelCli, ToNurbsConvertsExactCurves) {
         << "s = " << s;
   }
   const std::string law = (dir / "law.json").string();
-  io::write_file_atomically(law, R"({"kind": "law", "expression": "vec(cos(t), sin(t))", "domain": [0, 3]
-})");
+  io::write_file_atomically(law, R"json({"kind": "law", "expression": "vec(cos(t), sin(t))", "domain": [0, 3]})json");
   const json l = run_ok({"edit", "to-nurbs", law, "--tolerance", "1e-8", "-o", out});
-EXPECT_EQ(l["from"], "law");
-EXPECT_LE(l["max_deviation"].get<double>(), 1e-8);
-const ProcessResult r = testing::run_process(HULA_CLI_PATH, {"edit", "reverse", in, "-o", out});
-EXPECT_EQ(r.exit_code, 3);
-EXPECT_NE(testing::stderr_error(r)["message"].get<std::string>().find("is a natural curve"), std::string::npos);
-// Below the curve's integration tolerance the conversion is refused naming the tolerance.
-const ProcessResult low =
-    testing::run_process(HULA_CLI_PATH, {"edit", "to-nurbs", in, "--tolerance", "1e-13", "-o", out});
-EXPECT_EQ(low.exit_code, 3);
-EXPECT_EQ(testing::stderr_error(low)["where"]["field"], "tolerance");
+  EXPECT_EQ(l["from"], "law");
+  EXPECT_LE(l["max_deviation"].get<double>(), 1e-8);
+  const ProcessResult r = testing::run_process(HULA_CLI_PATH, {"edit", "reverse", in, "-o", out});
+  EXPECT_EQ(r.exit_code, 3);
+  EXPECT_NE(testing::stderr_error(r)["message"].get<std::string>().find("is a natural curve"), std::string::npos);
+  // Below the curve's integration tolerance the conversion is refused naming the tolerance.
+  const ProcessResult low =
+      testing::run_process(HULA_CLI_PATH, {"edit", "to-nurbs", in, "--tolerance", "1e-13", "-o", out});
+  EXPECT_EQ(low.exit_code, 3);
+  EXPECT_EQ(testing::stderr_error(low)["where"]["field"], "tolerance");
 }
 
 }  // namespace
