@@ -159,6 +159,7 @@ int main(int argc, char** argv) {
         hula::cli::add_intersect(app),
         hula::cli::add_distance(app),
         hula::cli::add_clothoid(app),
+        hula::cli::add_log_aesthetic(app),
         hula::cli::add_deviation(app),
         hula::cli::add_continuity(app),
         hula::cli::add_energy(app),

@@ -173,6 +173,10 @@ class Law:
         """The exact symbolic derivative."""
     def integrate(self, a: float, b: float, *, parameter: str | None = None,
                   relative_tolerance: float = 1e-12) -> float:
-        """∫_a^b of a scalar law (adaptive Gauss–Kronrod, split at singularities)."""
+        """∫_a^b of a scalar law (adaptive Gauss–Kronrod, split at singularities; tanh-sinh at an
+        integrable singular end, exp-sinh / sinh-sinh for a or b = ±inf); nan when divergent."""
+    def antiderivative(self, parameter: str | None = None) -> Law | None:
+        """A closed-form F with F' = self (substitution, by parts, rational, atan/asin forms, trigonometric
+        powers; docs/modules/law.md), or None when no rule applies."""
     def roots(self, a: float, b: float, *, parameter: str | None = None) -> Array:
         """All roots of a scalar law in [a, b], increasing."""

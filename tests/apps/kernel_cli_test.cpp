@@ -242,5 +242,39 @@ TEST(KernelCli, EnergyOfCircleIsClosedForm) {
   EXPECT_NEAR(j["curvature_variation"]["value"].get<double>(), 0.0, 1e-9);
 }
 
+// checks (issue 26): `edit to-nurbs` converts a natural (exact) curve file to a NURBS within --tolerance — measured
+// here against the closed-form circle κ = 2 (radius 1/2) at 500 arc lengths — and a law curve likewise; the other
+// edits refuse a natural curve by name instead of editing its stand-in.
+TEST(KernelCli, ToNurbsConvertsExactCurves) {
+  testing::TempDir dir;
+  const std::string in = (dir / "circle.json").string(), out = (dir / "circle-nurbs.json").string();
+  io::write_file_atomically(in, R"json({"kind": "natural", "curvature": "2", "length": 3, "tolerance": 1e-12})json");
+  const json j = run_ok({"edit", "to-nurbs", in, "--tolerance", "1e-9", "-o", out});
+  EXPECT_EQ(j["operation"], "to-nurbs");
+  EXPECT_EQ(j["from"], "natural");
+  EXPECT_LE(j["max_deviation"].get<double>(), 1e-9);
+  const NurbsCurve c = io::read_curve_file(out).nurbs();
+  EXPECT_EQ(c.domain().end, 3.0);
+  for (int i = 0; i <= 500; ++i) {
+    const double s = 3.0 * i / 500.0;
+    EXPECT_LT(distance(c.derivatives(s, 0)[0], Vec3{0.5 * std::sin(2 * s), 0.5 - 0.5 * std::cos(2 * s), 0.0}),
+              1e-9 + 1e-12)
+        << "s = " << s;
+  }
+  const std::string law = (dir / "law.json").string();
+  io::write_file_atomically(law, R"json({"kind": "law", "expression": "vec(cos(t), sin(t))", "domain": [0, 3]})json");
+  const json l = run_ok({"edit", "to-nurbs", law, "--tolerance", "1e-8", "-o", out});
+  EXPECT_EQ(l["from"], "law");
+  EXPECT_LE(l["max_deviation"].get<double>(), 1e-8);
+  const ProcessResult r = testing::run_process(HULA_CLI_PATH, {"edit", "reverse", in, "-o", out});
+  EXPECT_EQ(r.exit_code, 3);
+  EXPECT_NE(testing::stderr_error(r)["message"].get<std::string>().find("is a natural curve"), std::string::npos);
+  // Below the curve's integration tolerance the conversion is refused naming the tolerance.
+  const ProcessResult low =
+      testing::run_process(HULA_CLI_PATH, {"edit", "to-nurbs", in, "--tolerance", "1e-13", "-o", out});
+  EXPECT_EQ(low.exit_code, 3);
+  EXPECT_EQ(testing::stderr_error(low)["where"]["field"], "tolerance");
+}
+
 }  // namespace
 }  // namespace hula

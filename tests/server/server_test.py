@@ -910,6 +910,24 @@ class DocumentTest(unittest.TestCase):
         self.call("PATCH", entity, {"move": [{"index": 3, "to": [3.0, 1.0, 0.25]}], "analysis": {"by": "time"}},
                   expect=400)
 
+    # checks (issue 26) the analysis of a natural (exact) curve entity: the log-aesthetic curve
+    # kappa = 1/(1.5 + 0.4 s) stored by its law is analysed from the law, not from its NURBS stand-in:
+    # curvature at every sample and the curvature fin lengths equal the closed form to 1e-12
+    def test_natural_curve_analysis_is_exact(self):
+        self.new_document("exact.hula")
+        base = "/api/documents/exact.hula"
+        curve = {"kind": "natural", "curvature": "1/(1.5 + 0.4*s)", "length": 6, "tolerance": 1e-12}
+        label = self.call("POST", base + "/entities", {"curve": curve}, expect=201)["label"]
+        a = self.call("POST", f"{base}/entities/{label}/analysis",
+                      {"samples": 61, "fins": ["curvature"], "scale": 2, "by": "arclength"})
+        self.assertEqual(len(a["t"]), 61)
+        for i, s in enumerate(a["t"]):
+            self.assertAlmostEqual(s, 6 * i / 60, delta=1e-15)
+            k = 1 / (1.5 + 0.4 * s)
+            self.assertLess(abs(a["curvature"][i] - k), 1e-12 * k, s)
+            base_point, tip = a["fins"][0]["base"][i], a["fins"][0]["tip"][i]
+            self.assertLess(abs(math.dist(base_point, tip) - 2 * k), 1e-12, s)
+
     # checks insert-knot and elevate on both kernel backends against the curve before: one more control
     # point (or degree), the same points at 101 parameters (1e-9, from the analysis route), undo restores
     # the entity exactly, and bad input answers the documented status naming the field
