@@ -71,4 +71,6 @@ function(hula_add_bench name)
   add_executable(bench_${name} ${ARG_SOURCES})
   target_link_libraries(bench_${name} PRIVATE ${ARG_DEPS} benchmark::benchmark benchmark::benchmark_main
     hula::warnings)
+  # bench/reference/: the hand-written kernels every ratio in docs/benchmarks.md is measured against.
+  target_include_directories(bench_${name} PRIVATE ${PROJECT_SOURCE_DIR}/bench)
 endfunction()
