@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The batch evaluator's fast paths (issue 27): the run kernels of every instruction set this CPU has
-// (detail/span_simd.hpp) give bit for bit what the point-by-point path gives, and the bucketed span
-// search finds the span std::upper_bound finds (KnotVector::find_span), on knots of very different
+// (hula/core/simd.hpp, nurbs/detail/span_simd.hpp) give bit for bit what the point-by-point path gives, and the
+// bucketed span search finds the span std::upper_bound finds (KnotVector::find_span), on knots of very different
 // lengths, at knots, next to knots and outside the domain.
 #include "hula/nurbs/detail/span_simd.hpp"
 
@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "hula/core/rng.hpp"
+#include "hula/core/simd.hpp"
 #include "hula/nurbs/basis.hpp"
 #include "hula/nurbs/nurbs_curve.hpp"
 #include "hula/testing/curve_generators.hpp"
@@ -21,12 +22,10 @@
 namespace hula::nurbs {
 namespace {
 
-using detail::SimdLevel;
-
 // Restores the instruction-set level when a test ends.
 struct LevelGuard {
-  SimdLevel saved = detail::simd_level();
-  ~LevelGuard() { detail::set_simd_level(saved); }
+  SimdLevel saved = simd_level();
+  ~LevelGuard() { set_simd_level(saved); }
 };
 
 bool bitwise_equal(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
@@ -58,7 +57,7 @@ std::vector<double> parameters(const NurbsCurve& c, Rng& rng, bool sorted) {
 // sides, sorted and shuffled) are bit-identical to the scalar path's and to one call per point.
 TEST(SpanSimd, EveryInstructionSetGivesTheScalarPathsDoubles) {
   LevelGuard guard;
-  const SimdLevel widest = detail::supported_simd_level();
+  const SimdLevel widest = supported_simd_level();
   Rng rng(2701);
   int compared = 0;
   for (int i = 0; i < 40; ++i) {
@@ -71,7 +70,7 @@ TEST(SpanSimd, EveryInstructionSetGivesTheScalarPathsDoubles) {
         for (const Side side : {Side::Right, Side::Left}) {
           const EvalOptions options{.side = side};
           const std::size_t stride = static_cast<std::size_t>(order) + 1;
-          detail::set_simd_level(SimdLevel::Scalar);
+          set_simd_level(SimdLevel::Scalar);
           std::vector<Vec3> scalar(ts.size() * stride);
           c.derivatives(ts, order, scalar, options);
           std::vector<Vec3> one(ts.size() * stride);
@@ -79,11 +78,11 @@ TEST(SpanSimd, EveryInstructionSetGivesTheScalarPathsDoubles) {
             c.derivatives(ts[k], order, std::span<Vec3>(one).subspan(k * stride, stride), options);
           ASSERT_TRUE(bitwise_equal(scalar, one)) << "degree " << degree << " order " << order;
           for (auto level = static_cast<int>(SimdLevel::Baseline); level <= static_cast<int>(widest); ++level) {
-            detail::set_simd_level(static_cast<SimdLevel>(level));
+            set_simd_level(static_cast<SimdLevel>(level));
             std::vector<Vec3> wide(ts.size() * stride);
             c.derivatives(ts, order, wide, options);
             ASSERT_TRUE(bitwise_equal(scalar, wide))
-                << detail::simd_level_name(static_cast<SimdLevel>(level)) << " degree " << degree << " order " << order
+                << simd_level_name(static_cast<SimdLevel>(level)) << " degree " << degree << " order " << order
                 << (c.is_rational() ? " rational" : "") << (sorted ? " sorted" : " shuffled");
             ++compared;
           }
@@ -152,14 +151,15 @@ TEST(SpanSimd, BucketedSpanSearchAgreesWithUpperBound) {
   }
 }
 
-// checks: HULA_SIMD's level names and set_simd_level's cap at the supported level.
+// checks: set_simd_level's cap at the supported level, the level names, and that the scalar level
+// turns the run kernels off.
 TEST(SpanSimd, LevelIsCappedAtTheSupportedOne) {
   LevelGuard guard;
-  detail::set_simd_level(SimdLevel::Avx512);
-  EXPECT_LE(static_cast<int>(detail::simd_level()), static_cast<int>(detail::supported_simd_level()));
-  EXPECT_EQ(detail::set_simd_level(SimdLevel::Scalar), detail::supported_simd_level());
-  EXPECT_EQ(detail::simd_level(), SimdLevel::Scalar);
-  EXPECT_EQ(detail::simd_level_name(SimdLevel::Avx2), "avx2");
+  set_simd_level(SimdLevel::Avx512);
+  EXPECT_LE(static_cast<int>(simd_level()), static_cast<int>(supported_simd_level()));
+  EXPECT_EQ(set_simd_level(SimdLevel::Scalar), supported_simd_level());
+  EXPECT_EQ(simd_level(), SimdLevel::Scalar);
+  EXPECT_EQ(simd_level_name(SimdLevel::Avx2), "avx2");
   EXPECT_EQ(detail::run_kernel(3, false, 3), nullptr);  // scalar: point by point
 }
 
