@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "hula/core/rng.hpp"
+#include "hula/core/simd.hpp"
 #include "hula/diffgeom/frenet.hpp"
 #include "hula/testing/occt_curve.hpp"
 #include "reference/power_basis.hpp"
@@ -28,6 +29,12 @@ using hula::nurbs::NurbsCurve;
 
 constexpr std::size_t kDistinct = 65536;
 constexpr std::size_t kChunk = 1024;
+
+// The instruction set in the JSON context (docs/benchmarks.md names it with each figure).
+const bool kSimdContext = [] {
+  benchmark::AddCustomContext("simd", std::string(hula::simd_level_name(hula::simd_level())));
+  return true;
+}();
 
 NurbsCurve make_curve() {
   Rng rng(64);

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "hula/core/rng.hpp"
+#include "hula/core/simd.hpp"
 #include "hula/nurbs/nurbs_curve.hpp"
 #include "hula/testing/occt_curve.hpp"
 #include "reference/power_basis.hpp"
@@ -31,6 +32,20 @@ using hula::nurbs::NurbsCurve;
 
 constexpr std::size_t kDistinct = 65536;
 constexpr std::size_t kChunk = 1024;
+
+// The instruction set in the JSON context (docs/benchmarks.md names it with each figure).
+const bool kSimdContext = [] {
+  benchmark::AddCustomContext("simd", std::string(hula::simd_level_name(hula::simd_level())));
+  return true;
+}();
+
+// Runs a row at SIMD level `simd` (0 = scalar: one point at a time; 3 = the widest the CPU has) and
+// restores the level afterwards.
+struct SimdScope {
+  hula::SimdLevel saved;
+  explicit SimdScope(std::int64_t simd) : saved(hula::set_simd_level(static_cast<hula::SimdLevel>(simd))) {}
+  ~SimdScope() { hula::set_simd_level(saved); }
+};
 
 NurbsCurve make_curve(bool rational) {
   Rng rng(64);
@@ -109,6 +124,7 @@ void finish(benchmark::State& state) {
 // --- position ---------------------------------------------------------------------------------
 
 void BM_nurbs_d0_ours(benchmark::State& state) {
+  const SimdScope simd(state.range(2));
   const NurbsCurve c = make_curve(state.range(0) != 0);
   const auto& t = params(state.range(1) != 0);
   std::vector<Vec3> all(t.size());
@@ -177,6 +193,7 @@ void BM_nurbs_d0_occt(benchmark::State& state) {
 // --- position and three derivatives -----------------------------------------------------------
 
 void BM_nurbs_d3_ours(benchmark::State& state) {
+  const SimdScope simd(state.range(2));
   const NurbsCurve c = make_curve(state.range(0) != 0);
   const auto& t = params(state.range(1) != 0);
   std::vector<Vec3> all(t.size() * 4);
@@ -266,10 +283,12 @@ void BM_nurbs_d3_single_ours(benchmark::State& state) {
 }
 
 #define HULA_EVAL_ARGS ArgNames({"rational", "sorted"})->ArgsProduct({{0, 1}, {1, 0}})
-BENCHMARK(BM_nurbs_d0_ours)->HULA_EVAL_ARGS;
+// simd: 3 = the widest instruction set the CPU has (the default), 0 = the scalar path (one point at a time).
+#define HULA_EVAL_SIMD_ARGS ArgNames({"rational", "sorted", "simd"})->ArgsProduct({{0, 1}, {1, 0}, {3, 0}})
+BENCHMARK(BM_nurbs_d0_ours)->HULA_EVAL_SIMD_ARGS;
 BENCHMARK(BM_nurbs_d0_reference)->HULA_EVAL_ARGS;
 BENCHMARK(BM_nurbs_d0_occt)->HULA_EVAL_ARGS;
-BENCHMARK(BM_nurbs_d3_ours)->HULA_EVAL_ARGS;
+BENCHMARK(BM_nurbs_d3_ours)->HULA_EVAL_SIMD_ARGS;
 BENCHMARK(BM_nurbs_d3_reference)->HULA_EVAL_ARGS;
 BENCHMARK(BM_nurbs_d3_occt)->HULA_EVAL_ARGS;
 BENCHMARK(BM_nurbs_d3_single_ours)->HULA_EVAL_ARGS;

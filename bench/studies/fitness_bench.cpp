@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "hula/core/rng.hpp"
+#include "hula/core/simd.hpp"
 #include "hula/studies/curvature_match.hpp"
 #include "hula/studies/curvature_torsion_match.hpp"
 #include "hula/studies/match_study.hpp"
@@ -30,6 +31,12 @@ using hula::studies::CurvatureMatch;
 using hula::studies::CurvatureMatchSetup;
 
 constexpr std::size_t kSamples = 200;
+
+// The instruction set in the JSON context (docs/benchmarks.md names it with each figure).
+const bool kSimdContext = [] {
+  benchmark::AddCustomContext("simd", std::string(hula::simd_level_name(hula::simd_level())));
+  return true;
+}();
 
 std::vector<Vec3> wave(std::size_t n) {
   std::vector<Vec3> p(n);
