@@ -64,10 +64,9 @@ inline V root(V v) {
     return __builtin_sqrt(v);
   } else {
 #if defined(__AVX512F__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wuninitialized"  // GCC 12's _mm512_sqrt_pd passes an undefined pass-through
-    if constexpr (sizeof(V) == 64) return V(_mm512_sqrt_pd(__m512d(v)));
-#pragma GCC diagnostic pop
+    // The masked form with every lane selected: GCC 12's _mm512_sqrt_pd passes an undefined pass-through
+    // operand, which -Wmaybe-uninitialized reports.
+    if constexpr (sizeof(V) == 64) return V(_mm512_mask_sqrt_pd(__m512d(v), 0xFF, __m512d(v)));
 #endif
 #if defined(__AVX__)
     if constexpr (sizeof(V) == 32) return V(_mm256_sqrt_pd(__m256d(v)));
@@ -155,7 +154,7 @@ __attribute__((always_inline)) inline V profile_lanes(const C* q, C tk, const do
 template <class V, int W, int D, bool T>
 inline V profile_mixed(const double* coef, const double* tstart, const unsigned* span, const double* u, double* kappa,
                        double* tau) {
-  V q[3 * D], tk;
+  V q[3 * D] = {}, tk{};
   for (int l = 0; l < W; ++l) {
     const double* s = coef + 9 * span[l];
     for (int j = 0; j < 3 * D; ++j) q[j][l] = s[j];
@@ -185,12 +184,12 @@ double profile_samples(const double* coef, const double* tstart, const unsigned*
         // Two spans (the common boundary): the first r lanes take span s, the rest span s + 1.
         int r = 1;
         while (span[i + static_cast<std::size_t>(r)] == s) ++r;
-        V lane;
+        V lane{};
         for (int l = 0; l < W; ++l) lane[l] = l;
         const Mask<V> first = lane < static_cast<double>(r);
         const double* a = coef + 9 * s;
         const double* b = a + 9;
-        V q[3 * D];
+        V q[3 * D] = {};
         for (int j = 0; j < 3 * D; ++j) q[j] = select<V>(first, splat<V>(a[j]), splat<V>(b[j]));
         const V tk = select<V>(first, splat<V>(tstart[s]), splat<V>(tstart[s + 1]));
         lanes += profile_lanes<V, D, T, V>(q, tk, u + i, kappa + i, ti);
