@@ -37,8 +37,9 @@ class SplineProfileSampler {
  public:
   /// Reused buffers of one thread; sized on first use, never shrunk.
   struct Workspace {
-    std::vector<double> t, h, diag, upper, rhs, moments, span_length;
+    std::vector<double> t, h, diag, upper, rhs, moments, span_length, slopes;
     std::vector<double> coefficients;  // per span and coordinate: b, c, d
+    std::vector<unsigned> span_of;     // the span of each sample
     // sample_jacobian: the factorisation of the moment system and one column's tangents.
     std::vector<double> pivot, factor_upper, dt, dh, dslope, drhs, dmoments;
   };
