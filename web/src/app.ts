@@ -210,6 +210,15 @@ export class App {
   /** … and from a pointer event to the server's reply to the move it sent. */
   readonly serverLatencies: number[] = [];
   private pointerStamp = 0;
+  /**
+   * The honest drag counters (issue 23, e2e/bench.spec.ts), reset when a drag
+   * starts: pointer moves that changed the dragged point, and frames that drew
+   * the curve, its fins and (when it is the selected curve) the graphs at a
+   * new position of it, with the times of the first and last such move.
+   */
+  readonly dragStats = { moves: 0, redraws: 0, firstMove: 0, lastMove: 0 };
+  /** The current frame draws a new drag position (set by drawDrag, counted after the frame). */
+  private drewDrag = false;
 
   constructor(
     readonly client: Client,
@@ -285,6 +294,10 @@ export class App {
     });
     this.viewports.afterFrame.add(() => {
       const now = performance.now();
+      if (this.drewDrag) {
+        this.drewDrag = false;
+        this.dragStats.redraws++;
+      }
       if (this.pointerStamp) {
         this.latencies.push(now - this.pointerStamp);
         this.pointerStamp = 0;
@@ -1127,6 +1140,7 @@ export class App {
         this.settling = this.selected;
         this.latencies.length = 0;
         this.serverLatencies.length = 0;
+        Object.assign(this.dragStats, { moves: 0, redraws: 0, firstMove: 0, lastMove: 0 });
         this.setGhost(this.selected);
         this.setStatus(`Dragging point ${hit.index}`);
         return;
@@ -1190,6 +1204,9 @@ export class App {
     // within a snapped grid cell) is no move: nothing to send, and the pointer has not moved.
     if (!p || p.every((v, k) => v === start[k])) return;
     d.handles[d.index] = p;
+    this.dragStats.moves++;
+    this.dragStats.firstMove ||= ev.timeStamp;
+    this.dragStats.lastMove = ev.timeStamp;
     this.moved = { label: d.label, handles: d.handles };
     this.fairing.pointerMoved();
     // The event's own time: the latency includes the wait for the page to take the event.
@@ -1231,6 +1248,8 @@ export class App {
       if (d.label === this.selected) this.updateGraphs();
     }
     this.redrawCurve(d.label, d.handles);
+    // Curve, fins and graphs now hold the new position: the frame about to be drawn shows it.
+    if (evaluator) this.drewDrag = true;
   }
 
   /** Send the latest drag position; one PATCH in flight, `continue` after the first. */
