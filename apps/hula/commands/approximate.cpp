@@ -12,6 +12,7 @@
 
 #include "commands/common.hpp"
 #include "hula/core/error.hpp"
+#include "hula/io/atomic_file.hpp"
 #include "hula/io/points_file.hpp"
 #include "hula/studies/tolerance_fit.hpp"
 
@@ -32,6 +33,7 @@ int run_approximate(const ApproximateArgs& a) {
   if (a.tolerance.has_value() == a.control_points.has_value())
     throw Error(Errc::InvalidArgument, "give exactly one of --tolerance and --control-points",
                 ErrorWhere{.field = "tolerance"});
+  io::check_output_path(a.output, "--output");
   const io::PointSet set = io::read_points_file(a.points);
   nurbs::ApproximationOptions o;
   o.degree = a.degree;
@@ -68,7 +70,7 @@ int run_approximate(const ApproximateArgs& a) {
     doc["max_deviation_index"] = fit.max_deviation_index;
     doc["fits"] = 1;
   }
-  print_json(doc);
+  print_result(doc, a.output);
   return kExitOk;
 }
 

@@ -227,7 +227,7 @@ int run_export(const Options& o) {
     no_occt("--format " + o.format);
 #endif
   }
-  print_json(out);
+  print_result(out, o.output);
   return kExitOk;
 }
 

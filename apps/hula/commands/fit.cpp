@@ -12,6 +12,7 @@
 #include "commands/study_common.hpp"
 #include "hula/core/error.hpp"
 #include "hula/diffgeom/plot.hpp"
+#include "hula/io/atomic_file.hpp"
 #include "hula/io/fit_study_file.hpp"
 #include "hula/io/json_curve.hpp"
 #include "hula/io/points_file.hpp"
@@ -89,6 +90,10 @@ int run_fit(const FitArgs& a) {
     throw Error(Errc::InvalidArgument, "give at most one of --class and --tolerance", ErrorWhere{.field = "tolerance"});
   io::check_output_path(a.output, "--output");
   if (a.save_study) io::check_output_path(*a.save_study, "--save-study");
+  if (a.save_study && io::is_std_stream(a.output) && io::is_std_stream(*a.save_study))
+    throw Error(Errc::InvalidArgument,
+                "-o and --save-study are both - (standard output): give at most one of them as -",
+                ErrorWhere{.field = "save-study"});
   if (a.svg) check_svg_directory(*a.svg);
   io::FitStudy study;
   if (!a.study.empty()) {
@@ -116,7 +121,7 @@ int run_fit(const FitArgs& a) {
   }
   Json doc = io::fit_result_to_json(r, study.options);
   doc["output"] = a.output;
-  print_json(doc);
+  print_result(doc, a.save_study && io::is_std_stream(*a.save_study) ? *a.save_study : a.output);
   return kExitOk;
 }
 

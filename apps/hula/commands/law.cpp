@@ -11,6 +11,7 @@
 
 #include "commands/common.hpp"
 #include "hula/core/error.hpp"
+#include "hula/io/atomic_file.hpp"
 #include "hula/io/law_values.hpp"
 #include "hula/law/antiderivative.hpp"
 #include "hula/law/convert.hpp"
@@ -101,6 +102,8 @@ void require_scalar(const law::Law& l, const char* option) {
 }
 
 int run_law(const LawArgs& a) {
+  if (!a.output.empty()) io::check_output_path(a.output, "--output");
+  bool printed_to_stdout = false;  // -o -: the curve file alone is what stdout carries
   law::Context ctx;
   law::ParseOptions po;
   po.parameters = {a.parameter};
@@ -239,6 +242,7 @@ int run_law(const LawArgs& a) {
     o.tolerance = a.tolerance;
     const law::ToNurbsResult n = law::to_nurbs(l, a.parameter, lo, hi, o);
     io::write_curve_file(a.output, n.curve);
+    printed_to_stdout = io::is_std_stream(a.output);
     Json j = Json::object();
     j["output"] = a.output;
     j["domain"] = Json::array({lo, hi});
@@ -249,7 +253,7 @@ int run_law(const LawArgs& a) {
     j["segments"] = n.segments;
     doc["nurbs"] = std::move(j);
   }
-  print_json(doc);
+  if (!printed_to_stdout) print_json(doc);
   return kExitOk;
 }
 
