@@ -208,6 +208,9 @@ bool is_cad_file(const std::string& path) {
 #endif
 
 int run_export(const Options& o) {
+  // The output-path policy (a regular file or -, never a link, FIFO, device or directory), checked
+  // before the document is opened and before the STEP/IGES helper starts.
+  io::check_output_path(o.output, "--output");
   std::vector<oli::Label> labels;
   for (const std::string& l : o.labels) labels.push_back(parse_label(l));
   const oli::Document doc = oli::Document::open(o.file, oli::OpenMode::ReadOnly);

@@ -120,8 +120,10 @@ struct ImportReport {
 [[nodiscard]] std::filesystem::path default_exchange_helper();
 
 /// Writes curves to a STEP or IGES file (replaced atomically: the helper writes a temporary file
-/// that is renamed over `path` only when complete).
-/// @param path the output file
+/// that is renamed over `path` only when complete), or to standard output for `-`. The output-path
+/// policy of every writer (io::check_output_path) is checked before the helper starts: a symbolic
+/// link (dangling or not), FIFO, device or directory at `path` is refused, never replaced.
+/// @param path the output file, or `-`
 /// @param curves ≥ 1 curves
 /// @throws hula::Error(Errc::InvalidArgument) if curves is empty or a deviation is negative or not finite
 /// @throws hula::Error(Errc::IoError) naming the path if it cannot be written
