@@ -25,6 +25,7 @@
 #include <exception>
 #include <iostream>
 #include <new>
+#include <sstream>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -110,6 +111,16 @@ int print_help(const CLI::App& app) {
   return hula::cli::kExitOk;
 }
 
+// Prints what CLI11 prints for --help, --help-all or --version, checked like any output (a failing
+// stdout, e.g. /dev/full, is exit 3, not a silent 0).
+int print_exit_text(const CLI::App& app, const CLI::Error& e) {
+  std::ostringstream out, err;
+  const int code = app.exit(e, out, err);
+  hula::cli::print_text(out.str());
+  if (!err.str().empty()) std::cerr << err.str();
+  return code;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -170,11 +181,11 @@ int main(int argc, char** argv) {
     try {
       app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
-      return app.exit(e);
+      return print_exit_text(app, e);
     } catch (const CLI::CallForAllHelp& e) {
-      return app.exit(e);
+      return print_exit_text(app, e);
     } catch (const CLI::CallForVersion& e) {
-      return app.exit(e);
+      return print_exit_text(app, e);
     }
     for (const auto& command : commands)
       if (command.app->parsed()) return command.run();
@@ -185,12 +196,16 @@ int main(int argc, char** argv) {
   } catch (const hula::Error& e) {
     print_error(hula::io::error_to_json(e));
     return e.code() == hula::Errc::NumericalFailure ? hula::cli::kExitNumerical : hula::cli::kExitInvalidInput;
-  } catch (const std::bad_alloc&) {
-    // No allocation-heavy work here: the message is short and the stack is unwound.
-    print_error(plain_error("OutOfMemory",
-                            "out of memory: the run needs more memory than the system (or its address-space limit) "
-                            "allows; reduce --population, --dimension, --samples or the input size (docs/cli.md "
-                            "\"Limits\")"));
+  } catch (const std::bad_alloc& e) {
+    // No allocation-heavy work here: the message is short and the stack is unwound. A bad_alloc that
+    // names what ran out (the exchange helper's, oli::ExchangeOutOfMemory) is reported as it says.
+    const std::string what = e.what();
+    print_error(plain_error(
+        "OutOfMemory", what != std::bad_alloc().what()
+                           ? "out of memory: " + what
+                           : std::string("out of memory: the run needs more memory than the system (or its "
+                                         "address-space limit) allows; reduce --population, --dimension, --samples "
+                                         "or the input size (docs/cli.md \"Limits\")")));
     return hula::cli::kExitOutOfMemory;
   } catch (const std::length_error&) {
     print_error(plain_error("OutOfMemory", "out of memory: a requested size exceeds what can be allocated"));

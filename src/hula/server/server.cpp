@@ -19,6 +19,7 @@
 #include <cmath>
 #include <iostream>
 #include <mutex>
+#include <new>
 #include <thread>
 #include <vector>
 
@@ -221,6 +222,8 @@ class Session : public std::enable_shared_from_this<Session> {
       response = error_response(e);
     } catch (const Error& e) {
       response = error_response(e);
+    } catch (const std::bad_alloc& e) {
+      response = error_response(out_of_memory_error(e));
     } catch (const std::exception& e) {
       response = error_response(HttpError(500, "InternalError", e.what()));
     }

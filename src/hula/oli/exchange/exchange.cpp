@@ -93,13 +93,15 @@ io::Json exchange(const detail::Request& request, const fs::path& file, std::str
   if (outcome.status != 0 || !fs::exists(answer_path)) {
     std::string log = outcome.log;
     while (!log.empty() && std::isspace(static_cast<unsigned char>(log.back()))) log.pop_back();
-    const bool out_of_memory =
-        log.find("std::bad_alloc") != std::string::npos || log.find("Standard_OutOfMemory") != std::string::npos;
+    const bool out_of_memory = outcome.status == detail::kHelperOutOfMemoryStatus ||
+                               log.find("std::bad_alloc") != std::string::npos ||
+                               log.find("Standard_OutOfMemory") != std::string::npos;
+    if (out_of_memory)
+      throw ExchangeOutOfMemory(subject + ": the exchange helper ran out of memory (its limit is " +
+                                std::to_string(options.memory_limit >> 20) + " MiB)");
     throw Error(Errc::HelperFailure,
                 subject + ": the exchange helper '" + helper.string() + "' exited with status " +
                     std::to_string(outcome.status) + " without answering" +
-                    (out_of_memory ? " (out of memory: limit " + std::to_string(options.memory_limit >> 20) + " MiB)"
-                                   : std::string()) +
                     (log.empty() ? std::string() : ": " + log.substr(log.size() > 400 ? log.size() - 400 : 0)),
                 where);
   }
