@@ -602,6 +602,20 @@ class LimitsTest(unittest.TestCase):
 class LifecycleTest(unittest.TestCase):
     """Start-up options, static files and clean stops."""
 
+    # checks --token-file /dev/zero and a FIFO are refused at once with exit 3 naming the file (issue 24 item 9:
+    # /dev/zero was read without limit, a FIFO blocked forever)
+    def test_token_file_stream_refused(self):
+        with tempfile.TemporaryDirectory() as d:
+            fifo = os.path.join(d, "token.fifo")
+            os.mkfifo(fifo)
+            for path in ("/dev/zero", fifo):
+                r = subprocess.run([HULA, "serve", "--workspace", d, "--port", "0", "--token-file", path],
+                                   capture_output=True, text=True, timeout=20)
+                self.assertEqual(r.returncode, 3, r.stderr)
+                error = json.loads(r.stderr)["error"]
+                self.assertEqual(error["code"], "IoError")
+                self.assertIn(path, error["message"])
+
     # checks SIGTERM and SIGINT during a running job exit 0 with the job cancelled
     def test_signals_stop_cleanly(self):
         for sig in (signal.SIGTERM, signal.SIGINT):

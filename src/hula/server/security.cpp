@@ -9,7 +9,8 @@
 #include <cctype>
 #include <cerrno>
 #include <cstring>
-#include <fstream>
+
+#include "hula/io/atomic_file.hpp"
 
 namespace hula::server {
 
@@ -148,11 +149,15 @@ std::string generate_token() {
 }
 
 std::string read_token_file(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::string line;
-  if (!in || !std::getline(in, line))
-    throw Error(Errc::IoError, "cannot read the token file '" + path.string() + "'", ErrorWhere{.field = "token-file"});
-  const std::string token(trim(line));
+  // A regular file (or -) of at most kMaxTokenFileBytes: a FIFO or device is refused before it can
+  // block or stream without end (io::read_text_file).
+  std::string text;
+  try {
+    text = io::read_text_file(path, kMaxTokenFileBytes);
+  } catch (const Error& e) {
+    throw Error(Errc::IoError, "the token file: " + e.message(), ErrorWhere{.field = "token-file"});
+  }
+  const std::string token(trim(std::string_view(text).substr(0, text.find('\n'))));
   if (token.size() < kMinTokenLength)
     throw Error(Errc::InvalidArgument,
                 "the token in '" + path.string() + "' has " + std::to_string(token.size()) +

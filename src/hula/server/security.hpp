@@ -68,8 +68,12 @@ struct RequestHead {
 /// @throws hula::Error(Errc::IoError) if the kernel has no randomness to give
 [[nodiscard]] std::string generate_token();
 
+/// Largest token file read (a token is one line of tens of characters).
+inline constexpr std::size_t kMaxTokenFileBytes = 4096;
+
 /// Reads a token from the first line of a file (surrounding white space removed).
-/// @throws hula::Error(Errc::IoError) if the file cannot be read
+/// @throws hula::Error(Errc::IoError) if the file cannot be read, is not a regular file (a FIFO or a
+///   device such as /dev/zero is refused without reading it) or is longer than kMaxTokenFileBytes
 /// @throws hula::Error(Errc::InvalidArgument) if the token has fewer than 32 characters or holds
 ///   characters outside printable ASCII without spaces and ';', ',' (which would break the cookie)
 [[nodiscard]] std::string read_token_file(const std::filesystem::path& path);
