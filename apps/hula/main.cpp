@@ -20,6 +20,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <cctype>
 #include <csignal>
 #include <cstring>
 #include <exception>
@@ -88,14 +89,25 @@ void print_error(const Json& error) {
   std::cerr.flush();
 }
 
-Json plain_error(const std::string& code, const std::string& message) {
+Json plain_error(const std::string& code, const std::string& message, const std::string& field = {}) {
   Json body = Json::object();
   body["code"] = code;
   body["message"] = message;
   body["where"] = Json::object();
+  if (!field.empty()) body["where"]["field"] = field;
   Json out = Json::object();
   out["error"] = std::move(body);
   return out;
+}
+
+// The option a usage message is about: its first "--name" (the option's checks and CLI11 name it
+// first, "--tolerance 0: must be a number > 0"), without the dashes, as where.field of other errors.
+std::string option_in(std::string_view message) {
+  const std::size_t at = message.find("--");
+  if (at == std::string_view::npos) return {};
+  std::size_t end = at + 2;
+  while (end < message.size() && (std::isalnum(static_cast<unsigned char>(message[end])) || message[end] == '-')) ++end;
+  return std::string(message.substr(at + 2, end - at - 2));
 }
 
 constexpr const char* kFooter =
@@ -191,7 +203,7 @@ int main(int argc, char** argv) {
       if (command.app->parsed()) return command.run();
     return print_help(app);
   } catch (const CLI::ParseError& e) {
-    print_error(plain_error("UsageError", e.what()));
+    print_error(plain_error("UsageError", e.what(), option_in(e.what())));
     return hula::cli::kExitUsage;
   } catch (const hula::Error& e) {
     print_error(hula::io::error_to_json(e));

@@ -458,6 +458,30 @@ class SecurityTest(unittest.TestCase):
         self.assertEqual(c.getresponse().status, 403)
         c.close()
 
+    # checks the Bearer scheme is case-insensitive (RFC 7235; issue 24 item 17): bearer and BEARER authorise
+    def test_bearer_scheme_any_case(self):
+        for scheme in ("bearer", "BEARER", "Bearer"):
+            headers = {"Authorization": f"{scheme} {self.server.token}"}
+            self.assertEqual(self.status("GET", "/api/jobs/77", token=False, headers=headers), 404, scheme)
+        self.assertEqual(self.status("GET", "/api/jobs/77", token=False,
+                                     headers={"Authorization": f"Basic {self.server.token}"}), 401)
+
+    # checks a request with two Host headers is refused with 400 BadRequest, whichever comes first
+    # (issue 24 item 17: the first one won)
+    def test_duplicate_host_400(self):
+        own = f"127.0.0.1:{self.server.port}"
+        for hosts in ((own, "evil.example"), ("evil.example", own), (own, own)):
+            s = socket.create_connection(("127.0.0.1", self.server.port), timeout=5)
+            s.sendall((f"GET /api/health HTTP/1.1\r\nHost: {hosts[0]}\r\nHost: {hosts[1]}\r\n"
+                       f"Connection: close\r\n\r\n").encode())
+            reply = b""
+            while chunk := s.recv(65536):
+                reply += chunk
+            s.close()
+            text = reply.decode(errors="replace")
+            self.assertTrue(text.startswith("HTTP/1.1 400"), text)
+            self.assertEqual(json.loads(text.split("\r\n\r\n", 1)[1])["error"]["code"], "BadRequest")
+
     # checks a foreign Origin is refused with 403 and the server's own Origin is accepted
     def test_foreign_origin_403(self):
         self.assertEqual(self.status("GET", "/api/health", headers={"Origin": "http://evil.example"}), 403)

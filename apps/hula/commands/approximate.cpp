@@ -7,6 +7,7 @@
 #include "hula/nurbs/approximate.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <memory>
 #include <optional>
 
@@ -84,8 +85,8 @@ Command add_approximate(CLI::App& app) {
   sub->add_option("--points", a->points,
                   "Points file: JSON [[x,y,z],...] or lines x y [z] (whitespace, comma or semicolon separated)")
       ->required();
-  sub->add_option("--tolerance", a->tolerance, "Largest distance of a data point from the curve (model units)")
-      ->check(CLI::PositiveNumber);
+  add_real_option(sub, "--tolerance", a->tolerance, 0.0, std::numeric_limits<double>::max(), true,
+                  "Largest distance of a data point from the curve (model units), > 0");
   sub->add_option("--control-points", a->control_points, "Fixed number of control points instead of --tolerance");
   sub->add_option("--degree", a->degree, "Degree p in [1, 9] (default 3)")->check(CLI::Range(1, 9));
   sub->add_option("--parameterisation", a->parameterisation, "uniform | chord | centripetal | foley (default chord)");

@@ -5,6 +5,7 @@
 // strays by index, and with --svg draws the cloud with the curve and the
 // curvature plot before and after fairing.
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <optional>
 
@@ -137,8 +138,8 @@ Command add_fit(CLI::App& app) {
                   "any order");
   sub->add_option("--class", a->surface_class, "A (tolerance 0.3) or B (0.5), in the data's units")
       ->check(CLI::IsMember({"A", "B"}));
-  sub->add_option("--tolerance", a->tolerance, "Largest distance of a kept point from the curve (default 0.3)")
-      ->check(CLI::PositiveNumber);
+  add_real_option(sub, "--tolerance", a->tolerance, 0.0, std::numeric_limits<double>::max(), true,
+                  "Largest distance of a kept point from the curve, > 0 (default 0.3)");
   sub->add_option("--degree", a->degree, "Highest degree p in [3, 9] (default 5)")->check(CLI::Range(3, 9));
   sub->add_option("--min-degree", a->min_degree,
                   "Lowest degree in [3, degree], taken only when it needs fewer control points (default 3)")

@@ -56,10 +56,19 @@ bool origin_allowed(std::string_view origin, const SecurityPolicy& policy) noexc
   return host_allowed(origin.substr(kScheme.size()), policy);
 }
 
+// The credentials of "Authorization: Bearer TOKEN": the scheme is case-insensitive (RFC 7235 2.1) and
+// separated from the token by one or more spaces.
+std::optional<std::string_view> bearer_token(std::string_view header) noexcept {
+  constexpr std::string_view kBearer = "bearer";
+  if (header.size() <= kBearer.size() || header[kBearer.size()] != ' ') return std::nullopt;
+  for (std::size_t i = 0; i < kBearer.size(); ++i)
+    if (std::tolower(static_cast<unsigned char>(header[i])) != kBearer[i]) return std::nullopt;
+  return trim(header.substr(kBearer.size()));
+}
+
 bool has_token(const RequestHead& head, const SecurityPolicy& policy) noexcept {
-  constexpr std::string_view kBearer = "Bearer ";
-  if (head.authorization && head.authorization->starts_with(kBearer))
-    return constant_time_equal(trim(head.authorization->substr(kBearer.size())), policy.token);
+  if (head.authorization)
+    if (const auto token = bearer_token(*head.authorization)) return constant_time_equal(*token, policy.token);
   if (head.cookie)
     if (const auto value = cookie_token(*head.cookie)) return constant_time_equal(*value, policy.token);
   return false;
@@ -98,6 +107,11 @@ std::optional<HttpError> check_request(const RequestHead& head, const SecurityPo
     return HttpError(414, "UriTooLong",
                      "the request target has " + std::to_string(head.target.size()) +
                          " bytes, more than the limit of " + std::to_string(policy.max_target));
+  // RFC 7230 5.4: a request with more than one Host header is answered 400 (which one is "the" host
+  // is ambiguous between proxies and this server).
+  if (head.host_count > 1)
+    return HttpError(400, "BadRequest",
+                     "the request has " + std::to_string(head.host_count) + " Host headers (exactly one is allowed)");
   if (!head.host || !host_allowed(*head.host, policy))
     return HttpError(403, "ForbiddenHost",
                      head.host ? "Host '" + std::string(*head.host) + "' is not this server (DNS rebinding guard)"

@@ -182,6 +182,7 @@ class Session : public std::enable_shared_from_this<Session> {
     head.method = view(req.method_string());
     head.target = view(req.target());
     head.host = header(req, http::field::host);
+    head.host_count = req.count(http::field::host);
     head.origin = header(req, http::field::origin);
     head.authorization = header(req, http::field::authorization);
     head.cookie = header(req, http::field::cookie);
