@@ -564,7 +564,17 @@ class LimitsTest(unittest.TestCase):
             try:
                 for _ in range(10000):
                     sockets.append(socket.create_connection(("127.0.0.1", server.port), timeout=10))
-                self.assertTrue(wait_until(lambda: True, 0))
+                # The server holds every one of them (counted in its descriptor table, a hand count independent
+                # of what it reports) before the probes start.
+                def server_sockets():
+                    n = 0
+                    for fd in os.listdir(f"/proc/{server.process.pid}/fd"):
+                        try:
+                            n += os.readlink(f"/proc/{server.process.pid}/fd/{fd}").startswith("socket:")
+                        except OSError:
+                            pass
+                    return n
+                self.assertTrue(wait_until(lambda: server_sockets() >= 10000, 30), server_sockets())
                 times = []
                 for _ in range(11):
                     t = time.monotonic()
