@@ -58,7 +58,7 @@ TEST(Issue24ServerRequests, BearerSchemeIsCaseInsensitive) {
   p.allowed_hosts = server::allowed_hosts("127.0.0.1", 8123);
   for (const std::string scheme : {"Bearer ", "bearer ", "BEARER ", "bEaReR  "})
     EXPECT_FALSE(server::check_request(api_request(scheme + p.token), p)) << scheme;
-  for (const std::string wrong : {"Basic " + p.token, "Bearer" + p.token, "bearer " + std::string(64, 'b')}) {
+  for (const std::string& wrong : {"Basic " + p.token, "Bearer" + p.token, "bearer " + std::string(64, 'b')}) {
     const auto refusal = server::check_request(api_request(wrong), p);
     ASSERT_TRUE(refusal) << wrong;
     EXPECT_EQ(refusal->status(), 401U) << wrong;
