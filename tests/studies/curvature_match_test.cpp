@@ -7,6 +7,7 @@
 #include <cstring>
 #include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "hula/core/rng.hpp"
@@ -138,7 +139,13 @@ TEST(SplineProfileSampler, EveryInstructionSetGivesTheSameSamples) {
     if (trial % 4 == 2) end = Vec3{1, -0.5, 0};
     // Uniform abscissae plus, for some trials, a few repeated values (non-decreasing is allowed).
     std::vector<double> u = hula::studies::uniform_abscissae(37 + static_cast<std::size_t>(trial) * 7);
-    if (trial % 5 == 0) u.insert(u.begin() + 5, 3, u[5]);
+    if (trial % 5 == 0) {
+      // u[5] three more times, by push_back (a fill-insert trips GCC 12's -Wnull-dereference).
+      std::vector<double> w(u.begin(), u.begin() + 5);
+      for (int k = 0; k < 3; ++k) w.push_back(u[5]);
+      w.insert(w.end(), u.begin() + 5, u.end());
+      u = std::move(w);
+    }
     const SplineProfileSampler sampler(n, dim, u, start, end);
     SplineProfileSampler::Workspace ws;
     for (const bool with_tau : {false, true}) {

@@ -32,11 +32,11 @@
 #include "hula/diffgeom/bishop.hpp"
 #include "hula/diffgeom/continuity.hpp"
 #include "hula/diffgeom/features.hpp"
-#include "hula/nurbs/intersect.hpp"
 #include "hula/diffgeom/fins.hpp"
 #include "hula/diffgeom/frenet.hpp"
 #include "hula/diffgeom/monotonicity.hpp"
 #include "hula/diffgeom/planarity.hpp"
+#include "hula/nurbs/intersect.hpp"
 
 namespace hula::diffgeom {
 
