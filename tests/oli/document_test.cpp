@@ -311,7 +311,8 @@ TEST(Document, UndoLimitDropsTheOldestSteps) {
   {
     Document doc = Document::create(path, {.undo_limit = 3});
     const Label a = add(doc, cubic(5));
-    for (int i = 0; i < 5; ++i)
+    // Five real moves (x = 1 … 5; a move to where the point already is would be no step at all).
+    for (int i = 1; i <= 5; ++i)
       doc.transact("move", [&](Edit& e) { e.move_point(a, 0, {1.0 * i, 0, 0}); }).throw_if_failed();
     EXPECT_EQ(doc.history().size(), 3u);
     EXPECT_EQ(doc.history().front().revision, 4u);
@@ -321,7 +322,7 @@ TEST(Document, UndoLimitDropsTheOldestSteps) {
   EXPECT_EQ(doc.revision(), 6u);
   for (int i = 0; i < 3; ++i) ASSERT_TRUE(doc.undo());
   EXPECT_FALSE(doc.can_undo());
-  EXPECT_EQ(doc.get(Label{1}).curve().nurbs().control_points()[0].x, 1.0);
+  EXPECT_EQ(doc.get(Label{1}).curve().nurbs().control_points()[0].x, 2.0);  // after the second move
   const CheckReport report = Document::check_file(path);
   EXPECT_TRUE(report.ok) << (report.problems.empty() ? "" : report.problems[0]);
   EXPECT_EQ(DocumentOptions{.undo_limit = 0}.undo_limit, 0u);

@@ -13,6 +13,10 @@ namespace {
 TEST(Issue24PipeOutput, EveryWriterPrintsOnlyTheCurveOnStdout) {
   TempDir dir;
   write(dir / "points.csv", kPointsCsv);
+  // A scan fit needs at least 10 points: 24 on a parabola.
+  std::string scan;
+  for (int i = 0; i < 24; ++i) scan += std::to_string(i) + "," + std::to_string(0.05 * i * i) + "\n";
+  write(dir / "scan.csv", scan);
   const std::string curve = (dir / "c.json").string();
   ASSERT_EQ(hula({"interpolate", "--points", (dir / "points.csv").string(), "-o", curve}).exit_code, 0);
   const std::vector<std::vector<std::string>> writers = {
@@ -24,7 +28,7 @@ TEST(Issue24PipeOutput, EveryWriterPrintsOnlyTheCurveOnStdout) {
       {"edit", "reparam", curve, "--domain", "0,10", "-o"},
       {"approximate", "--points", (dir / "points.csv").string(), "--control-points", "4", "-o"},
       {"approximate", "--points", (dir / "points.csv").string(), "--tolerance", "0.5", "-o"},
-      {"fit", "--points", (dir / "points.csv").string(), "--ordered", "-o"},
+      {"fit", "--points", (dir / "scan.csv").string(), "--ordered", "-o"},
       {"law", "vec(cos(t), sin(t), 0)", "--to-nurbs", "0,1", "-o"},
   };
   for (std::vector<std::string> args : writers) {

@@ -71,7 +71,8 @@ TEST(Issue24ServerRequests, DuplicateHostIsRefused) {
   server::SecurityPolicy p;
   p.token = std::string(64, 'a');
   p.allowed_hosts = server::allowed_hosts("127.0.0.1", 8123);
-  server::RequestHead h = api_request("Bearer " + p.token);
+  const std::string authorization = "Bearer " + p.token;  // the head holds views: the text must outlive it
+  server::RequestHead h = api_request(authorization);
   h.host_count = 2;
   const auto refusal = server::check_request(h, p);
   ASSERT_TRUE(refusal);

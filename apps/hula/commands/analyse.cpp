@@ -16,8 +16,6 @@
 #include "hula/io/atomic_file.hpp"
 #include "hula/io/curve_analysis_json.hpp"
 #include "hula/io/curve_figures.hpp"
-#include "hula/io/intersection_json.hpp"
-#include "hula/nurbs/intersect.hpp"
 
 namespace hula::cli {
 

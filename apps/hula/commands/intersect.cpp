@@ -4,14 +4,12 @@
 // curves are: io::intersection_answer / io::distance_answer, the answer every
 // door gives (nurbs::intersect, self_intersect, curve_distance and their
 // codec; law and natural-equation curves through their NURBS stand-in).
-#include "hula/nurbs/intersect.hpp"
-
 #include <memory>
 #include <optional>
 
 #include "commands/common.hpp"
 #include "hula/core/error.hpp"
-#include "hula/io/intersection_json.hpp"
+#include "hula/io/intersection_json.hpp"  // and nurbs::IntersectOptions, the answer's options
 
 namespace hula::cli {
 
