@@ -7,10 +7,20 @@
 // `hula reconstruct` prints it, with its work bounded
 // (intrinsic::kFrontEndMaxSteps, kFrontEndMaxSegments) so that a rough law is
 // answered with an error naming kappa and the limit, never minutes of work.
+//
+// POST /api/documents/{name}/entities/{label}/curvature-edit {"kappa", "target"?,
+// "tau"?, "hold"?, "max_handles_factor"?, "fit_tolerance"?} → {"revision",
+// "changes", "edit"}: design by curvature on the entity's curve
+// (oli::edit_curvature, one "edit curvature" undo step; the request and report
+// codecs are io/reconstruction_json.hpp): its κ profile replaced or changed,
+// its ends, end tangents (and, with "hold": "curvature", end curvatures) kept.
+#include <optional>
+
 #include "hula/intrinsic/natural_equations.hpp"
 #include "hula/io/json_read.hpp"
 #include "hula/io/reconstruction_json.hpp"
 #include "hula/law/parser.hpp"
+#include "hula/oli/curvature_edit.hpp"
 #include "hula/server/routes/routes.hpp"
 
 namespace hula::server::routes {
@@ -97,6 +107,21 @@ Response reconstruct(const Request& request) {
 
 }  // namespace
 
-void add_reconstruct(Router& router, const Context&) { router.add("POST", "/api/reconstruct", reconstruct); }
+void add_reconstruct(Router& router, const Context& context) {
+  router.add("POST", "/api/reconstruct", reconstruct);
+  DocumentRegistry& docs = context.documents;
+  router.add("POST", "/api/documents/{name}/entities/{label}/curvature-edit", [&docs](const Request& request) {
+    const io::CurvatureEditRequest edit = io::curvature_edit_request_from_json(request.json());
+    const auto [doc, label] = entity_of(docs, request);
+    std::optional<studies::CurvatureEditResult> result;
+    const oli::Outcome o = doc->write([&](oli::Document& d) {
+      return d.transact("edit curvature",
+                        [&](oli::Edit& e) { result = oli::edit_curvature(e, label, edit.edit, edit.options); });
+    });
+    Json out = Json::parse(outcome_response(o, 200).body);  // rethrows the error of a refused edit
+    out["edit"] = io::curvature_edit_to_json(*result);
+    return json_response(200, out);
+  });
+}
 
 }  // namespace hula::server::routes
