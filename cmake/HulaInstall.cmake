@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# Installation of the libraries (issue 10, item 8), after fmt's install/export:
+# Installation of the libraries, after fmt's install/export:
 # headers under include/hula, the module libraries exported as HulaHoops::<module>
 # (hula_add_module adds each to the HulaHoopsTargets export set), the
 # HulaHoopsConfig.cmake package with its version file, hulahoops.pc, and the

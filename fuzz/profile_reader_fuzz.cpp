@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// libFuzzer target for the profile reader (issue 10, item 11): no crash, no hang,
+// libFuzzer target for the profile reader: no crash, no hang,
 // and either a value or a hula::Error (reader_checks.hpp). Run by scripts/fuzz.sh;
 // its corpus fuzz/corpus/profile_reader/ is replayed by test_io_reader_corpus.
 #include <cstddef>

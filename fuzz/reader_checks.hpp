@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The property every reader's fuzzer checks (issue 10, item 11), shared with
+// The property every reader's fuzzer checks, shared with
 // the corpus replay test (tests/io/reader_corpus_test.cpp): reading bytes
 // either gives a value or throws hula::Error — never a crash, a hang, another
 // exception type or an unbounded allocation. A value read back is used a

@@ -30,7 +30,7 @@ step "web"
 if build/ci/apps/hula/hula serve --help >/dev/null 2>&1; then
   HULA_BIN="$PWD/build/ci/apps/hula/hula" scripts/web.sh --e2e
 else
-  echo "test.sh: WEB E2E NOT RUN: this build has no 'hula serve' (issue 12); web unit tests and build only" >&2
+  echo "test.sh: WEB E2E NOT RUN: this build has no 'hula serve'; web unit tests and build only" >&2
   scripts/web.sh
 fi
 step "ctest"

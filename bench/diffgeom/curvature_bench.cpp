@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Curvature + torsion per point of a cubic with 64 control points over 4096
-// sorted parameters (issue 4 target ≤ 15 ns/point single-threaded): our fast
+// sorted parameters (target ≤ 15 ns/point single-threaded): our fast
 // path curvature_torsion, the full Frenet batch, the bare derivative batch they
 // build on, and Open CASCADE's GeomLProp_CLProps curvature (it has no torsion)
 // in the same run. Items processed = points.

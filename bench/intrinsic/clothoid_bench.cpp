@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Benchmark of G1 and G2 Hermite clothoid interpolation (Bertolazzi–Frego, intrinsic/clothoid.hpp; issue 14
-// item 6 target: at most 1 µs per G1 segment). A ring of 1024 seeded problems (end angles relative to the
+// Benchmark of G1 and G2 Hermite clothoid interpolation (Bertolazzi–Frego, intrinsic/clothoid.hpp;
+// target: at most 1 µs per G1 segment). A ring of 1024 seeded problems (end angles relative to the
 // chord uniform in (−π/2, π/2), chords of length 0.5–2 in any direction, for G2 end curvatures with
 // |κ| · chord ≤ 5) is solved round-robin; every problem's end point is checked once outside the timed loop
 // (the last segment's quadrature end within 1e-12 of the target).

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Benchmarks of curves from natural equations: reconstruction of a 10-turn
 // circular helix (a = 1, b = 0.25: κ = a/(a²+b²), τ = b/(a²+b²)) to 1e-9 by
-// the Frenet–Serret integration (issue 4 target: under 5 ms), the NURBS fit
+// the Frenet–Serret integration (target: under 5 ms), the NURBS fit
 // of that curve within 1e-9, and a planar Euler spiral κ = s (exact angle,
 // adaptive Gauss–Legendre). Each iteration checks its own accuracy once
 // outside the timed loop, so a fast wrong answer cannot pass unnoticed.

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Benchmarks of the law evaluation tape: curvature κ = |r'×r''|/|r'|³ of the
 // helix law vec(2cos t, 2sin t, 0.5t), compiled with its derivatives to one
-// tape, against the same formula hand-written in C++ (issue 3 target: within
+// tape, against the same formula hand-written in C++ (target: within
 // 3×), plus derivative evaluation through CurveEvaluator.
 //
 // Run: cmake --preset bench && cmake --build --preset bench --target bench_law_tape

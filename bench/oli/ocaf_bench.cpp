@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The yardstick of the document benchmarks (issue 11 "How it is judged"):
+// The yardstick of the document benchmarks:
 // Open CASCADE OCAF doing the same edit as BM_oli_move_in_memory — move one
 // control point of a 100-point curve inside a named command — with a
 // TDocStd_Document whose curve label holds the control points as a

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Flexo against pagmo2 in the same run (issue 5 targets). Each benchmark runs
+// Flexo against pagmo2 in the same run. Each benchmark runs
 // exactly 10 iterations, one per seed 0..9, so the time column is the mean
 // wall time per run and the counters give the quality over the 10 seeds:
 //   - NSGA-II, population 100 x 250 generations on ZDT1-4 and ZDT6: hypervolume of the

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
-"""Load figures of `hula serve` (issue 12), recorded in docs/benchmarks.md.
+"""Load figures of `hula serve`, recorded in docs/benchmarks.md.
 
 Bounded loops on loopback that stop by themselves:
   interrogation  two GA jobs running, RATE requests/s for SECONDS s of the

@@ -3,7 +3,7 @@
 // 100-control-point curve, as a NURBS (the control points held) and as the
 // interpolated spline through 100 points (the data points held), tolerance 1:
 // one Levenberg–Marquardt iteration (the first, already lower, ghost) and a
-// full run (converged or 30 iterations). Target (issue 13 item 6): the ghost
+// full run (converged or 30 iterations). Target: the ghost
 // drawn ≤ 150 ms after the pointer stops, so one iteration must take well
 // under 100 ms. Inputs: seeded, made outside the timed loop.
 #include <benchmark/benchmark.h>

@@ -171,7 +171,7 @@ void BM_match_hybrid_20(benchmark::State& state) {
 BENCHMARK(BM_match_hybrid_20)->Unit(benchmark::kMillisecond);
 
 // A convex planar arc of length 40 (turning angle a s + b s², a in [1, 1.8], b in [0.3, 1.2] from `seed`) through n
-// points equally spaced in arc length (Simpson on 40 steps per span): the far-start targets of issue 14, as
+// points equally spaced in arc length (Simpson on 40 steps per span): the far-start targets, as
 // tests/studies/match_study_test.cpp builds them.
 std::vector<Vec3> seeded_arc(std::size_t n, std::uint64_t seed) {
   hula::Rng rng(seed);

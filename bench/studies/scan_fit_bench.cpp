@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // studies::fit_scan on seeded scanned clouds (hula/testing/point_clouds.hpp): the
 // whole pipeline (ordering, robust fit, fewest control points, fairing, the
-// before/after figures) at the A-class tolerance. Target (issue 14): 10,000
+// before/after figures) at the A-class tolerance. Target: 10,000
 // points in ≤ 100 ms. Inputs: a ring of the three known curves, noise 0.1, 1 %
 // strays, shuffled, generated outside the timed loop.
 #include <benchmark/benchmark.h>

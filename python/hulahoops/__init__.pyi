@@ -99,14 +99,15 @@ def interpolate(points: ArrayLike, *, start: str | ArrayLike = "natural", end: s
     start/end: "natural", "bessel", "not-a-knot", "occt", or a tangent vector dC/dt (t in [0, 1]).
     parameters: explicit data parameters (increasing, from 0 to 1) instead of the parameterisation."""
 
-def analyse(curve: NurbsCurve, samples: int = 200, *, fin_scale: float = 1.0,
-            plane_normal: ArrayLike | None = None) -> dict[str, Array]:
-    """Differential geometry at `samples` equally spaced parameters (thesis ch. 6). Keys:
-    t; position (n, dim); T, N (n, dim) and B (n, 3) unit vectors; kappa (1/model units, >= 0);
-    tau (1/model units, right-handed helix positive); kappa_prime (dκ/ds, 1/model units²);
-    signed_kappa (about plane_normal, default +z); speed (|dC/dt|, model units per parameter unit);
-    fins (n, dim): curvature fin tips P - fin_scale κ N; tangent_defined, frame_defined (bool).
-    Undefined values are NaN: T and κ where the speed vanishes, N, B, τ, κ' where κ vanishes."""
+def analyse(curve: NurbsCurve | dict[str, Any], samples: int = 100, *, at: ArrayLike | None = None,
+            by: str = "parameter", arc_lengths: bool = False, bishop: bool = False, fins: list[str] = ...,
+            fin_scale: float | None = None, fin_density: int = 0, features: bool = False) -> dict[str, Any]:
+    """The curve's analysis (diffgeom::analyse_curve, as `hula analyse` and POST .../analysis give it;
+    docs/formats.md "Curve analysis"): t, s (arc lengths, by arc length or with arc_lengths), points (n, 3),
+    frames {T, N, B} (n, 3), curvature, torsion, curvature_derivative, speed (n,), bishop {U, V} (with bishop),
+    fins [{kind, scale, t, base, tip}], planarity {planar, normal, max_deviation, tolerance} and, with
+    features, {inflections, curvature_extrema, torsion_extrema, knots, curvature_monotonicity,
+    maximum_curvature}. Undefined values are NaN. `curve` is a NurbsCurve or a curve file as a dict."""
 
 class NurbsFit:
     @property

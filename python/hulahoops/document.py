@@ -20,15 +20,10 @@ from typing import Any
 from . import _core
 
 
-def _curve_text(curve: Any) -> str:
-    """A curve file's JSON text from a NurbsCurve, a dict in the curve-file format, or a path."""
-    if isinstance(curve, _core.NurbsCurve):
-        return curve.to_json()
-    if isinstance(curve, dict):
-        return json.dumps(curve)
-    if isinstance(curve, (str, os.PathLike)):
-        with open(curve, encoding="utf-8") as f:
-            return f.read()
+def _curve_value(curve: Any) -> Any:
+    """A NurbsCurve, a dict in the curve-file format, or a path, as the binding takes them (no JSON text)."""
+    if isinstance(curve, (_core.NurbsCurve, dict, str, os.PathLike)):
+        return curve
     raise TypeError(f"curve must be a NurbsCurve, a dict or a path, not {type(curve).__name__}")
 
 
@@ -86,16 +81,16 @@ class Document:
 
     def add(self, curve: Any, *, name: str = "") -> int:
         """Adds a curve (a NurbsCurve, a curve-file dict or a curve file's path); returns its new label."""
-        return self._doc.add_curve(_curve_text(curve), name)
+        return self._doc.add_curve(_curve_value(curve), name)
 
     def add_points(self, points: Any, *, name: str = "") -> int:
         """Adds a point set (N × 2 or N × 3 numbers, e.g. a NumPy array) and returns its new label."""
         rows = [[float(v) for v in p] for p in points]
-        return self._doc.add_points(json.dumps(rows), name)
+        return self._doc.add_points(rows, name)
 
     def show(self, label: int) -> dict[str, Any]:
         """The entity as ``hula doc show`` prints it: its curve-file JSON plus label, attributes, provenance."""
-        return json.loads(self._doc.show(label))
+        return self._doc.show(label)
 
     def set(self, label: int, *, curve: Any = None, attribute: tuple[str, Any] | None = None,
             move_point: tuple[int, Any] | None = None) -> int:
@@ -107,10 +102,10 @@ class Document:
         if given != 1:
             raise TypeError(f"give exactly one of curve, attribute, move_point (got {given})")
         if curve is not None:
-            return self._doc.set_curve(label, _curve_text(curve))
+            return self._doc.set_curve(label, _curve_value(curve))
         if attribute is not None:
             key, value = attribute
-            return self._doc.set_attribute(label, key, json.dumps(value))
+            return self._doc.set_attribute(label, key, value)
         index, to = move_point  # type: ignore[misc]
         p = [float(v) for v in to]
         if len(p) not in (2, 3):
@@ -131,7 +126,7 @@ class Document:
 
     def history(self) -> list[dict[str, Any]]:
         """The undo steps: ``[{"revision", "name", "time", "changed": [labels], "applied"}]``."""
-        return json.loads(self._doc.history())
+        return self._doc.history()
 
     def run(self, study: Any, *, base: str | os.PathLike[str] | None = None) -> dict[str, Any]:
         """Runs a study (a study-file dict, or a study file's path) whose curves may name entity labels,
@@ -140,8 +135,8 @@ class Document:
         (default: the study file's directory, or the current directory for a dict)."""
         if isinstance(study, (str, os.PathLike)):
             with open(study, encoding="utf-8") as f:
-                text = f.read()
+                setup = json.load(f)
             where = os.path.dirname(os.path.abspath(study))
         else:
-            text, where = json.dumps(study), os.getcwd()
-        return json.loads(self._doc.run(text, os.fspath(base) if base is not None else where))
+            setup, where = study, os.getcwd()
+        return self._doc.run(setup, os.fspath(base) if base is not None else where)

@@ -105,4 +105,4 @@ def match_curvature(setup: Any, *, method: str | None = None, base: str | None =
     ``distances``, ``curve`` ...), numeric lists as arrays.
     """
     data, where = _load(setup)
-    return StudyResult(json.loads(_core.match_curvature(data, base or where, method)))
+    return StudyResult(_core.match_curvature(data, base or where, method))

@@ -89,6 +89,81 @@ py::array to_array(std::span<const double> values) {
   return out;
 }
 
-py::object to_python(const io::Json& value) { return py::module_::import("json").attr("loads")(value.dump()); }
+py::object to_python(const io::Json& value) {
+  switch (value.type()) {
+    case io::Json::value_t::null:
+    case io::Json::value_t::discarded:
+      return py::none();
+    case io::Json::value_t::boolean:
+      return py::bool_(value.get<bool>());
+    case io::Json::value_t::number_integer:
+      return py::int_(value.get<long long>());
+    case io::Json::value_t::number_unsigned:
+      return py::int_(value.get<unsigned long long>());
+    case io::Json::value_t::number_float:
+      return py::float_(value.get<double>());
+    case io::Json::value_t::string:
+      return py::str(value.get_ref<const std::string&>());
+    case io::Json::value_t::array: {
+      py::list out;
+      for (const io::Json& e : value) out.append(to_python(e));
+      return out;
+    }
+    case io::Json::value_t::object: {
+      py::dict out;
+      for (const auto& [k, v] : value.items()) out[py::str(k)] = to_python(v);
+      return out;
+    }
+    case io::Json::value_t::binary:
+      break;
+  }
+  throw Error(Errc::Unsupported, "a binary JSON value has no Python form", {.field = "value"});
+}
+
+io::Json from_python(py::handle value, const std::string& name) {
+  if (value.is_none()) return nullptr;
+  if (py::isinstance<py::bool_>(value)) return value.cast<bool>();
+  if (py::isinstance<py::int_>(value)) {
+    // As the JSON parser reads integers: non-negative ones unsigned (a label, a seed), negative ones signed.
+    if (value.cast<py::int_>() >= py::int_(0)) return value.cast<unsigned long long>();
+    return value.cast<long long>();
+  }
+  if (py::isinstance<py::float_>(value)) return value.cast<double>();
+  if (py::isinstance<py::str>(value)) return value.cast<std::string>();
+  if (py::isinstance<py::dict>(value)) {
+    io::Json out = io::Json::object();
+    for (const auto& [k, v] : value.cast<py::dict>()) {
+      if (!py::isinstance<py::str>(k))
+        throw Error(Errc::InvalidArgument, name + " has a key that is not a string", {.field = name});
+      const std::string key = k.cast<std::string>();
+      out[key] = from_python(v, name + "." + key);
+    }
+    return out;
+  }
+  if (py::isinstance<py::array>(value)) return from_python(value.attr("tolist")(), name);
+  if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
+    io::Json out = io::Json::array();
+    std::size_t i = 0;
+    for (const py::handle e : value) out.push_back(from_python(e, name + "[" + std::to_string(i++) + "]"));
+    return out;
+  }
+  // NumPy scalars and other numbers.
+  if (py::hasattr(value, "__float__")) return value.cast<double>();
+  throw Error(Errc::InvalidArgument,
+              name + " is a " + py::str(py::type::of(value).attr("__name__")).cast<std::string>() +
+                  ", not a JSON value (dict, list, str, number, bool or None)",
+              {.field = name});
+}
+
+curve::Curve curve_value(py::handle value) {
+  if (py::isinstance<nurbs::NurbsCurve>(value)) return curve::Curve(value.cast<nurbs::NurbsCurve>());
+  if (py::isinstance<py::dict>(value)) return io::curve_from_json(from_python(value, "curve"));
+  if (py::isinstance<py::str>(value) || py::hasattr(value, "__fspath__"))
+    return io::read_curve_file(py::str(py::module_::import("os").attr("fspath")(value)).cast<std::string>());
+  throw Error(Errc::InvalidArgument,
+              "curve must be a NurbsCurve, a curve file as a dict or a curve file's path, not a " +
+                  py::str(py::type::of(value).attr("__name__")).cast<std::string>(),
+              {.field = "curve"});
+}
 
 }  // namespace hula::python

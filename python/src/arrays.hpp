@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "hula/core/vec.hpp"
+#include "hula/curve/curve.hpp"
 #include "hula/io/json_curve.hpp"
 
 namespace hula::python {
@@ -64,8 +65,18 @@ struct Points {
 /// A std::vector<double> as a 1-D array.
 [[nodiscard]] py::array to_array(std::span<const double> values);
 
-/// A JSON value as Python's json.loads reads the text the CLI prints (dicts, lists, floats, ints, str,
-/// bool, None): the one way a library JSON document (a run report, a study result) reaches Python.
+/// A JSON value as Python objects (dicts, lists, floats, ints, str, bool, None), converted value by
+/// value: the one way a library JSON document (a run report, a study result) reaches Python.
 [[nodiscard]] py::object to_python(const io::Json& value);
+
+/// A Python value (dict, list, tuple, NumPy array, str, int, float, bool, None) as a JSON value,
+/// converted value by value (no JSON text).
+/// @throws hula::Error(Errc::InvalidArgument) naming `name` (and the path inside it) for anything else
+[[nodiscard]] io::Json from_python(py::handle value, const std::string& name);
+
+/// A curve value from what Python passes: a NurbsCurve, a curve file as a dict (converted value by
+/// value) or the path of a curve file (str or os.PathLike, read by io::read_curve_file).
+/// @throws hula::Error(Errc::InvalidArgument) naming "curve" for anything else; as the curve codec
+[[nodiscard]] curve::Curve curve_value(py::handle value);
 
 }  // namespace hula::python

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// hulahoops._core.Document: the Oli curve document (.hula file, issue 11) as
+// hulahoops._core.Document: the Oli curve document (.hula file) as
 // `hula doc` drives it — create/open, add (curves, point sets), show, set (curve, attribute, moved
 // control point), remove, undo, redo, history, run a study. Every change is one
 // transaction: it applies whole or raises the hulahoops.Error of its code and
@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "arrays.hpp"
 #include "bindings.hpp"
 #include "hula/core/error.hpp"
 #include "hula/io/json_curve.hpp"
@@ -91,38 +92,39 @@ void register_document(py::module_& m) {
            })
       .def(
           "add_curve",
-          [](PyDocument& d, const std::string& curve_json, const std::string& name) {
-            const curve::Curve curve = io::parse_curve_json(curve_json);
+          [](PyDocument& d, const py::handle& value, const std::string& name) {
+            const curve::Curve curve = curve_value(value);
             oli::Attributes attributes;
             attributes.name = name;
             oli::Label label;
             commit(d.doc(), "add curve", [&](oli::Edit& e) { label = e.add_curve(curve, attributes); });
             return label.value;
           },
-          py::arg("curve_json"), py::arg("name") = "")
+          py::arg("curve"), py::arg("name") = "")
       .def(
           "add_points",
-          [](PyDocument& d, const std::string& points_json, const std::string& name) {
-            io::PointSet points = io::parse_points_json(points_json);
+          [](PyDocument& d, const py::handle& rows, const std::string& name) {
+            const Points p = as_points(rows, "points");
+            io::PointSet points{p.points, p.dimension};
             oli::Attributes attributes;
             attributes.name = name;
             oli::Label label;
             commit(d.doc(), "add points", [&](oli::Edit& e) { label = e.add_point_set(points, attributes); });
             return label.value;
           },
-          py::arg("points_json"), py::arg("name") = "")
-      .def("show",
-           [](PyDocument& d, std::uint64_t label) { return oli::entity_to_json(d.doc().get(label_of(label))).dump(); })
+          py::arg("points"), py::arg("name") = "")
+      .def("show", [](PyDocument& d,
+                      std::uint64_t label) { return to_python(oli::entity_to_json(d.doc().get(label_of(label)))); })
       .def("set_curve",
-           [](PyDocument& d, std::uint64_t label, const std::string& curve_json) {
+           [](PyDocument& d, std::uint64_t label, const py::handle& value) {
              const oli::Label l = label_of(label);
-             const curve::Curve curve = io::parse_curve_json(curve_json);
+             const curve::Curve curve = curve_value(value);
              return commit(d.doc(), "set curve", [&](oli::Edit& e) { e.set_curve(l, curve); });
            })
       .def("set_attribute",
-           [](PyDocument& d, std::uint64_t label, const std::string& key, const std::string& value_json) {
+           [](PyDocument& d, std::uint64_t label, const std::string& key, const py::handle& attribute) {
              const oli::Label l = label_of(label);
-             const Json value = io::json::parse_json_text(value_json, "attribute value");
+             const Json value = from_python(attribute, "value");
              return commit(d.doc(), "set " + key, [&](oli::Edit& e) { e.set_attribute(l, key, value); });
            })
       .def("move_point",
@@ -157,12 +159,12 @@ void register_document(py::module_& m) {
                                   {"changed", std::move(changed)},
                                   {"applied", h.applied}});
              }
-             return out.dump();
+             return to_python(out);
            })
       .def(
           "run",
-          [](PyDocument& d, const std::string& study_json, const std::string& base) {
-            const Json study = io::json::parse_json_text(study_json, "study");
+          [](PyDocument& d, const py::handle& setup, const std::string& base) {
+            const Json study = from_python(setup, "study");
             oli::StudyRunResult ran;
             commit(d.doc(), "run study", [&](oli::Edit& e) { ran = oli::run_study(e, study, base); });
             Json out = ran.result;
@@ -171,9 +173,9 @@ void register_document(py::module_& m) {
             for (const oli::Label l : ran.curves) curves.push_back(l.value);
             out["result_labels"] = std::move(curves);
             out["revision"] = d.doc().revision();
-            return out.dump();
+            return to_python(out);
           },
-          py::arg("study_json"), py::arg("base") = "");
+          py::arg("study"), py::arg("base") = "");
 }
 
 }  // namespace hula::python

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // NurbsCurve, interpolate, analyse and reconstruct for Python: the nurbs,
-// diffgeom and intrinsic modules behind NumPy arrays. Evaluation writes
+// diffgeom and intrinsic modules behind NumPy arrays (analyse is
+// diffgeom::analyse_curve, the one analysis of every door). Evaluation writes
 // straight into the output array through the C++ batch APIs with the GIL
 // released; t keeps its shape and gains a trailing axis of the curve's
 // dimension (2 for planar curves, a view of the x, y columns).
@@ -20,9 +21,9 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "hula/core/error.hpp"
-#include "hula/diffgeom/fins.hpp"
-#include "hula/diffgeom/frenet.hpp"
+#include "hula/diffgeom/analysis.hpp"
 #include "hula/intrinsic/natural_equations.hpp"
+#include "hula/io/curve_analysis_json.hpp"
 #include "hula/io/json_curve.hpp"
 #include "hula/nurbs/arc_length.hpp"
 #include "hula/nurbs/closest_point.hpp"
@@ -132,15 +133,9 @@ NurbsCurve make_curve(int degree, py::handle knots, py::handle control_points, p
 std::string to_json_text(const NurbsCurve& c) { return io::to_file_text(io::curve_to_json(c)); }
 
 NurbsCurve from_json(py::handle value) {
-  std::string text;
-  if (py::isinstance<py::str>(value)) {
-    text = value.cast<std::string>();
-  } else if (py::isinstance<py::dict>(value)) {
-    text = py::module_::import("json").attr("dumps")(value).cast<std::string>();
-  } else {
-    throw Error(Errc::InvalidArgument, "document must be a JSON string or a dict", {.field = "document"});
-  }
-  return io::parse_curve_json(text).nurbs();
+  if (py::isinstance<py::str>(value)) return io::parse_curve_json(value.cast<std::string>()).nurbs();
+  if (py::isinstance<py::dict>(value)) return io::curve_from_json(from_python(value, "document")).nurbs();
+  throw Error(Errc::InvalidArgument, "document must be a JSON string or a dict", {.field = "document"});
 }
 
 nurbs::EndCondition end_condition(py::handle value, const std::string& name) {
@@ -154,67 +149,171 @@ nurbs::EndCondition end_condition(py::handle value, const std::string& name) {
   return io::end_condition_from_json(j, name);
 }
 
-struct Analysis {
-  py::dict arrays;
-};
+// n rows of 3 doubles (NaN where `defined` is false or a coordinate is not).
+template <class Get, class Defined>
+Doubles rows3(std::size_t n, Get&& get, Defined&& defined) {
+  Doubles a({static_cast<py::ssize_t>(n), py::ssize_t{3}});
+  double* r = a.mutable_data();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 v = defined(i) ? get(i) : Vec3{kNaN, kNaN, kNaN};
+    r[3 * i] = v.x, r[3 * i + 1] = v.y, r[3 * i + 2] = v.z;
+  }
+  return a;
+}
+template <class Get>
+Doubles column(std::size_t n, Get&& get) {
+  Doubles a(static_cast<py::ssize_t>(n));
+  for (std::size_t i = 0; i < n; ++i) a.mutable_data()[i] = get(i);
+  return a;
+}
 
-py::dict analyse(const NurbsCurve& c, int samples, double fin_scale, py::handle plane_normal) {
-  diffgeom::FinOptions fo;
-  fo.kind = diffgeom::FinKind::Curvature;
-  fo.scale = fin_scale;
-  fo.density = samples;
-  if (!plane_normal.is_none()) fo.frenet.plane_normal = as_point(plane_normal, "plane_normal");
-  fo.validate();
-  const auto n = static_cast<std::size_t>(samples);
-  auto vec = [n] { return Doubles({static_cast<py::ssize_t>(n), py::ssize_t{3}}); };
-  auto num = [n] { return Doubles(static_cast<py::ssize_t>(n)); };
-  Doubles t = num(), speed = num(), kappa = num(), tau = num(), kappa_prime = num(), signed_kappa = num();
-  Doubles position = vec(), tangent = vec(), normal = vec(), binormal = vec(), fins = vec();
-  py::array_t<bool> tangent_defined(static_cast<py::ssize_t>(n)), frame_defined(static_cast<py::ssize_t>(n));
+py::object vec_or_none(const Vec3& v, bool defined) {
+  if (!defined || !is_finite(v)) return py::none();
+  return py::make_tuple(v.x, v.y, v.z);
+}
+
+py::list feature_list(const std::vector<diffgeom::Feature>& list, const char* value_name, bool curvature) {
+  py::list out;
+  for (const diffgeom::Feature& f : list) {
+    py::dict d;
+    if (value_name != nullptr) d["kind"] = std::string(io::extremum_kind_name(f.kind));
+    d["t"] = f.t;
+    d["point"] = vec_or_none(f.position, true);
+    if (value_name != nullptr) d[value_name] = curvature ? f.curvature : f.torsion;
+    out.append(d);
+  }
+  return out;
+}
+
+// The analysis as Python objects with the members of io::curve_analysis_json (docs/formats.md, "Curve
+// analysis"): columns as NumPy arrays (NaN where the JSON has null), features as lists of dicts.
+py::dict analysis_to_python(const diffgeom::CurveAnalysis& a) {
+  const std::vector<diffgeom::FrenetPoint>& f = a.samples;
+  const std::size_t n = f.size();
+  py::dict d;
+  d["t"] = column(n, [&](std::size_t i) { return f[i].t; });
+  if (!a.s.empty()) d["s"] = column(n, [&](std::size_t i) { return a.s[i]; });
+  d["points"] = rows3(
+      n, [&](std::size_t i) { return f[i].position; }, [](std::size_t) { return true; });
+  py::dict frames;
+  frames["T"] = rows3(
+      n, [&](std::size_t i) { return f[i].tangent; }, [&](std::size_t i) { return f[i].tangent_defined; });
+  frames["N"] = rows3(
+      n, [&](std::size_t i) { return f[i].normal; }, [&](std::size_t i) { return f[i].frame_defined; });
+  frames["B"] = rows3(
+      n, [&](std::size_t i) { return f[i].binormal; }, [&](std::size_t i) { return f[i].frame_defined; });
+  d["frames"] = frames;
+  d["curvature"] = column(n, [&](std::size_t i) { return f[i].tangent_defined ? f[i].curvature : kNaN; });
+  d["torsion"] = column(n, [&](std::size_t i) { return f[i].torsion_defined ? f[i].torsion : kNaN; });
+  d["curvature_derivative"] =
+      column(n, [&](std::size_t i) { return f[i].frame_defined ? f[i].curvature_derivative : kNaN; });
+  d["speed"] =
+      column(n, [&](std::size_t i) { return f[i].reason == diffgeom::Undefined::NonFinite ? kNaN : f[i].speed; });
+  if (!a.bishop.empty()) {
+    py::dict b;
+    b["U"] = rows3(
+        n, [&](std::size_t i) { return a.bishop[i].u; }, [&](std::size_t i) { return a.bishop[i].defined; });
+    b["V"] = rows3(
+        n, [&](std::size_t i) { return a.bishop[i].v; }, [&](std::size_t i) { return a.bishop[i].defined; });
+    d["bishop"] = b;
+  }
+  py::list fins;
+  for (const diffgeom::AnalysedFins& comb : a.fins) {
+    const diffgeom::Fins& c = comb.fins;
+    py::dict x;
+    x["kind"] = std::string(diffgeom::fin_kind_name(comb.kind));
+    x["scale"] = comb.scale;
+    x["t"] = to_array(c.t);
+    x["base"] = rows3(
+        c.t.size(), [&](std::size_t i) { return c.base[i]; }, [](std::size_t) { return true; });
+    x["tip"] = rows3(
+        c.t.size(), [&](std::size_t i) { return c.tip[i]; }, [&](std::size_t i) { return c.defined[i] != 0; });
+    fins.append(x);
+  }
+  d["fins"] = fins;
+  d["planarity"] = to_python(io::planarity_to_json(a.planarity));
+  if (a.features) {
+    const diffgeom::CurveFeatures& ft = *a.features;
+    py::dict x;
+    x["inflections"] = feature_list(ft.inflections, nullptr, true);
+    x["curvature_extrema"] = feature_list(ft.curvature_extrema, "curvature", true);
+    x["torsion_extrema"] = feature_list(ft.torsion_extrema, "torsion", false);
+    py::list knots;
+    for (const diffgeom::Continuity& k : ft.knots) {
+      py::dict kd;
+      kd["t"] = k.t;
+      kd["multiplicity"] = k.multiplicity;
+      kd["parametric"] = k.parametric >= 0 ? py::object(py::int_(k.parametric)) : py::none();
+      kd["geometric"] = k.geometric >= 0 ? py::object(py::int_(k.geometric)) : py::none();
+      kd["tangent_angle"] = k.tangent_angle;
+      kd["curvature_left"] = k.curvature_left;
+      kd["curvature_right"] = k.curvature_right;
+      py::list left, right;
+      for (const Vec3& v : k.left) left.append(vec_or_none(v, true));
+      for (const Vec3& v : k.right) right.append(vec_or_none(v, true));
+      kd["left"] = left;
+      kd["right"] = right;
+      knots.append(kd);
+    }
+    x["knots"] = knots;
+    const diffgeom::CurvatureMonotonicity& m = ft.monotonicity;
+    py::dict mono;
+    mono["monotone"] = m.monotone();
+    py::list pieces, violations;
+    for (const diffgeom::MonotonePiece& p : m.pieces) {
+      py::dict pd;
+      pd["t0"] = p.t0;
+      pd["t1"] = p.t1;
+      pd["curvature0"] = p.kappa0;
+      pd["curvature1"] = p.kappa1;
+      pd["trend"] = std::string(diffgeom::curvature_trend_name(p.trend));
+      pieces.append(pd);
+    }
+    for (const diffgeom::Feature& v : m.violations) {
+      py::dict vd;
+      vd["kind"] = std::string(io::extremum_kind_name(v.kind));
+      vd["t"] = v.t;
+      vd["curvature"] = v.curvature;
+      violations.append(vd);
+    }
+    mono["pieces"] = pieces;
+    mono["violations"] = violations;
+    x["curvature_monotonicity"] = mono;
+    x["maximum_curvature"] = to_python(io::maximum_curvature_to_json(ft.maximum_curvature));
+    d["features"] = x;
+  }
+  return d;
+}
+
+py::dict analyse(py::handle curve, int samples, py::handle at, const std::string& by, bool arc_lengths, bool bishop,
+                 const std::vector<std::string>& fins, std::optional<double> fin_scale, int fin_density,
+                 bool features) {
+  const curve::Curve c = curve_value(curve);
+  diffgeom::AnalysisOptions o;
+  o.samples = samples;
+  if (!at.is_none()) o.at = as_vector(at, "at");
+  const std::optional<diffgeom::SampleBy> b = diffgeom::sample_by_from_name(by);
+  if (!b)
+    throw Error(Errc::InvalidOption, "by = \"" + by + "\" is not \"parameter\" or \"arclength\"", {.field = "by"});
+  o.by = *b;
+  o.arc_lengths = arc_lengths;
+  o.bishop = bishop;
+  for (std::size_t i = 0; i < fins.size(); ++i) {
+    const std::optional<diffgeom::FinKind> k = diffgeom::fin_kind_from_name(fins[i]);
+    if (!k)
+      throw Error(Errc::InvalidOption, "fins[" + std::to_string(i) + "] = \"" + fins[i] + "\" is not a fin kind",
+                  {.field = "fins", .index = i});
+    o.fins.push_back(*k);
+  }
+  o.fin_scale = fin_scale;
+  o.fin_density = fin_density;
+  o.features = features;
+  diffgeom::CurveAnalysis a;
   {
     const py::gil_scoped_release release;
-    const diffgeom::Fins f = diffgeom::fins(c, fo);
-    std::vector<diffgeom::FrenetPoint> pts(n);
-    diffgeom::frenet(c, f.t, pts, fo.frenet);
-    const Vec3 nan3{kNaN, kNaN, kNaN};
-    auto put = [](Doubles& a, std::size_t i, const Vec3& v) {
-      double* r = a.mutable_data() + 3 * i;
-      r[0] = v.x, r[1] = v.y, r[2] = v.z;
-    };
-    for (std::size_t i = 0; i < n; ++i) {
-      const diffgeom::FrenetPoint& p = pts[i];
-      const bool td = p.tangent_defined, fd = p.frame_defined;
-      t.mutable_data()[i] = p.t;
-      speed.mutable_data()[i] = p.reason == diffgeom::Undefined::NonFinite ? kNaN : p.speed;
-      kappa.mutable_data()[i] = td ? p.curvature : kNaN;
-      signed_kappa.mutable_data()[i] = td ? p.signed_curvature : kNaN;
-      tau.mutable_data()[i] = fd ? p.torsion : kNaN;
-      kappa_prime.mutable_data()[i] = fd ? p.curvature_derivative : kNaN;
-      put(position, i, p.position);
-      put(tangent, i, td ? p.tangent : nan3);
-      put(normal, i, fd ? p.normal : nan3);
-      put(binormal, i, fd ? p.binormal : nan3);
-      put(fins, i, f.tip[i]);
-      tangent_defined.mutable_data()[i] = td;
-      frame_defined.mutable_data()[i] = fd;
-    }
+    a = diffgeom::analyse_curve(c, o);
   }
-  const int dim = c.dimension();
-  py::dict d;
-  d["t"] = t;
-  d["position"] = vec3_rows(position, dim);
-  d["T"] = vec3_rows(tangent, dim);
-  d["N"] = vec3_rows(normal, dim);
-  d["B"] = binormal;  // the binormal of a planar curve is ±z: keep all three components
-  d["kappa"] = kappa;
-  d["tau"] = tau;
-  d["kappa_prime"] = kappa_prime;
-  d["signed_kappa"] = signed_kappa;
-  d["speed"] = speed;
-  d["fins"] = vec3_rows(fins, dim);
-  d["tangent_defined"] = tangent_defined;
-  d["frame_defined"] = frame_defined;
-  return d;
+  return analysis_to_python(a);
 }
 
 py::dict frames(const intrinsic::IntrinsicCurve& c, py::handle s_value) {
@@ -400,8 +499,10 @@ void register_geometry(py::module_& m) {
       py::arg("points"), py::kw_only(), py::arg("start") = "natural", py::arg("end") = "natural",
       py::arg("parameterisation") = "chord", py::arg("parameters") = py::none());
 
-  m.def("analyse", &analyse, py::arg("curve"), py::arg("samples") = 200, py::kw_only(), py::arg("fin_scale") = 1.0,
-        py::arg("plane_normal") = py::none());
+  m.def("analyse", &analyse, py::arg("curve"), py::arg("samples") = 100, py::kw_only(), py::arg("at") = py::none(),
+        py::arg("by") = "parameter", py::arg("arc_lengths") = false, py::arg("bishop") = false,
+        py::arg("fins") = std::vector<std::string>{}, py::arg("fin_scale") = py::none(), py::arg("fin_density") = 0,
+        py::arg("features") = false);
 
   py::class_<intrinsic::NurbsFitResult>(m, "NurbsFit")
       .def_readonly("curve", &intrinsic::NurbsFitResult::curve)

@@ -95,58 +95,58 @@ std::optional<optim::IslandOptions> island_options(Options& o) {
   return i;
 }
 
-// The algorithm's options from the dict (names as `hula optimise --algorithm`).
+// The algorithm's options from the dict: the name read by optim::solver_from_name (as `hula optimise
+// --algorithm` and a server job read it), its defaults overridden by the dict's members.
 optim::SolverOptions solver_options(const std::string& algorithm, Options& o, const optim::RunSettings& settings) {
+  optim::SolverOptions named = optim::solver_from_name(algorithm);
   const std::size_t population = o.get<std::size_t>("population").value_or(100);
-  if (algorithm == "ga-real") {
-    optim::RealGaOptions a;
-    a.population = population;
-    a.crossover_probability = o.get<double>("crossover_probability").value_or(a.crossover_probability);
-    a.crossover_eta = o.get<double>("crossover_eta").value_or(a.crossover_eta);
-    a.mutation_probability = o.get<double>("mutation_probability");
-    a.mutation_eta = o.get<double>("mutation_eta").value_or(a.mutation_eta);
-    a.tournament_size = o.get<std::size_t>("tournament_size").value_or(a.tournament_size);
-    a.elites = o.get<std::size_t>("elites").value_or(a.elites);
-    a.run = settings;
-    return a;
+  if (auto* a = std::get_if<optim::RealGaOptions>(&named)) {
+    a->population = population;
+    a->crossover_probability = o.get<double>("crossover_probability").value_or(a->crossover_probability);
+    a->crossover_eta = o.get<double>("crossover_eta").value_or(a->crossover_eta);
+    a->mutation_probability = o.get<double>("mutation_probability");
+    a->mutation_eta = o.get<double>("mutation_eta").value_or(a->mutation_eta);
+    a->tournament_size = o.get<std::size_t>("tournament_size").value_or(a->tournament_size);
+    a->elites = o.get<std::size_t>("elites").value_or(a->elites);
+    a->run = settings;
+    return named;
   }
-  if (algorithm == "ga-binary") {
-    optim::BinaryGaOptions a;
-    a.population = population;
-    a.crossover_probability = o.get<double>("crossover_probability").value_or(a.crossover_probability);
-    a.mutation_probability = o.get<double>("mutation_probability").value_or(a.mutation_probability);
-    a.boost_start = o.get<double>("boost_start").value_or(a.boost_start);
-    a.boost_end = o.get<double>("boost_end").value_or(a.boost_end);
-    a.elites = o.get<std::size_t>("elites").value_or(a.elites);
-    a.tournament_size = o.get<std::size_t>("tournament_size").value_or(a.tournament_size);
+  if (auto* a = std::get_if<optim::BinaryGaOptions>(&named)) {
+    a->population = population;
+    a->crossover_probability = o.get<double>("crossover_probability").value_or(a->crossover_probability);
+    a->mutation_probability = o.get<double>("mutation_probability").value_or(a->mutation_probability);
+    a->boost_start = o.get<double>("boost_start").value_or(a->boost_start);
+    a->boost_end = o.get<double>("boost_end").value_or(a->boost_end);
+    a->elites = o.get<std::size_t>("elites").value_or(a->elites);
+    a->tournament_size = o.get<std::size_t>("tournament_size").value_or(a->tournament_size);
     const auto selection = o.get<std::string>("selection").value_or("roulette");
     if (selection != "roulette" && selection != "tournament") {
       throw Error(Errc::InvalidOption, "selection = \"" + selection + "\" (expected \"roulette\" or \"tournament\")",
                   {.field = "selection"});
     }
-    a.selection = selection == "roulette" ? optim::Selection::Roulette : optim::Selection::Tournament;
+    a->selection = selection == "roulette" ? optim::Selection::Roulette : optim::Selection::Tournament;
     const auto crossover = o.get<std::string>("crossover").value_or("single-point");
     if (crossover != "single-point" && crossover != "uniform") {
       throw Error(Errc::InvalidOption, "crossover = \"" + crossover + "\" (expected \"single-point\" or \"uniform\")",
                   {.field = "crossover"});
     }
-    a.crossover = crossover == "uniform" ? optim::BinaryCrossover::Uniform : optim::BinaryCrossover::SinglePoint;
-    a.run = settings;
-    return a;
+    a->crossover = crossover == "uniform" ? optim::BinaryCrossover::Uniform : optim::BinaryCrossover::SinglePoint;
+    a->run = settings;
+    return named;
   }
-  if (algorithm == "nsga2") {
-    optim::Nsga2Options a;
-    a.population = population;
-    a.crossover_probability = o.get<double>("crossover_probability").value_or(a.crossover_probability);
-    a.crossover_eta = o.get<double>("crossover_eta").value_or(a.crossover_eta);
-    a.mutation_probability = o.get<double>("mutation_probability");
-    a.mutation_eta = o.get<double>("mutation_eta").value_or(a.mutation_eta);
-    a.run = settings;
-    return a;
+  if (auto* a = std::get_if<optim::Nsga2Options>(&named)) {
+    a->population = population;
+    a->crossover_probability = o.get<double>("crossover_probability").value_or(a->crossover_probability);
+    a->crossover_eta = o.get<double>("crossover_eta").value_or(a->crossover_eta);
+    a->mutation_probability = o.get<double>("mutation_probability");
+    a->mutation_eta = o.get<double>("mutation_eta").value_or(a->mutation_eta);
+    a->run = settings;
+    return named;
   }
   throw Error(Errc::InvalidArgument,
               "algorithm = \"" + algorithm +
-                  "\" is not an algorithm (expected \"ga-real\", \"ga-binary\", \"nsga2\" or \"nelder-mead\")",
+                  "\" is not an algorithm the binding runs (expected \"ga-real\", \"ga-binary\", \"nsga2\" or "
+                  "\"nelder-mead\")",
               {.field = "algorithm"});
 }
 

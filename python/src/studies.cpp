@@ -28,9 +28,10 @@ namespace py = pybind11;
 
 namespace {
 
-std::string json_text(const py::handle& setup) {
-  if (py::isinstance<py::str>(setup)) return setup.cast<std::string>();
-  return py::module_::import("json").attr("dumps")(setup).cast<std::string>();
+// A study setup: a dict converted value by value, or JSON text (a str) parsed once where it comes in.
+io::Json setup_value(const py::handle& setup) {
+  if (py::isinstance<py::str>(setup)) return io::json::parse_json_text(setup.cast<std::string>(), "study");
+  return from_python(setup, "setup");
 }
 
 py::dict evaluation(const studies::ParameterEvaluation& e) {
@@ -54,7 +55,7 @@ py::dict fairing(const studies::FairingResult& r, double chord_energy) {
 }
 
 py::dict fair_knots(const py::handle& setup) {
-  const io::StudyDocument doc = io::parse_study_json(json_text(setup), "fair-knots");
+  const io::StudyDocument doc = io::study_from_json(setup_value(setup), "fair-knots");
   const studies::FairKnotsStudy study = io::fair_knots_study_from_json(doc);
   const studies::KnotFairingSetup& s = study.setup;
   std::optional<studies::ParameterEvaluation> chord, given;
@@ -94,17 +95,21 @@ py::dict fair_knots(const py::handle& setup) {
   return out;
 }
 
-// The match result as the CLI prints it (io::match_result_to_json), handed to Python as JSON text. Profile
-// files named in the setup are read relative to `base`, as the CLI reads them relative to the study file.
-std::string match_curvature(const py::handle& setup, const std::string& base, std::optional<std::string> method) {
-  const io::StudyDocument doc = io::parse_study_json(json_text(setup), "match-curvature");
+// The match result as the CLI prints it (io::match_result_to_json), as Python objects. Profile files named
+// in the setup are read relative to `base`, as the CLI reads them relative to the study file.
+py::object match_curvature(const py::handle& setup, const std::string& base, std::optional<std::string> method) {
+  const io::StudyDocument doc = io::study_from_json(setup_value(setup), "match-curvature");
   io::MatchStudyFile file = io::match_study_from_json(doc, io::relative_to(std::filesystem::path(base)));
   studies::MatchStudy& study = file.study;
   if (method) study.method = studies::match_method_from_name(*method, "method");
-  const py::gil_scoped_release release;
-  const studies::CurvatureMatch match(study.setup);
-  const studies::MatchResult result = studies::run_curvature_match(match, study, false);
-  return io::match_result_to_json(match, file, result).dump();
+  io::Json out;
+  {
+    const py::gil_scoped_release release;
+    const studies::CurvatureMatch match(study.setup);
+    const studies::MatchResult result = studies::run_curvature_match(match, study, false);
+    out = io::match_result_to_json(match, file, result);
+  }
+  return to_python(out);
 }
 
 }  // namespace

@@ -10,38 +10,67 @@ import hulahoops as hh
 from conftest import hula, numbers
 
 
+def column(values, width=None):
+    """A JSON column as a float array, NaN where the JSON has null (rows of `width` for vectors)."""
+    if width is None:
+        return np.array([np.nan if v is None else v for v in values], dtype=float)
+    return np.array([[np.nan] * width if v is None else v for v in values], dtype=float)
+
+
 def test_analyse_matches_cli_bit_for_bit(space_curve, tmp_path):
-    # checks κ, τ, T, N, B, speed of analyse() against `hula analyse --at` at the same parameters, bit for bit
-    a = hh.analyse(space_curve, 41)
+    # checks every column, the features and the fins of analyse() against `hula analyse --at` at the same
+    # parameters, bit for bit (one analysis, diffgeom::analyse_curve, behind both doors)
+    a = hh.analyse(space_curve, 41, arc_lengths=True, bishop=True, fins=["curvature"], fin_density=120,
+                   features=True)
     path = tmp_path / "c.json"
     space_curve.save(str(path))
-    cli = hula("analyse", path, "--at", numbers(a["t"]))["points"]
-    assert len(cli) == 41
-    for key in ("kappa", "tau", "speed", "kappa_prime"):
-        expected = np.array([np.nan if p[key] is None else p[key] for p in cli])
-        assert np.array_equal(a[key], expected, equal_nan=True), key
-    for key in ("position", "T", "N", "B"):
-        expected = np.array([[np.nan] * 3 if p[key] is None else p[key] for p in cli])
-        assert np.array_equal(a[key], expected, equal_nan=True), key
+    cli = hula("analyse", path, "--at", numbers(a["t"]), "--fins", "curvature", "--features")
+    assert len(cli["t"]) == 41
+    for key in ("t", "s", "curvature", "torsion", "speed", "curvature_derivative"):
+        assert np.array_equal(a[key], column(cli[key]), equal_nan=True), key
+    assert np.array_equal(a["points"], column(cli["points"], 3), equal_nan=True)
+    for key in ("T", "N", "B"):
+        assert np.array_equal(a["frames"][key], column(cli["frames"][key], 3), equal_nan=True), key
+    for key in ("U", "V"):
+        assert np.array_equal(a["bishop"][key], column(cli["bishop"][key], 3), equal_nan=True), key
+    assert a["fins"][0]["scale"] == cli["fins"][0]["scale"]
+    assert np.array_equal(a["fins"][0]["tip"], column(cli["fins"][0]["tip"], 3), equal_nan=True)
+    assert a["planarity"] == cli["planarity"]
+    for key in ("inflections", "curvature_extrema", "torsion_extrema"):
+        assert [(f["t"], list(f["point"])) for f in a["features"][key]] == \
+            [(f["t"], f["point"]) for f in cli["features"][key]], key
+    assert [k["t"] for k in a["features"]["knots"]] == [k["t"] for k in cli["features"]["knots"]] == [0.3, 0.7]
 
 
 def test_analyse_circle_closed_form(quarter_circle):
     # checks the unit circle: κ = 1, τ = 0, N points to the centre, fins P - 0.5 κN end outside, at radius 1.5
-    a = hh.analyse(quarter_circle, 101, fin_scale=0.5)
-    assert set(a) >= {"t", "position", "T", "N", "B", "kappa", "tau", "speed", "fins"}
-    assert np.allclose(a["kappa"], 1.0, rtol=0, atol=1e-13)
-    assert np.allclose(a["tau"], 0.0, rtol=0, atol=1e-13)
-    assert np.allclose(a["N"], -a["position"], rtol=0, atol=1e-13)
-    assert np.allclose(np.hypot(*a["fins"].T), 1.5, rtol=0, atol=1e-13)
-    assert a["frame_defined"].all()
+    a = hh.analyse(quarter_circle, 101, fins=["curvature"], fin_scale=0.5)
+    assert set(a) >= {"t", "points", "frames", "curvature", "torsion", "speed", "fins", "planarity"}
+    assert np.allclose(a["curvature"], 1.0, rtol=0, atol=1e-13)
+    assert np.allclose(a["torsion"], 0.0, rtol=0, atol=1e-13)
+    assert np.allclose(a["frames"]["N"], -a["points"], rtol=0, atol=1e-13)
+    tips = a["fins"][0]["tip"]
+    assert np.allclose(np.hypot(tips[:, 0], tips[:, 1]), 1.5, rtol=0, atol=1e-13)
+    assert a["planarity"]["planar"] and a["planarity"]["normal"] == [0.0, 0.0, 1.0]
 
 
 def test_analyse_undefined_frame_on_a_line():
     # checks that on a straight line N, B and τ are NaN (undefined, documented) while κ = 0 and T are defined
     a = hh.analyse(hh.NurbsCurve(1, [0, 0, 1, 1], [[0, 0, 0], [1, 1, 0]]), 5)
-    assert np.all(a["kappa"] == 0) and np.all(np.isnan(a["tau"])) and np.all(np.isnan(a["N"]))
-    assert np.allclose(a["T"], [math.sqrt(0.5), math.sqrt(0.5), 0], rtol=0, atol=1e-15)
-    assert not a["frame_defined"].any() and a["tangent_defined"].all()
+    assert np.all(a["curvature"] == 0) and np.all(np.isnan(a["torsion"])) and np.all(np.isnan(a["frames"]["N"]))
+    assert np.allclose(a["frames"]["T"], [math.sqrt(0.5), math.sqrt(0.5), 0], rtol=0, atol=1e-15)
+
+
+def test_analyse_law_curve_from_a_dict():
+    # checks a curve file given as a dict (a law helix, converted as a value): constant κ = 16/17, no extremum,
+    # no knot, no inflection (a space curve)
+    helix = {"kind": "law", "expression": "vec(cos(t), sin(t), t/4)", "domain": [0, 4 * math.pi]}
+    a = hh.analyse(helix, 50, features=True)
+    assert np.allclose(a["curvature"], 16 / 17, rtol=0, atol=1e-12)
+    f = a["features"]
+    assert f["inflections"] == [] and f["curvature_extrema"] == [] and f["torsion_extrema"] == [] and f["knots"] == []
+    with pytest.raises(hh.InvalidArgumentError, match="curve"):
+        hh.analyse([1, 2, 3])
 
 
 def test_reconstruct_helix_closed_form_and_cli():

@@ -63,7 +63,7 @@ def test_concurrent_calls_agree():
     curve = hh.interpolate(np.random.default_rng(5).uniform(0, 10, (30, 3)))
     t = np.linspace(0, 1, 20_000)
     expected = curve(t)
-    expected_kappa = hh.analyse(curve, 500)["kappa"]
+    expected_kappa = hh.analyse(curve, 500)["curvature"]
     expected_run = hh.optimise("rastrigin", dimension=4, population=20, generations=10, seed=1).x
     problem = hh.Problem(lambda X: hh.evaluate_builtin("rastrigin", X, 4), -5.12 * np.ones(4), 5.12 * np.ones(4))
     errors = []
@@ -72,7 +72,7 @@ def test_concurrent_calls_agree():
         try:
             for _ in range(5):
                 assert np.array_equal(curve(t), expected)
-                assert np.array_equal(hh.analyse(curve, 500)["kappa"], expected_kappa, equal_nan=True)
+                assert np.array_equal(hh.analyse(curve, 500)["curvature"], expected_kappa, equal_nan=True)
             r = hh.optimise(problem, population=20, generations=10, seed=1)
             assert np.array_equal(r.x, expected_run)
         except BaseException as e:  # noqa: BLE001 - reported to the main thread

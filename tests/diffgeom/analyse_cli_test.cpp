@@ -1,13 +1,16 @@
 // SPDX-License-Identifier: MIT
 // Contract tests of `hula analyse` (run as a process): exit codes, the exact
-// JSON shape {"points": [{"t", "s", "position", "T", "N", "B", "kappa", "tau",
-// "kappa_prime", "speed", "bishop": {"U", "V"}}]}, null where undefined, values
-// against the helix closed form, and arc-length sampling.
+// JSON shape of io::curve_analysis_json (docs/formats.md "Curve analysis":
+// columns t, s, points, frames {T, N, B}, curvature, torsion,
+// curvature_derivative, speed, bishop {U, V}, then fins and planarity), null
+// where undefined, values against the helix closed form, and arc-length
+// sampling.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -45,38 +48,39 @@ TEST(AnalyseCli, HelixShapeAndValues) {
   const testing::TempDir dir;
   const ProcessResult r = hula({"analyse", write(dir, "helix.json", kHelix), "--at", "0,1,2.5"});
   const json j = testing::stdout_json(r);
-  ASSERT_EQ(j.size(), 1U);
-  ASSERT_EQ(j["points"].size(), 3U);
-  for (const json& p : j["points"]) {
-    std::vector<std::string> keys;
-    for (const auto& [k, v] : p.items()) keys.push_back(k);
-    std::sort(keys.begin(), keys.end());
-    EXPECT_EQ(keys, (std::vector<std::string>{"B", "N", "T", "bishop", "kappa", "kappa_prime", "position", "s", "speed",
-                                              "t", "tau"}));
-    EXPECT_EQ(p["bishop"].size(), 2U);
-    EXPECT_NEAR(p["kappa"].get<double>(), 2 / 4.25, 1e-10);
-    EXPECT_NEAR(p["tau"].get<double>(), 0.5 / 4.25, 1e-10);
-    EXPECT_NEAR(p["s"].get<double>(), std::sqrt(4.25) * p["t"].get<double>(), 1e-10);
-    EXPECT_EQ(p["bishop"]["U"].size(), 3U);
+  std::vector<std::string> keys;
+  for (const auto& [k, v] : j.items()) keys.push_back(k);
+  std::sort(keys.begin(), keys.end());
+  EXPECT_EQ(keys, (std::vector<std::string>{"bishop", "curvature", "curvature_derivative", "fins", "frames",
+                                            "planarity", "points", "s", "speed", "t", "torsion"}));
+  ASSERT_EQ(j["t"].size(), 3U);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_NEAR(j["curvature"][i].get<double>(), 2 / 4.25, 1e-10);
+    EXPECT_NEAR(j["torsion"][i].get<double>(), 0.5 / 4.25, 1e-10);
+    EXPECT_NEAR(j["s"][i].get<double>(), std::sqrt(4.25) * j["t"][i].get<double>(), 1e-10);
+    EXPECT_EQ(j["bishop"]["U"][i].size(), 3U);
+    EXPECT_EQ(j["frames"]["T"][i].size(), 3U);
   }
+  EXPECT_FALSE(j["planarity"]["planar"].get<bool>());
 }
 
-// checks null for N, B, tau, kappa_prime on a straight line while T, kappa = 0 and the Bishop frame are present.
+// checks null for N, B, torsion, curvature_derivative on a straight line while T, κ = 0 and the Bishop frame
+// are present.
 TEST(AnalyseCli, NullWhereUndefined) {
   const testing::TempDir dir;
   const ProcessResult r = hula({"analyse", write(dir, "line.json", kLine), "--samples", "3"});
   const json j = testing::stdout_json(r);
-  ASSERT_EQ(j["points"].size(), 3U);
-  for (const json& p : j["points"]) {
-    EXPECT_TRUE(p["N"].is_null());
-    EXPECT_TRUE(p["B"].is_null());
-    EXPECT_TRUE(p["tau"].is_null());
-    EXPECT_TRUE(p["kappa_prime"].is_null());
-    EXPECT_EQ(p["kappa"].get<double>(), 0.0);
-    EXPECT_TRUE(p["T"].is_array());
-    EXPECT_TRUE(p["bishop"]["U"].is_array());
+  ASSERT_EQ(j["t"].size(), 3U);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_TRUE(j["frames"]["N"][i].is_null());
+    EXPECT_TRUE(j["frames"]["B"][i].is_null());
+    EXPECT_TRUE(j["torsion"][i].is_null());
+    EXPECT_TRUE(j["curvature_derivative"][i].is_null());
+    EXPECT_EQ(j["curvature"][i].get<double>(), 0.0);
+    EXPECT_TRUE(j["frames"]["T"][i].is_array());
+    EXPECT_TRUE(j["bishop"]["U"][i].is_array());
   }
-  EXPECT_NEAR(j["points"][2]["s"].get<double>(), 3 * std::sqrt(2.0), 1e-12);
+  EXPECT_NEAR(j["s"][2].get<double>(), 3 * std::sqrt(2.0), 1e-12);
 }
 
 // checks --by arclength: equal arc-length steps along the helix (s = √4.25 t).
@@ -86,8 +90,8 @@ TEST(AnalyseCli, ByArcLength) {
   const json j = testing::stdout_json(r);
   const double L = std::sqrt(4.25) * 4 * M_PI;
   for (std::size_t i = 0; i < 5; ++i) {
-    EXPECT_NEAR(j["points"][i]["s"].get<double>(), L * static_cast<double>(i) / 4, 1e-9);
-    EXPECT_NEAR(j["points"][i]["t"].get<double>(), 4 * M_PI * static_cast<double>(i) / 4, 1e-9);
+    EXPECT_NEAR(j["s"][i].get<double>(), L * static_cast<double>(i) / 4, 1e-9);
+    EXPECT_NEAR(j["t"][i].get<double>(), 4 * M_PI * static_cast<double>(i) / 4, 1e-9);
   }
 }
 
@@ -107,7 +111,8 @@ TEST(AnalyseCli, Features) {
   EXPECT_NEAR(ft["inflections"][0]["t"].get<double>(), 0.5, 1e-10);
   ASSERT_EQ(ft["knots"].size(), 1U);
   EXPECT_EQ(ft["knots"][0]["multiplicity"], 2);
-  EXPECT_EQ(ft["knots"][0]["parametric"], "C3");
+  EXPECT_EQ(ft["knots"][0]["parametric"], 3);
+  EXPECT_EQ(ft["knots"][0]["geometric"], 3);
   EXPECT_EQ(ft["knots"][0]["left"].size(), 4U);
   EXPECT_EQ(ft["knots"][0]["right"].size(), 4U);
   EXPECT_TRUE(ft["curvature_extrema"].is_array());
@@ -133,7 +138,7 @@ TEST(AnalyseCli, SvgFiles) {
   const testing::TempDir dir;
   const ProcessResult r =
       hula({"analyse", write(dir, "helix.json", kHelix), "--samples", "2", "--svg", (dir.path() / "fig").string()});
-  ASSERT_EQ(testing::stdout_json(r)["points"].size(), 2U);
+  ASSERT_EQ(testing::stdout_json(r)["t"].size(), 2U);
   for (const char* name : {"curve.svg", "kappa.svg", "tau.svg"}) {
     std::ifstream in(dir.path() / "fig" / name);
     std::ostringstream buffer;
@@ -224,6 +229,24 @@ TEST(AnalyseCli, SvgRadiusSpeedLogCurvature) {
     EXPECT_TRUE(text.ends_with("</svg>")) << name;
     EXPECT_NE(text.find("<polyline"), std::string::npos) << name;
   }
+}
+
+// checks the fin scale chosen when none is given (diffgeom::auto_fin_scale, the one rule): printed with the
+// comb and the same as the legend of curve.svg, whose fins are the analysis's
+TEST(AnalyseCli, AutomaticFinScaleIsTheFiguresOne) {
+  const testing::TempDir dir;
+  const ProcessResult r = hula({"analyse", write(dir, "helix.json", kHelix), "--samples", "2", "--fins", "curvature",
+                                "--svg", (dir.path() / "fig").string()});
+  const json fins = testing::stdout_json(r)["fins"];
+  ASSERT_EQ(fins.size(), 1U);
+  const double scale = fins[0]["scale"].get<double>();
+  EXPECT_GT(scale, 0.0);
+  std::ifstream in(dir.path() / "fig" / "curve.svg");
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  char shown[64];
+  std::snprintf(shown, sizeof shown, "s = %.3g", scale);
+  EXPECT_NE(buffer.str().find(shown), std::string::npos) << shown;
 }
 
 // checks exit codes: 2 for a usage error (both --at and --samples), 3 for an out-of-domain t naming t[1]

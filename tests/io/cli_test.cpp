@@ -263,16 +263,16 @@ TEST(Cli, InfoMembers) {
   EXPECT_TRUE(t["planarity"]["normal"].is_null());
 }
 
-// checks: the demo reports C1 but not C2 at the thesis's double knot (plain `hula` prints help, issue 10).
+// checks: the demo reports C1 but not C2 at the thesis's double knot (plain `hula` prints help).
 TEST(Cli, DemoReportsDoubleKnotContinuity) {
   const ProcessResult r = hula({"demo"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const json j = json::parse(r.out);
   ASSERT_EQ(j["examples"].size(), 4u);
   const json& dk = j["examples"][3];
-  EXPECT_EQ(dk["continuity"]["C0"], true);
-  EXPECT_EQ(dk["continuity"]["C1"], true);
-  EXPECT_EQ(dk["continuity"]["C2"], false);
+  EXPECT_EQ(dk["continuity"]["t"], 0.33);
+  EXPECT_EQ(dk["continuity"]["multiplicity"], 2);
+  EXPECT_EQ(dk["continuity"]["parametric"], 1);  // C1, not C2 (the analysis's knot entry)
   EXPECT_EQ(dk["derivative_table"]["rows"].size(), 4u);
 }
 

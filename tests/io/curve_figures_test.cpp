@@ -30,10 +30,13 @@ hula::curve::Curve circle() {
 TEST(CurveFigures, CircleCurvatureFinsHaveTheDocumentedScale) {
   CurveFigureOptions o;
   o.fins = {FinKind::Curvature};
-  o.samples = 401;  // t = 2πi/400 samples the four extreme points, so the sampled box is the exact one
   const CurveFigures f = curve_figures(circle(), o);
   ASSERT_EQ(f.fins.size(), 1u);
-  const double longest = 0.2 * 4.0 * std::numbers::sqrt2;
+  // The rule (diffgeom::auto_fin_scale) on the fins' own samples: a fifth of their box diagonal over κ = 1/2.
+  hula::Box3 box;
+  for (const hula::Vec3& p : f.fins[0].fins.base) box.add(p);
+  const double longest = 0.2 * box.diagonal();
+  EXPECT_NEAR(box.diagonal(), 4.0 * std::numbers::sqrt2, 1e-2);
   EXPECT_NEAR(f.fins[0].scale, longest / 0.5, 1e-9);
   ASSERT_EQ(f.fins[0].fins.tip.size(), 120u);
   for (std::size_t i = 0; i < f.fins[0].fins.tip.size(); ++i)

@@ -3,8 +3,9 @@
 """Checks scripts/check_layering.py against deliberate violations: a copy of the
 real tree passes; the same copy with an upward include (nurbs including io), a
 header-only upward include (a curve header including diffgeom), a foreign
-detail/ include and a server route including studies (below it, but reached
-through oli) fails, naming each file, line and included header."""
+detail/ include, a server route including studies (below it, but reached
+through oli) and a CLI command including diffgeom (reached through io/oli)
+fails, naming each file, line and included header."""
 import pathlib
 import shutil
 import subprocess
@@ -38,6 +39,7 @@ with tempfile.TemporaryDirectory() as tmp:
     l2 = append(tree / "src/hula/curve/curve.hpp", '#include "hula/diffgeom/frenet.hpp"')
     l3 = append(tree / "src/hula/studies/knot_fairing.cpp", '#include "hula/nurbs/detail/homogeneous.hpp"')
     l4 = append(tree / "src/hula/server/routes/entities.cpp", '#include "hula/studies/fairing_assistant.hpp"')
+    l5 = append(tree / "apps/hula/commands/analyse.cpp", '#include "hula/diffgeom/frenet.hpp"')
     bad = run(tree)
     assert bad.returncode == 1, "violations must fail the check:\n" + bad.stdout
     expected = [
@@ -46,8 +48,10 @@ with tempfile.TemporaryDirectory() as tmp:
         f'src/hula/studies/knot_fairing.cpp:{l3} includes "hula/nurbs/detail/homogeneous.hpp" (detail/ is private to nurbs)',
         f'src/hula/server/routes/entities.cpp:{l4} includes "hula/studies/fairing_assistant.hpp" '
         '(server reaches studies through oli or io)',
+        f'apps/hula/commands/analyse.cpp:{l5} includes "hula/diffgeom/frenet.hpp" '
+        '(the CLI reaches diffgeom through oli or io)',
     ]
     for e in expected:
         assert ("layering violation: " + e) in bad.stdout, f"missing: {e}\n--- output:\n{bad.stdout}"
-    assert bad.stdout.count("layering violation:") == 4, bad.stdout
-print("layering check: clean tree passes, 4 deliberate violations reported")
+    assert bad.stdout.count("layering violation:") == 5, bad.stdout
+print("layering check: clean tree passes, 5 deliberate violations reported")

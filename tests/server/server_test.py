@@ -923,6 +923,27 @@ class DocumentTest(unittest.TestCase):
         e = self.call("POST", f"{base}/entities/{flat}/study-seed", {"study": "match-curvature-torsion"}, expect=400)
         self.assertEqual(e["error"]["where"]["field"], "curve")
 
+    # checks a change's reply carries the entity it changed as GET gives it, and a PATCH with "analysis" the moved
+    # curve's analysis equal to the analysis route's on the stored curve (one request and one reply per move);
+    # the event of the change names the labels only
+    def test_change_carries_entities_and_analysis(self):
+        self.new_document("drag.hula")
+        base = "/api/documents/drag.hula"
+        added = self.call("POST", base + "/entities", {"curve": CURVE50}, expect=201)
+        label = added["label"]
+        entity = f"{base}/entities/{label}"
+        self.assertEqual(added["changes"]["entities"], [self.call("GET", entity)])
+        request = {"samples": 40, "fins": ["curvature"], "scale": 2}
+        r = self.call("PATCH", entity, {"move": [{"index": 3, "to": [3.5, 1.0, 0.25]}], "analysis": request})
+        self.assertEqual(r["changes"]["changed"], [label])
+        self.assertEqual(r["changes"]["entities"], [self.call("GET", entity)])
+        self.assertEqual(r["changes"]["entities"][0]["points"][3], [3.5, 1.0, 0.25])
+        self.assertEqual(r["analysis"], self.call("POST", entity + "/analysis", request))
+        plain = self.call("PATCH", entity, {"move": [{"index": 3, "to": [3.0, 1.0, 0.25]}], "continue": True})
+        self.assertNotIn("analysis", plain)
+        self.call("PATCH", entity, {"move": [{"index": 3, "to": [3.0, 1.0, 0.25]}], "analysis": {"by": "time"}},
+                  expect=400)
+
     # checks insert-knot and elevate on both kernel backends against the curve before: one more control
     # point (or degree), the same points at 101 parameters (1e-9, from the analysis route), undo restores
     # the entity exactly, and bad input answers the documented status naming the field

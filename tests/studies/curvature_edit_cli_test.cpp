@@ -34,9 +34,9 @@ diffgeom::FrenetPoint at_end(const nurbs::NurbsCurve& c, bool end) {
 TEST(CurvatureEditCli, KeepsExample1Ends) {
   testing::TempDir dir;
   const std::string out = (dir / "edited.json").string();
-  const testing::ProcessResult r =
-      testing::run_process(HULA_CLI_PATH, {"reconstruct", "--curve", kExample1, "--kappa", kBump, "--target",
-                                           "change", "--hold", "curvature", "-o", out});
+  const testing::ProcessResult r = testing::run_process(
+      HULA_CLI_PATH,
+      {"reconstruct", "--curve", kExample1, "--kappa", kBump, "--target", "change", "--hold", "curvature", "-o", out});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const Json report = Json::parse(r.out)["edit"];
   EXPECT_EQ(report["kind"], "interpolated");

@@ -1,5 +1,6 @@
 // Shared helpers of the e2e tests: the server's API over HTTP (Node's fetch,
 // with the token) and the page's own hooks (window.__hula).
+import type * as Api from '../src/api/openapi';
 import { expect, test, type Page } from '@playwright/test';
 import type { Analysis, CurveFile, DocumentState, Entity, History } from '../src/api/types';
 import type { Vec3, ViewName } from '../src/viewport/math';
@@ -54,7 +55,7 @@ export async function analysis(
   body: Record<string, unknown> = {},
 ): Promise<Analysis> {
   const req = { samples: 200, by: 'arclength', ...body };
-  const j = await api<Record<string, unknown>>(
+  const j = await api<Api.Analysis>(
     'POST',
     `/api/documents/${encodeURIComponent(doc)}/entities/${encodeURIComponent(label)}/analysis`,
     req,

@@ -120,11 +120,23 @@ test('drag a control point, then undo and redo', async ({ page }) => {
   const steps0 = (await history(doc)).steps.length;
   const a0 = await analysis(doc, label);
   const from = await pixelOf(page, 'top', [30, 40, 10]);
+  // The network log of the drag: one PATCH per stored move, each answered with the moved curve and its
+  // analysis, and nothing else (no fetch of the entity, its analysis or the history afterwards).
+  const requests: string[] = [];
+  const log = (r: { method(): string; url(): string }): void => {
+    const path = new URL(r.url()).pathname;
+    if (path.startsWith('/api/')) requests.push(`${r.method()} ${path}`);
+  };
+  page.on('request', log);
   await page.mouse.move(from.x, from.y);
   await page.mouse.down();
   for (let i = 1; i <= 10; i++) await page.mouse.move(from.x + 3 * i, from.y + 2 * i);
   await page.mouse.up();
   await idle(page);
+  page.off('request', log);
+  const patch = `PATCH /api/documents/${encodeURIComponent(doc)}/entities/${label}`;
+  expect(requests.filter((r) => r === patch).length).toBeGreaterThan(0);
+  expect(requests.filter((r) => r !== patch)).toEqual([]);
   const moved = (
     (await entity(doc, label)).curve as {
       control_points: number[][];

@@ -3,9 +3,10 @@
 // replies and document events; the page draws, picks and snaps.
 
 import { ApiError, Client } from './api/client';
-import { finLines, withHandles } from './api/adapt';
+import { analysisFromServer, entityFromServer, finLines, withHandles } from './api/adapt';
 import type {
   Analysis,
+  AnalysisRequest,
   ChangeReply,
   ChangeSet,
   CurveFile,
@@ -118,6 +119,12 @@ interface Drag {
   local: boolean;
   /** Moved since the last frame drew it. */
   dirty: boolean;
+  /**
+   * The reply to the latest move: the dragged entity as the server stores it
+   * and its analysis (asked for with the move), applied once the drag
+   * settles, so a drag costs one request per stored move and nothing after.
+   */
+  lastReply?: ChangeReply;
 }
 
 /**
@@ -153,6 +160,8 @@ export class App {
   private preview: Preview | null = null;
   /** The curve of the last drag until the server has answered all its moves. */
   private settling: string | null = null;
+  /** Curves whose entity comes with its analysis (a drag's reply): not asked for again. */
+  private readonly fresh = new Set<string>();
   /** Analysis requests started so far (Preview.until counts in them). */
   private analysisSeq = 0;
   /** Panels and history wait for the end of a drag (rebuilding them per move cost whole frames). */
@@ -210,8 +219,11 @@ export class App {
           // The store now has the curve as the server holds it, a drag's last move included.
           if (this.moved?.label === e.label && this.settling !== e.label) this.moved = null;
           this.redrawCurve(e.label);
-          this.refreshAnalysis(e.label);
-          this.refreshHistory();
+          // A drag's reply brought the analysis and the history step with the curve.
+          if (!this.fresh.delete(e.label)) {
+            this.refreshAnalysis(e.label);
+            this.refreshHistory();
+          }
           this.fairing.edited(e.label);
           break;
         case 'removed':
@@ -381,7 +393,7 @@ export class App {
     const reply = await this.run(() => this.client.createEntity(this.store.name, name, curve));
     if (!reply) return undefined;
     this.applyReply(reply);
-    const made = reply.label ?? reply.changes.created?.[0]?.label ?? reply.changes.added?.[0];
+    const made = reply.label ?? reply.changes.added?.[0];
     const label = made === undefined ? undefined : String(made);
     if (label) this.select(label);
     return label;
@@ -562,15 +574,9 @@ export class App {
       return;
     }
     this.analysisBusy.add(label);
-    const s = this.settingsOf(label);
     const seq = ++this.analysisSeq;
     void this.client
-      .analysis(this.store.name, label, {
-        samples: s.samples,
-        by: this.abscissa === 's' ? 'arclength' : 'parameter',
-        fins: s.fins,
-        scale: s.scale,
-      })
+      .analysis(this.store.name, label, this.analysisRequest(label))
       .then((a) => {
         const p = this.preview;
         if (p?.label === label && this.drag?.label !== label && seq >= p.until) this.preview = null;
@@ -974,12 +980,19 @@ export class App {
     const continued = !d.first;
     d.first = false;
     this.client
-      .movePoints(this.store.name, d.label, [{ index: d.index, to: [...to] }], continued)
+      .movePoints(
+        this.store.name,
+        d.label,
+        [{ index: d.index, to: [...to] }],
+        continued,
+        this.analysisRequest(d.label),
+      )
       .then((reply) => {
         this.serverLatencies.push(performance.now() - stamp);
-        this.applyReply(reply);
-        // A curve the page cannot evaluate follows through the server's analysis.
-        if (!d.local) this.refreshAnalysis(d.label);
+        d.lastReply = reply;
+        this.fetchStale(this.store.applyReply(reply, d.label));
+        // A curve the page cannot evaluate follows through the server's analysis of each move.
+        if (!d.local) this.settleFrom(d, false);
       })
       .catch((e: unknown) => {
         this.toast(e);
@@ -1004,16 +1017,55 @@ export class App {
     if (this.settling === d.label) this.settling = null;
     if (!d.first) {
       if (this.preview?.label === d.label) this.preview.until = this.analysisSeq + 1;
-      // The stored curve (and so its analysis with features and the history) once the fairing
-      // assistant's ghost of the final position is on screen: it would otherwise queue before it.
+      // The stored curve, its analysis with features and the history step, from the last move's
+      // reply (no request), once the fairing assistant's ghost of the final position is on screen.
       this.fairing.afterGhost(() => {
-        this.fetchStale([d.label]);
+        this.settleFrom(d, true);
       });
     }
     if (this.panelsStale) {
       this.panelsStale = false;
       this.panels.update();
     }
+  }
+
+  /**
+   * The dragged curve as the last move's reply has it: the entity as the
+   * server stores it (refused moves included), its analysis (features and
+   * all), and, when the drag is over, its one "move points" history step.
+   */
+  private settleFrom(d: Drag, over: boolean): void {
+    const reply = d.lastReply;
+    const raw = reply?.changes.entities?.find((e) => String(e['label']) === d.label);
+    if (!reply || !raw) return;
+    if (reply.analysis) this.fresh.add(d.label);
+    this.store.put(entityFromServer(raw));
+    if (reply.analysis) {
+      const by = this.abscissa === 's' ? 'arclength' : 'parameter';
+      if (this.preview?.label === d.label && this.drag?.label !== d.label) this.preview = null;
+      this.store.setAnalysis(d.label, analysisFromServer(reply.analysis, by));
+    }
+    if (over && this.store.history) {
+      // The drag is one undo step (PATCH "continue"): undone steps go, the step is the last one.
+      const steps = this.store.history.steps.filter((h) => h.applied !== false);
+      steps.push({
+        revision: reply.revision,
+        name: reply.changes.name ?? 'move points',
+        applied: true,
+      });
+      this.store.setHistory({ steps });
+    }
+  }
+
+  /** The analysis the views and graphs ask for a curve (its view settings). */
+  analysisRequest(label: string): AnalysisRequest {
+    const s = this.settingsOf(label);
+    return {
+      samples: s.samples,
+      by: this.abscissa === 's' ? 'arclength' : 'parameter',
+      fins: s.fins,
+      scale: s.scale,
+    };
   }
 
   private endDrag(): void {

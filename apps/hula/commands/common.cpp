@@ -9,7 +9,9 @@
 
 #include "hula/core/error.hpp"
 #include "hula/core/tolerance.hpp"
+#include "hula/diffgeom/planarity.hpp"
 #include "hula/io/atomic_file.hpp"
+#include "hula/io/curve_analysis_json.hpp"
 #include "hula/io/json_write.hpp"
 #include "hula/nurbs/arc_length.hpp"
 
@@ -169,93 +171,6 @@ nurbs::EndCondition parse_end_condition(std::string_view text, std::string_view 
               {.field = std::string(field)});
 }
 
-Planarity planarity(const nurbs::NurbsCurve& curve) {
-  const std::span<const Vec3> P = curve.control_points();
-  Planarity out;
-  out.tolerance = resolution_for_size(Tolerance{}, curve.model_size());
-  if (curve.dimension() == 2) {
-    out.planar = true;
-    out.normal = Vec3{0, 0, 1};
-    return out;
-  }
-  // A plane through P0, the point farthest from it, and the point farthest
-  // from that line: robust for any point order, exact for collinear sets.
-  const Vec3 p0 = P[0];
-  std::size_t i1 = 0;
-  for (std::size_t i = 1; i < P.size(); ++i)
-    if (distance(P[i], p0) > distance(P[i1], p0)) i1 = i;
-  const Vec3 axis = P[i1] - p0;
-  const double axis_length = norm(axis);
-  if (!(axis_length > out.tolerance)) {
-    out.planar = true;  // all control points coincide: no unique plane
-    return out;
-  }
-  std::size_t i2 = 0;
-  double best = -1.0;
-  for (std::size_t i = 0; i < P.size(); ++i) {
-    const double d = norm(cross(axis, P[i] - p0)) / axis_length;  // distance from the line
-    if (d > best) {
-      best = d;
-      i2 = i;
-    }
-  }
-  if (!(best > out.tolerance)) {
-    out.planar = true;  // collinear: every plane through the line contains the curve
-    out.max_deviation = best;
-    return out;
-  }
-  Vec3 n = normalized(cross(axis, P[i2] - p0));
-  double deviation = 0.0;
-  for (const Vec3& p : P) deviation = std::fmax(deviation, std::fabs(dot(n, p - p0)));
-  // Sign convention: the largest-magnitude component is positive, so the XY plane gives +Z.
-  std::size_t k = 0;
-  for (std::size_t c = 1; c < 3; ++c)
-    if (std::fabs(n[c]) > std::fabs(n[k])) k = c;
-  if (n[k] < 0) n = -n;
-  n += Vec3{0.0, 0.0, 0.0};  // turns -0.0 components into +0.0 for clean output
-  out.max_deviation = deviation;
-  out.planar = deviation <= out.tolerance;
-  if (out.planar) out.normal = n;
-  return out;
-}
-
-Json planarity_to_json(const Planarity& p) {
-  Json o = Json::object();
-  o["planar"] = p.planar;
-  o["normal"] = p.normal ? vec_to_json(*p.normal, 3) : Json(nullptr);
-  o["max_deviation"] = p.max_deviation;
-  o["tolerance"] = p.tolerance;
-  return o;
-}
-
-Json max_curvature_estimate(const nurbs::NurbsCurve& curve, int samples) {
-  const nurbs::Interval dom = curve.domain();
-  std::vector<std::pair<double, nurbs::Side>> ts;
-  for (int i = 0; i <= samples; ++i)
-    ts.emplace_back(dom.start + dom.length() * (static_cast<double>(i) / samples), nurbs::Side::Right);
-  for (double u : curve.knots().breakpoints()) {
-    ts.emplace_back(u, nurbs::Side::Left);
-    ts.emplace_back(u, nurbs::Side::Right);
-  }
-  double best = -1.0, best_t = dom.start;
-  const double speed_floor = 1e-300;
-  for (const auto& [t, side] : ts) {
-    const auto d = curve.derivatives(t, 2, {.side = side});
-    const double speed = norm(d[1]);
-    if (!(speed > speed_floor)) continue;  // curvature undefined where C' vanishes
-    const double kappa = norm(cross(d[1], d[2])) / (speed * speed * speed);
-    if (std::isfinite(kappa) && kappa > best) {
-      best = kappa;
-      best_t = t;
-    }
-  }
-  Json o = Json::object();
-  o["value"] = best >= 0 ? Json(best) : Json(nullptr);
-  o["t"] = best >= 0 ? Json(best_t) : Json(nullptr);
-  o["samples"] = ts.size();
-  return o;
-}
-
 Json analyse(const nurbs::NurbsCurve& curve) {
   const int dim = curve.dimension();
   const nurbs::Interval dom = curve.domain();
@@ -293,7 +208,7 @@ Json analyse(const nurbs::NurbsCurve& curve) {
   units["start"] = unit(d0);
   units["end"] = unit(d1);
   o["end_tangents"] = std::move(units);
-  o["planarity"] = planarity_to_json(planarity(curve));
+  o["planarity"] = io::planarity_to_json(diffgeom::planarity(curve));
   return o;
 }
 

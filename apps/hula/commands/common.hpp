@@ -1,11 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Shared pieces of the `hula` commands: the exit-code table, JSON output,
 // parsing of command-line lists and end conditions (with hula::Error naming
-// the option), and the small curve analyses that `info` and `demo` print
-// (planarity, sampled maximum curvature, continuity at a knot).
-//
-// The analyses are local to the CLI until the diffgeom module provides them
-// (DESIGN.md: continuity at knots and curvature extrema belong to diffgeom).
+// the option), and the description of a curve that `info` and `demo` print
+// (its planarity is diffgeom::planarity's, written by io).
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -109,30 +106,6 @@ CLI::Option* add_real_option(CLI::App* sub, const std::string& flags, std::optio
 /// Parses an END option: natural | bessel | not-a-knot | occt | clamped:x,y[,z].
 /// @throws hula::Error(Errc::ParseError) naming `field` ("start" or "end") and the value
 [[nodiscard]] nurbs::EndCondition parse_end_condition(std::string_view text, std::string_view field);
-
-/// Result of the planarity test of a curve.
-struct Planarity {
-  bool planar = false;
-  /// Unit normal of the plane (largest-magnitude component positive); absent
-  /// when the control points are collinear or coincide (no unique plane).
-  std::optional<Vec3> normal;
-  /// Largest distance of a control point from the plane.
-  double max_deviation = 0.0;
-  /// The tolerance used: resolution_for_size(Tolerance{}, model size).
-  double tolerance = 0.0;
-};
-
-/// Planarity of a curve, judged on its control points (a NURBS curve with
-/// positive weights lies in a plane exactly when its control points do).
-[[nodiscard]] Planarity planarity(const nurbs::NurbsCurve& curve);
-/// JSON form: {"planar", "normal" ([x, y, z] or null), "max_deviation", "tolerance"}.
-[[nodiscard]] Json planarity_to_json(const Planarity& p);
-
-/// Largest curvature |C'×C''| / |C'|³ over `samples` + 1 uniformly spaced
-/// parameters (both sides of every breakpoint are also sampled). An estimate:
-/// a sharp peak between samples is missed.
-/// @returns {"value", "t", "samples"}; value null if |C'| vanishes everywhere sampled
-[[nodiscard]] Json max_curvature_estimate(const nurbs::NurbsCurve& curve, int samples = 1000);
 
 /// The standard analysis of a curve printed by info and demo: degree, knots,
 /// control points, weights, domain, rational, dimension, length (arc_length,

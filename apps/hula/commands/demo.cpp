@@ -12,6 +12,8 @@
 
 #include "commands/common.hpp"
 #include "hula/core/error.hpp"
+#include "hula/diffgeom/analysis.hpp"
+#include "hula/io/curve_analysis_json.hpp"
 
 namespace hula::cli {
 
@@ -25,9 +27,14 @@ Json points_json(std::span<const Vec3> points) {
   return a;
 }
 
+// The description of the curve with its largest curvature (diffgeom::analyse_curve's features).
 Json curve_analysis(const nurbs::NurbsCurve& curve) {
   Json o = analyse(curve);
-  o["max_curvature_estimate"] = max_curvature_estimate(curve);
+  diffgeom::AnalysisOptions options;
+  options.samples = 2;
+  options.features = true;
+  const diffgeom::MaximumCurvature m = diffgeom::analyse_curve(curve, options).features->maximum_curvature;
+  o["maximum_curvature"] = io::maximum_curvature_to_json(m);
   return o;
 }
 
@@ -53,29 +60,15 @@ Json interpolation_example(const std::string& name, const std::vector<Vec3>& poi
   return o;
 }
 
-// Continuity C0..C3 at knot u: |C^(k)(u⁺) - C^(k)(u⁻)| ≤ 1e-9 × max(|C^(k)(u⁻)|, |C^(k)(u⁺)|, size / L^k),
-// with size the model size and L the domain length (the natural scale of the k-th derivative).
+// The continuity at knot u as every door reports it (diffgeom::analyse_curve's knots, io::continuity_to_json).
 Json continuity_at(const nurbs::NurbsCurve& curve, double u) {
-  constexpr double kRelative = 1e-9;
-  const auto left = curve.derivatives(u, 3, {.side = nurbs::Side::Left});
-  const auto right = curve.derivatives(u, 3, {.side = nurbs::Side::Right});
-  const double size = curve.model_size(), length = curve.domain().length();
-  Json o = Json::object();
-  o["knot"] = u;
-  o["multiplicity"] = curve.knots().multiplicity(u);
-  Json jumps = Json::array();
-  bool continuous = true;
-  for (std::size_t k = 0; k < 4; ++k) {
-    const double jump = distance(left[k], right[k]);
-    const double scale =
-        std::fmax(std::fmax(norm(left[k]), norm(right[k])), size / std::pow(length, static_cast<double>(k)));
-    continuous = continuous && jump <= kRelative * scale;
-    o["C" + std::to_string(k)] = continuous;
-    jumps.push_back(jump);
-  }
-  o["jumps"] = std::move(jumps);
-  o["relative_tolerance"] = kRelative;
-  return o;
+  diffgeom::AnalysisOptions options;
+  options.samples = 2;
+  options.features = true;
+  const diffgeom::CurveAnalysis analysis = diffgeom::analyse_curve(curve, options);
+  for (const diffgeom::Continuity& k : analysis.features->knots)
+    if (k.t == u) return io::continuity_to_json(k);
+  throw Error(Errc::InvalidArgument, "no knot at t = " + format_number(u), {.field = "knot"});
 }
 
 // Table 3 layout: derivatives of order 0..3 just before (left limit), at (the

@@ -46,7 +46,7 @@ io::SvgFigure curve_figure(const studies::KnotFairingSetup& setup, const studies
       y.push_back(p.y);
     }
   };
-  add_fins(fig, e.curve, fin_scale(setup.points, e.curve), "#9ecae1", "#3182bd", "curvature fins");
+  add_fins(fig, e.curve, fin_scale(e.curve), "#9ecae1", "#3182bd", "curvature fins");
   if (reference != nullptr) {
     std::vector<double> rx, ry;
     sample(reference->curve, rx, ry);

@@ -2,17 +2,18 @@
 // Curvature combs for the study figures and Open CASCADE's fairing baselines
 // (oli/kernel/occt_fairing.hpp) beside a study's curves, shared by
 // `hula fair-knots --occt` and `hula match-curvature --occt`: the JSON block
-// "occt" and the figure baselines.svg. No numerics here: the baselines and
-// their measurements come from oli_kernel.
+// "occt" and the figure baselines.svg. The combs are the curves' analysis
+// (diffgeom::analyse_curve, its automatic fin scale); the baselines and their
+// measurements come from oli_kernel.
 #include "commands/fairing_baselines.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "commands/study_common.hpp"
-#include "hula/diffgeom/fins.hpp"
-#include "hula/diffgeom/frenet.hpp"
+#include "hula/diffgeom/analysis.hpp"
 #include "hula/io/json_curve.hpp"
 #ifdef HULA_WITH_OCCT
 #include "hula/oli/kernel/occt_fairing.hpp"
@@ -20,27 +21,23 @@
 
 namespace hula::cli {
 
-// Fin scale for `curve`: its longest fin is a quarter of the data's extent.
-double fin_scale(std::span<const Vec3> points, const nurbs::NurbsCurve& curve) {
-  double extent = 0.0;
-  for (const Vec3& a : points)
-    for (const Vec3& b : points) extent = std::max(extent, norm(a - b));
-  diffgeom::FinOptions fo;
-  fo.density = 150;
-  const diffgeom::Fins unit = diffgeom::fins(curve, fo);
-  double longest = 0.0;
-  for (std::size_t i = 0; i < unit.t.size(); ++i)
-    if (unit.defined[i]) longest = std::max(longest, norm(unit.tip[i] - unit.base[i]));
-  return longest > 0.0 ? 0.25 * extent / longest : 1.0;
+// The curvature comb of `curve` as every door draws it (diffgeom::analyse_curve, 150 fins): at `scale`, or at
+// the automatic scale (diffgeom::auto_fin_scale) when absent.
+diffgeom::AnalysedFins curvature_comb(const nurbs::NurbsCurve& curve, std::optional<double> scale) {
+  diffgeom::AnalysisOptions o;
+  o.samples = 2;
+  o.fins = {diffgeom::FinKind::Curvature};
+  o.fin_density = 150;
+  o.fin_scale = scale;
+  return std::move(diffgeom::analyse_curve(curve, o).fins.front());
 }
+
+double fin_scale(const nurbs::NurbsCurve& curve) { return curvature_comb(curve, std::nullopt).scale; }
 
 // The curvature fins of `curve` (segments in `fin_colour`) and the comb line through their tips.
 void add_fins(io::SvgFigure& fig, const nurbs::NurbsCurve& curve, double scale, const char* fin_colour,
               const char* comb_colour, const std::string& legend) {
-  diffgeom::FinOptions fo;
-  fo.density = 150;
-  fo.scale = scale;
-  const diffgeom::Fins f = diffgeom::fins(curve, fo);
+  const diffgeom::Fins f = curvature_comb(curve, scale).fins;
   std::vector<double> x0, y0, x1, y1, tx, ty;
   for (std::size_t i = 0; i < f.t.size(); ++i) {
     tx.push_back(f.defined[i] ? f.tip[i].x : std::numeric_limits<double>::quiet_NaN());
@@ -90,7 +87,7 @@ Json occt_baselines(std::span<const Vec3> points, const nurbs::NurbsCurve& refer
     io::SvgFigure fig(900, 700);
     fig.set_title("fairing baselines: the studies' curves and Open CASCADE's, with curvature combs");
     fig.set_equal_aspect(true);
-    const double scale = fin_scale(points, reference);
+    const double scale = fin_scale(reference);
     const char* colours[] = {"#000000", "#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e"};
     std::size_t k = 0;
     auto draw = [&](const nurbs::NurbsCurve& c, const std::string& name) {

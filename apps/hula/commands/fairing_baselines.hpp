@@ -16,8 +16,8 @@
 
 namespace hula::cli {
 
-/// Fin scale for `curve`: its longest curvature fin is a quarter of the extent of `points`.
-[[nodiscard]] double fin_scale(std::span<const Vec3> points, const nurbs::NurbsCurve& curve);
+/// The automatic fin scale of `curve`'s curvature comb (diffgeom::auto_fin_scale, the one rule of every door).
+[[nodiscard]] double fin_scale(const nurbs::NurbsCurve& curve);
 
 /// The curvature fins of `curve` (segments in `fin_colour`) and the comb line through their tips (`comb_colour`).
 void add_fins(io::SvgFigure& fig, const nurbs::NurbsCurve& curve, double scale, const char* fin_colour,

@@ -77,15 +77,8 @@ int run_law(const LawArgs& a) {
   law::ParseOptions po;
   po.parameters = {a.parameter};
   const law::Law l = law::parse(a.expression, ctx, po);
-  Json doc = Json::object();
-  doc["expression"] = law::print(l);
-  doc["parameter"] = a.parameter;
-  doc["dimension"] = l.dimension();
-  if (!a.at.empty()) {
-    const std::vector<double> ts = parse_number_list(a.at, a.parameter);
-    doc["results"] = io::law_results_to_json(ts, io::law_derivatives(l, a.parameter, ts, a.derivatives), l.dimension(),
-                                             a.derivatives);
-  }
+  const std::vector<double> ts = a.at.empty() ? std::vector<double>{} : parse_number_list(a.at, a.parameter);
+  Json doc = io::law_evaluation_json(l, a.parameter, ts, a.derivatives);
   if (a.print_derivative >= 0) {
     Json d = Json::object();
     d["order"] = a.print_derivative;

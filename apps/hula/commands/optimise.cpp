@@ -3,8 +3,8 @@
 // or one of pagmo2's through the adapter on a built-in test problem or a
 // problem file (io/problem_file.hpp), and
 // prints the best solution (one objective) or the final non-dominated front
-// with its hypervolume (several objectives) and the run report (issue 5,
-// thesis appendix 1.5 "flexible optimisation wheel").
+// with its hypervolume (several objectives) and the run report (thesis
+// appendix 1.5 "flexible optimisation wheel").
 //
 // Ctrl-C (SIGINT) sets a CancellationToken (InterruptGuard, study_common.hpp);
 // the algorithm notices it between generations and returns the best so far
@@ -78,24 +78,14 @@ struct AlgorithmChoice {
   optim::PagmoAlgorithm pagmo = optim::PagmoAlgorithm::Nsga2;
 };
 
+// The algorithm named `name` (optim::solver_from_name, the one reader of algorithm names).
 AlgorithmChoice parse_algorithm(const std::string& name) {
-  if (name == "ga-binary") return {Algorithm::BinaryGa};
-  if (name == "ga-real") return {Algorithm::RealGa};
-  if (name == "nsga2") return {Algorithm::Nsga2};
-  if (name == "nelder-mead") return {Algorithm::NelderMead};
-  constexpr std::string_view kPagmo = "pagmo-";
-  if (name.starts_with(kPagmo)) {
-    try {
-      return {Algorithm::Pagmo, optim::pagmo_algorithm(std::string_view(name).substr(kPagmo.size()))};
-    } catch (const Error&) {
-      // Fall through to the message that lists every accepted name.
-    }
-  }
-  throw Error(Errc::InvalidArgument,
-              "algorithm = \"" + name +
-                  "\" is not an algorithm (expected ga-binary, ga-real, nsga2, nelder-mead or pagmo-<name> with "
-                  "<name> one of cmaes, de, sade, pso, sga, moead, nsga2)",
-              {.field = "algorithm"});
+  const optim::SolverOptions o = optim::solver_from_name(name);
+  if (std::holds_alternative<optim::BinaryGaOptions>(o)) return {Algorithm::BinaryGa};
+  if (std::holds_alternative<optim::RealGaOptions>(o)) return {Algorithm::RealGa};
+  if (std::holds_alternative<optim::Nsga2Options>(o)) return {Algorithm::Nsga2};
+  if (std::holds_alternative<optim::NelderMeadOptions>(o)) return {Algorithm::NelderMead};
+  return {Algorithm::Pagmo, std::get<optim::PagmoOptions>(o).algorithm};
 }
 
 // Refuses an option the chosen algorithm does not take (no silent no-ops).

@@ -63,17 +63,9 @@ struct ReconstructArgs {
   const CLI::Option* tau_option = nullptr;
 };
 
-// Parses a law of s given as --<field>, naming the option and the expression in errors.
+// A law of s given as --<field>, naming the option and the expression in errors.
 law::Law parse_law(const std::string& text, law::Context& ctx, const char* field) {
-  law::ParseOptions po;
-  po.parameters = {"s"};
-  try {
-    return law::parse(text, ctx, po);
-  } catch (const Error& e) {
-    ErrorWhere where = e.where();
-    where.field = field;
-    throw Error(e.code(), std::string("--") + field + " '" + text + "': " + e.message(), where);
-  }
+  return io::natural_equation_law(text, ctx, field, std::string("--") + field);
 }
 
 Vec3 parse_vec(const std::string& text, const char* field) {
@@ -85,33 +77,25 @@ Vec3 parse_vec(const std::string& text, const char* field) {
   return {v[0], v[1], v[2]};
 }
 
-Json point_json(const intrinsic::FramePoint& p) {
-  Json j = Json::object();
-  j["s"] = p.s;
-  j["position"] = vec_to_json(p.position, 3);
-  j["T"] = vec_to_json(p.tangent, 3);
-  j["N"] = vec_to_json(p.normal, 3);
-  j["B"] = vec_to_json(p.binormal, 3);
-  return j;
-}
-
-// --curve: design by curvature on the curve file (the same request codec as the server's curvature-edit route).
+// --curve: design by curvature on the curve file (studies::edit_curvature, as the server's curvature-edit route).
 int run_curvature_edit(const ReconstructArgs& a) {
   if (a.length_option->count() > 0)
     throw CLI::ValidationError("--length with --curve: the edited curve keeps its own length");
-  Json request = Json::object();
-  request["kappa"] = a.kappa;
-  request["target"] = a.target;
-  if (a.tau_option->count() > 0) request["tau"] = a.tau;
-  request["hold"] = a.hold;
-  request["max_handles_factor"] = a.max_handles_factor;
   if (a.fit_tolerance_option->count() > 0)
     throw CLI::ValidationError(
         "--fit-tolerance with --curve: the edited curve keeps the original's knots (at most "
         "--max-handles-factor times its handles), not a tolerance");
-  const io::CurvatureEditRequest edit = io::curvature_edit_request_from_json(request);
+  law::Context ctx;
+  studies::CurvatureEdit edit{.curvature = parse_law(a.kappa, ctx, "kappa"),
+                              .target = studies::curvature_target_from_name(a.target, "target")};
+  if (a.tau_option->count() > 0) edit.torsion = parse_law(a.tau, ctx, "tau");
+  studies::CurvatureEditOptions options;
+  options.hold = studies::end_hold_from_name(a.hold, "hold");
+  options.max_handles_factor = a.max_handles_factor;
+  options.reconstruction.max_steps = intrinsic::kFrontEndMaxSteps;
+  options.validate();
   const curve::Curve original = io::read_curve_file(a.curve);
-  const studies::CurvatureEditResult r = studies::edit_curvature(original, edit.edit, edit.options);
+  const studies::CurvatureEditResult r = studies::edit_curvature(original, edit, options);
   if (!a.output.empty()) io::write_curve_file(a.output, r.curve);
   Json doc = Json::object();
   doc["edit"] = io::curvature_edit_to_json(r);
@@ -189,8 +173,7 @@ int run_reconstruct(const ReconstructArgs& a) {
     for (int i = 0; i <= 4; ++i) ss.push_back(i == 4 ? length : length * i / 4.0);
   else
     ss = parse_number_list(a.at, "at");
-  Json points = Json::array();
-  for (const intrinsic::FramePoint& p : curve->evaluate(ss)) points.push_back(point_json(p));
+  Json points = io::frame_points_json(curve->evaluate(ss));
   if (!a.output.empty()) io::write_curve_file(a.output, fit->curve);
   doc["points"] = std::move(points);
   doc["integration"] = io::integration_summary(*curve);

@@ -7,12 +7,16 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <memory>
 #include <span>
+#include <string>
+#include <variant>
 #include <vector>
 
 #include "hula/core/error.hpp"
 #include "hula/diffgeom/frenet_law.hpp"
 #include "hula/law/derive.hpp"
+#include "hula/law/parser.hpp"
 #include "hula/law/tape.hpp"
 
 namespace hula::diffgeom {
@@ -154,6 +158,71 @@ Sample nurbs_sample(const nurbs::NurbsCurve& curve, const FrenetOptions& o, Quan
 Sample law_sample(const LawFrenet& curve, Quantity q, std::vector<FrenetPoint>& points) {
   return frenet_sample([&curve](std::span<const double> ts, std::span<FrenetPoint> p) { curve.at(ts, p); }, q, points);
 }
+
+// The one significance rule of every extremum search (features.hpp): persistence simplification of the
+// sequence start, extrema..., end on `value` (κ or τ of each feature). While the closest neighbouring
+// pair differs by at most the floor, it goes: a maximum and a minimum side by side cancel, an extremum
+// next to an end goes alone. Undefined values never cancel.
+void keep_significant(std::vector<Feature>& extrema, double start_value, double end_value, bool curvature,
+                      double significance) {
+  const auto value = [curvature](const Feature& f) { return curvature ? f.curvature : f.torsion; };
+  // An extremum of a quantity that is undefined there (τ where the frame is, at a knot where it jumps) is none.
+  std::erase_if(extrema, [&](const Feature& f) { return !std::isfinite(value(f)); });
+  if (extrema.empty()) return;
+  const auto is_max = [](const Feature& f) {
+    return f.kind == FeatureKind::CurvatureMaximum || f.kind == FeatureKind::TorsionMaximum;
+  };
+  double largest = 0.0;
+  for (const double v : {start_value, end_value})
+    if (std::isfinite(v)) largest = std::max(largest, std::fabs(v));
+  for (const Feature& f : extrema)
+    if (std::isfinite(value(f))) largest = std::max(largest, std::fabs(value(f)));
+  const double limit = significance * largest;
+  // Node i: the start (i = 0), extrema[i - 1], the end (i = n + 1); `alive` marks the ones kept.
+  const std::size_t n = extrema.size();
+  std::vector<char> alive(n + 2, 1);
+  const auto at = [&](std::size_t i) { return i == 0 ? start_value : i == n + 1 ? end_value : value(extrema[i - 1]); };
+  for (;;) {
+    double best = HUGE_VAL;
+    std::size_t a_best = 0, b_best = 0;
+    std::size_t a = 0;
+    for (std::size_t b = 1; b < n + 2; ++b) {
+      if (!alive[b]) continue;
+      // Two extrema of one kind side by side have an unreported turn between them (the zero of |κ| at an
+      // inflection): equal or not, both stand.
+      const bool candidate = a == 0 ? b != n + 1 : b == n + 1 || is_max(extrema[a - 1]) != is_max(extrema[b - 1]);
+      const double d = std::fabs(at(a) - at(b));
+      if (candidate && std::isfinite(d) && d < best) {
+        best = d;
+        a_best = a;
+        b_best = b;
+      }
+      a = b;
+    }
+    if (!(best <= limit)) break;
+    if (a_best == 0) {
+      alive[b_best] = 0;
+    } else if (b_best == n + 1) {
+      alive[a_best] = 0;
+    } else {
+      alive[a_best] = alive[b_best] = 0;  // a maximum and a minimum that cancel
+    }
+  }
+  std::vector<Feature> kept;
+  for (std::size_t i = 0; i < n; ++i)
+    if (alive[i + 1]) kept.push_back(extrema[i]);
+  extrema = std::move(kept);
+}
+
+// κ (curvature) or τ at the domain ends, for keep_significant.
+std::pair<double, double> end_values(const Eval& eval, nurbs::Interval d, bool curvature) {
+  const FrenetPoint a = eval(d.start), b = eval(d.end);
+  const auto v = [curvature](const FrenetPoint& p) {
+    return curvature ? (p.tangent_defined ? p.curvature : std::nan(""))
+                     : (p.torsion_defined ? p.torsion : std::nan(""));
+  };
+  return {v(a), v(b)};
+}
 }  // namespace
 
 void FeatureOptions::validate() const {
@@ -162,6 +231,9 @@ void FeatureOptions::validate() const {
     throw Error(Errc::InvalidOption,
                 "samples_per_span = " + std::to_string(samples_per_span) + " must be in [2, 100000]",
                 {.field = "samples_per_span"});
+  if (!(significance >= 0.0 && significance <= 1e-3))
+    throw Error(Errc::InvalidOption, "significance = " + format_number(significance) + " must be in [0, 1e-3]",
+                {.field = "significance"});
 }
 
 std::string_view feature_kind_name(FeatureKind kind) noexcept {
@@ -201,6 +273,8 @@ std::vector<Feature> curvature_extrema(const nurbs::NurbsCurve& curve, const Fea
       eval, nurbs_sample(curve, options.frenet, kappa_prime, points), [&](double t) { return kappa_prime(eval(t)); },
       nurbs_cuts(curve), options.samples_per_span, FeatureKind::CurvatureMaximum, FeatureKind::CurvatureMinimum, out);
   knot_jumps(curve, options.frenet, kappa_prime, true, out);
+  const auto [a, b] = end_values(eval, curve.domain(), true);
+  keep_significant(out, a, b, true, options.significance);
   return out;
 }
 
@@ -222,18 +296,30 @@ std::vector<Feature> law_curvature_extrema(const LawFrenet& curve, Interval doma
   search(
       eval, law_sample(curve, kappa_prime, points), [&](double t) { return kappa_prime(eval(t)); }, law_cuts(domain),
       options.samples_per_span, FeatureKind::CurvatureMaximum, FeatureKind::CurvatureMinimum, out);
+  const auto [a, b] = end_values(eval, domain, true);
+  keep_significant(out, a, b, true, options.significance);
   return out;
 }
 }  // namespace
 
+namespace {
+// Defined below with the law searches: a natural curve's features from its own laws κ(s), τ(s).
+std::vector<Feature> natural_inflections(const curve::Curve& c, const curve::NaturalData& d);
+std::vector<Feature> natural_extrema(const curve::Curve& c, const curve::NaturalData& d, bool curvature,
+                                     double significance);
+}  // namespace
+
 std::vector<Feature> inflections(const curve::Curve& curve, const FeatureOptions& options) {
   options.validate();
+  if (const auto* n = std::get_if<curve::NaturalData>(&curve.data())) return natural_inflections(curve, *n);
   if (!curve.law()) return inflections(curve.nurbs(), options);
   return law_inflections(LawFrenet(*curve.law_evaluator(3), curve.domain(), options.frenet), curve.domain(), options);
 }
 
 std::vector<Feature> curvature_extrema(const curve::Curve& curve, const FeatureOptions& options) {
   options.validate();
+  if (const auto* n = std::get_if<curve::NaturalData>(&curve.data()))
+    return natural_extrema(curve, *n, true, options.significance);
   if (!curve.law()) return curvature_extrema(curve.nurbs(), options);
   return law_curvature_extrema(LawFrenet(*curve.law_evaluator(3), curve.domain(), options.frenet), curve.domain(),
                                options);
@@ -263,8 +349,11 @@ std::vector<Feature> torsion_extrema(const nurbs::NurbsCurve& curve, const Featu
     for (std::size_t i = 0; i < ts.size(); ++i) vs[i] = dtau_of(ts[i], std::span<const Vec3>(derivs.data() + 5 * i, 5));
   };
   std::vector<Feature> out;
-  search(nurbs_eval(curve, options.frenet), sample, dtau, nurbs_cuts(curve), options.samples_per_span,
-         FeatureKind::TorsionMaximum, FeatureKind::TorsionMinimum, out);
+  const Eval eval = nurbs_eval(curve, options.frenet);
+  search(eval, sample, dtau, nurbs_cuts(curve), options.samples_per_span, FeatureKind::TorsionMaximum,
+         FeatureKind::TorsionMinimum, out);
+  const auto [a, b] = end_values(eval, curve.domain(), false);
+  keep_significant(out, a, b, false, options.significance);
   return out;
 }
 
@@ -282,6 +371,106 @@ law::Law law_curve3(const law::Law& curve, nurbs::Interval domain) {
   return law::vec(law::term(curve, 1), law::term(curve, 2), curve.context().constant(0.0));
 }
 
+// The interior parameters where the scalar law g changes sign: its roots and, since a curvature that
+// changes sign through a jump (a join of two arcs turning opposite ways) is an inflection too, the sign
+// changes without a root; a root is kept when g has opposite signs half-way to its neighbouring roots
+// (or the ends).
+std::vector<double> sign_changes(const law::Law& g, std::string_view parameter, nurbs::Interval domain,
+                                 const law::RootOptions& roots) {
+  const law::RootReport found = law::find_roots(g, parameter, domain.start, domain.end, roots);
+  std::vector<double> zeros = found.roots;
+  zeros.insert(zeros.end(), found.unresolved.begin(), found.unresolved.end());
+  std::sort(zeros.begin(), zeros.end());
+  const std::string name(parameter);
+  const law::Tape tape = law::Tape::compile(std::span<const law::Law>(&g, 1), std::span<const std::string>(&name, 1));
+  auto g_at = [&tape](double t) {
+    double v = 0.0;
+    tape.evaluate(std::span<const double>(&t, 1), std::span<double>(&v, 1));
+    return v;
+  };
+  std::vector<double> out;
+  for (std::size_t i = 0; i < zeros.size(); ++i) {
+    const double t = zeros[i];
+    if (!(t > domain.start && t < domain.end)) continue;
+    const double left = 0.5 * (t + (i > 0 ? zeros[i - 1] : domain.start));
+    const double right = 0.5 * (t + (i + 1 < zeros.size() ? zeros[i + 1] : domain.end));
+    const double gl = g_at(left), gr = g_at(right);
+    if ((gl < 0.0 && gr > 0.0) || (gl > 0.0 && gr < 0.0)) out.push_back(t);
+  }
+  return out;
+}
+
+// A natural curve's own laws: the signed curvature κ(s) and the torsion τ(s) of its natural equations,
+// compiled together; its parameter is the arc length s on [0, L] (curve::NaturalData).
+class NaturalLaws {
+ public:
+  explicit NaturalLaws(const curve::NaturalData& d) : parameter_(d.parameter), domain_{0.0, d.length} {
+    law::ParseOptions o;
+    o.parameters = {d.parameter};
+    kappa_ = law::parse(d.curvature, context_, o);
+    tau_ = law::parse(d.torsion, context_, o);
+    const std::array<law::Law, 2> both{kappa_, tau_};
+    tape_ = std::make_unique<law::Tape>(law::Tape::compile(both, std::span<const std::string>(&parameter_, 1)));
+  }
+  [[nodiscard]] const law::Law& kappa() const { return kappa_; }
+  [[nodiscard]] const law::Law& tau() const { return tau_; }
+  [[nodiscard]] const std::string& parameter() const { return parameter_; }
+  [[nodiscard]] nurbs::Interval domain() const { return domain_; }
+  // {κ_s(s), τ(s)}.
+  [[nodiscard]] std::array<double, 2> at(double s) const {
+    std::array<double, 2> v{};
+    tape_->evaluate(std::span<const double>(&s, 1), v);
+    return v;
+  }
+  [[nodiscard]] Feature feature(const curve::Curve& c, double s, FeatureKind kind) const {
+    const auto [k, t] = at(s);
+    return {.kind = kind, .t = s, .position = c.point(s), .curvature = std::fabs(k), .torsion = t};
+  }
+
+ private:
+  law::Context context_;
+  std::string parameter_;
+  nurbs::Interval domain_;
+  law::Law kappa_, tau_;
+  std::unique_ptr<law::Tape> tape_;
+};
+
+std::vector<Feature> natural_inflections(const curve::Curve& c, const curve::NaturalData& d) {
+  const NaturalLaws n(d);
+  std::vector<Feature> out;
+  for (const double s : sign_changes(n.kappa(), n.parameter(), n.domain(), {}))
+    out.push_back(n.feature(c, s, FeatureKind::Inflection));
+  for (Feature& f : out) f.curvature = 0.0;
+  return out;
+}
+
+// Extrema of κ = |κ_s| (curvature) or of τ from the exact laws, by the one significance rule. An extremum
+// of κ_s where κ_s < 0 is the opposite extremum of |κ_s|; where κ_s = 0 it is an inflection, not an
+// extremum of κ (as the sampled searches, where dκ/ds is undefined at κ = 0).
+std::vector<Feature> natural_extrema(const curve::Curve& c, const curve::NaturalData& d, bool curvature,
+                                     double significance) {
+  const NaturalLaws n(d);
+  const nurbs::Interval dom = n.domain();
+  const law::ExtremaResult r =
+      law::extrema(curvature ? n.kappa() : n.tau(), n.parameter(), dom.start, dom.end, law::RootOptions{});
+  std::vector<Feature> out;
+  for (const law::Extremum& e : r.points) {
+    if (!(e.t > dom.start && e.t < dom.end) || e.kind == law::ExtremumKind::Stationary) continue;
+    bool maximum = e.kind == law::ExtremumKind::Maximum;
+    if (curvature) {
+      if (e.value == 0.0) continue;
+      if (e.value < 0.0) maximum = !maximum;
+      out.push_back(n.feature(c, e.t, maximum ? FeatureKind::CurvatureMaximum : FeatureKind::CurvatureMinimum));
+    } else {
+      out.push_back(n.feature(c, e.t, maximum ? FeatureKind::TorsionMaximum : FeatureKind::TorsionMinimum));
+    }
+  }
+  const auto a = n.at(dom.start), b = n.at(dom.end);
+  keep_significant(out, curvature ? std::fabs(a[0]) : a[1], curvature ? std::fabs(b[0]) : b[1], curvature,
+                   significance);
+  return out;
+}
+
 Feature law_feature(const LawFrenet& frenet, double t, FeatureKind kind) {
   const FrenetPoint p = frenet.at(t);
   return Feature{.kind = kind,
@@ -291,23 +480,19 @@ Feature law_feature(const LawFrenet& frenet, double t, FeatureKind kind) {
                  .torsion = p.torsion};
 }
 
-// Interior minima and maxima of f (law::extrema) as features.
+// Interior minima and maxima of f (law::extrema) as features, kept by the significance rule on κ
+// (curvature = true) or τ.
 std::vector<Feature> law_extrema(const law::Law& f, const LawFrenet& frenet, std::string_view parameter,
                                  nurbs::Interval domain, const law::RootOptions& roots, FeatureKind maximum,
-                                 FeatureKind minimum) {
+                                 FeatureKind minimum, bool curvature, double significance) {
   const law::ExtremaResult r = law::extrema(f, parameter, domain.start, domain.end, roots);
-  // An extremum must stand out of its neighbours (ends included) by more than value_tolerance × max |f|,
-  // so a law that is constant up to rounding (the torsion of a helix) has none.
-  const double floor = roots.value_tolerance * std::max(std::fabs(r.minimum.value), std::fabs(r.maximum.value));
   std::vector<Feature> out;
-  for (std::size_t i = 0; i < r.points.size(); ++i) {
-    const law::Extremum& e = r.points[i];
+  for (const law::Extremum& e : r.points) {
     if (!(e.t > domain.start && e.t < domain.end) || e.kind == law::ExtremumKind::Stationary) continue;
-    const bool stands_out = (i > 0 && std::fabs(e.value - r.points[i - 1].value) > floor) ||
-                            (i + 1 < r.points.size() && std::fabs(e.value - r.points[i + 1].value) > floor);
-    if (!stands_out) continue;
     out.push_back(law_feature(frenet, e.t, e.kind == law::ExtremumKind::Maximum ? maximum : minimum));
   }
+  const auto [a, b] = end_values([&frenet](double t) { return frenet.at(t); }, domain, curvature);
+  keep_significant(out, a, b, curvature, significance);
   return out;
 }
 }  // namespace
@@ -320,31 +505,10 @@ std::vector<Feature> inflections(const law::Law& curve, std::string_view paramet
   const Vec3 n = options.frenet.plane_normal / norm(options.frenet.plane_normal);
   const law::Law r1 = law::derivative(r, parameter, 1);
   const law::Law g = law::dot(law::cross(r1, law::derivative(r, parameter, 2)), r.context().constant(n));
-  // Every sign change of g: its roots and, since a curvature that changes sign through a jump (a
-  // join of two arcs turning opposite ways) is an inflection too, the sign changes without a root.
-  const law::RootReport found = law::find_roots(g, parameter, domain.start, domain.end, roots);
-  std::vector<double> zeros = found.roots;
-  zeros.insert(zeros.end(), found.unresolved.begin(), found.unresolved.end());
-  std::sort(zeros.begin(), zeros.end());
   const LawFrenet frenet(r, std::string(parameter), domain, options.frenet);
-  // Keep the roots where g changes sign: compare g half-way to the neighbouring roots (or ends).
-  const std::string name(parameter);
-  const law::Tape tape = law::Tape::compile(std::span<const law::Law>(&g, 1), std::span<const std::string>(&name, 1));
-  auto g_at = [&tape](double t) {
-    double v = 0.0;
-    tape.evaluate(std::span<const double>(&t, 1), std::span<double>(&v, 1));
-    return v;
-  };
   std::vector<Feature> out;
-  for (std::size_t i = 0; i < zeros.size(); ++i) {
-    const double t = zeros[i];
-    if (!(t > domain.start && t < domain.end)) continue;
-    const double left = 0.5 * (t + (i > 0 ? zeros[i - 1] : domain.start));
-    const double right = 0.5 * (t + (i + 1 < zeros.size() ? zeros[i + 1] : domain.end));
-    const double gl = g_at(left), gr = g_at(right);
-    if ((gl < 0.0 && gr > 0.0) || (gl > 0.0 && gr < 0.0))
-      out.push_back(law_feature(frenet, t, FeatureKind::Inflection));
-  }
+  for (const double t : sign_changes(g, parameter, domain, roots))
+    out.push_back(law_feature(frenet, t, FeatureKind::Inflection));
   return out;
 }
 
@@ -359,7 +523,7 @@ std::vector<Feature> curvature_extrema(const law::Law& curve, std::string_view p
   const law::Law kappa2 = law::dot(a, a) / (v2 * v2 * v2);
   const LawFrenet frenet(r, std::string(parameter), domain, options.frenet);
   return law_extrema(kappa2, frenet, parameter, domain, roots, FeatureKind::CurvatureMaximum,
-                     FeatureKind::CurvatureMinimum);
+                     FeatureKind::CurvatureMinimum, true, options.significance);
 }
 
 std::vector<Feature> torsion_extrema(const law::Law& curve, std::string_view parameter, nurbs::Interval domain,
@@ -370,11 +534,13 @@ std::vector<Feature> torsion_extrema(const law::Law& curve, std::string_view par
   const FrenetLaws laws = frenet_laws(r, parameter);
   const LawFrenet frenet(r, std::string(parameter), domain, options.frenet);
   return law_extrema(laws.torsion, frenet, parameter, domain, roots, FeatureKind::TorsionMaximum,
-                     FeatureKind::TorsionMinimum);
+                     FeatureKind::TorsionMinimum, false, options.significance);
 }
 
 std::vector<Feature> torsion_extrema(const curve::Curve& curve, const FeatureOptions& options) {
   options.validate();
+  if (const auto* n = std::get_if<curve::NaturalData>(&curve.data()))
+    return natural_extrema(curve, *n, false, options.significance);
   if (!curve.law()) return torsion_extrema(curve.nurbs(), options);
   return torsion_extrema(*curve.law(), curve.law_parameter(), curve.domain(), options);
 }

@@ -4,6 +4,15 @@
 // dκ/ds) and torsion extrema (sign changes of dτ/ds), found by sampling every knot span and refining each bracket by
 // bisection to the parameter resolution. A root is reported only where the
 // quantity changes sign, so straight spans and tangential zeros are not noise.
+//
+// One rule decides which extrema are reported, whatever found them (sampling
+// of a NURBS, of an exact law, or the roots of a law's derivative): an
+// extremum must stand out of its neighbours by more than
+// FeatureOptions::significance × the largest |value| seen (persistence
+// simplification: the closest pair of a neighbouring maximum and minimum, or an extremum and
+// an end of the domain, is removed while its difference is below that floor).
+// So a constant-κ curve (a circle, a helix) has no extremum, whatever rounding
+// does to dκ/ds, and a maximum and a minimum found at the same point cancel.
 #pragma once
 #include <string_view>
 #include <vector>
@@ -21,6 +30,11 @@ struct FeatureOptions {
   int samples_per_span = 32;
   /// Frenet options (tolerances, plane normal of the signed curvature). Default {}.
   FrenetOptions frenet{};
+  /// Relative size below which an extremum is not one: an extremum whose value differs from its
+  /// neighbouring extrema (or the domain ends) by at most significance × max |value| is dropped (see
+  /// the file comment). Default 1e-9: far above rounding of κ and τ (~1e-15 relative), far below any
+  /// designed variation. Valid [0, 1e-3]; 0 keeps every sign change of the derivative.
+  double significance = 1e-9;
   /// Throws hula::Error(Errc::InvalidOption) naming the bad field.
   void validate() const;
 };

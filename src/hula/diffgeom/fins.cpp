@@ -86,13 +86,16 @@ Fins build(std::span<const FrenetPoint> pts, const FinOptions& o) {
   return f;
 }
 
-std::vector<double> grid(nurbs::Interval d, int n) {
+}  // namespace
+
+std::vector<double> parameter_grid(nurbs::Interval d, int n) {
+  if (n < 1) return {};
+  if (n == 1) return {d.start};
   std::vector<double> ts(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i) ts[static_cast<std::size_t>(i)] = d.start + d.length() * i / (n - 1);
   ts.back() = d.end;
   return ts;
 }
-}  // namespace
 
 std::string_view fin_kind_name(FinKind kind) noexcept {
   switch (kind) {
@@ -131,7 +134,7 @@ void FinOptions::validate() const {
 
 Fins fins(const nurbs::NurbsCurve& curve, const FinOptions& options) {
   options.validate();
-  const std::vector<double> ts = grid(curve.domain(), options.density);
+  const std::vector<double> ts = parameter_grid(curve.domain(), options.density);
   std::vector<FrenetPoint> pts(ts.size());
   frenet(curve, ts, pts, options.frenet);
   return build(pts, options);
@@ -145,7 +148,7 @@ Fins fins(std::span<const FrenetPoint> frames, const FinOptions& options) {
 Fins fins(const curve::Curve& curve, const FinOptions& options) {
   options.validate();
   if (!curve.law()) return fins(curve.nurbs(), options);
-  const std::vector<double> ts = grid(curve.domain(), options.density);
+  const std::vector<double> ts = parameter_grid(curve.domain(), options.density);
   std::vector<FrenetPoint> pts(ts.size());
   LawFrenet(*curve.law_evaluator(3), curve.domain(), options.frenet).at(ts, pts);
   return build(pts, options);

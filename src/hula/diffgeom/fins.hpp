@@ -44,6 +44,10 @@ inline constexpr std::array<FinKind, 7> kFinKinds{FinKind::Curvature, FinKind::T
 /// The kind named `name` (fin_kind_name's spelling), or nullopt.
 [[nodiscard]] std::optional<FinKind> fin_kind_from_name(std::string_view name) noexcept;
 
+/// n equally spaced parameters over `domain`, ends included, the last exactly domain.end (n = 1: the
+/// start alone; n < 1: none): the grid of fins() and of analyse_curve's parameter samples.
+[[nodiscard]] std::vector<double> parameter_grid(nurbs::Interval domain, int n);
+
 /// Options of fins().
 struct FinOptions {
   /// Which fin. Default Curvature.

@@ -22,6 +22,11 @@ std::string_view curvature_trend_name(CurvatureTrend trend) noexcept {
 CurvatureMonotonicity curvature_monotonicity(const curve::Curve& curve, bool planar, const FeatureOptions& options) {
   const std::vector<Feature> extrema = curvature_extrema(curve, options);
   const std::vector<Feature> zeros = planar ? inflections(curve, options) : std::vector<Feature>{};
+  return curvature_monotonicity(curve, planar, extrema, zeros, options);
+}
+
+CurvatureMonotonicity curvature_monotonicity(const curve::Curve& curve, bool planar, std::span<const Feature> extrema,
+                                             std::span<const Feature> zeros, const FeatureOptions& options) {
   const auto dom = curve.domain();
   // Extrema and inflections are each located to the parameter resolution of their own search: within a
   // sample step of the bracketing grid they are the same point.

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Curvature monotonicity (issue 14 item 6): a curve's domain split into pieces
+// Curvature monotonicity: a curve's domain split into pieces
 // over which the curvature is monotone, and the points that break it. Designers
 // ask for "monotone curvature" of class-A transitions and the log-aesthetic curves
 // of Yoshida–Saito have it by construction; this analysis checks it on any curve.
@@ -12,6 +12,7 @@
 // step of an inflection neither splits a piece nor counts as a violation.
 #pragma once
 
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -57,6 +58,12 @@ struct CurvatureMonotonicity {
 /// @returns the pieces and the violations
 /// @throws hula::Error(Errc::InvalidOption) for bad options
 [[nodiscard]] CurvatureMonotonicity curvature_monotonicity(const curve::Curve& curve, bool planar,
+                                                           const FeatureOptions& options = {});
+/// The same from the curve's curvature extrema and (planar curves) inflections already found.
+/// @throws hula::Error as frenet
+[[nodiscard]] CurvatureMonotonicity curvature_monotonicity(const curve::Curve& curve, bool planar,
+                                                           std::span<const Feature> extrema,
+                                                           std::span<const Feature> inflections,
                                                            const FeatureOptions& options = {});
 
 }  // namespace hula::diffgeom

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Curves designed by their curvature (issue 14 item 6): clothoid (Euler
+// Curves designed by their curvature: clothoid (Euler
 // spiral) segments, whose curvature varies linearly with arc length, the
 // Fresnel integrals behind them, and G1 Hermite interpolation by one clothoid
 // (Bertolazzi & Frego, "G1 fitting with clothoids", Math. Meth. Appl. Sci.

@@ -253,7 +253,7 @@ struct NurbsFitResult {
 
 /// Defaults and work limits of the front ends (`hula reconstruct`, POST /api/reconstruct). The fit
 /// tolerance is relative to the curve's size (NurbsFitOptions::relative): 1e-6 of the diagonal
-/// gives a compact curve (issue 14: few control points) far below what a viewport or a CAD
+/// gives a compact curve (few control points) far below what a viewport or a CAD
 /// exchange resolves. The budgets bound the work of one request: at most kFrontEndMaxSteps step
 /// attempts of the integration (ReconstructionOptions::max_steps) and kFrontEndMaxSegments Hermite
 /// segments of the fit (3 × 2,001 control points), past which the request fails with an error

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Whole-file I/O for the io module and the CLI, safe against hostile paths and
-// faults (issue 10, items 1, 2 and 11):
+// faults:
 // - reading: a regular file or `-` (standard input), never a device, FIFO or
 //   directory, and never more than a stated number of bytes;
 // - writing: a regular file replaced atomically (a temporary file in the same

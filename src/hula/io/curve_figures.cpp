@@ -9,6 +9,7 @@
 
 #include "hula/core/error.hpp"
 #include "hula/core/vec.hpp"
+#include "hula/diffgeom/analysis.hpp"
 #include "hula/diffgeom/frenet.hpp"
 
 namespace hula::io {
@@ -190,35 +191,20 @@ void CurveFigureOptions::validate() const {
 
 CurveFigures curve_figures(const curve::Curve& subject, const CurveFigureOptions& options) {
   options.validate();
-  const Interval dom = subject.domain();
-  const auto n = static_cast<std::size_t>(options.samples);
-  std::vector<double> ts(n);
-  for (std::size_t i = 0; i < n; ++i) ts[i] = dom.start + dom.length() * static_cast<double>(i) / (n - 1.0);
-  ts.back() = dom.end;
-  std::vector<diffgeom::FrenetPoint> pts(n);
-  diffgeom::frenet(subject, ts, pts);
+  // The samples and the fins are the curve's analysis (diffgeom::analyse_curve), the one every door
+  // reports: the fins drawn are those `hula analyse --fins` and POST .../analysis answer.
+  diffgeom::AnalysisOptions ao;
+  ao.samples = options.samples;
+  ao.fins = options.fins;
+  ao.fin_scale = options.fin_scale;
+  ao.fin_density = options.fin_density;
+  diffgeom::CurveAnalysis analysis = diffgeom::analyse_curve(subject, ao);
+  const std::vector<diffgeom::FrenetPoint>& pts = analysis.samples;
+  const std::size_t n = pts.size();
 
   Box3 box;
-  double kmax = 0.0, tmax = 0.0, cmax = 0.0;  // cmax: the Combescure fin's |τ/κ T + B| = √(1 + (τ/κ)²)
-  for (const auto& p : pts) {
-    box.add(p.position);
-    if (p.tangent_defined) kmax = std::max(kmax, p.curvature);
-    if (p.torsion_defined) tmax = std::max(tmax, std::fabs(p.torsion));
-    if (p.torsion_defined && p.curvature > 0.0) cmax = std::max(cmax, std::hypot(1.0, p.torsion / p.curvature));
-  }
+  for (const auto& p : pts) box.add(p.position);
   const double size = std::max(box.diagonal(), 1e-300);
-  // Automatic fin length: a fifth of the curve's size, less for curves that coil many times
-  // (fraction 0.2 / (turns / 2), so neighbouring coils' fins do not cover each other), and at most half
-  // the smallest non-zero box extent, so a slender helix's fins keep to its diameter.
-  double turning = 0.0;
-  for (std::size_t i = 1; i < n; ++i)
-    if (pts[i - 1].tangent_defined && pts[i].tangent_defined)
-      turning += std::acos(std::clamp(dot(pts[i - 1].tangent, pts[i].tangent), -1.0, 1.0));
-  const double fraction = 0.2 / std::max(1.0, turning / (2.0 * std::numbers::pi) / 2.0);
-  double thin = HUGE_VAL;
-  for (const double e : {box.max.x - box.min.x, box.max.y - box.min.y, box.max.z - box.min.z})
-    if (e > 1e-9 * size) thin = std::min(thin, e);
-  const double longest = std::min(fraction * size, 0.5 * thin);
 
   CurveFigures out;
   const Projector view = resolve_view(options.view, box);
@@ -228,17 +214,9 @@ CurveFigures curve_figures(const curve::Curve& subject, const CurveFigureOptions
   SvgFigure curve_fig(800, 800);
   curve_fig.set_equal_aspect(true);
   std::string kinds;
-  for (const diffgeom::FinKind kind : options.fins) {
-    const double qmax = kind == diffgeom::FinKind::Curvature    ? kmax
-                        : kind == diffgeom::FinKind::Torsion    ? tmax
-                        : kind == diffgeom::FinKind::Combescure ? cmax
-                                                                : 1.0;
-    diffgeom::FinOptions fo;
-    fo.kind = kind;
-    fo.density = options.fin_density;
-    fo.scale = options.fin_scale ? *options.fin_scale : (qmax > 0 ? longest / qmax : 1.0);
-    diffgeom::Fins f = diffgeom::fins(subject, fo);
-    const FinStyle style = fin_style(kind);
+  for (const diffgeom::AnalysedFins& comb : analysis.fins) {
+    const diffgeom::Fins& f = comb.fins;
+    const FinStyle style = fin_style(comb.kind);
     std::vector<double> x0, y0, x1, y1;
     for (std::size_t i = 0; i < f.tip.size(); ++i) {
       if (!f.defined[i]) continue;
@@ -248,15 +226,15 @@ CurveFigures curve_figures(const curve::Curve& subject, const CurveFigureOptions
     }
     curve_fig.add_segments(x0, y0, x1, y1, SvgStyle{.stroke = style.colour, .width = 0.5});
     add_line(curve_fig, view, f.tip, SvgStyle{.stroke = style.colour, .width = 1.0},
-             std::string(style.label) + ", s = " + short_number(fo.scale));
-    kinds += (kinds.empty() ? "" : ", ") + std::string(diffgeom::fin_kind_name(kind));
-    out.fins.push_back({kind, fo.scale, std::move(f)});
+             std::string(style.label) + ", s = " + short_number(comb.scale));
+    kinds += (kinds.empty() ? "" : ", ") + std::string(diffgeom::fin_kind_name(comb.kind));
   }
   std::vector<Vec3> positions(n);
   for (std::size_t i = 0; i < n; ++i) positions[i] = pts[i].position;
   add_line(curve_fig, view, positions, SvgStyle{.stroke = "#000000", .width = 2.0}, "curve");
   curve_fig.set_title("curve (" + out.view_description + ")" + (kinds.empty() ? "" : " with " + kinds + " fins"));
   out.figures.push_back({"curve", std::move(curve_fig)});
+  out.fins = std::move(analysis.fins);
 
   // Graphs against t. Their y range contains 0 (a dashed zero line), so a constant profile is a flat line
   // and not magnified rounding noise. Curves in a plane z = const get signed curvature about +Z.

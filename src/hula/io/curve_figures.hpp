@@ -3,8 +3,9 @@
 // the one SVG writer: the curve in a named view with its fins (any of
 // diffgeom's fin kinds, each with its scale in the legend), and graphs of
 // curvature, torsion, radius of curvature and speed against t and the
-// logarithmic curvature graph. `hula analyse --svg` writes them; the fin
-// scale chosen here is also what it reports.
+// logarithmic curvature graph. The samples and fins are the curve's
+// diffgeom::analyse_curve, so the fins drawn are the ones every door reports.
+// `hula analyse --svg` writes them.
 #pragma once
 
 #include <optional>
@@ -13,7 +14,7 @@
 #include <vector>
 
 #include "hula/curve/curve.hpp"
-#include "hula/diffgeom/fins.hpp"
+#include "hula/diffgeom/analysis.hpp"
 #include "hula/io/svg.hpp"
 
 namespace hula::io {
@@ -45,9 +46,8 @@ enum class CurveView {
 struct CurveFigureOptions {
   /// The fins drawn on the curve figure. Default curvature and torsion.
   std::vector<diffgeom::FinKind> fins{diffgeom::FinKind::Curvature, diffgeom::FinKind::Torsion};
-  /// Fin scale s (diffgeom::FinOptions::scale) for every kind; absent: per kind, so the longest fin is
-  /// a fifth of the curve's box diagonal (divided by turns / 2 beyond two turns of the tangent) and at
-  /// most half the smallest non-zero box extent. Finite and non-zero when given.
+  /// Fin scale s (diffgeom::FinOptions::scale) for every kind; absent: diffgeom::auto_fin_scale per
+  /// kind. Finite and non-zero when given.
   std::optional<double> fin_scale{};
   /// Fins per kind, equally spaced in t, ends included. Default 120. Valid: 2 … 100000.
   int fin_density = 120;
@@ -57,13 +57,6 @@ struct CurveFigureOptions {
   int samples = 400;
   /// @throws hula::Error(Errc::InvalidOption) naming the field
   void validate() const;
-};
-
-/// One fin kind as drawn: its scale (given or chosen) and the comb.
-struct FigureFins {
-  diffgeom::FinKind kind{};
-  double scale = 1.0;
-  diffgeom::Fins fins;
 };
 
 /// A figure with its file stem ("curve", "kappa", …).
@@ -78,8 +71,8 @@ struct CurveFigures {
   /// (limited to ten times the box diagonal), speed, logcurvature; graphs whose range contains 0 (but
   /// logcurvature), NaN (undefined) samples break the lines.
   std::vector<NamedFigure> figures;
-  /// The fins drawn, in options.fins order.
-  std::vector<FigureFins> fins;
+  /// The combs drawn (the analysis's: diffgeom::analyse_curve with the options' fins), in options.fins order.
+  std::vector<diffgeom::AnalysedFins> fins;
   /// The view used (Auto resolved).
   CurveView view = CurveView::Xy;
   /// Its description, e.g. "seen from +Z" (also in the curve figure's title).

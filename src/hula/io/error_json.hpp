@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// The JSON form of hula::Error shared by the CLI (stderr) and, later, the HTTP
-// API: {"error": {"code": "InvalidKnots", "message": "...", "where": {...}}}.
+// The JSON form of hula::Error shared by the CLI (stderr) and the HTTP API
+// (every error body of `hula serve`):
+// {"error": {"code": "InvalidKnots", "message": "...", "where": {...}}}.
 // `code` is the stable errc_name; `where` holds only the ErrorWhere members
 // that are set (field, index, component, line, column).
 #pragma once

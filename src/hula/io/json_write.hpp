@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// JSON text for people and for diffs (issue 10, item 7): 2-space indentation,
+// JSON text for people and for diffs: 2-space indentation,
 // arrays of scalars on one line ("pretty but compact": a control point or a
 // knot vector reads as one line, not one number per line), no negative zero,
 // and invalid UTF-8 replaced rather than thrown on. Every JSON document the

@@ -8,7 +8,9 @@
 #include <limits>
 
 #include "hula/core/error.hpp"
+#include "hula/io/json_read.hpp"
 #include "hula/law/derive.hpp"
+#include "hula/law/parser.hpp"
 #include "hula/law/singularities.hpp"
 #include "hula/law/tape.hpp"
 
@@ -82,6 +84,39 @@ Json law_results_to_json(std::span<const double> ts, const LawValues& values, in
     results.push_back(std::move(r));
   }
   return results;
+}
+
+Json law_evaluation_json(const law::Law& l, const std::string& parameter, std::span<const double> ts, int order) {
+  Json out = Json::object();
+  out["expression"] = law::print(l);
+  out["parameter"] = parameter;
+  out["dimension"] = l.dimension();
+  if (!ts.empty())
+    out["results"] = law_results_to_json(ts, law_derivatives(l, parameter, ts, order), l.dimension(), order);
+  return out;
+}
+
+Json law_request_json(const Json& body) {
+  const json::JsonPath root;
+  json::reject_unknown_members(body, root, {"expression", "parameter", "at", "derivatives"});
+  const std::string expression =
+      json::get_string(json::require_member(body, root, "expression"), json::root_path("expression"));
+  std::string parameter = "t";
+  if (const Json* p = json::optional_member(body, "parameter"))
+    parameter = json::get_string(*p, json::root_path("parameter"));
+  int order = 0;
+  if (const Json* d = json::optional_member(body, "derivatives"))
+    order = static_cast<int>(json::get_integer(*d, json::root_path("derivatives"), 0, 16));
+  std::vector<double> ts;
+  if (const Json* at = json::optional_member(body, "at")) ts = json::get_number_array(*at, json::root_path("at"));
+  law::Context ctx;
+  law::ParseOptions po;
+  po.parameters = {parameter};
+  const law::Law l = law::parse(expression, ctx, po);
+  Json out = law_evaluation_json(l, parameter, ts, order);
+  // The route always answers "results" (empty without "at").
+  if (!out.contains("results")) out["results"] = Json::array();
+  return out;
 }
 
 }  // namespace hula::io

@@ -33,4 +33,17 @@ struct LawValues {
 /// undefined derivatives null, with "undefined": {"order", "kind", "expression", "reason"}).
 [[nodiscard]] Json law_results_to_json(std::span<const double> ts, const LawValues& values, int dimension, int order);
 
+/// {"expression" (as the law printer writes it), "parameter", "dimension"} and, when `ts` is not empty,
+/// "results" (law_results_to_json of derivatives 0..order): what `hula law EXPR --at ...` prints first and
+/// POST /api/law answers.
+/// @throws as law_derivatives
+[[nodiscard]] Json law_evaluation_json(const law::Law& law, const std::string& parameter, std::span<const double> ts,
+                                       int order);
+
+/// Answers a law request {"expression", "parameter"? ("t"), "at"?, "derivatives"? (0..16)}: the law parsed
+/// and law_evaluation_json of it (POST /api/law).
+/// @throws hula::Error(Errc::ParseError) naming the member or the expression's line and column; as
+///   law_derivatives
+[[nodiscard]] Json law_request_json(const Json& body);
+
 }  // namespace hula::io

@@ -220,7 +220,7 @@ Json on_bound_json(std::span<const optim::Variable> vars, std::span<const optim:
 }
 
 // "on_bound" (every variable of x on a bound of `vars`, the box of the round that gave x) and "warnings" (one line
-// each) of a result (issue 14 items 2, 7).
+// each) of a result.
 void bound_report(std::span<const optim::Variable> vars, std::span<const double> x, Json& out) {
   const std::vector<optim::BoundHit> hits = match_bound_hits(vars, x);
   out["on_bound"] = on_bound_json(vars, hits);
@@ -355,7 +355,7 @@ MatchSetupJson match_setup_from_json(const Json& body, const PathResolver& resol
                 {.field = "points"});
   s.lower = read_offsets(body, "lower", s.points.size(), s.dimension);
   s.upper = read_offsets(body, "upper", s.points.size(), s.dimension);
-  // "movable": the indices of the data points that may move; the others' offsets are zeroed (issue 14 item 2).
+  // "movable": the indices of the data points that may move; the others' offsets are zeroed.
   if (const Json* v = jr::optional_member(body, "movable")) {
     const jr::JsonPath mp = jr::root_path("movable");
     const Json& a = jr::get_array(*v, mp);
@@ -532,10 +532,9 @@ Json match_result_to_json(const CurvatureMatch& match, const MatchStudyFile& fil
     const DirectReconstructionResult& d = *result.direct;
     out["after"] = {{"mean", d.mean_curvature_deviation}, {"max", d.max_curvature_deviation}};
     out["direct"] = direct_reconstruction_summary(d);
-    if (d.nurbs) {
-      const nurbs::NurbsCurve& c = d.nurbs->curve;
-      out["direct"]["end_miss"] = norm(c.evaluate(c.domain().end) - study.setup.points.back());
-      out["curve"] = curve_to_json(c);
+    if (const std::optional<nurbs::NurbsCurve> c = match_result_curve(match, result)) {
+      out["direct"]["end_miss"] = norm(c->evaluate(c->domain().end) - study.setup.points.back());
+      out["curve"] = curve_to_json(*c);
     }
     out["seconds"] = result.seconds;
     out["study"] = match_study_to_json(file);
@@ -555,7 +554,8 @@ Json match_result_to_json(const CurvatureMatch& match, const MatchStudyFile& fil
       out["distinct"].push_back({{"objective", d.objectives.at(0)}, {"points", points_to_json(pts, dim)}});
     }
   }
-  out["curve"] = curve_to_json(match.sampler().curve(pts));
+  // The best curve (not the last distinct design's, which `pts` holds after the loop above).
+  out["curve"] = curve_to_json(*match_result_curve(match, result));
   out["study"] = match_study_to_json(file);
   return out;
 }

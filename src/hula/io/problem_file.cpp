@@ -67,7 +67,10 @@ law::Law read_expression(const std::string& text, const JsonPath& path, const la
 }  // namespace
 
 ProblemFile parse_problem_json(std::string_view text) {
-  const Json doc = json::parse_json_text(text, "problem file");
+  return problem_from_json(json::parse_json_text(text, "problem file"));
+}
+
+ProblemFile problem_from_json(const Json& doc) {
   const JsonPath root;
   if (!doc.is_object()) json::type_error(doc, root_path(""), "an object (a problem file)");
 

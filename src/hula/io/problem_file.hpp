@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Optimisation problem files (JSON, docs/formats.md "Problem files"): design
 // variables with bounds and an optional binary-coding precision, objectives
-// and constraints written as law expressions of the variable names (issue 5,
-// thesis 10.1: the user states the problem, Flexo solves it). The
+// and constraints written as law expressions of the variable names
+// (thesis 10.1: the user states the problem, Flexo solves it). The
 // expressions are parsed with the law parser and compiled together into one
 // Tape, which evaluates a point with no allocation and may run on several
 // threads at once, as optim::Problem::evaluate requires.
@@ -13,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "hula/io/json_read.hpp"
 #include "hula/optim/problem.hpp"
 
 namespace hula::io {
@@ -40,6 +41,11 @@ struct ProblemFile {
 /// @throws hula::Error(Errc::InvalidOption) from optim::Problem::validate (e.g. inverted bounds,
 ///   naming `variables[i].lower`), or a reference whose size differs from the objective count
 [[nodiscard]] ProblemFile parse_problem_json(std::string_view text);
+
+/// Reads a problem from a JSON value (a request body's "problem" member): the codec of
+/// parse_problem_json without the text.
+/// @throws as parse_problem_json, but for JSON syntax
+[[nodiscard]] ProblemFile problem_from_json(const json::Json& document);
 
 /// Reads a problem file.
 /// @throws hula::Error(Errc::IoError) if the file cannot be read; otherwise as parse_problem_json

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "hula/core/error.hpp"
+#include "hula/io/json_curve.hpp"
 #include "hula/io/json_read.hpp"
 #include "hula/law/parser.hpp"
 
@@ -29,6 +30,31 @@ nlohmann::json integration_summary(const intrinsic::IntrinsicCurve& curve) {
   return j;
 }
 
+law::Law natural_equation_law(const std::string& text, law::Context& context, const std::string& field,
+                              const std::string& shown) {
+  law::ParseOptions po;
+  po.parameters = {"s"};
+  try {
+    return law::parse(text, context, po);
+  } catch (const Error& e) {
+    ErrorWhere where = e.where();
+    where.field = field;
+    throw Error(e.code(), shown + " '" + text + "': " + e.message(), where);
+  }
+}
+
+nlohmann::ordered_json frame_points_json(std::span<const intrinsic::FramePoint> points) {
+  const auto vec = [](const Vec3& v) { return nlohmann::ordered_json::array({v.x, v.y, v.z}); };
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (const intrinsic::FramePoint& p : points)
+    out.push_back(nlohmann::ordered_json{{"s", p.s},
+                                         {"position", vec(p.position)},
+                                         {"T", vec(p.tangent)},
+                                         {"N", vec(p.normal)},
+                                         {"B", vec(p.binormal)}});
+  return out;
+}
+
 nlohmann::json fit_summary(const intrinsic::NurbsFitResult& fit) {
   nlohmann::json j = nlohmann::json::object();
   j["control_points"] = fit.curve.control_points().size();
@@ -40,22 +66,66 @@ nlohmann::json fit_summary(const intrinsic::NurbsFitResult& fit) {
 
 namespace {
 
-// A law of s read from a member, errors naming the member (and the law's position).
-law::Law read_law(const nlohmann::ordered_json& body, const char* field, law::Context& ctx) {
+using Json = nlohmann::ordered_json;
+namespace json = io::json;
+
+law::Law read_law(const Json& body, const char* field, law::Context& ctx) {
   const std::string text =
       json::get_string(json::require_member(body, json::JsonPath(), field), json::root_path(field));
-  law::ParseOptions po;
-  po.parameters = {"s"};
-  try {
-    return law::parse(text, ctx, po);
-  } catch (const Error& e) {
-    ErrorWhere where = e.where();
-    where.field = field;
-    throw Error(e.code(), std::string(field) + " '" + text + "': " + e.message(), where);
-  }
+  return natural_equation_law(text, ctx, field, field);
 }
 
 }  // namespace
+
+nlohmann::ordered_json reconstruction_request_json(const nlohmann::ordered_json& body) {
+  const json::JsonPath root;
+  json::reject_unknown_members(
+      body, root, {"kappa", "tau", "length", "start_point", "start_frame", "tolerance", "fit_tolerance", "at"});
+  law::Context ctx;
+  const law::Law kappa = read_law(body, "kappa", ctx);
+  const law::Law tau = read_law(body, "tau", ctx);
+  const double length = json::get_number(json::require_member(body, root, "length"), json::root_path("length"));
+  intrinsic::StartFrame start;
+  if (const Json* p = json::optional_member(body, "start_point"))
+    start.point = json::get_point(*p, json::root_path("start_point")).first;
+  if (const Json* f = json::optional_member(body, "start_frame")) {
+    const json::JsonPath path = json::root_path("start_frame");
+    json::reject_unknown_members(*f, path, {"tangent", "normal"});
+    start.tangent = json::get_point(json::require_member(*f, path, "tangent"), path.member("tangent")).first;
+    start.normal = json::get_point(json::require_member(*f, path, "normal"), path.member("normal")).first;
+  }
+  intrinsic::ReconstructionOptions options;
+  if (const Json* t = json::optional_member(body, "tolerance"))
+    options.tolerance = json::get_number(*t, json::root_path("tolerance"));
+  options.max_steps = intrinsic::kFrontEndMaxSteps;
+  intrinsic::NurbsFitOptions fit_options;
+  fit_options.tolerance = intrinsic::kFrontEndFitTolerance;
+  fit_options.relative = true;
+  fit_options.max_segments = intrinsic::kFrontEndMaxSegments;
+  if (const Json* t = json::optional_member(body, "fit_tolerance")) {
+    fit_options.tolerance = json::get_number(*t, json::root_path("fit_tolerance"));
+    try {
+      fit_options.validate();
+    } catch (const Error& e) {
+      throw Error(e.code(), "fit_" + e.message(), ErrorWhere{.field = "fit_tolerance"});
+    }
+  }
+  const intrinsic::IntrinsicCurve curve = intrinsic::reconstruct(kappa, tau, "s", length, start, options);
+  std::vector<double> ss;
+  if (const Json* at = json::optional_member(body, "at"))
+    ss = json::get_number_array(*at, json::root_path("at"));
+  else
+    for (int i = 0; i <= 4; ++i) ss.push_back(i == 4 ? length : length * i / 4.0);
+  Json points = frame_points_json(curve.evaluate(ss));
+  const intrinsic::NurbsFitResult fit = intrinsic::fit_nurbs_converged(curve, fit_options);
+  Json out = Json::object();
+  out["points"] = std::move(points);
+  out["curve"] = curve_to_json(fit.curve);
+  out["max_deviation"] = fit.max_deviation;
+  out["integration"] = integration_summary(curve);
+  out["fit"] = fit_summary(fit);
+  return out;
+}
 
 CurvatureEditRequest curvature_edit_request_from_json(const nlohmann::ordered_json& body) {
   const json::JsonPath root;
@@ -63,16 +133,8 @@ CurvatureEditRequest curvature_edit_request_from_json(const nlohmann::ordered_js
   law::Context ctx;
   CurvatureEditRequest r;
   r.edit.curvature = read_law(body, "kappa", ctx);
-  if (const nlohmann::ordered_json* t = json::optional_member(body, "target")) {
-    const std::string name = json::get_string(*t, json::root_path("target"));
-    if (name == "curvature")
-      r.edit.target = studies::CurvatureTarget::Curvature;
-    else if (name == "change")
-      r.edit.target = studies::CurvatureTarget::Change;
-    else
-      throw Error(Errc::InvalidArgument, "target = \"" + name + "\": expected \"curvature\" or \"change\"",
-                  ErrorWhere{.field = "target"});
-  }
+  if (const Json* t = json::optional_member(body, "target"))
+    r.edit.target = studies::curvature_target_from_name(json::get_string(*t, json::root_path("target")), "target");
   if (body.contains("tau")) r.edit.torsion = read_law(body, "tau", ctx);
   if (const nlohmann::ordered_json* h = json::optional_member(body, "hold"))
     r.options.hold = studies::end_hold_from_name(json::get_string(*h, json::root_path("hold")), "hold");

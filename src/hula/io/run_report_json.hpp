@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The codec of an optimisation run report (optim::RunReport; issue 10: the run
-// report is written one way). Every run report the project prints or stores
+// The codec of an optimisation run report (optim::RunReport: the
+// run report is written one way). Every run report the project prints or stores
 // — `hula optimise` and `hula optimise --islands` ("report"), the server's
 // problem jobs ("report"), the match studies ("ga", "nsga2") — is this object:
 //   {"termination", "message", "generations", "evaluations",
@@ -16,6 +16,7 @@
 #include <string>
 
 #include "hula/io/json_curve.hpp"
+#include "hula/optim/run_log.hpp"
 #include "hula/optim/run_report.hpp"
 
 namespace hula::io {
@@ -36,5 +37,16 @@ struct RunIdentity {
 /// @throws hula::Error(Errc::ParseError) naming the member that is missing or mistyped, or an unknown
 ///   termination name
 [[nodiscard]] optim::RunReport run_report_from_json(const Json& json);
+
+/// The progress event of one generation (a server job's "generation" event): {"generation", "evaluations",
+/// "best": objectives of the best individual (feasible first, then smallest first objective; null for an
+/// undefined value), "front" (several objectives: the first front's objectives, fitness = rank 0), "elapsed":
+/// `elapsed` seconds}.
+[[nodiscard]] Json generation_event_json(const optim::GenerationLog& generation, double elapsed);
+
+/// A run log as a JSON value with the members optim::RunLog::write_json writes: {"generations":
+/// [{"generation", "evaluations", "individuals": [{"variables", "objectives", "violation", "fitness",
+/// "failed"}]}]}, NaN as null: the log a document stores with a study run.
+[[nodiscard]] Json run_log_to_json(const optim::RunLog& log);
 
 }  // namespace hula::io

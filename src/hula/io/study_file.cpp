@@ -18,8 +18,12 @@ constexpr std::string_view kEnvelope[] = {"format", "version", "study", "seed", 
 }  // namespace
 
 StudyDocument parse_study_json(std::string_view text, std::string_view expected_kind) {
+  return study_from_json(json::parse_json_text(text, "study file"), expected_kind);
+}
+
+StudyDocument study_from_json(Json body, std::string_view expected_kind) {
   StudyDocument out;
-  out.body = json::parse_json_text(text, "study file");
+  out.body = std::move(body);
   const Json& doc = out.body;
   if (!doc.is_object()) json::type_error(doc, root_path(""), "a JSON object (a study file)");
   const std::string format = json::get_string(json::require_member(doc, root_path(""), "format"), root_path("format"));

@@ -40,6 +40,10 @@ struct StudyDocument {
 /// @throws hula::Error(Errc::ParseError) for a seed or threads that is not a non-negative integer
 [[nodiscard]] StudyDocument parse_study_json(std::string_view text, std::string_view expected_kind);
 
+/// The same from a JSON value (a study a document stores, a request body): no text in between.
+/// @throws as parse_study_json, but for JSON syntax
+[[nodiscard]] StudyDocument study_from_json(Json body, std::string_view expected_kind);
+
 /// Reads a study file.
 /// @throws hula::Error(Errc::IoError) if it cannot be read; otherwise as parse_study_json
 [[nodiscard]] StudyDocument read_study_file(const std::filesystem::path& path, std::string_view expected_kind);

@@ -31,7 +31,7 @@ struct SpanCache {
   // True when no derivative of a non-rational curve can overflow inside the
   // domain (bounded at build time), so the evaluators skip the finiteness probe.
   bool derivatives_bounded = false;
-  // Exact ends (issue 10, item 9): at a breakpoint of multiplicity ≥ p (the clamped ends, C0
+  // Exact ends: at a breakpoint of multiplicity ≥ p (the clamped ends, C0
   // joins) one basis function is 1 and the curve passes through a control point. exact[b] = 1
   // marks breaks[b] as such a point and exact_point[b] holds that control point, returned as is
   // instead of the rounded sum of the span polynomial.

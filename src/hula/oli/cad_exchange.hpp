@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The document's side of STEP/IGES exchange (issue 11 item 9): curve entities
+// The document's side of STEP/IGES exchange: curve entities
 // out through oli/exchange (the isolated Open CASCADE helper) and the curves
 // of a file in as new entities with their names and provenance. Law and
 // natural-equation curves leave as their NURBS approximation, with the

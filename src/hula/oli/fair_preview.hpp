@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The fairing preview of an entity (issue 13 item 6): the fairing assistant's
+// The fairing preview of an entity: the fairing assistant's
 // ghost of a curve entity (studies::fair_within_tolerance), computed from an
 // immutable Entity snapshot so a caller can read the entity under a document
 // lock and compute with no lock held. Nothing in the document changes; a

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// JSON export and import of entities: the lossless exchange path (issue 11
-// item 9). One entity is written in its own file format — a curve as its curve
+// JSON export and import of entities: the lossless exchange path.
+// One entity is written in its own file format — a curve as its curve
 // file, a point set as a points file, a study as its study file — so any
 // `hula` command reads it; several entities as a "hula-document" JSON file
 // (docs/formats.md "Document JSON"). Import reads any of these and adds new

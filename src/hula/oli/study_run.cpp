@@ -4,8 +4,8 @@
 
 #include <algorithm>
 #include <iterator>
+#include <optional>
 #include <set>
-#include <sstream>
 
 #include "hula/core/error.hpp"
 #include "hula/curve/curve.hpp"
@@ -14,6 +14,7 @@
 #include "hula/io/json_curve.hpp"
 #include "hula/io/match_study_file.hpp"
 #include "hula/io/path_resolver.hpp"
+#include "hula/io/run_report_json.hpp"
 #include "hula/io/study_file.hpp"
 #include "hula/oli/detail/entity_codec.hpp"
 #include "hula/studies/curvature_torsion_match.hpp"
@@ -56,11 +57,7 @@ void resolve_entities(Json& value, const Document& document, std::set<Label>& re
     for (Json& element : value) resolve_entities(element, document, read);
 }
 
-Json log_json(const optim::RunLog& log) {
-  std::ostringstream text;
-  log.write_json(text);
-  return Json::parse(text.str());
-}
+Json log_json(const optim::RunLog& log) { return io::run_log_to_json(log); }
 
 void run_match(const io::StudyDocument& doc, const std::filesystem::path& base, const StudyRunOptions& options,
                ComputedStudy& out) {
@@ -73,7 +70,8 @@ void run_match(const io::StudyDocument& doc, const std::filesystem::path& base, 
   out.run.seed = file.study.header.seed;
   out.run.result = io::match_result_to_json(match, file, result);
   out.run.log = log_json(result.log);
-  out.curves.emplace_back(io::curve_from_json(out.run.result.at("curve")), out.prepared.kind + " result");
+  if (std::optional<nurbs::NurbsCurve> c = studies::match_result_curve(match, result))
+    out.curves.emplace_back(std::move(*c), out.prepared.kind + " result");
 }
 
 void run_match_torsion(const io::StudyDocument& doc, const std::filesystem::path& base, const StudyRunOptions& options,
@@ -88,9 +86,11 @@ void run_match_torsion(const io::StudyDocument& doc, const std::filesystem::path
   out.run.seed = study.header.seed;
   out.run.result = io::torsion_match_result_to_json(match, file, result);
   out.run.log = log_json(result.log);
-  const Json& compromise = out.run.result.value("compromise", Json());
-  if (compromise.is_object() && compromise.contains("curve"))
-    out.curves.emplace_back(io::curve_from_json(compromise.at("curve")), out.prepared.kind + " compromise");
+  if (!result.front.empty()) {
+    std::vector<Vec3> pts(match.setup().points.size());
+    match.points_from(result.front[result.compromise].variables, pts);
+    out.curves.emplace_back(match.sampler().curve(pts), out.prepared.kind + " compromise");
+  }
 }
 
 // As `hula fair-knots` without the energy map and figures: the chord-length start, the given
@@ -245,7 +245,7 @@ ComputedStudy compute_study(PreparedStudy prepared, const std::filesystem::path&
   ComputedStudy out;
   out.prepared = std::move(prepared);
   const std::string& kind = out.prepared.kind;
-  const io::StudyDocument doc = io::parse_study_json(out.prepared.resolved.dump(), kind);
+  const io::StudyDocument doc = io::study_from_json(out.prepared.resolved, kind);
   if (kind == "match-curvature")
     run_match(doc, base, options, out);
   else if (kind == "match-curvature-torsion")

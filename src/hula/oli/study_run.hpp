@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Study runs stored in the document (issue 11 item 5, thesis 9.5.4): a study
+// Study runs stored in the document (thesis 9.5.4): a study
 // file is added as a study entity holding its setup; each run records its
 // seed, its result (champion, distances, termination — the study's own result
 // document), its run log, and adds its result curve as a new curve entity

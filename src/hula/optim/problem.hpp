@@ -133,7 +133,7 @@ struct BatchReport {
 BatchReport evaluate_batch(const Problem& problem, std::span<const double> points, std::span<double> values,
                            std::span<std::uint8_t> failed, const BatchOptions& options = {});
 
-/// A variable that ended on (or within a tolerance of) one of its bounds (issue 14: results that sit on a bound
+/// A variable that ended on (or within a tolerance of) one of its bounds (results that sit on a bound
 /// are warned about, the thesis's cue to widen or re-centre the bounds, 7.4.1 / 8.2.1).
 struct BoundHit {
   /// Index in Problem::variables.

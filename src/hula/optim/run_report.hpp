@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Stop criteria, cancellation and the run report shared by every iterative
 // solver: the Flexo algorithms, pagmo's through the adapter, Nelder–Mead and
-// the studies' Levenberg–Marquardt stage (one termination enum and message,
-// issue 10). Modelled on Ceres' Solver::Summary (termination type + message)
+// the studies' Levenberg–Marquardt stage (one termination enum and
+// message). Modelled on Ceres' Solver::Summary (termination type + message)
 // and pagmo's up-front option checks: StopCriteria::validate() refuses bad
 // values before any work, and the report says why and when a run ended.
 #pragma once

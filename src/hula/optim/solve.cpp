@@ -2,11 +2,13 @@
 #include "hula/optim/solve.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <span>
 #include <string>
+#include <string_view>
 #include <utility>
 
 #include "hula/core/error.hpp"
@@ -79,6 +81,42 @@ SolveResult solve_result(const Problem& problem, IslandsResult islands) {
   out.report = std::move(islands.report);
   out.islands = std::move(islands.islands);
   return out;
+}
+
+namespace {
+constexpr std::string_view kPagmoPrefix = "pagmo-";
+constexpr std::array<std::string_view, 7> kPagmoNames{"cmaes", "de", "sade", "pso", "sga", "moead", "nsga2"};
+}  // namespace
+
+SolverOptions solver_from_name(std::string_view name, std::string_view field) {
+  if (name == "ga-real") return RealGaOptions{};
+  if (name == "ga-binary") return BinaryGaOptions{};
+  if (name == "nsga2") return Nsga2Options{};
+  if (name == "nelder-mead") return NelderMeadOptions{};
+  if (name.starts_with(kPagmoPrefix)) {
+    const std::string_view pagmo = name.substr(kPagmoPrefix.size());
+    if (std::find(kPagmoNames.begin(), kPagmoNames.end(), pagmo) != kPagmoNames.end()) {
+      PagmoOptions o;
+      o.algorithm = pagmo_algorithm(pagmo);
+      return o;
+    }
+  }
+  throw Error(Errc::InvalidArgument,
+              std::string(field) + " = \"" + std::string(name) +
+                  "\" is not an algorithm (expected ga-binary, ga-real, nsga2, nelder-mead or pagmo-<name> with "
+                  "<name> one of cmaes, de, sade, pso, sga, moead, nsga2)",
+              {.field = std::string(field)});
+}
+
+std::string solver_name(const SolverOptions& options) {
+  if (std::holds_alternative<RealGaOptions>(options)) return "ga-real";
+  if (std::holds_alternative<BinaryGaOptions>(options)) return "ga-binary";
+  if (std::holds_alternative<Nsga2Options>(options)) return "nsga2";
+  if (std::holds_alternative<NelderMeadOptions>(options)) return "nelder-mead";
+  const PagmoAlgorithm a = std::get<PagmoOptions>(options).algorithm;
+  for (const std::string_view n : kPagmoNames)
+    if (pagmo_algorithm(n) == a) return std::string(kPagmoPrefix) + std::string(n);
+  return std::string(kPagmoPrefix);
 }
 
 IslandAlgorithm island_algorithm(const SolverOptions& algorithm) {

@@ -1,16 +1,20 @@
 // SPDX-License-Identifier: MIT
-// One way to choose and run an optimiser (issue 10): optim::solve takes a
+// One way to choose and run an optimiser: optim::solve takes a
 // problem and the options of one algorithm — the binary or real-coded GA,
 // NSGA-II, Nelder–Mead, or one of pagmo2's through the adapter — optionally
 // run as islands (islands.hpp), and returns the best solution (one objective)
-// or the final non-dominated front (several) with one RunReport. `hula
-// optimise`, the Python `optimise` and the server's problem jobs call it, so
-// an algorithm is chosen, validated and reported the same way everywhere.
+// or the final non-dominated front (several) with one RunReport. An algorithm
+// is named one way (solver_from_name: `hula optimise --algorithm`, the Python
+// `optimise(algorithm=...)` and a server problem job's "algorithm" all read
+// their name through it), and `hula optimise`, the Python `optimise` and the
+// server's problem jobs run it through solve().
 //
 // Built in the hula::optim_pagmo target (it links pagmo for PagmoOptions).
 #pragma once
 
 #include <optional>
+#include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -27,6 +31,15 @@ namespace hula::optim {
 
 /// The algorithm and its options.
 using SolverOptions = std::variant<RealGaOptions, BinaryGaOptions, Nsga2Options, NelderMeadOptions, PagmoOptions>;
+
+/// The options of the algorithm named `name`, with their defaults: "ga-real", "ga-binary", "nsga2",
+/// "nelder-mead" or "pagmo-<name>" (<name> one of pagmo_algorithm's: cmaes, de, sade, pso, sga, moead,
+/// nsga2). The one reader of algorithm names.
+/// @throws hula::Error(Errc::InvalidArgument) naming `field` and listing the accepted names
+[[nodiscard]] SolverOptions solver_from_name(std::string_view name, std::string_view field = "algorithm");
+
+/// The name of the algorithm of `options` (solver_from_name's spelling; pagmo's as "pagmo-<name>").
+[[nodiscard]] std::string solver_name(const SolverOptions& options);
 
 /// What optim::solve runs.
 struct SolveOptions {

@@ -13,6 +13,7 @@
 // the file, which is closed before it moves to the trash.
 #pragma once
 
+#include <algorithm>
 #include <filesystem>
 #include <functional>
 #include <map>
@@ -34,6 +35,13 @@ namespace hula::server {
 /// A change set as JSON: {"cause": "commit"|"undo"|"redo", "name", "revision", "added", "changed",
 /// "removed", "attributes_changed"} (labels as integers).
 [[nodiscard]] Json change_set_to_json(const oli::ChangeSet& changes);
+
+/// A change and snapshots of the entities it added or changed (data or attributes), in label order,
+/// taken under the writer's lock right after it: what the reply of a change carries.
+struct Change {
+  oli::Outcome outcome{};
+  std::vector<oli::Entity> entities{};
+};
 
 /// One open document.
 class OpenDocument {
@@ -60,6 +68,28 @@ class OpenDocument {
     std::unique_lock lock(mutex_);
     throw_if_closed();
     return write(*document_);
+  }
+
+  /// Runs `write` (a transaction, undo or redo returning its oli::Outcome) under the exclusive lock, as
+  /// write(), and snapshots the entities its change set added or changed.
+  /// @throws as write()
+  template <class F>
+  Change change(F&& write) {
+    std::unique_lock lock(mutex_);
+    throw_if_closed();
+    Change c;
+    c.outcome = write(*document_);
+    if (c.outcome.committed) {
+      const oli::ChangeSet& s = c.outcome.changes;
+      std::vector<oli::Label> labels = s.added;
+      labels.insert(labels.end(), s.changed.begin(), s.changed.end());
+      labels.insert(labels.end(), s.attributes_changed.begin(), s.attributes_changed.end());
+      std::sort(labels.begin(), labels.end());
+      labels.erase(std::unique(labels.begin(), labels.end()), labels.end());
+      for (const oli::Label l : labels)
+        if (document_->contains(l)) c.entities.push_back(document_->get(l));
+    }
+    return c;
   }
 
   /// Closes the document once the reader or writer holding it is done: its file is closed (SQLite

@@ -22,7 +22,7 @@
 #include <thread>
 #include <vector>
 
-#include "hula/optim/run_report.hpp"
+#include "hula/oli/problem_run.hpp"
 #include "hula/server/events.hpp"
 #include "hula/server/http.hpp"
 
@@ -43,7 +43,7 @@ struct JobOutcome {
 /// What a job's work sees while it runs.
 struct JobContext {
   /// Set by DELETE /api/jobs/{id} or by the server's shutdown; pass it to the algorithm.
-  const optim::CancellationToken& cancel;
+  const oli::CancellationToken& cancel;
   /// Publishes one progress event ("generation") to the job's subscribers.
   std::function<void(const Json&)> publish;
 };
@@ -70,7 +70,7 @@ class Job {
   JobState state_ = JobState::Queued;
   JobOutcome outcome_{};
   Json error_ = nullptr;
-  optim::CancellationToken cancel_;
+  oli::CancellationToken cancel_;
   /// The thread running the job (Linux thread id), 0 before it starts.
   pid_t thread_ = 0;
   JobWork work_;

@@ -479,6 +479,14 @@ std::string_view curvature_target_name(CurvatureTarget target) noexcept {
   return target == CurvatureTarget::Change ? "change" : "curvature";
 }
 
+CurvatureTarget curvature_target_from_name(std::string_view name, std::string_view field) {
+  if (name == "curvature") return CurvatureTarget::Curvature;
+  if (name == "change") return CurvatureTarget::Change;
+  throw Error(Errc::InvalidArgument,
+              std::string(field) + " = \"" + std::string(name) + "\": expected \"curvature\" or \"change\"",
+              ErrorWhere{.field = std::string(field)});
+}
+
 void CurvatureEditOptions::validate() const {
   if (!(max_handles_factor >= 1.0 && max_handles_factor <= 10.0))
     invalid_option("max_handles_factor", max_handles_factor, "[1, 10]");

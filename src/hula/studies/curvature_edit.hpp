@@ -69,6 +69,8 @@ enum class CurvatureTarget {
 
 /// "curvature" | "change".
 [[nodiscard]] std::string_view curvature_target_name(CurvatureTarget target) noexcept;
+/// @throws hula::Error(Errc::InvalidArgument) naming `field` for any other name
+[[nodiscard]] CurvatureTarget curvature_target_from_name(std::string_view name, std::string_view field);
 
 /// The edit: laws of the original curve's arc length on [0, L].
 struct CurvatureEdit {

@@ -128,7 +128,7 @@ struct CurvatureMatchSetup {
   std::optional<Profile> target{};
   /// Optional target torsion profile τ*(u) (for the curvature + torsion study).
   std::optional<Profile> torsion_target{};
-  /// Proximity weights w_i >= 0 per data point (issue 14 item 2: local edits stay local), or empty (default: none).
+  /// Proximity weights w_i >= 0 per data point (local edits stay local), or empty (default: none).
   /// The GA's curvature objective becomes e + Σ_i w_i |p_i − p_i⁰|² (p⁰ the start points; w in 1 / model unit³, so
   /// that the term is a curvature like e), and the least-squares refinement appends the residuals
   /// √w_i (x_j − x_j⁰) for each free coordinate j of point i. Reported distances stay pure curvature distances.

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Curvature and torsion as two objectives (issue 6 item 4; the thesis's 8.2.1
+// Curvature and torsion as two objectives (the thesis's 8.2.1
 // discussion: "there is no facility in the GA to include a second,
 // independent evaluation function"). The design variables are the free data
 // coordinates of a curvature-matching problem (curvature_match.hpp) whose

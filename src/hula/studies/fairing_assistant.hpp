@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The fairing assistant of the workbench (issue 13 item 6): a faired "ghost" of
+// The fairing assistant of the workbench: a faired "ghost" of
 // a curve that lowers its curvature-variation energy ∫(dκ/ds)² ds while every
 // data point stays within a tolerance the user sets. Two methods:
 //  - knot fairing (thesis 7.2–7.4): the interpolated spline keeps its data

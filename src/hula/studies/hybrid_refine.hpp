@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Hybrid refinement (issue 6 item 3, issue 14 item 1): after the GA, a bounded
+// Hybrid refinement: after the GA, a bounded
 // nonlinear least-squares solve on the residuals r_i = κ(u_i) − κ*(u_i) of the
 // curvature-matching problem, so that matching reaches 1e-6 in mean curvature
 // distance where an exact solution exists, with tens of free coordinates (the

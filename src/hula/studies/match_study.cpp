@@ -160,7 +160,7 @@ DirectReconstructionResult run_direct(const CurvatureMatch& match, const MatchSt
   return reconstruct_direct(p, o);
 }
 
-// The hybrid's second start (issue 14 item 1): the planar curve integrated from the target profile (read as a
+// The hybrid's second start: the planar curve integrated from the target profile (read as a
 // function of the normalised arc length, which the chord-length parameter approximates), its points taken at
 // the start design's chord-length parameters and clamped into the bounds. Unset for space studies (no torsion
 // to integrate) or where the integration fails.
@@ -197,7 +197,7 @@ std::optional<std::vector<double>> direct_start(const CurvatureMatch& match, con
   }
 }
 
-// The hybrid's start through the target's own data parameters (issue 14 item 1). A target that is the curvature
+// The hybrid's start through the target's own data parameters. A target that is the curvature
 // profile of a spline through the data points tells where they sit: its slope jumps at their parameters t_k, and
 // its zero crossings give the sign of κ (spline_profile_breaks). The signed samples, read as a profile of the
 // normalised arc length (a chord-length parameter differs from it by O(h² κ²) within a span) and joined linearly,
@@ -556,6 +556,16 @@ MatchResult run_curvature_match(const CurvatureMatch& match, const MatchStudy& s
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return result;
+}
+
+std::optional<nurbs::NurbsCurve> match_result_curve(const CurvatureMatch& match, const MatchResult& result) {
+  if (result.direct) {
+    if (!result.direct->nurbs) return std::nullopt;
+    return result.direct->nurbs->curve;
+  }
+  std::vector<Vec3> pts(match.setup().points.size());
+  match.points_from(result.best, pts);
+  return match.sampler().curve(pts);
 }
 
 }  // namespace hula::studies

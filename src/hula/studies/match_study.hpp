@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The "match-curvature" study (thesis 8.2.1, appendix 5; issue 6 items 2-3):
+// The "match-curvature" study (thesis 8.2.1, appendix 5):
 // settings of the GA, hybrid and direct routes and the run. The study file kind
 // "match-curvature" (docs/formats.md) is read and written by io/match_study_file.hpp.
 //
@@ -37,7 +37,7 @@ enum class MatchMethod {
   Hybrid,
   /// No search: the natural-equation solver integrates the target profile (as an arc-length profile)
   /// from the start point and frame, optionally held to the end point / end tangent
-  /// (direct_reconstruction.hpp; issue 6 item 5).
+  /// (direct_reconstruction.hpp).
   Direct,
 };
 
@@ -98,7 +98,7 @@ struct MatchDirectSettings {
 };
 
 /// A design variable within this fraction of its box width from a bound is reported "on the bound" and starts
-/// a re-centred round (issue 14 item 2): a GA's best pressing against a bound rarely lands exactly on it (Example
+/// a re-centred round: a GA's best pressing against a bound rarely lands exactly on it (Example
 /// 3's GA stops at x = 49.8 of 50 with a box of 20).
 inline constexpr double kOnBoundFraction = 0.02;
 
@@ -234,5 +234,10 @@ struct MatchResult {
 /// @throws hula::Error(Errc::NumericalFailure) if no candidate could be evaluated
 [[nodiscard]] MatchResult run_curvature_match(const CurvatureMatch& match, const MatchStudy& study,
                                               bool keep_log = false);
+
+/// The curve a run found, as a value: the direct method's NURBS fit (none when it made no fit), or the
+/// spline through the best data points (MatchResult::best) for the GA and hybrid methods.
+[[nodiscard]] std::optional<nurbs::NurbsCurve> match_result_curve(const CurvatureMatch& match,
+                                                                  const MatchResult& result);
 
 }  // namespace hula::studies

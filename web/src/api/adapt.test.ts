@@ -31,12 +31,13 @@ describe('server JSON adapters', () => {
     });
   });
 
-  // Analysis columns of a straight segment of length 2 sampled by arc length: s = 0, 1, 2 (no s column sent);
-  // fins become hairs plus an envelope split at undefined tips; knots become C/G badges.
+  // Analysis columns of a straight segment of length 2 sampled by arc length (the server's s column); fins
+  // become hairs plus an envelope split at undefined tips; knots become C/G badges; planarity is the server's.
   it('regroups the analysis columns', () => {
     const a = analysisFromServer(
       {
         t: [0, 0.5, 1],
+        s: [0, 1, 2],
         points: [
           [0, 0, 0],
           [1, 0, 0],
@@ -53,10 +54,12 @@ describe('server JSON adapters', () => {
         },
         curvature: [0, 0, 0],
         torsion: [null, null, null],
+        curvature_derivative: [null, null, null],
         speed: [2, 2, 2],
         fins: [
           {
             kind: 'curvature',
+            scale: 1,
             t: [0, 0.5, 1],
             base: [
               [0, 0, 0],
@@ -66,10 +69,26 @@ describe('server JSON adapters', () => {
             tip: [[0, 1, 0], null, [2, 1, 0]],
           },
         ],
+        planarity: { planar: true, normal: null, max_deviation: 0, tolerance: 1e-10 },
         features: {
           inflections: [],
           curvature_extrema: [],
-          knots: [{ t: 0.5, multiplicity: 1, parametric: 2, geometric: 2, tangent_angle: 0 }],
+          torsion_extrema: [],
+          knots: [
+            {
+              t: 0.5,
+              multiplicity: 1,
+              parametric: 2,
+              geometric: 2,
+              tangent_angle: 0,
+              curvature_left: 0,
+              curvature_right: 0,
+              left: [],
+              right: [],
+            },
+          ],
+          curvature_monotonicity: { monotone: true, pieces: [], violations: [] },
+          maximum_curvature: { value: 0, t: 0 },
         },
       },
       'arclength',

@@ -2,6 +2,7 @@
 // page's shapes: entities with their curve file, the analysis columns as
 // drawable polylines, the history list. Renaming and regrouping only.
 
+import type * as Api from './openapi';
 import type { Analysis, CurveFile, Entity, Feature, FinKind, Frame, History, Point } from './types';
 
 type Json = Record<string, unknown>;
@@ -60,69 +61,37 @@ export function isCurveKind(kind: string): boolean {
   return kind === 'curve' || CURVE_KINDS.has(kind);
 }
 
-function column(j: Json, name: string): (number | null)[] {
-  const c = j[name];
-  return Array.isArray(c) ? (c as (number | null)[]) : [];
-}
-
-function points(c: unknown): Point[] {
-  return Array.isArray(c) ? (c as Point[]) : [];
-}
-
 const nan3 = [NaN, NaN, NaN];
 
 /**
- * POST …/analysis: columns t, points, frames {T, N, B}, curvature, torsion,
- * speed (null where undefined), fins [{kind, t, base, tip}], features
- * {inflections, curvature_extrema, knots}. `by` is what was asked: with
- * arclength samples the abscissa s is the server's `s` column when given.
+ * POST …/analysis (io::curve_analysis_json, docs/formats.md "Curve analysis"):
+ * columns t, s?, points, frames {T, N, B}, curvature, torsion, speed (null
+ * where undefined), fins [{kind, scale, t, base, tip}], planarity, features
+ * {inflections, curvature_extrema, torsion_extrema, knots, …}. The features
+ * and the planarity are the server's, taken as they are. `by` is what was
+ * asked: with arclength samples the abscissa s is the server's `s` column.
  */
-export function analysisFromServer(j: Json, by: 'parameter' | 'arclength'): Analysis {
-  const t = column(j, 't').map((v) => v ?? NaN);
-  const pts = points(j['points']);
-  const framesJ = (j['frames'] ?? {}) as Json;
-  const T = points(framesJ['T']);
-  const N = points(framesJ['N']);
-  const B = points(framesJ['B']);
+export function analysisFromServer(j: Api.Analysis, by: 'parameter' | 'arclength'): Analysis {
+  const t = j.t;
+  const pts = j.points.map((p) => p ?? nan3);
   const frames: Frame[] = pts.map((_, i) => ({
-    T: T[i] ?? nan3,
-    N: N[i] ?? nan3,
-    B: B[i] ?? nan3,
+    T: j.frames.T[i] ?? nan3,
+    N: j.frames.N[i] ?? nan3,
+    B: j.frames.B[i] ?? nan3,
   }));
-  const kappa = column(j, 'curvature');
-  const tau = column(j, 'torsion');
-  const speed = column(j, 'speed').map((v) => v ?? NaN);
-  const s = arcLength(j, pts, by);
+  const kappa = j.curvature;
+  const tau = j.torsion;
+  const speed = j.speed.map((v) => v ?? NaN);
+  // By arc length the server sends the arc length of every sample (`s`).
+  const s = by === 'arclength' || j.s ? (j.s ?? []) : [];
   const fins: Partial<Record<FinKind, Point[][]>> = {};
   const combs: Analysis['combs'] = {};
-  const finList = Array.isArray(j['fins']) ? (j['fins'] as Json[]) : [];
-  for (const comb of finList) {
-    const kind = comb['kind'] as FinKind;
-    const base = points(comb['base']);
-    const tip = points(comb['tip']) as (Point | null)[];
-    combs[kind] = { base, tip };
-    fins[kind] = finLines(base, tip, 1);
+  for (const comb of j.fins) {
+    const base = comb.base.map((p) => p ?? nan3);
+    combs[comb.kind] = { base, tip: comb.tip };
+    fins[comb.kind] = finLines(base, comb.tip, 1);
   }
-  const features: Feature[] = [];
-  const f = (j['features'] ?? {}) as Json;
-  for (const x of (f['inflections'] ?? []) as Json[])
-    features.push({ kind: 'inflection', t: x['t'] as number });
-  for (const x of (f['curvature_extrema'] ?? []) as Json[]) {
-    features.push({
-      kind: `curvature-${String(x['kind']).includes('max') ? 'max' : 'min'}`,
-      t: x['t'] as number,
-      value: x['curvature'] as number,
-    });
-  }
-  for (const x of (f['knots'] ?? []) as Json[]) {
-    const c = x['parametric'] as number;
-    const g = x['geometric'] as number;
-    features.push({
-      kind: 'knot',
-      t: x['t'] as number,
-      continuity: `${c < 0 ? 'C–' : `C${c}`}/${g < 0 ? 'G–' : `G${g}`}`,
-    });
-  }
+  const features = j.features ? featuresFromServer(j.features) : [];
   // Feature abscissae in s: the sample nearest in t (for the graph markers).
   for (const feat of features) {
     let best = 0;
@@ -130,11 +99,41 @@ export function analysisFromServer(j: Json, by: 'parameter' | 'arclength'): Anal
       if (Math.abs(t[i]! - feat.t) < Math.abs(t[best]! - feat.t)) best = i;
     if (s.length) feat.s = s[best]!;
   }
-  const planar = isPlanar(kappa, tau);
+  const planar = j.planarity.planar;
   return { t, s, points: pts, kappa, tau, speed, planar, frames, fins, combs, features };
 }
 
-/** A curve is planar when its torsion is zero (or undefined) at every sample. */
+/**
+ * The server's feature lists as the page's markers, one for one and in the
+ * server's order: inflections, curvature extrema ("curvature-max"/"-min"),
+ * torsion extrema ("torsion-max"/"-min"), knots with the continuity reached.
+ */
+export function featuresFromServer(f: NonNullable<Api.Analysis['features']>): Feature[] {
+  const features: Feature[] = f.inflections.map((x) => ({ kind: 'inflection', t: x.t }));
+  for (const x of f.curvature_extrema)
+    features.push({
+      kind: `curvature-${x.kind === 'maximum' ? 'max' : 'min'}`,
+      t: x.t,
+      value: x.curvature,
+    });
+  for (const x of f.torsion_extrema)
+    features.push({
+      kind: `torsion-${x.kind === 'maximum' ? 'max' : 'min'}`,
+      t: x.t,
+      value: x.torsion,
+    });
+  for (const x of f.knots) {
+    const c = x.parametric === null ? 'C–' : `C${x.parametric}`;
+    const g = x.geometric === null ? 'G–' : `G${x.geometric}`;
+    features.push({ kind: 'knot', t: x.t, continuity: `${c}/${g}` });
+  }
+  return features;
+}
+
+/**
+ * A curve is planar when its torsion is zero (or undefined) at every sample:
+ * the page's preview only (the server's analysis says so itself).
+ */
 export function isPlanar(
   kappa: readonly (number | null)[],
   tau: readonly (number | null)[],
@@ -166,31 +165,6 @@ export function finLines(base: Point[], tip: (Point | null)[], factor: number): 
   });
   if (envelope.length > 1) lines.push(envelope);
   return lines;
-}
-
-/**
- * Arc length at each sample: the server's `s` column when it sends one; else,
- * for samples equally spaced in arc length, i/(n−1) of the server's `length`,
- * or of the sampled polygon's length (within the sampling's chord error) when
- * no length is sent. Parameter samples without `s` get no arc length.
- */
-function arcLength(j: Json, pts: Point[], by: 'parameter' | 'arclength'): number[] {
-  const s = column(j, 's');
-  if (s.length === pts.length && s.length > 0) return s.map((v) => v ?? NaN);
-  if (by !== 'arclength' || pts.length < 2) return [];
-  let length = typeof j['length'] === 'number' ? j['length'] : 0;
-  if (!(length > 0)) {
-    for (let i = 1; i < pts.length; i++) {
-      const a = pts[i - 1]!;
-      const b = pts[i]!;
-      length += Math.hypot(
-        (b[0] ?? 0) - (a[0] ?? 0),
-        (b[1] ?? 0) - (a[1] ?? 0),
-        (b[2] ?? 0) - (a[2] ?? 0),
-      );
-    }
-  }
-  return pts.map((_, i) => (length * i) / (pts.length - 1));
 }
 
 /** GET …/history: {revision, history: [{revision, name, time, changed, applied}]}. */

@@ -24,6 +24,7 @@ import type {
   ReconstructRequest,
   ReconstructResponse,
 } from './types';
+import type * as Api from './openapi';
 import { analysisFromServer, entityFromServer, historyFromServer, isCurveKind } from './adapt';
 
 /** An error answer of the server, or a network failure (status 0). */
@@ -181,10 +182,12 @@ export class Client {
     label: string,
     moves: { index: number; to: number[] }[],
     continued: boolean,
+    analysis?: AnalysisRequest,
   ): Promise<ChangeReply> {
     return this.request('PATCH', `${this.doc(doc)}/entities/${encodeURIComponent(label)}`, {
       move: moves,
       continue: continued,
+      ...(analysis ? { analysis } : {}),
     });
   }
   patchEntity(doc: string, label: string, patch: Record<string, unknown>): Promise<ChangeReply> {
@@ -240,7 +243,7 @@ export class Client {
     req: AnalysisRequest,
     signal?: AbortSignal,
   ): Promise<Analysis> {
-    const j = await this.request<Record<string, unknown>>(
+    const j = await this.request<Api.Analysis>(
       'POST',
       `${this.doc(doc)}/entities/${encodeURIComponent(label)}/analysis`,
       req,
@@ -256,13 +259,13 @@ export class Client {
     req: FairPreviewRequest,
     signal?: AbortSignal,
   ): Promise<FairPreview> {
-    const j = await this.request<Record<string, unknown> & Omit<FairPreview, 'analysis'>>(
+    const j = await this.request<Omit<FairPreview, 'analysis'> & { analysis?: Api.Analysis }>(
       'POST',
       `${this.doc(doc)}/entities/${encodeURIComponent(label)}/fair-preview`,
       req,
       signal,
     );
-    const a = j['analysis'] as Record<string, unknown> | undefined;
+    const a = j.analysis;
     return {
       ...j,
       analysis: a && req.analysis ? analysisFromServer(a, req.analysis.by) : undefined,

@@ -7,18 +7,7 @@ import { analyseNurbs } from './analysis';
 const data = (name: string): unknown =>
   JSON.parse(readFileSync(new URL(`./testdata/${name}`, import.meta.url), 'utf8')) as unknown;
 
-/** One sample of `hula analyse` (docs/cli.md). */
-interface RefPoint {
-  t: number;
-  s: number;
-  position: Point;
-  T: Point | null;
-  N: Point | null;
-  B: Point | null;
-  kappa: number | null;
-  tau: number | null;
-  speed: number | null;
-}
+/** `hula analyse`'s answer (docs/formats.md "Curve analysis"): columns, one entry per sample. */
 interface RefFin {
   kind: FinKind;
   t: number[];
@@ -26,7 +15,13 @@ interface RefFin {
   tip: (Point | null)[];
 }
 interface Ref {
-  points: RefPoint[];
+  t: number[];
+  s: number[];
+  points: Point[];
+  frames: { T: (Point | null)[]; N: (Point | null)[]; B: (Point | null)[] };
+  curvature: (number | null)[];
+  torsion: (number | null)[];
+  speed: (number | null)[];
   fins?: RefFin[];
 }
 
@@ -61,17 +56,17 @@ describe('analysis in the page', () => {
       const c = NurbsEvaluator.of(data(`${name}.json`) as CurveFile)!;
       const ref = data(`${name}.arclength.json`) as Ref;
       const a = analyseNurbs(c, { samples: 9, by: 'arclength', fins: ALL, scale: 0.5 });
-      const length = ref.points[ref.points.length - 1]!.s;
-      ref.points.forEach((p, i) => {
-        expect(Math.abs(a.t[i]! - p.t)).toBeLessThan(1e-10);
-        expect(Math.abs(a.s[i]! - p.s) / length).toBeLessThan(1e-10);
-        close(a.points[i], p.position, 1e-10);
-        close(a.frames[i]!.T, p.T, 1e-9);
-        close(a.frames[i]!.N, p.N, 1e-9);
-        close(a.frames[i]!.B, p.B, 1e-9);
-        scalar(a.kappa[i], p.kappa, 1e-9);
-        scalar(a.tau[i], p.tau, 1e-8);
-        scalar(a.speed[i], p.speed, 1e-10);
+      const length = ref.s[ref.s.length - 1]!;
+      ref.t.forEach((t, i) => {
+        expect(Math.abs(a.t[i]! - t)).toBeLessThan(1e-10);
+        expect(Math.abs(a.s[i]! - ref.s[i]!) / length).toBeLessThan(1e-10);
+        close(a.points[i], ref.points[i]!, 1e-10);
+        close(a.frames[i]!.T, ref.frames.T[i]!, 1e-9);
+        close(a.frames[i]!.N, ref.frames.N[i]!, 1e-9);
+        close(a.frames[i]!.B, ref.frames.B[i]!, 1e-9);
+        scalar(a.kappa[i], ref.curvature[i]!, 1e-9);
+        scalar(a.tau[i], ref.torsion[i]!, 1e-8);
+        scalar(a.speed[i], ref.speed[i]!, 1e-10);
       });
       for (const fin of ref.fins!) {
         const comb = a.combs[fin.kind]!;
@@ -90,11 +85,11 @@ describe('analysis in the page', () => {
     const ref = data('space.parameter.json') as Ref;
     const a = analyseNurbs(c, { samples: 7, by: 'parameter', fins: [], scale: 1 });
     expect(a.s).toEqual([]);
-    ref.points.forEach((p, i) => {
-      expect(a.t[i]).toBe(p.t);
-      close(a.points[i], p.position, 1e-12);
-      scalar(a.kappa[i], p.kappa, 1e-10);
-      scalar(a.tau[i], p.tau, 1e-9);
+    ref.t.forEach((t, i) => {
+      expect(a.t[i]).toBe(t);
+      close(a.points[i], ref.points[i]!, 1e-12);
+      scalar(a.kappa[i], ref.curvature[i]!, 1e-10);
+      scalar(a.tau[i], ref.torsion[i]!, 1e-9);
     });
     expect(a.fins).toEqual({});
   });

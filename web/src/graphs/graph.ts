@@ -152,10 +152,11 @@ export class Graph {
     this.markers = [];
     if (a) {
       const byS = this.abscissa === 's' && a.s.length === a.t.length;
-      // A graph flatter than its floor is rounding noise (a helix's κ): its extrema are not marked.
-      const flat = spanOf(this.ys) < valueFloor(this.quantity, this.ys, this.size);
+      // The server's features (no extremum on a flat κ: diffgeom's one significance rule); the torsion
+      // graph marks the torsion extrema, the others the curvature extrema.
+      const own = this.quantity === 'tau' || this.quantity === 'logtau' ? 'torsion-' : 'curvature-';
       for (const f of a.features) {
-        if (flat && /-(max|min)$/.test(f.kind)) continue;
+        if (/-(max|min)$/.test(f.kind) && !f.kind.startsWith(own)) continue;
         const x = byS ? (f.s ?? NaN) : f.t;
         if (!Number.isFinite(x) || this.xs.length === 0) continue;
         const i = nearestIndex(this.xs, x);

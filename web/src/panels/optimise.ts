@@ -6,7 +6,13 @@
 import uPlot from 'uplot';
 import type { App } from '../app';
 import { handlesOf } from '../app';
-import type { CurveFile, GenerationEvent, Job, Solution, TorsionFrontMember } from '../api/types';
+import type {
+  CurveFile,
+  GenerationEvent,
+  Job,
+  ParetoCandidate,
+  TorsionFrontMember,
+} from '../api/types';
 import { NurbsEvaluator } from '../geometry/nurbs';
 import { logMagnitude, paddedRange, tickLabels } from '../graphs/scale';
 import type { Vec3 } from '../viewport/math';
@@ -93,7 +99,7 @@ export class OptimisePanel {
   job: string | null = null;
   running = false;
   readonly generations: GenerationEvent[] = [];
-  front: Solution[] = [];
+  front: ParetoCandidate[] = [];
   private label: string | null = null;
 
   constructor(private readonly app: App) {
@@ -325,7 +331,7 @@ export class OptimisePanel {
   }
 
   /** The Pareto explorer: objective 1 against objective 2, hover previews, click applies. */
-  private drawPareto(front: Solution[]): void {
+  private drawPareto(front: ParetoCandidate[]): void {
     this.front = front
       .filter((s) => s.objectives.length >= 2)
       .sort((a, b) => (a.objectives[0] ?? 0) - (b.objectives[0] ?? 0));
@@ -433,7 +439,7 @@ export class OptimisePanel {
  * its data coordinates as the variables, and its spline (the curve the errors
  * were measured on) to preview and apply.
  */
-function studySolution(m: TorsionFrontMember): Solution {
+function studySolution(m: TorsionFrontMember): ParetoCandidate {
   return {
     objectives: [m.curvature, m.torsion],
     variables: m.points.flat(),

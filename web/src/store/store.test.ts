@@ -18,9 +18,10 @@ describe('DocumentStore', () => {
     s.subscribe((e) => events.push(e.type));
     const set = {
       revision: 2,
-      created: [{ label: 7, kind: 'curve', name: 'c', attributes: {}, curve }],
+      added: [7],
+      entities: [{ label: 7, attributes: { name: 'c' }, ...curve }],
     };
-    s.apply(set);
+    expect(s.apply(set)).toEqual([]);
     s.apply(set);
     expect([...s.entities.keys()]).toEqual(['7']);
     expect(s.entities.get('7')?.label).toBe('7');
@@ -28,6 +29,21 @@ describe('DocumentStore', () => {
     expect(s.entities.size).toBe(0);
     expect(s.revision).toBe(1);
     expect(events).toEqual(['entity', 'entity', 'removed']);
+  });
+
+  // A reply's change set is not applied again when its event comes; a deferred entity (a drag) is not stored.
+  it('skips the event of a reply and defers a dragged entity', () => {
+    const s = new DocumentStore('a.hula');
+    s.load({ name: 'a.hula', revision: 1, entities: [] });
+    const changes = {
+      revision: 2,
+      changed: [7],
+      entities: [{ label: 7, attributes: {}, ...curve }],
+    };
+    expect(s.applyReply({ revision: 2, changes }, '7')).toEqual([]);
+    expect(s.entities.has('7')).toBe(false);
+    expect(s.apply({ revision: 2, changed: [7] })).toEqual([]);
+    expect(s.apply({ revision: 3, changed: [7] })).toEqual(['7']);
   });
 
   // Oli-style change sets name labels only: they come back to be fetched.

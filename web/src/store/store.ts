@@ -10,6 +10,7 @@ import type {
   History,
   Label,
 } from '../api/types';
+import { entityFromServer } from '../api/adapt';
 
 export type StoreListener = (what: StoreEvent) => void;
 export type StoreEvent =
@@ -29,6 +30,8 @@ export class DocumentStore {
   readonly analyses = new Map<string, Analysis>();
   history: History | null = null;
   private readonly listeners = new Set<StoreListener>();
+  /** Revisions whose change sets came with a reply: their events bring nothing new. */
+  private readonly replied = new Set<number>();
 
   constructor(name: string) {
     this.name = name;
@@ -79,16 +82,21 @@ export class DocumentStore {
 
   /**
    * Apply a change set (a reply or an event; applying one twice changes
-   * nothing). Whole entities are stored; labels that changed without their
-   * entity are returned for the caller to fetch.
+   * nothing). The entities it carries (`entities`, as the server sends them
+   * with the reply of a change) are stored, but `defer`'s (a drag in
+   * progress: its entity is stored once, when the drag settles); labels that
+   * changed without their entity are returned for the caller to fetch. An
+   * event whose revision a reply has already brought is skipped.
    */
-  apply(changes: ChangeSet): string[] {
-    for (const e of [...(changes.created ?? []), ...(changes.modified ?? [])]) this.put(e);
-    for (const label of [...(changes.deleted ?? []), ...(changes.removed ?? [])])
-      this.remove(label);
-    const whole = new Set(
-      [...(changes.created ?? []), ...(changes.modified ?? [])].map((e) => key(e.label)),
-    );
+  apply(changes: ChangeSet, defer?: string): string[] {
+    if (this.replied.delete(changes.revision)) return [];
+    const whole = new Set<string>();
+    for (const raw of changes.entities ?? []) {
+      const e = entityFromServer(raw);
+      whole.add(key(e.label));
+      if (key(e.label) !== defer) this.put(e);
+    }
+    for (const label of changes.removed ?? []) this.remove(label);
     const stale = [
       ...(changes.added ?? []),
       ...(changes.changed ?? []),
@@ -100,8 +108,11 @@ export class DocumentStore {
     return [...new Set(stale)];
   }
 
-  applyReply(reply: ChangeReply): string[] {
-    return this.apply({ ...reply.changes, revision: reply.revision });
+  /** Apply the reply of a change: its change set, whose event is then skipped. */
+  applyReply(reply: ChangeReply, defer?: string): string[] {
+    const stale = this.apply({ ...reply.changes, revision: reply.revision }, defer);
+    this.replied.add(reply.revision);
+    return stale;
   }
 
   setAnalysis(label: string, a: Analysis): void {

@@ -1,4 +1,4 @@
-// The fairing assistant (issue 13 item 6): while the user edits the selected
+// The fairing assistant: while the user edits the selected
 // curve, a ghost of the faired curve — minimal curvature variation with every
 // data point within the tolerance, or knot fairing — is asked of the server
 // (POST .../fair-preview, which changes nothing) once the pointer stops, drawn

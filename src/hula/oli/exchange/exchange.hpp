@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // STEP (AP214, AP242) and IGES 5.3 exchange of curves through Open CASCADE,
-// run in a separate process (issue 11 item 9, thesis 9.1.2: the modeller's
+// run in a separate process (thesis 9.1.2: the modeller's
 // readers are someone else's code). OCCT's readers crash on some malformed
 // files, so the caller never loads them: export_curves and import_curves write
 // a JSON request to a private temporary directory, spawn the `hula-exchange`

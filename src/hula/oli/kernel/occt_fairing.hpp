@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Deterministic fairing baselines from Open CASCADE (issue 14 item 4, E8): the
+// Deterministic fairing baselines from Open CASCADE: the
 // curves a CAD system's own fairing gives between the same two end points with
 // the same end tangents (and curvatures), to set beside the knot-fairing and
 // matching studies' GA and Nelder–Mead results. FairCurve_Batten simulates an

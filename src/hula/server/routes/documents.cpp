@@ -130,7 +130,8 @@ class ImportFile {
 
 }  // namespace
 
-Response outcome_response(const oli::Outcome& outcome, unsigned status) {
+Json change_json(const Change& change) {
+  const oli::Outcome& outcome = change.outcome;
   if (!outcome.committed) {
     try {
       outcome.throw_if_failed();
@@ -144,8 +145,13 @@ Response outcome_response(const oli::Outcome& outcome, unsigned status) {
   Json out = Json::object();
   out["revision"] = outcome.revision;
   out["changes"] = change_set_to_json(outcome.changes);
-  return json_response(status, out);
+  Json entities = Json::array();
+  for (const oli::Entity& e : change.entities) entities.push_back(oli::entity_to_json(e));
+  out["changes"]["entities"] = std::move(entities);
+  return out;
 }
+
+Response change_response(const Change& change, unsigned status) { return json_response(status, change_json(change)); }
 
 void add_documents(Router& router, const Context& context) {
   DocumentRegistry& docs = context.documents;
@@ -182,10 +188,10 @@ void add_documents(Router& router, const Context& context) {
     const auto doc = docs.get(request.params.at(0));
     const ImportFile file(workspace, body);
     std::vector<oli::Label> labels;
-    oli::Outcome outcome;
+    Change outcome;
     if (file.json()) {
       const Json input = io::json::parse_json_text(file.text(), file.name());
-      outcome = doc->write([&](oli::Document& d) {
+      outcome = doc->change([&](oli::Document& d) {
         return d.transact("import", [&](oli::Edit& e) { labels = oli::import_json(e, input, file.name()); });
       });
     } else {
@@ -193,7 +199,7 @@ void add_documents(Router& router, const Context& context) {
       // Read in the isolated helper process before taking the document: a crash or hang of the
       // reader is an error naming the file, and the document is untouched.
       const oli::ImportReport report = oli::import_curves(file.path());
-      outcome = doc->write([&](oli::Document& d) {
+      outcome = doc->change([&](oli::Document& d) {
         return d.transact("import", [&](oli::Edit& e) { labels = oli::add_imported(e, report, file.name()); });
       });
 #else
@@ -201,8 +207,7 @@ void add_documents(Router& router, const Context& context) {
                   ErrorWhere{.field = "file"});
 #endif
     }
-    Response r = outcome_response(outcome, 201);
-    Json out = Json::parse(r.body);
+    Json out = change_json(outcome);
     Json list = Json::array();
     for (const oli::Label l : labels) list.push_back(l.value);
     out["labels"] = std::move(list);
@@ -210,11 +215,11 @@ void add_documents(Router& router, const Context& context) {
   });
   router.add("POST", "/api/documents/{name}/undo", [&docs](const Request& request) {
     const auto doc = docs.get(request.params.at(0));
-    return outcome_response(doc->write([](oli::Document& d) { return d.undo(); }), 200);
+    return change_response(doc->change([](oli::Document& d) { return d.undo(); }), 200);
   });
   router.add("POST", "/api/documents/{name}/redo", [&docs](const Request& request) {
     const auto doc = docs.get(request.params.at(0));
-    return outcome_response(doc->write([](oli::Document& d) { return d.redo(); }), 200);
+    return change_response(doc->change([](oli::Document& d) { return d.redo(); }), 200);
   });
   router.add("GET", "/api/documents/{name}/history", [&docs](const Request& request) {
     const auto doc = docs.get(request.params.at(0));

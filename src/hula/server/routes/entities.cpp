@@ -2,7 +2,7 @@
 // Entities of a document: POST /api/documents/{name}/entities {"curve": curve
 // file, "name"?, "attributes"?} (201), GET|PUT|PATCH|DELETE
 // /api/documents/{name}/entities/{label}, and POST .../{label}/analysis
-// (analysis.hpp, read-only), POST .../{label}/fair-preview (the fairing
+// (io::analyse_curve_json, read-only), POST .../{label}/fair-preview (the fairing
 // assistant's ghost of the entity or of a "curve" sent with it, oli::fair_preview with
 // io/fair_preview_json.hpp, read-only: accepted by a PUT of its curve), POST .../{label}/insert-knot {"u",
 // "times"?},
@@ -13,14 +13,16 @@
 // one undo step (oli::TransactMode::Continue). Every change answers
 // {"revision", "changes"} (the change set, also pushed to the document's
 // event stream).
+#include <algorithm>
 #include <optional>
 
 #include "hula/curve/curve.hpp"
+#include "hula/io/curve_analysis_json.hpp"
 #include "hula/io/fair_preview_json.hpp"
 #include "hula/io/json_curve.hpp"
 #include "hula/io/json_read.hpp"
+#include "hula/io/json_text.hpp"
 #include "hula/oli/fair_preview.hpp"
-#include "hula/server/analysis.hpp"
 #include "hula/server/documents.hpp"
 #include "hula/server/routes/routes.hpp"
 
@@ -96,11 +98,10 @@ void add_entities(Router& router, const Context& context) {
     const oli::Attributes attributes = read_attributes(body, {});
     const auto doc = docs.get(request.params.at(0));
     oli::Label label;
-    const oli::Outcome o = doc->write([&](oli::Document& d) {
+    const Change o = doc->change([&](oli::Document& d) {
       return d.transact("add curve", [&](oli::Edit& e) { label = e.add_curve(c, attributes); });
     });
-    Response r = outcome_response(o, 201);
-    Json out = Json::parse(r.body);
+    const Json out = change_json(o);
     Json with_label = Json::object();
     with_label["label"] = label.value;
     with_label.update(out);
@@ -117,18 +118,18 @@ void add_entities(Router& router, const Context& context) {
     const curve::Curve c = io::curve_from_json(json::require_member(body, json::JsonPath(), "curve"));
     const auto [doc, label] = entity_of(docs, request);
     const bool has_attributes = body.contains("attributes") || body.contains("name");
-    return outcome_response(doc->write([&](oli::Document& d) {
+    return change_response(doc->change([&](oli::Document& d) {
       return d.transact("replace curve", [&](oli::Edit& e) {
         e.set_curve(label, c);
         if (has_attributes) e.set_attributes(label, read_attributes(body, e.get(label).attributes()));
       });
     }),
-                            200);
+                           200);
   });
   router.add("PATCH", "/api/documents/{name}/entities/{label}", [&docs](const Request& request) {
     const Json body = request.json();
     const json::JsonPath root;
-    json::reject_unknown_members(body, root, {"move", "continue", "attributes"});
+    json::reject_unknown_members(body, root, {"move", "continue", "attributes", "analysis"});
     std::vector<Move> moves;
     if (const Json* m = json::optional_member(body, "move")) moves = read_moves(*m);
     bool continue_step = false;
@@ -141,9 +142,13 @@ void add_entities(Router& router, const Context& context) {
       json::type_error(*attributes, json::root_path("attributes"), "an object");
     if (moves.empty() && !attributes)
       throw Error(Errc::InvalidArgument, "a PATCH needs \"move\" or \"attributes\"", ErrorWhere{.field = "move"});
+    // The moved curve's analysis in the same reply when asked: a drag is one request and one reply.
+    std::optional<diffgeom::AnalysisOptions> analysis;
+    if (const Json* a = json::optional_member(body, "analysis"))
+      analysis = io::analysis_options_from_json(*a, io::analysis_request_defaults());
     const auto [doc, label] = entity_of(docs, request);
     const std::string step = moves.empty() ? std::string("edit attributes") : std::string(kMoveStep);
-    return outcome_response(doc->write([&](oli::Document& d) {
+    const Change change = doc->change([&](oli::Document& d) {
       return d.transact(
           step,
           [&](oli::Edit& e) {
@@ -152,13 +157,22 @@ void add_entities(Router& router, const Context& context) {
               for (const auto& [key, value] : attributes->items()) e.set_attribute(label, key, value);
           },
           continue_step ? oli::TransactMode::Continue : oli::TransactMode::New);
-    }),
-                            200);
+    });
+    const Json out = change_json(change);
+    if (!analysis) return json_response(200, out);
+    // Computed outside the lock from the snapshot the change took.
+    const auto moved = std::find_if(change.entities.begin(), change.entities.end(),
+                                    [&](const oli::Entity& e) { return e.label() == label; });
+    if (moved == change.entities.end() || moved->kind() != oli::EntityKind::Curve) return json_response(200, out);
+    Response reply;
+    reply.body = io::object_with_encoded_member(
+        out, "analysis", io::analyse_curve_json(moved->curve(), *analysis, false, change.outcome.revision));
+    return reply;
   });
   router.add("DELETE", "/api/documents/{name}/entities/{label}", [&docs](const Request& request) {
     const auto [doc, label] = entity_of(docs, request);
-    return outcome_response(
-        doc->write([&](oli::Document& d) { return d.transact("remove", [&](oli::Edit& e) { e.remove(label); }); }),
+    return change_response(
+        doc->change([&](oli::Document& d) { return d.transact("remove", [&](oli::Edit& e) { e.remove(label); }); }),
         200);
   });
   router.add("POST", "/api/documents/{name}/entities/{label}/insert-knot", [&docs](const Request& request) {
@@ -167,27 +181,27 @@ void add_entities(Router& router, const Context& context) {
     const double u = json::get_number(json::require_member(body, json::JsonPath(), "u"), json::root_path("u"));
     const int times = read_times(body);
     const auto [doc, label] = entity_of(docs, request);
-    return outcome_response(doc->write([&](oli::Document& d) {
+    return change_response(doc->change([&](oli::Document& d) {
       return d.transact("insert knot", [&](oli::Edit& e) { e.insert_knot(label, u, times); });
     }),
-                            200);
+                           200);
   });
   router.add("POST", "/api/documents/{name}/entities/{label}/elevate", [&docs](const Request& request) {
     const Json body = request.body.empty() ? Json::object() : request.json();
     json::reject_unknown_members(body, json::JsonPath(), {"times"});
     const int times = read_times(body);
     const auto [doc, label] = entity_of(docs, request);
-    return outcome_response(doc->write([&](oli::Document& d) {
+    return change_response(doc->change([&](oli::Document& d) {
       return d.transact("elevate degree", [&](oli::Edit& e) { e.elevate_degree(label, times); });
     }),
-                            200);
+                           200);
   });
   router.add("POST", "/api/documents/{name}/entities/{label}/reverse", [&docs](const Request& request) {
     const Json body = request.body.empty() ? Json::object() : request.json();
     json::reject_unknown_members(body, json::JsonPath(), std::span<const std::string_view>());  // no members
     const auto [doc, label] = entity_of(docs, request);
-    return outcome_response(
-        doc->write([&](oli::Document& d) { return d.transact("reverse", [&](oli::Edit& e) { e.reverse(label); }); }),
+    return change_response(
+        doc->change([&](oli::Document& d) { return d.transact("reverse", [&](oli::Edit& e) { e.reverse(label); }); }),
         200);
   });
   router.add("POST", "/api/documents/{name}/entities/{label}/split", [&docs](const Request& request) {
@@ -196,33 +210,37 @@ void add_entities(Router& router, const Context& context) {
     const double t = json::get_number(json::require_member(body, json::JsonPath(), "t"), json::root_path("t"));
     const auto [doc, label] = entity_of(docs, request);
     std::pair<oli::Label, oli::Label> pieces;
-    const oli::Outcome o = doc->write(
+    const Change o = doc->change(
         [&](oli::Document& d) { return d.transact("split", [&](oli::Edit& e) { pieces = e.split(label, t); }); });
-    Json out = Json::parse(outcome_response(o, 201).body);  // throws the error of a refused split
+    Json out = change_json(o);  // throws the error of a refused split
     out["labels"] = Json::array({pieces.first.value, pieces.second.value});
     return json_response(201, out);
   });
   router.add("POST", "/api/documents/{name}/entities/{label}/fair-preview", [&docs](const Request& request) {
     const io::FairPreviewRequest preview = io::fair_preview_request_from_json(request.json());
-    const std::optional<AnalysisRequest> analysis =
-        preview.analysis ? std::optional(analysis_request_from_json(*preview.analysis)) : std::nullopt;
+    const auto analysis =
+        preview.analysis
+            ? std::optional(io::analysis_options_from_json(*preview.analysis, io::analysis_request_defaults()))
+            : std::nullopt;
     const auto [doc, label] = entity_of(docs, request);
     const auto [e, revision] = doc->read([&](const oli::Document& d) { return std::pair(d.get(label), d.revision()); });
     // Computed outside the lock from the immutable snapshot; the document is not changed.
     const studies::AssistantResult r = oli::fair_preview(e, preview.options, preview.curve ? &*preview.curve : nullptr);
-    Json out = io::fair_preview_to_json(r, preview.options, revision);
-    if (analysis) {
-      out["analysis"] = Json::parse(analysis_json(r.curve, *analysis, revision));
-    }
-    return json_response(200, out);
+    const Json out = io::fair_preview_to_json(r, preview.options, revision);
+    if (!analysis) return json_response(200, out);
+    Response reply;
+    reply.body =
+        io::object_with_encoded_member(out, "analysis", io::analyse_curve_json(r.curve, *analysis, false, revision));
+    return reply;
   });
   router.add("POST", "/api/documents/{name}/entities/{label}/analysis", [&docs](const Request& request) {
-    const AnalysisRequest options = analysis_request_from_json(request.body.empty() ? Json::object() : request.json());
+    const auto options = io::analysis_options_from_json(request.body.empty() ? Json::object() : request.json(),
+                                                        io::analysis_request_defaults());
     const auto [doc, label] = entity_of(docs, request);
     const auto [e, revision] = doc->read([&](const oli::Document& d) { return std::pair(d.get(label), d.revision()); });
     // Computed outside the lock from the immutable snapshot: edits go on meanwhile.
     Response r;
-    r.body = analysis_json(e.curve(), options, revision);
+    r.body = io::analyse_curve_json(e.curve(), options, false, revision);
     return r;
   });
 }

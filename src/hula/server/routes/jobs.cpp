@@ -17,6 +17,7 @@
 #include <chrono>
 
 #include "hula/io/json_read.hpp"
+#include "hula/io/run_report_json.hpp"
 #include "hula/oli/study_run.hpp"
 #include "hula/server/problem_job.hpp"
 #include "hula/server/routes/routes.hpp"
@@ -44,7 +45,7 @@ JobWork study_job(std::shared_ptr<OpenDocument> doc, Json study, std::filesystem
       if (g.generation == 0) evaluations_before = evaluations;
       evaluations = evaluations_before + g.evaluations;
       const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      Json e = generation_event(g, elapsed);
+      Json e = io::generation_event_json(g, elapsed);
       e["generation"] = generations++;
       e["evaluations"] = evaluations;
       e["study"] = kind;

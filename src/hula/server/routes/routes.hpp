@@ -52,8 +52,11 @@ void add_entities(Router& router, const Context& context);
 /// POST /api/documents/{name}/entities/{label}/study-seed (a study file seeded from the entity's curve).
 void add_study_seed(Router& router, const Context& context);
 
-/// {"revision", "changes"} of a committed outcome with `status`; a rolled-back one rethrows its error.
-[[nodiscard]] Response outcome_response(const oli::Outcome& outcome, unsigned status);
+/// {"revision", "changes"} of a committed change, the change set with "entities": the entities it added
+/// or changed as GET .../entities/{label} gives them; a rolled-back change rethrows its error.
+[[nodiscard]] Json change_json(const Change& change);
+/// change_json as a response with `status`.
+[[nodiscard]] Response change_response(const Change& change, unsigned status);
 
 /// The OpenAPI 3.1 document (openapi.json, embedded at build time).
 [[nodiscard]] const std::string& openapi_text();

@@ -14,4 +14,14 @@ for c in space straight; do
     --fin-density 9 >"$c.arclength.json"
   "$hula" analyse "$c.json" --samples 7 --by parameter >"$c.parameter.json"
 done
+# The conformance corpus (tests/data/conformance): the kernel's analysis of every curve, as every
+# door gives it, with the fins at the samples (--fin-density = --samples) at scale 1 (kept as the CLI
+# writes them: .prettierignore lists the folder).
+mkdir -p conformance
+while read -r name; do
+  for by in parameter arclength; do
+    "$hula" analyse "../../../../tests/data/conformance/$name.json" --samples 33 --by "$by" --features \
+      --fins curvature,torsion --fin-density 33 --fin-scale 1 >"conformance/$name.$by.json"
+  done
+done <../../../../tests/data/conformance/corpus.txt
 (cd ../../.. && npx prettier --write src/geometry/testdata >/dev/null)

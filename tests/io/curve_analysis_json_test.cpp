@@ -1,19 +1,20 @@
 // SPDX-License-Identifier: MIT
-// Unit tests of the viewport analysis (server/analysis.hpp): the JSON text it writes, parsed back,
-// against diffgeom's own results on the same curve, double for double.
-#include "hula/server/analysis.hpp"
+// Unit tests of the curve analysis codec (io/curve_analysis_json.hpp): the JSON text it writes, parsed
+// back, against diffgeom's own results on the same curve, double for double; the request reader.
+
+#include "hula/io/curve_analysis_json.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
-#include "hula/diffgeom/continuity.hpp"
-#include "hula/diffgeom/features.hpp"
-#include "hula/diffgeom/frenet.hpp"
+#include "hula/diffgeom/analysis.hpp"
 #include "hula/nurbs/interpolate.hpp"
 
-namespace hula::server {
+namespace hula::io {
+
+using json::Json;
 namespace {
 
 // The bench's curve: 50 points of a planar-ish wave, interpolated (inflections and extrema).
@@ -32,13 +33,12 @@ void expect_vec(const Json& j, const Vec3& v, const std::string& what) {
 
 // checks every column, the curvature comb and the features of the text read back bit for bit equal
 // to diffgeom::frenet, diffgeom::fins, inflections, curvature_extrema and knot_continuity
-TEST(Analysis, TextReadsBackToDiffgeomResults) {
+TEST(CurveAnalysisJson, TextReadsBackToDiffgeomResults) {
   const nurbs::NurbsCurve c = wave();
-  AnalysisRequest request;
-  request.samples = 100;
+  diffgeom::AnalysisOptions request = analysis_request_defaults();
   request.fins = {diffgeom::FinKind::Curvature, diffgeom::FinKind::Torsion};
-  request.scale = 0.5;
-  const Json out = Json::parse(analysis_json(c, request, 42));
+  request.fin_scale = 0.5;
+  const Json out = Json::parse(analyse_curve_json(c, request, false, 42));
   EXPECT_EQ(out["revision"].get<std::uint64_t>(), 42u);
 
   std::vector<double> ts(100);
@@ -90,8 +90,9 @@ TEST(Analysis, TextReadsBackToDiffgeomResults) {
     }
   }
 
-  const auto inflections = diffgeom::inflections(c);
-  ASSERT_FALSE(inflections.empty());
+  // The wave is not planar (z = cos(i/7)): no inflection, by the one rule.
+  EXPECT_FALSE(out["planarity"]["planar"].get<bool>());
+  const std::vector<diffgeom::Feature> inflections;
   ASSERT_EQ(out["features"]["inflections"].size(), inflections.size());
   for (std::size_t i = 0; i < inflections.size(); ++i) {
     EXPECT_EQ(out["features"]["inflections"][i]["t"].get<double>(), inflections[i].t);
@@ -101,7 +102,7 @@ TEST(Analysis, TextReadsBackToDiffgeomResults) {
   ASSERT_EQ(out["features"]["curvature_extrema"].size(), extrema.size());
   for (std::size_t i = 0; i < extrema.size(); ++i) {
     const Json& e = out["features"]["curvature_extrema"][i];
-    EXPECT_EQ(e["kind"], std::string(diffgeom::feature_kind_name(extrema[i].kind)));
+    EXPECT_EQ(e["kind"], std::string(extremum_kind_name(extrema[i].kind)));
     EXPECT_EQ(e["t"].get<double>(), extrema[i].t);
     EXPECT_EQ(e["curvature"].get<double>(), extrema[i].curvature);
   }
@@ -113,6 +114,7 @@ TEST(Analysis, TextReadsBackToDiffgeomResults) {
     EXPECT_EQ(k["multiplicity"].get<int>(), knots[i].multiplicity);
     EXPECT_EQ(k["parametric"].get<int>(), knots[i].parametric);
     EXPECT_EQ(k["geometric"].get<int>(), knots[i].geometric);
+    EXPECT_EQ(k["curvature_left"].get<double>(), knots[i].curvature_left);
     if (std::isfinite(knots[i].tangent_angle)) {
       EXPECT_EQ(k["tangent_angle"].get<double>(), knots[i].tangent_angle);
     }
@@ -121,13 +123,13 @@ TEST(Analysis, TextReadsBackToDiffgeomResults) {
 
 // checks a straight line's undefined frames, curvature fins of length 0 and the absent features are
 // written as JSON null / left out, integral numbers keep a ".0" as nlohmann writes them
-TEST(Analysis, UndefinedValuesAreNullAndFeaturesCanBeLeftOut) {
+TEST(CurveAnalysisJson, UndefinedValuesAreNullAndFeaturesCanBeLeftOut) {
   const std::vector<Vec3> line = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}};
-  AnalysisRequest request;
+  diffgeom::AnalysisOptions request;
   request.samples = 4;
   request.features = false;
   request.fins = {diffgeom::FinKind::Normal};
-  const std::string text = analysis_json(nurbs::interpolate_cubic(line), request, 3);
+  const std::string text = analyse_curve_json(nurbs::interpolate_cubic(line), request, false, 3);
   const Json out = Json::parse(text);
   EXPECT_FALSE(out.contains("features"));
   for (std::size_t i = 0; i < 4; ++i) {
@@ -139,5 +141,55 @@ TEST(Analysis, UndefinedValuesAreNullAndFeaturesCanBeLeftOut) {
   EXPECT_NE(text.find("\"t\":[0.0,"), std::string::npos) << text.substr(0, 80);
 }
 
+// checks that the CLI's layout and the compact text read back to the same JSON value, bit for bit, and that
+// the layout is format_json's (a column of numbers on one line, one member per line)
+TEST(CurveAnalysisJson, PrettyAndCompactTextsAreOneValue) {
+  diffgeom::AnalysisOptions o;
+  o.samples = 7;
+  o.features = true;
+  o.bishop = true;
+  o.arc_lengths = true;
+  o.fins = {diffgeom::FinKind::Curvature};
+  const diffgeom::CurveAnalysis a = diffgeom::analyse_curve(wave(), o);
+  const std::string pretty = curve_analysis_json(a, true);
+  const Json value = Json::parse(curve_analysis_json(a, false));
+  EXPECT_EQ(Json::parse(pretty), value);
+  EXPECT_NE(pretty.find("\n  \"t\": [0.0, "), std::string::npos) << pretty.substr(0, 200);
+  EXPECT_NE(pretty.find("\n  \"frames\": {\n    \"T\": [\n      ["), std::string::npos) << pretty.substr(0, 400);
+}
+
+// checks the request reader: defaults kept, members read, unknown members and bad values refused naming them
+TEST(CurveAnalysisJson, ReadsRequestsAndNamesBadMembers) {
+  const diffgeom::AnalysisOptions d = analysis_request_defaults();
+  EXPECT_EQ(d.samples, 100);
+  EXPECT_TRUE(d.features);
+  const diffgeom::AnalysisOptions o = analysis_options_from_json(
+      Json::parse(R"({"samples": 9, "by": "arclength", "fins": ["torsion", "bishop-u"], "scale": 2,
+                      "fin_density": 30, "features": false, "bishop": true, "arc_lengths": true, "at": [0, 1]})"),
+      d);
+  EXPECT_EQ(o.samples, 9);
+  EXPECT_EQ(o.by, diffgeom::SampleBy::ArcLength);
+  EXPECT_EQ(o.fins, (std::vector<diffgeom::FinKind>{diffgeom::FinKind::Torsion, diffgeom::FinKind::BishopU}));
+  EXPECT_EQ(o.fin_scale, 2.0);
+  EXPECT_EQ(o.fin_density, 30);
+  EXPECT_FALSE(o.features);
+  EXPECT_TRUE(o.bishop && o.arc_lengths);
+  EXPECT_EQ(o.at, (std::vector<double>{0, 1}));
+  const auto field_of = [&](const char* text) {
+    try {
+      (void)analysis_options_from_json(Json::parse(text), d);
+    } catch (const Error& e) {
+      return e.where().field;
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(field_of(R"({"colour": 1})"), "colour");
+  EXPECT_EQ(field_of(R"({"by": "speed"})"), "by");
+  EXPECT_EQ(field_of(R"({"fins": ["tosion"]})"), "fins");
+  EXPECT_EQ(field_of(R"({"scale": 0})"), "scale");
+  EXPECT_EQ(field_of(R"({"samples": 0})"), "samples");
+  EXPECT_EQ(field_of(R"({"features": 1})"), "features");
+}
+
 }  // namespace
-}  // namespace hula::server
+}  // namespace hula::io

@@ -1,0 +1,454 @@
+// Generated from src/hula/server/openapi.json by src/api/openapi-types.ts; do not edit.
+// Regenerate: HULA_REBASELINE=1 npx vitest run src/api/contract.test.ts
+
+export type Error = {
+  error: ErrorBody;
+};
+
+export type ErrorBody = {
+  code: string;
+  message: string;
+  where: {
+    field?: string;
+    index?: number;
+    component?: number;
+    line?: number;
+    column?: number;
+  };
+};
+
+export type Health = {
+  status: "ok";
+  version: string;
+};
+
+export type LawRequest = {
+  expression: string;
+  parameter?: string;
+  at?: number[];
+  derivatives?: number;
+};
+
+export type LawResponse = {
+  expression: string;
+  parameter: string;
+  dimension: number;
+  results: {
+    t: number;
+    derivatives: number[][];
+  }[];
+};
+
+export type ReconstructRequest = {
+  kappa: string;
+  tau: string;
+  length: number;
+  start_point?: number[];
+  start_frame?: {
+    tangent: number[];
+    normal: number[];
+  };
+  tolerance?: number;
+  fit_tolerance?: number;
+  at?: number[];
+};
+
+export type FramePoint = {
+  s: number;
+  position: number[];
+  T: number[];
+  N: number[];
+  B: number[];
+};
+
+export type ReconstructResponse = {
+  points: FramePoint[];
+  curve: CurveFile;
+  max_deviation: number;
+  integration: {
+    method: "planar-exact-angle" | "planar-numeric-angle" | "frenet-serret";
+    steps: number;
+    rejected_steps: number;
+    breakpoints: number;
+  };
+  fit: {
+    control_points: number;
+    segments: number;
+    tolerance: number;
+    max_deviation: number;
+  };
+};
+
+export type CurveFile = {
+  format?: string;
+  kind: string;
+  [key: string]: unknown;
+};
+
+export type JobRequest = {
+  problem: {
+    [key: string]: unknown;
+  };
+  algorithm?: "ga-real" | "ga-binary" | "nsga2";
+  population?: number;
+  generations?: number;
+  seed?: number;
+};
+
+export type Solution = {
+  variables: number[];
+  objectives: (number | null)[];
+  violation: number | null;
+};
+
+export type JobReport = {
+  termination: "MaxGenerations" | "MaxEvaluations" | "TargetReached" | "Stagnation" | "WallTime" | "Cancelled" | "Converged";
+  message: string;
+  generations: number;
+  evaluations: number;
+  failed_evaluations: number;
+  seconds: number;
+  seed: number;
+  algorithm: string;
+  problem: string;
+};
+
+export type JobResult = {
+  best?: Solution;
+  front?: Solution[];
+  document?: string;
+  study?: number;
+  curves?: number[];
+  revision?: number;
+  result?: {
+    [key: string]: unknown;
+  };
+};
+
+export type Job = {
+  job: string;
+  kind: "problem" | "study";
+  state: "queued" | "running" | "done" | "failed" | "cancelled";
+  report: JobReport | StudyJobReport | null;
+  result: JobResult | null;
+  error: ErrorBody | null;
+};
+
+export type GenerationEvent = {
+  generation: number;
+  evaluations: number;
+  best: (number | null)[];
+  front?: ((number | null)[])[];
+  elapsed: number;
+  study?: string;
+};
+
+export type ChangeSet = {
+  cause: "commit" | "undo" | "redo";
+  name: string;
+  revision: number;
+  added: number[];
+  changed: number[];
+  removed: number[];
+  attributes_changed: number[];
+  entities?: Entity[];
+};
+
+export type Change = {
+  revision: number;
+  changes: ChangeSet;
+};
+
+export type AddedEntity = {
+  label: number;
+  revision: number;
+  changes: ChangeSet;
+};
+
+export type Attributes = {
+  name: string;
+  colour: string;
+  visible: boolean;
+  layer: string;
+  locked: boolean;
+  user: {
+    [key: string]: unknown;
+  };
+  [key: string]: unknown;
+};
+
+export type EntitySummary = {
+  label: number;
+  kind: "curve" | "point-set" | "study";
+  name: string;
+  attributes: Attributes;
+};
+
+export type Document = {
+  name: string;
+  revision: number;
+  backend: string;
+  entities: EntitySummary[];
+};
+
+export type DocumentList = {
+  documents: {
+    name: string;
+    open: boolean;
+  }[];
+};
+
+export type NewDocument = {
+  name: string;
+  backend?: "native" | "occt";
+};
+
+export type Trashed = {
+  name: string;
+  trash: string;
+};
+
+export type History = {
+  revision: number;
+  history: {
+    revision: number;
+    name: string;
+    time: string;
+    changed: number[];
+    applied: boolean;
+  }[];
+};
+
+export type EntityWrite = {
+  curve: CurveFile;
+  name?: string;
+  attributes?: {
+    [key: string]: unknown;
+  };
+};
+
+export type EntityPatch = {
+  move?: {
+    index: number;
+    to: number[];
+  }[];
+  continue?: boolean;
+  attributes?: {
+    [key: string]: unknown;
+  };
+  analysis?: AnalysisRequest;
+};
+
+export type Entity = {
+  label: number;
+  kind: string;
+  attributes: Attributes;
+  [key: string]: unknown;
+};
+
+export type AnalysisRequest = {
+  samples?: number;
+  by?: "parameter" | "arclength";
+  fins?: ("curvature" | "torsion" | "normal" | "binormal" | "bishop-u" | "bishop-v" | "combescure")[];
+  scale?: number;
+  features?: boolean;
+  at?: number[];
+  arc_lengths?: boolean;
+  bishop?: boolean;
+  fin_density?: number;
+};
+
+export type Analysis = {
+  t: number[];
+  s?: number[];
+  points: (number[] | null)[];
+  frames: {
+    T: (number[] | null)[];
+    N: (number[] | null)[];
+    B: (number[] | null)[];
+  };
+  curvature: (number | null)[];
+  torsion: (number | null)[];
+  curvature_derivative: (number | null)[];
+  speed: (number | null)[];
+  bishop?: {
+    U: (number[] | null)[];
+    V: (number[] | null)[];
+  };
+  fins: {
+    kind: "curvature" | "torsion" | "normal" | "binormal" | "bishop-u" | "bishop-v" | "combescure";
+    scale: number;
+    t: number[];
+    base: (number[] | null)[];
+    tip: (number[] | null)[];
+  }[];
+  planarity: {
+    planar: boolean;
+    normal: number[] | null;
+    max_deviation: number;
+    tolerance: number;
+  };
+  features?: {
+    inflections: {
+      t: number;
+      point: number[] | null;
+    }[];
+    curvature_extrema: {
+      kind: "maximum" | "minimum";
+      t: number;
+      point: number[] | null;
+      curvature: number;
+    }[];
+    torsion_extrema: {
+      kind: "maximum" | "minimum";
+      t: number;
+      point: number[] | null;
+      torsion: number;
+    }[];
+    knots: {
+      t: number;
+      multiplicity: number;
+      parametric: number | null;
+      geometric: number | null;
+      tangent_angle: number | null;
+      curvature_left: number | null;
+      curvature_right: number | null;
+      left: (number[] | null)[];
+      right: (number[] | null)[];
+    }[];
+    curvature_monotonicity: {
+      monotone: boolean;
+      pieces: {
+        t0: number;
+        t1: number;
+        curvature0: number | null;
+        curvature1: number | null;
+        trend: "increasing" | "decreasing" | "constant";
+      }[];
+      violations: {
+        kind: "maximum" | "minimum";
+        t: number;
+        curvature: number | null;
+      }[];
+    };
+    maximum_curvature: {
+      value: number | null;
+      t: number | null;
+    };
+  };
+  revision?: number;
+};
+
+export type StudyJobRequest = {
+  document: string;
+  study: {
+    [key: string]: unknown;
+  };
+};
+
+export type StudyJobReport = {
+  study: string;
+  termination: "Completed" | "Cancelled";
+  generations: number;
+  evaluations: number;
+  seconds: number;
+};
+
+export type KnotInsertion = {
+  u: number;
+  times?: number;
+};
+
+export type DegreeElevation = {
+  times?: number;
+};
+
+export type ImportRequest = unknown;
+
+export type ImportResult = {
+  labels: number[];
+  revision: number;
+  changes: ChangeSet;
+};
+
+export type SplitRequest = {
+  t: number;
+};
+
+export type SplitResult = {
+  labels: number[];
+  revision: number;
+  changes: ChangeSet;
+};
+
+export type FairPreviewRequest = {
+  tolerance: number;
+  method?: "min-variation" | "knots";
+  budget?: number;
+  analysis?: AnalysisRequest;
+  curve?: CurveFile;
+};
+
+export type FairPreview = {
+  revision: number;
+  method: "min-variation" | "knots";
+  tolerance: number;
+  curve: CurveFile;
+  energy_before: number;
+  energy_after: number;
+  max_deviation: number;
+  data_points: number[][];
+  faired_points: number[][];
+  iterations: number;
+  stopped: boolean;
+  seconds: number;
+  analysis?: Analysis;
+};
+
+export type ChangeWithAnalysis = {
+  revision: number;
+  changes: ChangeSet;
+  analysis?: Analysis;
+};
+
+export type CurvatureEditRequest = {
+  kappa: string;
+  target?: "curvature" | "change";
+  tau?: string;
+  hold?: "free" | "tangent" | "curvature";
+  max_handles_factor?: number;
+};
+
+export type CurvatureEditResult = {
+  revision: number;
+  changes: ChangeSet;
+  edit: {
+    kind: "nurbs" | "bezier" | "interpolated";
+    handles_before: number;
+    handles_after: number;
+    planar: boolean;
+    length_before: number;
+    length_after: number;
+    mean_curvature_deviation: number;
+    max_curvature_deviation: number;
+    iterations: number;
+    start_point_error: number;
+    end_point_error: number;
+    start_tangent_error: number;
+    end_tangent_error: number;
+    start_curvature_error: number;
+    end_curvature_error: number;
+    inflections_before: number;
+    inflections_after: number;
+    seconds: number;
+    reconstructed: boolean;
+    reconstruction_max_deviation: number;
+    reconstruction_mean_deviation: number;
+  };
+};
+
+export type StudySeedRequest = {
+  study: "match-curvature-torsion";
+  population?: number;
+  generations?: number;
+};
