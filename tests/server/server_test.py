@@ -1209,7 +1209,7 @@ class DocumentTest(unittest.TestCase):
     # class with a body (or SSE events) valid against the document
     def test_zz_every_operation_seen(self):
         wanted = operations(self.api, "/api/documents")
-        self.assertEqual(len(wanted), 20)
+        self.assertEqual(len(wanted), 22)
         self.assertEqual(wanted - self.api.seen, set())
 
 
