@@ -71,9 +71,12 @@ test('From selection seeds the curvature + torsion study from a space Bézier', 
     kmax = Math.max(kmax, Math.abs(k));
     tmax = Math.max(tmax, Math.abs(t));
   }
-  // Not the old constant template (0.02 / 0.01): the profiles vary along the curve.
-  expect(kmax).toBeGreaterThan(0);
-  expect(tmax).toBeGreaterThan(0.01);
+  // Not the old constant template (0.02 / 0.01): the Bézier's own maxima, closed form
+  // |C′×C″|/|C′|³ and (C′×C″)·C‴/|C′×C″|² at 100,001 parameters: max κ 0.0172407, max |τ| 0.00196457.
+  expect(kmax).toBeGreaterThan(0.95 * 0.017240712982831786);
+  expect(kmax).toBeLessThan(1.000001 * 0.017240712982831786);
+  expect(tmax).toBeGreaterThan(0.95 * 0.001964566936223929);
+  expect(tmax).toBeLessThan(1.000001 * 0.001964566936223929);
 
   // A short run of that study: the job's resolved study carries the same tangents and targets.
   study.nsga2 = { population: 8, generations: 2 };
