@@ -66,9 +66,29 @@ function(hula_add_test name)
     ENVIRONMENT "HULA_TEST_DATA=${PROJECT_SOURCE_DIR}/tests/data")
 endfunction()
 
+# Vectorised kernels (hula/core/simd.hpp): `base` is compiled for the portable baseline, and on x86-64
+# `avx2` and `avx512` for AVX2 and AVX-512F; all three without fused multiply-add, so every variant
+# gives the same doubles. Appends the sources to `out` and, on x86-64, sets HULA_SIMD_X86 in
+# `<out>_DEFINES` (the dispatcher compiles stubs for the wide variants elsewhere).
+function(hula_simd_sources out base avx2 avx512)
+  set(sources ${base})
+  set(defines "")
+  if(CMAKE_SYSTEM_PROCESSOR MATCHES "x86_64|AMD64|amd64")
+    list(APPEND sources ${avx2} ${avx512})
+    set_source_files_properties(${avx2} PROPERTIES COMPILE_OPTIONS "-mavx2;-ffp-contract=off")
+    set_source_files_properties(${avx512} PROPERTIES COMPILE_OPTIONS "-mavx512f;-ffp-contract=off")
+    set(defines HULA_SIMD_X86)
+  endif()
+  set_property(SOURCE ${base} APPEND PROPERTY COMPILE_OPTIONS "-ffp-contract=off")
+  set(${out} ${sources} PARENT_SCOPE)
+  set(${out}_DEFINES ${defines} PARENT_SCOPE)
+endfunction()
+
 function(hula_add_bench name)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPS" ${ARGN})
   add_executable(bench_${name} ${ARG_SOURCES})
   target_link_libraries(bench_${name} PRIVATE ${ARG_DEPS} benchmark::benchmark benchmark::benchmark_main
     hula::warnings)
+  # bench/reference/: the hand-written kernels every ratio in docs/benchmarks.md is measured against.
+  target_include_directories(bench_${name} PRIVATE ${PROJECT_SOURCE_DIR}/bench)
 endfunction()

@@ -38,6 +38,10 @@
 namespace hula::cli {
 /// `hula fit` (commands/fit.cpp): scanned points or a "fit" study -> faired class-A curve, strays, figures.
 [[nodiscard]] Command add_fit(CLI::App& app);
+/// `hula intersect` (commands/intersect.cpp): curve–curve and self-intersections.
+[[nodiscard]] Command add_intersect(CLI::App& app);
+/// `hula distance` (commands/intersect.cpp): the smallest distance between two curves.
+[[nodiscard]] Command add_distance(CLI::App& app);
 }  // namespace hula::cli
 
 #ifndef HULA_VERSION
@@ -152,7 +156,10 @@ int main(int argc, char** argv) {
         hula::cli::add_approximate(app),
         hula::cli::add_fit(app),
         hula::cli::add_closest(app),
+        hula::cli::add_intersect(app),
+        hula::cli::add_distance(app),
         hula::cli::add_clothoid(app),
+        hula::cli::add_log_aesthetic(app),
         hula::cli::add_deviation(app),
         hula::cli::add_continuity(app),
         hula::cli::add_energy(app),

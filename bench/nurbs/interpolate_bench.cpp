@@ -2,17 +2,22 @@
 // Global cubic interpolation through N points, ours beside Open CASCADE's
 // GeomAPI_Interpolate in the same run, for N = 10 … 100 000. Both compute
 // chord-length parameters and use OCCT's end convention (no tangents given).
+// The natural-end rows are judged against the hand-written reference
+// (bench/reference/interpolate.hpp: the same curve, checked before timing).
 // Items processed = points.
 #include <benchmark/benchmark.h>
 
 #include <GeomAPI_Interpolate.hxx>
 #include <Geom_BSplineCurve.hxx>
 #include <TColgp_HArray1OfPnt.hxx>
+#include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "hula/core/rng.hpp"
 #include "hula/nurbs/interpolate.hpp"
+#include "reference/interpolate.hpp"
 
 namespace {
 
@@ -50,7 +55,30 @@ void BM_nurbs_interpolate_natural(benchmark::State& state) {
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * state.range(0));
 }
-BENCHMARK(BM_nurbs_interpolate_natural)->RangeMultiplier(10)->Range(100, 10000);
+BENCHMARK(BM_nurbs_interpolate_natural)->Arg(10)->RangeMultiplier(10)->Range(100, 10000);
+
+// The hand-written natural cubic (reference/interpolate.hpp); its control points are checked against
+// interpolate_cubic's (1e-12 of the data's size) before timing.
+void BM_reference_interpolate_natural(benchmark::State& state) {
+  const auto p = points(static_cast<std::size_t>(state.range(0)));
+  const auto ref = hula::bench::interpolate_natural(p);
+  const auto ours = hula::nurbs::interpolate_cubic(p);
+  double diff = 0.0, size = 0.0;
+  for (std::size_t i = 0; i < ref.points.size(); ++i) {
+    diff = std::max(diff, hula::max_abs(ref.points[i] - ours.control_points()[i]));
+    size = std::max(size, hula::max_abs(ref.points[i]));
+  }
+  if (!(diff <= 1e-12 * size)) {
+    state.SkipWithError(("control points differ from interpolate_cubic's by " + std::to_string(diff)).c_str());
+    return;
+  }
+  for (auto _ : state) {
+    auto c = hula::bench::interpolate_natural(p);
+    benchmark::DoNotOptimize(c);
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * state.range(0));
+}
+BENCHMARK(BM_reference_interpolate_natural)->Arg(10)->Arg(64);
 
 void BM_occt_GeomAPI_Interpolate(benchmark::State& state) {
   const auto p = points(static_cast<std::size_t>(state.range(0)));

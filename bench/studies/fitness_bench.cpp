@@ -14,12 +14,15 @@
 #include <TColgp_HArray1OfPnt.hxx>
 #include <cmath>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "hula/core/rng.hpp"
+#include "hula/core/simd.hpp"
 #include "hula/studies/curvature_match.hpp"
 #include "hula/studies/curvature_torsion_match.hpp"
 #include "hula/studies/match_study.hpp"
+#include "reference/fitness.hpp"
 
 namespace {
 
@@ -28,6 +31,12 @@ using hula::studies::CurvatureMatch;
 using hula::studies::CurvatureMatchSetup;
 
 constexpr std::size_t kSamples = 200;
+
+// The instruction set in the JSON context (docs/benchmarks.md names it with each figure).
+const bool kSimdContext = [] {
+  benchmark::AddCustomContext("simd", std::string(hula::simd_level_name(hula::simd_level())));
+  return true;
+}();
 
 std::vector<Vec3> wave(std::size_t n) {
   std::vector<Vec3> p(n);
@@ -69,6 +78,35 @@ void BM_match_fitness(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
 }
 BENCHMARK(BM_match_fitness)->Arg(4)->Arg(7)->Arg(10);
+
+// The hand-written fitness loop (reference/fitness.hpp) on the same points (after the same x[0] change);
+// its e is checked against mean_distance's (1e-12 relative) before timing.
+void BM_reference_fitness(benchmark::State& state) {
+  const CurvatureMatch match(setup(static_cast<std::size_t>(state.range(0))));
+  hula::studies::SplineProfileSampler::Workspace ws;
+  std::vector<Vec3> pts(match.setup().points.size());
+  std::vector<double> kappa(kSamples);
+  std::vector<double> x = match.start_variables();
+  hula::Rng rng(1);
+  for (auto& v : x) v += rng.uniform(-0.1, 0.1);
+  const std::vector<double>& u = match.sampler().abscissae();
+  const std::vector<double>& target = match.target_samples();
+  const double ours = match.mean_distance(x, ws, pts, kappa);
+  match.points_from(x, pts);
+  const double ref = hula::bench::reference_fitness(pts, u, target);
+  if (!(std::fabs(ours - ref) <= 1e-12 * std::fabs(ref))) {
+    state.SkipWithError(("reference fitness " + std::to_string(ref) + " != ours " + std::to_string(ours)).c_str());
+    return;
+  }
+  double sign = 1e-9;
+  for (auto _ : state) {
+    pts[1].x += sign;
+    sign = -sign;
+    benchmark::DoNotOptimize(hula::bench::reference_fitness(pts, u, target));
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
+}
+BENCHMARK(BM_reference_fitness)->Arg(4)->Arg(7)->Arg(10);
 
 // The same with the arc-length abscissa (span lengths by Gauss-Legendre, Newton per sample).
 void BM_match_fitness_arclength(benchmark::State& state) {

@@ -9,6 +9,7 @@ Geometry:
     Law               law expressions: parse, evaluate, derive, integrate, roots.
     analyse           κ, τ, T, N, B, speed, fins along a curve (thesis ch. 6).
     reconstruct       a curve from its natural equations κ(s), τ(s) (thesis 8.2.2).
+    intersect         where two curves (or one curve with itself) meet; distance: how far apart.
 Optimisation:
     optimise, Problem, from_pygmo   Flexo GAs and NSGA-II with NumPy objectives.
 Studies:
@@ -37,11 +38,15 @@ IntrinsicCurve = _core.IntrinsicCurve
 NurbsFit = _core.NurbsFit
 Law = _core.Law
 interpolate = _core.interpolate
+read_points = _core.read_points
 analyse = _core.analyse
 reconstruct = _core.reconstruct
+intersect = _core.intersect
+distance = _core.distance
 
 __all__ = [
-    "NurbsCurve", "ClosestPoint", "IntrinsicCurve", "NurbsFit", "Law", "interpolate", "analyse", "reconstruct",
+    "NurbsCurve", "ClosestPoint", "IntrinsicCurve", "NurbsFit", "Law", "interpolate", "read_points", "analyse",
+    "reconstruct", "intersect", "distance",
     "optimise", "Problem", "OptimiseResult", "from_pygmo", "builtin_problem", "evaluate_builtin",
     "fair_knots", "match_curvature", "StudyResult", "Document",
     "Error", "InvalidArgumentError", "NonFiniteInputError", "TooFewPointsError", "CoincidentPointsError",

@@ -99,6 +99,11 @@ def interpolate(points: ArrayLike, *, start: str | ArrayLike = "natural", end: s
     start/end: "natural", "bessel", "not-a-knot", "occt", or a tangent vector dC/dt (t in [0, 1]).
     parameters: explicit data parameters (increasing, from 0 to 1) instead of the parameterisation."""
 
+def read_points(path: str) -> Array:
+    """The points of a point file as an (n, 2) or (n, 3) array: JSON, or lines of 2 or 3 numbers separated by
+    whitespace, commas or semicolons, with header lines (an airfoil's name) and # comments; Selig and Lednicer
+    airfoil files (docs/formats.md "Point files"). Errors name the file, the line and the separator."""
+
 def analyse(curve: NurbsCurve | dict[str, Any], samples: int = 100, *, at: ArrayLike | None = None,
             by: str = "parameter", arc_lengths: bool = False, bishop: bool = False, fins: list[str] = ...,
             fin_scale: float | None = None, fin_density: int = 0, features: bool = False) -> dict[str, Any]:
@@ -141,6 +146,15 @@ def reconstruct(kappa: Law | str | float, tau: Law | str | float = 0.0, *, lengt
     (thesis 8.2.2), starting at `point` with unit tangent and normal (defaults: origin, +x, +y).
     τ ≡ 0 gives a planar curve with signed κ (eq. 34); otherwise Frenet–Serret is integrated."""
 
+def intersect(a: NurbsCurve, b: NurbsCurve | None = None, *, tolerance: float | None = None) -> dict[str, Any]:
+    """Where curves a and b meet, or with b omitted where a meets itself (docs/formats.md "Intersection
+    results"): {"tolerance", "points": [{"s", "t", "point", "distance", "angle", "kind"}], "overlaps":
+    [{"s": [s0, s1], "t": [t0, t1], "start", "end"}]}; kind is "crossing" or "tangent". tolerance:
+    curves closer than this (model units, default 1e-6) meet."""
+
+def distance(a: NurbsCurve, b: NurbsCurve, *, tolerance: float | None = None) -> dict[str, Any]:
+    """The smallest distance between a and b: {"distance", "s", "t", "point_a", "point_b"}."""
+
 class Law:
     """A law expression (docs/formats.md "Law expressions") of named parameters."""
     def __init__(self, text: str, parameters: Sequence[str] = ("t",)) -> None:
@@ -159,6 +173,10 @@ class Law:
         """The exact symbolic derivative."""
     def integrate(self, a: float, b: float, *, parameter: str | None = None,
                   relative_tolerance: float = 1e-12) -> float:
-        """∫_a^b of a scalar law (adaptive Gauss–Kronrod, split at singularities)."""
+        """∫_a^b of a scalar law (adaptive Gauss–Kronrod, split at singularities; tanh-sinh at an
+        integrable singular end, exp-sinh / sinh-sinh for a or b = ±inf); nan when divergent."""
+    def antiderivative(self, parameter: str | None = None) -> Law | None:
+        """A closed-form F with F' = self (substitution, by parts, rational, atan/asin forms, trigonometric
+        powers; docs/modules/law.md), or None when no rule applies."""
     def roots(self, a: float, b: float, *, parameter: str | None = None) -> Array:
         """All roots of a scalar law in [a, b], increasing."""

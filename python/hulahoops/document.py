@@ -84,7 +84,10 @@ class Document:
         return self._doc.add_curve(_curve_value(curve), name)
 
     def add_points(self, points: Any, *, name: str = "") -> int:
-        """Adds a point set (N × 2 or N × 3 numbers, e.g. a NumPy array) and returns its new label."""
+        """Adds a point set and returns its new label: N × 2 or N × 3 numbers (e.g. a NumPy array), or
+        a point file's path (any point file: whitespace, comma or semicolon columns, airfoil .dat files)."""
+        if isinstance(points, (str, os.PathLike)):
+            points = _core.read_points(os.fspath(points))
         rows = [[float(v) for v in p] for p in points]
         return self._doc.add_points(rows, name)
 

@@ -24,7 +24,9 @@
 #include "hula/diffgeom/analysis.hpp"
 #include "hula/intrinsic/natural_equations.hpp"
 #include "hula/io/curve_analysis_json.hpp"
+#include "hula/io/intersection_json.hpp"
 #include "hula/io/json_curve.hpp"
+#include "hula/io/points_file.hpp"
 #include "hula/nurbs/arc_length.hpp"
 #include "hula/nurbs/closest_point.hpp"
 #include "hula/nurbs/elevate.hpp"
@@ -280,6 +282,7 @@ py::dict analysis_to_python(const diffgeom::CurveAnalysis& a) {
     mono["violations"] = violations;
     x["curvature_monotonicity"] = mono;
     x["maximum_curvature"] = to_python(io::maximum_curvature_to_json(ft.maximum_curvature));
+    x["self_intersections"] = to_python(io::intersection_to_json(ft.self_intersections, 3));
     d["features"] = x;
   }
   return d;
@@ -482,6 +485,14 @@ void register_geometry(py::module_& m) {
         return best;
       },
       py::arg("curve"), py::arg("t"), py::arg("out"), py::arg("repeats"));
+
+  m.def(
+      "read_points",
+      [](const std::string& path) {
+        const io::PointSet set = io::read_points_file(path);
+        return to_rows(set.points, set.dimension);
+      },
+      py::arg("path"));
 
   m.def(
       "interpolate",

@@ -18,6 +18,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "hula/core/error.hpp"
+#include "hula/law/antiderivative.hpp"
 #include "hula/law/derive.hpp"
 #include "hula/law/integrate.hpp"
 #include "hula/law/parser.hpp"
@@ -158,6 +159,14 @@ void register_laws(py::module_& m) {
           },
           py::arg("a"), py::arg("b"), py::kw_only(), py::arg("parameter") = py::none(),
           py::arg("relative_tolerance") = 1e-12)
+      .def(
+          "antiderivative",
+          [](const PyLaw& l, const std::optional<std::string>& parameter) -> std::optional<PyLaw> {
+            std::optional<law::Law> F = law::antiderivative(l.law, parameter_or_only(l, parameter));
+            if (!F) return std::nullopt;
+            return PyLaw{*F, l.parameters, {}};
+          },
+          py::arg("parameter") = py::none())
       .def(
           "roots",
           [](const PyLaw& l, double a, double b, const std::optional<std::string>& parameter) {

@@ -53,3 +53,20 @@ def test_undefined_values_are_nan_and_parse_errors_are_positioned():
     with pytest.raises(hh.ParseError) as e:
         hh.Law("sin(t")
     assert e.value.where["line"] == 1 and e.value.where["column"] >= 1
+
+
+def test_improper_integrals_and_antiderivatives():
+    # checks (issue 26) the improper integrals the CLI refused as divergent against their closed forms, a
+    # divergent one (nan), an infinite range, and antiderivatives differentiating back (F' = f at 50 points)
+    assert hh.Law("sqrt(t)").integrate(0, 1) == pytest.approx(2 / 3, rel=1e-12)
+    assert hh.Law("log(t)").integrate(0, 1) == pytest.approx(-1.0, rel=1e-12)
+    assert hh.Law("t^(-1/2)").integrate(0, 1) == pytest.approx(2.0, rel=1e-12)
+    assert hh.Law("exp(-t^2)").integrate(-math.inf, math.inf) == pytest.approx(math.sqrt(math.pi), rel=1e-12)
+    assert math.isnan(hh.Law("1/t").integrate(0, 1))
+    t = np.linspace(0.1, 2, 50)
+    for text in ("t*exp(t)", "t*sin(t)", "2*t*cos(t^2)", "1/(1+t^2)", "cos(t)^2"):
+        f = hh.Law(text)
+        F = f.antiderivative()
+        assert F is not None, text
+        assert np.allclose(F.derive()(t), f(t), rtol=1e-12, atol=1e-12), text
+    assert hh.Law("sin(t^2)").antiderivative() is None

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 import hulahoops as hh
-from conftest import hula, numbers
+from conftest import SOURCE, hula, numbers
 
 
 def test_evaluate_matches_cli_bit_for_bit(space_curve, tmp_path):
@@ -108,6 +108,25 @@ def test_interpolate_matches_cli(tmp_path):
     c = hh.interpolate(pts)
     chords = np.concatenate([[0], np.cumsum(np.hypot(*np.diff(pts, axis=0).T))])
     assert np.max(np.abs(c(chords / chords[-1]) - pts)) < 1e-11
+
+
+def test_read_points_takes_files_as_people_have_them(tmp_path):
+    # checks read_points on a Selig airfoil file as shipped (name line, no final newline) against a plain
+    # scan of its numeric lines, on a semicolon file with decimal commas, and that errors name the file
+    dat = SOURCE / "tests" / "data" / "real" / "naca2412.dat"
+    rows = [list(map(float, line.split())) for line in dat.read_text().splitlines()[1:] if line.strip()]
+    pts = hh.read_points(str(dat))
+    assert pts.shape == (len(rows), 2)
+    assert np.array_equal(pts, np.array(rows))
+    (tmp_path / "p.csv").write_text("x;y;z\n1,5;2;3\n4;5,25;6\n")
+    assert np.array_equal(hh.read_points(str(tmp_path / "p.csv")), [[1.5, 2, 3], [4, 5.25, 6]])
+    (tmp_path / "bad.txt").write_text("1 2\n3 x\n")
+    with pytest.raises(hh.ParseError) as e:
+        hh.read_points(str(tmp_path / "bad.txt"))
+    assert "bad.txt: line 2, column 3" in e.value.message and "whitespace" in e.value.message
+    with hh.Document.create(tmp_path / "d.hula") as doc:
+        label = doc.add_points(dat, name="naca2412")
+        assert doc.show(label)["points"] == pts.tolist()
 
 
 def test_errors_carry_code_message_where(space_curve):

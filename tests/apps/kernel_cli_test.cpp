@@ -25,6 +25,7 @@
 #include "hula/nurbs/knot_removal.hpp"
 #include "hula/nurbs/refine.hpp"
 #include "hula/nurbs/reparam.hpp"
+#include "hula/studies/tolerance_fit.hpp"
 #include "hula/testing/curve_generators.hpp"
 #include "hula/testing/process_json.hpp"
 #include "hula/testing/run_process.hpp"
@@ -176,10 +177,11 @@ TEST(KernelCli, SplitHalvesJoinWithTheCurvesContinuity) {
   }
 }
 
-// checks: `approximate --tolerance` meets the tolerance at the data points (re-measured from the
-// written curve), one control point fewer misses it (library fit), and the same count comes out of
-// nurbs::approximate_to_tolerance.
-TEST(KernelCli, ApproximateMeetsToleranceWithFewestControlPoints) {
+// checks: `approximate --tolerance` writes the curve of studies::fit_within_tolerance (degree 3, ends
+// on the first and last point, chord-length start): every point within the tolerance of the written
+// curve (closest point, re-measured here), the ends exact, and no more control points than the plain
+// least-squares search nurbs::approximate_to_tolerance needs.
+TEST(KernelCli, ApproximateMeetsToleranceCompactly) {
   testing::TempDir dir;
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
     Rng rng(seed);
@@ -195,13 +197,22 @@ TEST(KernelCli, ApproximateMeetsToleranceWithFewestControlPoints) {
     const double tol = 0.05;
     const json j = run_ok({"approximate", "--points", pfile, "--tolerance", "0.05", "-o", out});
     const NurbsCurve c = io::read_curve_file(out).nurbs();
-    const nurbs::ToleranceFitResult lib = nurbs::approximate_to_tolerance(pts, tol);
-    EXPECT_EQ(c, lib.fit.curve) << seed;
-    for (std::size_t i = 0; i < pts.size(); ++i) EXPECT_LE(distance(c.evaluate(lib.fit.parameters[i]), pts[i]), tol);
-    nurbs::ApproximationOptions fewer;
-    fewer.control_points = c.control_points().size() - 1;
-    EXPECT_GT(nurbs::approximate(pts, fewer).max_deviation, tol) << seed;
+    studies::ToleranceFitOptions o;
+    o.tolerance = tol;
+    o.degree = 3;
+    o.min_degree = 3;
+    o.ends = studies::FitEnds::Interpolated;
+    o.max_control_points = pts.size();
+    const studies::ToleranceFit lib =
+        studies::fit_within_tolerance(pts, nurbs::parameterise(pts, nurbs::Parameterisation::ChordLength), {}, o);
+    EXPECT_EQ(c, lib.faired) << seed;
+    for (const Vec3& q : pts) EXPECT_LE(nurbs::closest_point(c, q).distance, tol * (1 + 1e-9));
+    EXPECT_EQ(c.evaluate(0.0), pts.front());
+    EXPECT_EQ(c.evaluate(1.0), pts.back());
+    EXPECT_LE(c.control_points().size(), nurbs::approximate_to_tolerance(pts, tol).fit.curve.control_points().size())
+        << seed;
     EXPECT_EQ(j["control_points"], c.control_points().size());
+    EXPECT_LE(j["max_deviation"].get<double>(), tol);
   }
 }
 
@@ -229,6 +240,40 @@ TEST(KernelCli, EnergyOfCircleIsClosedForm) {
   const json j = run_ok({"energy", in});
   EXPECT_NEAR(j["bending"]["value"].get<double>(), std::numbers::pi, 1e-9);
   EXPECT_NEAR(j["curvature_variation"]["value"].get<double>(), 0.0, 1e-9);
+}
+
+// checks (issue 26): `edit to-nurbs` converts a natural (exact) curve file to a NURBS within --tolerance — measured
+// here against the closed-form circle κ = 2 (radius 1/2) at 500 arc lengths — and a law curve likewise; the other
+// edits refuse a natural curve by name instead of editing its stand-in.
+TEST(KernelCli, ToNurbsConvertsExactCurves) {
+  testing::TempDir dir;
+  const std::string in = (dir / "circle.json").string(), out = (dir / "circle-nurbs.json").string();
+  io::write_file_atomically(in, R"json({"kind": "natural", "curvature": "2", "length": 3, "tolerance": 1e-12})json");
+  const json j = run_ok({"edit", "to-nurbs", in, "--tolerance", "1e-9", "-o", out});
+  EXPECT_EQ(j["operation"], "to-nurbs");
+  EXPECT_EQ(j["from"], "natural");
+  EXPECT_LE(j["max_deviation"].get<double>(), 1e-9);
+  const NurbsCurve c = io::read_curve_file(out).nurbs();
+  EXPECT_EQ(c.domain().end, 3.0);
+  for (int i = 0; i <= 500; ++i) {
+    const double s = 3.0 * i / 500.0;
+    EXPECT_LT(distance(c.derivatives(s, 0)[0], Vec3{0.5 * std::sin(2 * s), 0.5 - 0.5 * std::cos(2 * s), 0.0}),
+              1e-9 + 1e-12)
+        << "s = " << s;
+  }
+  const std::string law = (dir / "law.json").string();
+  io::write_file_atomically(law, R"json({"kind": "law", "expression": "vec(cos(t), sin(t))", "domain": [0, 3]})json");
+  const json l = run_ok({"edit", "to-nurbs", law, "--tolerance", "1e-8", "-o", out});
+  EXPECT_EQ(l["from"], "law");
+  EXPECT_LE(l["max_deviation"].get<double>(), 1e-8);
+  const ProcessResult r = testing::run_process(HULA_CLI_PATH, {"edit", "reverse", in, "-o", out});
+  EXPECT_EQ(r.exit_code, 3);
+  EXPECT_NE(testing::stderr_error(r)["message"].get<std::string>().find("is a natural curve"), std::string::npos);
+  // Below the curve's integration tolerance the conversion is refused naming the tolerance.
+  const ProcessResult low =
+      testing::run_process(HULA_CLI_PATH, {"edit", "to-nurbs", in, "--tolerance", "1e-13", "-o", out});
+  EXPECT_EQ(low.exit_code, 3);
+  EXPECT_EQ(testing::stderr_error(low)["where"]["field"], "tolerance");
 }
 
 }  // namespace

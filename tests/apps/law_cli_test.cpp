@@ -60,11 +60,54 @@ TEST(LawCli, DivergentIntegralIsExit4UnlessAllowUnconverged) {
   EXPECT_EQ(e["code"], "NumericalFailure");
   EXPECT_NE(e["message"].get<std::string>().find("--integrate 0,2"), std::string::npos) << e;
   EXPECT_NE(e["message"].get<std::string>().find("--allow-unconverged"), std::string::npos) << e;
+  EXPECT_NE(e["message"].get<std::string>().find("divergent: the integrand is not integrable at t = 1"),
+            std::string::npos)
+      << e;
   const json j = hula::testing::stdout_json(law({"1/(t-1)", "--integrate", "0,2", "--allow-unconverged"}));
   EXPECT_FALSE(j["integral"]["converged"].get<bool>());
+  EXPECT_TRUE(j["integral"]["divergent"].get<bool>());
+  EXPECT_TRUE(j["integral"]["value"].is_null());
+  ASSERT_EQ(j["integral"]["singular_points"].size(), 1U) << j;
+  EXPECT_NEAR(j["integral"]["singular_points"][0]["t"].get<double>(), 1.0, 1e-12);
+  EXPECT_NEAR(j["integral"]["singular_points"][0]["exponent"].get<double>(), -1.0, 1e-6);
+  EXPECT_FALSE(j["integral"]["singular_points"][0]["integrable"].get<bool>());
   // a convergent integral is unaffected: ∫_0^π sin = 2
   const json s = hula::testing::stdout_json(law({"sin(t)", "--integrate", "0,3.141592653589793"}));
   EXPECT_NEAR(s["integral"]["value"].get<double>(), 2.0, 1e-12);
+}
+
+// checks (issue 26): ∫₀¹ √t, ∫₀¹ log t and ∫₀¹ t^(−1/2) were refused as divergent; they converge: 2/3,
+// −1 and 2 in closed form (the antiderivative with its limit at 0), and an improper integral without a
+// closed form (∫₀¹ log(t)·cos t… here ∫₀^∞ e^(−t²) = √π/2) says it stayed numeric and why.
+TEST(LawCli, ImproperIntegralsConverge) {
+  struct Case {
+    const char* f;
+    const char* interval;
+    double value;
+    const char* antiderivative;
+  };
+  const Case cases[] = {{"sqrt(t)", "0,1", 2.0 / 3, "0.66666666666666663*t^1.5"},
+                        {"log(t)", "0,1", -1.0, "t*log(t) - t"},
+                        {"t^(-1/2)", "0,1", 2.0, "2*sqrt(t)"}};
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.f);
+    const json j = hula::testing::stdout_json(law({c.f, "--integrate", c.interval}));
+    const json& i = j["integral"];
+    EXPECT_NEAR(i["value"].get<double>(), c.value, 1e-14);
+    EXPECT_EQ(i["method"], "symbolic");
+    EXPECT_EQ(i["antiderivative"], c.antiderivative);
+    EXPECT_TRUE(i["converged"].get<bool>());
+    EXPECT_FALSE(i["divergent"].get<bool>());
+  }
+  const json g = hula::testing::stdout_json(law({"exp(-t^2)", "--integrate", "0,inf"}));
+  EXPECT_NEAR(g["integral"]["value"].get<double>(), std::sqrt(M_PI) / 2, 1e-13);
+  EXPECT_EQ(g["integral"]["method"], "numeric");
+  EXPECT_EQ(g["integral"]["interval"][1], "inf");
+  EXPECT_EQ(g["integral"]["numeric_reason"], "an infinite bound");
+  const json s = hula::testing::stdout_json(law({"sin(t^2)/sqrt(t)", "--integrate", "0,1"}));
+  EXPECT_EQ(s["integral"]["method"], "numeric");
+  EXPECT_EQ(s["integral"]["numeric_reason"], "no closed-form antiderivative of sin(t^2)/sqrt(t)");
+  EXPECT_TRUE(s["integral"]["converged"].get<bool>());
 }
 
 // checks: a pole is no root: `1/(t-1) --roots 0,2.3` is exit 4 naming the sign change at t = 1;

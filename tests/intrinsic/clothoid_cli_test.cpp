@@ -11,8 +11,11 @@
 #include <string>
 #include <vector>
 
+#include "hula/curve/curve.hpp"
+#include "hula/io/json_curve.hpp"
 #include "hula/testing/process_json.hpp"
 #include "hula/testing/run_process.hpp"
+#include "hula/testing/temp_dir.hpp"
 
 #ifndef HULA_CLI_PATH
 #error "HULA_CLI_PATH must name the hula binary"
@@ -48,6 +51,48 @@ TEST(ClothoidCli, G1QuarterCircle) {
   EXPECT_NEAR(p["point"][1].get<double>(), 1.0 - std::cos(std::numbers::pi / 4), 1e-12);
   EXPECT_NEAR(p["theta"].get<double>(), std::numbers::pi / 4, 1e-12);
   EXPECT_NEAR(p["kappa"].get<double>(), 1.0, 1e-12);
+}
+
+// checks (issue 26): -o writes the G2 spline as a curve file by its curvature law (kind natural, read back as
+// an exact curve whose end is the requested point and whose κ at the ends is the request, to 1e-10);
+// --to-nurbs TOL writes its NURBS instead, within TOL of that exact curve at 200 arc lengths.
+TEST(ClothoidCli, WritesTheExactCurveOrItsNurbs) {
+  testing::TempDir dir;
+  const std::string exact = (dir.path() / "g2.json").string(), fitted = (dir.path() / "g2-nurbs.json").string();
+  const std::vector<std::string> base = {
+      "clothoid", "--start-point", "-2,3", "--start-angle", "1.0471975511965976",  "--start-curvature",
+      "-0.2",     "--end-point",   "3,2",  "--end-angle",   "-0.7853981633974483", "--end-curvature",
+      "0.5"};
+  std::vector<std::string> args = base;
+  args.insert(args.end(), {"-o", exact, "--tolerance", "1e-12"});
+  const ProcessResult r = hula(args);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_EQ(j["output"]["kind"], "natural");
+  EXPECT_EQ(j["output"]["path"], exact);
+  const curve::Curve c = io::read_curve_file(exact);
+  ASSERT_EQ(c.kind(), curve::Kind::Natural);
+  EXPECT_EQ(std::get<curve::NaturalData>(c.data()).tolerance, 1e-12);
+  EXPECT_NEAR(c.length(), j["length"].get<double>(), 1e-14 * j["length"].get<double>());
+  EXPECT_LT(distance(c.point(c.length()), Vec3{3, 2, 0}), 1e-10);
+  EXPECT_LT(distance(c.point(0.0), Vec3{-2, 3, 0}), 1e-15);
+  args = base;
+  args.insert(args.end(), {"-o", fitted, "--to-nurbs", "1e-8"});
+  const ProcessResult n = hula(args);
+  ASSERT_EQ(n.exit_code, 0) << n.err;
+  const json k = json::parse(n.out);
+  EXPECT_EQ(k["output"]["kind"], "nurbs");
+  EXPECT_LE(k["output"]["max_deviation"].get<double>(), 1e-8);
+  const curve::Curve f = io::read_curve_file(fitted);
+  ASSERT_EQ(f.kind(), curve::Kind::Nurbs);
+  for (int i = 0; i <= 200; ++i) {
+    const double s = c.length() * i / 200.0;
+    EXPECT_LT(distance(f.point(std::min(s, f.domain().end)), c.point(s)), 1e-8 + 1e-10) << "s = " << s;
+  }
+  // --to-nurbs without -o writes nothing and says so (exit 2: the option needs -o).
+  args = base;
+  args.insert(args.end(), {"--to-nurbs", "1e-8"});
+  EXPECT_EQ(hula(args).exit_code, 2);
 }
 
 // checks: G2 on Bertolazzi–Frego's test_G2_1 data prints three segments whose printed end values equal the next

@@ -80,6 +80,30 @@ TEST(ReconstructCli, DefaultSamplesAndOutputFile) {
   EXPECT_EQ(f.nurbs().control_points().size(), j["fit"]["control_points"].get<std::size_t>());
 }
 
+// checks (issue 26): --exact makes -o write the curve by its laws (kind natural, with the integration tolerance),
+// read back as an exact curve: the helix κ = 0.16, τ = 0.08 has κ and τ to rounding and the printed points.
+TEST(ReconstructCli, ExactWritesTheLaws) {
+  testing::TempDir dir;
+  const std::string out = (dir.path() / "helix.json").string();
+  const ProcessResult r = hula({"reconstruct", "--kappa", "0.16", "--tau", "0.08", "--length", "20", "--tolerance",
+                                "1e-11", "--at", "13", "-o", out, "--exact"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(r.out);
+  const curve::Curve c = io::read_curve_file(out);
+  ASSERT_EQ(c.kind(), curve::Kind::Natural);
+  const auto& d = std::get<curve::NaturalData>(c.data());
+  EXPECT_EQ(d.curvature, "0.16");
+  EXPECT_EQ(d.torsion, "0.08");
+  EXPECT_EQ(d.tolerance, 1e-11);
+  for (std::size_t k = 0; k < 3; ++k) EXPECT_NEAR(c.point(13.0)[k], j["points"][0]["position"][k].get<double>(), 1e-10);
+  // --exact needs -o, and is refused with a held end (the boundary-value problem changes the laws).
+  EXPECT_EQ(hula({"reconstruct", "--kappa", "1", "--tau", "0", "--length", "2", "--exact"}).exit_code, 3);
+  EXPECT_EQ(
+      hula({"reconstruct", "--kappa", "1", "--tau", "0", "--length", "2", "--end-point", "1,1,0", "--exact", "-o", out})
+          .exit_code,
+      3);
+}
+
 // checks: a bad expression exits 3 with ParseError naming the option, the expression and the column.
 TEST(ReconstructCli, BadExpressionExit3NamesColumn) {
   const ProcessResult r = hula({"reconstruct", "--kappa", "1", "--tau", "0.3*cos(2*s", "--length", "2"});

@@ -5,9 +5,15 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
 #include "hula/core/error.hpp"
 #include "hula/testing/expect_error.hpp"
 #include "hula/testing/fpe.hpp"
+#include "hula/testing/temp_dir.hpp"
 
 namespace hula::io {
 namespace {
@@ -79,6 +85,116 @@ TEST(PointsFileErrors, JsonErrorsNamePath) {
   HULA_EXPECT_ERROR(parse_points("[[0, 0],"), Errc::ParseError, "not valid JSON at line 1");
   const testing::FpeGuard overflow_is_expected;  // 1e999 overflows inside strtod (FE_OVERFLOW)
   HULA_EXPECT_ERROR(parse_points("[[0, 1e999]]"), Errc::NonFiniteInput, "1e999");
+}
+
+// checks: whitespace-separated columns (spaces and tabs, several in a row) read as points.
+TEST(PointsFile, WhitespaceColumns) {
+  const PointSet s = parse_points("  1.0000  0.0013\n0.95\t\t0.0114\n\n   0  -.0012");
+  EXPECT_EQ(s.dimension, 2);
+  ASSERT_EQ(s.points.size(), 3u);
+  EXPECT_EQ(s.points[1], (Vec3{0.95, 0.0114, 0}));
+  EXPECT_EQ(s.points[2], (Vec3{0, -0.0012, 0}));
+  const PointSet t = parse_points("x y z\n1 2 3\n4 5 6 # a comment after a point\n");
+  EXPECT_EQ(t.dimension, 3);
+  ASSERT_EQ(t.points.size(), 2u);
+  EXPECT_EQ(t.points[1], (Vec3{4, 5, 6}));
+}
+
+// checks: semicolon columns, with the decimal comma a semicolon file may use.
+TEST(PointsFile, SemicolonColumnsAndDecimalComma) {
+  const PointSet s = parse_points("X;Y;Z\r\n1,5;2,25;-3\r\n4.5 ; 0 ; 1e-3\r\n");
+  ASSERT_EQ(s.points.size(), 2u);
+  EXPECT_EQ(s.points[0], (Vec3{1.5, 2.25, -3}));
+  EXPECT_EQ(s.points[1], (Vec3{4.5, 0, 1e-3}));
+}
+
+// checks: a Selig airfoil file (a free-text name line, then x y) reads as written, and several
+// lines of provenance before the first point are a header too.
+TEST(PointsFile, SeligHeaderLines) {
+  const PointSet s = parse_points(" NACA 23012  12% \n 1.00003  0.00126  \n 0.5 0.07\n 0.99997 -0.00126  ");
+  EXPECT_EQ(s.dimension, 2);
+  ASSERT_EQ(s.points.size(), 3u);
+  EXPECT_EQ(s.points[0], (Vec3{1.00003, 0.00126, 0}));
+  EXPECT_EQ(s.points[2], (Vec3{0.99997, -0.00126, 0}));
+  const PointSet t =
+      parse_points("SC(2)-0714 airfoil\nmodel coordinates\nFrom NASA TP-2890\n1.000  -.0104\n0.5 0.06\n");
+  ASSERT_EQ(t.points.size(), 2u);
+  EXPECT_EQ(t.points[0], (Vec3{1.0, -0.0104, 0}));
+}
+
+// checks: a Lednicer airfoil file (name, counts line, upper then lower surface from the leading
+// edge) comes back in Selig order, trailing edge over the upper surface and back, the shared
+// leading-edge point once; a count line that does not add up is an ordinary point.
+TEST(PointsFile, LednicerBecomesSeligOrder) {
+  const PointSet s = parse_points(
+      " NACA 0012 AIRFOILS\n       3.       3.\n\n 0.0 0.0\n 0.5 0.06\n 1.0 0.00126\n\n 0.0 0.0\n 0.5 -.06\n 1.0 "
+      "-.00126\n");
+  ASSERT_EQ(s.points.size(), 5u);
+  EXPECT_EQ(s.points[0], (Vec3{1.0, 0.00126, 0}));
+  EXPECT_EQ(s.points[1], (Vec3{0.5, 0.06, 0}));
+  EXPECT_EQ(s.points[2], (Vec3{0.0, 0.0, 0}));
+  EXPECT_EQ(s.points[3], (Vec3{0.5, -0.06, 0}));
+  EXPECT_EQ(s.points[4], (Vec3{1.0, -0.00126, 0}));
+  const PointSet t = parse_points("name\n 3. 3.\n 0 0\n 1 1\n");
+  ASSERT_EQ(t.points.size(), 3u);
+  EXPECT_EQ(t.points[0], (Vec3{3, 3, 0}));
+}
+
+// checks: errors name the separator the file uses and the line that set it; a line with another
+// separator is not silently split; text after the first point is an error, not a header; a file
+// of text lines only has no point.
+TEST(PointsFileErrors, NameTheSeparator) {
+  HULA_EXPECT_ERROR(parse_points("1 2 3\n4,5,6\n"), Errc::ParseError,
+                    "line 2, column 1: the 5-character field is not a number (fields separated by whitespace, as on "
+                    "line 1)");
+  HULA_EXPECT_ERROR(parse_points("name\n1;2\n3;x\n"), Errc::ParseError,
+                    "line 3, column 3: the 1-character field is not a number (fields separated by semicolons, as on "
+                    "line 2)");
+  HULA_EXPECT_ERROR(parse_points("1 2\nend of data\n"), Errc::ParseError, "line 2, column 1");
+  HULA_EXPECT_ERROR(parse_points("root:x:0:0\ndaemon:x:1:1\n"), Errc::ParseError,
+                    "no point: none of the 2 non-blank lines");
+}
+
+// checks: errors from a file name the file before the line.
+TEST(PointsFileErrors, FileErrorsNameTheFile) {
+  const testing::TempDir dir;
+  const auto path = dir / "wing.dat";
+  std::ofstream(path) << "WING\n1 0\n0.5 0.0x6\n";
+  HULA_EXPECT_ERROR(read_points_file(path), Errc::ParseError, "wing.dat: line 3, column 5");
+}
+
+// checks: every airfoil file of the real corpus (tests/data/real, read as shipped) gives as many
+// points as it has lines that begin with a number, counted here by a plain scan of the text; the
+// Lednicer file loses its count line and the repeated leading-edge point, and starts and ends at
+// its trailing edge (x = 1) like the Selig files.
+TEST(PointsFile, RealAirfoilFilesReadAsShipped) {
+  const char* root = std::getenv("HULA_TEST_DATA");
+  ASSERT_NE(root, nullptr);
+  const std::filesystem::path dir = std::filesystem::path(root) / "real";
+  std::size_t files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    if (entry.path().extension() != ".dat") continue;
+    ++files;
+    std::ifstream in(entry.path());
+    std::stringstream text;
+    text << in.rdbuf();
+    std::size_t numeric = 0;
+    std::string line;
+    while (std::getline(text, line)) {
+      const auto b = line.find_first_not_of(" \t");
+      if (b != std::string::npos && (std::isdigit(static_cast<unsigned char>(line[b])) != 0 || line[b] == '-' ||
+                                     line[b] == '.' || line[b] == '+'))
+        ++numeric;
+    }
+    const PointSet s = read_points_file(entry.path());
+    SCOPED_TRACE(entry.path().filename().string());
+    EXPECT_EQ(s.dimension, 2);
+    const bool lednicer = entry.path().filename().string().find("lednicer") != std::string::npos;
+    EXPECT_EQ(s.points.size(), lednicer ? numeric - 2 : numeric);
+    EXPECT_NEAR(s.points.front().x, 1.0, 1e-4);
+    EXPECT_NEAR(s.points.back().x, 1.0, 1e-4);
+  }
+  EXPECT_GE(files, 10u);
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 
 #include "hula/law/derive.hpp"
 #include "hula/law/parser.hpp"
+#include "hula/law/simplify.hpp"
 #include "hula/testing/fpe.hpp"
 #include "law_test_util.hpp"
 
@@ -118,6 +119,116 @@ TEST(LawAntiderivative, SymbolicOnly) {
   EXPECT_FALSE(symbolic_definite_integral(parse("sin(pi*t^2/2)", ctx), "t", 0, 1).has_value());
   EXPECT_FALSE(symbolic_definite_integral(parse("max(0, 1 - abs(t - 1))", ctx), "t", 0, 2).has_value());
   EXPECT_FALSE(symbolic_definite_integral(parse("1/t", ctx), "t", -1, 2).has_value());
+}
+
+struct Rule {
+  const char* f;
+  double lo, hi;  // an interval where f is defined and finite
+  bool identity;  // simplify(F' − f) is exactly 0 (ring identities suffice)
+};
+
+// One integrand per rule of antiderivative.cpp, the five among them.
+// clang-format off
+const Rule kRules[] = {
+    // by parts, tabular
+    {"t*exp(t)", -2, 2, true},
+    {"t*sin(t)", -3, 3, true},
+    {"t^3*exp(-2*t + 1)", -1, 2, true},
+    {"(t^2 + 1)*cos(3*t)", -2, 2, true},
+    {"t*sinh(t)", -2, 2, true},
+    {"t^2*cosh(0.5*t)", -2, 2, true},
+    // by parts with an inverse function
+    {"log(t)", 0.1, 3, false},
+    {"t^2*log(t)", 0.1, 3, false},
+    {"log(2*t + 1)", 0, 3, false},
+    {"atan(t)", -3, 3, false},
+    {"t*atan(t)", -3, 3, false},
+    {"asin(t)", -0.9, 0.9, false},
+    {"acos(t)", -0.9, 0.9, false},
+    {"log(1 + t^2)", -2, 2, false},
+    // substitution
+    {"2*t*cos(t^2)", -2, 2, true},
+    {"t*exp(t^2)", -1.5, 1.5, true},
+    {"sin(t)^2*cos(t)", -3, 3, true},
+    {"exp(t)/(1 + exp(t))", -3, 3, true},
+    {"log(t)/t", 0.2, 3, true},
+    {"cos(t)/sin(t)", 0.2, 3, true},
+    {"t/(1 + t^2)^2", -2, 2, true},
+    {"t*sqrt(1 + t^2)", -2, 2, true},
+    {"exp(sin(t))*cos(t)", -3, 3, true},
+    {"t^2*(t^3 + 1)^4", -0.9, 1, true},
+    // rational
+    {"1/(1 + t^2)", -3, 3, true},
+    {"1/(t^2 + 2*t + 5)", -3, 3, false},
+    {"(3*t + 2)/(t^2 + 4)", -3, 3, false},
+    {"1/(t^2 - 4)", 2.5, 5, false},
+    {"1/(t*(t + 1))", 0.5, 3, false},
+    {"(t^3 + 1)/(t^2 + 1)", -2, 2, false},
+    {"1/(2*t + 1)^2", 0, 3, true},
+    // polynomial times a power of a linear factor
+    {"t*(2*t + 1)^2.5", 0, 3, false},
+    {"t^2/sqrt(t + 1)", 0, 3, false},
+    // trigonometric powers and products
+    {"cos(t)^2", -3, 3, true},
+    {"sin(t)^4", -3, 3, true},
+    {"sin(t)^3*cos(t)^2", -3, 3, true},
+    {"sin(2*t)^2*cos(2*t)^4", -3, 3, false},
+    {"sin(t)*cos(3*t)", -3, 3, false},
+    {"cos(2*t)*cos(5*t + 1)", -3, 3, false},
+    {"exp(2*t)*sin(3*t)", -2, 2, true},
+    {"exp(-t)*cos(t + 1)", -2, 2, true},
+    // square roots of quadratics (asin, log forms)
+    {"1/sqrt(1 - t^2)", -0.9, 0.9, false},
+    {"1/sqrt(t^2 + 1)", -2, 2, false},
+    {"sqrt(4 - t^2)", -1.9, 1.9, false},
+    {"(t + 1)/sqrt(t^2 + 2*t + 3)", -2, 2, false},
+    {"t^(-1/2)", 0.1, 3, true},
+};
+// clang-format on
+
+// checks: every rule differentiates back to its integrand: F' simplified (law::simplify), then compared
+// with f at 100 points to 1e-12 relative; where the simplifier's identities suffice (rings, sin² + cos² = 1;
+// not polynomial division nor atan/asin arguments), simplify(F' − f) is exactly 0.
+TEST(LawAntiderivative, EveryRuleDifferentiatesBack) {
+  for (const Rule& r : kRules) {
+    SCOPED_TRACE(r.f);
+    Context ctx;
+    const Law f = parse(r.f, ctx);
+    const std::optional<Law> F = antiderivative(f, "t");
+    ASSERT_TRUE(F.has_value());
+    const Law dF = simplify(derivative(*F, "t"));
+    for (int i = 0; i < 100; ++i) {
+      const double t = r.lo + (r.hi - r.lo) * (i + 0.5) / 100.0;
+      const double want = test::eval1(f, t);
+      EXPECT_NEAR(test::eval1(dF, t), want, 1e-12 * (1 + std::fabs(want))) << "t = " << t;
+    }
+    if (r.identity) {
+      SimplifyOptions identities;
+      identities.trig_identities = true;
+      const Law difference = simplify(derivative(*F, "t") - f, identities);
+      EXPECT_TRUE(difference.is_zero()) << print(difference);
+    }
+  }
+}
+
+// checks: what stays numeric says why: the blocking term of a sum, a pole the antiderivative cannot span;
+// an antiderivative without a finite limit at an integrable end.
+TEST(LawAntiderivative, NumericSaysWhy) {
+  testing::FpeGuard guard;
+  Context ctx;
+  const AntiderivativeReport rep = antiderivative_report(parse("t + sin(t^2)", ctx), "t");
+  EXPECT_FALSE(rep.antiderivative.has_value());
+  EXPECT_EQ(print(rep.blocking_term), "sin(t^2)");
+  const DefiniteIntegralResult n = definite_integral(parse("t + sin(t^2)", ctx), "t", 0, 1);
+  EXPECT_EQ(n.method, IntegralMethod::Numeric);
+  EXPECT_EQ(n.numeric_reason, "no closed-form antiderivative of sin(t^2)");
+  const DefiniteIntegralResult p = definite_integral(parse("1/t", ctx), "t", -1, 2);
+  EXPECT_EQ(p.method, IntegralMethod::Numeric);
+  EXPECT_EQ(p.numeric_reason, "the integrand is not integrable at t = 0");
+  EXPECT_TRUE(p.divergent);
+  // log(t)/sqrt(t) at 0: integrable (t^(−1/2) log t), closed form 2√t (log t − 2) with the limit 0.
+  const DefiniteIntegralResult q = definite_integral(parse("log(t)/sqrt(t)", ctx), "t", 0, 1);
+  EXPECT_NEAR(q.value, -4.0, 1e-13);
 }
 
 }  // namespace

@@ -4,9 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
+#include <optional>
 #include <vector>
 
 #include "hula/core/rng.hpp"
+#include "hula/core/simd.hpp"
 #include "hula/diffgeom/frenet.hpp"
 #include "hula/nurbs/arc_length.hpp"
 #include "hula/nurbs/interpolate.hpp"
@@ -113,6 +116,76 @@ CurvatureMatchSetup thesis_test_setup() {
 }
 
 // Fitness evaluation of "interpolate a cubic through the points, sample κ at 200 parameters, compare" allocates
+// checks: the vectorised sample kernel (issue 27) gives bit for bit the same κ and τ at every instruction
+// set this CPU has as one sample at a time (SimdLevel::Scalar), planar and spatial, natural and clamped
+// ends, spans shorter and longer than a vector, abscissae that fall on the data parameters.
+TEST(SplineProfileSampler, EveryInstructionSetGivesTheSameSamples) {
+  const hula::SimdLevel saved = hula::simd_level();
+  hula::Rng rng(2702);
+  int compared = 0;
+  for (int trial = 0; trial < 24; ++trial) {
+    const int dim = trial % 2 == 0 ? 2 : 3;
+    const std::size_t n = 2 + static_cast<std::size_t>(trial) % 9 * 3;  // 2 … 26 points
+    std::vector<Vec3> pts(n);
+    double x = 0.0;
+    for (auto& p : pts) {
+      x += rng.uniform(0.5, 3.0);
+      p = {x, rng.uniform(-3, 3), dim == 3 ? rng.uniform(-3, 3) : 0.0};
+    }
+    std::optional<Vec3> start, end;
+    if (trial % 3 == 1) start = Vec3{1, 0.5, dim == 3 ? 0.25 : 0.0};
+    if (trial % 4 == 2) end = Vec3{1, -0.5, 0};
+    // Uniform abscissae plus, for some trials, a few repeated values (non-decreasing is allowed).
+    std::vector<double> u = hula::studies::uniform_abscissae(37 + static_cast<std::size_t>(trial) * 7);
+    if (trial % 5 == 0) u.insert(u.begin() + 5, 3, u[5]);
+    const SplineProfileSampler sampler(n, dim, u, start, end);
+    SplineProfileSampler::Workspace ws;
+    for (const bool with_tau : {false, true}) {
+      hula::set_simd_level(hula::SimdLevel::Scalar);
+      std::vector<double> k0(u.size()), t0(with_tau ? u.size() : 0);
+      ASSERT_TRUE(sampler.sample(pts, ws, k0, t0));
+      for (int level = 1; level <= static_cast<int>(hula::supported_simd_level()); ++level) {
+        hula::set_simd_level(static_cast<hula::SimdLevel>(level));
+        std::vector<double> k1(u.size()), t1(with_tau ? u.size() : 0);
+        ASSERT_TRUE(sampler.sample(pts, ws, k1, t1));
+        ASSERT_EQ(std::memcmp(k0.data(), k1.data(), k0.size() * sizeof(double)), 0)
+            << hula::simd_level_name(static_cast<hula::SimdLevel>(level)) << " trial " << trial;
+        ASSERT_EQ(std::memcmp(t0.data(), t1.data(), t0.size() * sizeof(double)), 0)
+            << hula::simd_level_name(static_cast<hula::SimdLevel>(level)) << " trial " << trial;
+        ++compared;
+      }
+    }
+  }
+  hula::set_simd_level(saved);
+  EXPECT_GT(compared, 0);
+}
+
+// checks: the GA objective (mean_distance, four interleaved partial sums) equals the reports'
+// distances().mean bit for bit and the plain sequential mean of |κ − κ*| to 1e-14 relative.
+TEST(CurvatureMatch, MeanDistanceIsEquation31) {
+  CurvatureMatchSetup s;
+  s.points = {{0, 0, 0}, {13, 23, 0}, {23, 27, 0}, {40, 0, 0}};
+  s.lower = {{0, 0, 0}, {5, 5, 0}, {5, 5, 0}, {0, 0, 0}};
+  s.upper = s.lower;
+  s.samples = 203;  // not a multiple of 4
+  s.target =
+      Profile::from_samples(hula::studies::uniform_abscissae(s.samples),
+                            hula::studies::curvature_profile_of(
+                                std::vector<Vec3>{{0, 0, 0}, {16, 20, 0}, {20, 30, 0}, {40, 0, 0}}, 2, s.samples));
+  const CurvatureMatch match(s);
+  const std::vector<double> x = match.start_variables();
+  SplineProfileSampler::Workspace ws;
+  std::vector<Vec3> pts(4);
+  std::vector<double> kappa(s.samples);
+  const double e = match.mean_distance(x, ws, pts, kappa);
+  EXPECT_EQ(e, match.distances(x).mean);
+  const std::vector<double> k = match.curvature_samples(x);
+  double sum = 0.0;
+  for (std::size_t i = 0; i < k.size(); ++i) sum += std::fabs(k[i] - match.target_samples()[i]);
+  EXPECT_NEAR(e, sum / static_cast<double>(k.size()), 1e-14 * e);
+  EXPECT_GT(e, 1e-4);  // the start is not the target
+}
+
 // nothing once the workspace is warm (DESIGN: no allocation in hot loops).
 TEST(CurvatureMatch, EvaluationDoesNotAllocate) {
   const CurvatureMatch match(thesis_test_setup());

@@ -5,13 +5,17 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "hula/io/atomic_file.hpp"
+#include "hula/io/json_curve.hpp"
+#include "hula/io/points_file.hpp"
 #include "hula/io/study_file.hpp"
+#include "hula/nurbs/closest_point.hpp"
 #include "hula/testing/point_clouds.hpp"
 #include "hula/testing/run_process.hpp"
 #include "hula/testing/temp_dir.hpp"
@@ -82,6 +86,43 @@ TEST(FitCli, DocsExamplesRunAndFindTheStrays) {
       EXPECT_TRUE(std::filesystem::exists(dir / "figures" / "fit.svg"));
     }
   }
+}
+
+// Checks `hula fit --points FILE.dat --ordered --tolerance 1e-4` and `hula approximate --points FILE.dat
+// --tolerance 1e-4` on every airfoil file of tests/data/real as shipped (name lines, Lednicer form):
+// exit 0, every point kept, at most 40 control points (fit), and every point of the file within 1e-4
+// of the written curve, re-measured here by closest point.
+TEST(FitCli, RealAirfoilFilesAsShipped) {
+  const char* root = std::getenv("HULA_TEST_DATA");
+  ASSERT_NE(root, nullptr);
+  testing::TempDir dir;
+  std::size_t files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(std::filesystem::path(root) / "real")) {
+    if (e.path().extension() != ".dat") continue;
+    ++files;
+    SCOPED_TRACE(e.path().filename().string());
+    const std::vector<Vec3> pts = io::read_points_file(e.path()).points;
+    const std::string out = (dir / "curve.json").string();
+    for (const std::string command : {"fit", "approximate"}) {
+      std::vector<std::string> args{command, "--points", e.path().string(), "--tolerance", "1e-4", "-o", out};
+      if (command == "fit") args.push_back("--ordered");
+      const testing::ProcessResult r = testing::run_process(HULA_CLI_PATH, args);
+      ASSERT_EQ(r.exit_code, 0) << command << ": " << r.err;
+      const Json j = Json::parse(r.out);
+      if (command == "fit") {
+        EXPECT_EQ(j["kept"].get<std::size_t>(), pts.size());
+        EXPECT_LE(j["after"]["control_points"].get<std::size_t>(), 40u);
+        EXPECT_EQ(j["ordering"], "given");
+      }
+      EXPECT_LE(j.contains("after") ? j["after"]["max_deviation"].get<double>() : j["max_deviation"].get<double>(),
+                1e-4);
+      const nurbs::NurbsCurve c = io::read_curve_file(out).nurbs();
+      double worst = 0.0;
+      for (const Vec3& q : pts) worst = std::max(worst, nurbs::closest_point(c, q).distance);
+      EXPECT_LE(worst, 1e-4 * (1 + 1e-9)) << command;
+    }
+  }
+  EXPECT_GE(files, 10u);
 }
 
 // Checks the docs/formats.md "fit" study example (its points file beside it) runs with `hula fit STUDY`

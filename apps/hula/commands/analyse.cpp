@@ -16,6 +16,8 @@
 #include "hula/io/atomic_file.hpp"
 #include "hula/io/curve_analysis_json.hpp"
 #include "hula/io/curve_figures.hpp"
+#include "hula/io/intersection_json.hpp"
+#include "hula/nurbs/intersect.hpp"
 
 namespace hula::cli {
 
@@ -79,7 +81,7 @@ Command add_analyse(CLI::App& app) {
       ->check(CLI::IsMember({"parameter", "arclength"}));
   sub->add_flag("--features", args->features,
                 "Add \"features\": inflections (planar curves), curvature and torsion extrema, knot continuity (curves "
-                "with knots), curvature monotonicity, maximum curvature");
+                "with knots), curvature monotonicity, maximum curvature, self-intersections");
   sub->add_option("--svg", args->svg,
                   "Write curve.svg (the curve and its fins, curvature and torsion unless --fins), kappa.svg, tau.svg, "
                   "radius.svg (range-limited radius of curvature), speed.svg and logcurvature.svg into this directory");

@@ -1,16 +1,19 @@
 // SPDX-License-Identifier: MIT
-// `hula approximate --points P --tolerance TOL -o OUT`: the least-squares
-// B-spline through data points with the fewest control points that keeps every
-// point within the tolerance (nurbs::approximate_to_tolerance, whose search is
-// documented in nurbs/approximate.hpp), or with a given count (--control-points).
+// `hula approximate --points P --tolerance TOL -o OUT`: a compact fair B-spline
+// of the given degree through the first and last point that keeps every point
+// within the tolerance (studies::fit_within_tolerance, the engine of `hula fit`,
+// without stray rejection), or the plain least-squares fit with a given count of
+// control points (--control-points, nurbs::approximate).
 #include "hula/nurbs/approximate.hpp"
 
+#include <algorithm>
 #include <memory>
 #include <optional>
 
 #include "commands/common.hpp"
 #include "hula/core/error.hpp"
 #include "hula/io/points_file.hpp"
+#include "hula/studies/tolerance_fit.hpp"
 
 namespace hula::cli {
 
@@ -34,27 +37,37 @@ int run_approximate(const ApproximateArgs& a) {
   o.degree = a.degree;
   o.dimension = set.dimension;
   o.parameterisation = io::parameterisation_from_name(a.parameterisation, "parameterisation");
-  std::size_t fits = 1;
-  auto run = [&]() -> nurbs::ApproximationResult {
-    if (a.tolerance) {
-      nurbs::ToleranceFitResult r = nurbs::approximate_to_tolerance(set.points, *a.tolerance, o);
-      fits = r.fits;
-      return std::move(r.fit);
-    }
-    o.control_points = *a.control_points;
-    return nurbs::approximate(set.points, o);
-  };
-  const nurbs::ApproximationResult fit = run();
-  io::write_curve_file(a.output, fit.curve);
   Json doc = Json::object();
   doc["output"] = a.output;
   doc["points"] = set.points.size();
-  doc["degree"] = fit.curve.degree();
-  doc["control_points"] = fit.curve.control_points().size();
-  if (a.tolerance) doc["tolerance"] = *a.tolerance;
-  doc["max_deviation"] = fit.max_deviation;
-  doc["max_deviation_index"] = fit.max_deviation_index;
-  doc["fits"] = fits;
+  if (a.tolerance) {
+    studies::ToleranceFitOptions t;
+    t.tolerance = *a.tolerance;
+    t.degree = a.degree;
+    t.min_degree = a.degree;
+    t.ends = studies::FitEnds::Interpolated;
+    t.max_control_points = std::max<std::size_t>(set.points.size(), static_cast<std::size_t>(a.degree) + 1);
+    const std::vector<double> start = nurbs::parameterise(set.points, o.parameterisation);
+    const studies::ToleranceFit fit = studies::fit_within_tolerance(set.points, start, {}, t);
+    io::write_curve_file(a.output, fit.faired);
+    doc["degree"] = fit.faired.degree();
+    doc["control_points"] = fit.faired.control_points().size();
+    doc["tolerance"] = *a.tolerance;
+    doc["max_deviation"] = fit.max_deviation;
+    doc["max_deviation_index"] = fit.max_deviation_index;
+    doc["fits"] = fit.fits;
+    doc["fit_max_deviation"] = fit.fit_max_deviation;
+    doc["smoothing"] = fit.smoothing;
+  } else {
+    o.control_points = *a.control_points;
+    const nurbs::ApproximationResult fit = nurbs::approximate(set.points, o);
+    io::write_curve_file(a.output, fit.curve);
+    doc["degree"] = fit.curve.degree();
+    doc["control_points"] = fit.curve.control_points().size();
+    doc["max_deviation"] = fit.max_deviation;
+    doc["max_deviation_index"] = fit.max_deviation_index;
+    doc["fits"] = 1;
+  }
   print_json(doc);
   return kExitOk;
 }
@@ -64,8 +77,11 @@ int run_approximate(const ApproximateArgs& a) {
 Command add_approximate(CLI::App& app) {
   auto a = std::make_shared<ApproximateArgs>();
   CLI::App* sub = app.add_subcommand(
-      "approximate", "Least-squares B-spline through points within a tolerance (fewest control points)");
-  sub->add_option("--points", a->points, "Points file: JSON [[x,y,z],...] or CSV lines x,y[,z]")->required();
+      "approximate",
+      "Compact fair B-spline through points within a tolerance (or least squares with N control points)");
+  sub->add_option("--points", a->points,
+                  "Points file: JSON [[x,y,z],...] or lines x y [z] (whitespace, comma or semicolon separated)")
+      ->required();
   sub->add_option("--tolerance", a->tolerance, "Largest distance of a data point from the curve (model units)")
       ->check(CLI::PositiveNumber);
   sub->add_option("--control-points", a->control_points, "Fixed number of control points instead of --tolerance");

@@ -4,6 +4,8 @@
 // as well, the G2 spline of three clothoids (Bertolazzi–Frego 2018). JSON out:
 // {"kind": "g1" | "g2", "segments": [...], "length", "iterations"} (io::clothoid_spline_to_json),
 // and with --at the points, angles and curvatures at given arc lengths along the whole result.
+// -o writes the result as a curve file by its curvature law (a natural curve, evaluated exactly:
+// intrinsic::clothoid_natural_data), or with --to-nurbs TOL as its NURBS within TOL.
 #include "hula/intrinsic/clothoid.hpp"
 
 #include <limits>
@@ -14,6 +16,8 @@
 
 #include "commands/common.hpp"
 #include "hula/core/error.hpp"
+#include "hula/intrinsic/natural_curve.hpp"
+#include "hula/io/atomic_file.hpp"
 #include "hula/io/clothoid_json.hpp"
 
 namespace hula::cli {
@@ -21,8 +25,9 @@ namespace hula::cli {
 namespace {
 
 struct ClothoidArgs {
-  std::string start_point, end_point, at;
-  std::optional<double> start_angle, end_angle, start_curvature, end_curvature;
+  std::string start_point, end_point, at, output;
+  std::optional<double> start_angle, end_angle, start_curvature, end_curvature, to_nurbs;
+  double tolerance = curve::kNaturalTolerance;
 };
 
 // A planar point x,y given as --<field>.
@@ -79,6 +84,11 @@ int run_clothoid(const ClothoidArgs& a) {
     for (std::size_t i = 0; i < at.size(); ++i) points.push_back(sample(segments, at[i], i));
     doc["points"] = std::move(points);
   }
+  if (!a.output.empty())
+    doc["output"] = write_exact_curve(a.output,
+                                      intrinsic::natural_curve(intrinsic::clothoid_natural_data(segments, a.tolerance),
+                                                               curve::kApproximationTolerance),
+                                      a.to_nurbs);
   print_json(doc);
   return kExitOk;
 }
@@ -103,7 +113,11 @@ Command add_clothoid(CLI::App& app) {
   k0->needs(k1);
   k1->needs(k0);
   sub->add_option("--at", a->at, "Arc lengths s0,s1,... along the result at which to print point, angle, curvature");
-  return {sub, [a] { return run_clothoid(*a); }};
+  add_exact_output_options(sub, a->output, a->to_nurbs, a->tolerance);
+  return {sub, [a] {
+            if (!a->output.empty()) io::check_output_path(a->output, "--output");
+            return run_clothoid(*a);
+          }};
 }
 
 }  // namespace hula::cli

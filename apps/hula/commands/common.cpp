@@ -10,6 +10,7 @@
 #include "hula/core/error.hpp"
 #include "hula/core/tolerance.hpp"
 #include "hula/diffgeom/planarity.hpp"
+#include "hula/intrinsic/natural_curve.hpp"
 #include "hula/io/atomic_file.hpp"
 #include "hula/io/curve_analysis_json.hpp"
 #include "hula/io/json_write.hpp"
@@ -91,6 +92,34 @@ CLI::Option* add_real_option(CLI::App* sub, const std::string& flags, std::optio
           },
           help)
       ->type_name("NUMBER");
+}
+
+void add_exact_output_options(CLI::App* sub, std::string& output, std::optional<double>& to_nurbs, double& tolerance) {
+  CLI::Option* out =
+      sub->add_option("-o,--output", output,
+                      "Write the curve file: the exact curve by its laws (kind natural), or its NURBS with --to-nurbs");
+  add_real_option(sub, "--to-nurbs", to_nurbs, 0.0, 1.0, true,
+                  "With -o: write the NURBS within this distance of the curve (model units) instead of the laws")
+      ->needs(out);
+  sub->add_option("--tolerance", tolerance,
+                  "Position tolerance of the integration of the exact curve, in [1e-13, 1e-2] (default 1e-10)");
+}
+
+Json write_exact_curve(const std::string& path, const curve::Curve& curve, const std::optional<double>& to_nurbs) {
+  Json j = Json::object();
+  j["path"] = path;
+  if (to_nurbs) {
+    const intrinsic::CurveToNurbsResult n = intrinsic::to_nurbs(curve, *to_nurbs);
+    io::write_curve_file(path, n.curve);
+    j["kind"] = "nurbs";
+    j["tolerance"] = n.tolerance;
+    j["max_deviation"] = n.max_deviation;
+    j["control_points"] = n.curve.control_points().size();
+  } else {
+    io::write_curve_file(path, curve);
+    j["kind"] = std::string(curve.kind_name());
+  }
+  return j;
 }
 
 Json vec_to_json(const Vec3& v, int dimension) {

@@ -93,6 +93,17 @@ CLI::Option* add_integer_option(CLI::App* sub, const std::string& flags, std::op
 CLI::Option* add_real_option(CLI::App* sub, const std::string& flags, std::optional<double>& target, double lo,
                              double hi, bool lo_open, const std::string& help);
 
+/// Adds the options of a command that writes an exact (natural) curve: -o,--output FILE, --to-nurbs TOL
+/// (write its NURBS within TOL instead of its laws) and --tolerance T (the integration's position tolerance,
+/// default curve::kNaturalTolerance).
+void add_exact_output_options(CLI::App* sub, std::string& output, std::optional<double>& to_nurbs, double& tolerance);
+/// Writes `curve` to `path` (atomically): by its construction data, or with `to_nurbs` as its NURBS within that
+/// tolerance (intrinsic::to_nurbs). Returns the summary {"path", "kind" ("natural", "law" or "nurbs"),
+/// "max_deviation"? (with --to-nurbs), "tolerance"?}.
+/// @throws as intrinsic::to_nurbs and io::write_curve_file
+[[nodiscard]] Json write_exact_curve(const std::string& path, const curve::Curve& curve,
+                                     const std::optional<double>& to_nurbs);
+
 /// [x, y, z], or [x, y] when dimension is 2.
 [[nodiscard]] Json vec_to_json(const Vec3& v, int dimension);
 
@@ -161,6 +172,7 @@ struct Command {
 [[nodiscard]] Command add_closest(CLI::App& app);
 /// `hula clothoid`: G1 / G2 Hermite interpolation by clothoids.
 [[nodiscard]] Command add_clothoid(CLI::App& app);
+[[nodiscard]] Command add_log_aesthetic(CLI::App& app);
 /// `hula deviation`: distance between two curves.
 [[nodiscard]] Command add_deviation(CLI::App& app);
 /// `hula continuity`: continuity of the join of two curves.

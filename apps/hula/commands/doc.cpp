@@ -9,6 +9,7 @@
 #include <cctype>
 #include <charconv>
 #include <filesystem>
+#include <iostream>
 #include <memory>
 #include <optional>
 
@@ -233,12 +234,16 @@ int run_export(const Options& o) {
 int run_import(const Options& o) {
   std::vector<oli::Label> labels;
   std::optional<oli::Document> doc;
+  Json cad = Json::object();  // a CAD file's "skipped" and "warnings" (what the reader could not read)
   if (is_cad_file(o.input)) {
 #ifdef HULA_WITH_OCCT
     // Read in the helper process first: a reader crash or hang leaves the document unopened.
     const oli::ImportReport report = oli::import_curves(o.input);
     doc.emplace(oli::Document::open(o.file));
     commit(*doc, "import", [&](oli::Edit& e) { labels = oli::add_imported(e, report, o.input); });
+    cad["skipped"] = report.skipped;
+    cad["warnings"] = report.warnings;
+    for (const std::string& w : report.warnings) std::cerr << "hula: warning: " << o.input << ": " << w << "\n";
 #else
     no_occt("importing " + o.input);
 #endif
@@ -250,6 +255,7 @@ int run_import(const Options& o) {
   Json out = Json::object();
   out["labels"] = labels_json(labels);
   out["revision"] = doc->revision();
+  for (auto& [key, value] : cad.items()) out[key] = std::move(value);
   print_json(out);
   return kExitOk;
 }
@@ -303,7 +309,8 @@ Command add_doc(CLI::App& app) {
   CLI::App* add = doc->add_subcommand("add", "Add a curve (or a point set) as a new entity");
   file(add);
   auto* curve_opt = add->add_option("--curve", o->curve, "Curve file (JSON)");
-  auto* points_opt = add->add_option("--points", o->points, "Points file (JSON or CSV)");
+  auto* points_opt = add->add_option("--points", o->points,
+                                     "Points file (JSON, or lines x y [z]: whitespace, comma or semicolon separated)");
   curve_opt->excludes(points_opt);
   add->add_option("--name", o->name, "The entity's name");
 

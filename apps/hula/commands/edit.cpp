@@ -3,12 +3,14 @@
 // splitting operations on a NURBS curve file (thesis 5.5, The NURBS Book ch. 5):
 // insert-knot (Boehm, A5.1), refine (A5.4), remove-knots (A5.8, within a
 // tolerance), elevate (degree elevation), split (knot insertion to
-// multiplicity p), reverse and reparam (affine map of the knots). Each writes curve files and prints a JSON summary of
-// the result.
+// multiplicity p), reverse and reparam (affine map of the knots), and to-nurbs (a law or natural curve
+// converted to a NURBS within a tolerance, intrinsic::to_nurbs). Each writes curve files and prints a JSON
+// summary of the result.
 #include <memory>
 
 #include "commands/common.hpp"
 #include "hula/core/error.hpp"
+#include "hula/intrinsic/natural_curve.hpp"
 #include "hula/nurbs/elevate.hpp"
 #include "hula/nurbs/knot_removal.hpp"
 #include "hula/nurbs/refine.hpp"
@@ -24,17 +26,18 @@ struct EditArgs {
   std::string second;      // split: the curve after the split point
   double at = 0.0;         // insert-knot, split, remove-knots
   int times = 1;           // insert-knot, elevate, remove-knots
-  double tolerance = 0.0;  // remove-knots
+  double tolerance = 0.0;  // remove-knots, to-nurbs
   std::string knots;       // refine
   std::string domain;      // reparam
 };
 
-// The curve of a file; edits need the NURBS itself, not the stand-in of a law curve.
+// The curve of a file; edits need the NURBS itself, not the stand-in of a law or natural curve.
 nurbs::NurbsCurve read_nurbs(const std::string& path) {
   curve::Curve file = io::read_curve_file(path);
-  if (file.law() != nullptr)
+  if (file.has_exact_evaluation())
     throw Error(Errc::InvalidArgument,
-                path + " is a law curve: edit its NURBS form (hula law EXPR --to-nurbs a,b -o FILE) instead",
+                path + " is a " + std::string(file.kind_name()) + " curve: edit its NURBS form (hula edit to-nurbs " +
+                    path + " --tolerance T -o FILE) instead",
                 ErrorWhere{.field = "curve"});
   return file.nurbs();
 }
@@ -111,6 +114,20 @@ int run_split(const EditArgs& a) {
   return kExitOk;
 }
 
+int run_to_nurbs(const EditArgs& a) {
+  const curve::Curve file = io::read_curve_file(a.curve);
+  const intrinsic::CurveToNurbsResult r = intrinsic::to_nurbs(file, a.tolerance);
+  io::write_curve_file(a.output, r.curve);
+  Json doc = Json::object();
+  doc["operation"] = "to-nurbs";
+  doc["from"] = std::string(file.kind_name());
+  doc["tolerance"] = a.tolerance;
+  doc["max_deviation"] = r.max_deviation;
+  doc["curve"] = summary(a.output, r.curve);
+  print_json(doc);
+  return kExitOk;
+}
+
 CLI::App* operation(CLI::App* edit, const char* name, const char* help, EditArgs& a, const char* output_help) {
   CLI::App* op = edit->add_subcommand(name, help);
   op->add_option("curve", a.curve, "NURBS curve file (JSON)")->required();
@@ -123,7 +140,7 @@ CLI::App* operation(CLI::App* edit, const char* name, const char* help, EditArgs
 Command add_edit(CLI::App& app) {
   auto a = std::make_shared<EditArgs>();
   CLI::App* edit = app.add_subcommand(
-      "edit", "Edit a NURBS curve: insert-knot, refine, remove-knots, elevate, split, reverse, reparam");
+      "edit", "Edit a NURBS curve: insert-knot, refine, remove-knots, elevate, split, reverse, reparam, to-nurbs");
   edit->require_subcommand(1);
   const char* out = "Curve file to write (atomically)";
   CLI::App* insert = operation(edit, "insert-knot", "Insert a knot (the curve is unchanged)", *a, out);
@@ -150,7 +167,11 @@ Command add_edit(CLI::App& app) {
   CLI::App* reverse = operation(edit, "reverse", "Traverse the curve backwards on the same domain", *a, out);
   CLI::App* reparam = operation(edit, "reparam", "Map the curve's domain affinely onto a,b (same shape)", *a, out);
   reparam->add_option("--domain", a->domain, "New domain a,b with a < b")->required();
-  return {edit, [a, insert, refine, remove, remove_at, elevate, split, reverse, reparam] {
+  CLI::App* to_nurbs =
+      operation(edit, "to-nurbs", "Convert a law or natural (exact) curve to a NURBS within --tolerance", *a, out);
+  to_nurbs->add_option("--tolerance", a->tolerance, "Largest distance NURBS-curve, model units, in (0, 1]")->required();
+  return {edit, [a, insert, refine, remove, remove_at, elevate, split, reverse, reparam, to_nurbs] {
+            if (to_nurbs->parsed()) return run_to_nurbs(*a);
             if (insert->parsed()) return run_insert_knot(*a);
             if (refine->parsed()) return run_refine(*a);
             if (remove->parsed()) return run_remove_knots(*a, remove_at->count() > 0);

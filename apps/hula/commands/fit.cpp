@@ -127,7 +127,9 @@ Command add_fit(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "fit", "Scanned points to a class-A curve: order, reject strays, fit within a tolerance, fair (docs/cli.md)");
   sub->add_option("study", a->study, "A \"fit\" study file (docs/formats.md); or give --points");
-  sub->add_option("--points", a->points, "Points file: JSON [[x,y,z],...] or CSV lines x,y[,z], in any order");
+  sub->add_option("--points", a->points,
+                  "Points file: JSON [[x,y,z],...] or lines x y [z] (whitespace, comma or semicolon separated), in "
+                  "any order");
   sub->add_option("--class", a->surface_class, "A (tolerance 0.3) or B (0.5), in the data's units")
       ->check(CLI::IsMember({"A", "B"}));
   sub->add_option("--tolerance", a->tolerance, "Largest distance of a kept point from the curve (default 0.3)")

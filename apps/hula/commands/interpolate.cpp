@@ -90,7 +90,9 @@ int run_interpolate(const InterpolateArgs& a) {
 Command add_interpolate(CLI::App& app) {
   auto args = std::make_shared<InterpolateArgs>();
   CLI::App* sub = app.add_subcommand("interpolate", "Fit a C2 cubic spline through points and write a curve file");
-  sub->add_option("--points", args->points, "Points file: JSON [[x,y,z],...] or CSV lines x,y[,z]; - reads stdin")
+  sub->add_option(
+         "--points", args->points,
+         "Points file: JSON [[x,y,z],...] or lines x y [z] (whitespace, comma or semicolon separated); - reads stdin")
       ->required();
   sub->add_option("--parameterisation", args->parameterisation,
                   "uniform | chord | centripetal | foley (default chord)");

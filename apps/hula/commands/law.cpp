@@ -5,6 +5,7 @@
 // [[value], [first], ...]}]}, scalars as one-element arrays); also, on request,
 // the printed N-th derivative, all roots, the extrema and the integral on an
 // interval (io/law_values.hpp, shared with `hula eval` and the HTTP API).
+#include <cmath>
 #include <memory>
 #include <string>
 
@@ -63,6 +64,33 @@ Json extremum_json(const law::Extremum& e) {
   j["value"] = e.value;
   j["kind"] = kind_name(e.kind);
   return j;
+}
+
+// --integrate a,b: numbers, or inf / -inf for an infinite bound (an improper integral).
+std::pair<double, double> integration_interval(const std::string& text) {
+  std::vector<double> v;
+  std::size_t start = 0;
+  for (std::size_t i = 0;; ++i) {
+    const std::size_t comma = text.find(',', start);
+    const std::string entry = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    if (entry == "inf" || entry == "+inf")
+      v.push_back(HUGE_VAL);
+    else if (entry == "-inf")
+      v.push_back(-HUGE_VAL);
+    else
+      v.push_back(parse_number_list(entry, "integrate").front());
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (v.size() != 2 || !(v[0] < v[1]))
+    throw Error(Errc::InvalidArgument, "--integrate must be a,b with a < b (inf and -inf allowed), got '" + text + "'",
+                ErrorWhere{.field = "integrate"});
+  return {v[0], v[1]};
+}
+
+Json bound_json(double x) {
+  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
+  return x;
 }
 
 void require_scalar(const law::Law& l, const char* option) {
@@ -140,21 +168,47 @@ int run_law(const LawArgs& a) {
   }
   if (!a.integrate.empty()) {
     require_scalar(l, "integrate");
-    const auto [lo, hi] = interval(a.integrate, "integrate");
+    const auto [lo, hi] = integration_interval(a.integrate);
     const law::DefiniteIntegralResult r = law::definite_integral(l, a.parameter, lo, hi);
+    if (r.divergent && !a.allow_unconverged) {
+      std::string where;
+      for (const law::SingularPoint& p : r.singular_points)
+        if (!p.integrable && where.empty())
+          where = std::isinf(p.t)
+                      ? std::string(p.t > 0 ? "towards +inf" : "towards -inf") + " (|f| decays like |" + a.parameter +
+                            "|^" + format_number(p.exponent) + ")"
+                      : "at " + a.parameter + " = " + format_number(p.t) + " (|f| grows like |" + a.parameter + " - " +
+                            format_number(p.t) + "|^" + format_number(p.exponent) + ", " + p.expression + ")";
+      throw Error(Errc::NumericalFailure,
+                  "--integrate " + a.integrate + ": divergent: the integrand is not integrable " + where +
+                      "; pass --allow-unconverged to print the analysis",
+                  ErrorWhere{.field = "integrate"});
+    }
     if (!r.converged && !a.allow_unconverged)
       throw Error(Errc::NumericalFailure,
                   "--integrate " + a.integrate + ": the quadrature did not converge (error estimate " +
                       format_number(r.error_estimate) + " for the value " + format_number(r.value) +
-                      "; divergent or unresolved integrand); pass --allow-unconverged to print it",
+                      "; unresolved integrand); pass --allow-unconverged to print it",
                   ErrorWhere{.field = "integrate"});
     Json j = Json::object();
-    j["interval"] = Json::array({lo, hi});
-    j["value"] = r.value;
-    j["error_estimate"] = r.error_estimate;
+    j["interval"] = Json::array({bound_json(lo), bound_json(hi)});
+    j["value"] = r.divergent ? Json(nullptr) : Json(r.value);
+    j["error_estimate"] = r.divergent ? Json(nullptr) : Json(r.error_estimate);
     j["method"] = r.method == law::IntegralMethod::Symbolic ? "symbolic" : "numeric";
     j["converged"] = r.converged;
+    j["divergent"] = r.divergent;
     if (r.method == law::IntegralMethod::Symbolic) j["antiderivative"] = law::print(r.antiderivative);
+    if (r.method == law::IntegralMethod::Numeric) j["numeric_reason"] = r.numeric_reason;
+    Json points = Json::array();
+    for (const law::SingularPoint& p : r.singular_points) {
+      Json e = Json::object();
+      e[a.parameter] = bound_json(p.t);
+      e["exponent"] = std::isfinite(p.exponent) ? Json(p.exponent) : bound_json(p.exponent);
+      e["integrable"] = p.integrable;
+      e["expression"] = p.expression;
+      points.push_back(std::move(e));
+    }
+    j["singular_points"] = std::move(points);
     doc["integral"] = std::move(j);
   }
   if (!a.singularities.empty()) {
@@ -213,7 +267,9 @@ Command add_law(CLI::App& app) {
       ->check(CLI::Range(0, 8));
   sub->add_option("--roots", args->roots, "All roots on a,b (scalar laws)");
   sub->add_option("--extrema", args->extrema, "Extrema on a,b (scalar laws)");
-  sub->add_option("--integrate", args->integrate, "Integral over a,b (scalar laws): symbolic when possible");
+  sub->add_option("--integrate", args->integrate,
+                  "Integral over a,b (scalar laws; inf and -inf allowed): symbolic when possible, improper integrals "
+                  "with integrable singularities included");
   sub->add_flag("--allow-unconverged", args->allow_unconverged,
                 "Print a non-converged integral or unresolved root sign changes instead of failing (exit 4)");
   sub->add_option("--singularities", args->singularities,

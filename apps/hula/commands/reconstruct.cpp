@@ -6,7 +6,8 @@
 // ({"points": [{"s", "position", "T", "N", "B"}], "integration": {"method",
 // "steps", "rejected_steps", "breakpoints"}, "fit": {"control_points",
 // "segments", "tolerance", "max_deviation"}}; control_points is the count).
-// -o writes the fitted NURBS atomically. The work is bounded
+// -o writes the fitted NURBS atomically, or with --exact the curve by its laws (a natural curve file,
+// evaluated exactly wherever it is read: intrinsic::natural_curve). The work is bounded
 // (intrinsic::kFrontEndMaxSteps, kFrontEndMaxSegments): a law too rough for
 // them fails with an error naming kappa and the limit.
 //
@@ -27,6 +28,7 @@
 
 #include "commands/common.hpp"
 #include "hula/core/error.hpp"
+#include "hula/intrinsic/natural_curve.hpp"
 #include "hula/intrinsic/natural_equations.hpp"
 #include "hula/io/atomic_file.hpp"
 #include "hula/io/json_curve.hpp"
@@ -61,6 +63,7 @@ struct ReconstructArgs {
   const CLI::Option* fit_tolerance_option = nullptr;
   const CLI::Option* length_option = nullptr;
   const CLI::Option* tau_option = nullptr;
+  bool exact = false;
 };
 
 // A law of s given as --<field>, naming the option and the expression in errors.
@@ -81,6 +84,7 @@ Vec3 parse_vec(const std::string& text, const char* field) {
 int run_curvature_edit(const ReconstructArgs& a) {
   if (a.length_option->count() > 0)
     throw CLI::ValidationError("--length with --curve: the edited curve keeps its own length");
+  if (a.exact) throw CLI::ValidationError("--exact with --curve: the edited curve is written as its own kind");
   if (a.fit_tolerance_option->count() > 0)
     throw CLI::ValidationError(
         "--fit-tolerance with --curve: the edited curve keeps the original's knots (at most "
@@ -135,6 +139,12 @@ int run_reconstruct(const ReconstructArgs& a) {
   std::optional<intrinsic::IntrinsicCurve> curve;
   std::optional<intrinsic::NurbsFitResult> fit;
   const bool held = !a.end_point.empty() || !a.end_tangent.empty();
+  if (a.exact && (held || a.output.empty()))
+    throw Error(Errc::InvalidArgument,
+                held ? "--exact writes the laws as given; with --end-point or --end-tangent the boundary-value problem "
+                       "changes them: write its NURBS (without --exact)"
+                     : "--exact needs -o FILE (it says what -o writes)",
+                ErrorWhere{.field = "exact"});
   if (a.free_length && !held)
     throw Error(Errc::InvalidArgument, "--free-length needs --end-point or --end-tangent: a free end fixes no length",
                 ErrorWhere{.field = "free-length"});
@@ -174,7 +184,12 @@ int run_reconstruct(const ReconstructArgs& a) {
   else
     ss = parse_number_list(a.at, "at");
   Json points = io::frame_points_json(curve->evaluate(ss));
-  if (!a.output.empty()) io::write_curve_file(a.output, fit->curve);
+  if (!a.output.empty() && a.exact) {
+    const curve::NaturalData data{a.kappa, a.tau, "s", a.length, start.point, start.tangent, start.normal, a.tolerance};
+    io::write_curve_file(a.output, intrinsic::natural_curve(data, curve::kApproximationTolerance));
+  } else if (!a.output.empty()) {
+    io::write_curve_file(a.output, fit->curve);
+  }
   doc["points"] = std::move(points);
   doc["integration"] = io::integration_summary(*curve);
   doc["fit"] = io::fit_summary(*fit);
@@ -226,6 +241,9 @@ Command add_reconstruct(CLI::App& app) {
                   "With --curve: most handles of the result as a multiple of the original's, in [1, 10] (default 2)");
   sub->add_option("-o,--output", args->output,
                   "Write the fitted NURBS curve file (atomically); with --curve, the edited curve");
+  sub->add_flag("--exact", args->exact,
+                "With -o: write the exact curve by its laws (kind natural, integrated to --tolerance where it is read) "
+                "instead of the fitted NURBS");
   return {sub, [args] { return run_reconstruct(*args); }};
 }
 

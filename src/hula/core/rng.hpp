@@ -38,4 +38,38 @@ class Rng {
   std::array<std::uint64_t, 4> s_{};
 };
 
+// The draws are inline (issue 27: the GA's selection, crossover and mutation draw once per bit or
+// variable, and an out-of-line call cost more than the generator).
+
+inline Rng::result_type Rng::operator()() noexcept {
+  const auto rotl = [](std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); };
+  const std::uint64_t result = rotl(s_[1] * 5, 7) * 9;
+  const std::uint64_t t = s_[1] << 17;
+  s_[2] ^= s_[0];
+  s_[3] ^= s_[1];
+  s_[1] ^= s_[2];
+  s_[0] ^= s_[3];
+  s_[2] ^= t;
+  s_[3] = rotl(s_[3], 45);
+  return result;
+}
+
+inline double Rng::uniform() noexcept { return static_cast<double>((*this)() >> 11) * 0x1.0p-53; }
+
+inline std::uint64_t Rng::below(std::uint64_t n) noexcept {
+  // Lemire (2019): multiply-shift with rejection of the biased low range.
+  std::uint64_t x = (*this)();
+  __uint128_t m = static_cast<__uint128_t>(x) * n;
+  auto low = static_cast<std::uint64_t>(m);
+  if (low < n) {
+    const std::uint64_t threshold = (0 - n) % n;
+    while (low < threshold) {
+      x = (*this)();
+      m = static_cast<__uint128_t>(x) * n;
+      low = static_cast<std::uint64_t>(m);
+    }
+  }
+  return static_cast<std::uint64_t>(m >> 64);
+}
+
 }  // namespace hula

@@ -7,7 +7,7 @@
 
 namespace hula {
 
-double norm(const Vec3& a) {
+double detail::norm_scaled(const Vec3& a) {
   const double m = max_abs(a);
   // Squares of components in [1e-150, 1e150] neither overflow nor lose
   // precision to underflow: the plain formula is exact enough and cheaper.

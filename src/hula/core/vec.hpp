@@ -65,8 +65,19 @@ struct Vec3 {
 [[nodiscard]] inline double max_abs(const Vec3& a) {
   return std::fmax(std::fabs(a.x), std::fmax(std::fabs(a.y), std::fabs(a.z)));
 }
+namespace detail {
+/// norm() outside the range where the plain formula is exact enough (scaled by the largest component).
+[[nodiscard]] double norm_scaled(const Vec3& a);
+}  // namespace detail
 /// Euclidean length without intermediate overflow or underflow.
-[[nodiscard]] double norm(const Vec3& a);
+[[nodiscard]] inline double norm(const Vec3& a) {
+  // |a|² in (1e-290, 1e290) means the largest component m has m² ≤ |a|² < 1e290 and 3 m² ≥ |a|² > 1e-290,
+  // so m lies in (1e-150, 1e150), where squaring loses nothing: the plain formula, inline (issue 27: the
+  // out-of-line call and its libm fmax were 12 % of a 10-point interpolation). Else the scaled form.
+  const double s = a.x * a.x + a.y * a.y + a.z * a.z;
+  if (s > 1e-290 && s < 1e290) return std::sqrt(s);
+  return detail::norm_scaled(a);
+}
 /// Squared length; may overflow for |a| > 1e154: use norm() for lengths.
 [[nodiscard]] constexpr double norm_squared(const Vec3& a) { return dot(a, a); }
 /// Distance between two points, overflow-safe.

@@ -32,6 +32,8 @@ struct Curve::State {
   Data data;
   nurbs::NurbsCurve curve;
   double deviation = 0.0;
+  // The exact evaluation of a natural curve.
+  std::shared_ptr<const NaturalEvaluator> natural;
   // Compiled evaluators of the exact law, one per derivative order, made on first use. The mutex
   // serialises their compilation, which grows the law's (private) context.
   mutable std::mutex mutex;
@@ -181,8 +183,11 @@ Curve Curve::from_law(std::string expression, std::string parameter, Interval do
   return Curve(std::make_shared<const State>(std::move(data), std::move(approx.curve), approx.max_deviation));
 }
 
-Curve Curve::natural(NaturalKey /*key*/, NaturalData data, nurbs::NurbsCurve fit, double deviation) {
-  return Curve(std::make_shared<const State>(std::move(data), std::move(fit), deviation));
+Curve Curve::natural(NaturalKey /*key*/, NaturalData data, std::shared_ptr<const NaturalEvaluator> exact,
+                     nurbs::NurbsCurve fit, double deviation) {
+  auto state = std::make_shared<State>(std::move(data), std::move(fit), deviation);
+  state->natural = std::move(exact);
+  return Curve(std::move(state));
 }
 
 Kind Curve::kind() const noexcept { return static_cast<Kind>(state_->data.index()); }
@@ -202,6 +207,10 @@ const std::string& Curve::law_parameter() const noexcept {
   return l ? l->parameter : kNone;
 }
 
+const NaturalEvaluator* Curve::natural_evaluator() const noexcept { return state_->natural.get(); }
+
+bool Curve::has_exact_evaluation() const noexcept { return law() != nullptr || state_->natural != nullptr; }
+
 Interval Curve::domain() const noexcept {
   if (const auto* l = std::get_if<LawData>(&state_->data)) return l->domain;
   if (const auto* n = std::get_if<NaturalData>(&state_->data)) return {0.0, n->length};
@@ -213,7 +222,7 @@ int Curve::dimension() const noexcept { return state_->curve.dimension(); }
 Vec3 Curve::point(double t, const nurbs::EvalOptions& options) const { return derivatives(t, 0, options)[0]; }
 
 std::vector<Vec3> Curve::derivatives(double t, int order, const nurbs::EvalOptions& options) const {
-  if (!law()) return state_->curve.derivatives(t, order, options);
+  if (!has_exact_evaluation()) return state_->curve.derivatives(t, order, options);
   std::vector<Vec3> out(static_cast<std::size_t>(order < 0 ? 0 : order) + 1);
   const std::array<double, 1> ts{t};
   try {
@@ -224,7 +233,10 @@ std::vector<Vec3> Curve::derivatives(double t, int order, const nurbs::EvalOptio
     const Interval d = domain();
     throw Error(Errc::OutOfDomain,
                 "t = " + format_number(t) + " is outside the curve domain [" + format_number(d.start) + ", " +
-                    format_number(d.end) + "]",
+                    format_number(d.end) + "]" +
+                    (state_->natural && options.domain == nurbs::Domain::Extrapolate
+                         ? " (a natural curve is integrated on its domain only and is not extrapolated)"
+                         : ""),
                 {.field = "t"});
   }
   return out;
@@ -232,15 +244,16 @@ std::vector<Vec3> Curve::derivatives(double t, int order, const nurbs::EvalOptio
 
 void Curve::derivatives(std::span<const double> ts, int order, std::span<Vec3> out,
                         const nurbs::EvalOptions& options) const {
-  if (!law()) {
+  if (!has_exact_evaluation()) {
     state_->curve.derivatives(ts, order, out, options);
     return;
   }
+  const bool natural = state_->natural != nullptr;
   if (order < 0 || order > kMaxLawOrder)
-    throw Error(
-        Errc::InvalidArgument,
-        "order = " + std::to_string(order) + " is outside [0, " + std::to_string(kMaxLawOrder) + "] for a law curve",
-        {.field = "order"});
+    throw Error(Errc::InvalidArgument,
+                "order = " + std::to_string(order) + " is outside [0, " + std::to_string(kMaxLawOrder) + "] for a " +
+                    (natural ? "natural" : "law") + " curve",
+                {.field = "order"});
   const auto per_t = static_cast<std::size_t>(order) + 1;
   if (out.size() != ts.size() * per_t)
     throw Error(Errc::InvalidArgument,
@@ -249,17 +262,24 @@ void Curve::derivatives(std::span<const double> ts, int order, std::span<Vec3> o
   const Interval d = domain();
   std::vector<double> us(ts.begin(), ts.end());
   for (std::size_t i = 0; i < us.size(); ++i) {
-    if (d.contains(us[i]) || options.domain == nurbs::Domain::Extrapolate) continue;
+    // A natural curve is integrated on [0, L] only: it cannot be extrapolated.
+    if (d.contains(us[i]) || (options.domain == nurbs::Domain::Extrapolate && !natural)) continue;
     if (options.domain == nurbs::Domain::Clamp && !std::isnan(us[i])) {
       us[i] = std::clamp(us[i], d.start, d.end);
       continue;
     }
     throw Error(Errc::OutOfDomain,
                 "t[" + std::to_string(i) + "] = " + format_number(us[i]) + " is outside the curve domain [" +
-                    format_number(d.start) + ", " + format_number(d.end) + "]",
+                    format_number(d.start) + ", " + format_number(d.end) + "]" +
+                    (natural && options.domain == nurbs::Domain::Extrapolate
+                         ? " (a natural curve is integrated on its domain only and is not extrapolated)"
+                         : ""),
                 {.field = "t", .index = i});
   }
-  state_->evaluator(order)->derivatives(us, out);
+  if (natural)
+    state_->natural->derivatives(us, order, out);
+  else
+    state_->evaluator(order)->derivatives(us, out);
 }
 
 std::shared_ptr<const law::CurveEvaluator> Curve::law_evaluator(int order) const {
@@ -279,6 +299,7 @@ double Curve::length_to(double t) const {
                     format_number(d.end) + "]",
                 {.field = "t"});
   if (t == d.start) return 0.0;
+  if (state_->natural) return t - d.start;  // parameterised by arc length
   if (!law()) return nurbs::arc_length(state_->curve, d.start, t);
   return state_->law_length(d.start, t);
 }
@@ -286,6 +307,13 @@ double Curve::length_to(double t) const {
 double Curve::length() const { return length_to(domain().end); }
 
 double Curve::parameter_at_length(double s) const {
+  if (state_->natural) {
+    const Interval d = domain();
+    if (!(s >= 0.0 && s <= d.length()))
+      throw Error(Errc::OutOfDomain, "s = " + format_number(s) + " is outside [0, " + format_number(d.length()) + "]",
+                  {.field = "s"});
+    return d.start + s;
+  }
   if (!law()) return nurbs::parameter_at_length(state_->curve, s);
   const Interval d = domain();
   const double total = length();
@@ -350,7 +378,8 @@ bool same_data(const LawData& a, const LawData& b) {
 bool same_data(const NaturalData& a, const NaturalData& b) {
   return a.curvature == b.curvature && a.torsion == b.torsion && a.parameter == b.parameter &&
          same_bits(a.length, b.length) && same_bits(a.start_point, b.start_point) &&
-         same_bits(a.start_tangent, b.start_tangent) && same_bits(a.start_normal, b.start_normal);
+         same_bits(a.start_tangent, b.start_tangent) && same_bits(a.start_normal, b.start_normal) &&
+         same_bits(a.tolerance, b.tolerance);
 }
 }  // namespace
 

@@ -11,7 +11,12 @@
 //      (thesis 4.3, 10.2.3), or natural equations κ(s), τ(s) (thesis 8.2.2);
 //  (b) what it resolves to — nurbs(): exact for the first four kinds; for law
 //      and natural curves a verified approximation whose measured deviation is
-//      approximation_deviation(). law() is the exact law where one exists.
+//      approximation_deviation(), for drawing and export. law() is the exact
+//      law where one exists; a natural curve evaluates exactly through its
+//      natural_evaluator(): κ, τ and their derivatives from the laws, position
+//      and frame integrated to a stated tolerance (NaturalData::tolerance).
+//      point(), derivatives(), the arc length and everything diffgeom computes
+//      from a Curve use the exact form of both kinds, never the stand-in.
 //
 // Factories validate everything, so an invalid Curve cannot exist. Natural
 // curves are built by intrinsic::natural_curve (the layer that integrates
@@ -46,6 +51,11 @@ namespace hula::curve {
 /// Largest distance between a law or natural curve and the NURBS that stands in for it
 /// (Curve::nurbs()) when the caller does not choose one, model units (resabs).
 inline constexpr double kApproximationTolerance = 1e-6;
+
+/// Position tolerance of the integration of a natural curve when its data do not state one
+/// (NaturalData::tolerance), model units: the accuracy of point() and of the frame (frame errors are
+/// of the order of tolerance / max(1, L)).
+inline constexpr double kNaturalTolerance = 1e-10;
 
 /// The six kinds of construction data.
 enum class Kind {
@@ -135,12 +145,35 @@ struct NaturalData {
   Vec3 start_tangent{1.0, 0.0, 0.0};
   /// N(0): not parallel to T(0); its tangential part is removed.
   Vec3 start_normal{0.0, 1.0, 0.0};
+  /// Position tolerance of the integration, model units, in [1e-13, 1e-2]. Default kNaturalTolerance.
+  double tolerance = kNaturalTolerance;
 };
 
 /// Construction data of any kind.
 using Data = std::variant<NurbsData, BezierData, InterpolatedData, HermiteData, LawData, NaturalData>;
 
 class Curve;
+
+/// Exact evaluation of a natural curve, implemented by intrinsic::natural_curve (the layer that integrates
+/// natural equations). The parameter is the arc length s ∈ [0, L]. With T, N, B the integrated frame (N the
+/// signed normal, r'' = κN) and κ, τ exact from their laws,
+///     r' = T,  r'' = κN,  r''' = κ'N + κ(τB − κT),  …
+/// each derivative r^(k) = a_k T + b_k N + c_k B with a_(k+1) = a_k' − κ b_k, b_(k+1) = b_k' + κ a_k − τ c_k,
+/// c_(k+1) = c_k' + τ b_k (Frenet–Serret), the coefficients' derivatives by Leibniz' rule from the exact
+/// κ^(j), τ^(j). So the curvature, torsion and their derivatives that diffgeom computes from these vectors are
+/// the laws' values to rounding, and only position and frame carry the integration's tolerance.
+/// Immutable and thread-safe.
+class NaturalEvaluator {
+ public:
+  virtual ~NaturalEvaluator() = default;
+  /// Highest derivative order of derivatives().
+  static constexpr int kMaxOrder = 16;
+  /// out[i * (order + 1) + k] = r^(k)(s[i]) for k = 0 … order; every s[i] within [0, L] (the caller checks).
+  /// @throws hula::Error(Errc::NumericalFailure) naming "curvature" or "torsion" where a law is undefined
+  virtual void derivatives(std::span<const double> s, int order, std::span<Vec3> out) const = 0;
+  /// The position tolerance the integration holds, model units.
+  [[nodiscard]] virtual double tolerance() const noexcept = 0;
+};
 
 /// Permission to build a natural curve, held only by intrinsic::natural_curve (which verifies
 /// the NURBS it fits): the natural kind cannot be made with an unchecked representation.
@@ -192,8 +225,9 @@ class Curve {
   /// @throws hula::Error(Errc::NumericalFailure) if the tolerance cannot be met
   [[nodiscard]] static Curve from_law(std::string expression, std::string parameter, Interval domain,
                                       double tolerance = kApproximationTolerance);
-  /// A natural curve from its verified fit; only intrinsic::natural_curve can call it.
-  [[nodiscard]] static Curve natural(NaturalKey key, NaturalData data, nurbs::NurbsCurve fit, double deviation);
+  /// A natural curve from its exact evaluator and its verified fit; only intrinsic::natural_curve can call it.
+  [[nodiscard]] static Curve natural(NaturalKey key, NaturalData data, std::shared_ptr<const NaturalEvaluator> exact,
+                                     nurbs::NurbsCurve fit, double deviation);
 
   /// What kind of construction data the curve holds.
   [[nodiscard]] Kind kind() const noexcept;
@@ -210,15 +244,21 @@ class Curve {
   [[nodiscard]] const law::Law* law() const noexcept;
   /// The law's parameter name ("t" unless the data say otherwise); empty without a law.
   [[nodiscard]] const std::string& law_parameter() const noexcept;
+  /// The exact evaluator of a natural curve (parameter = arc length), else nullptr.
+  [[nodiscard]] const NaturalEvaluator* natural_evaluator() const noexcept;
+  /// True when point() and derivatives() are exact rather than those of a stand-in: every kind but law and
+  /// natural is its NURBS; law curves evaluate their law, natural curves their natural_evaluator().
+  [[nodiscard]] bool has_exact_evaluation() const noexcept;
   /// The parameter domain: the law's domain, [0, L] for natural curves, else nurbs().domain().
   [[nodiscard]] Interval domain() const noexcept;
   /// 2 (planar, z = 0) or 3.
   [[nodiscard]] int dimension() const noexcept;
 
-  /// C(t), exactly from the law when there is one, else from nurbs().
-  /// @throws hula::Error(Errc::OutOfDomain) naming "t" under Domain::Strict (the default)
+  /// C(t): from the law of a law curve, from the natural evaluator of a natural curve, else from nurbs().
+  /// @throws hula::Error(Errc::OutOfDomain) naming "t" under Domain::Strict (the default), and for a natural
+  ///   curve outside [0, L] under Domain::Extrapolate too (it is integrated on [0, L] only)
   [[nodiscard]] Vec3 point(double t, const nurbs::EvalOptions& options = {}) const;
-  /// {C(t), C'(t), …, C^(order)(t)} (exact for laws; law orders 0 … 16).
+  /// {C(t), C'(t), …, C^(order)(t)} (exact for laws and natural curves; orders 0 … 16 for both).
   /// @throws as point(), and hula::Error(Errc::InvalidArgument) for a bad order
   [[nodiscard]] std::vector<Vec3> derivatives(double t, int order, const nurbs::EvalOptions& options = {}) const;
   /// Batch form: out[i * (order + 1) + k] = C^(k)(ts[i]).
@@ -234,7 +274,7 @@ class Curve {
   [[nodiscard]] std::shared_ptr<const law::CurveEvaluator> law_evaluator(int order) const;
 
   /// Arc length from domain().start to t: ∫|C'| of the exact law (law::integrate) when there is
-  /// one, else nurbs::arc_length of nurbs().
+  /// one, t itself for a natural curve (its parameter is the arc length), else nurbs::arc_length of nurbs().
   /// @throws hula::Error(Errc::OutOfDomain) naming "t" outside the domain
   [[nodiscard]] double length_to(double t) const;
   /// Arc length of the whole curve.

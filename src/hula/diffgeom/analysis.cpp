@@ -113,6 +113,7 @@ CurveFeatures find_features(const curve::Curve& c, const Planarity& plane, const
   std::array<FrenetPoint, 2> ends;
   frenet(c, ends_t, ends, fo.frenet);
   f.maximum_curvature = maximum_curvature(ends, f);
+  f.self_intersections = nurbs::self_intersect(c.nurbs());
   return f;
 }
 

@@ -16,7 +16,8 @@
 //  - continuity at the interior knots only for curves that have knots (the
 //    exact NURBS kinds: nurbs, bezier, interpolated, hermite — not the
 //    stand-in NURBS of a law or natural curve);
-//  - the pieces of monotone curvature and the largest curvature.
+//  - the pieces of monotone curvature and the largest curvature;
+//  - the self-intersections (nurbs::self_intersect of the curve's NURBS).
 // Law curves are analysed exactly from their law, natural curves' features
 // from their natural equations κ(s), τ(s).
 #pragma once
@@ -35,6 +36,7 @@
 #include "hula/diffgeom/frenet.hpp"
 #include "hula/diffgeom/monotonicity.hpp"
 #include "hula/diffgeom/planarity.hpp"
+#include "hula/nurbs/intersect.hpp"
 
 namespace hula::diffgeom {
 
@@ -114,6 +116,9 @@ struct CurveFeatures {
   CurvatureMonotonicity monotonicity;
   /// The largest curvature.
   MaximumCurvature maximum_curvature;
+  /// Where the curve meets itself (nurbs::self_intersect of its NURBS; thesis ch. 10: a curve that
+  /// doubles back on itself is not a valid design).
+  nurbs::IntersectionResult self_intersections;
 };
 
 /// The analysis of a curve.

@@ -155,7 +155,9 @@ Sample nurbs_sample(const nurbs::NurbsCurve& curve, const FrenetOptions& o, Quan
   return frenet_sample([&curve, o](std::span<const double> ts, std::span<FrenetPoint> p) { frenet(curve, ts, p, o); },
                        q, points);
 }
-Sample law_sample(const LawFrenet& curve, Quantity q, std::vector<FrenetPoint>& points) {
+// q sampled through an exact Frenet evaluator (LawFrenet or CurveFrenet).
+template <class Exact>
+Sample law_sample(const Exact& curve, Quantity q, std::vector<FrenetPoint>& points) {
   return frenet_sample([&curve](std::span<const double> ts, std::span<FrenetPoint> p) { curve.at(ts, p); }, q, points);
 }
 
@@ -279,7 +281,8 @@ std::vector<Feature> curvature_extrema(const nurbs::NurbsCurve& curve, const Fea
 }
 
 namespace {
-std::vector<Feature> law_inflections(const LawFrenet& curve, Interval domain, const FeatureOptions& options) {
+template <class Exact>
+std::vector<Feature> law_inflections(const Exact& curve, Interval domain, const FeatureOptions& options) {
   std::vector<Feature> out;
   const Eval eval = [&curve](double t) { return curve.at(t); };
   std::vector<FrenetPoint> points;
@@ -289,7 +292,8 @@ std::vector<Feature> law_inflections(const LawFrenet& curve, Interval domain, co
   return out;
 }
 
-std::vector<Feature> law_curvature_extrema(const LawFrenet& curve, Interval domain, const FeatureOptions& options) {
+template <class Exact>
+std::vector<Feature> law_curvature_extrema(const Exact& curve, Interval domain, const FeatureOptions& options) {
   std::vector<Feature> out;
   const Eval eval = [&curve](double t) { return curve.at(t); };
   std::vector<FrenetPoint> points;
@@ -325,9 +329,12 @@ std::vector<Feature> curvature_extrema(const curve::Curve& curve, const FeatureO
                                options);
 }
 
-std::vector<Feature> torsion_extrema(const nurbs::NurbsCurve& curve, const FeatureOptions& options) {
-  options.validate();
-  const FrenetScale scale = frenet_scale(curve, options.frenet.tolerance);
+namespace {
+// Sign changes of dτ/dt from the derivatives r … r'''' of a NURBS or of a curve value (natural curves:
+// exact κ, τ and their derivatives), sampled over `cuts`.
+template <class C>
+std::vector<Feature> derivative_torsion_extrema(const C& curve, const FrenetScale& scale, const Eval& eval,
+                                                const std::vector<double>& cuts, const FeatureOptions& options) {
   const FrenetOptions fo = options.frenet;
   // The sign of dτ/dt (= sign of dτ/ds): with a = r' × r'', a' = r' × r''',
   // dτ/dt = [(a' · r''' + a · r'''') |a|² − 2 (a · r''') (a · a')] / |a|⁴; only the numerator is needed.
@@ -339,7 +346,8 @@ std::vector<Feature> torsion_extrema(const nurbs::NurbsCurve& curve, const Featu
   };
   auto dtau = [&curve, fo, &dtau_of](double t) {
     std::array<Vec3, 5> d;
-    curve.derivatives(t, 4, d, fo.eval);
+    const std::array<double, 1> ts{t};
+    curve.derivatives(ts, 4, d, fo.eval);
     return dtau_of(t, d);
   };
   std::vector<Vec3> derivs;
@@ -349,12 +357,18 @@ std::vector<Feature> torsion_extrema(const nurbs::NurbsCurve& curve, const Featu
     for (std::size_t i = 0; i < ts.size(); ++i) vs[i] = dtau_of(ts[i], std::span<const Vec3>(derivs.data() + 5 * i, 5));
   };
   std::vector<Feature> out;
-  const Eval eval = nurbs_eval(curve, options.frenet);
-  search(eval, sample, dtau, nurbs_cuts(curve), options.samples_per_span, FeatureKind::TorsionMaximum,
-         FeatureKind::TorsionMinimum, out);
+  search(eval, sample, dtau, cuts, options.samples_per_span, FeatureKind::TorsionMaximum, FeatureKind::TorsionMinimum,
+         out);
   const auto [a, b] = end_values(eval, curve.domain(), false);
   keep_significant(out, a, b, false, options.significance);
   return out;
+}
+}  // namespace
+
+std::vector<Feature> torsion_extrema(const nurbs::NurbsCurve& curve, const FeatureOptions& options) {
+  options.validate();
+  return derivative_torsion_extrema(curve, frenet_scale(curve, options.frenet.tolerance),
+                                    nurbs_eval(curve, options.frenet), nurbs_cuts(curve), options);
 }
 
 namespace {

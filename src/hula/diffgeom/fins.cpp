@@ -147,6 +147,12 @@ Fins fins(std::span<const FrenetPoint> frames, const FinOptions& options) {
 
 Fins fins(const curve::Curve& curve, const FinOptions& options) {
   options.validate();
+  if (curve.natural_evaluator() != nullptr) {
+    const std::vector<double> ts = grid(curve.domain(), options.density);
+    std::vector<FrenetPoint> pts(ts.size());
+    CurveFrenet(curve, options.frenet).at(ts, pts);
+    return build(pts, options);
+  }
   if (!curve.law()) return fins(curve.nurbs(), options);
   const std::vector<double> ts = parameter_grid(curve.domain(), options.density);
   std::vector<FrenetPoint> pts(ts.size());

@@ -10,6 +10,7 @@
 #include <limits>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "hula/core/error.hpp"
 
@@ -258,8 +259,56 @@ void LawFrenet::at(std::span<const double> ts, std::span<FrenetPoint> out) const
   }
 }
 
+CurveFrenet::CurveFrenet(curve::Curve curve, const FrenetOptions& options)
+    : curve_(std::move(curve)), options_(options) {
+  options_.validate();
+  const Interval d = curve_.domain();
+  // Model size: diagonal of the box of 33 positions.
+  std::array<double, 33> ts;
+  for (std::size_t i = 0; i < ts.size(); ++i) ts[i] = d.start + d.length() * static_cast<double>(i) / 32.0;
+  ts.back() = d.end;
+  std::array<Vec3, 33> p;
+  curve_.derivatives(ts, 0, p);
+  Box3 box;
+  for (const Vec3& x : p)
+    if (std::isfinite(x.x) && std::isfinite(x.y) && std::isfinite(x.z)) box.add(x);
+  scale_ = frenet_scale(box.diagonal(), d.length(), options_.tolerance);
+}
+
+FrenetPoint CurveFrenet::at(double t) const {
+  const std::vector<Vec3> d = curve_.derivatives(t, 3, options_.eval);
+  return frenet_from_derivatives(t, std::span<const Vec3, 4>(d.data(), 4), scale_, options_);
+}
+
+void CurveFrenet::at(std::span<const double> ts, std::span<FrenetPoint> out) const {
+  check_sizes(ts.size(), out.size(), "out");
+  std::array<Vec3, 4 * kBlock> d;
+  for (std::size_t i0 = 0; i0 < ts.size(); i0 += kBlock) {
+    const std::size_t m = std::min(kBlock, ts.size() - i0);
+    try {
+      curve_.derivatives(ts.subspan(i0, m), 3, std::span<Vec3>(d.data(), 4 * m), options_.eval);
+    } catch (const Error& e) {
+      // Name the index in ts, not in the block.
+      if (e.code() != Errc::OutOfDomain || !e.where().index) throw;
+      const std::size_t i = i0 + *e.where().index;
+      const Interval dom = curve_.domain();
+      throw Error(Errc::OutOfDomain,
+                  "t[" + std::to_string(i) + "] = " + format_number(ts[i]) + " is outside the curve domain [" +
+                      format_number(dom.start) + ", " + format_number(dom.end) + "]",
+                  {.field = "t", .index = i});
+    }
+    for (std::size_t i = 0; i < m; ++i)
+      out[i0 + i] =
+          frenet_from_derivatives(ts[i0 + i], std::span<const Vec3, 4>(d.data() + 4 * i, 4), scale_, options_);
+  }
+}
+
 void frenet(const curve::Curve& curve, std::span<const double> ts, std::span<FrenetPoint> out,
             const FrenetOptions& options) {
+  if (curve.natural_evaluator() != nullptr) {
+    CurveFrenet(curve, options).at(ts, out);
+    return;
+  }
   if (!curve.law()) {
     frenet(curve.nurbs(), ts, out, options);
     return;

@@ -112,7 +112,8 @@ void frenet(const nurbs::NurbsCurve& curve, std::span<const double> ts, std::spa
             const FrenetOptions& options = {});
 
 /// Frenet frame and curvatures of a curve value at ts[i]: exactly from its law when it has one
-/// (LawFrenet), else from its NURBS.
+/// (LawFrenet), from its natural evaluator for a natural curve (CurveFrenet: κ, τ and κ' to rounding,
+/// position and frame to its integration tolerance), else from its NURBS.
 /// @throws hula::Error(Errc::OutOfDomain) naming "t" and the index of the first parameter outside
 ///   the domain; as the NURBS form otherwise
 void frenet(const curve::Curve& curve, std::span<const double> ts, std::span<FrenetPoint> out,
@@ -141,6 +142,32 @@ class LawFrenet {
 
  private:
   law::CurveEvaluator evaluator_;
+  FrenetOptions options_;
+  FrenetScale scale_;
+};
+
+/// A curve value prepared for Frenet evaluation from its own derivatives (Curve::derivatives): the exact
+/// form of law and natural curves, the NURBS of the others. For a natural curve (parameter = arc length,
+/// r' = T, r'' = κN, r''' from the exact κ', τ) the curvature, torsion, κ' and signed curvature equal
+/// the laws' values to rounding.
+class CurveFrenet {
+ public:
+  /// @param curve any curve value; the scale comes from 33 positions over its domain
+  /// @throws hula::Error(Errc::InvalidOption) for bad options
+  explicit CurveFrenet(curve::Curve curve, const FrenetOptions& options = {});
+  /// The quantities at t.
+  /// @throws as Curve::derivatives (OutOfDomain naming "t")
+  [[nodiscard]] FrenetPoint at(double t) const;
+  /// Batch form.
+  /// @throws hula::Error(Errc::InvalidArgument) if the sizes differ; as Curve::derivatives (naming "t" and the index)
+  void at(std::span<const double> ts, std::span<FrenetPoint> out) const;
+  /// The scale used for the undefined tests.
+  [[nodiscard]] const FrenetScale& scale() const noexcept { return scale_; }
+  /// The curve.
+  [[nodiscard]] const curve::Curve& curve() const noexcept { return curve_; }
+
+ private:
+  curve::Curve curve_;
   FrenetOptions options_;
   FrenetScale scale_;
 };

@@ -161,4 +161,25 @@ Plot plot(const law::Law& curve, std::string_view parameter, nurbs::Interval dom
   return out;
 }
 
+Plot plot(const curve::Curve& curve, const PlotOptions& options) {
+  if (const law::Law* l = curve.law()) return plot(*l, curve.law_parameter(), curve.domain(), options);
+  if (curve.natural_evaluator() == nullptr) return plot(curve.nurbs(), options);
+  options.validate();
+  const CurveFrenet frenet(curve, options.frenet);
+  Plot out;
+  out.t = sample_parameters(curve.domain(), options.samples);
+  const std::size_t n = out.t.size();
+  std::vector<FrenetPoint> pts(n);
+  std::vector<Vec3> d5(5 * n);
+  curve.derivatives(out.t, 4, d5, options.frenet.eval);
+  for (std::size_t i = 0; i < n; ++i)
+    pts[i] = frenet_from_derivatives(out.t[i], std::span<const Vec3, 4>(d5.data() + 5 * i, 4), frenet.scale(),
+                                     options.frenet);
+  // The parameter is the arc length from the start.
+  std::vector<double> s(n);
+  for (std::size_t i = 0; i < n; ++i) s[i] = out.t[i] - out.t.front();
+  assemble(pts, s, d5, options, out);
+  return out;
+}
+
 }  // namespace hula::diffgeom

@@ -69,4 +69,11 @@ struct Plot {
 /// @throws hula::Error(Errc::InvalidOption) for bad options
 [[nodiscard]] Plot plot(const law::Law& curve, std::string_view parameter, nurbs::Interval domain,
                         const PlotOptions& options = {});
+
+/// Samples a plot of a curve value on its domain from its exact form: the law of a law curve (as the
+/// law overload), the natural evaluator of a natural curve (the arc length is the parameter; κ, κ', τ
+/// and τ' are the laws' values, so a log-aesthetic curve's LogCurvatureGraph is a straight line of its
+/// slope α to rounding), else its NURBS.
+/// @throws hula::Error(Errc::InvalidOption) for bad options
+[[nodiscard]] Plot plot(const curve::Curve& curve, const PlotOptions& options = {});
 }  // namespace hula::diffgeom

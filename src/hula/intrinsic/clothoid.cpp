@@ -8,8 +8,10 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "hula/core/error.hpp"
+#include "hula/law/parser.hpp"
 
 namespace hula::intrinsic {
 namespace {
@@ -435,6 +437,47 @@ ClothoidG2Result fit_clothoid_g2(const Vec3& p0, double theta0, double kappa0, c
                   " / |p1 - p0| away from the G1 clothoid's end curvature; phi0 = " + format_number(d.th0) +
                   ", phi1 = " + format_number(d.th1) + ")",
               ErrorWhere{.field = first ? "kappa0" : "kappa1"});
+}
+
+curve::NaturalData clothoid_natural_data(std::span<const ClothoidSegment> segments, double tolerance) {
+  if (segments.empty())
+    throw Error(Errc::InvalidArgument, "segments is empty: a clothoid curve needs at least one segment",
+                ErrorWhere{.field = "segments"});
+  double total = 0.0;
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    const ClothoidSegment& c = segments[i];
+    for (const double v : {c.theta0, c.kappa0, c.dkappa, c.length, c.start.x, c.start.y, c.start.z})
+      if (!std::isfinite(v))
+        throw Error(Errc::NonFiniteInput, "segments[" + std::to_string(i) + "] has a value that is not finite",
+                    ErrorWhere{.field = "segments", .index = i});
+    total += c.length;
+  }
+  if (!(total > 0.0))
+    throw Error(Errc::InvalidArgument, "the segments' total length " + format_number(total) + " is not positive",
+                ErrorWhere{.field = "segments"});
+  // κ as nested piecewise laws from the last arc backwards: piecewise(s < s_(i+1), κ_i(s), rest).
+  const law::Context ctx;
+  const law::Law s = ctx.parameter("s");
+  std::vector<double> starts(segments.size(), 0.0);
+  for (std::size_t i = 1; i < segments.size(); ++i) starts[i] = starts[i - 1] + segments[i - 1].length;
+  auto arc = [&](std::size_t i) {
+    const ClothoidSegment& c = segments[i];
+    return c.kappa0 + c.dkappa * (starts[i] == 0.0 ? s : s - starts[i]);
+  };
+  law::Law kappa = arc(segments.size() - 1);
+  for (std::size_t i = segments.size() - 1; i-- > 0;)
+    kappa = law::piecewise(law::less(s, ctx.constant(starts[i + 1])), arc(i), kappa);
+  const ClothoidSegment& first = segments.front();
+  curve::NaturalData d;
+  d.curvature = law::print(kappa);
+  d.torsion = "0";
+  d.parameter = "s";
+  d.length = total;
+  d.start_point = first.start;
+  d.start_tangent = {std::cos(first.theta0), std::sin(first.theta0), 0.0};
+  d.start_normal = {-std::sin(first.theta0), std::cos(first.theta0), 0.0};
+  d.tolerance = tolerance;
+  return d;
 }
 
 }  // namespace hula::intrinsic

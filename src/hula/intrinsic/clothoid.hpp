@@ -18,9 +18,11 @@
 #pragma once
 
 #include <array>
+#include <span>
 #include <string_view>
 
 #include "hula/core/vec.hpp"
+#include "hula/curve/curve.hpp"
 #include "hula/intrinsic/natural_equations.hpp"
 #include "hula/law/expr.hpp"
 
@@ -193,5 +195,18 @@ struct ClothoidG2Result {
 /// Complexity: O(iterations × 3 arcs × panels × 10) sine/cosine pairs, plus one fit_clothoid_g1().
 [[nodiscard]] ClothoidG2Result fit_clothoid_g2(const Vec3& p0, double theta0, double kappa0, const Vec3& p1,
                                                double theta1, double kappa1, const ClothoidG2Options& options = {});
+
+/// Consecutive clothoid segments (one G1 segment, or the three arcs of a G2 spline) as natural-equation data:
+/// κ(s) = κ0,i + κ′i (s − s_i) on the i-th arc as one piecewise law (printed exactly), τ = 0, the start frame
+/// T = (cos θ0, sin θ0, 0), N = (−sin θ0, cos θ0, 0) at the first segment's start, the total length. The
+/// exact curve value (intrinsic::natural_curve) evaluates θ(s) in closed form and the position by quadrature
+/// of (cos θ, sin θ), the Fresnel integrals of each arc, to `tolerance`.
+/// @param segments ≥ 1 segments, each starting where the one before ends (not checked: the data describe
+///   the curvature and the start only)
+/// @param tolerance position tolerance of the integration, model units (NaturalData::tolerance)
+/// @throws hula::Error(Errc::InvalidArgument) naming "segments" when empty or when the total length is not
+///   positive; hula::Error(Errc::NonFiniteInput) naming "segments" for a non-finite value
+[[nodiscard]] curve::NaturalData clothoid_natural_data(std::span<const ClothoidSegment> segments,
+                                                       double tolerance = curve::kNaturalTolerance);
 
 }  // namespace hula::intrinsic

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "hula/core/error.hpp"
+#include "hula/law/parser.hpp"
 
 namespace hula::intrinsic {
 
@@ -62,6 +63,21 @@ IntrinsicCurve LogAestheticCurve::to_intrinsic(const StartFrame& start, const Re
   validate();
   const law::Context ctx;
   return reconstruct_planar(curvature_law(ctx), "s", length, start, options);
+}
+
+curve::NaturalData LogAestheticCurve::natural_data(const StartFrame& start, double tolerance) const {
+  validate();
+  const law::Context ctx;
+  curve::NaturalData d;
+  d.curvature = law::print(curvature_law(ctx, "s"));
+  d.torsion = "0";
+  d.parameter = "s";
+  d.length = length;
+  d.start_point = start.point;
+  d.start_tangent = start.tangent;
+  d.start_normal = start.normal;
+  d.tolerance = tolerance;
+  return d;
 }
 
 }  // namespace hula::intrinsic

@@ -14,6 +14,7 @@
 
 #include <string_view>
 
+#include "hula/curve/curve.hpp"
 #include "hula/intrinsic/natural_equations.hpp"
 #include "hula/law/expr.hpp"
 
@@ -47,6 +48,13 @@ struct LogAestheticCurve {
                                             const ReconstructionOptions& options = {}) const;
   /// Checks the parameters as to_intrinsic() does.
   void validate() const;
+  /// The curve as natural-equation data (a curve file stores it by its law): κ = curvature_law() printed
+  /// exactly (17 significant digits), τ = 0, length L, the start frame, the integration tolerance.
+  /// intrinsic::natural_curve() makes the exact curve value of it.
+  /// @param tolerance position tolerance of the integration, model units (NaturalData::tolerance)
+  /// @throws as validate()
+  [[nodiscard]] curve::NaturalData natural_data(const StartFrame& start = {},
+                                                double tolerance = curve::kNaturalTolerance) const;
 };
 
 }  // namespace hula::intrinsic

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "hula/core/error.hpp"
+#include "hula/io/intersection_json.hpp"
 
 namespace hula::io {
 
@@ -55,6 +56,7 @@ void write_features(JsonText& w, const diffgeom::CurveFeatures& f) {
   });
   w.end_object();
   w.member("maximum_curvature").value(maximum_curvature_to_json(f.maximum_curvature));
+  w.member("self_intersections").value(intersection_to_json(f.self_intersections, 3));
   w.end_object();
 }
 

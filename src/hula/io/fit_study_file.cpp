@@ -99,6 +99,9 @@ Json fit_result_to_json(const studies::ScanFitResult& result, const studies::Sca
   j["biweight_scale"] = result.biweight_scale;
   j["smoothing"] = result.smoothing;
   j["fits"] = result.fits;
+  j["ordering"] = studies::order_source_name(result.ordering);
+  j["closed"] = result.closed;
+  j["degree"] = result.faired.degree();
   j["before"] = report_to_json(result.before);
   j["after"] = report_to_json(result.after);
   return j;

@@ -204,6 +204,9 @@ curve::Curve read_natural(const Json& doc) {
   if (const Json* p = json::optional_member(doc, "parameter"))
     n.parameter = json::get_string(*p, root_path("parameter"));
   n.length = json::get_number(json::require_member(doc, root, "length"), root_path("length"));
+  // Files written before the integration tolerance was stored read with the default.
+  if (const Json* t = json::optional_member(doc, "tolerance"))
+    n.tolerance = json::get_number(*t, root_path("tolerance"));
   if (const Json* start = json::optional_member(doc, "start")) {
     const JsonPath sp = root_path("start");
     if (!start->is_object()) json::type_error(*start, sp, "an object {\"point\", \"tangent\", \"normal\"}");
@@ -344,6 +347,7 @@ struct DataWriter {
     start["tangent"] = point_to_json(d.start_tangent, 3);
     start["normal"] = point_to_json(d.start_normal, 3);
     doc["start"] = std::move(start);
+    doc["tolerance"] = d.tolerance;
   }
 };
 }  // namespace

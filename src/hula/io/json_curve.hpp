@@ -16,7 +16,9 @@
 //   {"kind": "law", "expression": "vec(2*cos(t), 2*sin(t), 0.5*t)", "parameter": "t",
 //    "domain": [t0, t1]}   (a 2- or 3-vector law; grammar in docs/formats.md)
 //   {"kind": "natural", "curvature": "0.8", "torsion": "0.4", "parameter": "s", "length": L,
-//    "start": {"point": [...], "tangent": [...], "normal": [...]}}
+//    "start": {"point": [...], "tangent": [...], "normal": [...]}, "tolerance": 1e-10?}
+//      (stored by its laws and evaluated exactly: κ, τ from the laws, position and frame
+//      integrated to "tolerance", default curve::kNaturalTolerance for files without it)
 //
 // 2-D points ([x, y]) give a 2-D curve (dimension 2) and are written back as
 // [x, y]. Members not listed here are ignored, so files written by a newer

@@ -14,6 +14,7 @@
 #include "hula/io/json_curve.hpp"
 #include "hula/io/profile_file.hpp"
 #include "hula/io/run_report_json.hpp"
+#include "hula/io/validity_json.hpp"
 
 namespace hula::io {
 
@@ -385,6 +386,8 @@ MatchSetupJson match_setup_from_json(const Json& body, const PathResolver& resol
                 {.field = "samples"});
   if (const Json* v = jr::optional_member(body, "abscissa"))
     s.abscissa = profile_abscissa_from_name(jr::get_string(*v, jr::root_path("abscissa")), "abscissa");
+  if (const Json* v = jr::optional_member(body, "validity"))
+    s.validity = validity_from_json(*v, jr::root_path("validity"));
   // Bounds before the targets: a bad bound is reported without evaluating anything.
   s.target = Profile::from_samples(std::vector<double>{0.0, 1.0}, std::vector<double>{0.0, 0.0});
   s.validate();
@@ -413,12 +416,13 @@ void match_setup_to_json(const MatchSetupJson& setup, Json& out) {
   if (s.torsion_target) out["torsion_target"] = setup.torsion_target;
   out["abscissa"] = std::string(profile_abscissa_name(s.abscissa));
   out["samples"] = s.samples;
+  if (s.validity.any()) out["validity"] = validity_to_json(s.validity);
 }
 
 MatchStudyFile match_study_from_json(const StudyDocument& document, const PathResolver& resolver) {
   const Json& body = document.body;
-  check_members(body, {"points", "lower", "upper", "movable", "proximity", "start_tangent", "end_tangent", "target",
-                       "abscissa", "samples", "method", "ga", "lm", "direct", "max_recentres", "map"});
+  check_members(body, {"points", "lower", "upper", "movable", "proximity", "validity", "start_tangent", "end_tangent",
+                       "target", "abscissa", "samples", "method", "ga", "lm", "direct", "max_recentres", "map"});
   MatchStudy study;
   study.header = document.header;
   if (const Json* v = jr::optional_member(body, "method"))
@@ -494,6 +498,22 @@ Json match_study_to_json(const MatchStudyFile& file) {
   return out;
 }
 
+namespace {
+
+// "validity" (the check of the result) and, for an invalid result, "refused" with the reasons, one warning each,
+// and no "curve": an invalid design is not offered as the study's answer.
+void validity_report(const ValidityRequirements& required, const std::optional<ValidityCheck>& check, Json& out) {
+  if (!required.any() || !check) return;
+  out["validity"] = validity_check_to_json(*check, required);
+  if (check->valid()) return;
+  out["refused"] = check->reasons;
+  out.erase("curve");
+  if (!out.contains("warnings")) out["warnings"] = Json::array();
+  for (const std::string& r : check->reasons) out["warnings"].push_back("the result is refused as a design: " + r);
+}
+
+}  // namespace
+
 Json match_result_to_json(const CurvatureMatch& match, const MatchStudyFile& file, const MatchResult& result) {
   const MatchStudy& study = file.study;
   const int dim = study.setup.dimension;
@@ -532,10 +552,12 @@ Json match_result_to_json(const CurvatureMatch& match, const MatchStudyFile& fil
     const DirectReconstructionResult& d = *result.direct;
     out["after"] = {{"mean", d.mean_curvature_deviation}, {"max", d.max_curvature_deviation}};
     out["direct"] = direct_reconstruction_summary(d);
-    if (const std::optional<nurbs::NurbsCurve> c = match_result_curve(match, result)) {
-      out["direct"]["end_miss"] = norm(c->evaluate(c->domain().end) - study.setup.points.back());
-      out["curve"] = curve_to_json(*c);
+    if (d.nurbs) {
+      const nurbs::NurbsCurve& c = d.nurbs->curve;
+      out["direct"]["end_miss"] = norm(c.evaluate(c.domain().end) - study.setup.points.back());
     }
+    if (const std::optional<nurbs::NurbsCurve> c = match_result_curve(match, result)) out["curve"] = curve_to_json(*c);
+    validity_report(study.setup.validity, result.validity, out);
     out["seconds"] = result.seconds;
     out["study"] = match_study_to_json(file);
     return out;
@@ -555,7 +577,8 @@ Json match_result_to_json(const CurvatureMatch& match, const MatchStudyFile& fil
     }
   }
   // The best curve (not the last distinct design's, which `pts` holds after the loop above).
-  out["curve"] = curve_to_json(*match_result_curve(match, result));
+  if (const std::optional<nurbs::NurbsCurve> c = match_result_curve(match, result)) out["curve"] = curve_to_json(*c);
+  validity_report(study.setup.validity, result.validity, out);
   out["study"] = match_study_to_json(file);
   return out;
 }
@@ -576,8 +599,8 @@ Json number_or_null(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr
 
 TorsionMatchStudyFile torsion_match_study_from_json(const StudyDocument& document, const PathResolver& resolver) {
   const Json& body = document.body;
-  check_members(body, {"points", "lower", "upper", "movable", "proximity", "start_tangent", "end_tangent", "target",
-                       "torsion_target", "abscissa", "samples", "nsga2", "polish", "torsion_weight", "lm",
+  check_members(body, {"points", "lower", "upper", "movable", "proximity", "validity", "start_tangent", "end_tangent",
+                       "target", "torsion_target", "abscissa", "samples", "nsga2", "polish", "torsion_weight", "lm",
                        "max_recentres", "map"});
   TorsionMatchStudy study;
   study.header = document.header;
@@ -680,6 +703,26 @@ Json torsion_match_result_to_json(const CurvatureMatch& match, const TorsionMatc
   };
   out["front"] = members(result.front);
   out["nsga2_front"] = members(result.nsga2_front);
+  if (match.setup().validity.any()) {
+    // Refused members carry their reasons and no curve: they are not designs to apply.
+    Json refused = Json::array();
+    std::vector<Vec3> pts(match.setup().points.size());
+    for (const TorsionFrontMember& m : result.refused) {
+      match.points_from(m.variables, pts);
+      refused.push_back({{"curvature", m.curvature},
+                         {"torsion", m.torsion},
+                         {"polished", m.polished},
+                         {"points", points_to_json(pts, 3)},
+                         {"reasons", m.invalid}});
+    }
+    out["refused_members"] = std::move(refused);
+    if (result.front.empty() && !result.refused.empty()) {
+      out["refused"] = result.refused.front().invalid;
+      out["warnings"] = Json::array();
+      for (const std::string& r : result.refused.front().invalid)
+        out["warnings"].push_back("no valid design was found; the best compromise is refused: " + r);
+    }
+  }
   if (!result.front.empty()) {
     const TorsionFrontMember& best = result.front[result.compromise];
     std::vector<Vec3> pts(match.setup().points.size());

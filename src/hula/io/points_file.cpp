@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
-// JSON and CSV point-file readers (format in points_file.hpp).
+// JSON and text point-file readers (forms in points_file.hpp).
 #include "hula/io/points_file.hpp"
 
 #include <charconv>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "hula/core/error.hpp"
@@ -13,11 +14,106 @@
 namespace hula::io {
 namespace {
 
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
-// A field is described by its length, never quoted: the "CSV" may be any file
-// a study names (/etc/passwd), and its content must not reach a message.
+// A field is described by its length, never quoted: the file may be any file a study names
+// (/etc/passwd), and its content must not reach a message.
 std::string field_text(std::string_view s) { return "the " + std::to_string(s.size()) + "-character field"; }
+
+enum class Separator { Whitespace, Comma, Semicolon };
+
+std::string separator_text(Separator s) {
+  switch (s) {
+    case Separator::Whitespace:
+      return "whitespace";
+    case Separator::Comma:
+      return "commas";
+    case Separator::Semicolon:
+      return "semicolons";
+  }
+  return "whitespace";
+}
+
+// One field of a line: its text (blanks trimmed) and the 1-based column where it begins.
+struct Field {
+  std::string_view text;
+  std::size_t column = 0;
+};
+
+// The fields of a line (comments already cut off) for a separator.
+std::vector<Field> split_fields(std::string_view line, Separator sep) {
+  std::vector<Field> out;
+  if (sep == Separator::Whitespace) {
+    std::size_t i = 0;
+    while (i < line.size()) {
+      while (i < line.size() && is_blank(line[i])) ++i;
+      if (i == line.size()) break;
+      const std::size_t b = i;
+      while (i < line.size() && !is_blank(line[i])) ++i;
+      out.push_back({line.substr(b, i - b), b + 1});
+    }
+    return out;
+  }
+  const char delimiter = sep == Separator::Comma ? ',' : ';';
+  std::size_t start = 0;
+  for (;;) {
+    std::size_t end = line.find(delimiter, start);
+    const bool last = end == std::string_view::npos;
+    if (last) end = line.size();
+    std::size_t b = start, e = end;
+    while (b < e && is_blank(line[b])) ++b;
+    while (e > b && is_blank(line[e - 1])) --e;
+    out.push_back({line.substr(b, e - b), b + 1});
+    if (last) break;
+    start = end + 1;
+  }
+  return out;
+}
+
+// The number a field holds, if it is one (nan and inf included: they are refused later with
+// their own message); `decimal_comma` reads a ',' as the decimal point.
+struct Number {
+  double value = 0.0;
+  bool out_of_range = false;
+};
+std::optional<Number> read_number(std::string_view field, bool decimal_comma) {
+  std::string buffer;
+  if (decimal_comma && field.find(',') != std::string_view::npos) {
+    buffer.assign(field);
+    for (char& c : buffer)
+      if (c == ',') c = '.';
+    field = buffer;
+  }
+  // from_chars takes no leading '+'; accept it as spreadsheets write it.
+  const std::string_view digits = field.size() > 1 && field[0] == '+' ? field.substr(1) : field;
+  if (digits.empty()) return std::nullopt;
+  double v = 0.0;
+  const auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
+  if (ec == std::errc::result_out_of_range && ptr == digits.data() + digits.size()) return Number{0.0, true};
+  if (ec != std::errc() || ptr != digits.data() + digits.size()) return std::nullopt;
+  return Number{v, false};
+}
+
+// The separator of a data line: ';' if it holds one, else ',' if it holds one, else whitespace.
+Separator separator_of(std::string_view line) {
+  if (line.find(';') != std::string_view::npos) return Separator::Semicolon;
+  if (line.find(',') != std::string_view::npos) return Separator::Comma;
+  return Separator::Whitespace;
+}
+
+// A data line's values.
+struct Row {
+  std::vector<double> values;
+};
+
+// The Lednicer form (see points_file.hpp): a header, then a count line of two whole numbers
+// NU, NL ≥ 2 with NU + NL the number of rows after it.
+bool is_lednicer(const std::vector<Row>& rows, std::size_t header_lines) {
+  if (header_lines == 0 || rows.size() < 5 || rows[0].values.size() != 2) return false;
+  const double nu = rows[0].values[0], nl = rows[0].values[1];
+  if (!(nu >= 2.0 && nl >= 2.0) || nu != std::floor(nu) || nl != std::floor(nl)) return false;
+  return nu + nl == static_cast<double>(rows.size() - 1);
+}
 
 }  // namespace
 
@@ -28,80 +124,97 @@ PointSet parse_points_json(std::string_view text) {
 }
 
 PointSet parse_points_csv(std::string_view text) {
-  PointSet out;
-  int expected = 0;  // component count of the first point
+  std::vector<Row> rows;
+  std::optional<Separator> sep;
+  std::size_t separator_line = 0;  // the line that set the separator
+  std::size_t header_lines = 0;
   std::size_t line_no = 0;
   std::size_t pos = 0;
   while (pos <= text.size()) {
     std::size_t eol = text.find('\n', pos);
     if (eol == std::string_view::npos) eol = text.size();
-    const std::string_view line = text.substr(pos, eol - pos);
+    std::string_view line = text.substr(pos, eol - pos);
     ++line_no;
     pos = eol + 1;
-
+    if (const std::size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
     std::size_t first = 0;
     while (first < line.size() && is_blank(line[first])) ++first;
-    if (first == line.size() || line[first] == '#') continue;
+    if (first == line.size()) continue;
 
-    const std::size_t index = out.points.size();
-    Vec3 p;
-    int count = 0;
-    std::size_t field_start = 0;
-    for (;;) {
-      std::size_t field_end = line.find(',', field_start);
-      const bool last = field_end == std::string_view::npos;
-      if (last) field_end = line.size();
-      // Trim blanks around the field; the column reported is where the field's text begins.
-      std::size_t b = field_start, e = field_end;
-      while (b < e && is_blank(line[b])) ++b;
-      while (e > b && is_blank(line[e - 1])) --e;
-      const std::string_view field = line.substr(b, e - b);
-      const ErrorWhere where{.field = "points",
-                             .index = index,
-                             .component = static_cast<std::size_t>(count),
-                             .line = line_no,
-                             .column = b + 1};
-      const std::string at = "line " + std::to_string(line_no) + ", column " + std::to_string(b + 1);
-      if (count == 3)
-        throw Error(Errc::ParseError, at + ": more than 3 numbers on a line (a point is x, y or x, y, z)", where);
-      // from_chars takes no leading '+'; accept it as spreadsheets write it.
-      const std::string_view digits = field.size() > 1 && field[0] == '+' ? field.substr(1) : field;
-      double v = 0.0;
-      const auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
-      if (field.empty()) throw Error(Errc::ParseError, at + ": empty field where a number is expected", where);
-      if (ec == std::errc::result_out_of_range)
-        throw Error(Errc::NonFiniteInput, at + ": " + field_text(field) + " is outside the range of a double", where);
-      if (ec != std::errc() || ptr != digits.data() + digits.size())
-        throw Error(Errc::ParseError, at + ": " + field_text(field) + " is not a number", where);
-      if (!std::isfinite(v))
+    const Separator line_sep = sep.value_or(separator_of(line));
+    const std::vector<Field> fields = split_fields(line, line_sep);
+    const bool decimal_comma = line_sep == Separator::Semicolon;
+    // Before the first point, a line whose first field is not a number is a header line.
+    if (rows.empty() && !read_number(fields.front().text, decimal_comma)) {
+      ++header_lines;
+      continue;
+    }
+    if (!sep) {
+      sep = line_sep;
+      separator_line = line_no;
+    }
+    const std::size_t index = rows.size();
+    const std::string how =
+        "fields separated by " + separator_text(*sep) +
+        (line_no == separator_line ? std::string() : ", as on line " + std::to_string(separator_line));
+    Row row;
+    for (std::size_t c = 0; c < fields.size(); ++c) {
+      const Field& f = fields[c];
+      const ErrorWhere where{.field = "points", .index = index, .component = c, .line = line_no, .column = f.column};
+      const std::string at = "line " + std::to_string(line_no) + ", column " + std::to_string(f.column);
+      if (c == 3)
+        throw Error(Errc::ParseError, at + ": more than 3 numbers on a line (a point is x, y or x, y, z; " + how + ")",
+                    where);
+      if (f.text.empty())
+        throw Error(Errc::ParseError, at + ": empty field where a number is expected (" + how + ")", where);
+      const std::optional<Number> n = read_number(f.text, decimal_comma);
+      if (!n) throw Error(Errc::ParseError, at + ": " + field_text(f.text) + " is not a number (" + how + ")", where);
+      if (n->out_of_range)
+        throw Error(Errc::NonFiniteInput, at + ": " + field_text(f.text) + " is outside the range of a double", where);
+      if (!std::isfinite(n->value))
         throw Error(Errc::NonFiniteInput,
                     at + ": the field reads as " +
-                        (std::isnan(v) ? "nan"
-                         : v > 0       ? "inf"
-                                       : "-inf") +
+                        (std::isnan(n->value) ? "nan"
+                         : n->value > 0       ? "inf"
+                                              : "-inf") +
                         " where a finite number is expected",
                     where);
-      p[static_cast<std::size_t>(count)] = v;
-      ++count;
-      if (last) break;
-      field_start = field_end + 1;
+      row.values.push_back(n->value);
     }
     const ErrorWhere where{.field = "points", .index = index, .line = line_no, .column = first + 1};
-    if (count < 2)
+    if (row.values.size() < 2)
       throw Error(Errc::ParseError,
-                  "line " + std::to_string(line_no) + ": 1 number; a point needs 2 (x, y) or 3 (x, y, z)", where);
-    if (expected == 0) {
-      expected = count;
-    } else if (count != expected) {
-      throw Error(Errc::ParseError,
-                  "line " + std::to_string(line_no) + ": " + std::to_string(count) +
-                      " numbers but the first point has " + std::to_string(expected) +
-                      " (all points must be 2-D or all 3-D)",
+                  "line " + std::to_string(line_no) + ": 1 number; a point needs 2 (x, y) or 3 (x, y, z) (" + how + ")",
                   where);
-    }
-    out.points.push_back(p);
+    if (!rows.empty() && row.values.size() != rows.front().values.size())
+      throw Error(Errc::ParseError,
+                  "line " + std::to_string(line_no) + ": " + std::to_string(row.values.size()) +
+                      " numbers but the first point has " + std::to_string(rows.front().values.size()) +
+                      " (all points must be 2-D or all 3-D; " + how + ")",
+                  where);
+    rows.push_back(std::move(row));
   }
-  out.dimension = expected == 2 ? 2 : 3;
+  if (rows.empty() && header_lines > 0)
+    throw Error(Errc::ParseError,
+                "no point: none of the " + std::to_string(header_lines) +
+                    " non-blank lines starts with a number (a point is x, y or x, y, z)",
+                ErrorWhere{.field = "points", .line = 1});
+
+  PointSet out;
+  auto to_point = [](const Row& r) { return Vec3{r.values[0], r.values[1], r.values.size() == 3 ? r.values[2] : 0.0}; };
+  if (is_lednicer(rows, header_lines)) {
+    const auto upper = static_cast<std::size_t>(rows[0].values[0]);
+    for (std::size_t i = upper; i >= 1; --i) out.points.push_back(to_point(rows[i]));
+    for (std::size_t i = upper + 1; i < rows.size(); ++i) {
+      const Vec3 p = to_point(rows[i]);
+      if (i == upper + 1 && p == out.points.back()) continue;  // the shared leading-edge point, once
+      out.points.push_back(p);
+    }
+  } else {
+    out.points.reserve(rows.size());
+    for (const Row& r : rows) out.points.push_back(to_point(r));
+  }
+  out.dimension = !rows.empty() && rows.front().values.size() == 2 ? 2 : 3;
   return out;
 }
 
@@ -112,6 +225,13 @@ PointSet parse_points(std::string_view text) {
   return parse_points_csv(text);
 }
 
-PointSet read_points_file(const std::filesystem::path& path) { return parse_points(read_text_file(path)); }
+PointSet read_points_file(const std::filesystem::path& path) {
+  const std::string text = read_text_file(path);
+  try {
+    return parse_points(text);
+  } catch (const Error& e) {
+    throw Error(e.code(), path.string() + ": " + e.message(), e.where());
+  }
+}
 
 }  // namespace hula::io

@@ -39,6 +39,7 @@
 #include "hula/core/banded.hpp"
 #include "hula/core/error.hpp"
 #include "hula/nurbs/basis.hpp"
+#include "hula/nurbs/detail/curve_access.hpp"
 #include "hula/nurbs/detail/option_checks.hpp"
 
 namespace hula::nurbs {
@@ -58,7 +59,19 @@ void check_dimension_argument(int dimension) {
 
 // Rejects non-finite coordinates (naming point and coordinate) and, for
 // dimension 2, a non-zero z (naming the point).
-void check_vectors(std::span<const Vec3> v, int dimension, const char* field) {
+// `box`, if given, receives the box of the vectors (one pass for both).
+void check_vectors(std::span<const Vec3> v, int dimension, const char* field, Box3* box = nullptr) {
+  // One pass without branches first: (x − x) is 0 for finite x and NaN otherwise, and Σ |z| > 0 flags a
+  // planar violation; only a bad input pays for the loop below that names the culprit.
+  double probe = 0.0, z_sum = 0.0;
+  Box3 b;
+  for (const Vec3& q : v) {
+    probe += (q.x - q.x) + (q.y - q.y) + (q.z - q.z);
+    z_sum += std::fabs(q.z);
+    b.add(q);
+  }
+  if (box != nullptr) *box = b;
+  if (probe == 0.0 && (dimension != 2 || z_sum == 0.0)) return;
   for (std::size_t i = 0; i < v.size(); ++i) {
     for (std::size_t c = 0; c < 3; ++c) {
       if (!std::isfinite(v[i][c]))
@@ -88,8 +101,18 @@ void check_same_count(std::size_t got, std::size_t points, const char* field) {
                 {.field = field});
 }
 
-// Given parameters: finite, strictly increasing, mapped affinely to [0, 1].
-std::vector<double> map_given_parameters(std::span<const double> u, std::size_t points) {
+// Scratch of interpolate_cubic and parameterise, one per thread: no allocation once warm (issue 27).
+struct Scratch {
+  std::vector<double> a, b, c, turn, chord;
+  BasisWorkspace basis;
+};
+Scratch& scratch() {
+  thread_local Scratch s;
+  return s;
+}
+
+// Given parameters: finite, strictly increasing, mapped affinely to [0, 1] into t (u.size() values).
+void map_given_parameters(std::span<const double> u, std::size_t points, double* t) {
   check_same_count(u.size(), points, "parameters");
   for (std::size_t i = 0; i < u.size(); ++i) {
     if (!std::isfinite(u[i]))
@@ -107,7 +130,6 @@ std::vector<double> map_given_parameters(std::span<const double> u, std::size_t 
   const bool halve = !std::isfinite(u[last] - u[0]);
   const double a = halve ? 0.5 * u[0] : u[0];
   const double range = halve ? 0.5 * u[last] - a : u[last] - a;
-  std::vector<double> t(u.size());
   t[0] = 0.0;
   for (std::size_t i = 1; i < last; ++i) t[i] = ((halve ? 0.5 * u[i] : u[i]) - a) / range;
   t[last] = 1.0;
@@ -117,10 +139,27 @@ std::vector<double> map_given_parameters(std::span<const double> u, std::size_t 
                   indexed("parameters", i) + " = " + format_number(u[i]) + " and " + indexed("parameters", i - 1) +
                       " = " + format_number(u[i - 1]) + " coincide after mapping to [0, 1]",
                   {.field = "parameters", .index = i});
+}
+
+std::vector<double> map_given_parameters(std::span<const double> u, std::size_t points) {
+  check_same_count(u.size(), points, "parameters");
+  std::vector<double> t(u.size());
+  map_given_parameters(u, points, t.data());
   return t;
 }
 
-// Data parameters from the given values, or from the rule.
+// Data parameters of N ≥ 2 points already checked finite (check_vectors, which gave their box) by `rule`
+// into t (N values): parameterise without its argument checks.
+void parameterise_checked(std::span<const Vec3> points, Parameterisation rule, const Tolerance& tolerance,
+                          const Box3& box, double* t);
+
+// Data parameters from the given values, or from the rule (points already checked, their box), into t.
+void data_parameters(std::span<const Vec3> points, std::span<const double> given, Parameterisation rule,
+                     const Tolerance& tolerance, const Box3& box, double* t) {
+  if (!given.empty()) return map_given_parameters(given, points.size(), t);
+  parameterise_checked(points, rule, tolerance, box, t);
+}
+
 std::vector<double> data_parameters(std::span<const Vec3> points, std::span<const double> given, Parameterisation rule,
                                     const Tolerance& tolerance) {
   if (!given.empty()) return map_given_parameters(given, points.size());
@@ -186,7 +225,7 @@ struct EndRow {
 // with N = 2 (no interior knot) becomes Bessel (the chord), and with N = 3 at
 // both ends (a single interior knot) both ends become Bessel (the parabola).
 EndRow resolve_end(const EndCondition& ec, bool at_start, bool both_not_a_knot, std::span<const Vec3> q,
-                   const std::vector<double>& t) {
+                   std::span<const double> t) {
   const std::size_t N = q.size();
   auto lagrange_end = [&](std::size_t degree) {
     const std::size_t count = std::min(degree, N - 1) + 1;
@@ -218,6 +257,21 @@ EndRow resolve_end(const EndCondition& ec, bool at_start, bool both_not_a_knot, 
   throw InternalError("unknown end condition kind");
 }
 
+// Coefficients of an end row of the clamped cubic on U = {0,0,0,0, t_1 … t_{N−2}, 1,1,1,1} (N points): of
+// the end control point, its neighbour and the next one, for C'(end) or C''(end) (The NURBS Book eq. 3.7
+// applied twice): at t = 0 with h1 = U[4], h2 = U[5], C' = 3 (P1 − P0) / h1 and
+// C'' = 6 / h1 ((P2 − P1) / h2 − (P1 − P0) / h1); at t = 1 the mirror image with h1 = 1 − U[N + 1],
+// h2 = 1 − U[N] and the last three control points.
+std::array<double, 3> end_coefficients(const KnotVector& kv, std::size_t N, EndRow::Kind kind, bool at_start) {
+  const double h1 = at_start ? kv[4] : 1.0 - kv[N + 1];
+  const double h2 = at_start ? kv[5] : 1.0 - kv[N];
+  if (kind == EndRow::Kind::FirstDerivative) {
+    const double g = 3.0 / h1;
+    return at_start ? std::array<double, 3>{-g, g, 0.0} : std::array<double, 3>{g, -g, 0.0};
+  }
+  return {6.0 / (h1 * h1), -6.0 / h1 * (1.0 / h1 + 1.0 / h2), 6.0 / (h1 * h2)};
+}
+
 // The cubic system in compact storage for N ≥ 4: interpolation rows 1 … N-2
 // are tridiagonal (three cubic basis functions are non-zero at a simple
 // knot), a[i], b[i], c[i] at columns i-1, i, i+1; only the two end rows reach
@@ -225,11 +279,21 @@ EndRow resolve_end(const EndCondition& ec, bool at_start, bool both_not_a_knot, 
 // last[j] is column N-4+j. The right-hand side is overwritten by the solution.
 struct CubicSystem {
   std::size_t n;
-  std::vector<double> a, b, c;
-  double* rhs;  // 3 × n values, row-major (the caller's storage: the control points)
+  std::vector<double>&a, &b, &c;  // the thread's scratch (no allocation once warm)
+  double* rhs;                    // 3 × n values, row-major (the caller's storage: the control points)
   std::array<double, 4> first{}, last{};
-  CubicSystem(std::size_t size, double* rhs_storage)
-      : n(size), a(size, 0.0), b(size, 0.0), c(size, 0.0), rhs(rhs_storage) {
+  // `zero`: clear the rows (assembly by add()); else the caller writes every entry.
+  CubicSystem(std::size_t size, double* rhs_storage, Scratch& w, bool zero = true)
+      : n(size), a(w.a), b(w.b), c(w.c), rhs(rhs_storage) {
+    if (!zero) {
+      a.resize(size);
+      b.resize(size);
+      c.resize(size);
+      return;
+    }
+    a.assign(size, 0.0);
+    b.assign(size, 0.0);
+    c.assign(size, 0.0);
     std::fill(rhs, rhs + 3 * size, 0.0);
   }
   void add(std::size_t i, std::size_t j, double v) {
@@ -286,18 +350,39 @@ bool solve_cubic_system(CubicSystem& s) {
   // b[i] is replaced by its reciprocal once it is known: one division per row.
   if (!(std::fabs(s.b[0]) > kPivot * scale0)) return false;
   s.b[0] = 1.0 / s.b[0];
+  // The previous row's reciprocal pivot, super-diagonal and right-hand side stay in registers (locals):
+  // reloading them from the arrays just written put a store-to-load forward on the critical path.
+  double* const binv = s.b.data();
+  const double* const a = s.a.data();
+  const double* const c = s.c.data();
+  double binv_prev = binv[0], c_prev = c[0];
+  double d_prev[3] = {d[0], d[1], d[2]};
   for (std::size_t i = 1; i < N; ++i) {
-    const double row_scale =
-        i + 1 == N ? scale_last : std::max({std::fabs(s.a[i]), std::fabs(s.b[i]), std::fabs(s.c[i])});
-    const double m = s.a[i] * s.b[i - 1];
-    const double pivot = s.b[i] - m * s.c[i - 1];
+    const double ai = a[i], bi = binv[i], ci = c[i];
+    const double row_scale = i + 1 == N ? scale_last : std::max({std::fabs(ai), std::fabs(bi), std::fabs(ci)});
+    const double m = ai * binv_prev;
+    const double pivot = bi - m * c_prev;
     if (!(std::fabs(pivot) > kPivot * row_scale)) return false;
-    s.b[i] = 1.0 / pivot;
-    for (std::size_t k = 0; k < 3; ++k) d[i * 3 + k] -= m * d[(i - 1) * 3 + k];
+    binv_prev = 1.0 / pivot;
+    binv[i] = binv_prev;
+    for (std::size_t k = 0; k < 3; ++k) {
+      d_prev[k] = d[i * 3 + k] - m * d_prev[k];
+      d[i * 3 + k] = d_prev[k];
+    }
+    c_prev = ci;
   }
-  for (std::size_t k = 0; k < 3; ++k) d[(N - 1) * 3 + k] *= s.b[N - 1];
-  for (std::size_t i = N - 1; i-- > 0;)
-    for (std::size_t k = 0; k < 3; ++k) d[i * 3 + k] = (d[i * 3 + k] - s.c[i] * d[(i + 1) * 3 + k]) * s.b[i];
+  double x_next[3];
+  for (std::size_t k = 0; k < 3; ++k) {
+    x_next[k] = d[(N - 1) * 3 + k] * binv[N - 1];
+    d[(N - 1) * 3 + k] = x_next[k];
+  }
+  for (std::size_t i = N - 1; i-- > 0;) {
+    const double ci = c[i], bi = binv[i];
+    for (std::size_t k = 0; k < 3; ++k) {
+      x_next[k] = (d[i * 3 + k] - ci * x_next[k]) * bi;
+      d[i * 3 + k] = x_next[k];
+    }
+  }
   return true;
 }
 
@@ -359,21 +444,30 @@ std::vector<double> cumulative_chord_lengths(std::span<const Vec3> points) {
 std::vector<double> parameterise(std::span<const Vec3> points, Parameterisation rule, const Tolerance& tolerance) {
   tolerance.validate();
   check_count(points.size(), 2, "parameterise");
-  check_vectors(points, 3, "points");
+  Box3 box;
+  check_vectors(points, 3, "points", &box);
+  std::vector<double> t(points.size());
+  parameterise_checked(points, rule, tolerance, box, t.data());
+  return t;
+}
+
+namespace {
+
+void parameterise_checked(std::span<const Vec3> points, Parameterisation rule, const Tolerance& tolerance,
+                          const Box3& box, double* t) {
   const std::size_t N = points.size();
-  std::vector<double> t(N, 0.0);
+  t[0] = 0.0;
   if (rule == Parameterisation::Uniform) {
     for (std::size_t i = 1; i + 1 < N; ++i) t[i] = static_cast<double>(i) / static_cast<double>(N - 1);
     t[N - 1] = 1.0;
-    return t;
+    return;
   }
   if (rule != Parameterisation::ChordLength && rule != Parameterisation::Centripetal && rule != Parameterisation::Foley)
     throw Error(Errc::InvalidArgument,
                 "parameterisation = " + std::to_string(static_cast<int>(rule)) + " is not a Parameterisation value",
                 {.field = "parameterisation"});
-  Box3 box;
-  for (const Vec3& p : points) box.add(p);
   const double resolution = resolution_for_size(tolerance, box.diagonal());
+  double sum = 0.0;  // t[i − 1], kept in a register (not reloaded from t)
   for (std::size_t i = 1; i < N; ++i) {
     const double d = distance(points[i - 1], points[i]);
     if (!(d > resolution))
@@ -381,20 +475,24 @@ std::vector<double> parameterise(std::span<const Vec3> points, Parameterisation 
                   indexed("points", i - 1) + " and " + indexed("points", i) + " coincide (distance " +
                       format_number(d) + " <= resolution " + format_number(resolution) + ")",
                   {.field = "points", .index = i});
-    t[i] = t[i - 1] + (rule == Parameterisation::Centripetal ? std::sqrt(d) : d);
+    sum += rule == Parameterisation::Centripetal ? std::sqrt(d) : d;
+    t[i] = sum;
   }
   if (rule == Parameterisation::Foley) {
     // Foley–Nielson: span i (Q_i to Q_i+1, chord d_i) is
     //   d_i (1 + 3/2 θ_i d_i-1 / (d_i-1 + d_i) + 3/2 θ_i+1 d_i+1 / (d_i + d_i+1)),
     // θ_j = min(π − angle(Q_j-1 − Q_j, Q_j+1 − Q_j), π/2) the turning angle at Q_j, capped at π/2;
     // the terms at the ends (no d_-1, no d_N-1) are absent. t holds the cumulative chords here.
-    std::vector<double> turn(N, 0.0);
+    Scratch& w = scratch();
+    std::vector<double>& turn = w.turn;
+    turn.assign(N, 0.0);
     for (std::size_t j = 1; j + 1 < N; ++j) {
       const Vec3 a = points[j - 1] - points[j], b = points[j + 1] - points[j];
       const double interior = std::atan2(norm(cross(a, b)), dot(a, b));
       turn[j] = std::min(std::numbers::pi - interior, std::numbers::pi / 2);
     }
-    std::vector<double> chord(N - 1);
+    std::vector<double>& chord = w.chord;
+    chord.resize(N - 1);
     for (std::size_t i = 0; i + 1 < N; ++i) chord[i] = t[i + 1] - t[i];
     for (std::size_t i = 0; i + 1 < N; ++i) {
       double span = chord[i];
@@ -403,8 +501,10 @@ std::vector<double> parameterise(std::span<const Vec3> points, Parameterisation 
       t[i + 1] = t[i] + span;
     }
   }
-  const double total = t[N - 1];
-  for (std::size_t i = 1; i + 1 < N; ++i) t[i] /= total;
+  // Scaled by the reciprocal, as SplineProfileSampler does (issue 27: the divisions were a tenth of a
+  // 10-point interpolation); each parameter moves by at most one ulp against t_i / total.
+  const double inv_total = 1.0 / t[N - 1];
+  for (std::size_t i = 1; i + 1 < N; ++i) t[i] *= inv_total;
   t[N - 1] = 1.0;
   for (std::size_t i = 1; i < N; ++i)
     if (!(t[i] > t[i - 1]))
@@ -412,24 +512,25 @@ std::vector<double> parameterise(std::span<const Vec3> points, Parameterisation 
                   indexed("points", i - 1) + " and " + indexed("points", i) +
                       " are too close to get distinct parameters relative to the total length",
                   {.field = "points", .index = i});
-  return t;
 }
+
+}  // namespace
 
 NurbsCurve interpolate_cubic(std::span<const Vec3> points, const InterpolationOptions& options) {
   options.validate();
   check_count(points.size(), 2, "interpolate_cubic");
-  check_vectors(points, options.dimension, "points");
+  Box3 box;
+  check_vectors(points, options.dimension, "points", &box);
   const std::size_t N = points.size();
-  const std::vector<double> t =
-      data_parameters(points, options.parameters, options.parameterisation, options.tolerance);
-
-  // U = {0,0,0,0, t_1 … t_{N-2}, 1,1,1,1}: U[i + 3] = t_i.
-  std::vector<double> U;
-  U.reserve(N + 6);
-  U.insert(U.end(), 3, 0.0);
-  U.insert(U.end(), t.begin(), t.end());
-  U.insert(U.end(), 3, 1.0);
-  KnotVector kv(std::move(U), kCubic);
+  Scratch& work = scratch();
+  // U = {0,0,0,0, t_1 … t_{N-2}, 1,1,1,1}: U[i + 3] = t_i, the data parameters written in place. Strictly
+  // increasing parameters make it a valid knot vector by construction (no second validation pass).
+  std::vector<double> U(N + 6);
+  U[0] = U[1] = U[2] = 0.0;
+  data_parameters(points, options.parameters, options.parameterisation, options.tolerance, box, U.data() + 3);
+  U[N + 3] = U[N + 4] = U[N + 5] = 1.0;
+  KnotVector kv = detail::CurveAccess::knots(std::move(U), kCubic);
+  const std::span<const double> t = kv.values().subspan(3, N);
 
   const bool both_nak =
       options.start.kind == EndCondition::Kind::NotAKnot && options.end.kind == EndCondition::Kind::NotAKnot;
@@ -456,26 +557,28 @@ NurbsCurve interpolate_cubic(std::span<const Vec3> points, const InterpolationOp
       for (std::size_t c = 0; c < 3; ++c) rhs[row * 3 + c] += v[c];
     };
 
-    BasisWorkspace work;
+    BasisWorkspace& basis = work.basis;
     // End row: `span` is the end span, `inner` the not-a-knot knot's index in U.
     auto end_row = [&](std::size_t row, const EndRow& er, double at, std::size_t span, std::size_t left_span) {
       switch (er.kind) {
         case EndRow::Kind::FirstDerivative:
         case EndRow::Kind::SecondDerivativeZero: {
-          const int k = er.kind == EndRow::Kind::FirstDerivative ? 1 : 2;
-          const auto d = basis_derivatives(kv, span, at, k, work);
-          for (std::size_t j = 0; j <= kCubic; ++j) add(row, span - kCubic + j, d[static_cast<std::size_t>(k) * 4 + j]);
-          if (k == 1) set_rhs(row, er.derivative);
+          const bool at_start = at == 0.0;
+          const std::array<double, 3> d = end_coefficients(kv, N, er.kind, at_start);
+          const std::size_t end_ctrl = at_start ? 0 : N + 1;
+          for (std::size_t j = 0; j < 3; ++j) add(row, at_start ? end_ctrl + j : end_ctrl - j, d[j]);
+          if (er.kind == EndRow::Kind::FirstDerivative) set_rhs(row, er.derivative);
+          (void)span;
           break;
         }
         case EndRow::Kind::ThirdDerivativeJump: {
           // C'''(u⁻) - C'''(u⁺) = 0 at u = U[left_span + 1]; pieces on spans left_span and left_span + 1.
           const double u = kv[left_span + 1];
           std::array<double, 4> left{};
-          const auto dl = basis_derivatives(kv, left_span, u, 3, work);
+          const auto dl = basis_derivatives(kv, left_span, u, 3, basis);
           for (std::size_t j = 0; j <= kCubic; ++j) left[j] = dl[12 + j];
           for (std::size_t j = 0; j <= kCubic; ++j) add(row, left_span - kCubic + j, left[j]);
-          const auto dr = basis_derivatives(kv, left_span + 1, u, 3, work);
+          const auto dr = basis_derivatives(kv, left_span + 1, u, 3, basis);
           for (std::size_t j = 0; j <= kCubic; ++j) add(row, left_span + 1 - kCubic + j, -dr[12 + j]);
           break;
         }
@@ -483,12 +586,20 @@ NurbsCurve interpolate_cubic(std::span<const Vec3> points, const InterpolationOp
     };
     // Start: span 3 = [0, t_1); the not-a-knot knot t_1 = U[4] joins spans 3 and 4.
     end_row(0, start, 0.0, kCubic, kCubic);
-    // Interpolation rows: C(t_i) = Q_i, span i + 3 where N_{i+3}(t_i) = 0.
-    std::array<double, kCubic + 1> b{};
+    // Interpolation rows: C(t_i) = Q_i at the simple knot u = t_i = U[k], k = i + 3, where the three
+    // non-zero cubic basis functions have the closed form (de Boor's recurrence at a knot)
+    //   N_{k−3}(u) = (U[k+1] − u)² / ((U[k+1] − U[k−2]) (U[k+1] − U[k−1])),
+    //   N_{k−1}(u) = (u − U[k−1])² / ((U[k+2] − U[k−1]) (U[k+1] − U[k−1])),
+    //   N_{k−2}(u) = 1 − N_{k−3}(u) − N_{k−1}(u)   (partition of unity).
+    const std::span<const double> K = kv.values();
     for (std::size_t i = 1; i + 1 < N; ++i) {
-      const std::size_t span = i + kCubic;
-      basis_functions(kv, span, t[i], b);
-      for (std::size_t j = 0; j <= kCubic; ++j) add(i, span - kCubic + j, b[j]);
+      const std::size_t k = i + kCubic;
+      const double u = K[k], right = K[k + 1] - u, left = u - K[k - 1], gap = K[k + 1] - K[k - 1];
+      const double n0 = right * right / ((K[k + 1] - K[k - 2]) * gap);
+      const double n2 = left * left / ((K[k + 2] - K[k - 1]) * gap);
+      add(i, k - 3, n0);
+      add(i, k - 2, 1.0 - n0 - n2);
+      add(i, k - 1, n2);
       set_rhs(i, points[i]);
     }
     // End: span N + 1 = [t_{N-2}, 1]; the not-a-knot knot t_{N-2} = U[N + 1] joins spans N and N + 1.
@@ -499,8 +610,42 @@ NurbsCurve interpolate_cubic(std::span<const Vec3> points, const InterpolationOp
   std::vector<Vec3> P(N + 2);
   double* unknowns = &P[1].x;
   bool solved = false;
-  if (N >= 4) {
-    CubicSystem fast(N, unknowns);
+  if (N >= 4 && start.kind != EndRow::Kind::ThirdDerivativeJump && end.kind != EndRow::Kind::ThirdDerivativeJump) {
+    // First- or second-derivative ends: every row is tridiagonal, assembled in place.
+    CubicSystem fast(N, unknowns, work, false);
+    double* rhs = fast.rhs;
+    const std::array<double, 3> d0 = end_coefficients(kv, N, start.kind, true);
+    fast.first[0] = d0[1];
+    fast.first[1] = d0[2];
+    const std::array<double, 3> d1 = end_coefficients(kv, N, end.kind, false);
+    fast.last[3] = d1[1];
+    fast.last[2] = d1[2];
+    const Vec3 r0 = (start.kind == EndRow::Kind::FirstDerivative ? start.derivative : Vec3{}) - d0[0] * P0;
+    const Vec3 r1 = (end.kind == EndRow::Kind::FirstDerivative ? end.derivative : Vec3{}) - d1[0] * Pn;
+    for (std::size_t c = 0; c < 3; ++c) {
+      rhs[c] = r0[c];
+      rhs[3 * (N - 1) + c] = r1[c];
+    }
+    // Interpolation rows C(t_i) = Q_i at the simple knot u = t_i = U[k], k = i + 3: the three non-zero
+    // cubic basis functions in closed form (de Boor's recurrence at a knot)
+    //   N_{k−3}(u) = (U[k+1] − u)² / ((U[k+1] − U[k−2]) (U[k+1] − U[k−1])),
+    //   N_{k−1}(u) = (u − U[k−1])² / ((U[k+2] − U[k−1]) (U[k+1] − U[k−1])),
+    //   N_{k−2}(u) = 1 − N_{k−3}(u) − N_{k−1}(u)   (partition of unity),
+    // on the unknowns P_i, P_{i+1}, P_{i+2} (columns i − 1, i, i + 1).
+    const double* K = kv.values().data();
+    for (std::size_t i = 1; i + 1 < N; ++i) {
+      const std::size_t k = i + kCubic;
+      const double u = K[k], right = K[k + 1] - u, left = u - K[k - 1], gap = K[k + 1] - K[k - 1];
+      const double n0 = right * right / ((K[k + 1] - K[k - 2]) * gap);
+      const double n2 = left * left / ((K[k + 2] - K[k - 1]) * gap);
+      fast.a[i] = n0;
+      fast.b[i] = 1.0 - n0 - n2;
+      fast.c[i] = n2;
+      for (std::size_t c = 0; c < 3; ++c) rhs[3 * i + c] = points[i][c];
+    }
+    solved = solve_cubic_system(fast);
+  } else if (N >= 4) {
+    CubicSystem fast(N, unknowns, work);
     assemble(fast);
     solved = solve_cubic_system(fast);
   }
@@ -517,12 +662,33 @@ NurbsCurve interpolate_cubic(std::span<const Vec3> points, const InterpolationOp
   }
   P[0] = P0;
   P[N + 1] = Pn;
-  for (std::size_t j = 0; j < P.size(); ++j)
+  if (options.dimension == 2)
+    for (Vec3& p : P) p.z = 0.0;
+  // The points were checked finite; the solution is checked here, once, for what NurbsCurve requires,
+  // in the pass that finds the control box: first without branches ((x − x) is NaN for a non-finite x),
+  // then, only for a bad solution, point by point to name the culprit.
+  Box3 control_box;
+  double probe = 0.0;
+  for (const Vec3& p : P) {
+    probe += (p.x - p.x) + (p.y - p.y) + (p.z - p.z);
+    control_box.add(p);
+  }
+  if (probe == 0.0 && control_box.extent() <= kMaxCoordinate)
+    return detail::CurveAccess::curve(std::move(kv), std::move(P), options.dimension, control_box);
+  for (std::size_t j = 0; j < P.size(); ++j) {
     if (!is_finite(P[j]))
       throw Error(Errc::NumericalFailure,
                   "control point " + std::to_string(j) + " of the interpolant overflowed (scale of the data too large)",
                   {.field = "points"});
-  return make_curve(std::move(kv), std::move(P), options.dimension);
+    for (std::size_t c = 0; c < 3; ++c)
+      if (std::fabs(P[j][c]) > kMaxCoordinate)
+        throw Error(Errc::ScaleOutOfRange,
+                    "control_points[" + std::to_string(j) + "][" + std::to_string(c) + "] = " + format_number(P[j][c]) +
+                        " exceeds the largest supported coordinate magnitude 1e300; rescale the model",
+                    {.field = "control_points", .index = j, .component = c});
+  }
+  HULA_ASSERT(false, "control points failed the probe but passed the check");
+  return detail::CurveAccess::curve(std::move(kv), std::move(P), options.dimension, control_box);
 }
 
 NurbsCurve interpolate_lagrange(std::span<const Vec3> points, std::span<const double> parameters, int dimension) {

@@ -29,6 +29,10 @@ using hula::Interval;
 /// double precision long before they become useful in design.
 inline constexpr int kMaxDegree = 64;
 
+namespace detail {
+struct CurveAccess;  // detail/curve_access.hpp
+}  // namespace detail
+
 /// A non-decreasing sequence of knots valid for a given degree.
 ///
 /// Invariants (checked at construction): degree in [1, kMaxDegree]; at least
@@ -93,6 +97,7 @@ class KnotVector {
   struct Unchecked {};
   KnotVector(Unchecked, std::vector<double> knots, int degree) : knots_(std::move(knots)), degree_(degree) {}
   friend class NurbsCurve;
+  friend struct detail::CurveAccess;
 
   std::vector<double> knots_;
   int degree_;

@@ -9,42 +9,75 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
-#include <mutex>
+#include <cstdint>
+#include <limits>
+#include <memory>
 #include <string>
 #include <utility>
 
 #include "hula/core/error.hpp"
 #include "hula/nurbs/basis.hpp"
+#include "hula/nurbs/detail/curve_access.hpp"
+#include "hula/nurbs/detail/span_simd.hpp"
+
+#define HULA_SPAN_ISA scalar
+#include "hula/nurbs/detail/span_eval.hpp"
+#undef HULA_SPAN_ISA
 
 namespace hula::nurbs {
 
 namespace {
 
-// Per-span Taylor coefficients of the homogeneous curve: span s, power j,
-// component c (x, y, z, w) at coef[(s * (p + 1) + j) * 4 + c].
+// The per-span cache of a curve, in one allocation: breakpoints b[0..S]; per span its midpoint, 2 / length
+// and the Taylor coefficients of the homogeneous curve at the midpoint (power j, lane x, y, z, w at
+// coef[(s * (p + 1) + j) * 4 + lane]); per breakpoint an exact-point record (flag, x, y, z).
 struct SpanCache {
-  std::vector<double> breaks;    // S + 1 strictly increasing breakpoints
-  std::vector<double> mid;       // S span midpoints
-  std::vector<double> inv_half;  // S values 2 / (b[s+1] - b[s])
-  std::vector<double> coef;
-  // True when no derivative of a non-rational curve can overflow inside the
-  // domain (bounded at build time), so the evaluators skip the finiteness probe.
-  bool derivatives_bounded = false;
-  // Exact ends: at a breakpoint of multiplicity ≥ p (the clamped ends, C0
-  // joins) one basis function is 1 and the curve passes through a control point. exact[b] = 1
-  // marks breaks[b] as such a point and exact_point[b] holds that control point, returned as is
-  // instead of the rounded sum of the span polynomial.
-  std::vector<std::uint8_t> exact;
-  std::vector<Vec3> exact_point;
+  std::size_t spans = 0;  // S
+  std::size_t block = 0;  // (p + 1) * 4 coefficients per span; 0 above kCachedDegreeLimit (direct evaluation)
+  std::vector<double> store;
+  const double* breaks = nullptr;
+  const double* mid = nullptr;
+  const double* inv_half = nullptr;
+  const double* coef = nullptr;
+  // Exact ends: at a breakpoint of multiplicity ≥ p (the clamped ends, C0 joins) one
+  // basis function is 1 and the curve passes through a control point. exact[4 b] = 1 marks breaks[b] as
+  // such a point and exact[4 b + 1 … 3] hold that control point, returned as is instead of the rounded
+  // sum of the span polynomial.
+  const double* exact = nullptr;
+  // Derivatives up to this order cannot overflow inside the domain (bounded when the cache is built), so
+  // the evaluators skip the finiteness probe for them; positions (order 0) never overflow there.
+  int unchecked_order = 0;
+  // Span search: the domain is cut into `buckets` equal buckets; J(t) = the bucket of t,
+  // computed by bucket_of, is monotone in t, so the span of any t with J(t) = j lies in
+  // [first[j], first[j] + count[j]) (see build_buckets), which `steps` branch-free halvings narrow to one
+  // span: O(1) for knots of similar lengths, O(log S) at worst, never a data-dependent branch.
+  double bucket_origin = 0.0;
+  double bucket_scale = 0.0;          // buckets / domain length
+  double last_bucket = 0.0;           // buckets − 1
+  std::vector<std::uint32_t> bucket;  // first[j], count[j] interleaved
+  int steps = 0;
+
+  SpanCache() = default;
+  SpanCache(const SpanCache&) = delete;
+  SpanCache& operator=(const SpanCache&) = delete;
 };
 
 // Replaces a position computed at breakpoint b by its exact control point, when it has one.
 inline void snap_exact(const SpanCache& c, std::size_t b, Vec3& position) {
-  if (c.exact[b] != 0) position = c.exact_point[b];
+  const double* e = c.exact + 4 * b;
+  if (e[0] != 0.0) position = {e[1], e[2], e[3]};
 }
 
 std::string where_t(const char* name, double t) { return std::string(name) + " = " + format_number(t); }
+
+// Scratch of the cache builder and the direct (high-degree) evaluator: one per thread, so both are
+// allocation-free once warm and safe under concurrent const use (never used by both at once).
+BasisWorkspace& thread_workspace() {
+  thread_local BasisWorkspace work;
+  return work;
+}
 
 }  // namespace
 
@@ -54,25 +87,30 @@ struct NurbsCurve::Data {
   std::vector<double> weights;
   int dimension;
   Box3 box;
-  mutable std::once_flag once;
-  mutable SpanCache cache;
+  // Built on first use and published with one compare-and-swap (issue 27: no call_once, whose futex
+  // wake cost a system call per curve); a thread that loses the race drops its copy.
+  mutable std::atomic<const SpanCache*> cache{nullptr};
 
   Data(KnotVector k, std::vector<Vec3> p, std::vector<double> w, int dim)
       : knots(std::move(k)), points(std::move(p)), weights(std::move(w)), dimension(dim) {}
+  Data(const Data&) = delete;
+  Data& operator=(const Data&) = delete;
+  ~Data() { delete cache.load(std::memory_order_acquire); }
 
   [[nodiscard]] bool rational() const { return !weights.empty(); }
   [[nodiscard]] int degree() const { return knots.degree(); }
   [[nodiscard]] const SpanCache& span_cache() const {
-    std::call_once(once, [this] { build_cache(); });
-    return cache;
+    const SpanCache* c = cache.load(std::memory_order_acquire);
+    return c != nullptr ? *c : publish_cache();
   }
-  void build_cache() const;
+  const SpanCache& publish_cache() const;
+  void build_cache(SpanCache& out) const;
   void eval_direct(double t, int order, Side side, Vec3* out, BasisWorkspace& work) const;
   // snap_exact for the direct path (binary search over the breakpoints).
-  void snap_direct(double u, Vec3& position) const {
-    const auto& b = cache.breaks;
-    const auto it = std::lower_bound(b.begin(), b.end(), u);
-    if (it != b.end() && *it == u) snap_exact(cache, static_cast<std::size_t>(it - b.begin()), position);
+  void snap_direct(const SpanCache& c, double u, Vec3& position) const {
+    const double* b = c.breaks;
+    const double* it = std::lower_bound(b, b + c.spans + 1, u);
+    if (it != b + c.spans + 1 && *it == u) snap_exact(c, static_cast<std::size_t>(it - b), position);
   }
 };
 
@@ -127,25 +165,10 @@ void validate_points(const std::vector<Vec3>& points, const std::vector<double>&
   }
 }
 
-// Derivatives 0..order at local x of a cached span with compile-time degree P
-// (R: rational). d[k] = f^(k)(x) / k! by repeated synthetic division (Horner),
-// then f^(k)(t) = k! scale^k d[k] with scale = 1 / half, then eq. 4.8 for R.
+// Derivatives 0..order at local x of a cached span with compile-time degree P and a run-time order (the
+// general path behind the compile-time orders 0…3 of span_eval.hpp; the same operations per order).
 template <int P, bool R>
 inline void eval_span(const double* a, double x, double scale, int order, Vec3* out) {
-  constexpr int C = R ? 4 : 3;
-  if (order == 0) {
-    double acc[C];
-    for (int c = 0; c < C; ++c) acc[c] = a[P * 4 + c];
-    for (int j = P - 1; j >= 0; --j)
-      for (int c = 0; c < C; ++c) acc[c] = acc[c] * x + a[j * 4 + c];
-    if constexpr (R) {
-      const double inv = 1.0 / acc[3];
-      out[0] = {acc[0] * inv, acc[1] * inv, acc[2] * inv};
-    } else {
-      out[0] = {acc[0], acc[1], acc[2]};
-    }
-    return;
-  }
   // All four lanes even when not rational: pairs of doubles vectorise, three do not.
   double d[P + 1][4];
   for (int k = 1; k <= P; ++k)
@@ -181,28 +204,65 @@ inline void eval_span(const double* a, double x, double scale, int order, Vec3* 
   }
 }
 
-// Span index s in [0, S) of t among breakpoints b[0..S] (exact comparisons).
-inline std::size_t locate(const std::vector<double>& b, double t, Side side) {
-  const std::size_t S = b.size() - 1;
-  std::size_t s;
-  if (side == Side::Right)
-    s = static_cast<std::size_t>(std::upper_bound(b.begin(), b.end(), t) - b.begin());
-  else
-    s = static_cast<std::size_t>(std::lower_bound(b.begin(), b.end(), t) - b.begin());
-  s = s == 0 ? 0 : s - 1;
-  return std::min(s, S - 1);
+// The bucket of t: J(t) = ⌊clamp((t − origin) · scale, 0, buckets − 1)⌋, monotone non-decreasing in t
+// (each operation is), which is all the span search relies on.
+inline std::size_t bucket_of(const SpanCache& c, double t) {
+  double f = (t - c.bucket_origin) * c.bucket_scale;
+  f = f > 0.0 ? f : 0.0;
+  f = f < c.last_bucket ? f : c.last_bucket;
+  return static_cast<std::size_t>(f);
 }
 
-inline std::size_t locate_hinted(const std::vector<double>& b, double t, Side side, std::size_t hint) {
-  const std::size_t S = b.size() - 1;
+// Span index s in [0, S) of t among breakpoints b[0..S] (exact comparisons): the largest s with
+// b[s] <= t (Right) or b[s] < t (Left), 0 if none, S − 1 at and beyond the end. The bucket of t gives
+// the candidate spans; a fixed number of branch-free halvings picks one (issue 27: std::upper_bound's
+// unpredictable branches cost shuffled input ~30 ns a point, a plain branch-free binary search ~20).
+inline std::size_t locate(const SpanCache& c, double t, Side side) {
+  const std::size_t j = bucket_of(c, t);
+  std::size_t base = c.bucket[2 * j];
+  std::size_t len = c.bucket[2 * j + 1];
+  const double* b = c.breaks;
   if (side == Side::Right) {
-    if (b[hint] <= t && t < b[hint + 1]) return hint;
-    if (hint + 1 < S && b[hint + 1] <= t && t < b[hint + 2]) return hint + 1;
+    for (int k = 0; k < c.steps; ++k) {
+      const std::size_t half = len / 2;
+      base = b[base + half] <= t ? base + half : base;
+      len -= half;
+    }
   } else {
-    if (b[hint] < t && t <= b[hint + 1]) return hint;
-    if (hint + 1 < S && b[hint + 1] < t && t <= b[hint + 2]) return hint + 1;
+    for (int k = 0; k < c.steps; ++k) {
+      const std::size_t half = len / 2;
+      base = b[base + half] < t ? base + half : base;
+      len -= half;
+    }
   }
-  return locate(b, t, side);
+  return base;
+}
+
+// The bucket table of locate. With J(b[s]) the bucket of breakpoint s and s* the span of a t with
+// J(t) = j: b[s] <= t implies J(b[s]) <= j, so s* <= hi_j = max{s < S : J(b[s]) <= j}; and J(b[s]) < j
+// implies b[s] < t, so s* >= lo_j = max{s : J(b[s]) < j} (0 if none). Both bounds hold for either side.
+// Two buckets per span keep count_j at 1 or 2 for knots of similar lengths.
+void build_buckets(SpanCache& c) {
+  const std::size_t S = c.spans;
+  const std::size_t B = 2 * S;
+  c.bucket_origin = c.breaks[0];
+  c.bucket_scale = static_cast<double>(B) / (c.breaks[S] - c.breaks[0]);
+  c.last_bucket = static_cast<double>(B - 1);
+  c.bucket.assign(2 * B, 0);
+  std::size_t below = 0, upto = 0;  // spans s < S with J(b[s]) < j, <= j
+  std::size_t widest = 1;
+  for (std::size_t j = 0; j < B; ++j) {
+    while (below < S && bucket_of(c, c.breaks[below]) < j) ++below;
+    while (upto < S && bucket_of(c, c.breaks[upto]) <= j) ++upto;
+    const std::size_t lo = below == 0 ? 0 : below - 1;
+    const std::size_t hi = upto - 1;  // b[0] is in bucket 0, so upto >= 1
+    c.bucket[2 * j] = static_cast<std::uint32_t>(lo);
+    c.bucket[2 * j + 1] = static_cast<std::uint32_t>(hi - lo + 1);
+    widest = std::max(widest, hi - lo + 1);
+  }
+  // Halvings that reduce `widest` candidates to one (len − len / 2 each time).
+  c.steps = 0;
+  for (std::size_t len = widest; len > 1; len -= len / 2) ++c.steps;
 }
 
 // Applies the domain policy; returns the parameter to evaluate at.
@@ -242,97 +302,173 @@ void check_finite_result(const Vec3* out, int order, double t) {
                   {.field = "t"});
 }
 
-// The evaluation loop for one compile-time degree: hinted span search (O(1)
-// for sorted parameters), domain policy, one eval_span per parameter.
-template <int P, bool R>
-void eval_batch(const SpanCache& c, std::span<const double> ts, int order, Vec3* out, Interval dom,
-                const EvalOptions& options, bool batch_names) {
-  const auto stride = static_cast<std::size_t>(order) + 1;
-  constexpr std::size_t block = (P + 1) * 4;
-  const bool strict = options.domain == Domain::Strict;
-  std::size_t s = 0;
-  // (v - v) is 0 for finite v and NaN otherwise: one cheap probe for the
-  // whole batch instead of a branch per value; the slow pass names the culprit.
+// (v - v) is 0 for finite v and NaN otherwise: one cheap probe for a whole batch instead of a branch per
+// value; the slow pass names the culprit.
+inline double probe_of(const Vec3* o, std::size_t count) {
   double probe = 0.0;
-  // Positions inside the domain are convex combinations of the control points: never overflow.
-  bool check = order > 0 && (R || !c.derivatives_bounded);
-  for (std::size_t i = 0; i < ts.size(); ++i) {
-    double u = ts[i];
-    if (!(strict && u >= dom.start && u <= dom.end)) {
+  for (std::size_t k = 0; k < count; ++k) probe += (o[k].x - o[k].x) + (o[k].y - o[k].y) + (o[k].z - o[k].z);
+  return probe;
+}
+
+// The evaluation loop for one compile-time degree P and order K (K < 0: the order is a run-time value):
+// runs of consecutive parameters strictly inside the current span go to the SIMD run kernel (sorted
+// input: one kernel call per span), other points one by one with the domain policy, the previous
+// point's span or a branch-free binary search, and breakpoint snapping.
+template <int P, bool R, int K>
+void eval_batch(const SpanCache& c, std::span<const double> ts, int order, Vec3* out, Interval dom,
+                const EvalOptions& options, bool batch_names, detail::RunKernel run) {
+  const std::size_t stride = K >= 0 ? static_cast<std::size_t>(K) + 1 : static_cast<std::size_t>(order) + 1;
+  constexpr std::size_t block = (P + 1) * 4;
+  // Locals, not members: the stores to `out` could alias a member and force it to be reloaded per point.
+  const double* const breaks = c.breaks;
+  const double* const mid = c.mid;
+  const double* const inv_half = c.inv_half;
+  const double* const coef = c.coef;
+  const double* const t = ts.data();
+  const Side side = options.side;
+  const bool strict = options.domain == Domain::Strict;
+  const double lo = dom.start, hi = dom.end;
+  const std::size_t n = ts.size();
+  std::size_t s = 0;
+  double probe = 0.0;
+  bool check = order > c.unchecked_order;
+  // A run is tried after a point that stayed in its span (sorted input); shuffled input seldom does.
+  bool try_run = run != nullptr;
+  for (std::size_t i = 0; i < n;) {
+    if (try_run) {
+      const std::size_t done =
+          run(coef + s * block, mid[s], inv_half[s], breaks[s], breaks[s + 1], t + i, n - i, &out[i * stride].x);
+      if (check) probe += probe_of(out + i * stride, done * stride);
+      i += done;
+      try_run = false;
+      if (i == n) break;
+    }
+    double u = t[i];
+    if (!(strict && u >= lo && u <= hi)) [[unlikely]] {
       u = resolve_parameter(u, dom, options.domain, "t", i, batch_names);
       check = check || !dom.contains(u);  // extrapolation leaves the bounded region
     }
-    s = locate_hinted(c.breaks, u, options.side, s);
-    const double x = (u - c.mid[s]) * c.inv_half[s];
+    // The previous point's span (sorted input), else a branch-free binary search.
+    const bool same = side == Side::Right ? breaks[s] <= u && u < breaks[s + 1] : breaks[s] < u && u <= breaks[s + 1];
+    if (!same) s = locate(c, u, side);
+    try_run = run != nullptr && same;
+    const double x = (u - mid[s]) * inv_half[s];
     Vec3* o = out + i * stride;
-    eval_span<P, R>(c.coef.data() + s * block, x, c.inv_half[s], order, o);
-    if (u == c.breaks[s]) snap_exact(c, s, o[0]);
-    if (u == c.breaks[s + 1]) snap_exact(c, s + 1, o[0]);
-    if (check)
-      for (std::size_t k = 0; k < stride; ++k) probe += (o[k].x - o[k].x) + (o[k].y - o[k].y) + (o[k].z - o[k].z);
+    if constexpr (K >= 0) {
+      double r[K + 1][3];
+      detail::scalar::eval_piece<P, R, K>(coef + s * block, x, inv_half[s], r);
+      for (int k = 0; k <= K; ++k) o[k] = {r[k][0], r[k][1], r[k][2]};
+    } else {
+      eval_span<P, R>(coef + s * block, x, inv_half[s], order, o);
+    }
+    if (u == breaks[s] || u == breaks[s + 1]) [[unlikely]]
+      snap_exact(c, u == breaks[s] ? s : s + 1, o[0]);
+    if (check) probe += probe_of(o, stride);
+    ++i;
   }
   if (probe != 0.0) {
-    for (std::size_t i = 0; i < ts.size(); ++i) check_finite_result(out + i * stride, order, ts[i]);
+    for (std::size_t i = 0; i < n; ++i) check_finite_result(out + i * stride, order, ts[i]);
   }
 }
 
-using BatchKernel = void (*)(const SpanCache&, std::span<const double>, int, Vec3*, Interval, const EvalOptions&, bool);
+using BatchKernel = void (*)(const SpanCache&, std::span<const double>, int, Vec3*, Interval, const EvalOptions&, bool,
+                             detail::RunKernel);
 
+// Kernels with a run-time order for degrees 1 … kCachedDegreeLimit, and with compile-time orders 0 … 3 for
+// degrees 2 … 5 (the common cases: quadratic conics, cubic splines, quintic Hermite curves).
 template <bool R, int... Ps>
 constexpr std::array<BatchKernel, sizeof...(Ps)> make_kernels(std::integer_sequence<int, Ps...>) {
-  return {&eval_batch<Ps + 1, R>...};
+  return {&eval_batch<Ps + 1, R, -1>...};
 }
 constexpr auto kKernels = make_kernels<false>(std::make_integer_sequence<int, kCachedDegreeLimit>{});
 constexpr auto kRationalKernels = make_kernels<true>(std::make_integer_sequence<int, kCachedDegreeLimit>{});
 
-inline BatchKernel kernel_for(int degree, bool rational) {
+template <bool R, int P>
+constexpr std::array<BatchKernel, 4> ordered_kernels() {
+  return {&eval_batch<P, R, 0>, &eval_batch<P, R, 1>, &eval_batch<P, R, 2>, &eval_batch<P, R, 3>};
+}
+constexpr std::array<std::array<BatchKernel, 4>, 4> kOrdered = {
+    ordered_kernels<false, 2>(), ordered_kernels<false, 3>(), ordered_kernels<false, 4>(), ordered_kernels<false, 5>()};
+constexpr std::array<std::array<BatchKernel, 4>, 4> kRationalOrdered = {
+    ordered_kernels<true, 2>(), ordered_kernels<true, 3>(), ordered_kernels<true, 4>(), ordered_kernels<true, 5>()};
+
+inline BatchKernel kernel_for(int degree, bool rational, int order) {
+  if (degree >= 2 && degree <= 5 && order <= 3) {
+    const auto d = static_cast<std::size_t>(degree - 2);
+    const auto k = static_cast<std::size_t>(order);
+    return rational ? kRationalOrdered[d][k] : kOrdered[d][k];
+  }
   const auto i = static_cast<std::size_t>(degree - 1);
   return rational ? kRationalKernels[i] : kKernels[i];
 }
 }  // namespace
 
-namespace {
-// Scratch of the direct (high-degree) evaluator: one per thread, so it is
-// allocation-free once warm and safe under concurrent const use.
-BasisWorkspace& direct_workspace() {
-  thread_local BasisWorkspace work;
-  return work;
+const SpanCache& NurbsCurve::Data::publish_cache() const {
+  auto fresh = std::make_unique<SpanCache>();
+  build_cache(*fresh);
+  const SpanCache* expected = nullptr;
+  if (cache.compare_exchange_strong(expected, fresh.get(), std::memory_order_acq_rel, std::memory_order_acquire))
+    return *fresh.release();
+  return *expected;  // another thread published first
 }
-}  // namespace
 
-void NurbsCurve::Data::build_cache() const {
+void NurbsCurve::Data::build_cache(SpanCache& out) const {
   const int p = degree();
   const auto P = static_cast<std::size_t>(p);
   const std::span<const double> U = knots.values();
   const std::size_t n = points.size() - 1;
-  cache.breaks = knots.breakpoints();
-  const std::size_t S = cache.breaks.size() - 1;
-  cache.mid.resize(S);
-  cache.inv_half.resize(S);
-  cache.exact.assign(S + 1, 0);
-  cache.exact_point.assign(S + 1, Vec3{});
-  for (std::size_t b = 0; b <= S; ++b) {
-    // The run U[k] = … = U[k+m−1] = breaks[b]; with m ≥ p the curve there is P[k−1] (P[0] for a
-    // clamped start, k = 0 with m = p + 1; P[n] for a clamped end, k = n + 1).
-    const double u = cache.breaks[b];
-    const auto first = std::lower_bound(U.begin(), U.end(), u);
-    const auto k = static_cast<std::size_t>(first - U.begin());
-    const auto m = static_cast<std::size_t>(std::upper_bound(first, U.end(), u) - first);
-    if (m < P) continue;
-    cache.exact[b] = 1;
-    cache.exact_point[b] = points[k == 0 ? 0 : k - 1];
+  const double a = U[P], b = U[n + 1];
+  // Breakpoints: runs of equal knots with a value in the domain; multiplicity over the whole vector.
+  std::size_t S = 0;
+  for (std::size_t i = 0; i < U.size(); ++i)
+    if (U[i] >= a && U[i] <= b && (i == 0 || U[i] != U[i - 1])) ++S;
+  --S;
+  const std::size_t block = p > kCachedDegreeLimit ? 0 : (P + 1) * 4;
+  out.spans = S;
+  out.block = block;
+  out.store.assign((S + 1) + 2 * S + S * block + 4 * (S + 1), 0.0);
+  double* breaks = out.store.data();
+  double* mid = breaks + S + 1;
+  double* inv_half = mid + S;
+  double* coef = inv_half + S;
+  double* exact = coef + S * block;
+  out.breaks = breaks;
+  out.mid = mid;
+  out.inv_half = inv_half;
+  out.coef = coef;
+  out.exact = exact;
+  std::size_t bi = 0;
+  for (std::size_t i = 0; i < U.size();) {
+    std::size_t j = i;
+    while (j + 1 < U.size() && U[j + 1] == U[i]) ++j;
+    const double u = U[i];
+    if (u >= a && u <= b) {
+      breaks[bi] = u;
+      // The run U[i] = … = U[j] = u has multiplicity m = j − i + 1; with m ≥ p the curve there is P[i − 1]
+      // (P[0] for a clamped start, i = 0 with m = p + 1; P[n] for a clamped end, i = n + 1).
+      if (j - i + 1 >= P) {
+        const Vec3& q = points[i == 0 ? 0 : i - 1];
+        exact[4 * bi] = 1.0;
+        exact[4 * bi + 1] = q.x;
+        exact[4 * bi + 2] = q.y;
+        exact[4 * bi + 3] = q.z;
+      }
+      ++bi;
+    }
+    i = j + 1;
   }
+  HULA_ASSERT(bi == S + 1, "breakpoint count mismatch");
+  build_buckets(out);
   if (p > kCachedDegreeLimit) return;  // direct evaluation only
-  cache.coef.assign(S * (P + 1) * 4, 0.0);
-  BasisWorkspace work;
+  BasisWorkspace& work = thread_workspace();
   std::size_t s = 0;
   for (std::size_t i = P; i <= n; ++i) {
     if (!(U[i] < U[i + 1])) continue;
     const double half = 0.5 * (U[i + 1] - U[i]);
-    const double mid = U[i] + half;
-    cache.mid[s] = mid;
-    cache.inv_half[s] = 1.0 / half;
-    const std::span<const double> ders = basis_derivatives(knots, i, mid, p, work);
+    const double m = U[i] + half;
+    mid[s] = m;
+    inv_half[s] = 1.0 / half;
+    const std::span<const double> ders = basis_derivatives(knots, i, m, p, work);
     double f = 1.0;  // half^k / k!
     for (std::size_t k = 0; k <= P; ++k) {
       if (k > 0) f *= half / static_cast<double>(k);
@@ -348,29 +484,53 @@ void NurbsCurve::Data::build_cache() const {
         acc[2] += N * w * points[idx].z;
         acc[3] += N * w;
       }
-      for (std::size_t c = 0; c < 4; ++c) cache.coef[(s * (P + 1) + k) * 4 + c] = acc[c];
+      for (std::size_t c = 0; c < 4; ++c) coef[(s * (P + 1) + k) * 4 + c] = acc[c];
     }
     ++s;
   }
   HULA_ASSERT(s == S, "span count mismatch between knots and breakpoints");
-  // Bound |C^(k)(t)| ≤ k! scale^k Σ_{j≥k} binom(j, k) |c_j| for |x| ≤ 1 (non-rational only).
-  cache.derivatives_bounded = !rational();
-  for (std::size_t sp = 0; sp < S && cache.derivatives_bounded; ++sp) {
+  // Bounds for |x| ≤ 1: |A^(k)| ≤ k! scale^k Σ_{j≥k} binom(j, k) |c_j| (lanes x, y, z) and likewise |w^(k)|
+  // (lane w). Non-rational: no derivative of any order can overflow when every bound < 1e300 (orders above
+  // p are zero). Rational: w ≥ w_min > 0 on the span (a convex combination of its p + 1 weights), and the
+  // quotient rule gives |C^(k)| ≤ B_k = (|A^(k)| + Σ_{i=1..k} binom(k, i) |w^(i)| B_{k−i}) / w_min for
+  // k ≤ p; every partial sum of the evaluator is bounded by B_k, so B_k < 1e300 (far below the overflow
+  // threshold 1.8e308, which rounding cannot bridge) rules out an overflow up to order p.
+  bool bounded = true;
+  for (std::size_t sp = 0; sp < S && bounded; ++sp) {
+    std::array<double, kCachedDegreeLimit + 1> abound{}, wbound{}, B{};
     double scale_k = 1.0;
     for (std::size_t k = 0; k <= P; ++k) {
-      if (k > 0) scale_k *= static_cast<double>(k) * cache.inv_half[sp];
-      double bound = 0.0;
+      if (k > 0) scale_k *= static_cast<double>(k) * inv_half[sp];
+      double bound = 0.0, wb = 0.0;
       double binom = 1.0;  // binom(j, k) for j = k, k+1, ...
       for (std::size_t j = k; j <= P; ++j) {
         if (j > k) binom = binom * static_cast<double>(j) / static_cast<double>(j - k);
-        const double* cj = &cache.coef[(sp * (P + 1) + j) * 4];
+        const double* cj = &coef[(sp * (P + 1) + j) * 4];
         bound += binom * std::fmax(std::fabs(cj[0]), std::fmax(std::fabs(cj[1]), std::fabs(cj[2])));
+        wb += binom * std::fabs(cj[3]);
       }
-      if (!(bound * scale_k < 1e300)) cache.derivatives_bounded = false;
+      abound[k] = bound * scale_k;
+      wbound[k] = wb * scale_k;
+      if (!(abound[k] < 1e300)) bounded = false;
+    }
+    if (!rational() || !bounded) continue;
+    // The span's first control point index: the span starting at breakpoint sp ends at knot index i + 1.
+    const std::size_t i = static_cast<std::size_t>(std::upper_bound(U.begin(), U.end(), breaks[sp]) - U.begin()) - 1;
+    double w_min = HUGE_VAL;
+    for (std::size_t j = 0; j <= P; ++j) w_min = std::fmin(w_min, weights[i - P + j]);
+    for (std::size_t k = 0; k <= P && bounded; ++k) {
+      double sum = abound[k];
+      double binom = 1.0;
+      for (std::size_t r = 1; r <= k; ++r) {
+        binom = binom * static_cast<double>(k - r + 1) / static_cast<double>(r);
+        sum += binom * wbound[r] * B[k - r];
+      }
+      B[k] = sum / w_min;
+      if (!(B[k] < 1e300)) bounded = false;
     }
   }
+  out.unchecked_order = !bounded ? 0 : (rational() ? p : std::numeric_limits<int>::max());
 }
-
 void NurbsCurve::Data::eval_direct(double t, int order, Side side, Vec3* out, BasisWorkspace& work) const {
   const int p = degree();
   const auto P = static_cast<std::size_t>(p);
@@ -437,6 +597,30 @@ NurbsCurve::NurbsCurve(KnotVector knots, std::vector<Vec3> control_points, std::
   data_ = std::move(data);
 }
 
+KnotVector detail::CurveAccess::knots(std::vector<double> values, int degree) {
+#if !defined(NDEBUG) || defined(HULA_ENABLE_ASSERTS)
+  return KnotVector(std::move(values), degree);  // builds with asserts validate anyway
+#else
+  return KnotVector(KnotVector::Unchecked{}, std::move(values), degree);
+#endif
+}
+
+NurbsCurve detail::CurveAccess::curve(KnotVector knots, std::vector<Vec3> control_points, int dimension,
+                                      const Box3& control_box) {
+#if !defined(NDEBUG) || defined(HULA_ENABLE_ASSERTS)
+  // Builds with asserts validate anyway, and check the box.
+  NurbsCurve c(std::move(knots), std::move(control_points), {}, dimension);
+  HULA_ASSERT(c.control_box().min == control_box.min && c.control_box().max == control_box.max,
+              "the control box given does not match the control points");
+  return c;
+#else
+  auto data =
+      std::make_shared<NurbsCurve::Data>(std::move(knots), std::move(control_points), std::vector<double>{}, dimension);
+  data->box = control_box;
+  return NurbsCurve(std::move(data));
+#endif
+}
+
 int NurbsCurve::degree() const noexcept { return data_->degree(); }
 const KnotVector& NurbsCurve::knots() const noexcept { return data_->knots; }
 std::span<const Vec3> NurbsCurve::control_points() const noexcept { return data_->points; }
@@ -476,11 +660,12 @@ void NurbsCurve::derivatives(double t, int order, std::span<Vec3> out, const Eva
   const SpanCache& c = d.span_cache();
   if (p > kCachedDegreeLimit) {
     const double u = resolve_parameter(t, domain(), options.domain, "t", 0, false);
-    BasisWorkspace& work = direct_workspace();
+    BasisWorkspace& work = thread_workspace();
     d.eval_direct(u, order, options.side, out.data(), work);
-    d.snap_direct(u, out[0]);
+    d.snap_direct(c, u, out[0]);
   } else {
-    kernel_for(p, d.rational())(c, std::span<const double>(&t, 1), order, out.data(), domain(), options, false);
+    kernel_for(p, d.rational(), order)(c, std::span<const double>(&t, 1), order, out.data(), domain(), options, false,
+                                       nullptr);
     return;
   }
   check_finite_result(out.data(), order, t);
@@ -507,14 +692,15 @@ void NurbsCurve::derivatives(std::span<const double> ts, int order, std::span<Ve
   const int p = d.degree();
   const SpanCache& c = d.span_cache();
   if (p > kCachedDegreeLimit) {
-    BasisWorkspace& work = direct_workspace();
+    BasisWorkspace& work = thread_workspace();
     for (std::size_t i = 0; i < ts.size(); ++i) {
       const double u = resolve_parameter(ts[i], dom, options.domain, "t", i, true);
       d.eval_direct(u, order, options.side, out.data() + i * stride, work);
-      d.snap_direct(u, out[i * stride]);
+      d.snap_direct(c, u, out[i * stride]);
     }
   } else {
-    kernel_for(p, d.rational())(c, ts, order, out.data(), dom, options, true);
+    kernel_for(p, d.rational(), order)(c, ts, order, out.data(), dom, options, true,
+                                       detail::run_kernel(p, d.rational(), order));
     return;
   }
   for (std::size_t i = 0; i < ts.size(); ++i) check_finite_result(out.data() + i * stride, order, ts[i]);

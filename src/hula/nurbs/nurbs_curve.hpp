@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <memory>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "hula/core/vec.hpp"
@@ -44,6 +45,10 @@ inline constexpr double kMaxCoordinate = 1e300;
 
 /// Degree above which evaluation bypasses the monomial span cache.
 inline constexpr int kCachedDegreeLimit = 9;
+
+namespace detail {
+struct CurveAccess;  // detail/curve_access.hpp: construction from data valid by construction
+}  // namespace detail
 
 /// A NURBS curve C(t) = Σ N_{i,p}(t) w_i P_i / Σ N_{i,p}(t) w_i, t ∈ [U[p], U[n+1]].
 ///
@@ -104,7 +109,9 @@ class NurbsCurve {
   friend bool operator==(const NurbsCurve& a, const NurbsCurve& b);
 
  private:
+  friend struct detail::CurveAccess;
   struct Data;
+  explicit NurbsCurve(std::shared_ptr<const Data> data) noexcept : data_(std::move(data)) {}
   std::shared_ptr<const Data> data_;
 };
 

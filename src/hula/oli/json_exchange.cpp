@@ -43,9 +43,10 @@ Json export_json(const Document& document, std::span<const Label> labels) {
 
 namespace {
 
-Provenance import_provenance(std::string_view source, std::optional<std::uint64_t> original) {
+Provenance import_provenance(std::string_view source, std::optional<std::uint64_t> original,
+                             std::string operation = "import:json") {
   Provenance p;
-  p.operation = "import:json";
+  p.operation = std::move(operation);
   p.tool_version = HULA_VERSION;
   p.details["file"] = std::string(source);
   if (original) p.details["label"] = *original;
@@ -53,6 +54,10 @@ Provenance import_provenance(std::string_view source, std::optional<std::uint64_
 }
 
 }  // namespace
+
+Label import_points(Edit& edit, PointSet points, std::string_view source) {
+  return edit.add_point_set(std::move(points), {}, import_provenance(source, {}, "import:points"));
+}
 
 std::vector<Label> import_json(Edit& edit, const Json& input, std::string_view source) {
   namespace j = io::json;

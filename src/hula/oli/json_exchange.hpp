@@ -30,4 +30,8 @@ namespace hula::oli {
 /// @throws hula::Error(Errc::ParseError) naming the member for anything else; the codecs' errors
 std::vector<Label> import_json(Edit& edit, const Json& input, std::string_view source);
 
+/// Adds a point set read from a point file (io::parse_points: text columns, airfoil files, JSON) inside
+/// a transaction, with the provenance "import:points" naming `source`; returns its label.
+Label import_points(Edit& edit, PointSet points, std::string_view source);
+
 }  // namespace hula::oli

@@ -13,9 +13,10 @@ namespace {
 // beta_bound >= 1; raising its inverse cannot overflow (it may underflow to 0,
 // which is the right limit far from the bound).
 double alpha_of(double beta_bound, double e1) noexcept { return 2.0 - detail::power(1.0 / beta_bound, e1); }
-double beta_q(double u, double alpha, double e1) noexcept {
-  if (u <= 1.0 / alpha) return std::pow(u * alpha, 1.0 / e1);
-  return std::pow(1.0 / (2.0 - u * alpha), 1.0 / e1);
+// inv_e1 = 1 / e1, computed once per call of sbx_crossover (the same double for every variable).
+double beta_q(double u, double alpha, double inv_e1) noexcept {
+  if (u <= 1.0 / alpha) return std::pow(u * alpha, inv_e1);
+  return std::pow(1.0 / (2.0 - u * alpha), inv_e1);
 }
 }  // namespace
 
@@ -23,6 +24,8 @@ void sbx_crossover(std::span<const double> parent1, std::span<const double> pare
                    std::span<const double> upper, std::span<double> child1, std::span<double> child2,
                    const SbxSettings& settings, Rng& rng) noexcept {
   const std::size_t d = parent1.size();
+  const double e1 = settings.eta + 1.0;
+  const double inv_e1 = 1.0 / e1;
   for (std::size_t i = 0; i < d; ++i) {
     const double p1 = parent1[i];
     const double p2 = parent2[i];
@@ -37,15 +40,14 @@ void sbx_crossover(std::span<const double> parent1, std::span<const double> pare
     const double yu = upper[i];
     const double dy = y2 - y1;
     const double u = rng.uniform();
-    const double e1 = settings.eta + 1.0;
     // Step 1: child towards the lower bound, spread limited by y1 - yl.
     const double alpha1 = alpha_of(1.0 + 2.0 * (y1 - yl) / dy, e1);
-    const double bq1 = beta_q(u, alpha1, e1);
+    const double bq1 = beta_q(u, alpha1, inv_e1);
     // Step 2: child towards the upper bound, spread limited by yu - y2. Far
     // from both bounds the two truncations agree (alpha = 2 to the last
     // bit), and the costly root is shared.
     const double alpha2 = alpha_of(1.0 + 2.0 * (yu - y2) / dy, e1);
-    const double bq2 = alpha2 == alpha1 ? bq1 : beta_q(u, alpha2, e1);
+    const double bq2 = alpha2 == alpha1 ? bq1 : beta_q(u, alpha2, inv_e1);
     double c1 = 0.5 * ((y1 + y2) - bq1 * dy);
     double c2 = 0.5 * ((y1 + y2) + bq2 * dy);
     c1 = std::clamp(c1, yl, yu);

@@ -287,11 +287,15 @@ GaResult solve_binary_ga(const Problem& problem, const BinaryGaOptions& options)
       // Elitism: the best parents replace the worst children.
       std::iota(parent_order.begin(), parent_order.end(), std::size_t{0});
       std::iota(child_order.begin(), child_order.end(), std::size_t{0});
-      std::partial_sort(parent_order.begin(), parent_order.begin() + static_cast<std::ptrdiff_t>(options.elites),
-                        parent_order.end(), ranking(pop));
-      std::sort(child_order.begin(), child_order.end(), ranking(next));
+      const auto elites = static_cast<std::ptrdiff_t>(options.elites);
+      std::partial_sort(parent_order.begin(), parent_order.begin() + elites, parent_order.end(), ranking(pop));
+      // The `elites` worst children, worst first (ranking is a strict total order, so this is the tail of
+      // the fully sorted order reversed, without sorting the rest).
+      const auto rank_next = ranking(next);
+      std::partial_sort(child_order.begin(), child_order.begin() + elites, child_order.end(),
+                        [&rank_next](std::size_t a, std::size_t b) { return rank_next(b, a); });
       for (std::size_t q = 0; q < options.elites; ++q) {
-        next.copy_row_from(pop, parent_order[q], child_order[n - 1 - q]);
+        next.copy_row_from(pop, parent_order[q], child_order[q]);
       }
     }
     std::swap(pop, next);

@@ -76,11 +76,13 @@ Nsga2Result solve_nsga2(const Problem& problem, const Nsga2Options& options) {
   const double pm = options.mutation_probability.value_or(1.0 / static_cast<double>(binary ? length : d));
   const SbxSettings sbx{.eta = options.crossover_eta, .variable_probability = options.crossover_variable_probability};
 
+  // Rows [0, n) hold the parents, [n, 2n) the offspring. Survivors are copied into `next`, which then
+  // becomes the population (a swap, not a second copy back).
   Population pop;
   Population next;
   pop.allocate(2 * n, d, problem.values_per_point(), m, length);
-  next.allocate(n, d, problem.values_per_point(), m, length);
-  std::vector<double> rank(2 * n, 0.0), crowd(2 * n, 0.0), rank_next(n), crowd_next(n);
+  next.allocate(2 * n, d, problem.values_per_point(), m, length);
+  std::vector<double> rank(2 * n, 0.0), crowd(2 * n, 0.0), rank_next(2 * n, 0.0), crowd_next(2 * n, 0.0);
   std::vector<std::size_t> order(2 * n), scratch(2 * n), count(2 * n + 2), chosen(n);
   NonDominatedSorter sorter;
   detail::Evaluator evaluator(problem, run);
@@ -209,11 +211,9 @@ Nsga2Result solve_nsga2(const Problem& problem, const Nsga2Options& options) {
       rank_next[i] = rank[chosen[i]];
       crowd_next[i] = crowd[chosen[i]];
     }
-    for (std::size_t i = 0; i < n; ++i) {
-      pop.copy_row_from(next, i, i);
-      rank[i] = rank_next[i];
-      crowd[i] = crowd_next[i];
-    }
+    std::swap(pop, next);
+    std::swap(rank, rank_next);
+    std::swap(crowd, crowd_next);
     const auto ranks_before = [&](std::size_t a, std::size_t b) {
       if (rank[a] != rank[b]) return rank[a] < rank[b];
       return crowd[a] > crowd[b];

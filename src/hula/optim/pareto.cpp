@@ -21,6 +21,19 @@ bool pareto_dominates(const double* a, const double* b, std::size_t m) noexcept 
   return strictly;
 }
 
+// True when the k points at idx, sorted by f0 (ties by index), are mutually non-dominated in two
+// objectives: f1 strictly decreases from one point to the next unless the two are equal in both (then
+// nothing dominates either). NaN anywhere fails the test.
+bool mutually_non_dominated_2d(const double* f, const std::size_t* idx, std::size_t k) noexcept {
+  for (std::size_t q = 1; q < k; ++q) {
+    const double* a = f + idx[q - 1] * 2;
+    const double* b = f + idx[q] * 2;
+    const bool equal = b[0] == a[0] && b[1] == a[1];
+    if (!(equal || (b[0] > a[0] && b[1] < a[1]))) return false;
+  }
+  return true;
+}
+
 // Exact 2-D hypervolume of points already filtered to dominate the reference.
 double hv2d(std::vector<double>& pts, std::size_t n, std::size_t stride, const double* ref) {
   std::vector<std::size_t> idx(n);
@@ -221,10 +234,26 @@ void crowding_distance(std::span<const double> objectives, std::size_t m, std::s
   }
   std::copy(front.begin(), front.end(), scratch.begin());
   const double* f = objectives.data();
+  const auto first = scratch.begin();
+  const auto last = scratch.begin() + static_cast<std::ptrdiff_t>(k);
   for (std::size_t j = 0; j < m; ++j) {
-    std::sort(scratch.begin(), scratch.begin() + static_cast<std::ptrdiff_t>(k), [&](std::size_t a, std::size_t b) {
+    const auto by_objective = [&](std::size_t a, std::size_t b) {
       return f[a * m + j] < f[b * m + j] || (f[a * m + j] == f[b * m + j] && a < b);
-    });
+    };
+    if (m == 2 && j == 1 && mutually_non_dominated_2d(f, scratch.data(), k)) {
+      // Sorted by f1 (ties by index), a 2-D non-dominated set is its f0 order reversed, except that runs
+      // of equal points (equal in both objectives) keep their index order: the same permutation the sort
+      // below gives, without sorting (issue 27: NSGA-II's own cost per generation).
+      std::reverse(first, last);
+      for (auto run = first; run != last;) {
+        auto end = run + 1;
+        while (end != last && f[*end * 2] == f[*run * 2] && f[*end * 2 + 1] == f[*run * 2 + 1]) ++end;
+        std::reverse(run, end);
+        run = end;
+      }
+    } else {
+      std::sort(first, last, by_objective);
+    }
     distance[scratch[0]] = kInf;
     distance[scratch[k - 1]] = kInf;
     const double range = f[scratch[k - 1] * m + j] - f[scratch[0] * m + j];

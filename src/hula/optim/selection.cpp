@@ -6,15 +6,22 @@
 
 namespace hula::optim {
 
-bool chance(Rng& rng, double probability, unsigned level) noexcept {
-  if (probability >= 1.0) return true;
-  if (probability <= 0.0) return false;
-  if (level == 0) return rng.uniform() < probability;
-  std::uint64_t scale = 1;
-  for (unsigned i = 0; i < level; ++i) scale *= 10;
-  const auto threshold = static_cast<std::uint64_t>(std::llround(probability * static_cast<double>(scale)));
-  return rng.below(scale) < threshold;
+ChanceThreshold::ChanceThreshold(double probability, unsigned level) noexcept : probability_(probability) {
+  if (probability >= 1.0) {
+    always_ = true;
+    return;
+  }
+  if (probability <= 0.0) {
+    never_ = true;
+    return;
+  }
+  if (level == 0) return;
+  scale_ = 1;
+  for (unsigned i = 0; i < level; ++i) scale_ *= 10;
+  threshold_ = static_cast<std::uint64_t>(std::llround(probability * static_cast<double>(scale_)));
 }
+
+bool chance(Rng& rng, double probability, unsigned level) noexcept { return ChanceThreshold(probability, level)(rng); }
 
 void RouletteWheel::reset(std::span<const double> fitness) {
   cumulative_.resize(fitness.size());

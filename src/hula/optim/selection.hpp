@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -22,6 +23,25 @@ namespace hula::optim {
 /// @param level 0..9.
 /// @returns true when the event happens.
 [[nodiscard]] bool chance(Rng& rng, double probability, unsigned level) noexcept;
+
+/// chance() with its threshold worked out once, for many draws of one probability and level:
+/// `ChanceThreshold t(p, level); t(rng)` draws exactly as `chance(rng, p, level)`.
+class ChanceThreshold {
+ public:
+  ChanceThreshold(double probability, unsigned level) noexcept;
+  /// One draw (none at all for probability >= 1 or <= 0, as chance()).
+  [[nodiscard]] bool operator()(Rng& rng) const noexcept {
+    if (always_ || never_) return always_;
+    if (scale_ == 0) return rng.uniform() < probability_;
+    return rng.below(scale_) < threshold_;
+  }
+
+ private:
+  double probability_;
+  bool always_ = false, never_ = false;
+  std::uint64_t scale_ = 0;  // 10^level, 0 for level 0 (full resolution)
+  std::uint64_t threshold_ = 0;
+};
 
 /// Roulette wheel over non-negative fitness values (thesis 2.3 "Roulette
 /// wheel selection"). Reuse one wheel per run: reset() does not allocate once

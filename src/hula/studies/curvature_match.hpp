@@ -27,6 +27,7 @@
 #include "hula/nurbs/nurbs_curve.hpp"
 #include "hula/optim/problem.hpp"
 #include "hula/studies/profile.hpp"
+#include "hula/studies/validity.hpp"
 
 namespace hula::studies {
 
@@ -36,8 +37,9 @@ class SplineProfileSampler {
  public:
   /// Reused buffers of one thread; sized on first use, never shrunk.
   struct Workspace {
-    std::vector<double> t, h, diag, upper, rhs, moments, span_length;
+    std::vector<double> t, h, diag, upper, rhs, moments, span_length, slopes;
     std::vector<double> coefficients;  // per span and coordinate: b, c, d
+    std::vector<unsigned> span_of;     // the span of each sample
     // sample_jacobian: the factorisation of the moment system and one column's tangents.
     std::vector<double> pivot, factor_upper, dt, dh, dslope, drhs, dmoments;
   };
@@ -140,7 +142,12 @@ struct CurvatureMatchSetup {
   std::size_t samples = 200;
   /// Where the samples are: at the parameter (thesis, default) or at the normalised arc length.
   ProfileAbscissa abscissa = ProfileAbscissa::Parameter;
+  /// What a valid design must satisfy (no self-intersection, no cusp, monotone curvature). Default: nothing.
+  /// When something is required the Flexo problems carry it as inequality constraints (validity_constraints)
+  /// and the studies refuse an invalid result with the reasons.
+  ValidityRequirements validity{};
 
+  /// @throws hula::Error as ValidityRequirements::validate
   /// @throws hula::Error(Errc::TooFewPoints) if fewer than 2 points
   /// @throws hula::Error(Errc::InvalidArgument) naming `proximity[i]` if negative or the count differs from the
   ///   points', and `proximity_centre` if its count differs; naming `lower[i]`/`upper[i]` (and the coordinate) for a
@@ -212,6 +219,12 @@ class CurvatureMatch {
                                               std::span<double> tau) const;
   /// All distances of x (allocates; for reports).
   [[nodiscard]] MatchDistances distances(std::span<const double> x) const;
+  /// The validity of the spline through the data points of x against setup().validity (allocates; an empty
+  /// check when nothing is required; a degenerate spline is invalid with that reason).
+  [[nodiscard]] ValidityCheck validity(std::span<const double> x) const;
+  /// Writes setup().validity.count() constraint values g ≤ 0 for the spline through `points` (NaN when the
+  /// spline cannot be built); nothing when nothing is required. Allocates.
+  void validity_constraints(std::span<const Vec3> points, std::span<double> out) const;
   /// κ(u_i) of x (allocates; for reports and figures).
   [[nodiscard]] std::vector<double> curvature_samples(std::span<const double> x) const;
   /// Σ_i w_i |p_i − p_i⁰|² of CurvatureMatchSetup::proximity for the points `points` (0 without weights), p⁰ the
@@ -219,8 +232,9 @@ class CurvatureMatch {
   [[nodiscard]] double proximity_penalty(std::span<const Vec3> points) const;
   /// The design variables of the proximity centre (CurvatureMatchSetup::proximity_centre, else the start).
   [[nodiscard]] std::vector<double> proximity_variables() const;
-  /// The single-objective Flexo problem "mean curvature distance" (+ the proximity penalty); evaluation uses one
-  /// workspace per thread and refers to this object, which must outlive the problem.
+  /// The single-objective Flexo problem "mean curvature distance" (+ the proximity penalty), with the validity
+  /// requirements as inequality constraints; evaluation uses one workspace per thread (and allocates only for
+  /// the validity checks) and refers to this object, which must outlive the problem.
   /// @param precision as variables()
   [[nodiscard]] optim::Problem problem(double precision = 0.0) const;
 

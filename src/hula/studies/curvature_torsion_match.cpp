@@ -49,7 +49,9 @@ optim::Problem curvature_torsion_problem(const CurvatureMatch& match) {
     const MatchDistances d = match.mean_distances(x, ws, points, kappa, tau);
     values[0] = d.mean + match.proximity_penalty(points);
     values[1] = d.torsion_mean;
+    match.validity_constraints(points, values.subspan(2));
   };
+  p.inequality_constraints = match.setup().validity.count();
   return p;
 }
 
@@ -96,6 +98,7 @@ TorsionMatchResult run_once(const CurvatureMatch& match, const TorsionMatchSetti
   options.run.stop.generations = settings.generations;
   options.run.stop.wall_time_seconds = settings.wall_time_seconds;
   options.run.stop.cancel = settings.cancel;
+  match.setup().validity.apply(options.run);
   options.run.on_generation = [&](const optim::GenerationLog& g) {
     double bk = std::numeric_limits<double>::infinity(), bt = bk;
     for (std::size_t i = 0; i < g.failed.size(); ++i) {
@@ -112,6 +115,15 @@ TorsionMatchResult run_once(const CurvatureMatch& match, const TorsionMatchSetti
   result.report = run.report;
   for (const optim::Solution& s : run.front)
     result.front.push_back({s.variables, s.objectives[0], s.objectives[1], false});
+  // Members that break the validity requirements are refused with their reasons (constrained domination keeps
+  // them out of the front whenever a valid design was seen).
+  const auto refuse_invalid = [&] {
+    for (TorsionFrontMember& m : result.front) m.invalid = match.validity(m.variables).reasons;
+    for (TorsionFrontMember& m : result.front)
+      if (!m.invalid.empty()) result.refused.push_back(m);
+    std::erase_if(result.front, [](const TorsionFrontMember& m) { return !m.invalid.empty(); });
+  };
+  refuse_invalid();
   std::sort(result.front.begin(), result.front.end(),
             [](const auto& a, const auto& b) { return a.curvature < b.curvature; });
   result.nsga2_front = result.front;
@@ -140,16 +152,21 @@ TorsionMatchResult run_once(const CurvatureMatch& match, const TorsionMatchSetti
     result.lm = refine_levenberg_marquardt(ls, best->variables, settings.lm);
     const MatchDistances d = match.mean_distances(result.lm->variables, ws, points, kappa, tau);
     if (std::isfinite(d.mean) && std::isfinite(d.torsion_mean)) {
-      TorsionFrontMember polished{result.lm->variables, d.mean, d.torsion_mean, true};
-      // Keep the set non-dominated: drop members the polished curve dominates.
-      std::erase_if(result.front, [&](const TorsionFrontMember& m) {
-        return polished.curvature <= m.curvature && polished.torsion <= m.torsion &&
-               (polished.curvature < m.curvature || polished.torsion < m.torsion);
-      });
+      TorsionFrontMember polished{result.lm->variables, d.mean, d.torsion_mean, true, {}};
+      polished.invalid = match.validity(polished.variables).reasons;
+      // Keep the set non-dominated: drop members the (valid) polished curve dominates.
+      if (polished.invalid.empty())
+        std::erase_if(result.front, [&](const TorsionFrontMember& m) {
+          return polished.curvature <= m.curvature && polished.torsion <= m.torsion &&
+                 (polished.curvature < m.curvature || polished.torsion < m.torsion);
+        });
       const bool dominated = std::any_of(result.front.begin(), result.front.end(), [&](const auto& m) {
         return m.curvature <= polished.curvature && m.torsion <= polished.torsion;
       });
-      if (!dominated) result.front.push_back(std::move(polished));
+      if (!polished.invalid.empty())
+        result.refused.push_back(std::move(polished));
+      else if (!dominated)
+        result.front.push_back(std::move(polished));
     }
   }
   std::sort(result.front.begin(), result.front.end(),

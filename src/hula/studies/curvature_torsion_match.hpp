@@ -77,6 +77,8 @@ struct TorsionFrontMember {
   double torsion = 0.0;
   /// True for the member added by the polish.
   bool polished = false;
+  /// Why the curve is not a valid design (CurvatureMatchSetup::validity); empty for a valid one.
+  std::vector<std::string> invalid{};
 };
 
 /// Outcome of run_curvature_torsion_match.
@@ -86,8 +88,11 @@ struct TorsionMatchResult {
   std::vector<TorsionFrontMember> front{};
   /// NSGA-II's own first front before the polish, sorted by increasing curvature error.
   std::vector<TorsionFrontMember> nsga2_front{};
-  /// Index in `front` of the best compromise (smallest max(curvature, torsion)).
+  /// Index in `front` of the best compromise (smallest max(curvature, torsion)); `front` is empty when every
+  /// candidate broke the validity requirements.
   std::size_t compromise = 0;
+  /// Pareto members refused as invalid designs (with TorsionFrontMember::invalid), the polished one included.
+  std::vector<TorsionFrontMember> refused{};
   /// Errors of the start curve.
   double start_curvature = 0.0;
   double start_torsion = 0.0;

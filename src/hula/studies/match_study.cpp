@@ -51,6 +51,7 @@ optim::GaResult run_ga(const CurvatureMatch& match, const MatchStudy& study, Mat
   run.stop.wall_time_seconds = study.header.wall_time_seconds;
   run.stop.cancel = study.header.cancel;
   if (g.seed_start) run.initial = {match.start_variables()};
+  match.setup().validity.apply(run);
   double best = std::numeric_limits<double>::infinity();
   run.on_generation = [&](const optim::GenerationLog& log) {
     for (std::size_t i = 0; i < log.size(); ++i) {
@@ -357,6 +358,8 @@ MatchResult run_once(const CurvatureMatch& match, const MatchStudy& study, bool 
     }
     result.ga_best = result.best = result.start;
     result.after_ga = result.after = result.before;
+    if (s.validity.any() && result.direct->nurbs)
+      result.validity = check_validity(result.direct->nurbs->curve, s.validity);
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return result;
   }
@@ -367,8 +370,13 @@ MatchResult run_once(const CurvatureMatch& match, const MatchStudy& study, bool 
     result.distinct = optim::distinct_best(result.log, match.variables(), study.ga.distinct, study.ga.distinct_radius);
     if (!keep_log) result.log = {};
   }
-  // The GA keeps the best it saw; the start itself is a candidate the designer already has.
-  if (!(mean_of(result.ga_best, match) <= result.before.mean)) result.ga_best = result.start;
+  // The GA keeps the best it saw; the start itself is a candidate the designer already has. With validity
+  // requirements a valid candidate beats an invalid one whatever their distances.
+  const bool checked = match.setup().validity.any();
+  const auto valid = [&](const std::vector<double>& x) { return !checked || match.validity(x).valid(); };
+  const bool ga_valid = valid(result.ga_best);
+  if (ga_valid == valid(result.start) ? !(mean_of(result.ga_best, match) <= result.before.mean) : !ga_valid)
+    result.ga_best = result.start;
   result.after_ga = match.distances(result.ga_best);
   result.best = result.ga_best;
   switch (study.method) {
@@ -415,10 +423,13 @@ MatchResult run_once(const CurvatureMatch& match, const MatchStudy& study, bool 
     }
       // LM minimises the sum of squares; where no exact solution exists that can raise the mean |r| of eq. 31
       // slightly, and the study reports the better of the two by eq. 31.
-      if (mean_of(result.lm->variables, match) <= result.after_ga.mean) result.best = result.lm->variables;
+      if (mean_of(result.lm->variables, match) <= result.after_ga.mean &&
+          (valid(result.lm->variables) || !valid(result.ga_best)))
+        result.best = result.lm->variables;
       break;
   }
   result.after = match.distances(result.best);
+  if (checked) result.validity = match.validity(result.best);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return result;
 }
@@ -559,6 +570,7 @@ MatchResult run_curvature_match(const CurvatureMatch& match, const MatchStudy& s
 }
 
 std::optional<nurbs::NurbsCurve> match_result_curve(const CurvatureMatch& match, const MatchResult& result) {
+  if (result.validity && !result.validity->valid()) return std::nullopt;
   if (result.direct) {
     if (!result.direct->nurbs) return std::nullopt;
     return result.direct->nurbs->curve;

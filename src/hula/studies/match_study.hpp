@@ -222,6 +222,9 @@ struct MatchResult {
   std::vector<RecentreRound> rounds{};
   /// The fitness map (MatchStudy::map) of the GA's objective (mean distance + proximity penalty) around `best`.
   std::optional<optim::SweepResult> map{};
+  /// The validity of `best` (the direct route: of its curve) when the setup requires something
+  /// (CurvatureMatchSetup::validity); an invalid one is refused by the study's report with these reasons.
+  std::optional<ValidityCheck> validity{};
   /// Total wall time in seconds.
   double seconds = 0.0;
 };
@@ -232,11 +235,15 @@ struct MatchResult {
 /// @param keep_log collect every individual into MatchResult::log (every round's)
 /// @throws hula::Error(Errc::InvalidOption) for invalid GA, LM or map settings (before any evaluation)
 /// @throws hula::Error(Errc::NumericalFailure) if no candidate could be evaluated
+/// @note with validity requirements the GA prefers valid designs (CurvatureMatchSetup::validity), the start
+///   replaces the GA's best and the refinement replaces it only when that keeps or gains validity, and
+///   `validity` reports the result's; the report refuses an invalid result.
 [[nodiscard]] MatchResult run_curvature_match(const CurvatureMatch& match, const MatchStudy& study,
                                               bool keep_log = false);
 
 /// The curve a run found, as a value: the direct method's NURBS fit (none when it made no fit), or the
-/// spline through the best data points (MatchResult::best) for the GA and hybrid methods.
+/// spline through the best data points (MatchResult::best) for the GA and hybrid methods; none when the
+/// result is refused as a design (MatchResult::validity not valid).
 [[nodiscard]] std::optional<nurbs::NurbsCurve> match_result_curve(const CurvatureMatch& match,
                                                                   const MatchResult& result);
 

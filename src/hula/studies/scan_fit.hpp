@@ -1,38 +1,28 @@
 // SPDX-License-Identifier: MIT
 // Scanned points to a class-A curve (thesis chapter 3, 3.4–3.6: digitised
 // points with noise and strays, a curve within the A-class 0.3 mm or B-class
-// 0.5 mm tolerance with a clean curvature profile). Four stages:
+// 0.5 mm tolerance with a clean curvature profile), and precise design points
+// (an airfoil's coordinates) to a compact fair curve. Three stages:
 //
-//  1. order: the points are ordered along the curve (order_along_curve, an MST
-//     skeleton) unless the caller says they already are;
-//  2. robust fit: a B-spline with uniform knots is fitted by iteratively
-//     reweighted least squares (Huber weights for three rounds, then Tukey's
-//     biweight), the foot parameters of every point being corrected by Newton
-//     projection each round (Hoschek's parameter correction). The scale is
-//     σ̂ = 1.4826 · median distance (MAD of the normal distances) and the biweight
-//     vanishes beyond c = max(4.685 σ̂, tolerance). A point farther than the
-//     tolerance from the converged robust fit is a stray (no curve within the
-//     class band may keep it);
-//  3. tolerance fit: the fewest control points (uniform knots) whose fit keeps
-//     every kept point within the tolerance, measured at corrected feet: each
-//     candidate is fitted with parameter correction — a least-squares solve,
-//     Newton projection of the feet, then tangent-distance solves (Wang, Pottmann
-//     and Liu's TDM, the Gauss–Newton step of the foot-point distance) each with
-//     its projection — so a count passes only if the curve itself is within the
-//     tolerance. At the highest degree the count grows by half from p + 1, then
-//     bisection; lower degrees down to min_degree are then tried below the count
-//     found (a single Bézier piece of degree q needs only q + 1 control points),
-//     the higher degree kept among equal counts. A stray that this fit passes
-//     within the tolerance (global closest point) is re-admitted and the stage
-//     repeated (at most 3 times);
-//  4. fairing: on the same knots, the fit minimises Σ|C(tᵢ) − Qᵢ|² + λ ∫|C'''(t)|² dt
-//     with the largest λ (bisection on log λ) that still keeps every kept point within
-//     the tolerance. For a curve parameterised near arc length, |C'''|² = κ'² + κ⁴
-//     (planar), so the penalty is ∫κ'² ds up to the κ⁴ term, small for gentle curves.
+//  1. order (studies::order_points): the file order when the caller says so or
+//     when it is consistent (each point beside the next, short detours of strays
+//     aside), else an MST skeleton; starting parameters by chord length or by
+//     projection on the skeleton; closed curves detected (ends together, no
+//     corner where they meet);
+//  2. noise: σ̂ from local quadratic residuals along the order
+//     (studies::estimate_noise), never assumed: exact data give σ̂ ≈ 0 and no
+//     design point is ever a stray for being far from a coarse curve;
+//  3. the tolerance fit of studies::fit_within_tolerance with outlier rejection:
+//     knots split where points lie beyond the tolerance and the neighbours lean
+//     the same way (the curve is short of a feature), spikes left out as strays,
+//     parameter correction, degree choice, knot removal, then fairing within the
+//     tolerance that moves the curve by at most max(2.5 σ̂, 0.05 × tolerance) (the
+//     fairing may not trade the fit to the data for smoothness beyond the noise).
+//     When the faired curve's ∫κ'² ds is not lower than the fit's, the fit is kept.
 //
-// The nurbs::approximate family is not reused for stages 2–4 because it fixes the
-// end points to the first and last data point: with noisy data and strays the
-// ends must be fitted too.
+// A stray is a point farther than the tolerance from the final curve: it cannot
+// be kept. No run of points at an end is dropped: a fit that falls short of an end
+// stretches its parameters along the end tangent.
 #pragma once
 
 #include <cstddef>
@@ -60,12 +50,11 @@ struct ScanFitOptions {
   /// degree (as Open CASCADE's approximation tries degree after degree). Default 3; valid
   /// [3, degree]; min_degree = degree fixes the degree.
   int min_degree = 3;
-  /// The points are already in order along the curve (skip stage 1; keys = index / (n − 1)). Default false.
+  /// The points are already in order along the curve: take the file order without testing it (it is
+  /// taken anyway when found consistent). Default false.
   bool ordered = false;
   /// Ordering options (stage 1). Default {}.
   PointOrderOptions order{};
-  /// Control points of the robust stage 2 fit: 0 (default) chooses clamp(n / 10, p + 1, 40).
-  std::size_t robust_control_points = 0;
   /// Largest number of control points stage 3 may use. Default 200; valid ≥ p + 1.
   std::size_t max_control_points = 200;
   /// Run stage 4 (fairing). Default true.
@@ -100,10 +89,15 @@ struct ScanFitResult {
   std::vector<double> parameters;
   /// Per input point: distance to `faired` (closest point), model units.
   std::vector<double> deviations;
-  /// Robust noise scale σ̂ = 1.4826 · median distance at the end of stage 2.
+  /// Noise scale σ̂ of stage 2 (local quadratic residuals), model units.
   double noise_scale = 0.0;
-  /// Scale c = max(4.685 σ̂, tolerance) beyond which the biweight is 0 (strays: distance > tolerance).
+  /// Distance beyond which a point is judged (a stray, or a feature to refine): the tolerance. Kept
+  /// under its former name (the robust stage's biweight scale, max(4.685 σ̂, tolerance)).
   double biweight_scale = 0.0;
+  /// Where the order came from, and whether the curve closes on itself (then `fit` and `faired` are
+  /// periodic splines in clamped form, their ends equal).
+  OrderSource ordering = OrderSource::SpanningTree;
+  bool closed = false;
   /// Fairing weight λ (relative: λ · trace(BᵀB) / trace(G) is what was added to BᵀB); 0 without fairing.
   double smoothing = 0.0;
   /// Least-squares solves run in all stages.
@@ -115,12 +109,13 @@ struct ScanFitResult {
 /// Fits a smooth B-spline to a scanned cloud within a tolerance (see the file comment).
 /// @param points n ≥ 10 finite points, model units (z = 0 for planar clouds: the curves are then 2-D)
 /// @returns the fits, the strays by index, and the figures before and after fairing
-/// @throws hula::Error(Errc::TooFewPoints) if n < 10 or fewer than p + 1 points are kept
+/// @throws hula::Error(Errc::TooFewPoints) if n < 10
 /// @throws hula::Error(Errc::NonFiniteInput) naming the first non-finite point
 /// @throws hula::Error(Errc::CoincidentPoints) if all points coincide
-/// @throws hula::Error(Errc::NumericalFailure) if no count up to max_control_points meets the tolerance
+/// @throws hula::Error(Errc::NumericalFailure) if no fit up to max_control_points meets the tolerance,
+///   naming the best deviation reached and where
 /// @throws hula::Error(Errc::InvalidOption) from options.validate()
-/// Complexity O(n k log n) for the ordering plus O(n p²) per least-squares solve (about 35–55 solves).
+/// Complexity O(n k log n) for the ordering plus O(n p²) per least-squares solve.
 /// Example: `fit_scan(cloud, {}).faired` is the A-class curve; `.strays` the rejected indices.
 [[nodiscard]] ScanFitResult fit_scan(std::span<const Vec3> points, const ScanFitOptions& options = {});
 

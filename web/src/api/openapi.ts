@@ -79,6 +79,47 @@ export type ReconstructResponse = {
   };
 };
 
+export type IntersectRequest = {
+  a: CurveFile;
+  b?: CurveFile;
+  tolerance?: number;
+};
+
+export type IntersectionResult = {
+  tolerance: number;
+  points: {
+    s: number;
+    t: number;
+    point: number[];
+    distance: number;
+    angle: number;
+    kind: "crossing" | "tangent";
+  }[];
+  overlaps: {
+    s: number[];
+    t: number[];
+    start: number[];
+    end: number[];
+  }[];
+  stand_in_deviation?: number;
+};
+
+export type DistanceRequest = {
+  a: CurveFile;
+  b: CurveFile;
+  tolerance?: number;
+};
+
+export type DistanceResult = {
+  distance: number;
+  s: number;
+  t: number;
+  point_a: number[];
+  point_b: number[];
+  lower_bound: number;
+  stand_in_deviation?: number;
+};
+
 export type CurveFile = {
   format?: string;
   kind: string;
@@ -335,6 +376,7 @@ export type Analysis = {
       value: number | null;
       t: number | null;
     };
+    self_intersections: IntersectionResult;
   };
   revision?: number;
 };
@@ -369,6 +411,8 @@ export type ImportResult = {
   labels: number[];
   revision: number;
   changes: ChangeSet;
+  skipped?: number;
+  warnings?: string[];
 };
 
 export type SplitRequest = {

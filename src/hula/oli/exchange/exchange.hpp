@@ -19,10 +19,13 @@
 // FILE_DESCRIPTION and the model's uncertainty, IGES's global-section
 // resolution (field 19) and its start section.
 //
-// Import reads the edges of every transferred shape whose geometry is a
-// B-spline, Bézier, line, circle, ellipse, parabola or hyperbola, bounded by
-// the edge, as NURBS (conics exactly, as rational quadratics), with the name
-// the file gives the curve entity.
+// Import reads the edges of every shape Open CASCADE's reader transfers (its
+// roots: STEP shapes and curve sets, IGES independent curves and surfaces)
+// whose geometry is a B-spline, Bézier, line, circle, ellipse, parabola or
+// hyperbola, bounded by the edge, as NURBS (conics exactly, as rational
+// quadratics), with the name the file gives the curve entity. What the reader
+// could not read besides (presentation entities, unresolved references) is
+// reported as warnings, not refused.
 #pragma once
 
 #include <cstddef>
@@ -104,8 +107,12 @@ struct ImportedCurve {
 
 /// What an import read.
 struct ImportReport {
-  std::vector<ImportedCurve> curves;  ///< in the file's order
+  std::vector<ImportedCurve> curves;  ///< one per distinct edge Open CASCADE's reader transferred
   std::size_t skipped = 0;            ///< edges of other geometry (offset curves, …), not imported
+  /// What the reader could not read while the geometry came in: presentation and schema problems
+  /// ("entity #5: Parameter n0.2 (curve_font) not an Entity", colours, unresolved references,
+  /// unknown entities), one line each, at most 20 then a count. Never a refusal.
+  std::vector<std::string> warnings;
 };
 
 /// The helper used when ExchangeOptions::helper is empty: $HULA_EXCHANGE_HELPER if set, else

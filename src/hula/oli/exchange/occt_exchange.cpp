@@ -8,7 +8,10 @@
 // the resolution (global field 19) set to the maximum deviation.
 // Reading: the file's header is checked first (so a file that is not STEP or
 // IGES at all is refused before OCCT parses it), then every root is
-// transferred and each distinct edge's 3-D curve becomes a NURBS.
+// transferred and each distinct edge's 3-D curve becomes a NURBS; the
+// failures OCCT's reader records (presentation entities it cannot read,
+// unresolved references) become the report's warnings, never a refusal of the
+// geometry it did transfer.
 #include "hula/oli/exchange/occt_exchange.hpp"
 
 #include <unistd.h>
@@ -31,6 +34,7 @@
 #include <IGESControl_Reader.hxx>
 #include <IGESControl_Writer.hxx>
 #include <IGESData_GlobalSection.hxx>
+#include <IGESData_IGESEntity.hxx>
 #include <IGESData_IGESModel.hxx>
 #include <IGESData_IGESWriter.hxx>
 #include <IGESSelect_WorkLibrary.hxx>
@@ -61,6 +65,7 @@
 #include <cstdio>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "hula/core/error.hpp"
 #include "hula/oli/kernel/occt_convert.hpp"
@@ -79,20 +84,29 @@ double rounded_up(double deviation) {
   return up >= deviation ? up : std::nextafter(up, HUGE_VAL);
 }
 
-// The first failure OCCT recorded while reading or transferring the file ("entity #12:
-// Unresolved reference"), or empty. IGES entities are named by their directory-entry line.
-std::string first_failure(const Handle(XSControl_WorkSession) & session, bool iges) {
+// Every failure OCCT recorded while reading or transferring the file, one line each ("entity #5:
+// Parameter n0.2 (curve_font) not an Entity"): at most kMaxWarnings of them, then how many more.
+// IGES entities are named by their directory-entry line.
+constexpr std::size_t kMaxWarnings = 20;
+std::vector<std::string> failures(const Handle(XSControl_WorkSession) & session, bool iges) {
+  std::vector<std::string> out;
+  std::size_t more = 0;
   const Interface_CheckIterator checks = session->ModelCheckList(Standard_True);
   for (checks.Start(); checks.More(); checks.Next()) {
     const Handle(Interface_Check)& check = checks.Value();
     if (!check->HasFailed()) continue;
+    if (out.size() == kMaxWarnings) {
+      ++more;
+      continue;
+    }
     const int n = checks.Number();
     const std::string where = n <= 0 ? std::string("the file")
                               : iges ? "DE " + std::to_string(2 * n - 1)
                                      : "entity #" + std::to_string(n);
-    return where + ": " + check->CFail(1, Standard_True);
+    out.push_back(where + ": " + check->CFail(1, Standard_True));
   }
-  return {};
+  if (more > 0) out.push_back("and " + std::to_string(more) + " more entities with failures");
+  return out;
 }
 
 std::string deviation_note(double max_deviation) {
@@ -269,12 +283,13 @@ ImportReport read_step(const fs::path& path) {
   STEPControl_Reader reader;
   if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) not_readable(path, "the STEP reader refuses the file");
   reader.TransferRoots();
-  // Checked after the transfer: OCCT records unresolved references and wrong entity types as
-  // failures and carries on with what it could read; a file with failures is refused whole.
-  if (const auto failure = first_failure(reader.WS(), false); !failure.empty()) not_readable(path, failure);
+  // OCCT records presentation and schema problems (a curve font or colour it cannot read, an
+  // unresolved reference, an entity of the wrong type) as failures and carries on with what it
+  // could read: every edge it transferred is imported, and the failures become warnings.
   const Handle(XSControl_TransferReader) transfer = reader.WS()->TransferReader();
   const Handle(StepData_StepModel) model = reader.StepModel();
   ImportReport report;
+  report.warnings = failures(reader.WS(), false);
   TopTools_IndexedMapOfShape edges;
   for (int i = 1; i <= reader.NbShapes(); ++i) TopExp::MapShapes(reader.Shape(i), TopAbs_EDGE, edges);
   for (int i = 1; i <= edges.Extent(); ++i) {
@@ -296,41 +311,40 @@ ImportReport read_step(const fs::path& path) {
   return report;
 }
 
+// The IGES entity an edge was transferred from (mode -1: the whole transfer process), or null.
+Handle(IGESData_IGESEntity) iges_entity(const Handle(XSControl_TransferReader) & transfer, const TopoDS_Edge& edge) {
+  return Handle(IGESData_IGESEntity)::DownCast(transfer->EntityFromShapeResult(edge, -1));
+}
+
 ImportReport read_iges(const fs::path& path) {
   IGESControl_Controller::Init();
   // Keep each B-spline whole: by default the reader splits curves at C0 knots into several edges.
   Interface_Static::SetIVal("read.iges.bspline.continuity", 0);
   IGESControl_Reader reader;
   if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) not_readable(path, "the IGES reader refuses the file");
-  if (const auto failure = first_failure(reader.WS(), true); !failure.empty()) not_readable(path, failure);
+  // The roots as OCCT's reader transfers them (the independent curves and surfaces; members of a
+  // composite curve and boundaries belong to their root), one curve per distinct edge, as for STEP.
+  reader.TransferRoots();
   const Handle(IGESData_IGESModel) model = reader.IGESModel();
+  const Handle(XSControl_TransferReader) transfer = reader.WS()->TransferReader();
   ImportReport report;
-  // Curve entities one by one, so each keeps its name and directory entry; physically dependent
-  // ones (subordinate status 1: members of a composite curve, boundaries) belong to another entity.
-  for (int i = 1; i <= model->NbEntities(); ++i) {
-    const Handle(IGESData_IGESEntity) entity = model->Entity(i);
-    const int type = entity->TypeNumber();
-    const bool curve = type == 100 || type == 104 || type == 110 || type == 126;
-    if (!curve || entity->SubordinateStatus() == 1) continue;
-    if (!reader.TransferEntity(entity)) {
+  report.warnings = failures(reader.WS(), true);
+  TopTools_IndexedMapOfShape edges;
+  for (int i = 1; i <= reader.NbShapes(); ++i) TopExp::MapShapes(reader.Shape(i), TopAbs_EDGE, edges);
+  for (int e = 1; e <= edges.Extent(); ++e) {
+    const TopoDS_Edge& edge = TopoDS::Edge(edges(e));
+    double first = 0.0, last = 0.0;
+    const Handle(Geom_Curve) c = BRep_Tool::Curve(edge, first, last);
+    const std::string kind = c.IsNull() ? std::string() : curve_type(c);
+    if (kind.empty()) {
       ++report.skipped;
       continue;
     }
-    TopTools_IndexedMapOfShape edges;
-    TopExp::MapShapes(reader.Shape(reader.NbShapes()), TopAbs_EDGE, edges);
-    const std::string name = entity->HasName() ? std::string(entity->NameValue()->ToCString()) : std::string();
-    const std::string source = "DE " + std::to_string(2 * model->Number(entity) - 1);
-    for (int e = 1; e <= edges.Extent(); ++e) {
-      const TopoDS_Edge& edge = TopoDS::Edge(edges(e));
-      double first = 0.0, last = 0.0;
-      const Handle(Geom_Curve) c = BRep_Tool::Curve(edge, first, last);
-      const std::string kind = c.IsNull() ? std::string() : curve_type(c);
-      if (kind.empty()) {
-        ++report.skipped;
-        continue;
-      }
-      report.curves.push_back(edge_curve(edge, name, source, kind));
-    }
+    const Handle(IGESData_IGESEntity) entity = iges_entity(transfer, edge);
+    const std::string name =
+        !entity.IsNull() && entity->HasName() ? std::string(entity->NameValue()->ToCString()) : std::string();
+    const int number = entity.IsNull() ? 0 : model->Number(entity);
+    report.curves.push_back(edge_curve(edge, name, number > 0 ? "DE " + std::to_string(2 * number - 1) : "", kind));
   }
   return report;
 }
@@ -384,7 +398,8 @@ ImportReport read_exchange_file(const fs::path& path) {
   if (report.curves.empty())
     not_readable(path, "it holds no B-spline, line, circle or conic curve" +
                            (report.skipped > 0 ? " (" + std::to_string(report.skipped) + " curves of other kinds)"
-                                               : std::string()));
+                                               : std::string()) +
+                           (report.warnings.empty() ? std::string() : "; " + report.warnings.front()));
   return report;
 }
 

@@ -17,8 +17,8 @@ namespace hula::optim::detail {
     double base = x;
     while (n != 0) {
       if ((n & 1U) != 0) result *= base;
-      base *= base;
       n >>= 1U;
+      if (n != 0) base *= base;  // the last square is never used
     }
     return result;
   }

@@ -6,8 +6,9 @@
 // GET /api/documents/{name}/events: every change set of the document, by any
 // client, as Server-Sent Events ("change" events), from the subscription on.
 // POST /api/documents/{name}/import {"file"} | {"filename", "content"}: the
-// curves of a STEP, IGES or JSON file (a plain name in the workspace, or the
-// file's text in the body) as new entities, in one "import" step.
+// curves of a STEP, IGES or JSON file, or the points of a point file (.csv,
+// .txt, .dat, .xyz: io::parse_points), a plain name in the workspace or the
+// file's text in the body, as new entities, in one "import" step.
 #include "hula/server/documents.hpp"
 
 #include <stdlib.h>  // mkstemps
@@ -18,6 +19,7 @@
 
 #include "hula/io/atomic_file.hpp"
 #include "hula/io/json_read.hpp"
+#include "hula/io/points_file.hpp"
 #include "hula/oli/json_exchange.hpp"
 #include "hula/server/security.hpp"
 #ifdef HULA_WITH_OCCT
@@ -66,12 +68,18 @@ Json history_json(const std::vector<oli::HistoryEntry>& history) {
   return out;
 }
 
-// The lower-case extension of an import file name: step, stp, iges, igs or json (else 400).
+bool is_points_extension(const std::string& ext) {
+  return ext == "csv" || ext == "txt" || ext == "dat" || ext == "xyz";
+}
+
+// The lower-case extension of an import file name: step, stp, iges, igs, json or a point file's (else 400).
 std::string import_extension(const std::string& name, const char* field) {
   std::string ext = std::filesystem::path(name).extension().string();
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext != ".step" && ext != ".stp" && ext != ".iges" && ext != ".igs" && ext != ".json")
-    throw Error(Errc::InvalidArgument, "import file '" + name + "' must end in .step, .stp, .iges, .igs or .json",
+  if (ext != ".step" && ext != ".stp" && ext != ".iges" && ext != ".igs" && ext != ".json" &&
+      !is_points_extension(ext.empty() ? ext : ext.substr(1)))
+    throw Error(Errc::InvalidArgument,
+                "import file '" + name + "' must end in .step, .stp, .iges, .igs, .json, .csv, .txt, .dat or .xyz",
                 ErrorWhere{.field = field});
   return ext.substr(1);
 }
@@ -92,7 +100,7 @@ class ImportFile {
     name_ = json::get_string(json::require_member(body, json::JsonPath(), "filename"), json::root_path("filename"));
     extension_ = import_extension(name_, "filename");
     content_ = json::get_string(json::require_member(body, json::JsonPath(), "content"), json::root_path("content"));
-    if (extension_ == "json") return;
+    if (extension_ == "json" || is_points_extension(extension_)) return;
     std::string pattern = (std::filesystem::temp_directory_path() / "hula-import-XXXXXX.").string() + extension_;
     const int fd = mkstemps(pattern.data(), static_cast<int>(extension_.size() + 1));
     if (fd < 0)
@@ -115,6 +123,7 @@ class ImportFile {
   }
 
   [[nodiscard]] bool json() const { return extension_ == "json"; }
+  [[nodiscard]] bool points() const { return is_points_extension(extension_); }
   [[nodiscard]] const std::string& name() const { return name_; }
   [[nodiscard]] const std::filesystem::path& path() const { return path_; }
   /// The JSON text: the upload's, or the workspace file's.
@@ -189,7 +198,19 @@ void add_documents(Router& router, const Context& context) {
     const ImportFile file(workspace, body);
     std::vector<oli::Label> labels;
     Change outcome;
-    if (file.json()) {
+    Json cad = Json::object();  // a CAD file's "skipped" and "warnings" (what the reader could not read)
+    if (file.points()) {
+      io::PointSet points;
+      try {
+        points = io::parse_points(file.text());
+      } catch (const Error& e) {
+        throw Error(e.code(), file.name() + ": " + e.message(), e.where());
+      }
+      outcome = doc->change([&](oli::Document& d) {
+        return d.transact("import",
+                          [&](oli::Edit& e) { labels = {oli::import_points(e, std::move(points), file.name())}; });
+      });
+    } else if (file.json()) {
       const Json input = io::json::parse_json_text(file.text(), file.name());
       outcome = doc->change([&](oli::Document& d) {
         return d.transact("import", [&](oli::Edit& e) { labels = oli::import_json(e, input, file.name()); });
@@ -202,6 +223,8 @@ void add_documents(Router& router, const Context& context) {
       outcome = doc->change([&](oli::Document& d) {
         return d.transact("import", [&](oli::Edit& e) { labels = oli::add_imported(e, report, file.name()); });
       });
+      cad["skipped"] = report.skipped;
+      cad["warnings"] = report.warnings;
 #else
       throw Error(Errc::Unsupported, "importing '" + file.name() + "' needs Open CASCADE, and this hula was built without it",
                   ErrorWhere{.field = "file"});
@@ -211,6 +234,7 @@ void add_documents(Router& router, const Context& context) {
     Json list = Json::array();
     for (const oli::Label l : labels) list.push_back(l.value);
     out["labels"] = std::move(list);
+    for (auto& [key, value] : cad.items()) out[key] = std::move(value);
     return json_response(201, out);
   });
   router.add("POST", "/api/documents/{name}/undo", [&docs](const Request& request) {

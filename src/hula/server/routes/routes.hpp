@@ -33,6 +33,8 @@ void add_openapi(Router& router, const Context& context);
 void add_law(Router& router, const Context& context);
 /// POST /api/reconstruct, POST /api/documents/{name}/entities/{label}/curvature-edit.
 void add_reconstruct(Router& router, const Context& context);
+/// POST /api/intersect, POST /api/distance.
+void add_intersect(Router& router, const Context& context);
 /// POST /api/jobs, GET /api/jobs/{id}, GET /api/jobs/{id}/events, DELETE /api/jobs/{id}.
 void add_jobs(Router& router, const Context& context);
 

@@ -78,7 +78,7 @@ io::Json import_answer_to_json(const ImportReport& report) {
                       {"source", c.source},
                       {"type", c.type},
                       {"curve", io::curve_to_json(curve::Curve(c.curve))}});
-  return {{"ok", {{"curves", std::move(curves)}, {"skipped", report.skipped}}}};
+  return {{"ok", {{"curves", std::move(curves)}, {"skipped", report.skipped}, {"warnings", report.warnings}}}};
 }
 
 const io::Json& answer_ok(const io::Json& document) {
@@ -117,6 +117,7 @@ ImportReport import_answer_from_json(const io::Json& ok) {
       report.curves.push_back({c.at("name").get<std::string>(), c.at("source").get<std::string>(),
                                c.at("type").get<std::string>(), io::curve_from_json(c.at("curve")).nurbs()});
     report.skipped = ok.at("skipped").get<std::size_t>();
+    report.warnings = ok.at("warnings").get<std::vector<std::string>>();
     return report;
   } catch (const nlohmann::json::exception& e) {
     malformed(e.what());

@@ -5,7 +5,7 @@
 //             |  {"operation": "import", "path": P}
 // Answer file:   {"ok": {"curves": n, "max_deviation": d}}                     (export)
 //             |  {"ok": {"curves": [{"name", "source", "type", "curve": CURVE}],
-//                        "skipped": n}}                                          (import)
+//                        "skipped": n, "warnings": [...]}}                       (import)
 //             |  {"error": {"code", "message", "where"}}                        (io/error_json.hpp)
 // CURVE is the curve-file document of the one curve value type (curve::Curve, io/json_curve.hpp),
 // here always of kind "nurbs": a law or natural-equation curve crosses as its NURBS stand-in with
