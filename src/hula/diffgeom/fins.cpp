@@ -148,7 +148,7 @@ Fins fins(std::span<const FrenetPoint> frames, const FinOptions& options) {
 Fins fins(const curve::Curve& curve, const FinOptions& options) {
   options.validate();
   if (curve.natural_evaluator() != nullptr) {
-    const std::vector<double> ts = grid(curve.domain(), options.density);
+    const std::vector<double> ts = parameter_grid(curve.domain(), options.density);
     std::vector<FrenetPoint> pts(ts.size());
     CurveFrenet(curve, options.frenet).at(ts, pts);
     return build(pts, options);
