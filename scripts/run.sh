@@ -27,7 +27,12 @@ mkdir -p "$workspace"
 port="${HULA_PORT:-0}"
 start_line=$(mktemp)
 trap 'rm -f "$start_line"' EXIT
-"$hula" serve --workspace "$workspace" --port "$port" --static web/dist >"$start_line" &
+# The token is kept in the workspace (mode 600), so a restart keeps it and an open page reconnects.
+token_file="$workspace/.hula-token"
+if [ ! -s "$token_file" ]; then
+  (umask 077 && od -An -N32 -tx1 /dev/urandom | tr -d ' \n' >"$token_file")
+fi
+"$hula" serve --workspace "$workspace" --port "$port" --token-file "$token_file" --static web/dist >"$start_line" &
 server=$!
 trap 'kill "$server" 2>/dev/null || true; rm -f "$start_line"' EXIT INT TERM
 for _ in $(seq 1 100); do

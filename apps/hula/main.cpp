@@ -20,11 +20,13 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <cctype>
 #include <csignal>
 #include <cstring>
 #include <exception>
 #include <iostream>
 #include <new>
+#include <sstream>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -87,14 +89,25 @@ void print_error(const Json& error) {
   std::cerr.flush();
 }
 
-Json plain_error(const std::string& code, const std::string& message) {
+Json plain_error(const std::string& code, const std::string& message, const std::string& field = {}) {
   Json body = Json::object();
   body["code"] = code;
   body["message"] = message;
   body["where"] = Json::object();
+  if (!field.empty()) body["where"]["field"] = field;
   Json out = Json::object();
   out["error"] = std::move(body);
   return out;
+}
+
+// The option a usage message is about: its first "--name" (the option's checks and CLI11 name it
+// first, "--tolerance 0: must be a number > 0"), without the dashes, as where.field of other errors.
+std::string option_in(std::string_view message) {
+  const std::size_t at = message.find("--");
+  if (at == std::string_view::npos) return {};
+  std::size_t end = at + 2;
+  while (end < message.size() && (std::isalnum(static_cast<unsigned char>(message[end])) || message[end] == '-')) ++end;
+  return std::string(message.substr(at + 2, end - at - 2));
 }
 
 constexpr const char* kFooter =
@@ -108,6 +121,16 @@ constexpr const char* kFooter =
 int print_help(const CLI::App& app) {
   hula::cli::print_text(app.help());
   return hula::cli::kExitOk;
+}
+
+// Prints what CLI11 prints for --help, --help-all or --version, checked like any output (a failing
+// stdout, e.g. /dev/full, is exit 3, not a silent 0).
+int print_exit_text(const CLI::App& app, const CLI::Error& e) {
+  std::ostringstream out, err;
+  const int code = app.exit(e, out, err);
+  hula::cli::print_text(out.str());
+  if (!err.str().empty()) std::cerr << err.str();
+  return code;
 }
 
 }  // namespace
@@ -170,27 +193,31 @@ int main(int argc, char** argv) {
     try {
       app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
-      return app.exit(e);
+      return print_exit_text(app, e);
     } catch (const CLI::CallForAllHelp& e) {
-      return app.exit(e);
+      return print_exit_text(app, e);
     } catch (const CLI::CallForVersion& e) {
-      return app.exit(e);
+      return print_exit_text(app, e);
     }
     for (const auto& command : commands)
       if (command.app->parsed()) return command.run();
     return print_help(app);
   } catch (const CLI::ParseError& e) {
-    print_error(plain_error("UsageError", e.what()));
+    print_error(plain_error("UsageError", e.what(), option_in(e.what())));
     return hula::cli::kExitUsage;
   } catch (const hula::Error& e) {
     print_error(hula::io::error_to_json(e));
     return e.code() == hula::Errc::NumericalFailure ? hula::cli::kExitNumerical : hula::cli::kExitInvalidInput;
-  } catch (const std::bad_alloc&) {
-    // No allocation-heavy work here: the message is short and the stack is unwound.
-    print_error(plain_error("OutOfMemory",
-                            "out of memory: the run needs more memory than the system (or its address-space limit) "
-                            "allows; reduce --population, --dimension, --samples or the input size (docs/cli.md "
-                            "\"Limits\")"));
+  } catch (const std::bad_alloc& e) {
+    // No allocation-heavy work here: the message is short and the stack is unwound. A bad_alloc that
+    // names what ran out (the exchange helper's, oli::ExchangeOutOfMemory) is reported as it says.
+    const std::string what = e.what();
+    print_error(plain_error(
+        "OutOfMemory", what != std::bad_alloc().what()
+                           ? "out of memory: " + what
+                           : std::string("out of memory: the run needs more memory than the system (or its "
+                                         "address-space limit) allows; reduce --population, --dimension, --samples "
+                                         "or the input size (docs/cli.md \"Limits\")")));
     return hula::cli::kExitOutOfMemory;
   } catch (const std::length_error&) {
     print_error(plain_error("OutOfMemory", "out of memory: a requested size exceeds what can be allocated"));

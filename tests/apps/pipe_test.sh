@@ -1,12 +1,16 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# Issue 10, item 2: commands pipe through `-`. A chain of four commands —
-# interpolate (points on stdin, curve on stdout) | eval --format csv | cut |
-# interpolate | analyse (curve on stdin) — must print exactly what the same
-# steps print when run one by one through files.
+# Issue 10, item 2, and issue 24, item 2: commands pipe through `-`.
+# 1. A chain of four commands — interpolate (points on stdin, curve on stdout) |
+#    eval --format csv | cut | interpolate | analyse (curve on stdin) — must print
+#    exactly what the same steps print when run one by one through files.
+# 2. Every command that takes `-o -` writes on stdout the very bytes it writes to
+#    a file (the curve alone, no JSON summary after it), and a reader of `-`
+#    (`hula info -`) prints for the piped curve what it prints for the file.
 #   pipe_test.sh HULA_BINARY
 set -euo pipefail
 hula="$1"
+examples="$(cd "$(dirname "$0")/../../examples" && pwd)"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 printf '0,0,0\n1,2,0\n3,3,1\n4,1,2\n6,0,2\n' > "$work/points.csv"
@@ -34,5 +38,70 @@ fi
 # The piped curve is the file's curve, byte for byte.
 "$hula" interpolate --points - -o - < "$work/points.csv" | cmp -s - "$work/c1.json" \
   || { echo "pipe_test: interpolate -o - differs from the file it writes" >&2; exit 1; }
+
+# check_writer NAME ARGS...: ARGS with OUT replaced by a file, then by -. The
+# bytes on stdout must be the file's, and `hula info -` fed by the pipe must
+# print what `hula info FILE` prints.
+check_writer() {
+  local name="$1"
+  shift
+  local file_args=() pipe_args=() arg
+  for arg in "$@"; do
+    file_args+=("${arg//OUT/$work/$name.json}")
+    pipe_args+=("${arg//OUT/-}")
+  done
+  "$hula" "${file_args[@]}" > /dev/null
+  "$hula" "${pipe_args[@]}" > "$work/$name.piped"
+  if ! cmp -s "$work/$name.json" "$work/$name.piped"; then
+    echo "pipe_test: $name -o - differs from the file it writes" >&2
+    diff "$work/$name.json" "$work/$name.piped" | head -10 >&2
+    exit 1
+  fi
+  "$hula" info "$work/$name.json" > "$work/$name.info-file"
+  "$hula" "${pipe_args[@]}" | "$hula" info - > "$work/$name.info-pipe"
+  cmp -s "$work/$name.info-file" "$work/$name.info-pipe" \
+    || { echo "pipe_test: hula info - of the piped $name differs from the file's" >&2; exit 1; }
+}
+
+c1="$work/c1.json"
+check_writer interpolate interpolate --points "$work/points.csv" -o OUT
+check_writer insert-knot edit insert-knot "$c1" --at 0.5 --times 2 -o OUT
+check_writer refine edit refine "$c1" --knots 0.25,0.5,0.75 -o OUT
+check_writer remove-knots edit remove-knots "$work/refine.json" --tolerance 1e-9 -o OUT
+check_writer elevate edit elevate "$c1" --times 1 -o OUT
+check_writer split-first edit split "$c1" --at 0.4 -o OUT --second "$work/second.json"
+check_writer split-second edit split "$c1" --at 0.4 -o "$work/first.json" --second OUT
+check_writer reverse edit reverse "$c1" -o OUT
+check_writer reparam edit reparam "$c1" --domain 0,10 -o OUT
+check_writer approximate approximate --points "$examples/cli/scan.csv" --tolerance 0.05 -o OUT
+check_writer fit fit --points "$examples/cli/scan.csv" -o OUT
+check_writer law-to-nurbs law 'vec(2*cos(t), 2*sin(t), 0.5*t)' --to-nurbs 0,6.283185307179586 --tolerance 1e-7 -o OUT
+check_writer clothoid clothoid --start-point 0,0 --start-angle 0 --end-point 1,1 --end-angle 1.5707963267948966 -o OUT
+check_writer clothoid-nurbs clothoid --start-point 0,0 --start-angle 0 --end-point 1,1 --end-angle 1 \
+  --to-nurbs 1e-6 -o OUT
+check_writer to-nurbs edit to-nurbs "$work/clothoid.json" --tolerance 1e-8 -o OUT
+check_writer log-aesthetic log-aesthetic --alpha 1 --rho0 1.5 --lambda 0.4 --length 6 -o OUT
+check_writer reconstruct reconstruct --kappa 1 --tau 0 --length 1.5707963267948966 -o OUT
+check_writer hermite hermite "$examples/studies/hermite-direction.json" -o OUT
+check_writer fin-compound fin-compound "$examples/studies/fin-compound-edit.json" -o OUT
+check_writer edit-projection edit-projection "$examples/studies/edit-projection.json" -o OUT
+"$hula" doc new "$work/d.hula" > /dev/null
+"$hula" doc add "$work/d.hula" --curve "$c1" --name spine > /dev/null
+check_writer doc-export doc export "$work/d.hula" 1 --format json -o OUT
+
+# The probe's chain: interpolate | edit elevate | edit reverse | info, all through `-`.
+"$hula" interpolate --points - -o - < "$work/points.csv" \
+  | "$hula" edit elevate - -o - \
+  | "$hula" edit reverse - -o - \
+  | "$hula" info - > "$work/chain.json"
+"$hula" edit elevate "$c1" -o "$work/e.json" > /dev/null
+"$hula" edit reverse "$work/e.json" -o "$work/er.json" > /dev/null
+"$hula" info "$work/er.json" | cmp -s - "$work/chain.json" \
+  || { echo "pipe_test: interpolate | edit elevate | edit reverse | info differs from files" >&2; exit 1; }
+# Two outputs of one command cannot share stdout.
+if "$hula" edit split "$c1" --at 0.4 -o - --second - > /dev/null 2>&1; then
+  echo "pipe_test: edit split -o - --second - was accepted" >&2
+  exit 1
+fi
 [ ! -e ./- ] || { echo "pipe_test: a file named - was created" >&2; exit 1; }
 echo "pipe_test: ok"

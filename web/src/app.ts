@@ -13,9 +13,11 @@ import type {
   DocumentState,
   Entity,
   FinKind,
+  Job,
 } from './api/types';
 import { DocumentStore } from './store/store';
-import { Graph, type Abscissa, type Quantity } from './graphs/graph';
+import { curveColour, loadViewState, saveViewState, type ViewState } from './store/viewstate';
+import { Graph, readout, type Abscissa, type Quantity } from './graphs/graph';
 import { boxDiagonal, nearestIndex } from './graphs/scale';
 import { Viewports, toVec3 } from './viewport/viewports';
 import {
@@ -119,6 +121,14 @@ interface Drag {
   local: boolean;
   /** Moved since the last frame drew it. */
   dirty: boolean;
+  /** A move was not stored (the server is unreachable): the drag is over and reverted. */
+  failed: boolean;
+  /**
+   * The handle minus the pointer's point where the drag started: the handle
+   * moves by what the pointer moved (a 2 px nudge moves it 2 px worth), it
+   * does not jump to the pointer.
+   */
+  grab: Vec3;
   /**
    * The reply to the latest move: the dragged entity as the server stores it
    * and its analysis (asked for with the move), applied once the drag
@@ -147,7 +157,22 @@ export class App {
   readonly design: DesignByCurvature;
   readonly optimise: OptimisePanel;
   readonly fairing: FairingAssistant;
+  /** The hover readout at the cursor on the curve (s or t, κ, R, τ). */
+  private readonly curveReadout: HTMLElement;
   selected: string | null = null;
+  /** Whether a curve is hidden: the document's `visible` attribute (oli), set in the object list. */
+  isHidden(label: string): boolean {
+    return this.store.entities.get(label)?.attributes['visible'] === false;
+  }
+
+  /** Whether a curve is locked: the document's `locked` attribute (oli), set in the object list. */
+  isLocked(label: string): boolean {
+    return this.store.entities.get(label)?.attributes['locked'] === true;
+  }
+  /** Result curves of the studies run from this page: curve label → study label. */
+  readonly studyOf = new Map<string, string>();
+  /** Set while a stored view state is applied: nothing is saved back meanwhile. */
+  private restoring = false;
   tool: Tool | null = null;
   toolName: ToolName = 'select';
   abscissa: Abscissa = 's';
@@ -185,6 +210,15 @@ export class App {
   /** … and from a pointer event to the server's reply to the move it sent. */
   readonly serverLatencies: number[] = [];
   private pointerStamp = 0;
+  /**
+   * The honest drag counters (issue 23, e2e/bench.spec.ts), reset when a drag
+   * starts: pointer moves that changed the dragged point, and frames that drew
+   * the curve, its fins and (when it is the selected curve) the graphs at a
+   * new position of it, with the times of the first and last such move.
+   */
+  readonly dragStats = { moves: 0, redraws: 0, firstMove: 0, lastMove: 0 };
+  /** The current frame draws a new drag position (set by drawDrag, counted after the frame). */
+  private drewDrag = false;
 
   constructor(
     readonly client: Client,
@@ -192,6 +226,11 @@ export class App {
   ) {
     this.store = new DocumentStore(docName);
     this.viewports = new Viewports(document.getElementById('viewports')!);
+    this.curveReadout = document.createElement('div');
+    this.curveReadout.className = 'readout curve-readout';
+    this.curveReadout.dataset['readout'] = 'curve';
+    this.curveReadout.hidden = true;
+    this.viewports.root.appendChild(this.curveReadout);
     this.panels = new Panels(this, document.getElementById('side')!);
     this.design = new DesignByCurvature(this);
     this.optimise = new OptimisePanel(this);
@@ -244,11 +283,21 @@ export class App {
     client.onOffline = () => {
       this.goOffline();
     };
+    client.onUnauthorized = () => {
+      this.unauthorized();
+    };
+    document.getElementById('reopen')!.addEventListener('click', () => {
+      this.panels.reopenDialog();
+    });
     this.viewports.beforeFrame.add(() => {
       this.drawDrag();
     });
     this.viewports.afterFrame.add(() => {
       const now = performance.now();
+      if (this.drewDrag) {
+        this.drewDrag = false;
+        this.dragStats.redraws++;
+      }
       if (this.pointerStamp) {
         this.latencies.push(now - this.pointerStamp);
         this.pointerStamp = 0;
@@ -265,6 +314,8 @@ export class App {
     this.events?.close();
     this.events = null;
     this.select(null);
+    this.settings.clear();
+    this.studyOf.clear();
     for (const label of this.store.entities.keys()) this.viewports.removeCurve(label);
     this.store.entities.clear();
     this.store.revision = -1;
@@ -277,6 +328,7 @@ export class App {
       else throw e;
     }
     this.store.load(doc);
+    this.restoreViewState();
     document.getElementById('doc-name')!.textContent = name;
     location.hash = `doc=${encodeURIComponent(name)}`;
     this.subscribe();
@@ -307,6 +359,103 @@ export class App {
     this.events = es;
   }
 
+  /** The page's state of this document as stored (selection, fins, layout, snap, objects). */
+  get viewState(): ViewState {
+    const curves: ViewState['curves'] = {};
+    for (const [label, s] of this.settings)
+      if (this.store.entities.has(label))
+        curves[label] = { fins: s.fins, scale: s.scale, samples: s.samples, frames: s.frames };
+    return {
+      selected: this.selected,
+      layout: this.viewports.layout,
+      active: this.viewports.active,
+      snap: this.viewports.snap,
+      abscissa: this.abscissa,
+      curves,
+      studyOf: Object.fromEntries(this.studyOf),
+    };
+  }
+
+  /** Store the page's state of this document (localStorage, one key per document). */
+  viewStateChanged(): void {
+    if (this.restoring || this.store.revision < 0) return;
+    saveViewState(localStorage, this.store.name, this.viewState);
+  }
+
+  private restoreViewState(): void {
+    const v = loadViewState(localStorage, this.store.name);
+    this.restoring = true;
+    try {
+      for (const [label, c] of Object.entries(v.curves))
+        this.settings.set(label, { ...c, fins: [...c.fins] });
+      for (const [c, st] of Object.entries(v.studyOf)) this.studyOf.set(c, st);
+      this.setSnap(v.snap);
+      this.setAbscissa(v.abscissa);
+      this.viewports.setLayout(v.layout, v.active);
+      if (v.selected !== null && this.store.entities.has(v.selected)) this.select(v.selected);
+      this.redrawAll();
+    } finally {
+      this.restoring = false;
+    }
+  }
+
+  setSnap(on: boolean): void {
+    (document.getElementById('snap') as HTMLInputElement).checked = on;
+    this.viewports.snap = on;
+    this.viewStateChanged();
+  }
+
+  setAbscissa(a: Abscissa): void {
+    if (a === this.abscissa) return;
+    this.abscissa = a;
+    const sel = document.getElementById('abscissa') as HTMLSelectElement | null;
+    if (sel) sel.value = a;
+    for (const g of this.graphs) g.abscissa = a;
+    for (const label of this.store.entities.keys()) this.refreshAnalysis(label);
+    this.viewStateChanged();
+  }
+
+  /**
+   * Show or hide a curve (object list): the entity's `visible` attribute, so
+   * the document and every client agree (one "edit attributes" step); a
+   * hidden curve is neither drawn nor picked.
+   */
+  async setHidden(label: string, hidden: boolean): Promise<void> {
+    await this.patch(label, { attributes: { visible: !hidden } });
+    this.setStatus(`${this.nameOf(label)} ${hidden ? 'hidden' : 'shown'}`);
+  }
+
+  /** Lock or unlock a curve (the `locked` attribute): a locked curve is not picked nor dragged. */
+  async setLocked(label: string, locked: boolean): Promise<void> {
+    await this.patch(label, { attributes: { locked } });
+    this.setStatus(`${this.nameOf(label)} ${locked ? 'locked' : 'unlocked'}`);
+  }
+
+  /**
+   * A study job ended: the document is reloaded with what it stored, its
+   * result curves are listed under the study that made them and the first is
+   * selected and shown.
+   */
+  async studyFinished(job: Job): Promise<void> {
+    await this.run(() => this.reload(), 'Reload after the study');
+    const study = (job.result as { study?: string | number } | null)?.study;
+    const curves = (job.result?.curves ?? []).map(String).filter((c) => this.store.entities.has(c));
+    if (study === undefined || curves.length === 0) return;
+    for (const c of curves) this.studyOf.set(c, String(study));
+    this.select(curves[0]!);
+    const studyName = this.store.entities.get(String(study))?.name ?? 'study';
+    this.setStatus(
+      `Study ${studyName} (${study}) ${job.state}: result curve${curves.length > 1 ? 's' : ''} ${curves.join(', ')}; ${curves[0]} selected`,
+    );
+    this.viewStateChanged();
+    this.panels.update();
+  }
+
+  setLayout(layout: 'quad' | 'single', active?: ViewName): void {
+    this.viewports.setLayout(layout, active);
+    this.viewStateChanged();
+  }
+
   async reload(): Promise<void> {
     const doc = await this.client.getDocument(this.store.name);
     this.store.load(doc);
@@ -315,16 +464,45 @@ export class App {
   private goOffline(): void {
     if (this.offline) return;
     this.offline = true;
-    this.setStatus('Server unreachable: reconnecting…', true);
+    this.setStatus(
+      'Server unreachable: reconnecting… (if it restarted on another port, Re-open with its new address)',
+      true,
+    );
     void this.reconnect();
   }
 
+  /**
+   * The event stream failed: is the server down (health fails), or up but
+   * refusing the page's token (a restart with a new one: 401 on a route that
+   * needs it)?
+   */
   private async checkServer(): Promise<void> {
     try {
       await this.client.health();
-    } catch {
-      this.goOffline();
+      await this.client.listDocuments();
+    } catch (e) {
+      if (!(e instanceof ApiError && e.status === 401)) this.goOffline();
     }
+  }
+
+  /** Whether the server has refused the page's token (it restarted with a new one). */
+  refused = false;
+
+  /**
+   * The server answers but refuses the token this page was opened with: it
+   * was restarted with a new token (or on a new port). Say so, stop polling,
+   * and offer to re-open the page with the address the server printed.
+   */
+  private unauthorized(): void {
+    if (this.refused) return;
+    this.refused = true;
+    this.events?.close();
+    this.events = null;
+    this.setStatus(
+      "The server refused this page's token: it was restarted with a new one. Re-open with the address it printed",
+      true,
+    );
+    document.getElementById('reopen')!.hidden = false;
   }
 
   /** Poll the health route until the server is back, then reload the document's revision. */
@@ -333,15 +511,22 @@ export class App {
     this.events = null;
     for (let attempt = 0; attempt < 600; attempt++) {
       await new Promise((r) => setTimeout(r, Math.min(2000, 200 + attempt * 100)));
+      // A server that moved to another port never answers here: offer the new address.
+      if (attempt === 10) document.getElementById('reopen')!.hidden = false;
       try {
         await this.client.health();
-        this.offline = false;
         await this.reload();
+        this.offline = false;
+        document.getElementById('reopen')!.hidden = true;
         this.subscribe();
         this.setStatus(`Reconnected at revision ${this.store.revision}`);
         return;
-      } catch {
-        // still down
+      } catch (e) {
+        // Up but refusing the token (unauthorized() has said so), else still down.
+        if (e instanceof ApiError && e.status === 401) {
+          this.offline = false;
+          return;
+        }
       }
     }
     this.setStatus('Server unreachable: reload the page once it runs again', true);
@@ -377,25 +562,55 @@ export class App {
     }, 8000);
   }
 
-  /** Run a server call, turning a failure into a toast. */
-  async run<T>(f: () => Promise<T>): Promise<T | undefined> {
+  /**
+   * Run a server call, turning a failure into a toast; with `what` (the
+   * command's name) the status line says it failed, so it never keeps the
+   * previous command's message.
+   */
+  async run<T>(f: () => Promise<T>, what?: string): Promise<T | undefined> {
     try {
       return await f();
     } catch (e) {
       if (!(e instanceof ApiError && e.offline)) this.toast(e);
+      if (what)
+        this.setStatus(
+          `${what} failed: ${e instanceof ApiError ? (e.offline ? 'the server is unreachable' : e.body.message) : String(e)}`,
+          true,
+        );
       return undefined;
     }
+  }
+
+  /** The selected curve, or null with the status saying that `what` needs one. */
+  private needSelection(what: string): string | null {
+    if (this.selected) return this.selected;
+    this.setStatus(`${what}: nothing is selected; click a curve first (V)`, true);
+    return null;
+  }
+
+  /** A curve's name for messages: its name, else its label. */
+  nameOf(label: string): string {
+    const e = this.store.entities.get(label);
+    return e?.name ? `${e.name} (${label})` : label;
   }
 
   // ---- editing ---------------------------------------------------------------
 
   async createCurve(name: string, curve: CurveFile): Promise<string | undefined> {
-    const reply = await this.run(() => this.client.createEntity(this.store.name, name, curve));
+    const reply = await this.run(
+      () => this.client.createEntity(this.store.name, name, curve),
+      `Create ${curve.kind} curve`,
+    );
     if (!reply) return undefined;
     this.applyReply(reply);
     const made = reply.label ?? reply.changes.added?.[0];
     const label = made === undefined ? undefined : String(made);
-    if (label) this.select(label);
+    if (label) {
+      this.select(label);
+      this.setStatus(
+        `Created ${curve.kind} curve ${name} (${label})${this.tool ? `; ${this.tool.hint}` : ''}`,
+      );
+    }
     return label;
   }
 
@@ -446,18 +661,22 @@ export class App {
   }
 
   async undo(): Promise<void> {
-    const reply = await this.run(() => this.client.undo(this.store.name));
-    if (reply) this.applyReply(reply);
+    const reply = await this.run(() => this.client.undo(this.store.name), 'Undo');
+    if (!reply) return;
+    this.applyReply(reply);
+    this.setStatus(`Undone: ${reply.changes.name ?? 'last step'} (revision ${reply.revision})`);
   }
 
   async redo(): Promise<void> {
-    const reply = await this.run(() => this.client.redo(this.store.name));
-    if (reply) this.applyReply(reply);
+    const reply = await this.run(() => this.client.redo(this.store.name), 'Redo');
+    if (!reply) return;
+    this.applyReply(reply);
+    this.setStatus(`Redone: ${reply.changes.name ?? 'step'} (revision ${reply.revision})`);
   }
 
   /** Insert a knot into the selected curve at the hovered sample's parameter, else mid-span. */
   async insertKnotSelected(): Promise<void> {
-    const label = this.selected;
+    const label = this.needSelection('Insert knot');
     if (!label) return;
     const a = this.store.analyses.get(label);
     const hovered = this.hoverIndex !== null && a ? a.t[this.hoverIndex] : undefined;
@@ -466,46 +685,63 @@ export class App {
     const u =
       hovered ??
       (c?.kind === 'nurbs' ? midSpan(c.knots) : 0.5 * ((t[0] ?? 0) + (t[t.length - 1] ?? 1)));
-    const reply = await this.run(() => this.client.insertKnot(this.store.name, label, u));
-    if (reply) this.applyReply(reply);
+    const reply = await this.run(
+      () => this.client.insertKnot(this.store.name, label, u),
+      'Insert knot',
+    );
+    if (!reply) return;
+    this.applyReply(reply);
+    this.setStatus(`Inserted a knot at t = ${Number(u.toPrecision(6))} into ${this.nameOf(label)}`);
   }
 
   /** Raise the degree of the selected curve by one. */
   async elevateSelected(): Promise<void> {
-    const label = this.selected;
+    const label = this.needSelection('Elevate degree');
     if (!label) return;
-    const reply = await this.run(() => this.client.elevate(this.store.name, label));
-    if (reply) this.applyReply(reply);
+    const reply = await this.run(
+      () => this.client.elevate(this.store.name, label),
+      'Elevate degree',
+    );
+    if (!reply) return;
+    this.applyReply(reply);
+    this.setStatus(`Raised the degree of ${this.nameOf(label)} by one`);
   }
 
   /** Reverse the direction of the selected curve (its graphs run the other way). */
   async reverseSelected(): Promise<void> {
-    const label = this.selected;
+    const label = this.needSelection('Reverse');
     if (!label) return;
-    const reply = await this.run(() => this.client.reverse(this.store.name, label));
-    if (reply) this.applyReply(reply);
+    const reply = await this.run(() => this.client.reverse(this.store.name, label), 'Reverse');
+    if (!reply) return;
+    this.applyReply(reply);
+    this.setStatus(`Reversed ${this.nameOf(label)}`);
   }
 
   /** Split the selected curve at the hovered sample's parameter, else mid-domain; select the first piece. */
   async splitSelected(): Promise<void> {
-    const label = this.selected;
+    const label = this.needSelection('Split');
     if (!label) return;
     const t = this.store.analyses.get(label)?.t ?? [];
     const hovered = this.hoverIndex !== null ? t[this.hoverIndex] : undefined;
     const at = hovered ?? 0.5 * ((t[0] ?? 0) + (t[t.length - 1] ?? 1));
-    const reply = await this.run(() => this.client.split(this.store.name, label, at));
+    const reply = await this.run(() => this.client.split(this.store.name, label, at), 'Split');
     if (!reply) return;
     this.applyReply(reply);
     const first = reply.labels[0];
     if (first !== undefined) this.select(String(first));
-    this.setStatus(`Split at t = ${Number(at.toPrecision(6))}`);
+    this.setStatus(
+      `Split ${this.nameOf(label)} at t = ${Number(at.toPrecision(6))} into ${reply.labels.join(' and ')}`,
+    );
   }
 
   async deleteSelected(): Promise<void> {
-    const label = this.selected;
+    const label = this.needSelection('Delete');
     if (!label) return;
-    const reply = await this.run(() => this.client.deleteEntity(this.store.name, label));
-    if (reply) this.applyReply(reply);
+    const name = this.nameOf(label);
+    const reply = await this.run(() => this.client.deleteEntity(this.store.name, label), 'Delete');
+    if (!reply) return;
+    this.applyReply(reply);
+    this.setStatus(`Deleted ${name} (Ctrl+Z undoes)`);
   }
 
   refreshHistory(): void {
@@ -625,6 +861,8 @@ export class App {
       selected: label === this.selected,
       fins: this.shownFins(label, a),
       frames: s.frames,
+      colour: curveColour(label),
+      visible: !this.isHidden(label),
     });
     const root = this.viewports.root;
     root.dataset['fins'] = this.selected
@@ -645,6 +883,7 @@ export class App {
     if (label) this.redrawCurve(label);
     this.updateGraphs();
     this.panels.update();
+    this.viewStateChanged();
   }
 
   get selectedEntity(): Entity | undefined {
@@ -685,9 +924,7 @@ export class App {
         ab.innerHTML =
           '<option value="s">against arc length s</option><option value="t">against parameter t</option>';
         ab.addEventListener('change', () => {
-          this.abscissa = ab.value as Abscissa;
-          for (const g of this.graphs) g.abscissa = this.abscissa;
-          for (const label of this.store.entities.keys()) this.refreshAnalysis(label);
+          this.setAbscissa(ab.value as Abscissa);
         });
         row.appendChild(ab);
       }
@@ -709,10 +946,9 @@ export class App {
   updateGraphs(): void {
     const a = this.selected ? this.analysisOf(this.selected) : undefined;
     // The fairing assistant's ghost, when there is one, else the curve before the last edit.
-    const ghost =
-      this.fairing.analysis ??
-      (this.ghost?.label === this.selected ? this.ghost.analysis : undefined);
-    for (const g of this.graphs) g.show(a, ghost);
+    const faired = this.fairing.analysis;
+    const before = this.ghost?.label === this.selected ? this.ghost.analysis : undefined;
+    for (const g of this.graphs) g.show(a, faired ?? before, faired ? 'faired' : 'before');
   }
 
   /** Keep the curve's current analysis as the ghost (before an edit), or clear it. */
@@ -731,6 +967,8 @@ export class App {
     this.viewports.setMarker(p ? toVec3(p) : null);
     for (const g of this.graphs) if (g !== from) g.highlight(index);
     this.viewports.root.dataset['hover'] = index === null ? '' : String(index);
+    if (from) this.readoutAt = null;
+    this.placeReadout();
   }
 
   get hovered(): number | null {
@@ -762,10 +1000,10 @@ export class App {
           : name === 'hermite'
             ? new HermiteTool(host)
             : null;
-    if (!this.tool)
-      this.setStatus(
+    this.setStatus(
+      this.tool?.hint ??
         'Select: click a curve; drag its points; wheel zooms, middle drag pans, Alt-drag orbits',
-      );
+    );
     for (const b of document.querySelectorAll<HTMLButtonElement>('[data-tool]')) {
       b.classList.toggle('on', b.dataset['tool'] === name);
       b.setAttribute('aria-pressed', String(b.dataset['tool'] === name));
@@ -862,13 +1100,20 @@ export class App {
     const { w, h } = this.viewports.size(view);
     const vp = this.viewports.viewProj(view);
     // A handle of the selected curve first (drag), then any curve (select).
-    if (this.selected) {
+    if (this.selected && !this.isHidden(this.selected)) {
       // The last drag's points until the server's copy of the curve is back.
       const handles =
         this.preview?.label === this.selected
           ? this.preview.handles
           : handlesOf(this.store.entities.get(this.selected)?.curve);
       const hit = pickNearest([x, y], handles, vp, w, h, 8);
+      if (hit && this.isLocked(this.selected)) {
+        this.setStatus(
+          `${this.nameOf(this.selected)} is locked: unlock it in the object list`,
+          true,
+        );
+        return;
+      }
       if (hit) {
         const curve = this.store.entities.get(this.selected)?.curve;
         this.drag = {
@@ -886,10 +1131,16 @@ export class App {
             NurbsEvaluator.of(curve) !== null &&
             !this.settingsOf(this.selected).fins.includes('combescure'),
           dirty: false,
+          failed: false,
+          grab: [0, 0, 0],
         };
+        const h0 = handles[hit.index]!;
+        const at = this.viewports.pointOn(view, x, y, dragPlane(view, h0), false);
+        if (at) this.drag.grab = [h0[0] - at[0], h0[1] - at[1], h0[2] - at[2]];
         this.settling = this.selected;
         this.latencies.length = 0;
         this.serverLatencies.length = 0;
+        Object.assign(this.dragStats, { moves: 0, redraws: 0, firstMove: 0, lastMove: 0 });
         this.setGhost(this.selected);
         this.setStatus(`Dragging point ${hit.index}`);
         return;
@@ -897,6 +1148,7 @@ export class App {
     }
     let best: { label: string; d: number } | null = null;
     for (const [label, a] of this.store.analyses) {
+      if (this.isHidden(label) || this.isLocked(label)) continue;
       const hit = pickPolyline([x, y], a.points.map(toVec3), vp, w, h, 6);
       if (hit && (!best || hit.distance < best.d)) best = { label, d: hit.distance };
     }
@@ -911,6 +1163,27 @@ export class App {
     const { w, h } = this.viewports.size(view);
     const hit = pickPolyline([x, y], a.points.map(toVec3), this.viewports.viewProj(view), w, h, 8);
     if ((hit?.index ?? null) !== this.hoverIndex) this.hoverSample(hit?.index ?? null);
+    // The readout follows the cursor on the curve.
+    const box = this.viewports.root.getBoundingClientRect();
+    this.readoutAt = hit ? [ev.clientX - box.left + 14, ev.clientY - box.top + 10] : null;
+    this.placeReadout();
+  }
+
+  /** Where the curve's hover readout is drawn (view-root pixels), or null off the curve. */
+  private readoutAt: [number, number] | null = null;
+
+  private placeReadout(): void {
+    const el = this.curveReadout;
+    const a = this.selected ? this.store.analyses.get(this.selected) : undefined;
+    const i = this.hoverIndex;
+    if (!this.readoutAt || !a || i === null || i >= a.t.length) {
+      el.hidden = true;
+      return;
+    }
+    el.hidden = false;
+    el.textContent = readout(a, i, this.abscissa);
+    el.style.left = `${this.readoutAt[0]}px`;
+    el.style.top = `${this.readoutAt[1]}px`;
   }
 
   /**
@@ -921,11 +1194,19 @@ export class App {
     const d = this.drag!;
     const [x, y] = this.local(view, ev);
     const start = d.handles[d.index]!;
-    const p = this.viewports.pointOn(view, x, y, dragPlane(view, start));
+    const plane = dragPlane(view, start);
+    const at = this.viewports.pointOn(view, x, y, plane, false);
+    const g = d.grab;
+    const p = at
+      ? this.viewports.snapped(view, [at[0] + g[0], at[1] + g[1], at[2] + g[2]], plane)
+      : null;
     // A pointer event that does not move the point (the one a release may bring, or a move
     // within a snapped grid cell) is no move: nothing to send, and the pointer has not moved.
     if (!p || p.every((v, k) => v === start[k])) return;
     d.handles[d.index] = p;
+    this.dragStats.moves++;
+    this.dragStats.firstMove ||= ev.timeStamp;
+    this.dragStats.lastMove = ev.timeStamp;
     this.moved = { label: d.label, handles: d.handles };
     this.fairing.pointerMoved();
     // The event's own time: the latency includes the wait for the page to take the event.
@@ -967,6 +1248,8 @@ export class App {
       if (d.label === this.selected) this.updateGraphs();
     }
     this.redrawCurve(d.label, d.handles);
+    // Curve, fins and graphs now hold the new position: the frame about to be drawn shows it.
+    if (evaluator) this.drewDrag = true;
   }
 
   /** Send the latest drag position; one PATCH in flight, `continue` after the first. */
@@ -996,16 +1279,45 @@ export class App {
       })
       .catch((e: unknown) => {
         this.toast(e);
+        d.failed = true;
+        d.pending = null;
       })
       .finally(() => {
         d.inFlight = false;
-        if (this.drag === d) this.flushDrag();
+        if (d.failed) this.revertDrag(d);
+        else if (this.drag === d) this.flushDrag();
         else if (d.pending) {
           this.drag = d;
           this.flushDrag();
           this.drag = null;
         } else this.dragSettled(d);
       });
+  }
+
+  /**
+   * A move of the drag was not stored: the drag ends here and the curve, its
+   * fins and graphs go back to what the server holds (the last stored move of
+   * this drag, else the curve before it), visibly, with the status saying so.
+   * A later reconnection reloads the document and changes nothing more.
+   */
+  private revertDrag(d: Drag): void {
+    if (this.drag === d) this.drag = null;
+    if (this.settling === d.label) this.settling = null;
+    if (this.moved?.label === d.label) this.moved = null;
+    if (this.preview?.label === d.label) this.preview = null;
+    this.pointerStamp = 0;
+    // The stored shape: the entity of the last answered move, else the store's (never replaced by the drag).
+    if (d.lastReply) this.settleFrom(d, true);
+    this.redrawCurve(d.label);
+    if (d.label === this.selected) this.updateGraphs();
+    this.setStatus(
+      `Point ${d.index} was not moved: the server did not answer; the curve is back as stored`,
+      true,
+    );
+    if (this.panelsStale) {
+      this.panelsStale = false;
+      this.panels.update();
+    }
   }
 
   /**
@@ -1077,6 +1389,7 @@ export class App {
     // The last position is drawn even when no frame came between it and the release.
     this.drawDrag();
     this.drag = null;
+    if (d.failed) return; // reverted already
     if (d.pending && !d.inFlight) {
       this.drag = d;
       this.flushDrag();
@@ -1131,7 +1444,7 @@ export class App {
     }
     const snap = document.getElementById('snap') as HTMLInputElement;
     snap.addEventListener('change', () => {
-      this.viewports.snap = snap.checked;
+      this.setSnap(snap.checked);
     });
     document.getElementById('import-file')!.addEventListener('change', (ev) => {
       const input = ev.target as HTMLInputElement;
@@ -1171,7 +1484,7 @@ export class App {
         this.fitAll();
         break;
       case 'layout':
-        this.viewports.setLayout(this.viewports.layout === 'quad' ? 'single' : 'quad');
+        this.setLayout(this.viewports.layout === 'quad' ? 'single' : 'quad');
         break;
       case 'law':
         this.panels.lawDialog();
@@ -1225,7 +1538,7 @@ export class App {
   exportSelected(): void {
     const e = this.selectedEntity;
     if (!e?.curve) {
-      this.setStatus('Export: select a curve first');
+      this.setStatus('Export: nothing is selected; click a curve first (V)', true);
       return;
     }
     const blob = new Blob([JSON.stringify(e.curve, null, 1)], { type: 'application/json' });
@@ -1288,11 +1601,10 @@ export class App {
     const views: Record<string, ViewName> = { '1': 'top', '2': 'front', '3': 'side', '4': 'persp' };
     if (tools[k]) this.setTool(tools[k]);
     else if (actions[k]) this.action(actions[k]);
-    else if (views[k]) this.viewports.setLayout('single', views[k]);
+    else if (views[k]) this.setLayout('single', views[k]);
     else if (k === 'g') {
-      const snap = document.getElementById('snap') as HTMLInputElement;
-      snap.checked = !snap.checked;
-      this.viewports.snap = snap.checked;
+      this.setSnap(!this.viewports.snap);
+      this.setStatus(`Grid snap ${this.viewports.snap ? 'on' : 'off'} (G)`);
     } else if (k === 'p') this.navMode = this.navMode === 'pan' ? null : 'pan';
     else if (k === 'r') this.navMode = this.navMode === 'orbit' ? null : 'orbit';
     else if (k === 'escape') {

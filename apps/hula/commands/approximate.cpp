@@ -7,11 +7,13 @@
 #include "hula/nurbs/approximate.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <memory>
 #include <optional>
 
 #include "commands/common.hpp"
 #include "hula/core/error.hpp"
+#include "hula/io/atomic_file.hpp"
 #include "hula/io/points_file.hpp"
 #include "hula/studies/tolerance_fit.hpp"
 
@@ -32,6 +34,7 @@ int run_approximate(const ApproximateArgs& a) {
   if (a.tolerance.has_value() == a.control_points.has_value())
     throw Error(Errc::InvalidArgument, "give exactly one of --tolerance and --control-points",
                 ErrorWhere{.field = "tolerance"});
+  io::check_output_path(a.output, "--output");
   const io::PointSet set = io::read_points_file(a.points);
   nurbs::ApproximationOptions o;
   o.degree = a.degree;
@@ -68,7 +71,7 @@ int run_approximate(const ApproximateArgs& a) {
     doc["max_deviation_index"] = fit.max_deviation_index;
     doc["fits"] = 1;
   }
-  print_json(doc);
+  print_result(doc, a.output);
   return kExitOk;
 }
 
@@ -82,8 +85,8 @@ Command add_approximate(CLI::App& app) {
   sub->add_option("--points", a->points,
                   "Points file: JSON [[x,y,z],...] or lines x y [z] (whitespace, comma or semicolon separated)")
       ->required();
-  sub->add_option("--tolerance", a->tolerance, "Largest distance of a data point from the curve (model units)")
-      ->check(CLI::PositiveNumber);
+  add_real_option(sub, "--tolerance", a->tolerance, 0.0, std::numeric_limits<double>::max(), true,
+                  "Largest distance of a data point from the curve (model units), > 0");
   sub->add_option("--control-points", a->control_points, "Fixed number of control points instead of --tolerance");
   sub->add_option("--degree", a->degree, "Degree p in [1, 9] (default 3)")->check(CLI::Range(1, 9));
   sub->add_option("--parameterisation", a->parameterisation, "uniform | chord | centripetal | foley (default chord)");

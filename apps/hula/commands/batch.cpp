@@ -329,6 +329,7 @@ int run_batch(const BatchArgs& a) {
   const fs::path results_path =
       a.results ? fs::path(*a.results) : fs::path(campaign).replace_extension(".results.json");
   if (a.jobs == 0) throw Error(Errc::InvalidOption, "jobs = 0 must be >= 1", {.field = "jobs"});
+  io::check_output_path(results_path, a.results ? "--results" : "path");  // before any item runs
   const fs::path scratch = fs::temp_directory_path() / ("hula-batch-" + std::to_string(::getpid()));
   fs::create_directories(scratch);
   const auto start = std::chrono::steady_clock::now();

@@ -89,7 +89,7 @@ int run_clothoid(const ClothoidArgs& a) {
                                       intrinsic::natural_curve(intrinsic::clothoid_natural_data(segments, a.tolerance),
                                                                curve::kApproximationTolerance),
                                       a.to_nurbs);
-  print_json(doc);
+  print_result(doc, a.output);
   return kExitOk;
 }
 

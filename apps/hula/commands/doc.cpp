@@ -208,6 +208,9 @@ bool is_cad_file(const std::string& path) {
 #endif
 
 int run_export(const Options& o) {
+  // The output-path policy (a regular file or -, never a link, FIFO, device or directory), checked
+  // before the document is opened and before the STEP/IGES helper starts.
+  io::check_output_path(o.output, "--output");
   std::vector<oli::Label> labels;
   for (const std::string& l : o.labels) labels.push_back(parse_label(l));
   const oli::Document doc = oli::Document::open(o.file, oli::OpenMode::ReadOnly);
@@ -227,8 +230,28 @@ int run_export(const Options& o) {
     no_occt("--format " + o.format);
 #endif
   }
-  print_json(out);
+  print_result(out, o.output);
   return kExitOk;
+}
+
+// The JSON of a file `doc import` reads as JSON: any name that is not a STEP/IGES name. Text that is
+// not JSON is refused naming the formats import reads, not only "not valid JSON" (a.dxf, a.csv).
+Json parse_import_json(const std::string& path) {
+  const std::string text = io::read_text_file(path);
+  try {
+    return io::json::parse_json_text(text, "import file");
+  } catch (const Error& e) {
+    if (e.code() != Errc::ParseError) throw;
+    const std::string ext = std::filesystem::path(path).extension().string();
+    ErrorWhere where = e.where();
+    if (where.field.empty()) where.field = "input";
+    throw Error(Errc::ParseError,
+                "cannot import '" + path + "': doc import reads a curve file, a points array or a hula-document " +
+                    "(JSON), or a STEP or IGES file (.step, .stp, .iges, .igs)" +
+                    (ext.empty() || ext == ".json" ? std::string() : "; '" + ext + "' is none of these") +
+                    " — as JSON: " + e.message(),
+                where);
+  }
 }
 
 int run_import(const Options& o) {
@@ -248,7 +271,7 @@ int run_import(const Options& o) {
     no_occt("importing " + o.input);
 #endif
   } else {
-    const Json input = io::json::parse_json_text(io::read_text_file(o.input), "import file");
+    const Json input = parse_import_json(o.input);
     doc.emplace(oli::Document::open(o.file));
     commit(*doc, "import", [&](oli::Edit& e) { labels = oli::import_json(e, input, o.input); });
   }

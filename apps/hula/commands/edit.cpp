@@ -11,6 +11,7 @@
 #include "commands/common.hpp"
 #include "hula/core/error.hpp"
 #include "hula/intrinsic/natural_curve.hpp"
+#include "hula/io/atomic_file.hpp"
 #include "hula/nurbs/elevate.hpp"
 #include "hula/nurbs/knot_removal.hpp"
 #include "hula/nurbs/refine.hpp"
@@ -59,8 +60,18 @@ int write_one(const EditArgs& a, const char* operation, const nurbs::NurbsCurve&
   Json doc = Json::object();
   doc["operation"] = operation;
   doc["curve"] = summary(a.output, result);
-  print_json(doc);
+  print_result(doc, a.output);
   return kExitOk;
+}
+
+// Every output is checked before the curve is read or edited; split's two curves cannot share stdout.
+void check_outputs(const EditArgs& a, bool split) {
+  io::check_output_path(a.output, "--output");
+  if (!split) return;
+  io::check_output_path(a.second, "--second");
+  if (io::is_std_stream(a.output) && io::is_std_stream(a.second))
+    throw Error(Errc::InvalidArgument, "-o and --second are both - (standard output): give at most one of them as -",
+                ErrorWhere{.field = "second"});
 }
 
 int run_insert_knot(const EditArgs& a) {
@@ -84,7 +95,7 @@ int run_remove_knots(const EditArgs& a, bool one_knot) {
   doc["error_bound"] = r.error_bound;
   doc["tolerance"] = a.tolerance;
   doc["curve"] = summary(a.output, r.curve);
-  print_json(doc);
+  print_result(doc, a.output);
   return kExitOk;
 }
 
@@ -110,7 +121,7 @@ int run_split(const EditArgs& a) {
   doc["operation"] = "split";
   doc["at"] = a.at;
   doc["curves"] = Json::array({summary(a.output, s.before), summary(a.second, s.after)});
-  print_json(doc);
+  print_result(doc, io::is_std_stream(a.second) ? a.second : a.output);
   return kExitOk;
 }
 
@@ -124,7 +135,7 @@ int run_to_nurbs(const EditArgs& a) {
   doc["tolerance"] = a.tolerance;
   doc["max_deviation"] = r.max_deviation;
   doc["curve"] = summary(a.output, r.curve);
-  print_json(doc);
+  print_result(doc, a.output);
   return kExitOk;
 }
 
@@ -171,6 +182,7 @@ Command add_edit(CLI::App& app) {
       operation(edit, "to-nurbs", "Convert a law or natural (exact) curve to a NURBS within --tolerance", *a, out);
   to_nurbs->add_option("--tolerance", a->tolerance, "Largest distance NURBS-curve, model units, in (0, 1]")->required();
   return {edit, [a, insert, refine, remove, remove_at, elevate, split, reverse, reparam, to_nurbs] {
+            check_outputs(*a, split->parsed());
             if (to_nurbs->parsed()) return run_to_nurbs(*a);
             if (insert->parsed()) return run_insert_knot(*a);
             if (refine->parsed()) return run_refine(*a);

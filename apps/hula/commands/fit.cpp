@@ -5,6 +5,7 @@
 // strays by index, and with --svg draws the cloud with the curve and the
 // curvature plot before and after fairing.
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <optional>
 
@@ -12,6 +13,7 @@
 #include "commands/study_common.hpp"
 #include "hula/core/error.hpp"
 #include "hula/diffgeom/plot.hpp"
+#include "hula/io/atomic_file.hpp"
 #include "hula/io/fit_study_file.hpp"
 #include "hula/io/json_curve.hpp"
 #include "hula/io/points_file.hpp"
@@ -89,6 +91,10 @@ int run_fit(const FitArgs& a) {
     throw Error(Errc::InvalidArgument, "give at most one of --class and --tolerance", ErrorWhere{.field = "tolerance"});
   io::check_output_path(a.output, "--output");
   if (a.save_study) io::check_output_path(*a.save_study, "--save-study");
+  if (a.save_study && io::is_std_stream(a.output) && io::is_std_stream(*a.save_study))
+    throw Error(Errc::InvalidArgument,
+                "-o and --save-study are both - (standard output): give at most one of them as -",
+                ErrorWhere{.field = "save-study"});
   if (a.svg) check_svg_directory(*a.svg);
   io::FitStudy study;
   if (!a.study.empty()) {
@@ -116,7 +122,7 @@ int run_fit(const FitArgs& a) {
   }
   Json doc = io::fit_result_to_json(r, study.options);
   doc["output"] = a.output;
-  print_json(doc);
+  print_result(doc, a.save_study && io::is_std_stream(*a.save_study) ? *a.save_study : a.output);
   return kExitOk;
 }
 
@@ -132,8 +138,8 @@ Command add_fit(CLI::App& app) {
                   "any order");
   sub->add_option("--class", a->surface_class, "A (tolerance 0.3) or B (0.5), in the data's units")
       ->check(CLI::IsMember({"A", "B"}));
-  sub->add_option("--tolerance", a->tolerance, "Largest distance of a kept point from the curve (default 0.3)")
-      ->check(CLI::PositiveNumber);
+  add_real_option(sub, "--tolerance", a->tolerance, 0.0, std::numeric_limits<double>::max(), true,
+                  "Largest distance of a kept point from the curve, > 0 (default 0.3)");
   sub->add_option("--degree", a->degree, "Highest degree p in [3, 9] (default 5)")->check(CLI::Range(3, 9));
   sub->add_option("--min-degree", a->min_degree,
                   "Lowest degree in [3, degree], taken only when it needs fewer control points (default 3)")

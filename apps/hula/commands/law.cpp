@@ -6,11 +6,14 @@
 // the printed N-th derivative, all roots, the extrema and the integral on an
 // interval (io/law_values.hpp, shared with `hula eval` and the HTTP API).
 #include <cmath>
+#include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "commands/common.hpp"
 #include "hula/core/error.hpp"
+#include "hula/io/atomic_file.hpp"
 #include "hula/io/law_values.hpp"
 #include "hula/law/antiderivative.hpp"
 #include "hula/law/convert.hpp"
@@ -21,6 +24,8 @@
 namespace hula::cli {
 
 namespace {
+
+constexpr double kDefaultToNurbsTolerance = 1e-6;
 
 struct LawArgs {
   std::string expression;
@@ -34,7 +39,7 @@ struct LawArgs {
   bool allow_unconverged = false;
   std::string singularities;
   std::string to_nurbs;
-  double tolerance = 1e-6;
+  std::optional<double> tolerance;  // --to-nurbs; default kDefaultToNurbsTolerance
   std::string output;
 };
 
@@ -101,6 +106,8 @@ void require_scalar(const law::Law& l, const char* option) {
 }
 
 int run_law(const LawArgs& a) {
+  if (!a.output.empty()) io::check_output_path(a.output, "--output");
+  bool printed_to_stdout = false;  // -o -: the curve file alone is what stdout carries
   law::Context ctx;
   law::ParseOptions po;
   po.parameters = {a.parameter};
@@ -236,20 +243,21 @@ int run_law(const LawArgs& a) {
     if (a.output.empty())
       throw Error(Errc::InvalidArgument, "--to-nurbs needs -o FILE for the curve file", ErrorWhere{.field = "output"});
     law::ToNurbsOptions o;
-    o.tolerance = a.tolerance;
+    o.tolerance = a.tolerance.value_or(kDefaultToNurbsTolerance);
     const law::ToNurbsResult n = law::to_nurbs(l, a.parameter, lo, hi, o);
     io::write_curve_file(a.output, n.curve);
+    printed_to_stdout = io::is_std_stream(a.output);
     Json j = Json::object();
     j["output"] = a.output;
     j["domain"] = Json::array({lo, hi});
-    j["tolerance"] = a.tolerance;
+    j["tolerance"] = o.tolerance;
     j["max_deviation"] = n.max_deviation;
     j["degree"] = n.curve.degree();
     j["control_points"] = n.control_points;
     j["segments"] = n.segments;
     doc["nurbs"] = std::move(j);
   }
-  print_json(doc);
+  if (!printed_to_stdout) print_json(doc);
   return kExitOk;
 }
 
@@ -275,8 +283,8 @@ Command add_law(CLI::App& app) {
   sub->add_option("--singularities", args->singularities,
                   "Where the law is undefined or not smooth on a,b (kinks, jumps, poles, knots)");
   sub->add_option("--to-nurbs", args->to_nurbs, "Convert the vector law on a,b to a NURBS curve file (-o)");
-  sub->add_option("--tolerance", args->tolerance, "Largest distance law-NURBS for --to-nurbs (default 1e-6)")
-      ->check(CLI::PositiveNumber);
+  add_real_option(sub, "--tolerance", args->tolerance, 0.0, std::numeric_limits<double>::max(), true,
+                  "Largest distance law-NURBS for --to-nurbs, > 0 (default 1e-6)");
   sub->add_option("-o,--output", args->output, "Curve file written by --to-nurbs");
   return {sub, [args] { return run_law(*args); }};
 }

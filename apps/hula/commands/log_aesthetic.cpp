@@ -74,7 +74,7 @@ int run_log_aesthetic(const LogAestheticArgs& a) {
   }
   doc["points"] = std::move(points);
   if (!a.output.empty()) doc["output"] = write_exact_curve(a.output, c, a.to_nurbs);
-  print_json(doc);
+  print_result(doc, a.output);
   return kExitOk;
 }
 

@@ -60,6 +60,14 @@ void check_svg_directory(const std::filesystem::path& dir) {
     if (::access(dir.c_str(), W_OK | X_OK) != 0)
       throw Error(Errc::IoError, "--svg: cannot create files in '" + dir.string() + "': " + std::strerror(errno),
                   {.field = "svg"});
+    // The figures (and tables) a command writes here are replaced one by one after its computation:
+    // each one already present must pass the output-path policy now, so a symbolic link, FIFO or
+    // directory named like a figure stops the command before it computes anything.
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+      const std::string ext = entry.path().extension().string();
+      if (ext == ".svg" || ext == ".csv") io::check_output_path(entry.path(), "--svg");
+    }
     return;
   }
   // Absent: created later, so its nearest existing ancestor must be a writable directory. A trailing

@@ -72,7 +72,9 @@ void add_study_options(CLI::App* sub, StudyArgs& args, bool has_optimiser = true
 /// @throws hula::Error(Errc::IoError) naming the path if it cannot be written
 void write_svg(const std::filesystem::path& dir, std::string_view name, const io::SvgFigure& figure);
 
-/// Refuses an --svg path that exists and is not a directory, or that cannot be created.
+/// Refuses an --svg path that exists and is not a directory, or that cannot be created, and an
+/// existing directory holding a *.svg or *.csv entry that io::check_output_path refuses (a
+/// symbolic link, FIFO, device or directory where a figure would be written).
 /// @throws hula::Error(Errc::IoError) naming --svg
 void check_svg_directory(const std::filesystem::path& dir);
 

@@ -4,7 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <optional>
 #include <utility>
+#include <vector>
 
 namespace hula::io::json {
 
@@ -88,6 +91,80 @@ void check_json_shape(std::string_view text, std::string_view what, std::size_t 
   }
 }
 
+namespace {
+
+// Where a number literal of `text` overflows a double (1e999): its JSON path, line and column, found by
+// one pass over the bytes that follows objects (member names) and arrays (indices). nlohmann refuses
+// such a literal without saying where; this names it as every other bad value is named. Empty when no
+// literal overflows (the caller then reports without a position).
+struct Overflow {
+  JsonPath path;
+  std::string literal;
+};
+
+std::optional<Overflow> find_overflowing_number(std::string_view text) {
+  struct Frame {
+    bool object = false;
+    bool expect_key = false;
+    std::string key;
+    std::size_t index = 0;
+  };
+  std::vector<Frame> frames;
+  std::size_t line = 1, column = 0;
+  const auto advance = [&](char c) {
+    ++column;
+    if (c == '\n') {
+      ++line;
+      column = 0;
+    }
+  };
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    advance(c);
+    if (c == '"') {
+      std::string raw;
+      for (++i; i < text.size() && text[i] != '"'; ++i) {
+        advance(text[i]);
+        if (text[i] == '\\' && i + 1 < text.size()) {
+          raw.push_back(text[i]);
+          advance(text[++i]);
+        }
+        raw.push_back(text[i]);
+      }
+      if (i < text.size()) advance(text[i]);
+      if (!frames.empty() && frames.back().object && frames.back().expect_key) {
+        frames.back().key = std::move(raw);
+        frames.back().expect_key = false;
+      }
+    } else if (c == '{' || c == '[') {
+      frames.push_back({.object = c == '{', .expect_key = c == '{', .key = {}, .index = 0});
+    } else if (c == '}' || c == ']') {
+      if (!frames.empty()) frames.pop_back();
+    } else if (c == ',') {
+      if (!frames.empty()) {
+        if (frames.back().object)
+          frames.back().expect_key = true;
+        else
+          ++frames.back().index;
+      }
+    } else if (c == '-' || (c >= '0' && c <= '9')) {
+      const std::size_t start = i, start_line = line, start_column = column;
+      while (i + 1 < text.size() && std::string_view("0123456789+-.eE").find(text[i + 1]) != std::string_view::npos)
+        advance(text[++i]);
+      const std::string literal(text.substr(start, i - start + 1));
+      if (std::isfinite(std::strtod(literal.c_str(), nullptr))) continue;
+      JsonPath path;
+      for (const Frame& f : frames) path = f.object ? path.member(f.key) : path.element(f.index);
+      path.where.line = start_line;
+      path.where.column = start_column;
+      return Overflow{std::move(path), literal};
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 Json parse_json_text(std::string_view text, std::string_view what) {
   check_json_shape(text, what, kMaxJsonDepth);
   try {
@@ -120,6 +197,14 @@ Json parse_json_text(std::string_view text, std::string_view what) {
     if (const auto bracket = reason.find("] "); bracket != std::string::npos) reason = reason.substr(bracket + 2);
     constexpr std::size_t kMaxReason = 48;
     if (reason.size() > kMaxReason) reason = reason.substr(0, kMaxReason) + "...";
+    if (std::optional<Overflow> at = find_overflowing_number(text)) {
+      std::string literal = at->literal.size() > kMaxReason ? at->literal.substr(0, kMaxReason) + "..." : at->literal;
+      const std::string name = at->path.text.empty() ? std::string("the document") : at->path.text;
+      throw Error(Errc::NonFiniteInput,
+                  std::string(what) + ": " + name + " = " + literal + " (line " + std::to_string(*at->path.where.line) +
+                      ", column " + std::to_string(*at->path.where.column) + ") is outside the range of a double",
+                  at->path.where);
+    }
     throw Error(Errc::NonFiniteInput, std::string(what) + " holds a number that is not a finite double: " + reason);
   } catch (const Json::exception&) {
     throw Error(Errc::ParseError, std::string(what) + " cannot be read as JSON");

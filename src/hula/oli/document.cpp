@@ -46,6 +46,23 @@ std::optional<store::Blob> encode(const StatePtr& state) {
   return detail::encode_state(*state);
 }
 
+// Equal shared values: the same pointer, or both present and equal.
+template <class T>
+bool same_shared(const std::shared_ptr<const T>& a, const std::shared_ptr<const T>& b) {
+  return a == b || (a && b && *a == *b);
+}
+
+bool same_points(const std::shared_ptr<const PointSet>& a, const std::shared_ptr<const PointSet>& b) {
+  return a == b || (a && b && a->dimension == b->dimension && a->points == b->points);
+}
+
+// True when two states hold the same value (kind, attributes, provenance, constraints and data).
+bool same_value(const detail::EntityState& a, const detail::EntityState& b) {
+  return a.kind == b.kind && a.attributes == b.attributes && a.provenance == b.provenance &&
+         a.constraints == b.constraints && same_shared(a.curve, b.curve) && same_points(a.points, b.points) &&
+         same_shared(a.study, b.study);
+}
+
 bool data_differs(const detail::EntityState& a, const detail::EntityState& b) {
   return a.kind != b.kind || a.curve != b.curve || a.points != b.points || a.study != b.study ||
          a.constraints != b.constraints || a.provenance != b.provenance;
@@ -53,7 +70,7 @@ bool data_differs(const detail::EntityState& a, const detail::EntityState& b) {
 
 // Adds `label` to the change set for a move from `from` to `to`.
 void classify(ChangeSet& set, Label label, const StatePtr& from, const StatePtr& to) {
-  if (from == to) return;
+  if (from == to || (from && to && same_value(*from, *to))) return;
   if (!from) {
     set.added.push_back(label);
   } else if (!to) {
@@ -110,6 +127,10 @@ const StatePtr& Document::Impl::existing(Label label) const {
 void Document::Impl::put(Label label, StatePtr next) {
   HULA_ASSERT(depth > 0, "entity written outside a transaction");
   auto it = entities.find(label);
+  // A write that leaves the entity's value as it is (the same attribute value, removing an absent
+  // attribute, a point moved to where it is) is no change: not journalled, so a transaction made only
+  // of such writes makes no undo step and keeps the redo history (docs/modules/oli.md).
+  if (it != entities.end() && next && same_value(*it->second, *next)) return;
   journal.emplace_back(label, it == entities.end() ? nullptr : it->second);
   if (next) {
     if (it == entities.end())
@@ -378,7 +399,8 @@ Outcome Document::transact(std::string_view name, const std::function<void(Edit&
   step.time = now_iso8601();
   for (const auto& [label, prior] : before) {
     StatePtr after = m.state(label);
-    if (after != prior) step.changes.push_back({label, prior, std::move(after)});
+    if (after != prior && !(after && prior && same_value(*after, *prior)))
+      step.changes.push_back({label, prior, std::move(after)});
   }
   // What observers must redraw: from what they last saw to now.
   ChangeSet changes;

@@ -34,7 +34,7 @@ Json export_json(const Document& document, std::span<const Label> labels) {
   }
   Json out = Json::object();
   out["format"] = "hula-document";
-  out["version"] = 1;
+  out["version"] = kDocumentJsonVersion;
   Json entities = Json::array();
   for (Label l : labels) entities.push_back(entity_to_json(document.get(l)));
   out["entities"] = std::move(entities);
@@ -73,6 +73,17 @@ std::vector<Label> import_json(Edit& edit, const Json& input, std::string_view s
     out.push_back(edit.add_curve(io::curve_from_json(input), {}, import_provenance(source, {})));
     return out;
   }
+  // A document of a later version (or with members this build does not know) is refused, as a curve
+  // file of a later version is: importing it would silently drop what this build cannot read.
+  if (const Json* v = j::optional_member(input, "version")) {
+    if (!v->is_number_integer() || v->get<long long>() < 1 || v->get<long long>() > kDocumentJsonVersion)
+      throw Error(Errc::ParseError,
+                  std::string(source) + ": version = " + j::describe(*v) +
+                      " is not a hula-document version this build reads (1 to " + std::to_string(kDocumentJsonVersion) +
+                      ")",
+                  {.field = "version"});
+  }
+  j::reject_unknown_members(input, j::root_path(""), {"format", "version", "entities"});
   const j::JsonPath root = j::root_path("entities");
   const Json& entities = j::get_array(j::require_member(input, j::root_path(""), "entities"), root);
   for (std::size_t i = 0; i < entities.size(); ++i) {

@@ -16,6 +16,9 @@
 
 namespace hula::oli {
 
+/// The "version" of the hula-document JSON this build writes and the highest it reads.
+inline constexpr int kDocumentJsonVersion = 1;
+
 /// The kind shown to users: the curve's kind name ("nurbs", "bezier", "interpolated",
 /// "hermite", "law", "natural"), "point-set" or "study".
 [[nodiscard]] std::string entity_display_kind(const Entity& entity);
@@ -27,7 +30,9 @@ namespace hula::oli {
 /// Adds the entities of `input` (a curve file, a points array, or a hula-document) inside a
 /// transaction; returns their new labels in file order.
 /// @param source the file name recorded in the provenance
-/// @throws hula::Error(Errc::ParseError) naming the member for anything else; the codecs' errors
+/// @throws hula::Error(Errc::ParseError) naming the member for anything else, and for a
+///   hula-document whose "version" is not 1..kDocumentJsonVersion or that has a member other than
+///   "format", "version" and "entities" (field "version" / the member); the codecs' errors
 std::vector<Label> import_json(Edit& edit, const Json& input, std::string_view source);
 
 /// Adds a point set read from a point file (io::parse_points: text columns, airfoil files, JSON) inside

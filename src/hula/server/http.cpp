@@ -3,6 +3,7 @@
 // cap, error bodies and the error-code-to-status table.
 #include "hula/server/http.hpp"
 
+#include <new>
 #include <string_view>
 
 #include "hula/io/error_json.hpp"
@@ -84,6 +85,16 @@ unsigned http_status(Errc code) noexcept {
 
 Response error_response(const Error& error) {
   return json_response(http_status(error.code()), io::error_to_json(error));
+}
+
+HttpError out_of_memory_error(const std::bad_alloc& e) {
+  const std::string what = e.what();
+  return HttpError(503, "OutOfMemory",
+                   "out of memory: " +
+                       (what != std::bad_alloc().what()
+                            ? what
+                            : std::string("the request needs more memory than the server can allocate")) +
+                       "; it was not completed and no document was changed");
 }
 
 Response error_response(const HttpError& error) {

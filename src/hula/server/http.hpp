@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <map>
 #include <memory>
+#include <new>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -89,6 +90,10 @@ class HttpError : public std::runtime_error {
 [[nodiscard]] Response error_response(const Error& error);
 /// {"error": {...}} of a protocol refusal.
 [[nodiscard]] Response error_response(const HttpError& error);
+/// The refusal of a request that ran out of memory (std::bad_alloc, or the exchange helper's
+/// oli::ExchangeOutOfMemory whose what() is quoted): 503 "OutOfMemory", as in docs/server.md's error
+/// table; a document change it was making is rolled back.
+[[nodiscard]] HttpError out_of_memory_error(const std::bad_alloc& e);
 
 /// Decodes %XX escapes (and nothing else: '+' stays '+').
 /// @throws HttpError(400, "BadRequest") for a malformed escape or a decoded NUL

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <exception>
 #include <latch>
+#include <new>
 
 #include "hula/io/error_json.hpp"
 
@@ -210,9 +211,13 @@ void JobPool::run(const std::shared_ptr<Job>& job) {
   } catch (const std::exception& e) {
     {
       std::lock_guard lock(job->mutex_);
+      const bool out_of_memory = dynamic_cast<const std::bad_alloc*>(&e) != nullptr;
       Json err = Json::object();
-      err["code"] = "InternalError";
-      err["message"] = e.what();
+      err["code"] = out_of_memory ? "OutOfMemory" : "InternalError";
+      err["message"] = out_of_memory ? std::string(
+                                           "out of memory: the job needs more memory than the server can "
+                                           "allocate")
+                                     : std::string(e.what());
       err["where"] = Json::object();
       job->error_ = std::move(err);
     }

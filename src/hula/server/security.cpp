@@ -9,7 +9,8 @@
 #include <cctype>
 #include <cerrno>
 #include <cstring>
-#include <fstream>
+
+#include "hula/io/atomic_file.hpp"
 
 namespace hula::server {
 
@@ -55,10 +56,19 @@ bool origin_allowed(std::string_view origin, const SecurityPolicy& policy) noexc
   return host_allowed(origin.substr(kScheme.size()), policy);
 }
 
+// The credentials of "Authorization: Bearer TOKEN": the scheme is case-insensitive (RFC 7235 2.1) and
+// separated from the token by one or more spaces.
+std::optional<std::string_view> bearer_token(std::string_view header) noexcept {
+  constexpr std::string_view kBearer = "bearer";
+  if (header.size() <= kBearer.size() || header[kBearer.size()] != ' ') return std::nullopt;
+  for (std::size_t i = 0; i < kBearer.size(); ++i)
+    if (std::tolower(static_cast<unsigned char>(header[i])) != kBearer[i]) return std::nullopt;
+  return trim(header.substr(kBearer.size()));
+}
+
 bool has_token(const RequestHead& head, const SecurityPolicy& policy) noexcept {
-  constexpr std::string_view kBearer = "Bearer ";
-  if (head.authorization && head.authorization->starts_with(kBearer))
-    return constant_time_equal(trim(head.authorization->substr(kBearer.size())), policy.token);
+  if (head.authorization)
+    if (const auto token = bearer_token(*head.authorization)) return constant_time_equal(*token, policy.token);
   if (head.cookie)
     if (const auto value = cookie_token(*head.cookie)) return constant_time_equal(*value, policy.token);
   return false;
@@ -97,6 +107,11 @@ std::optional<HttpError> check_request(const RequestHead& head, const SecurityPo
     return HttpError(414, "UriTooLong",
                      "the request target has " + std::to_string(head.target.size()) +
                          " bytes, more than the limit of " + std::to_string(policy.max_target));
+  // RFC 7230 5.4: a request with more than one Host header is answered 400 (which one is "the" host
+  // is ambiguous between proxies and this server).
+  if (head.host_count > 1)
+    return HttpError(400, "BadRequest",
+                     "the request has " + std::to_string(head.host_count) + " Host headers (exactly one is allowed)");
   if (!head.host || !host_allowed(*head.host, policy))
     return HttpError(403, "ForbiddenHost",
                      head.host ? "Host '" + std::string(*head.host) + "' is not this server (DNS rebinding guard)"
@@ -148,11 +163,15 @@ std::string generate_token() {
 }
 
 std::string read_token_file(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::string line;
-  if (!in || !std::getline(in, line))
-    throw Error(Errc::IoError, "cannot read the token file '" + path.string() + "'", ErrorWhere{.field = "token-file"});
-  const std::string token(trim(line));
+  // A regular file (or -) of at most kMaxTokenFileBytes: a FIFO or device is refused before it can
+  // block or stream without end (io::read_text_file).
+  std::string text;
+  try {
+    text = io::read_text_file(path, kMaxTokenFileBytes);
+  } catch (const Error& e) {
+    throw Error(Errc::IoError, "the token file: " + e.message(), ErrorWhere{.field = "token-file"});
+  }
+  const std::string token(trim(std::string_view(text).substr(0, text.find('\n'))));
   if (token.size() < kMinTokenLength)
     throw Error(Errc::InvalidArgument,
                 "the token in '" + path.string() + "' has " + std::to_string(token.size()) +

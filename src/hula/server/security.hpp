@@ -42,6 +42,8 @@ struct RequestHead {
   std::string_view method{};
   std::string_view target{};
   std::optional<std::string_view> host{};
+  /// How many Host headers the request has (more than one is refused, 400).
+  std::size_t host_count = 1;
   std::optional<std::string_view> origin{};
   std::optional<std::string_view> authorization{};
   std::optional<std::string_view> cookie{};
@@ -52,7 +54,8 @@ struct RequestHead {
 /// loopback address).
 [[nodiscard]] std::vector<std::string> allowed_hosts(std::string_view bound_host, unsigned port);
 
-/// Checks a request head in this order: target length (414), Host (403), Origin (403), body
+/// Checks a request head in this order: target length (414), a duplicate Host header (400), Host
+/// (403), Origin (403), body
 /// length (413), token on /api/ routes other than GET /api/health (401), and the document name in
 /// /api/documents/{name} paths (400).
 /// @returns the refusal, or nothing when the request may reach the router
@@ -68,8 +71,12 @@ struct RequestHead {
 /// @throws hula::Error(Errc::IoError) if the kernel has no randomness to give
 [[nodiscard]] std::string generate_token();
 
+/// Largest token file read (a token is one line of tens of characters).
+inline constexpr std::size_t kMaxTokenFileBytes = 4096;
+
 /// Reads a token from the first line of a file (surrounding white space removed).
-/// @throws hula::Error(Errc::IoError) if the file cannot be read
+/// @throws hula::Error(Errc::IoError) if the file cannot be read, is not a regular file (a FIFO or a
+///   device such as /dev/zero is refused without reading it) or is longer than kMaxTokenFileBytes
 /// @throws hula::Error(Errc::InvalidArgument) if the token has fewer than 32 characters or holds
 ///   characters outside printable ASCII without spaces and ';', ',' (which would break the cookie)
 [[nodiscard]] std::string read_token_file(const std::filesystem::path& path);

@@ -19,6 +19,7 @@
 #include <cmath>
 #include <iostream>
 #include <mutex>
+#include <new>
 #include <thread>
 #include <vector>
 
@@ -181,6 +182,7 @@ class Session : public std::enable_shared_from_this<Session> {
     head.method = view(req.method_string());
     head.target = view(req.target());
     head.host = header(req, http::field::host);
+    head.host_count = req.count(http::field::host);
     head.origin = header(req, http::field::origin);
     head.authorization = header(req, http::field::authorization);
     head.cookie = header(req, http::field::cookie);
@@ -221,6 +223,8 @@ class Session : public std::enable_shared_from_this<Session> {
       response = error_response(e);
     } catch (const Error& e) {
       response = error_response(e);
+    } catch (const std::bad_alloc& e) {
+      response = error_response(out_of_memory_error(e));
     } catch (const std::exception& e) {
       response = error_response(HttpError(500, "InternalError", e.what()));
     }

@@ -89,6 +89,7 @@ describe('server JSON adapters', () => {
           ],
           curvature_monotonicity: { monotone: true, pieces: [], violations: [] },
           maximum_curvature: { value: 0, t: 0 },
+          self_intersections: { tolerance: 1e-9, points: [], overlaps: [] },
         },
       },
       'arclength',

@@ -56,6 +56,8 @@ export class Client {
   private readonly listeners = new Set<Listener>();
   /** Called when a request fails because the server is unreachable. */
   onOffline: (() => void) | null = null;
+  /** Called when the server refuses the page's token (401: restarted with a new one). */
+  onUnauthorized: (() => void) | null = null;
 
   /**
    * `token` is sent as a Bearer token when given; the page itself gives none:
@@ -122,6 +124,7 @@ export class Client {
         }
       }
       if (!response.ok) {
+        if (response.status === 401) this.onUnauthorized?.();
         if (isErrorBody(parsed)) throw new ApiError(response.status, parsed.error);
         throw new ApiError(response.status, {
           code: `Http${response.status}`,

@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { spanOf, valueFloor } from './graph';
+import { graphMarkers, readout, spanOf, valueFloor } from './graph';
+import type { Analysis } from '../api/types';
 import { boxDiagonal, paddedRange } from './scale';
 
 /** A seeded linear congruential generator in [-1, 1) (the noise is reproducible). */
@@ -66,5 +67,48 @@ describe('value axis floor', () => {
     const floor = valueFloor('kappa', kappa, 50);
     expect(floor).toBeCloseTo(0.05 * 0.2, 15);
     expect(paddedRange(kappa, 0.05, floor)).toEqual(paddedRange(kappa));
+  });
+});
+
+describe('graph markers and readout', () => {
+  // Five samples at t = 0, 0.25, …, 1 with arc lengths 0, 10, …, 40.
+  const a: Analysis = {
+    t: [0, 0.25, 0.5, 0.75, 1],
+    s: [0, 10, 20, 30, 40],
+    points: [],
+    kappa: [0.1, 0.2, 0.5, 0.2, 0],
+    tau: [0.01, 0.03, 0.02, -0.01, 0.02],
+    speed: [],
+    planar: false,
+    frames: [],
+    fins: {},
+    combs: {},
+    features: [
+      { kind: 'inflection', t: 1, s: 40 },
+      { kind: 'curvature-max', t: 0.5, s: 20 },
+      { kind: 'curvature-max', t: 0.5000001, s: 20 }, // the same maximum listed twice
+      { kind: 'torsion-max', t: 0.25, s: 10 },
+      { kind: 'torsion-min', t: 0.75, s: 30 },
+      { kind: 'knot', t: 0.5, s: 20 },
+    ],
+  };
+  const xs = (by: 's' | 't'): Float64Array => Float64Array.from(by === 's' ? a.s : a.t);
+
+  it('the τ graph marks τ extrema only (and knots), at τ values', () => {
+    const m = graphMarkers(a, 'tau', 's', xs('s'), Float64Array.from(a.tau as number[]));
+    expect(m.map((x) => x.kind)).toEqual(['torsion-max', 'torsion-min', 'knot']);
+    expect(m[0]).toEqual({ x: 10, y: 0.03, kind: 'torsion-max' });
+    expect(m[1]).toEqual({ x: 30, y: -0.01, kind: 'torsion-min' });
+  });
+
+  it('the κ graph marks one curvature maximum, inflections and knots, against t when asked', () => {
+    const m = graphMarkers(a, 'kappa', 't', xs('t'), Float64Array.from(a.kappa as number[]));
+    expect(m.map((x) => x.kind)).toEqual(['inflection', 'curvature-max', 'knot']);
+    expect(m[1]).toEqual({ x: 0.5, y: 0.5, kind: 'curvature-max' });
+  });
+
+  it('reads s or t as plotted, κ, the radius and τ', () => {
+    expect(readout(a, 2, 's')).toBe('s = 20 · κ = 0.5 · R = 2 · τ = 0.02');
+    expect(readout(a, 4, 't')).toBe('t = 1 · κ = 0 · R = ∞ · τ = 0.02');
   });
 });

@@ -87,6 +87,70 @@ export interface Marker {
   kind: string;
 }
 
+/** Which of the server's features a graph marks: its own quantity's extrema, and the knots. */
+export function ownsFeature(q: Quantity, kind: string): boolean {
+  if (kind === 'knot') return true;
+  switch (q) {
+    case 'tau':
+    case 'logtau':
+      return kind.startsWith('torsion-');
+    case 'kappa':
+    case 'logkappa':
+    case 'radius':
+      // Inflections are where κ changes sign: a κ feature, not a τ one.
+      return kind.startsWith('curvature-') || kind === 'inflection';
+    case 'speed':
+      return false;
+  }
+}
+
+/**
+ * The markers of a graph: the features it owns (ownsFeature) at their
+ * abscissa (s or t as plotted), at the plotted value of the nearest sample;
+ * one marker per kind and sample (a feature the server lists twice, or two
+ * that fall on one sample, is drawn once).
+ */
+export function graphMarkers(
+  a: Analysis,
+  q: Quantity,
+  abscissa: Abscissa,
+  xs: Float64Array,
+  ys: Float64Array,
+): Marker[] {
+  const byS = abscissa === 's' && a.s.length === a.t.length;
+  const seen = new Set<string>();
+  const out: Marker[] = [];
+  for (const f of a.features) {
+    if (!ownsFeature(q, f.kind)) continue;
+    const x = byS ? (f.s ?? NaN) : f.t;
+    if (!Number.isFinite(x) || xs.length === 0) continue;
+    const i = nearestIndex(xs, x);
+    const k = `${f.kind}@${i}`;
+    if (seen.has(k)) continue;
+    seen.add(k);
+    out.push({ x, y: ys[i]!, kind: f.kind });
+  }
+  return out;
+}
+
+const fmt = (v: number | null | undefined): string =>
+  v === null || v === undefined || !Number.isFinite(v) ? '—' : String(Number(v.toPrecision(4)));
+
+/**
+ * The hover readout of sample `i`: the abscissa as plotted (s or t), κ, the
+ * radius 1/|κ| and τ, e.g. "s = 12.5 · κ = 0.0123 · R = 81.3 · τ = 0".
+ */
+export function readout(a: Analysis, i: number, abscissa: Abscissa): string {
+  const byS = abscissa === 's' && a.s.length === a.t.length;
+  const x = byS ? a.s[i] : a.t[i];
+  const k = a.kappa[i];
+  const r = k === null || k === undefined || k === 0 ? null : 1 / Math.abs(k);
+  return `${byS ? 's' : 't'} = ${fmt(x)} · κ = ${fmt(k)} · R = ${r === null ? '∞' : fmt(r)} · τ = ${fmt(a.tau[i])}`;
+}
+
+/** What a graph's overlay is: the curve before the last edit, or the fairing assistant's ghost. */
+export type OverlayKind = 'before' | 'faired';
+
 export class Graph {
   readonly el: HTMLElement;
   private plot: uPlot | null = null;
@@ -104,6 +168,7 @@ export class Graph {
   /** The curve's size (bounding-box diagonal of the shown analysis), for valueFloor. */
   private size = 0;
   private dragging = false;
+  private plotShape = '';
 
   constructor(
     parent: HTMLElement,
@@ -116,6 +181,11 @@ export class Graph {
     this.el.dataset['graph'] = id;
     this.el.setAttribute('role', 'img');
     parent.appendChild(this.el);
+    this.readoutEl = document.createElement('div');
+    this.readoutEl.className = 'readout';
+    this.readoutEl.dataset['readout'] = id;
+    this.readoutEl.setAttribute('aria-live', 'off');
+    parent.appendChild(this.readoutEl);
     new ResizeObserver(() => {
       this.plot?.setSize(this.sizeOf());
     }).observe(this.el);
@@ -128,8 +198,20 @@ export class Graph {
     };
   }
 
-  /** Show an analysis (and optionally an overlay series, e.g. the fairing ghost). */
-  show(a: Analysis | undefined, overlay?: Analysis): void {
+  /** The analysis shown (for the hover readout). */
+  private shown: Analysis | undefined;
+  private overlayKind: OverlayKind = 'before';
+  /** The readout line under the graph's selectors (hover). */
+  readonly readoutEl: HTMLElement;
+
+  /**
+   * Show an analysis, and optionally an overlay series: the curve before the
+   * last edit (grey, solid, as its ghost in the views) or the fairing
+   * assistant's ghost (green, dashed, as in the views).
+   */
+  show(a: Analysis | undefined, overlay?: Analysis, overlayKind: OverlayKind = 'before'): void {
+    this.shown = a;
+    this.overlayKind = overlayKind;
     if (!a) {
       this.xs = new Float64Array();
       this.ys = new Float64Array();
@@ -149,24 +231,10 @@ export class Graph {
         (ox[ox.length - 1]! - ox[0]!) / (this.xs[this.xs.length - 1]! - this.xs[0]! || 1);
       this.overlay = this.xs.map((x) => oy[nearestIndex(ox, ox[0]! + (x - this.xs[0]!) * scaleX)]!);
     }
-    this.markers = [];
-    if (a) {
-      const byS = this.abscissa === 's' && a.s.length === a.t.length;
-      // The server's features (no extremum on a flat κ: diffgeom's one significance rule); the torsion
-      // graph marks the torsion extrema, the others the curvature extrema.
-      const own = this.quantity === 'tau' || this.quantity === 'logtau' ? 'torsion-' : 'curvature-';
-      for (const f of a.features) {
-        if (/-(max|min)$/.test(f.kind) && !f.kind.startsWith(own)) continue;
-        const x = byS ? (f.s ?? NaN) : f.t;
-        if (!Number.isFinite(x) || this.xs.length === 0) continue;
-        const i = nearestIndex(this.xs, x);
-        this.markers.push({ x, y: this.ys[i]!, kind: f.kind });
-      }
-    }
-    this.el.setAttribute(
-      'aria-label',
-      `${QUANTITY_LABELS[this.quantity]} against ${this.abscissa}`,
-    );
+    this.markers = a ? graphMarkers(a, this.quantity, this.abscissa, this.xs, this.ys) : [];
+    this.el.dataset['markers'] = this.markers.map((m) => m.kind).join(' ');
+    this.el.dataset['overlay'] = this.overlay ? overlayKind : '';
+    this.el.setAttribute('aria-label', `${QUANTITY_LABELS[this.quantity]} against ${this.plotted}`);
     this.el.dataset['samples'] = String(this.xs.length);
     this.redraw();
   }
@@ -187,10 +255,13 @@ export class Graph {
     }
     const data: uPlot.AlignedData = [this.xs, this.ys, ...(this.overlay ? [this.overlay] : [])];
     const seriesCount = this.overlay ? 3 : 2;
-    if (this.plot && this.plot.series.length === seriesCount) {
+    // A new abscissa, quantity or overlay kind rebuilds the plot (its axis label and series styles).
+    const shape = `${seriesCount} ${this.plotted} ${this.quantity} ${this.overlayKind}`;
+    if (this.plot && this.plotShape === shape) {
       this.plot.setData(data);
       return;
     }
+    this.plotShape = shape;
     this.plot?.destroy();
     this.plot = new uPlot(this.options(seriesCount), data, this.el);
     this.attachDrag();
@@ -198,11 +269,17 @@ export class Graph {
 
   private options(seriesCount: number): uPlot.Options {
     const series: uPlot.Series[] = [
-      { label: this.abscissa },
+      { label: this.plotted },
       { label: QUANTITY_LABELS[this.quantity], stroke: '#d64bd6', width: 1.5, spanGaps: false },
     ];
+    // One meaning per line style: grey solid is the curve before the edit (its ghost in the views),
+    // green dashed the fairing assistant's ghost (dashed green in the views).
     if (seriesCount === 3)
-      series.push({ label: 'ghost', stroke: '#7fe3a0', width: 1, dash: [4, 3] });
+      series.push(
+        this.overlayKind === 'faired'
+          ? { label: 'faired', stroke: '#7fe3a0', width: 1, dash: [4, 3] }
+          : { label: 'before', stroke: 'rgba(200, 210, 224, 0.55)', width: 1 },
+      );
     return {
       ...this.sizeOf(),
       legend: { show: false },
@@ -216,7 +293,7 @@ export class Graph {
         {
           stroke: '#aab4c3',
           grid: { stroke: '#2b323d' },
-          label: this.abscissa,
+          label: this.plotted === 's' ? 'arc length s' : 'parameter t',
           labelSize: 14,
           size: 30,
           values: (_u, splits) => tickLabels(splits),
@@ -240,6 +317,7 @@ export class Graph {
             if (this.dragging) return;
             const i = u.cursor.idx;
             this.onHover?.(i ?? null);
+            this.showReadout(i ?? null);
           },
         ],
         draw: [
@@ -302,8 +380,28 @@ export class Graph {
     over.addEventListener('pointercancel', end);
   }
 
+  /** The label the plot draws under its abscissa axis (what the user reads). */
+  get xAxisLabel(): string | undefined {
+    const label = this.plot?.axes[0]?.label;
+    return typeof label === 'string' ? label : undefined;
+  }
+
+  /** The abscissa as plotted: s when asked and the analysis has it, else t. */
+  get plotted(): Abscissa {
+    const a = this.shown;
+    return this.abscissa === 's' && (!a || a.s.length === a.t.length) ? 's' : 't';
+  }
+
+  /** The readout of a sample (hover), or none. */
+  showReadout(index: number | null): void {
+    const a = this.shown;
+    this.readoutEl.textContent =
+      a && index !== null && index < a.t.length ? readout(a, index, this.abscissa) : '';
+  }
+
   /** Show the cursor at a sample (hover on the curve). */
   highlight(index: number | null): void {
+    this.showReadout(index);
     if (!this.plot) return;
     if (index === null || index >= this.xs.length) {
       this.plot.setCursor({ left: -10, top: -10 }, false);

@@ -137,6 +137,8 @@ export class OptimisePanel {
       void this.fill();
     });
     this.kind.addEventListener('change', () => {
+      // ga / hybrid / direct are curvature matching's methods only (NSGA-II has its own).
+      this.method.hidden = this.kind.value !== 'match-curvature';
       void this.fill();
     });
     this.method.addEventListener('change', () => {
@@ -290,8 +292,8 @@ export class OptimisePanel {
     });
     li.appendChild(again);
     this.runs.prepend(li);
-    // A study's result curve is stored by the server (document events bring it in).
-    void this.app.reload();
+    // A study's result curves are stored by the server: listed under the study and selected.
+    void this.app.studyFinished(job);
   }
 
   private drawConvergence(): void {

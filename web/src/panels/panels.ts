@@ -6,6 +6,8 @@ import type { App } from '../app';
 import { ALL_FINS, SPACE_FINS, handlesOf } from '../app';
 import type { CurveFile, EndCondition, FinKind, Parameterisation } from '../api/types';
 import { el } from './dom';
+import { FIN_COLOURS } from '../viewport/viewports';
+import { curveColour, hex } from '../store/viewstate';
 
 function section(parent: HTMLElement, title: string, id: string): HTMLElement {
   const d = el('details', { id, open: '' });
@@ -46,6 +48,8 @@ export const SHORTCUTS: [string, string][] = [
 ];
 
 export class Panels {
+  private readonly objects: HTMLElement;
+  private objectsKey = '-';
   private readonly props: HTMLElement;
   private readonly interrogate: HTMLElement;
   private readonly historyBox: HTMLElement;
@@ -57,6 +61,7 @@ export class Panels {
     private readonly app: App,
     root: HTMLElement,
   ) {
+    this.objects = section(root, 'Objects', 'panel-objects');
     this.props = section(root, 'Curve', 'panel-curve');
     this.interrogate = section(root, 'Interrogate', 'panel-interrogate');
     this.designBox = section(root, 'Design by curvature', 'panel-design');
@@ -66,9 +71,94 @@ export class Panels {
   }
 
   update(): void {
+    this.updateObjects();
     this.updateProps();
     this.updateInterrogate();
     this.updateHistory();
+  }
+
+  // ---- object list ----------------------------------------------------------
+
+  /**
+   * Every entity of the document: its colour, name and label, and for a curve
+   * visibility and lock; a study's result curves say which study made them.
+   * A click on a row selects the curve.
+   */
+  private updateObjects(): void {
+    const app = this.app;
+    const entities = [...app.store.entities.values()];
+    const key = JSON.stringify([
+      app.selected,
+      entities.map((e) => [
+        e.label,
+        e.name,
+        e.kind,
+        e.attributes['visible'],
+        e.attributes['locked'],
+        app.studyOf.get(String(e.label)),
+      ]),
+    ]);
+    if (key === this.objectsKey) return;
+    this.objectsKey = key;
+    const box = this.objects;
+    box.replaceChildren();
+    if (entities.length === 0) {
+      box.appendChild(el('p', {}, 'No objects yet: draw a curve (S, B, N, H) or import one (I).'));
+      return;
+    }
+    const list = el('ul', { class: 'objects', 'aria-label': 'Objects' });
+    for (const e of entities) {
+      const label = String(e.label);
+      const isCurve = e.curve !== undefined;
+      const li = el('li', { 'data-label': label });
+      if (label === app.selected) li.classList.add('selected');
+      const swatch = el('span', { class: 'swatch' });
+      if (isCurve) swatch.style.background = hex(curveColour(label));
+      const study = app.studyOf.get(label);
+      const studyName = study ? app.store.entities.get(study)?.name : undefined;
+      const name = el(
+        'button',
+        {
+          class: 'object-name',
+          'aria-label': `Select ${e.name || label}`,
+          title: `${e.kind} ${label}`,
+        },
+        `${e.name || '(unnamed)'} · ${label}${study ? ` ← ${studyName ?? 'study'} ${study}` : ''}`,
+      );
+      name.addEventListener('click', () => {
+        if (isCurve) app.select(label);
+      });
+      li.append(swatch, name);
+      if (isCurve) {
+        const vis = el('input', {
+          type: 'checkbox',
+          'aria-label': `Show ${e.name || label}`,
+          title: 'visible',
+          'data-visible': label,
+        });
+        vis.checked = !app.isHidden(label);
+        vis.addEventListener('change', () => {
+          void app.setHidden(label, !vis.checked);
+        });
+        const lock = el('input', {
+          type: 'checkbox',
+          'aria-label': `Lock ${e.name || label}`,
+          title: 'locked: not picked in the views, not dragged',
+          'data-locked': label,
+        });
+        lock.checked = app.isLocked(label);
+        lock.addEventListener('change', () => {
+          void app.setLocked(label, lock.checked);
+        });
+        const vl = el('label', { class: 'inline', title: 'visible' });
+        vl.append(vis, document.createTextNode('show'));
+        const ll = el('label', { class: 'inline', title: 'locked' });
+        ll.append(lock, document.createTextNode('lock'));
+        li.append(vl, ll);
+      }
+      list.appendChild(li);
+    }
+    box.appendChild(list);
   }
 
   // ---- properties ---------------------------------------------------------
@@ -209,7 +299,14 @@ export class Panels {
       cb.addEventListener('change', () => {
         this.applySettings();
       });
-      label.append(cb, document.createTextNode(f));
+      // The legend: each fin kind's colour in the views, beside its name.
+      const swatch = el('span', {
+        class: 'swatch',
+        'data-swatch': f,
+        title: `${f} fins are drawn in this colour`,
+      });
+      swatch.style.background = `#${FIN_COLOURS[f].toString(16).padStart(6, '0')}`;
+      label.append(cb, swatch, document.createTextNode(f));
       row.appendChild(label);
       this.finBoxes.set(f, cb);
     }
@@ -259,16 +356,46 @@ export class Panels {
     box.appendChild(this.badges);
   }
 
+  /**
+   * The fin settings from the inputs. An invalid scale or sample count is
+   * reported (the input is marked, the status line says what is allowed) and
+   * kept on screen for correction; the curve keeps its last valid setting.
+   */
   private applySettings(): void {
     const label = this.app.selected;
     if (!label) return;
     const s = this.app.settingsOf(label);
     s.fins = ALL_FINS.filter((f) => this.finBoxes.get(f)!.checked);
     const scale = Number(this.scaleInput.value);
-    const samples = Math.round(Number(this.samplesInput.value));
-    if (Number.isFinite(scale) && scale > 0) s.scale = scale;
-    if (samples >= 2 && samples <= 5000) s.samples = samples;
+    const samples = Number(this.samplesInput.value);
+    const errors: string[] = [];
+    const check = (input: HTMLInputElement, ok: boolean, message: string): void => {
+      input.classList.toggle('invalid', !ok);
+      input.setAttribute('aria-invalid', String(!ok));
+      input.title = ok ? '' : message;
+      if (!ok) errors.push(message);
+    };
+    const scaleOk = this.scaleInput.value.trim() !== '' && Number.isFinite(scale) && scale > 0;
+    const samplesOk =
+      this.samplesInput.value.trim() !== '' &&
+      Number.isInteger(samples) &&
+      samples >= 2 &&
+      samples <= 5000;
+    check(
+      this.scaleInput,
+      scaleOk,
+      `Fin scale must be a number > 0 (got "${this.scaleInput.value}"); the fins keep scale ${s.scale}`,
+    );
+    check(
+      this.samplesInput,
+      samplesOk,
+      `Fin samples must be a whole number from 2 to 5000 (got "${this.samplesInput.value}"); the fins keep ${s.samples}`,
+    );
+    if (scaleOk) s.scale = scale;
+    if (samplesOk) s.samples = samples;
     s.frames = this.framesBox.checked;
+    if (errors.length) this.app.setStatus(errors.join('; '), true);
+    this.app.viewStateChanged();
     this.app.refreshAnalysis(label);
   }
 
@@ -282,8 +409,10 @@ export class Panels {
         // Planar curves: torsion, binormal and Combescure fins carry nothing (8.3–8.6).
         cb.disabled = a?.planar === true && SPACE_FINS.has(f);
       }
-      this.scaleInput.value = String(s.scale);
-      this.samplesInput.value = String(s.samples);
+      // An input marked invalid keeps what the user typed until it is corrected.
+      if (!this.scaleInput.classList.contains('invalid')) this.scaleInput.value = String(s.scale);
+      if (!this.samplesInput.classList.contains('invalid'))
+        this.samplesInput.value = String(s.samples);
       this.framesBox.checked = s.frames;
     }
     this.badges.replaceChildren();
@@ -439,6 +568,48 @@ export class Panels {
         const existing = (f.elements.namedItem('existing') as HTMLSelectElement).value;
         const name = existing || (f.elements.namedItem('name') as HTMLInputElement).value;
         void this.app.run(() => this.app.open(name));
+      },
+    );
+  }
+
+  /**
+   * Re-open the workbench at the address a restarted server printed (its
+   * start line's url, token included), on the same document.
+   */
+  reopenDialog(): void {
+    this.dialog(
+      "Re-open with the server's new address",
+      (f) => {
+        f.appendChild(
+          el(
+            'p',
+            {},
+            'The server was restarted (new token or port). Paste the address it printed, e.g. http://127.0.0.1:PORT/?token=TOKEN',
+          ),
+        );
+        this.field(f, 'Address', 'address', '');
+      },
+      (f) => {
+        const text = (f.elements.namedItem('address') as HTMLInputElement).value.trim();
+        let url: URL;
+        try {
+          url = new URL(text);
+        } catch {
+          this.app.setStatus(
+            `Re-open: "${text}" is not an address (http://127.0.0.1:PORT/?token=…)`,
+            true,
+          );
+          return;
+        }
+        if (!url.searchParams.get('token')) {
+          this.app.setStatus(
+            'Re-open: the address has no ?token= (copy the whole line the server printed)',
+            true,
+          );
+          return;
+        }
+        url.hash = `doc=${encodeURIComponent(this.app.store.name)}`;
+        location.assign(url.toString());
       },
     );
   }

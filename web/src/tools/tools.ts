@@ -17,6 +17,8 @@ export interface ToolHost {
 
 export interface Tool {
   readonly name: ToolName;
+  /** What the tool wants next, for the status line when it starts and after it made a curve. */
+  readonly hint: string;
   /** Left click; returns true when handled. */
   click(view: ViewName, ev: PointerEvent): void;
   /** Right click (finish / natural tangent). */
@@ -67,13 +69,14 @@ const fmt = (p: Vec3): string => p.map((x) => Number(x.toPrecision(6))).join(', 
  */
 export class SplineTool implements Tool {
   readonly name = 'spline';
+  readonly hint = 'Spline: left-click data points, right-click to finish';
   private points: Vec3[] = [];
   private phase: 'points' | 'start' | 'end' = 'points';
   private start: EndCondition = 'natural';
   private cursor: Vec3 | null = null;
 
   constructor(private readonly host: ToolHost) {
-    host.status('Spline: left-click data points, right-click to finish');
+    host.status(this.hint);
   }
 
   click(view: ViewName, ev: PointerEvent): void {
@@ -157,7 +160,7 @@ export class SplineTool implements Tool {
     this.phase = 'points';
     this.start = 'natural';
     this.host.preview([]);
-    this.host.status('Spline: left-click data points, right-click to finish');
+    this.host.status(this.hint);
   }
 
   cancel(): void {
@@ -178,7 +181,11 @@ export class ControlPointTool implements Tool {
     private readonly host: ToolHost,
     private readonly degree = 3,
   ) {
-    host.status(`${this.title}: left-click control points in any view, right-click to finish`);
+    host.status(this.hint);
+  }
+
+  get hint(): string {
+    return `${this.title}: left-click control points in any view, right-click to finish`;
   }
 
   private get title(): string {
@@ -245,12 +252,13 @@ export class ControlPointTool implements Tool {
  */
 export class HermiteTool implements Tool {
   readonly name = 'hermite';
+  readonly hint = 'Hermite: click a point, then its tangent handle; right-click to finish';
   private points: Vec3[] = [];
   private tangents: Vec3[] = [];
   private cursor: Vec3 | null = null;
 
   constructor(private readonly host: ToolHost) {
-    host.status('Hermite: click a point, then its tangent handle; right-click to finish');
+    host.status(this.hint);
   }
 
   click(view: ViewName, ev: PointerEvent): void {

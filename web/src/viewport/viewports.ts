@@ -59,6 +59,10 @@ export interface CurveDrawing {
   fins: readonly FinKind[];
   /** Frenet frames (T, N, B from the server) drawn along the curve. */
   frames: boolean;
+  /** The curve's own colour when not selected (the object list shows it). */
+  colour: number;
+  /** False: the curve and everything of it is hidden (object list). */
+  visible: boolean;
 }
 
 const VIEW_LABELS: Record<ViewName, string> = {
@@ -76,7 +80,7 @@ export class Viewports {
   readonly views: View[];
   layout: Layout = 'quad';
   active: ViewName = 'top';
-  snap = true;
+  snap = false;
   private readonly curves = new Map<string, CurveView>();
   private readonly preview: THREE.Line;
   private readonly previewPoints: THREE.Points;
@@ -351,6 +355,13 @@ export class Viewports {
     return snap ? snapToGrid(onPlane, plane, this.view(name).gridStep) : onPlane;
   }
 
+  /** A point on a plane, snapped to the view's grid when snapping is on. */
+  snapped(name: ViewName, p: Vec3, plane: WorkingPlane): Vec3 {
+    const [u, v] = toPlane(p, plane);
+    const onPlane = fromPlane(u, v, plane);
+    return this.snap ? snapToGrid(onPlane, plane, this.view(name).gridStep) : onPlane;
+  }
+
   // ---- camera navigation -------------------------------------------------
 
   pan(name: ViewName, dxPx: number, dyPx: number): void {
@@ -461,11 +472,14 @@ export class Viewports {
     const cv = this.curveView(label);
     const a = d.analysis;
     setPositions(cv.curve.geometry, a ? a.points : []);
-    (cv.curve.material as THREE.LineBasicMaterial).color.set(d.selected ? 0x4da3ff : 0xe8ecf1);
+    (cv.curve.material as THREE.LineBasicMaterial).color.set(d.selected ? 0x4da3ff : d.colour);
+    cv.curve.visible = d.visible;
+    cv.fins.visible = d.visible;
+    cv.frames.visible = d.visible;
     setPositions(cv.polygon.geometry, d.polygon ? d.handles : []);
     setPositions(cv.handles.geometry, d.selected ? d.handles : []);
-    cv.polygon.visible = d.polygon && d.selected;
-    cv.handles.visible = d.selected;
+    cv.polygon.visible = d.visible && d.polygon && d.selected;
+    cv.handles.visible = d.visible && d.selected;
     // Fins: every polyline of every requested kind, as segments in the kind's colour.
     const segs = new Segments(cv.fins.geometry);
     for (const kind of d.fins) {

@@ -307,6 +307,11 @@ StatePtr decode_state(std::string_view bytes) {
   const std::string_view text = bytes.substr(r.at, text_size);
   r.at += text_size;
   const std::uint32_t count = r.u32();
+  // Every array takes at least its 8-byte length: a count the remaining bytes cannot hold is refused
+  // before anything is allocated (a 278-byte blob claiming 150,000,000 arrays allocated 3.5 GB).
+  if (count > (bytes.size() - r.at) / sizeof(std::uint64_t))
+    corrupt("array count " + std::to_string(count) + " exceeds what the " + std::to_string(bytes.size() - r.at) +
+            " remaining bytes can hold");
   std::vector<std::vector<double>> arrays(count);
   for (auto& a : arrays) {
     const std::uint64_t n = r.u64();

@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <string>
 
 #include "hula/core/error.hpp"
@@ -62,10 +63,9 @@ std::string signal_text(int signal) {
 
 // Runs the helper on `request` and returns its "ok" member, or throws what it reported or how it died.
 io::Json exchange(const detail::Request& request, const fs::path& file, std::string_view what,
-                  const ExchangeOptions& options) {
+                  const ExchangeOptions& options, const ScratchDir& scratch) {
   options.validate();
   const fs::path helper = options.helper.empty() ? default_exchange_helper() : options.helper;
-  ScratchDir scratch;
   const fs::path request_path = scratch.path() / "request.json";
   const fs::path answer_path = scratch.path() / "answer.json";
   io::write_file_atomically(request_path, detail::request_to_json(request).dump());
@@ -93,13 +93,15 @@ io::Json exchange(const detail::Request& request, const fs::path& file, std::str
   if (outcome.status != 0 || !fs::exists(answer_path)) {
     std::string log = outcome.log;
     while (!log.empty() && std::isspace(static_cast<unsigned char>(log.back()))) log.pop_back();
-    const bool out_of_memory =
-        log.find("std::bad_alloc") != std::string::npos || log.find("Standard_OutOfMemory") != std::string::npos;
+    const bool out_of_memory = outcome.status == detail::kHelperOutOfMemoryStatus ||
+                               log.find("std::bad_alloc") != std::string::npos ||
+                               log.find("Standard_OutOfMemory") != std::string::npos;
+    if (out_of_memory)
+      throw ExchangeOutOfMemory(subject + ": the exchange helper ran out of memory (its limit is " +
+                                std::to_string(options.memory_limit >> 20) + " MiB)");
     throw Error(Errc::HelperFailure,
                 subject + ": the exchange helper '" + helper.string() + "' exited with status " +
                     std::to_string(outcome.status) + " without answering" +
-                    (out_of_memory ? " (out of memory: limit " + std::to_string(options.memory_limit >> 20) + " MiB)"
-                                   : std::string()) +
                     (log.empty() ? std::string() : ": " + log.substr(log.size() > 400 ? log.size() - 400 : 0)),
                 where);
   }
@@ -174,7 +176,7 @@ ExportReport export_curves(const std::filesystem::path& path, std::span<const Ex
                            ExchangeFormat format, const ExchangeOptions& options) {
   if (curves.empty())
     throw Error(Errc::InvalidArgument, "nothing to export to '" + path.string() + "': no curves", {.field = "curves"});
-  ExportReport report{fs::absolute(path), format, curves.size(), 0.0};
+  ExportReport report{io::is_std_stream(path) ? path : fs::absolute(path), format, curves.size(), 0.0};
   for (std::size_t i = 0; i < curves.size(); ++i) {
     const double d = curves[i].deviation;
     if (!std::isfinite(d) || d < 0.0)
@@ -183,15 +185,25 @@ ExportReport export_curves(const std::filesystem::path& path, std::span<const Ex
                   {.field = "curves", .index = i});
     report.max_deviation = std::max(report.max_deviation, d);
   }
-  const detail::ExportRequest request{format, report.path, {curves.begin(), curves.end()}};
-  (void)exchange(request, path, "exporting to", options);
+  // The output-path policy is checked here, before the helper starts (which checks it again when it
+  // writes): a link, FIFO, device or directory at `path` is refused by name.
+  io::check_output_path(path, "path");
+  ScratchDir scratch;
+  // `-`: the helper writes into the scratch directory and the file goes to standard output from here.
+  const bool to_stdout = io::is_std_stream(path);
+  const fs::path target =
+      to_stdout ? scratch.path() / (format == ExchangeFormat::Iges ? "out.igs" : "out.step") : report.path;
+  const detail::ExportRequest request{format, target, {curves.begin(), curves.end()}};
+  (void)exchange(request, path, "exporting to", options, scratch);
+  if (to_stdout) io::write_stdout(io::read_text_file(target, std::numeric_limits<std::size_t>::max()));
   return report;
 }
 
 ImportReport import_curves(const std::filesystem::path& path, const ExchangeOptions& options) {
   (void)exchange_format_for_path(path);  // refuse an unknown extension before starting a process
   const detail::ImportRequest request{fs::absolute(path)};
-  return detail::import_answer_from_json(exchange(request, path, "importing", options));
+  const ScratchDir scratch;
+  return detail::import_answer_from_json(exchange(request, path, "importing", options, scratch));
 }
 
 }  // namespace hula::oli

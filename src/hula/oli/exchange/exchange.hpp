@@ -5,8 +5,10 @@
 // files, so the caller never loads them: export_curves and import_curves write
 // a JSON request to a private temporary directory, spawn the `hula-exchange`
 // helper with a time limit and an address-space limit (RLIMIT_AS), and read
-// its JSON answer. A crash, a hang or an out-of-memory stop becomes
-// hula::Error(Errc::HelperFailure) naming the file; nothing in the caller's
+// its JSON answer. A crash or a hang becomes hula::Error(Errc::HelperFailure)
+// naming the file, an allocation failure in the helper ExchangeOutOfMemory (a
+// std::bad_alloc naming the file, like memory running out in the caller: exit
+// 6 in the CLI, 503 on the server); nothing in the caller's
 // process has changed. Curves cross the boundary in the curve-file JSON format
 // (io/json_curve.hpp), doubles bit-exact.
 //
@@ -30,9 +32,11 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <new>
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "hula/curve/curve.hpp"
@@ -115,18 +119,33 @@ struct ImportReport {
   std::vector<std::string> warnings;
 };
 
+/// The exchange helper ran out of memory (a std::bad_alloc in the helper, under its address-space
+/// limit): a std::bad_alloc, so every boundary treats it as memory running out, whose what() names
+/// the file and the limit.
+class ExchangeOutOfMemory : public std::bad_alloc {
+ public:
+  explicit ExchangeOutOfMemory(std::string message) : message_(std::move(message)) {}
+  [[nodiscard]] const char* what() const noexcept override { return message_.c_str(); }
+
+ private:
+  std::string message_;
+};
+
 /// The helper used when ExchangeOptions::helper is empty: $HULA_EXCHANGE_HELPER if set, else
 /// `hula-exchange` next to the running executable if it exists, else the build tree's helper.
 [[nodiscard]] std::filesystem::path default_exchange_helper();
 
 /// Writes curves to a STEP or IGES file (replaced atomically: the helper writes a temporary file
-/// that is renamed over `path` only when complete).
-/// @param path the output file
+/// that is renamed over `path` only when complete), or to standard output for `-`. The output-path
+/// policy of every writer (io::check_output_path) is checked before the helper starts: a symbolic
+/// link (dangling or not), FIFO, device or directory at `path` is refused, never replaced.
+/// @param path the output file, or `-`
 /// @param curves ≥ 1 curves
 /// @throws hula::Error(Errc::InvalidArgument) if curves is empty or a deviation is negative or not finite
 /// @throws hula::Error(Errc::IoError) naming the path if it cannot be written
 /// @throws hula::Error(Errc::Unsupported) if a curve's degree exceeds Open CASCADE's limit (25)
-/// @throws hula::Error(Errc::HelperFailure) naming the path if the helper crashed, hung or ran out of memory
+/// @throws hula::Error(Errc::HelperFailure) naming the path if the helper crashed or hung
+/// @throws ExchangeOutOfMemory naming the path if the helper ran out of memory
 [[nodiscard]] ExportReport export_curves(const std::filesystem::path& path, std::span<const ExportCurve> curves,
                                          ExchangeFormat format, const ExchangeOptions& options = {});
 
@@ -134,7 +153,8 @@ struct ImportReport {
 /// @throws hula::Error(Errc::IoError) naming the path if it cannot be read
 /// @throws hula::Error(Errc::ParseError) naming the path if it is not a STEP/IGES file, the reader
 ///   refuses it, or it holds no importable curve
-/// @throws hula::Error(Errc::HelperFailure) naming the path if the reader crashed, hung or ran out of memory
+/// @throws hula::Error(Errc::HelperFailure) naming the path if the reader crashed or hung
+/// @throws ExchangeOutOfMemory naming the path if the reader ran out of memory
 [[nodiscard]] ImportReport import_curves(const std::filesystem::path& path, const ExchangeOptions& options = {});
 
 }  // namespace hula::oli

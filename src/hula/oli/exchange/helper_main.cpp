@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: MIT
 // hula-exchange REQUEST.json ANSWER.json: the isolated STEP/IGES helper
 // process (see exchange.hpp). Reads one request, runs Open CASCADE, writes one
-// answer ({"ok": …} or {"error": …}) and exits 0. If Open CASCADE crashes or
+// answer ({"ok": …} or {"error": …}) and exits 0, or exits 6 (no answer) when
+// memory runs out. If Open CASCADE crashes or
 // hangs, no answer is written and the caller reports it, naming the file.
 #include <cstdio>
 #include <exception>
+#include <new>
 #include <string>
 #include <variant>
 
@@ -33,7 +35,9 @@ int main(int argc, char** argv) {
   } catch (const Error& e) {
     answer = io::error_to_json(e);
   } catch (const std::bad_alloc&) {
-    answer = io::error_to_json(Error(Errc::HelperFailure, "out of memory (std::bad_alloc)", {.field = "path"}));
+    // No answer (writing one may need memory too): the status tells the caller.
+    std::fputs("hula-exchange: out of memory (std::bad_alloc)\n", stderr);
+    return oli::detail::kHelperOutOfMemoryStatus;
   } catch (const std::exception& e) {
     answer =
         io::error_to_json(Error(Errc::HelperFailure, std::string("internal error: ") + e.what(), {.field = "path"}));

@@ -68,6 +68,7 @@
 #include <vector>
 
 #include "hula/core/error.hpp"
+#include "hula/io/atomic_file.hpp"
 #include "hula/oli/kernel/occt_convert.hpp"
 
 namespace hula::oli::detail {
@@ -114,20 +115,6 @@ std::string deviation_note(double max_deviation) {
          format_number(max_deviation) + " model units";
 }
 
-// The temporary file beside `path` that is renamed over it when complete.
-fs::path temporary_beside(const fs::path& path) {
-  return path.parent_path() / ("." + path.filename().string() + ".hula-" + std::to_string(::getpid()) + ".tmp");
-}
-
-void commit_file(const fs::path& temporary, const fs::path& path) {
-  std::error_code ec;
-  fs::rename(temporary, path, ec);
-  if (ec) {
-    fs::remove(temporary, ec);
-    throw Error(Errc::IoError, "cannot write '" + path.string() + "': " + ec.message(), {.field = "path"});
-  }
-}
-
 [[noreturn]] void write_failed(const fs::path& path, const std::string& why) {
   throw Error(Errc::IoError, "cannot write '" + path.string() + "': " + why, {.field = "path"});
 }
@@ -135,17 +122,14 @@ void commit_file(const fs::path& temporary, const fs::path& path) {
 // Reals with 17 significant digits and always an exponent (so always a decimal point, as STEP requires).
 constexpr const char* kRealFormat = "%.16E";
 
-// Prints a file through an OCCT writer's Print(ostream&), checking every step.
+// Prints a file through an OCCT writer's Print(ostream&) into `out` (io::OutputFile: the output-path
+// policy, a temporary file renamed over the target on commit, checked writes).
 template <class Print>
-void print_file(const fs::path& temporary, const fs::path& path, Print&& print) {
-  std::ofstream stream(temporary, std::ios::binary | std::ios::trunc);
-  if (!stream) write_failed(path, "cannot create '" + temporary.string() + "'");
-  const bool printed = print(stream);
-  stream.close();
-  if (!printed || !stream) write_failed(path, "writing '" + temporary.string() + "' failed");
+void print_file(io::OutputFile& out, const fs::path& path, Print&& print) {
+  if (!print(out.stream())) write_failed(path, "the Open CASCADE writer failed");
 }
 
-void write_step(const ExportRequest& r, const fs::path& temporary, double max_deviation) {
+void write_step(const ExportRequest& r, io::OutputFile& file, double max_deviation) {
   STEPControl_Controller::Init();
   Interface_Static::SetCVal("write.step.schema", r.format == ExchangeFormat::StepAp242 ? "AP242DIS" : "AP214IS");
   Interface_Static::SetCVal("write.step.unit", "MM");
@@ -188,10 +172,10 @@ void write_step(const ExportRequest& r, const fs::path& temporary, double max_de
   StepData_StepWriter out(model);
   out.FloatWriter().SetFormat(kRealFormat);
   out.SendModel(Handle(StepData_Protocol)::DownCast(writer.WS()->Protocol()));
-  print_file(temporary, r.path, [&](std::ostream& stream) { return out.Print(stream); });
+  print_file(file, r.path, [&](std::ostream& stream) { return out.Print(stream); });
 }
 
-void write_iges(const ExportRequest& r, const fs::path& temporary, double max_deviation) {
+void write_iges(const ExportRequest& r, io::OutputFile& file, double max_deviation) {
   IGESControl_Controller::Init();
   IGESControl_Writer writer("MM", 0);
   const Handle(IGESData_IGESModel) model = writer.Model();
@@ -223,7 +207,7 @@ void write_iges(const ExportRequest& r, const fs::path& temporary, double max_de
   IGESData_IGESWriter out(model);
   out.FloatWriter().SetFormat(kRealFormat);
   out.SendModel(IGESSelect_WorkLibrary::DefineProtocol());
-  print_file(temporary, r.path, [&](std::ostream& stream) { return out.Print(stream); });
+  print_file(file, r.path, [&](std::ostream& stream) { return out.Print(stream); });
 }
 
 // The curve types imported, by the basis of a trimmed curve; empty for any other geometry.
@@ -357,23 +341,19 @@ ExportReport write_exchange_file(const ExportRequest& request) {
                 {.field = "curves"});
   double max_deviation = 0.0;
   for (const auto& c : request.curves) max_deviation = std::max(max_deviation, c.deviation);
-  const fs::path temporary = temporary_beside(request.path);
+  // The same policy as every writer: a regular file or nothing at the target (never a link, FIFO,
+  // device or directory), replaced atomically; an uncommitted file is removed by its destructor.
+  io::OutputFile file(request.path, "path");
   try {
     if (request.format == ExchangeFormat::Iges)
-      write_iges(request, temporary, max_deviation);
+      write_iges(request, file, max_deviation);
     else
-      write_step(request, temporary, max_deviation);
+      write_step(request, file, max_deviation);
   } catch (const Standard_Failure& f) {
-    std::error_code ec;
-    fs::remove(temporary, ec);
     write_failed(request.path,
                  std::string("Open CASCADE raised ") + f.DynamicType()->Name() + ": " + f.GetMessageString());
-  } catch (...) {
-    std::error_code ec;
-    fs::remove(temporary, ec);
-    throw;
   }
-  commit_file(temporary, request.path);
+  file.commit();
   return {request.path, request.format, request.curves.size(), max_deviation};
 }
 

@@ -146,6 +146,8 @@ Json change_json(const Change& change) {
       outcome.throw_if_failed();
     } catch (const Error&) {
       throw;
+    } catch (const std::bad_alloc& e) {
+      throw out_of_memory_error(e);
     } catch (const std::exception& e) {
       throw HttpError(500, "InternalError", e.what());
     }

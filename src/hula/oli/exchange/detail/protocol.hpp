@@ -23,6 +23,10 @@
 
 namespace hula::oli::detail {
 
+/// The helper's exit status when memory ran out (std::bad_alloc): it writes no answer, and the caller
+/// reports ExchangeOutOfMemory.
+inline constexpr int kHelperOutOfMemoryStatus = 6;
+
 /// An export request as the helper sees it.
 struct ExportRequest {
   ExchangeFormat format{};
