@@ -138,7 +138,10 @@ TEST(SplineProfileSampler, EveryInstructionSetGivesTheSameSamples) {
     if (trial % 4 == 2) end = Vec3{1, -0.5, 0};
     // Uniform abscissae plus, for some trials, a few repeated values (non-decreasing is allowed).
     std::vector<double> u = hula::studies::uniform_abscissae(37 + static_cast<std::size_t>(trial) * 7);
-    if (trial % 5 == 0) u.insert(u.begin() + 5, 3, u[5]);
+    if (trial % 5 == 0) {
+      const std::vector<double> repeats(3, u[5]);  // (insert(pos, 3, u[5]) trips GCC 12's -Wnull-dereference)
+      u.insert(u.begin() + 5, repeats.begin(), repeats.end());
+    }
     const SplineProfileSampler sampler(n, dim, u, start, end);
     SplineProfileSampler::Workspace ws;
     for (const bool with_tau : {false, true}) {
