@@ -637,6 +637,10 @@ TorsionMatchStudyFile torsion_match_study_from_json(const StudyDocument& documen
   return {std::move(study), std::move(setup.target), std::move(setup.torsion_target)};
 }
 
+Json seeded_torsion_study_to_json(const curve::Curve& curve, const TorsionMatchSettings& settings) {
+  return seeded_torsion_study_to_json(seed_match_setup(curve), settings);
+}
+
 Json seeded_torsion_study_to_json(const MatchSeed& seed, const TorsionMatchSettings& settings) {
   if (seed.setup.dimension != 3 || !seed.setup.torsion_target)
     throw Error(Errc::InvalidArgument,

@@ -85,6 +85,10 @@ void match_setup_to_json(const MatchSetupJson& setup, Json& out);
 /// @throws hula::Error(Errc::InvalidArgument) naming "curve" if the seed is planar (it has no torsion target)
 [[nodiscard]] Json seeded_torsion_study_to_json(const studies::MatchSeed& seed,
                                                 const studies::TorsionMatchSettings& settings);
+/// seeded_torsion_study_to_json of studies::seed_match_setup(curve): what the server's study-seed route answers.
+/// @throws as studies::seed_match_setup and seeded_torsion_study_to_json
+[[nodiscard]] Json seeded_torsion_study_to_json(const curve::Curve& curve,
+                                                const studies::TorsionMatchSettings& settings);
 /// The run's report: both start errors, the Pareto set (points and both errors of every curve, the best
 /// compromise marked, its curve as a curve document), NSGA-II and polish reports, and the resolved study.
 [[nodiscard]] Json torsion_match_result_to_json(const studies::CurvatureMatch& match, const TorsionMatchStudyFile& file,

@@ -1,14 +1,13 @@
 // SPDX-License-Identifier: MIT
 // POST /api/documents/{name}/entities/{label}/study-seed {"study":
 // "match-curvature-torsion", "population"?: 40, "generations"?: 40} → the
-// study file seeded from the entity's curve (studies::seed_match_setup,
-// io::seeded_torsion_study_to_json): its points as the variables, its end
+// study file seeded from the entity's curve (io::seeded_torsion_study_to_json of
+// studies::seed_match_setup): its points as the variables, its end
 // tangents held, its own κ and τ profiles as the targets — what the
 // workbench's "From selection" fills in. Nothing in the document changes.
 #include "hula/io/json_read.hpp"
 #include "hula/io/match_study_file.hpp"
 #include "hula/server/routes/routes.hpp"
-#include "hula/studies/match_seed.hpp"
 
 namespace hula::server::routes {
 
@@ -36,8 +35,7 @@ Response study_seed(DocumentRegistry& docs, const Request& request) {
   const auto [doc, label] = entity_of(docs, request);
   const oli::Entity e = doc->read([&](const oli::Document& d) { return d.get(label); });
   // Computed outside the lock from the immutable snapshot.
-  const studies::MatchSeed seed = studies::seed_match_setup(e.curve());
-  return json_response(200, io::seeded_torsion_study_to_json(seed, settings));
+  return json_response(200, io::seeded_torsion_study_to_json(e.curve(), settings));
 }
 
 }  // namespace
