@@ -937,6 +937,82 @@ class DocumentTest(unittest.TestCase):
         self.assertIn("inflections", a["features"])
         self.call("POST", f"{base}/entities/{label}/analysis", {"by": "time"}, expect=400)
 
+    # checks design by curvature over HTTP (issue 21): a change of |κ| on the thesis's S-spline keeps its data end
+    # points (closed form) and its end tangents (the analysis before and after, 1e-9), its one inflection and at most
+    # twice its points, as one "edit curvature" undo step; G2 on Example 1's natural ends keeps κ = 0 there (1e-9);
+    # bad laws, holds and a torsion on a planar curve are refused naming the member
+    def test_curvature_edit(self):
+        self.new_document("design.hula")
+        base = "/api/documents/design.hula"
+        s_curve = {"kind": "interpolated", "points": [[0, 0], [40, 40], [80, -40], [120, -40]]}
+        label = self.call("POST", base + "/entities", {"curve": s_curve}, expect=201)["label"]
+        before = self.call("POST", f"{base}/entities/{label}/analysis", {"samples": 11, "features": True})
+        bump = "piecewise(abs((s - 57)/32) < 1, 0.008*cos(1.5707963267948966*(s - 57)/32)^2, 0)"
+        r = self.call("POST", f"{base}/entities/{label}/curvature-edit", {"kappa": bump, "target": "change"})
+        self.assertEqual(r["changes"]["changed"], [label])
+        edit = r["edit"]
+        self.assertEqual((edit["kind"], edit["handles_before"], edit["inflections_before"], edit["inflections_after"]),
+                         ("interpolated", 4, 1, 1))
+        self.assertLessEqual(edit["handles_after"], 8)
+        for key in ("start_point_error", "end_point_error", "start_tangent_error", "end_tangent_error"):
+            self.assertLessEqual(edit[key], 1e-9, key)
+        after_curve = self.call("GET", f"{base}/entities/{label}")
+        self.assertEqual(after_curve["kind"], "interpolated")
+        self.assertEqual([after_curve["points"][0], after_curve["points"][-1]], [[0, 0], [120, -40]])
+        after = self.call("POST", f"{base}/entities/{label}/analysis", {"samples": 11, "features": True})
+        for i in (0, -1):
+            for k in range(3):
+                self.assertAlmostEqual(after["frames"]["T"][i][k], before["frames"]["T"][i][k], delta=1e-9)
+        self.assertEqual(len(after["features"]["inflections"]), 1)
+        history = [h["name"] for h in self.call("GET", base + "/history")["history"]]
+        self.assertEqual(history[-1], "edit curvature")
+        self.call("POST", base + "/undo")
+        self.assertEqual(self.call("GET", f"{base}/entities/{label}")["points"], s_curve["points"])
+        corner = {"kind": "interpolated", "points": [[0, 0], [100, 0], [100, 100]], "parameters": [0, 0.5, 1]}
+        c = self.call("POST", base + "/entities", {"curve": corner}, expect=201)["label"]
+        lift = "piecewise(abs((s - 62)/34) < 1, 0.004*cos(1.5707963267948966*(s - 62)/34)^2, 0)"
+        g2 = self.call("POST", f"{base}/entities/{c}/curvature-edit", {"kappa": lift, "target": "change", "hold": "curvature"})
+        self.assertLessEqual(g2["edit"]["end_curvature_error"], 1e-9)
+        a = self.call("POST", f"{base}/entities/{c}/analysis", {"samples": 11})
+        self.assertLessEqual(abs(a["curvature"][0]), 1e-9)
+        self.assertLessEqual(abs(a["curvature"][-1]), 1e-9)
+        e = self.call("POST", f"{base}/entities/{c}/curvature-edit", {"kappa": "0.02*sin(s"}, expect=400)
+        self.assertEqual((e["error"]["code"], e["error"]["where"]["field"]), ("ParseError", "kappa"))
+        e = self.call("POST", f"{base}/entities/{c}/curvature-edit", {"kappa": "0.01", "hold": "g3"}, expect=400)
+        self.assertEqual(e["error"]["where"]["field"], "hold")
+        e = self.call("POST", f"{base}/entities/{c}/curvature-edit", {"kappa": "0.01", "tau": "0.1"}, expect=400)
+        self.assertEqual(e["error"]["where"]["field"], "torsion")
+        self.call("POST", f"{base}/entities/999/curvature-edit", {"kappa": "0.01"}, expect=404)
+
+    # checks "From selection" over HTTP (issue 21): the study seeded from a space Bézier holds its end tangents
+    # (closed form: along P1 − P0 and P3 − P2), starts and ends at its end points, and its targets are its own κ and
+    # τ by arc length (the analysis route's, 1e-6); another study kind or a planar curve is refused naming the member
+    def test_study_seed(self):
+        self.new_document("seed.hula")
+        base = "/api/documents/seed.hula"
+        P = [[0, 0, 0], [30, 40, 10], [70, 40, 30], [100, 0, 60]]
+        label = self.call("POST", base + "/entities", {"curve": {"kind": "bezier", "control_points": P}}, expect=201)["label"]
+        study = self.call("POST", f"{base}/entities/{label}/study-seed", {"study": "match-curvature-torsion"})
+        def unit(a, b):
+            d = [b[k] - a[k] for k in range(3)]
+            n = math.sqrt(sum(x * x for x in d))
+            return [x / n for x in d]
+        for got, want in ((study["start_tangent"], unit(P[0], P[1])), (study["end_tangent"], unit(P[2], P[3]))):
+            for k in range(3):
+                self.assertAlmostEqual(got[k], want[k], delta=1e-9)
+        self.assertEqual((study["points"][0], study["points"][-1]), (P[0], P[3]))
+        self.assertEqual((study["abscissa"], study["nsga2"]["population"]), ("arclength", 40))
+        n = len(study["target"]["samples"])
+        a = self.call("POST", f"{base}/entities/{label}/analysis", {"samples": n, "by": "arclength"})
+        for i in range(n):
+            self.assertAlmostEqual(study["target"]["samples"][i][1], a["curvature"][i], delta=1e-6 * abs(a["curvature"][i]) + 1e-12)
+            self.assertAlmostEqual(study["torsion_target"]["samples"][i][1], a["torsion"][i], delta=1e-6 * abs(a["torsion"][i]) + 1e-12)
+        e = self.call("POST", f"{base}/entities/{label}/study-seed", {"study": "match-curvature"}, expect=400)
+        self.assertEqual(e["error"]["where"]["field"], "study")
+        flat = self.call("POST", base + "/entities", {"curve": {"kind": "bezier", "control_points": [[0, 0], [1, 2], [3, 1]]}}, expect=201)["label"]
+        e = self.call("POST", f"{base}/entities/{flat}/study-seed", {"study": "match-curvature-torsion"}, expect=400)
+        self.assertEqual(e["error"]["where"]["field"], "curve")
+
     # checks a change's reply carries the entity it changed as GET gives it, and a PATCH with "analysis" the moved
     # curve's analysis equal to the analysis route's on the stored curve (one request and one reply per move);
     # the event of the change names the labels only
@@ -1261,7 +1337,7 @@ class DocumentTest(unittest.TestCase):
     # class with a body (or SSE events) valid against the document
     def test_zz_every_operation_seen(self):
         wanted = operations(self.api, "/api/documents")
-        self.assertEqual(len(wanted), 20)
+        self.assertEqual(len(wanted), 22)
         self.assertEqual(wanted - self.api.seen, set())
 
 

@@ -137,6 +137,8 @@ struct Helix {
   Vec3 point(double s) const { return {rho() * std::cos(s / c()), rho() * std::sin(s / c()), h() * s / c()}; }
   Vec3 tangent(double s) const { return Vec3{-rho() * std::sin(s / c()), rho() * std::cos(s / c()), h()} / c(); }
   intrinsic::StartFrame start() const { return {point(0.0), tangent(0.0), Vec3{-1.0, 0.0, 0.0}}; }
+  // N(s) = (−cos(s/c), −sin(s/c), 0): towards the axis.
+  Vec3 normal(double s) const { return {-std::cos(s / c()), -std::sin(s / c()), 0.0}; }
 };
 
 // checks: constant κ, τ reconstruct the helix (closed form) and its own end needs no correction.
@@ -371,6 +373,98 @@ TEST(DirectReconstruction, HeaderExampleMeetsItsEnd) {
   EXPECT_GT(r.seconds, 0.0);
   EXPECT_GE(r.reconstructions,
             r.iterations);  // one per trial step plus the start; the last linearisation may only confirm
+}
+
+}  // namespace
+}  // namespace hula::studies
+
+namespace hula::studies {
+namespace {
+
+// checks: held end curvatures (a G2 join) fix the correction's end coefficients: κ(0) and κ(L) are the held values
+// to rounding, the end point and tangent of the arc (closed form) still hold to 1e-9.
+TEST(DirectReconstruction, HeldEndCurvaturesAreExact) {
+  Laws l;
+  const double R = 2.0, L = 5.0;
+  DirectReconstructionProblem p{.curvature = l.profile("0.5 + 0.1*sin(2*pi*u)")};
+  p.length = L;
+  p.end_point = arc_point(R, L);
+  p.end_tangent = arc_tangent(R, L);
+  p.start_curvature = 0.45;
+  p.end_curvature = 0.6;
+  const DirectReconstructionResult r = reconstruct_direct(p, no_fit());
+  EXPECT_LE(r.end_point_error, 1e-9 * L);
+  EXPECT_LE(r.end_tangent_error, 1e-9);
+  EXPECT_NEAR(r.curve.evaluate(0.0).curvature, 0.45, 1e-12);
+  EXPECT_NEAR(r.curve.evaluate(L).curvature, 0.6, 1e-12);
+  EXPECT_NEAR(r.curvature_correction.front(), 0.45 - 0.5, 1e-15);
+}
+
+// checks: with the target as its own envelope (a relative correction) the target's zero (an inflection at u = 1/2)
+// stays exactly where it is, and the sign on either side, while the end of another curve is met.
+TEST(DirectReconstruction, RelativeEnvelopeKeepsTheInflection) {
+  Laws l;
+  const double L = 4.0;
+  const Profile target = l.profile("0.6*(u - 0.5)");
+  const DirectReconstructionResult free =
+      reconstruct_direct({.curvature = l.profile("0.66*(u - 0.5)"), .length = L}, no_fit());
+  DirectReconstructionProblem p{.curvature = target};
+  p.length = L;
+  p.end_point = free.curve.evaluate(L).position;
+  p.end_tangent = free.curve.evaluate(L).tangent;
+  p.curvature_envelope = target;
+  const DirectReconstructionResult r = reconstruct_direct(p, no_fit());
+  EXPECT_LE(r.end_point_error, 1e-9 * L);
+  EXPECT_LE(r.end_tangent_error, 1e-9);
+  EXPECT_GT(r.max_curvature_deviation, 1e-4);
+  EXPECT_LT(std::abs(r.curve.evaluate(0.5 * L).curvature), 1e-12);
+  for (int i = 1; i < 20; ++i) {
+    const double s = L * i / 20.0;
+    if (i == 10) continue;
+    EXPECT_GT(r.curve.evaluate(s).curvature * (s - 0.5 * L), 0.0) << s;
+  }
+}
+
+// checks: a space curve held to the helix's end frame — point, tangent and normal (closed form) — meets all three.
+TEST(DirectReconstruction, EndNormalHoldsTheSpaceFrame) {
+  Laws l;
+  const Helix hx{0.8, 0.4};
+  const double L = 10.0;
+  DirectReconstructionProblem p{.curvature = l.profile("0.8 + 0.05*sin(2*pi*u)")};
+  p.torsion = l.profile("0.4 - 0.05*u");
+  p.length = L;
+  p.start = hx.start();
+  p.end_point = hx.point(L);
+  p.end_tangent = hx.tangent(L);
+  p.end_normal = hx.normal(L);
+  const DirectReconstructionResult r = reconstruct_direct(p, no_fit());
+  EXPECT_LE(r.end_point_error, 1e-9 * L);
+  EXPECT_LE(r.end_tangent_error, 1e-9);
+  const intrinsic::FramePoint e = r.curve.evaluate(L);
+  EXPECT_LT(distance(e.normal, hx.normal(L)), 1e-8);
+}
+
+// checks: the new inputs' errors name them.
+TEST(DirectReconstruction, RejectsBadEndFrameAndCurvatures) {
+  Laws l;
+  DirectReconstructionProblem planar{.curvature = l.profile("0.5")};
+  planar.length = 2.0;
+  planar.end_tangent = Vec3{0, 1, 0};
+  planar.end_normal = Vec3{1, 0, 0};
+  HULA_EXPECT_ERROR(static_cast<void>(reconstruct_direct(planar, no_fit())), Errc::InvalidArgument, "end_normal");
+  DirectReconstructionProblem zero{.curvature = l.profile("0.5*(1 - u)")};
+  zero.length = 2.0;
+  zero.end_point = Vec3{1.5, 0.1, 0};
+  zero.curvature_envelope = zero.curvature;
+  zero.end_curvature = 0.3;
+  HULA_EXPECT_ERROR(static_cast<void>(reconstruct_direct(zero, no_fit())), Errc::InvalidArgument, "end_curvature");
+  DirectReconstructionProblem at_zero{.curvature = l.profile("0.5 - u")};
+  at_zero.length = 2.0;
+  at_zero.end_point = Vec3{1.5, 0.1, 0};
+  at_zero.curvature_envelope = at_zero.curvature;
+  at_zero.start_curvature = 0.2;  // the envelope is 0.5 there: allowed
+  at_zero.end_curvature = std::nan("");
+  HULA_EXPECT_ERROR(static_cast<void>(reconstruct_direct(at_zero, no_fit())), Errc::NonFiniteInput, "end_curvature");
 }
 
 }  // namespace

@@ -14,6 +14,13 @@
 // With `--end-point x,y,z` and/or `--end-tangent x,y,z` (optionally `--free-length`) it solves the
 // boundary-value problem of studies::reconstruct_direct instead (planar or space): the curve closest to
 // the laws that meets the end, with the reconstruction's summary under "direct".
+//
+// With `--curve CURVE.json` it edits that curve instead (design by curvature, studies::edit_curvature):
+// --kappa is the target κ(s) (or, with `--target change`, a change of |κ|) over the curve's own arc
+// length, --tau (space curves, optional) its target torsion; `--hold free|tangent|curvature` says
+// what the end keeps (default tangent: end point and end tangent; curvature: also both end
+// curvatures), `--max-handles-factor` bounds the result's handles. Prints {"edit": the report} and
+// writes the edited curve (same kind as the original where it can be) with -o.
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -28,6 +35,7 @@
 #include "hula/io/match_study_file.hpp"
 #include "hula/io/reconstruction_json.hpp"
 #include "hula/law/parser.hpp"
+#include "hula/studies/curvature_edit.hpp"
 #include "hula/studies/direct_reconstruction.hpp"
 
 namespace hula::cli {
@@ -48,6 +56,13 @@ struct ReconstructArgs {
   std::string end_tangent;
   bool free_length = false;
   double end_tolerance = 1e-9;
+  std::string curve;
+  std::string target = "curvature";
+  std::string hold = "tangent";
+  double max_handles_factor = 2.0;
+  const CLI::Option* fit_tolerance_option = nullptr;
+  const CLI::Option* length_option = nullptr;
+  const CLI::Option* tau_option = nullptr;
   bool exact = false;
 };
 
@@ -65,8 +80,38 @@ Vec3 parse_vec(const std::string& text, const char* field) {
   return {v[0], v[1], v[2]};
 }
 
+// --curve: design by curvature on the curve file (studies::edit_curvature, as the server's curvature-edit route).
+int run_curvature_edit(const ReconstructArgs& a) {
+  if (a.length_option->count() > 0)
+    throw CLI::ValidationError("--length with --curve: the edited curve keeps its own length");
+  if (a.exact) throw CLI::ValidationError("--exact with --curve: the edited curve is written as its own kind");
+  if (a.fit_tolerance_option->count() > 0)
+    throw CLI::ValidationError(
+        "--fit-tolerance with --curve: the edited curve keeps the original's knots (at most "
+        "--max-handles-factor times its handles), not a tolerance");
+  law::Context ctx;
+  studies::CurvatureEdit edit{.curvature = parse_law(a.kappa, ctx, "kappa"),
+                              .target = studies::curvature_target_from_name(a.target, "target")};
+  if (a.tau_option->count() > 0) edit.torsion = parse_law(a.tau, ctx, "tau");
+  studies::CurvatureEditOptions options;
+  options.hold = studies::end_hold_from_name(a.hold, "hold");
+  options.max_handles_factor = a.max_handles_factor;
+  options.reconstruction.max_steps = intrinsic::kFrontEndMaxSteps;
+  options.validate();
+  const curve::Curve original = io::read_curve_file(a.curve);
+  const studies::CurvatureEditResult r = studies::edit_curvature(original, edit, options);
+  if (!a.output.empty()) io::write_curve_file(a.output, r.curve);
+  Json doc = Json::object();
+  doc["edit"] = io::curvature_edit_to_json(r);
+  print_result(doc, a.output);
+  return kExitOk;
+}
+
 int run_reconstruct(const ReconstructArgs& a) {
   if (!a.output.empty()) io::check_output_path(a.output, "--output");
+  if (!a.curve.empty()) return run_curvature_edit(a);
+  if (a.length_option->count() == 0) throw CLI::RequiredError("--length");
+  if (a.tau_option->count() == 0) throw CLI::RequiredError("--tau");
   law::Context ctx;
   const law::Law kappa = parse_law(a.kappa, ctx, "kappa");
   const law::Law tau = parse_law(a.tau, ctx, "tau");
@@ -159,17 +204,21 @@ Command add_reconstruct(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "reconstruct", "Curve from its curvature and torsion laws of arc length s (natural equations, thesis 8.2.2)");
   sub->add_option("--kappa", args->kappa, "Curvature law of s, e.g. '1 + 0.5*sin(s)' (signed when planar)")->required();
-  sub->add_option("--tau", args->tau, "Torsion law of s, e.g. '0.3*cos(2*s)'; 0 gives a planar curve")->required();
-  sub->add_option("--length", args->length, "Arc length L > 0 of the curve")->required();
+  args->tau_option = sub->add_option("--tau", args->tau,
+                                     "Torsion law of s, e.g. '0.3*cos(2*s)'; 0 gives a planar curve (required without "
+                                     "--curve; with it, a space curve's target torsion)");
+  args->length_option =
+      sub->add_option("--length", args->length, "Arc length L > 0 of the curve (required without --curve)");
   sub->add_option("--start-point", args->start_point, "Start point x,y,z (default 0,0,0)");
   sub->add_option("--start-frame", args->start_frame,
                   "Start tangent and normal Tx,Ty,Tz,Nx,Ny,Nz (normalised, N made orthogonal to T; default "
                   "1,0,0,0,1,0)");
   sub->add_option("--tolerance", args->tolerance,
                   "Position tolerance of the integration (the printed points), in [1e-13, 1e-2] (default 1e-10)");
-  sub->add_option("--fit-tolerance", args->fit_tolerance,
-                  "Tolerance of the NURBS fit relative to the curve's size (bounding-box diagonal), in [1e-13, 1] "
-                  "(default 1e-6)");
+  args->fit_tolerance_option =
+      sub->add_option("--fit-tolerance", args->fit_tolerance,
+                      "Tolerance of the NURBS fit relative to the curve's size (bounding-box diagonal), in [1e-13, 1] "
+                      "(default 1e-6; not with --curve)");
   sub->add_option("--at", args->at, "Arc lengths s0,s1,... in [0, L] to print (default 0, L/4, L/2, 3L/4, L)");
   sub->add_option("--end-point", args->end_point,
                   "Hold the end at x,y,z: the curve closest to the laws that reaches it (boundary-value problem)");
@@ -178,7 +227,20 @@ Command add_reconstruct(CLI::App& app) {
                 "Let the length vary from --length when an end is held (the laws then fix the shape, not the size)");
   sub->add_option("--end-tolerance", args->end_tolerance,
                   "End tolerance relative to L of the boundary-value problem, in [1e-13, 1e-2] (default 1e-9)");
-  sub->add_option("-o,--output", args->output, "Write the fitted NURBS curve file (atomically)");
+  sub->add_option("--curve", args->curve,
+                  "Edit this curve file's curvature instead (design by curvature): --kappa over its arc length s, its "
+                  "ends kept per --hold");
+  sub->add_option("--target", args->target,
+                  "With --curve: --kappa is the target 'curvature' (signed when planar) or a 'change' of |κ|")
+      ->check(CLI::IsMember({"curvature", "change"}));
+  sub->add_option("--hold", args->hold,
+                  "With --curve: what the end keeps: free, tangent (end point and tangent, default) or curvature "
+                  "(also both end curvatures: G2)")
+      ->check(CLI::IsMember({"free", "tangent", "curvature"}));
+  sub->add_option("--max-handles-factor", args->max_handles_factor,
+                  "With --curve: most handles of the result as a multiple of the original's, in [1, 10] (default 2)");
+  sub->add_option("-o,--output", args->output,
+                  "Write the fitted NURBS curve file (atomically); with --curve, the edited curve");
   sub->add_flag("--exact", args->exact,
                 "With -o: write the exact curve by its laws (kind natural, integrated to --tolerance where it is read) "
                 "instead of the fitted NURBS");

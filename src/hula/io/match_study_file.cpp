@@ -637,6 +637,31 @@ TorsionMatchStudyFile torsion_match_study_from_json(const StudyDocument& documen
   return {std::move(study), std::move(setup.target), std::move(setup.torsion_target)};
 }
 
+Json seeded_torsion_study_to_json(const curve::Curve& curve, const TorsionMatchSettings& settings) {
+  return seeded_torsion_study_to_json(seed_match_setup(curve), settings);
+}
+
+Json seeded_torsion_study_to_json(const MatchSeed& seed, const TorsionMatchSettings& settings) {
+  if (seed.setup.dimension != 3 || !seed.setup.torsion_target)
+    throw Error(Errc::InvalidArgument,
+                "the curve is planar: a curvature + torsion study needs a space curve (use match-curvature)",
+                ErrorWhere{.field = "curve"});
+  const auto samples = [&](const std::vector<double>& v) {
+    Json list = Json::array();
+    for (std::size_t i = 0; i < seed.u.size(); ++i) list.push_back(Json::array({seed.u[i], v[i]}));
+    Json profile = Json::object();
+    profile["samples"] = std::move(list);
+    return profile;
+  };
+  TorsionMatchStudyFile file;
+  file.study.header.kind = "match-curvature-torsion";
+  file.study.setup = seed.setup;
+  file.study.settings = settings;
+  file.target = samples(seed.curvature);
+  file.torsion_target = samples(seed.torsion);
+  return torsion_match_study_to_json(file);
+}
+
 Json torsion_match_study_to_json(const TorsionMatchStudyFile& file) {
   const TorsionMatchStudy& study = file.study;
   Json out = header_to_json(study.header);

@@ -15,6 +15,7 @@
 #include "hula/io/study_file.hpp"
 #include "hula/studies/curvature_torsion_match.hpp"
 #include "hula/studies/direct_reconstruction.hpp"
+#include "hula/studies/match_seed.hpp"
 #include "hula/studies/match_study.hpp"
 
 namespace hula::io {
@@ -77,6 +78,17 @@ void match_setup_to_json(const MatchSetupJson& setup, Json& out);
                                                                   const PathResolver& resolver);
 /// The resolved study as a study file (seed included).
 [[nodiscard]] Json torsion_match_study_to_json(const TorsionMatchStudyFile& file);
+/// A "match-curvature-torsion" study file seeded from a curve (studies::seed_match_setup, "From selection"):
+/// the seed's points, bounds, end tangents and samples, its κ and τ profiles as {"samples": [[u, v], ...]}
+/// targets, abscissa "arclength", and `settings` (seed 1, one thread). It reads back with
+/// torsion_match_study_from_json.
+/// @throws hula::Error(Errc::InvalidArgument) naming "curve" if the seed is planar (it has no torsion target)
+[[nodiscard]] Json seeded_torsion_study_to_json(const studies::MatchSeed& seed,
+                                                const studies::TorsionMatchSettings& settings);
+/// seeded_torsion_study_to_json of studies::seed_match_setup(curve): what the server's study-seed route answers.
+/// @throws as studies::seed_match_setup and seeded_torsion_study_to_json
+[[nodiscard]] Json seeded_torsion_study_to_json(const curve::Curve& curve,
+                                                const studies::TorsionMatchSettings& settings);
 /// The run's report: both start errors, the Pareto set (points and both errors of every curve, the best
 /// compromise marked, its curve as a curve document), NSGA-II and polish reports, and the resolved study.
 [[nodiscard]] Json torsion_match_result_to_json(const studies::CurvatureMatch& match, const TorsionMatchStudyFile& file,

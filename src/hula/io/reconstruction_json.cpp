@@ -2,6 +2,8 @@
 // Summaries of a reconstruction and its fit (reconstruction_json.hpp).
 #include "hula/io/reconstruction_json.hpp"
 
+#include <string>
+
 #include "hula/core/error.hpp"
 #include "hula/io/json_curve.hpp"
 #include "hula/io/json_read.hpp"
@@ -123,6 +125,50 @@ nlohmann::ordered_json reconstruction_request_json(const nlohmann::ordered_json&
   out["integration"] = integration_summary(curve);
   out["fit"] = fit_summary(fit);
   return out;
+}
+
+CurvatureEditRequest curvature_edit_request_from_json(const nlohmann::ordered_json& body) {
+  const json::JsonPath root;
+  json::reject_unknown_members(body, root, {"kappa", "target", "tau", "hold", "max_handles_factor"});
+  law::Context ctx;
+  CurvatureEditRequest r;
+  r.edit.curvature = read_law(body, "kappa", ctx);
+  if (const Json* t = json::optional_member(body, "target"))
+    r.edit.target = studies::curvature_target_from_name(json::get_string(*t, json::root_path("target")), "target");
+  if (body.contains("tau")) r.edit.torsion = read_law(body, "tau", ctx);
+  if (const nlohmann::ordered_json* h = json::optional_member(body, "hold"))
+    r.options.hold = studies::end_hold_from_name(json::get_string(*h, json::root_path("hold")), "hold");
+  if (const nlohmann::ordered_json* f = json::optional_member(body, "max_handles_factor"))
+    r.options.max_handles_factor = json::get_number(*f, json::root_path("max_handles_factor"));
+  r.options.reconstruction.max_steps = intrinsic::kFrontEndMaxSteps;
+  r.options.validate();
+  return r;
+}
+
+nlohmann::ordered_json curvature_edit_to_json(const studies::CurvatureEditResult& r) {
+  nlohmann::ordered_json j = nlohmann::ordered_json::object();
+  j["kind"] = std::string(r.curve.kind_name());
+  j["handles_before"] = r.handles_before;
+  j["handles_after"] = r.handles_after;
+  j["planar"] = r.planar;
+  j["length_before"] = r.length_before;
+  j["length_after"] = r.length_after;
+  j["reconstructed"] = r.reconstructed;
+  j["max_curvature_deviation"] = r.max_curvature_deviation;
+  j["mean_curvature_deviation"] = r.mean_curvature_deviation;
+  j["reconstruction_max_deviation"] = r.reconstruction_max_deviation;
+  j["reconstruction_mean_deviation"] = r.reconstruction_mean_deviation;
+  j["iterations"] = r.iterations;
+  j["start_point_error"] = r.start_point_error;
+  j["end_point_error"] = r.end_point_error;
+  j["start_tangent_error"] = r.start_tangent_error;
+  j["end_tangent_error"] = r.end_tangent_error;
+  j["start_curvature_error"] = r.start_curvature_error;
+  j["end_curvature_error"] = r.end_curvature_error;
+  j["inflections_before"] = r.inflections_before;
+  j["inflections_after"] = r.inflections_after;
+  j["seconds"] = r.seconds;
+  return j;
 }
 
 }  // namespace hula::io

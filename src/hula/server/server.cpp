@@ -428,6 +428,7 @@ Server::Server(ServerOptions options) {
   routes::add_jobs(s.router, context);
   routes::add_documents(s.router, context);
   routes::add_entities(s.router, context);
+  routes::add_study_seed(s.router, context);
 }
 
 Server::~Server() {

@@ -65,6 +65,10 @@ double bernstein_sum(std::span<const double> c, double u) {
   return v;
 }
 
+// Panels of the envelope-weighted Gram matrix ∫₀¹ e(u)² B_i B_j du (8-point Gauss–Legendre on each):
+// enough for the polynomial degree 2n ≤ 40 times a smooth envelope.
+constexpr int kGramPanels = 64;
+
 // Gram matrix ∫₀¹ B_i B_j du = C(n,i) C(n,j) / (C(2n, i+j) (2n + 1)).
 Matrix bernstein_gram(int n) {
   Matrix g(n + 1, n + 1);
@@ -92,6 +96,31 @@ law::Law correction_law(std::span<const double> c, const law::Law& u) {
 
 bool all_zero(std::span<const double> c) {
   return std::all_of(c.begin(), c.end(), [](double v) { return v == 0.0; });
+}
+
+// ∫₀¹ e(u)² B_i B_j du by Gauss–Legendre on kGramPanels panels.
+Matrix envelope_gram(int n, const Profile& envelope) {
+  std::vector<double> u, w;
+  for (int panel = 0; panel < kGramPanels; ++panel) {
+    const double h = 1.0 / kGramPanels, mid = (panel + 0.5) * h;
+    for (std::size_t g = 0; g < kGaussNodes.size(); ++g)
+      for (const double sign : {-1.0, 1.0}) {
+        u.push_back(mid + sign * kGaussNodes[g] * 0.5 * h);
+        w.push_back(kGaussWeights[g] * 0.5 * h);
+      }
+  }
+  std::vector<double> e(u.size());
+  envelope.sample(u, e);
+  Matrix g = Matrix::Zero(n + 1, n + 1);
+  std::vector<double> basis(static_cast<std::size_t>(n + 1));
+  for (std::size_t q = 0; q < u.size(); ++q) {
+    bernstein(n, u[q], basis);
+    const double we = w[q] * e[q] * e[q];
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; j <= n; ++j)
+        g(i, j) += we * basis[static_cast<std::size_t>(i)] * basis[static_cast<std::size_t>(j)];
+  }
+  return g;
 }
 
 // Unknowns: [κ coefficients | τ coefficients (optional) | L (optional)].
@@ -127,10 +156,24 @@ class Solver {
                   "torsion profile belongs to another law context than the curvature profile; build both "
                   "profiles in one law::Context",
                   ErrorWhere{.field = "torsion"});
+    if (p_.curvature_envelope && !(p_.curvature_envelope->law().context() == ctx))
+      throw Error(Errc::InvalidArgument,
+                  "curvature_envelope profile belongs to another law context than the curvature profile; build "
+                  "both profiles in one law::Context",
+                  ErrorWhere{.field = "curvature_envelope"});
     unknowns_.n = o_.correction_degree;
     unknowns_.torsion = p_.torsion.has_value() && o_.correct_torsion;
-    unknowns_.length = o_.vary_length && (p_.end_point || p_.end_tangent);
+    unknowns_.length = o_.vary_length && (p_.end_point || p_.end_tangent || p_.end_normal);
+    fixed_.assign(static_cast<std::size_t>(unknowns_.size()), std::nullopt);
+    hold_end_curvature(p_.start_curvature, 0.0, 0, "start_curvature");
+    hold_end_curvature(p_.end_curvature, 1.0, unknowns_.n, "end_curvature");
   }
+
+  // The correction coefficients fixed by the held end curvatures (nullopt: free).
+  [[nodiscard]] const std::vector<std::optional<double>>& fixed() const { return fixed_; }
+
+  // e(u), 1 without an envelope.
+  [[nodiscard]] double envelope(double u) const { return p_.curvature_envelope ? (*p_.curvature_envelope)(u) : 1.0; }
 
   [[nodiscard]] const Unknowns& unknowns() const { return unknowns_; }
 
@@ -147,9 +190,15 @@ class Solver {
     };
     e.kappa = law::substitute(p_.curvature.law(), p_.curvature.variable(), u);
     const std::vector<double> ck = coefficients(0);
-    if (!all_zero(ck)) e.kappa = e.kappa + correction_law(ck, u);
+    if (!all_zero(ck)) {
+      law::Law correction = correction_law(ck, u);
+      if (p_.curvature_envelope)
+        correction = law::substitute(p_.curvature_envelope->law(), p_.curvature_envelope->variable(), u) * correction;
+      e.kappa = e.kappa + correction;
+    }
     intrinsic::ReconstructionOptions ro;
     ro.tolerance = std::clamp(o_.integration_tolerance * length, 1e-13, 1e-2);
+    ro.max_steps = o_.max_steps;
     if (p_.torsion) {
       e.tau = law::substitute(p_.torsion->law(), p_.torsion->variable(), u);
       if (unknowns_.torsion) {
@@ -208,6 +257,13 @@ class Solver {
         e.angle_error = angle;
       }
     }
+    if (p_.end_normal) {
+      // The rotation about T(L) from n* (made normal to T(L)) to N(L).
+      const Vec3 n_star = normalized(n_end_ - end.tangent * dot(end.tangent, n_end_));
+      const double angle = std::atan2(dot(cross(n_star, end.normal), end.tangent), dot(n_star, end.normal));
+      e.residual(row++) = angle;
+      e.angle_error = std::max(e.angle_error, std::abs(angle));
+    }
   }
 
   // Fixes the plane basis (planar) and the end-tangent basis from the normalised start frame.
@@ -221,6 +277,7 @@ class Solver {
       t_e1_ = normalized(cross(t_end_, helper));
       t_e2_ = cross(t_end_, t_e1_);
     }
+    if (p_.end_normal) n_end_ = *p_.end_normal;
   }
 
   [[nodiscard]] bool planar() const { return !p_.torsion.has_value(); }
@@ -228,7 +285,7 @@ class Solver {
   [[nodiscard]] int constraint_count() const {
     const int point_rows = p_.end_point ? (planar() ? 2 : 3) : 0;
     const int tangent_rows = p_.end_tangent ? (planar() ? 1 : 2) : 0;
-    return point_rows + tangent_rows;
+    return point_rows + tangent_rows + (p_.end_normal ? 1 : 0);
   }
 
   // ∂F/∂x by the Darboux-vector sensitivities (header), Gauss–Legendre over the dense curve.
@@ -263,7 +320,7 @@ class Solver {
       const Vec3 lever = end.position - f.position;
       const double w = weights[q];
       bernstein(unknowns_.n, f.s / length, basis);
-      const Vec3 bend = f.binormal * w;  // δω of a unit δκ, times the weight
+      const Vec3 bend = f.binormal * (w * envelope(f.s / length));  // δω of a unit δκ coefficient, times the weight
       const Vec3 bend_r = cross(bend, lever);
       for (int k = 0; k <= unknowns_.n; ++k) {
         const double bk = basis[static_cast<std::size_t>(k)];
@@ -315,6 +372,7 @@ class Solver {
           jac(row++, col) = dot(turn, t_e2_);
         }
       }
+      if (p_.end_normal) jac(row++, col) = dot(om, end.tangent);  // δN = δΩ × N: the turn about T(L)
     }
     return jac;
   }
@@ -323,9 +381,11 @@ class Solver {
   [[nodiscard]] Matrix metric() const {
     const int m = unknowns_.size();
     Matrix metric = Matrix::Zero(m, m);
-    const Matrix g = bernstein_gram(unknowns_.n) * (p_.length * p_.length);
+    const double l2 = p_.length * p_.length;
+    const Matrix g = bernstein_gram(unknowns_.n) * l2;
     const int b = unknowns_.n + 1;
-    metric.block(0, 0, b, b) = g;
+    metric.block(0, 0, b, b) =
+        p_.curvature_envelope ? Matrix(envelope_gram(unknowns_.n, *p_.curvature_envelope) * l2) : g;
     if (unknowns_.torsion) metric.block(b, b, b, b) = g;
     if (unknowns_.length) {
       const int j = unknowns_.length_index();
@@ -340,14 +400,46 @@ class Solver {
     return x;
   }
 
+  // y_fix: the held coefficients' values (zero elsewhere).
+  [[nodiscard]] Vector fixed_offset() const {
+    Vector y = Vector::Zero(unknowns_.size());
+    for (std::size_t i = 0; i < fixed_.size(); ++i)
+      if (fixed_[i]) y(static_cast<Eigen::Index>(i)) = *fixed_[i];
+    return y;
+  }
+
   [[nodiscard]] int reconstructions() const { return reconstructions_; }
 
  private:
+  // A held end curvature κ_h at u (0 or 1) fixes coefficient k: κ*(u) + e(u) c_k = κ_h. Where the
+  // envelope vanishes the curvature there is κ*(u) whatever c_k is: then κ_h must already be it.
+  void hold_end_curvature(const std::optional<double>& held, double u, int k, const char* field) {
+    if (!held) return;
+    const double target = p_.curvature(u);
+    const double e = envelope(u);
+    const double scale = std::max({std::abs(*held), std::abs(target), 1.0 / p_.length});
+    if (std::abs(e) <= kZeroEnvelope * scale) {
+      if (std::abs(*held - target) > kZeroEnvelope * scale)
+        throw Error(Errc::InvalidArgument,
+                    std::string(field) + " = " + format_number(*held) + " differs from the target's " +
+                        format_number(target) +
+                        " where the correction envelope is zero: the correction cannot change the curvature there",
+                    ErrorWhere{.field = field});
+      return;  // held by the envelope itself
+    }
+    fixed_[static_cast<std::size_t>(k)] = (*held - target) / e;
+  }
+
+  // An envelope below this fraction of the curvature scale counts as zero (a relative correction at a
+  // natural end or an inflection, whose target is zero to rounding).
+  static constexpr double kZeroEnvelope = 1e-10;
+
   const DirectReconstructionProblem& p_;
   const DirectReconstructionOptions& o_;
   law::Law s_;
   Unknowns unknowns_;
-  Vec3 e_x_{}, e_y_{}, b_{}, t_end_{}, t_e1_{}, t_e2_{};
+  std::vector<std::optional<double>> fixed_;
+  Vec3 e_x_{}, e_y_{}, b_{}, t_end_{}, t_e1_{}, t_e2_{}, n_end_{};
   mutable int reconstructions_ = 0;
 };
 
@@ -385,13 +477,38 @@ void check_problem(const DirectReconstructionProblem& p, const DirectReconstruct
       throw Error(Errc::InvalidArgument, "end_tangent is the zero vector: it gives no direction",
                   ErrorWhere{.field = "end_tangent"});
   }
-  const int constraints = (p.end_point ? (p.torsion ? 3 : 2) : 0) + (p.end_tangent ? (p.torsion ? 2 : 1) : 0);
-  const int unknowns = (o.correction_degree + 1) * ((p.torsion && o.correct_torsion) ? 2 : 1) +
+  if (p.end_normal) {
+    for (std::size_t i = 0; i < 3; ++i)
+      if (!std::isfinite((*p.end_normal)[i]))
+        throw Error(Errc::NonFiniteInput,
+                    "end_normal[" + std::to_string(i) + "] = " + format_number((*p.end_normal)[i]) + " is not finite",
+                    ErrorWhere{.field = "end_normal", .index = i});
+    if (!p.torsion)
+      throw Error(Errc::InvalidArgument,
+                  "end_normal is for space curves: a planar curve's normal is fixed by its plane and the sign of κ",
+                  ErrorWhere{.field = "end_normal"});
+    if (!p.end_tangent)
+      throw Error(Errc::InvalidArgument, "end_normal needs end_tangent: the normal is held about the end tangent",
+                  ErrorWhere{.field = "end_normal"});
+    const Vec3 t = normalized(*p.end_tangent);
+    if (norm(*p.end_normal - t * dot(t, *p.end_normal)) <= 1e-9 * norm(*p.end_normal))
+      throw Error(Errc::InvalidArgument, "end_normal is zero or parallel to end_tangent: it gives no normal direction",
+                  ErrorWhere{.field = "end_normal"});
+  }
+  for (const auto& [value, field] :
+       {std::pair{p.start_curvature, "start_curvature"}, std::pair{p.end_curvature, "end_curvature"}})
+    if (value && !std::isfinite(*value))
+      throw Error(Errc::NonFiniteInput, std::string(field) + " = " + format_number(*value) + " is not finite",
+                  ErrorWhere{.field = field});
+  const int held = (p.start_curvature ? 1 : 0) + (p.end_curvature ? 1 : 0);
+  const int constraints =
+      (p.end_point ? (p.torsion ? 3 : 2) : 0) + (p.end_tangent ? (p.torsion ? 2 : 1) : 0) + (p.end_normal ? 1 : 0);
+  const int unknowns = (o.correction_degree + 1) * ((p.torsion && o.correct_torsion) ? 2 : 1) - held +
                        (o.vary_length && constraints > 0 ? 1 : 0);
   if (unknowns < constraints)
     throw Error(Errc::InvalidOption,
                 "DirectReconstructionOptions.correction_degree = " + std::to_string(o.correction_degree) + " gives " +
-                    std::to_string(unknowns) + " correction coefficients for " + std::to_string(constraints) +
+                    std::to_string(unknowns) + " free correction coefficients for " + std::to_string(constraints) +
                     " end conditions; raise the degree" +
                     (p.torsion && !o.correct_torsion ? " or correct_torsion" : ""),
                 ErrorWhere{.field = "correction_degree"});
@@ -432,6 +549,8 @@ void DirectReconstructionOptions::validate() const {
   if (max_iterations < 1 || max_iterations > 10'000) invalid_option("max_iterations", max_iterations, "[1, 10000]");
   if (!(integration_tolerance >= 1e-13 && integration_tolerance <= 1e-3))
     invalid_option("integration_tolerance", integration_tolerance, "[1e-13, 1e-3]");
+  if (max_steps < 1 || max_steps > 100'000'000)
+    invalid_option("max_steps", static_cast<double>(max_steps), "[1, 100000000]");
   if (deviation_samples < 2 || deviation_samples > 1'000'000)
     invalid_option("deviation_samples", static_cast<double>(deviation_samples), "[2, 1000000]");
   fit_options.validate();
@@ -451,62 +570,99 @@ DirectReconstructionResult reconstruct_direct(const DirectReconstructionProblem&
   solver.set_frame(start);
 
   int iterations = 0;
-  if (solver.constraint_count() > 0) {
+  const Vector x_ref = solver.reference();
+  const Vector y_fix = solver.fixed_offset();
+  const bool any_fixed = y_fix.cwiseAbs().maxCoeff() > 0.0;
+  if (solver.constraint_count() > 0 || any_fixed) {
     solver.measure(current);  // residuals in the frame just fixed
     const Matrix metric = solver.metric();
-    const Eigen::LLT<Matrix> llt(metric);
+    // The free unknowns (P of the header) and the metric restricted to them.
+    std::vector<Eigen::Index> free;
+    for (Eigen::Index i = 0; i < x.size(); ++i)
+      if (!solver.fixed()[static_cast<std::size_t>(i)]) free.push_back(i);
+    const auto nf = static_cast<Eigen::Index>(free.size());
+    Matrix m_ff(nf, nf);
+    Vector g(nf);
+    const Vector m_yfix = metric * y_fix;
+    for (Eigen::Index a = 0; a < nf; ++a) {
+      g(a) = m_yfix(free[static_cast<std::size_t>(a)]);
+      for (Eigen::Index b = 0; b < nf; ++b)
+        m_ff(a, b) = metric(free[static_cast<std::size_t>(a)], free[static_cast<std::size_t>(b)]);
+    }
+    const Eigen::LLT<Matrix> llt(m_ff);
     const Matrix r_upper = llt.matrixU();
-    const Vector x_ref = solver.reference();
-    const double tol = options.end_tolerance;
-    // Optimality: the minimum-norm iteration converges linearly once feasible (it ignores the
-    // constraints' curvature), so it stops when a step is below optimality_tolerance times the
-    // correction's own norm (or below the end tolerance in absolute terms).
-    const auto step_tol = [&](const Vector& at) {
-      const Vector y = at - x_ref;
-      return std::max(tol, options.optimality_tolerance * std::sqrt(std::max(0.0, y.dot(metric * y))));
+    const Vector w_shift = llt.solve(g);  // M_ff⁻¹ g
+    // x for free coordinates w: x_ref + y_fix + P w.
+    const auto assemble = [&](const Vector& w) {
+      Vector out = x_ref + y_fix;
+      for (Eigen::Index a = 0; a < nf; ++a) out(free[static_cast<std::size_t>(a)]) += w(a);
+      return out;
     };
-    bool converged = false;
-    while (iterations < options.max_iterations) {
-      ++iterations;
-      const Matrix jac = solver.jacobian(current);
-      // Minimum-norm solution y of J y = J (x − x_ref) − F in the metric M = RᵀR: z = (J R⁻¹)⁺ b.
-      const Matrix j_hat = r_upper.transpose().triangularView<Eigen::Lower>().solve(jac.transpose()).transpose();
-      const Vector rhs = jac * (x - x_ref) - current.residual;
-      const Vector z = Eigen::CompleteOrthogonalDecomposition<Matrix>(j_hat).solve(rhs);
-      const Vector y = r_upper.triangularView<Eigen::Upper>().solve(z);
-      const Vector step = (x_ref + y) - x;
-      const double step_norm = std::sqrt(std::max(0.0, step.dot(metric * step)));
-      if (current.merit() <= tol && step_norm <= step_tol(x)) {
-        converged = true;
-        break;
-      }
-      double alpha = 1.0;
-      bool accepted = false;
-      for (int halving = 0; halving <= kMaxHalvings; ++halving, alpha *= 0.5) {
-        const Vector trial_x = x + alpha * step;
-        if (unknowns.length && !(trial_x(unknowns.length_index()) > 0.0)) continue;
-        Evaluation trial = solver.evaluate(trial_x);
-        if (trial.merit() < current.merit() || trial.merit() <= kNearFeasible * tol) {
-          x = trial_x;
-          current = std::move(trial);
-          accepted = true;
+    if (solver.constraint_count() == 0) {
+      // Only held end curvatures: the free coefficients that make the whole correction least (w = −M_ff⁻¹ g).
+      x = assemble(-w_shift);
+      current = solver.evaluate(x);
+    } else {
+      if (any_fixed) current = solver.evaluate(x = assemble(Vector::Zero(nf)));
+      const double tol = options.end_tolerance;
+      // Optimality: the minimum-norm iteration converges linearly once feasible (it ignores the
+      // constraints' curvature), so it stops when a step is below optimality_tolerance times the
+      // correction's own norm (or below the end tolerance in absolute terms).
+      const auto step_tol = [&](const Vector& at) {
+        const Vector y = at - x_ref;
+        return std::max(tol, options.optimality_tolerance * std::sqrt(std::max(0.0, y.dot(metric * y))));
+      };
+      bool converged = false;
+      while (iterations < options.max_iterations) {
+        ++iterations;
+        const Matrix jac = solver.jacobian(current);
+        Matrix jac_free(jac.rows(), nf);
+        Vector w_now(nf);
+        for (Eigen::Index a = 0; a < nf; ++a) {
+          jac_free.col(a) = jac.col(free[static_cast<std::size_t>(a)]);
+          w_now(a) = x(free[static_cast<std::size_t>(a)]) - x_ref(free[static_cast<std::size_t>(a)]);
+        }
+        // Least-norm w with J P w = J P w_now − F (the held part does not move): v the least
+        // M_ff-norm solution of J P v = that + J P M_ff⁻¹ g, w = v − M_ff⁻¹ g (header). With
+        // M_ff = RᵀR: z = (J P R⁻¹)⁺ rhs, v = R⁻¹ z.
+        const Matrix j_hat = r_upper.transpose().triangularView<Eigen::Lower>().solve(jac_free.transpose()).transpose();
+        const Vector rhs = jac_free * (w_now + w_shift) - current.residual;
+        const Vector z = Eigen::CompleteOrthogonalDecomposition<Matrix>(j_hat).solve(rhs);
+        const Vector w = r_upper.triangularView<Eigen::Upper>().solve(z) - w_shift;
+        const Vector step = assemble(w) - x;
+        const double step_norm = std::sqrt(std::max(0.0, step.dot(metric * step)));
+        if (current.merit() <= tol && step_norm <= step_tol(x)) {
+          converged = true;
+          break;
+        }
+        double alpha = 1.0;
+        bool accepted = false;
+        for (int halving = 0; halving <= kMaxHalvings; ++halving, alpha *= 0.5) {
+          const Vector trial_x = x + alpha * step;
+          if (unknowns.length && !(trial_x(unknowns.length_index()) > 0.0)) continue;
+          Evaluation trial = solver.evaluate(trial_x);
+          if (trial.merit() < current.merit() || trial.merit() <= kNearFeasible * tol) {
+            x = trial_x;
+            current = std::move(trial);
+            accepted = true;
+            break;
+          }
+        }
+        if (!accepted) break;
+        if (current.merit() <= tol && alpha * step_norm <= step_tol(x)) {
+          converged = true;
           break;
         }
       }
-      if (!accepted) break;
-      if (current.merit() <= tol && alpha * step_norm <= step_tol(x)) {
-        converged = true;
-        break;
-      }
+      if (!converged && current.merit() > tol)
+        throw Error(Errc::NumericalFailure,
+                    "direct reconstruction did not meet the end constraints in " + std::to_string(iterations) +
+                        " Gauss-Newton iterations: reached end point error " + format_number(current.point_error) +
+                        " (L = " + format_number(current.length) + "), end tangent angle error " +
+                        format_number(current.angle_error) + " rad, tolerance " + format_number(tol) +
+                        "; raise correction_degree or max_iterations, or check that the end is reachable",
+                    ErrorWhere{.field = problem.end_point ? "end_point" : "end_tangent"});
     }
-    if (!converged && current.merit() > tol)
-      throw Error(Errc::NumericalFailure,
-                  "direct reconstruction did not meet the end constraints in " + std::to_string(iterations) +
-                      " Gauss-Newton iterations: reached end point error " + format_number(current.point_error) +
-                      " (L = " + format_number(current.length) + "), end tangent angle error " +
-                      format_number(current.angle_error) + " rad, tolerance " + format_number(tol) +
-                      "; raise correction_degree or max_iterations, or check that the end is reachable",
-                  ErrorWhere{.field = problem.end_point ? "end_point" : "end_tangent"});
   }
 
   DirectReconstructionResult result{.curve = std::move(*current.curve)};
@@ -527,7 +683,7 @@ DirectReconstructionResult reconstruct_direct(const DirectReconstructionProblem&
   double sum_k = 0.0, max_k = 0.0, sum_t = 0.0, max_t = 0.0;
   for (std::size_t i = 0; i < n_samples; ++i) {
     const double u = static_cast<double>(i) / static_cast<double>(n_samples - 1);
-    const double dk = std::abs(bernstein_sum(result.curvature_correction, u));
+    const double dk = std::abs(solver.envelope(u) * bernstein_sum(result.curvature_correction, u));
     sum_k += dk;
     max_k = std::max(max_k, dk);
     if (!result.torsion_correction.empty()) {

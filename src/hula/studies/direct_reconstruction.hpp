@@ -42,7 +42,20 @@
 //
 // End residuals (dimensionless): (r(L) − p*) / L, and for the tangent the
 // rotation from t* to T(L) (its angle for planar curves, its two components
-// normal to t* in space).
+// normal to t* in space); for a prescribed end normal of a space curve, the
+// rotation about T(L) from n* to N(L), whose sensitivity is δΩ · T(L).
+//
+// Relative corrections and held end curvatures (issue 21, design by curvature):
+// with an envelope e(u) the curvature correction is δκ(u) = e(u) Σ_k c_k B_k(u)
+// and the metric the L² norm of that product (Gauss–Legendre Gram matrix). With
+// e = κ* the curve's curvature is κ*(u)(1 + Σ c_k B_k(u)): wherever the target
+// is zero (an inflection, a straight end) the result is zero too, so a
+// correction that holds the ends cannot add inflections. Prescribed end
+// curvatures fix c_0 and c_n (B_k(0) = δ_k0, B_k(1) = δ_kn), and the
+// iteration runs on the other unknowns: with y = y_fix + P w (P selects the
+// free unknowns), the least M-norm y with J P w = b is
+//     w = v − M_ff⁻¹ g,   v the least M_ff-norm solution of J P v = b + J P M_ff⁻¹ g,
+// M_ff = Pᵀ M P, g = Pᵀ M y_fix.
 #pragma once
 
 #include <cstddef>
@@ -71,6 +84,17 @@ struct DirectReconstructionProblem {
   std::optional<Vec3> end_point{};
   /// Prescribed end tangent direction T(L) (any non-zero length, normalised); absent: free.
   std::optional<Vec3> end_tangent{};
+  /// Space curves only: prescribed end normal N(L) (with end_tangent, the whole end frame: a G2 join's
+  /// osculating plane); its component along T(L) is ignored. Absent: free.
+  std::optional<Vec3> end_normal{};
+  /// Prescribed curvature κ(0), signed as the target (a G2 start); absent: free.
+  std::optional<double> start_curvature{};
+  /// Prescribed curvature κ(L) (a G2 end); absent: free.
+  std::optional<double> end_curvature{};
+  /// Envelope e(u) of the curvature correction, δκ(u) = e(u) Σ_k c_k B_k(u) (file comment); the
+  /// curvature profile itself makes the correction relative, so zeros of κ* stay zeros. Must share
+  /// the curvature profile's law::Context. Absent: e ≡ 1 (an additive correction).
+  std::optional<Profile> curvature_envelope{};
 };
 
 /// Options of reconstruct_direct().
@@ -103,6 +127,9 @@ struct DirectReconstructionOptions {
   /// [1e-13, 1e-2]). Default 1e-11: an order below end_tolerance so integration error does not
   /// mask the end residual. Valid [1e-13, 1e-3].
   double integration_tolerance = 1e-11;
+  /// Largest number of integration step attempts per reconstruction (intrinsic::ReconstructionOptions::max_steps);
+  /// front ends bound it with intrinsic::kFrontEndMaxSteps. Default 1 000 000; valid 1 … 100 000 000.
+  std::size_t max_steps = 1'000'000;
   /// Samples N of the reported mean profile deviation (uniform in u, ends included). Default
   /// 200; valid 2 … 1 000 000.
   std::size_t deviation_samples = 200;
@@ -173,10 +200,13 @@ struct DirectReconstructionResult {
 /// @returns the curve, its NURBS, the corrections and the measured errors
 /// @throws hula::Error(Errc::InvalidArgument) naming "length" if L ≤ 0; "end_point" if it is
 ///   farther than L from the start point (unreachable) or, for a planar curve, off the start
-///   plane; "end_tangent" if it is zero or, planar, not in the start plane; "torsion" if its
-///   profile belongs to another law::Context than the curvature's; "start_frame.tangent" /
-///   "start_frame.normal" from intrinsic::reconstruct
-/// @throws hula::Error(Errc::NonFiniteInput) naming "length", "end_point" or "end_tangent" for NaN/inf
+///   plane; "end_tangent" if it is zero or, planar, not in the start plane; "end_normal" for a
+///   planar curve, without end_tangent, or parallel to it; "start_curvature" / "end_curvature"
+///   where the envelope is zero but the value differs from the target's; "torsion" or
+///   "curvature_envelope" if its profile belongs to another law::Context than the curvature's;
+///   "start_frame.tangent" / "start_frame.normal" from intrinsic::reconstruct
+/// @throws hula::Error(Errc::NonFiniteInput) naming "length", "end_point", "end_tangent", "end_normal",
+///   "start_curvature" or "end_curvature" for NaN/inf
 /// @throws hula::Error(Errc::InvalidOption) from options.validate(), or "correction_degree" when
 ///   the corrections have fewer unknowns than there are end conditions
 /// @throws hula::Error(Errc::NumericalFailure) when the iteration does not meet the end within

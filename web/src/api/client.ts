@@ -7,6 +7,8 @@ import type {
   AnalysisRequest,
   ChangeReply,
   CurveFile,
+  CurvatureEditReply,
+  CurvatureEditRequest,
   DocumentState,
   DocumentSummary,
   Entity,
@@ -271,6 +273,31 @@ export class Client {
       ...j,
       analysis: a && req.analysis ? analysisFromServer(a, req.analysis.by) : undefined,
     };
+  }
+
+  /** Design by curvature on a stored curve: one "edit curvature" undo step (docs/server.md). */
+  curvatureEdit(
+    doc: string,
+    label: string,
+    req: CurvatureEditRequest,
+  ): Promise<CurvatureEditReply> {
+    return this.request(
+      'POST',
+      `${this.doc(doc)}/entities/${encodeURIComponent(label)}/curvature-edit`,
+      req,
+    );
+  }
+  /** A study file seeded from a stored curve ("From selection"); the document is not changed. */
+  studySeed(
+    doc: string,
+    label: string,
+    req: { study: 'match-curvature-torsion'; population?: number; generations?: number },
+  ): Promise<Record<string, unknown>> {
+    return this.request(
+      'POST',
+      `${this.doc(doc)}/entities/${encodeURIComponent(label)}/study-seed`,
+      req,
+    );
   }
 
   law(req: LawRequest): Promise<LawResponse> {

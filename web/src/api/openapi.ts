@@ -454,3 +454,45 @@ export type ChangeWithAnalysis = {
   changes: ChangeSet;
   analysis?: Analysis;
 };
+
+export type CurvatureEditRequest = {
+  kappa: string;
+  target?: "curvature" | "change";
+  tau?: string;
+  hold?: "free" | "tangent" | "curvature";
+  max_handles_factor?: number;
+};
+
+export type CurvatureEditResult = {
+  revision: number;
+  changes: ChangeSet;
+  edit: {
+    kind: "nurbs" | "bezier" | "interpolated";
+    handles_before: number;
+    handles_after: number;
+    planar: boolean;
+    length_before: number;
+    length_after: number;
+    mean_curvature_deviation: number;
+    max_curvature_deviation: number;
+    iterations: number;
+    start_point_error: number;
+    end_point_error: number;
+    start_tangent_error: number;
+    end_tangent_error: number;
+    start_curvature_error: number;
+    end_curvature_error: number;
+    inflections_before: number;
+    inflections_after: number;
+    seconds: number;
+    reconstructed: boolean;
+    reconstruction_max_deviation: number;
+    reconstruction_mean_deviation: number;
+  };
+};
+
+export type StudySeedRequest = {
+  study: "match-curvature-torsion";
+  population?: number;
+  generations?: number;
+};

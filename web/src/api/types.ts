@@ -241,6 +241,44 @@ export interface ReconstructResponse {
   fit: { control_points: number; segments: number; tolerance: number; max_deviation: number };
 }
 
+/** POST …/entities/{label}/curvature-edit (docs/server.md): design by curvature on a stored curve. */
+export interface CurvatureEditRequest {
+  /** A law of the curve's arc length s: the target κ (signed when planar) or, target 'change', a change of |κ|. */
+  kappa: string;
+  target?: 'curvature' | 'change';
+  /** Space curves: the target τ(s); absent keeps the curve's torsion. */
+  tau?: string;
+  /** What the end keeps: 'tangent' (default: end point and tangent) or 'curvature' (also end curvatures). */
+  hold?: 'free' | 'tangent' | 'curvature';
+  max_handles_factor?: number;
+}
+export interface CurvatureEditReport {
+  kind: string;
+  handles_before: number;
+  handles_after: number;
+  planar: boolean;
+  length_before: number;
+  length_after: number;
+  reconstructed: boolean;
+  max_curvature_deviation: number;
+  mean_curvature_deviation: number;
+  reconstruction_max_deviation: number;
+  reconstruction_mean_deviation: number;
+  iterations: number;
+  start_point_error: number;
+  end_point_error: number;
+  start_tangent_error: number;
+  end_tangent_error: number;
+  start_curvature_error: number;
+  end_curvature_error: number;
+  inflections_before: number;
+  inflections_after: number;
+  seconds: number;
+}
+export interface CurvatureEditReply extends ChangeReply {
+  edit: CurvatureEditReport;
+}
+
 export type JobState = 'queued' | 'running' | 'done' | 'failed' | 'cancelled';
 export interface Solution {
   variables: number[];
@@ -330,7 +368,11 @@ export const CONTRACT: [
   Within<NonNullable<Job['result']>, Api.JobResult>,
   Within<GenerationEvent, Api.GenerationEvent>,
   Within<DocumentSummary, Api.DocumentList['documents'][number]>,
+  Within<CurvatureEditRequest, Api.CurvatureEditRequest>,
+  Within<CurvatureEditReport, Api.CurvatureEditResult['edit']>,
 ] = [
+  true,
+  true,
   true,
   true,
   true,

@@ -1,10 +1,12 @@
-// Design by curvature: drag the κ(s) graph or type κ(s), τ(s); the curve is
-// rebuilt by the server's natural-equation solver (POST /api/reconstruct)
-// from the selected curve's start point and frame, and replaces it as one
-// undo step. The page only edits the profile (a function), never the curve.
+// Design by curvature: drag the κ(s) graph or type κ(s), τ(s); the server
+// edits the selected curve (POST …/entities/{label}/curvature-edit,
+// studies::edit_curvature) keeping its start, its end point and end tangent
+// and, when asked, its end curvatures, and stores a compact curve of the same
+// kind as one undo step. The page only sends the profile's change (a
+// function of arc length), never a curve.
 
 import type { App } from '../app';
-import type { Analysis } from '../api/types';
+import type { CurvatureEditRequest } from '../api/types';
 import type { Graph } from '../graphs/graph';
 import { bumpProfile } from '../graphs/scale';
 
@@ -55,6 +57,7 @@ export function profileLaw(
 
 export class DesignByCurvature {
   private readonly enabled: HTMLInputElement;
+  private readonly hold: HTMLSelectElement;
   private readonly kappaInput: HTMLInputElement;
   private readonly tauInput: HTMLInputElement;
   private readonly info: HTMLElement;
@@ -72,11 +75,17 @@ export class DesignByCurvature {
     const box = app.panels.designBox;
     box.innerHTML = `
       <div class="row"><label class="inline"><input type="checkbox" id="design-drag" aria-label="Drag the curvature graph to edit the curve"> drag the κ graph</label></div>
+      <div class="row"><select id="design-hold" aria-label="What the edited curve keeps at its end">
+        <option value="tangent">keep end point + tangent (G1)</option>
+        <option value="curvature">keep end point, tangent + curvature (G2)</option>
+        <option value="free">keep the start only</option>
+      </select></div>
       <div class="row"><input id="design-kappa" aria-label="Curvature profile κ(s)" placeholder="κ(s), e.g. 0.02 + 0.0002*s"></div>
-      <div class="row"><input id="design-tau" aria-label="Torsion profile τ(s)" placeholder="τ(s), e.g. 0" value="0"></div>
+      <div class="row"><input id="design-tau" aria-label="Torsion profile τ(s)" placeholder="τ(s); empty keeps the torsion"></div>
       <div class="row"><button id="design-apply" aria-label="Rebuild the selected curve from the typed profile">Rebuild from profile</button></div>
       <div class="row" id="design-info" aria-live="polite"></div>`;
     this.enabled = box.querySelector('#design-drag')!;
+    this.hold = box.querySelector('#design-hold')!;
     this.kappaInput = box.querySelector('#design-kappa')!;
     this.tauInput = box.querySelector('#design-tau')!;
     this.info = box.querySelector('#design-info')!;
@@ -111,67 +120,43 @@ export class DesignByCurvature {
     if (phase === 'end') {
       this.base = null;
       const label = this.app.selected;
-      const a = label ? this.app.store.analyses.get(label) : undefined;
-      if (!label || !a) return;
-      const tau = a.planar
-        ? '0'
-        : profileLaw(
-            a.s,
-            a.tau.map((v) => v ?? NaN),
-            length,
-          );
-      void this.rebuild(label, a, profileLaw(b.xs, b.edited, length), tau, length);
+      if (!label) return;
+      // The change of |κ| the drag asked for (the graph shows |κ|): the server signs it by the
+      // side the curve bends to, so an S stays an S.
+      const change = b.edited.map((v, i) => v - b.ys[i]!);
+      void this.edit(label, { kappa: profileLaw(b.xs, change, length), target: 'change' });
     }
   }
 
   private async applyTyped(): Promise<void> {
     const label = this.app.selected;
-    const a = label ? this.app.store.analyses.get(label) : undefined;
-    if (!label || !a) {
+    if (!label || !this.app.store.analyses.get(label)) {
       this.info.textContent = 'Select a curve first.';
       return;
     }
-    const length = a.s[a.s.length - 1]! - a.s[0]!;
-    await this.rebuild(label, a, this.kappaInput.value || '0', this.tauInput.value || '0', length);
+    const tau = this.tauInput.value.trim();
+    await this.edit(label, {
+      kappa: this.kappaInput.value || '0',
+      target: 'curvature',
+      ...(tau ? { tau } : {}),
+    });
   }
 
-  /** Rebuild the curve from κ(s), τ(s) at its start point and start frame (initial-value route). */
-  private async rebuild(
-    label: string,
-    a: Analysis,
-    kappa: string,
-    tau: string,
-    length: number,
-  ): Promise<void> {
-    const p0 = a.points[0]!;
-    // The server's start frame. Where N is undefined at the start (κ = 0 there,
-    // e.g. a natural spline's end), the nearest sample with a defined N gives
-    // the side the curve bends to (made normal to T); the left perpendicular
-    // in X-Y, which turned such curves the wrong way, is the last resort.
-    const f0 = a.frames[0];
-    const tangent =
-      f0 && f0.T.every(Number.isFinite) ? f0.T : direction(a.points[0]!, a.points[1]!);
-    const bent = a.frames.find((f) => f.N.every(Number.isFinite))?.N;
-    const normal = bent ? orthogonalTo(bent, tangent) : null;
-    const startNormal = normal ?? perpendicular(tangent);
+  /** The server edits the stored curve (one undo step) and answers the change and its report. */
+  private async edit(label: string, req: CurvatureEditRequest): Promise<void> {
     this.busy = true;
     this.app.setGhost(label);
     try {
+      const hold = this.hold.value as NonNullable<CurvatureEditRequest['hold']>;
       const r = await this.app.run(() =>
-        this.app.client.reconstruct({
-          kappa,
-          tau,
-          length,
-          start_point: [p0[0] ?? 0, p0[1] ?? 0, p0[2] ?? 0],
-          start_frame: { tangent, normal: startNormal },
-          // The fit within 1e-5 of the curve's size (the route's default is 1e-6): few handles
-          // to drag, where an absolute 1e-10 gave 2,295 for a 130-long arch.
-          fit_tolerance: 1e-5,
-        }),
+        this.app.client.curvatureEdit(this.app.store.name, label, { ...req, hold }),
       );
       if (!r) return;
-      this.info.textContent = `rebuilt: length ${length.toPrecision(5)}, fit deviation ${r.max_deviation.toExponential(2)}`;
-      await this.app.replaceCurve(label, r.curve);
+      this.app.applyReply(r);
+      const e = r.edit;
+      const ends = Math.max(e.end_point_error, e.start_point_error);
+      this.info.textContent = `edited: ${e.handles_before} → ${e.handles_after} handles (${e.kind}), ends held to ${ends.toExponential(1)}, inflections ${e.inflections_before} → ${e.inflections_after}`;
+      this.info.dataset['handles'] = String(e.handles_after);
     } finally {
       this.busy = false;
     }
@@ -196,25 +181,4 @@ export class DesignByCurvature {
       this.busy = false;
     }
   }
-}
-
-function direction(a: number[], b: number[]): number[] {
-  const d = [0, 1, 2].map((k) => (b[k] ?? 0) - (a[k] ?? 0));
-  const n = Math.hypot(...d) || 1;
-  return d.map((x) => x / n);
-}
-
-/** The unit part of v normal to the unit vector t, or null when v ∥ t. */
-export function orthogonalTo(v: number[], t: number[]): number[] | null {
-  const d = [0, 1, 2].reduce((acc, k) => acc + (v[k] ?? 0) * (t[k] ?? 0), 0);
-  const w = [0, 1, 2].map((k) => (v[k] ?? 0) - d * (t[k] ?? 0));
-  const n = Math.hypot(...w);
-  return n > 1e-9 ? w.map((x) => x / n) : null;
-}
-
-function perpendicular(t: number[]): number[] {
-  // A unit vector normal to t in the plane of t and Z, or Y when t ∥ Z.
-  const [x, y] = [t[0] ?? 0, t[1] ?? 0];
-  const n = Math.hypot(x, y);
-  return n > 1e-9 ? [-y / n, x / n, 0] : [0, 1, 0];
 }

@@ -134,15 +134,15 @@ export class OptimisePanel {
     this.convEl = box.querySelector('#opt-conv')!;
     this.paretoEl = box.querySelector('#opt-pareto')!;
     box.querySelector('#opt-fill')!.addEventListener('click', () => {
-      this.fill();
+      void this.fill();
     });
     this.kind.addEventListener('change', () => {
       // ga / hybrid / direct are curvature matching's methods only (NSGA-II has its own).
       this.method.hidden = this.kind.value !== 'match-curvature';
-      this.fill();
+      void this.fill();
     });
     this.method.addEventListener('change', () => {
-      this.fill();
+      void this.fill();
     });
     this.start.addEventListener('click', () => {
       void this.run();
@@ -152,9 +152,24 @@ export class OptimisePanel {
     });
   }
 
-  /** Fill the study text from the selected curve's data or control points. */
-  fill(): void {
+  /**
+   * Fill the study text from the selected curve: the curvature + torsion study is
+   * seeded by the server (POST …/study-seed: the curve's points as variables, its
+   * end tangents, its κ and τ profiles as targets); the others from its handles.
+   */
+  async fill(): Promise<void> {
     const e = this.app.selectedEntity;
+    const label = this.app.selected;
+    if (this.kind.value === 'match-curvature-torsion' && e?.curve && label) {
+      const doc = this.app.store.name;
+      const study = await this.app.run(() =>
+        this.app.client.studySeed(doc, label, { study: 'match-curvature-torsion' }),
+      );
+      // A newer choice (another kind or curve) made while the seed was on its way wins.
+      if (study && this.kindName() === 'match-curvature-torsion' && this.app.selected === label)
+        this.text.value = JSON.stringify(study, null, 1);
+      return;
+    }
     const pts = handlesOf(e?.curve).map((p) =>
       e?.curve && isPlanar(e.curve) ? [p[0], p[1]] : [...p],
     );
@@ -178,6 +193,11 @@ export class OptimisePanel {
       null,
       1,
     );
+  }
+
+  /** The chosen study kind (read afresh: it may change while a request is on its way). */
+  private kindName(): string {
+    return this.kind.value;
   }
 
   /** Start the job, follow its events, show its result. */

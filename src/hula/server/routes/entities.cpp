@@ -34,28 +34,6 @@ namespace json = io::json;
 
 constexpr std::string_view kMoveStep = "move points";
 
-oli::Label parse_label(const std::string& text) {
-  std::uint64_t value = 0;
-  bool ok = !text.empty() && text.size() <= 19;
-  for (const char c : text) {
-    if (c < '0' || c > '9') ok = false;
-    if (ok) value = value * 10 + static_cast<std::uint64_t>(c - '0');
-  }
-  if (!ok || value == 0)
-    throw Error(Errc::InvalidArgument, "entity label '" + text + "' is not a positive integer",
-                ErrorWhere{.field = "label"});
-  return oli::Label{value};
-}
-
-// The document and the label of an entity route, 404 when the entity is not there.
-std::pair<std::shared_ptr<OpenDocument>, oli::Label> entity_of(DocumentRegistry& docs, const Request& request) {
-  auto doc = docs.get(request.params.at(0));
-  const oli::Label label = parse_label(request.params.at(1));
-  if (!doc->read([&](const oli::Document& d) { return d.contains(label); }))
-    throw HttpError(404, "NotFound", "document '" + doc->name() + "' has no entity " + request.params.at(1));
-  return {std::move(doc), label};
-}
-
 oli::Attributes read_attributes(const Json& body, oli::Attributes attributes) {
   if (const Json* a = json::optional_member(body, "attributes")) attributes = oli::attributes_from_json(*a);
   if (const Json* n = json::optional_member(body, "name"))
@@ -89,6 +67,27 @@ int read_times(const Json& body) {
 }
 
 }  // namespace
+
+oli::Label parse_label(const std::string& text) {
+  std::uint64_t value = 0;
+  bool ok = !text.empty() && text.size() <= 19;
+  for (const char c : text) {
+    if (c < '0' || c > '9') ok = false;
+    if (ok) value = value * 10 + static_cast<std::uint64_t>(c - '0');
+  }
+  if (!ok || value == 0)
+    throw Error(Errc::InvalidArgument, "entity label '" + text + "' is not a positive integer",
+                ErrorWhere{.field = "label"});
+  return oli::Label{value};
+}
+
+std::pair<std::shared_ptr<OpenDocument>, oli::Label> entity_of(DocumentRegistry& docs, const Request& request) {
+  auto doc = docs.get(request.params.at(0));
+  const oli::Label label = parse_label(request.params.at(1));
+  if (!doc->read([&](const oli::Document& d) { return d.contains(label); }))
+    throw HttpError(404, "NotFound", "document '" + doc->name() + "' has no entity " + request.params.at(1));
+  return {std::move(doc), label};
+}
 
 void add_entities(Router& router, const Context& context) {
   DocumentRegistry& docs = context.documents;

@@ -6,7 +6,9 @@
 #pragma once
 
 #include <filesystem>
+#include <memory>
 #include <string>
+#include <utility>
 
 #include "hula/oli/document.hpp"
 #include "hula/server/documents.hpp"
@@ -29,7 +31,7 @@ void add_health(Router& router, const Context& context);
 void add_openapi(Router& router, const Context& context);
 /// POST /api/law.
 void add_law(Router& router, const Context& context);
-/// POST /api/reconstruct.
+/// POST /api/reconstruct, POST /api/documents/{name}/entities/{label}/curvature-edit.
 void add_reconstruct(Router& router, const Context& context);
 /// POST /api/intersect, POST /api/distance.
 void add_intersect(Router& router, const Context& context);
@@ -41,6 +43,16 @@ void add_documents(Router& router, const Context& context);
 /// POST /api/documents/{name}/entities, GET|PUT|PATCH|DELETE .../entities/{label}, .../analysis,
 /// .../insert-knot, .../elevate.
 void add_entities(Router& router, const Context& context);
+
+/// The label of an entity route ({label}), refusing anything but a positive integer (400 InvalidArgument).
+[[nodiscard]] oli::Label parse_label(const std::string& text);
+/// The document and the label of an entity route (/api/documents/{name}/entities/{label}...), 404 when the
+/// document has no such entity.
+[[nodiscard]] std::pair<std::shared_ptr<OpenDocument>, oli::Label> entity_of(DocumentRegistry& docs,
+                                                                             const Request& request);
+
+/// POST /api/documents/{name}/entities/{label}/study-seed (a study file seeded from the entity's curve).
+void add_study_seed(Router& router, const Context& context);
 
 /// {"revision", "changes"} of a committed change, the change set with "entities": the entities it added
 /// or changed as GET .../entities/{label} gives them; a rolled-back change rethrows its error.

@@ -1,0 +1,258 @@
+// SPDX-License-Identifier: MIT
+// Tests of design by curvature on existing curves (issue 21 item 4): the ends,
+// end tangents and (G2) end curvatures come back as the originals' closed-form
+// values — the data points of interpolated splines, a quarter circle's ends,
+// tangents and κ = 1/R — to 1e-9; the curvature at the edited arc length moves
+// the way and about as far as asked; the inflection count stays; the result has
+// at most twice the handles; the documented errors.
+#include "hula/studies/curvature_edit.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "hula/diffgeom/frenet.hpp"
+#include "hula/law/parser.hpp"
+#include "hula/nurbs/arc_length.hpp"
+#include "hula/testing/expect_error.hpp"
+
+namespace hula::studies {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+struct Laws {
+  law::Context ctx;
+  law::Law operator()(const std::string& text) {
+    law::ParseOptions po;
+    po.parameters = {"s"};
+    return law::parse(text, ctx, po);
+  }
+};
+
+curve::Curve spline(std::vector<Vec3> points, std::vector<double> parameters = {}) {
+  curve::InterpolatedData d;
+  d.points = std::move(points);
+  d.dimension = 2;
+  d.parameters = std::move(parameters);
+  return curve::Curve::interpolated(std::move(d));
+}
+
+// The one-sided (left) Frenet quantities at the domain end.
+diffgeom::FrenetPoint frenet_end(const nurbs::NurbsCurve& c) {
+  diffgeom::FrenetOptions o;
+  o.eval.side = nurbs::Side::Left;
+  return diffgeom::frenet(c, c.domain().end, o);
+}
+
+CurvatureEditOptions holding(EndHold hold) {
+  CurvatureEditOptions o;
+  o.hold = hold;
+  return o;
+}
+
+// The thesis's shapes: a 4-point S and Example 1's corner (7.4.2, 3 points, parameters 0, 0.5, 1).
+curve::Curve s_curve() { return spline({{0, 0, 0}, {40, 40, 0}, {80, -40, 0}, {120, -40, 0}}); }
+curve::Curve example1() { return spline({{0, 0, 0}, {100, 0, 0}, {100, 100, 0}}, {0.0, 0.5, 1.0}); }
+
+// The exact rational quarter circle of radius R from (R, 0) to (0, R), counter-clockwise.
+curve::Curve quarter_circle(double R) {
+  const double w = std::sqrt(0.5);
+  return curve::Curve(nurbs::NurbsCurve(2, {0, 0, 0, 1, 1, 1}, {{R, 0, 0}, {R, R, 0}, {0, R, 0}}, {1.0, w, 1.0}, 2));
+}
+
+// The cos² bump of the workbench's κ-graph drag: height h at s0, half-width w.
+std::string bump(double h, double s0, double w) {
+  const std::string x = "((s - " + std::to_string(s0) + ")/" + std::to_string(w) + ")";
+  return "piecewise(abs" + x + " < 1, " + std::to_string(h) + "*cos(" + std::to_string(kPi / 2) + "*" + x + ")^2, 0)";
+}
+
+// Signed curvature about +Z at arc length s.
+double kappa_at_length(const curve::Curve& c, double s) {
+  const double t = nurbs::parameter_at_length(c.nurbs(), s);
+  return diffgeom::frenet(c.nurbs(), t).signed_curvature;
+}
+
+// |κ| of `edited` at the parameter where `original` has arc length s: the same point of the curve (the fit keeps
+// features at their parameters; the held ends shift arc lengths a little, which moves a sharp peak along s).
+double kappa_at_point(const curve::Curve& original, const curve::Curve& edited, double s) {
+  const double t = nurbs::parameter_at_length(original.nurbs(), s);
+  return std::abs(diffgeom::frenet(edited.nurbs(), t).signed_curvature);
+}
+
+// checks the held ends against the original's closed-form end points, tangents, and (G2) curvatures.
+void expect_ends(const CurvatureEditResult& r, bool g2) {
+  EXPECT_LE(r.start_point_error, 1e-9);
+  EXPECT_LE(r.end_point_error, 1e-9);
+  EXPECT_LE(r.start_tangent_error, 1e-9);
+  EXPECT_LE(r.end_tangent_error, 1e-9);
+  if (g2) {
+    EXPECT_LE(r.start_curvature_error, 1e-9);
+    EXPECT_LE(r.end_curvature_error, 1e-9);
+  }
+}
+
+// checks: a bump of |κ| at 30 % of the S (its sharpest turn) keeps its data end points and end tangents (closed
+// form: the points and the spline's own end directions), its one inflection, at most 8 points, and raises |κ|
+// there by about the bump's height.
+TEST(CurvatureEdit, SCurveBumpKeepsEndsTangentsAndInflection) {
+  Laws l;
+  const curve::Curve c = s_curve();
+  const double L = c.length(), s0 = 0.3 * L, h = 0.008;
+  const CurvatureEditResult r =
+      edit_curvature(c, {.curvature = l(bump(h, s0, L / 6)), .target = CurvatureTarget::Change});
+  expect_ends(r, false);
+  const nurbs::NurbsCurve& out = r.curve.nurbs();
+  EXPECT_LE(distance(out.evaluate(out.domain().start), Vec3{0, 0, 0}), 1e-9);
+  EXPECT_LE(distance(out.evaluate(out.domain().end), Vec3{120, -40, 0}), 1e-9);
+  EXPECT_LE(distance(frenet_end(out).tangent, frenet_end(c.nurbs()).tangent), 1e-9);
+  EXPECT_EQ(r.inflections_before, 1u);
+  EXPECT_EQ(r.inflections_after, 1u);
+  EXPECT_EQ(r.curve.kind(), curve::Kind::Interpolated);
+  EXPECT_LE(r.handles_after, 2 * r.handles_before);
+  const double raised = kappa_at_point(c, r.curve, s0) - kappa_at_point(c, c, s0);
+  EXPECT_GT(raised, 0.6 * h);
+  EXPECT_LT(raised, 1.3 * h);
+}
+
+// checks: the same on Example 1's corner, G1 and G2 (its natural ends have κ = 0, held to 1e-9); a drag down
+// lowers |κ| there; no inflection appears (a relative correction keeps κ ≥ 0).
+TEST(CurvatureEdit, Example1CornerG1AndG2) {
+  Laws l;
+  const curve::Curve c = example1();
+  const double L = c.length(), s0 = 0.3 * L;
+  for (const double h : {0.004, -0.002})
+    for (const EndHold hold : {EndHold::Tangent, EndHold::Curvature}) {
+      SCOPED_TRACE(std::string(end_hold_name(hold)) + " h = " + std::to_string(h));
+      const CurvatureEditResult r =
+          edit_curvature(c, {.curvature = l(bump(h, s0, L / 6)), .target = CurvatureTarget::Change}, holding(hold));
+      expect_ends(r, hold == EndHold::Curvature);
+      const nurbs::NurbsCurve& out = r.curve.nurbs();
+      EXPECT_LE(distance(out.evaluate(out.domain().end), Vec3{100, 100, 0}), 1e-9);
+      if (hold == EndHold::Curvature) {
+        EXPECT_LE(std::abs(kappa_at_length(r.curve, 0.0)), 1e-9);
+        EXPECT_LE(std::abs(kappa_at_length(r.curve, r.length_after)), 1e-9);
+      }
+      EXPECT_EQ(r.inflections_after, r.inflections_before);
+      EXPECT_LE(r.handles_after, 6u);
+      const double moved = kappa_at_point(c, r.curve, s0) - kappa_at_point(c, c, s0);
+      EXPECT_GT(moved / h, 0.5) << moved;
+      EXPECT_LT(moved / h, 1.3) << moved;
+    }
+}
+
+// checks: a quarter circle (exact rational NURBS) with a bump keeps (R, 0), (0, R), the tangents (0, 1) and
+// (−1, 0) and, G2, κ = 1/R at both ends — closed forms — and comes back as a NURBS of degree 2.
+TEST(CurvatureEdit, QuarterCircleHoldsClosedFormEnds) {
+  Laws l;
+  const double R = 50.0;
+  const curve::Curve c = quarter_circle(R);
+  const double L = kPi * R / 2;
+  const CurvatureEditResult r = edit_curvature(
+      c, {.curvature = l(bump(0.004, 0.5 * L, L / 6)), .target = CurvatureTarget::Change}, holding(EndHold::Curvature));
+  const nurbs::NurbsCurve& out = r.curve.nurbs();
+  const diffgeom::FrenetPoint a = diffgeom::frenet(out, out.domain().start);
+  const diffgeom::FrenetPoint b = frenet_end(out);
+  EXPECT_LE(distance(a.position, Vec3{R, 0, 0}), 1e-9);
+  EXPECT_LE(distance(b.position, Vec3{0, R, 0}), 1e-9);
+  EXPECT_LE(distance(a.tangent, Vec3{0, 1, 0}), 1e-9);
+  EXPECT_LE(distance(b.tangent, Vec3{-1, 0, 0}), 1e-9);
+  EXPECT_NEAR(a.signed_curvature, 1.0 / R, 1e-9);
+  EXPECT_NEAR(b.signed_curvature, 1.0 / R, 1e-9);
+  EXPECT_NEAR(r.length_before, L, 1e-9 * L);
+  EXPECT_EQ(r.curve.kind(), curve::Kind::Nurbs);
+  EXPECT_LE(r.handles_after, 6u);
+  EXPECT_GT(kappa_at_point(c, r.curve, 0.5 * L), 1.0 / R);  // G2 leaves a quadratic little freedom: up, a little
+  // Holding only the ends and tangents, the bump is about what was asked.
+  const CurvatureEditResult g1 =
+      edit_curvature(c, {.curvature = l(bump(0.004, 0.5 * L, L / 6)), .target = CurvatureTarget::Change});
+  expect_ends(g1, false);
+  const double raised = kappa_at_point(c, g1.curve, 0.5 * L) - 1.0 / R;
+  EXPECT_GT(raised, 0.5 * 0.004);
+  EXPECT_LT(raised, 1.3 * 0.004);
+}
+
+// checks: typing the curve's own curvature law (κ = 1/R) gives the circle back: no correction, every point on
+// the circle (closed form) to the fit tolerance.
+TEST(CurvatureEdit, TypedOwnCurvatureIsTheIdentity) {
+  Laws l;
+  const double R = 50.0;
+  const curve::Curve c = quarter_circle(R);
+  const CurvatureEditResult r = edit_curvature(c, {.curvature = l("0.02")});
+  EXPECT_LT(r.max_curvature_deviation, 1e-6);
+  const nurbs::NurbsCurve& out = r.curve.nurbs();
+  for (int i = 0; i <= 50; ++i) {
+    const Vec3 p = out.evaluate(out.domain().start + (out.domain().end - out.domain().start) * i / 50.0);
+    EXPECT_NEAR(norm(p), R, 1e-4 * R) << i;
+  }
+}
+
+// checks: a typed constant κ that cannot close Example 1's corner (0.02 × L turns 4 rad, the corner 90°) goes through
+// the boundary-value reconstruction: the ends (closed form: the data points) and end tangents stay, the corner turns
+// the right way (no inflection), the result has at most 6 points.
+TEST(CurvatureEdit, TypedLawGoesThroughTheReconstruction) {
+  Laws l;
+  const CurvatureEditResult r = edit_curvature(example1(), {.curvature = l("0.02")});
+  EXPECT_TRUE(r.reconstructed);
+  EXPECT_GT(r.iterations, 0);
+  EXPECT_GT(r.reconstruction_max_deviation, 0.0);  // the price of the held ends
+  expect_ends(r, false);
+  const nurbs::NurbsCurve& out = r.curve.nurbs();
+  EXPECT_LE(distance(out.evaluate(out.domain().start), Vec3{0, 0, 0}), 1e-9);
+  EXPECT_LE(distance(out.evaluate(out.domain().end), Vec3{100, 100, 0}), 1e-9);
+  EXPECT_EQ(r.inflections_after, 0u);
+  EXPECT_LE(r.handles_after, 6u);
+}
+
+// checks: a space curve keeps its ends, end tangents and (G2) end curvature and normal, and its torsion edit
+// raises τ where asked.
+TEST(CurvatureEdit, SpaceBezierG2) {
+  Laws l;
+  const curve::Curve c =
+      curve::Curve::bezier({.control_points = {{0, 0, 0}, {30, 40, 10}, {70, 40, -10}, {100, 0, 20}}, .weights = {}});
+  const double L = c.length();
+  const CurvatureEditResult r = edit_curvature(
+      c, {.curvature = l(bump(0.002, 0.4 * L, L / 6)), .target = CurvatureTarget::Change}, holding(EndHold::Curvature));
+  EXPECT_FALSE(r.planar);
+  expect_ends(r, true);
+  EXPECT_LE(r.handles_after, 8u);
+  const nurbs::NurbsCurve& out = r.curve.nurbs();
+  const nurbs::NurbsCurve& in = c.nurbs();
+  const diffgeom::FrenetPoint a0 = frenet_end(in);
+  const diffgeom::FrenetPoint a1 = frenet_end(out);
+  EXPECT_LE(distance(a0.normal, a1.normal), 1e-9);
+}
+
+// checks: dragging |κ| down by more than it is never bends the corner the other way: no inflection appears, and
+// |κ| stays positive at the dragged point.
+TEST(CurvatureEdit, DragDownNeverReverses) {
+  Laws l;
+  const curve::Curve c = example1();
+  const double L = c.length(), s0 = 0.25 * L;
+  const CurvatureEditResult r =
+      edit_curvature(c, {.curvature = l(bump(-0.02, s0, L / 6)), .target = CurvatureTarget::Change});
+  expect_ends(r, false);
+  EXPECT_EQ(r.inflections_after, 0u);
+  const double k = diffgeom::frenet(r.curve.nurbs(), nurbs::parameter_at_length(c.nurbs(), s0)).signed_curvature;
+  EXPECT_GT(k, 0.0);
+  EXPECT_LT(k, kappa_at_point(c, c, s0));
+}
+
+// checks: the documented errors name their input.
+TEST(CurvatureEdit, Errors) {
+  Laws l;
+  const curve::Curve line(nurbs::NurbsCurve(1, {0, 0, 1, 1}, {{0, 0, 0}, {1, 0, 0}}, {}, 2));
+  HULA_EXPECT_ERROR(static_cast<void>(edit_curvature(line, {.curvature = l("0.1")})), Errc::InvalidArgument,
+                    "degree 1");
+  HULA_EXPECT_ERROR(static_cast<void>(edit_curvature(s_curve(), {.curvature = l("0.1"), .torsion = l("0.1")})),
+                    Errc::InvalidArgument, "torsion");
+  CurvatureEditOptions bad;
+  bad.max_handles_factor = 0.5;
+  HULA_EXPECT_ERROR(static_cast<void>(edit_curvature(s_curve(), {.curvature = l("0.1")}, bad)), Errc::InvalidOption,
+                    "max_handles_factor");
+}
+
+}  // namespace
+}  // namespace hula::studies
