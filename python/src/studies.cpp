@@ -1,26 +1,28 @@
 // SPDX-License-Identifier: MIT
 // The thesis's curve studies from Python: a setup is the dict a study file
-// holds (docs/formats.md), read by the same studies/io codecs as `hula
-// fair-knots` and `hula match-curvature`, and run with the GIL released. The
-// result is a dict of plain values and arrays; the Python layer wraps it in a
-// StudyResult (hulahoops/studies.py).
+// holds (docs/formats.md), run by oli::run_study (the runner of `hula
+// fair-knots`, `hula match-curvature` and the document's study runs) with the
+// GIL released. The result is the result document every door gives, converted
+// value by value, with arrays and curves from the run's typed values; the
+// Python layer wraps it in a StudyResult (hulahoops/studies.py).
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
-#include <cmath>
+#include <algorithm>
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
+#include <variant>
 
 #include "arrays.hpp"
 #include "bindings.hpp"
-#include "hula/io/fair_knots_study_file.hpp"
-#include "hula/io/json_curve.hpp"
-#include "hula/io/match_study_file.hpp"
+#include "hula/core/error.hpp"
+#include "hula/io/json_text.hpp"
 #include "hula/io/path_resolver.hpp"
 #include "hula/io/study_file.hpp"
-#include "hula/studies/knot_fairing.hpp"
+#include "hula/oli/study_runner.hpp"
 
 namespace hula::python {
 
@@ -34,82 +36,58 @@ io::Json setup_value(const py::handle& setup) {
   return from_python(setup, "setup");
 }
 
-py::dict evaluation(const studies::ParameterEvaluation& e) {
-  py::dict d;
+// oli::run_study, the runner of every door, with the GIL released; no log is kept.
+oli::StudyOutcome run(const io::StudyDocument& doc, const std::filesystem::path& base) {
+  oli::StudyRunOptions options;
+  options.keep_log = false;
+  const py::gil_scoped_release release;
+  return oli::run_study(doc, io::relative_to(base), options);
+}
+
+// An evaluation of the result document with its parameters as an array and its curve as a NurbsCurve.
+void with_values(py::dict d, const studies::ParameterEvaluation& e) {
   d["parameters"] = to_array(e.parameters);
-  d["energy"] = e.energy;
-  d["bending"] = e.bending;
-  d["variation"] = e.variation;
   d["curve"] = py::cast(e.curve);
-  return d;
 }
 
-// The run as the CLI prints it (io::fairing_result_to_json), with the parameters as an array, the curve as
-// a NurbsCurve and the convergence graph added.
-py::dict fairing(const studies::FairingResult& r, double chord_energy) {
-  py::dict d = to_python(io::fairing_result_to_json(r, chord_energy));
-  d["parameters"] = to_array(r.best.parameters);
-  d["curve"] = py::cast(r.best.curve);
-  d["convergence"] = to_array(r.convergence);
-  return d;
-}
-
+// The result `hula fair-knots` prints, as Python objects: parameters as arrays, curves as NurbsCurve, each
+// optimiser's convergence graph added, and the map with its grid (k1, k2, the energy as a (k2, k1) array with
+// NaN outside k1 < k2, and its minimum).
 py::dict fair_knots(const py::handle& setup) {
-  const io::StudyDocument doc = io::study_from_json(setup_value(setup), "fair-knots");
-  const studies::FairKnotsStudy study = io::fair_knots_study_from_json(doc);
-  const studies::KnotFairingSetup& s = study.setup;
-  std::optional<studies::ParameterEvaluation> chord, given;
-  std::optional<studies::EnergyMap> map;
-  std::optional<studies::FairingResult> ga, det;
-  {
-    const py::gil_scoped_release release;
-    const std::vector<double> start = studies::chord_length_parameters(s);
-    chord = studies::evaluate_parameters(s, start);
-    if (study.parameters) given = studies::evaluate_parameters(s, *study.parameters);
-    if (study.map) map = studies::energy_map(s, start, *study.map);
-    const bool run_ga = study.method == studies::FairingMethod::Ga || study.method == studies::FairingMethod::Both;
-    const bool run_det =
-        study.method == studies::FairingMethod::Deterministic || study.method == studies::FairingMethod::Both;
-    if (run_ga) ga = studies::fair_knots_ga(s, start, study.ga);
-    if (run_det) det = studies::fair_knots_deterministic(s, start, study.deterministic);
-  }
-  py::dict out;
-  out["study"] = to_python(io::fair_knots_study_to_json(study));
-  out["energy"] = std::string(studies::fairing_energy_name(s.energy));
-  out["chord_length"] = evaluation(*chord);
-  if (given) out["given"] = evaluation(*given);
-  if (ga) out["ga"] = fairing(*ga, chord->energy);
-  if (det) out["deterministic"] = fairing(*det, chord->energy);
-  if (map) {
-    py::dict m;
-    m["k1"] = to_array(map->k1);
-    m["k2"] = to_array(map->k2);
-    Doubles e({static_cast<py::ssize_t>(map->k2.size()), static_cast<py::ssize_t>(map->k1.size())});
-    std::copy(map->energy.begin(), map->energy.end(), e.mutable_data());
+  const oli::StudyOutcome ran = run(io::study_from_json(setup_value(setup), "fair-knots"), ".");
+  const studies::FairKnotsOutcome& o = std::get<oli::FairKnotsValues>(ran.values).outcome;
+  py::dict out = to_python(ran.result);
+  with_values(out["chord_length"], o.chord_length);
+  if (o.given) with_values(out["given"], *o.given);
+  for (const auto& [name, r] : {std::pair{"ga", &o.ga}, std::pair{"deterministic", &o.deterministic}})
+    if (*r) {
+      py::dict d = out[name];
+      with_values(d, (*r)->best);
+      d["convergence"] = to_array((*r)->convergence);
+    }
+  if (o.map) {
+    py::dict m = out["map"];
+    m["k1"] = to_array(o.map->k1);
+    m["k2"] = to_array(o.map->k2);
+    Doubles e({static_cast<py::ssize_t>(o.map->k2.size()), static_cast<py::ssize_t>(o.map->k1.size())});
+    std::copy(o.map->energy.begin(), o.map->energy.end(), e.mutable_data());
     m["energy"] = e;
-    m["min_energy"] = map->min_energy;
-    m["min_k1"] = map->min_k1;
-    m["min_k2"] = map->min_k2;
-    out["map"] = m;
+    m["min_energy"] = o.map->min_energy;
+    m["min_k1"] = o.map->min_k1;
+    m["min_k2"] = o.map->min_k2;
   }
   return out;
 }
 
-// The match result as the CLI prints it (io::match_result_to_json), as Python objects. Profile files named
-// in the setup are read relative to `base`, as the CLI reads them relative to the study file.
+// The result `hula match-curvature` prints, as Python objects. Profile files named in the setup are read
+// relative to `base`, as the CLI reads them relative to the study file; `method` replaces the setup's.
 py::object match_curvature(const py::handle& setup, const std::string& base, std::optional<std::string> method) {
-  const io::StudyDocument doc = io::study_from_json(setup_value(setup), "match-curvature");
-  io::MatchStudyFile file = io::match_study_from_json(doc, io::relative_to(std::filesystem::path(base)));
-  studies::MatchStudy& study = file.study;
-  if (method) study.method = studies::match_method_from_name(*method, "method");
-  io::Json out;
-  {
-    const py::gil_scoped_release release;
-    const studies::CurvatureMatch match(study.setup);
-    const studies::MatchResult result = studies::run_curvature_match(match, study, false);
-    out = io::match_result_to_json(match, file, result);
+  io::Json value = setup_value(setup);
+  if (method) {
+    if (!value.is_object()) throw Error(Errc::ParseError, "a study setup must be a JSON object", {.field = "setup"});
+    value["method"] = *method;
   }
-  return to_python(out);
+  return to_python(run(io::study_from_json(std::move(value), "match-curvature"), base).result);
 }
 
 }  // namespace

@@ -12,11 +12,11 @@
 #include "commands/common.hpp"
 #include "commands/study_common.hpp"
 #include "hula/core/error.hpp"
-#include "hula/diffgeom/plot.hpp"
 #include "hula/io/atomic_file.hpp"
 #include "hula/io/fit_study_file.hpp"
 #include "hula/io/json_curve.hpp"
 #include "hula/io/points_file.hpp"
+#include "hula/io/study_figures.hpp"
 
 namespace hula::cli {
 
@@ -35,54 +35,6 @@ struct FitArgs {
   std::optional<std::string> svg;
   std::optional<std::string> save_study;
 };
-
-// Signed curvature against arc length of both curves (the thesis's curvature plot).
-io::SvgFigure curvature_figure(const studies::ScanFitResult& r) {
-  io::SvgFigure fig(800, 500);
-  fig.set_title("Signed curvature before (tolerance fit) and after fairing");
-  fig.set_axes("arc length s", r.faired.dimension() == 2 ? "signed curvature" : "curvature");
-  diffgeom::PlotOptions o;
-  o.quantity = r.faired.dimension() == 2 ? diffgeom::PlotQuantity::SignedCurvature : diffgeom::PlotQuantity::Curvature;
-  o.abscissa = diffgeom::PlotAbscissa::ArcLength;
-  o.samples = 800;
-  const diffgeom::Plot before = diffgeom::plot(r.fit, o);
-  const diffgeom::Plot after = diffgeom::plot(r.faired, o);
-  fig.add_polyline(before.x, before.y, io::SvgStyle{.stroke = "#999999", .width = 1.2, .fill = {}, .dash = "6 4"},
-                   "before: " + std::to_string(r.before.inflections) + " inflections, " +
-                       std::to_string(r.before.curvature_extrema) + " extrema");
-  fig.add_polyline(after.x, after.y, io::SvgStyle{.stroke = "#d62728", .width = 1.8, .fill = {}, .dash = {}},
-                   "after: " + std::to_string(r.after.inflections) + " inflections, " +
-                       std::to_string(r.after.curvature_extrema) + " extrema");
-  return fig;
-}
-
-// The cloud (kept points grey, strays red) and the faired curve, XY view.
-io::SvgFigure cloud_figure(std::span<const Vec3> points, const studies::ScanFitResult& r) {
-  io::SvgFigure fig(900, 600);
-  fig.set_title("Scanned points, strays and the faired curve (XY)");
-  fig.set_equal_aspect(true);
-  std::vector<double> kx, ky, sx, sy;
-  for (const std::size_t i : r.order) {
-    kx.push_back(points[i].x);
-    ky.push_back(points[i].y);
-  }
-  for (const std::size_t i : r.strays) {
-    sx.push_back(points[i].x);
-    sy.push_back(points[i].y);
-  }
-  fig.add_points(kx, ky, io::SvgStyle{.stroke = "#aaaaaa", .width = 0.5, .fill = {}, .dash = {}}, 1.0, "kept points");
-  fig.add_points(sx, sy, io::SvgStyle{.stroke = "#d62728", .width = 1.0, .fill = {}, .dash = {}}, 3.0, "strays");
-  constexpr int kSamples = 1000;
-  std::vector<double> cx(kSamples + 1), cy(kSamples + 1);
-  const auto dom = r.faired.domain();
-  for (int i = 0; i <= kSamples; ++i) {
-    const Vec3 c = r.faired.evaluate(dom.start + (dom.end - dom.start) * i / kSamples);
-    cx[static_cast<std::size_t>(i)] = c.x;
-    cy[static_cast<std::size_t>(i)] = c.y;
-  }
-  fig.add_polyline(cx, cy, io::SvgStyle{.stroke = "#1f77b4", .width = 1.8, .fill = {}, .dash = {}}, "faired curve");
-  return fig;
-}
 
 int run_fit(const FitArgs& a) {
   if (a.study.empty() == a.points.empty())
@@ -117,8 +69,7 @@ int run_fit(const FitArgs& a) {
   io::write_curve_file(a.output, r.faired);
   if (a.save_study) io::write_file_atomically(*a.save_study, fit_study_to_json(study).dump(2) + "\n");
   if (a.svg) {
-    write_svg(*a.svg, "fit", cloud_figure(study.points, r));
-    write_svg(*a.svg, "curvature", curvature_figure(r));
+    for (const io::NamedFigure& f : io::fit_figures(study.points, r).figures) write_svg(*a.svg, f.name, f.figure);
   }
   Json doc = io::fit_result_to_json(r, study.options);
   doc["output"] = a.output;

@@ -149,7 +149,7 @@ optim::StopCriteria stop_criteria(const OptimiseArgs& a, std::size_t population)
 }
 
 // The per-generation callback: streams the run log to its file and prints progress lines.
-optim::GenerationCallback generation_callback(const OptimiseArgs& a, RunLogFile* log) {
+optim::GenerationCallback generation_callback(const OptimiseArgs& a, io::RunLogFile* log) {
   if (!log && !a.progress) return {};
   return [&a, log](const optim::GenerationLog& g) {
     if (log) log->append(g);
@@ -166,7 +166,7 @@ optim::GenerationCallback generation_callback(const OptimiseArgs& a, RunLogFile*
 }
 
 template <class Options>
-void fill_run(Options& o, const OptimiseArgs& a, RunLogFile* log) {
+void fill_run(Options& o, const OptimiseArgs& a, io::RunLogFile* log) {
   if (a.population) o.population = *a.population;
   o.run.seed = a.seed.value_or(0);
   o.run.threads = a.threads.value_or(1);
@@ -177,7 +177,7 @@ void fill_run(Options& o, const OptimiseArgs& a, RunLogFile* log) {
 }
 
 // The algorithm's options from the command line, refusing the options it does not take.
-optim::SolverOptions solver_options(const OptimiseArgs& a, const AlgorithmChoice& choice, RunLogFile* log) {
+optim::SolverOptions solver_options(const OptimiseArgs& a, const AlgorithmChoice& choice, io::RunLogFile* log) {
   const bool islands = a.islands.islands > 0;
   switch (choice.kind) {
     case Algorithm::RealGa: {
@@ -338,7 +338,7 @@ int run_optimise(const OptimiseArgs& a) {
   refuse(islands && a.log.has_value(), "log", a.algorithm + " with --islands");
   refuse(islands && a.progress, "progress", a.algorithm + " with --islands");
   // The log streams to its temporary file as the run goes, and replaces the target only when the run is done.
-  std::optional<RunLogFile> log;
+  std::optional<io::RunLogFile> log;
   if (a.log && algorithm.kind != Algorithm::Pagmo && algorithm.kind != Algorithm::NelderMead) log.emplace(*a.log);
   optim::SolveOptions options;
   options.algorithm = solver_options(a, algorithm, log ? &*log : nullptr);

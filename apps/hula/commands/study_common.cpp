@@ -12,6 +12,7 @@
 
 #include "hula/core/error.hpp"
 #include "hula/io/atomic_file.hpp"
+#include "hula/oli/fairing_baselines.hpp"
 
 namespace hula::cli {
 
@@ -89,9 +90,45 @@ io::StudyDocument load_study(const StudyArgs& args, std::string_view kind) {
   io::StudyDocument doc = io::read_study_file(args.study, kind);
   if (args.seed) doc.header.seed = *args.seed;
   if (args.threads) doc.header.threads = *args.threads;
-  if (args.time) doc.header.wall_time_seconds = *args.time;
-  doc.header.cancel = &interrupt_token();
   return doc;
+}
+
+oli::StudyOutcome run_study_command(const StudyArgs& args, std::string_view kind,
+                                    const std::vector<StudyOverride>& overrides) {
+  io::StudyDocument doc = load_study(args, kind);
+  for (const StudyOverride& o : overrides) doc.body[o.member] = o.value;
+  oli::StudyRunOptions options;
+  options.wall_time_seconds = args.time.value_or(0.0);
+  options.cancel = &interrupt_token();
+  options.keep_log = args.log.has_value();
+  oli::StudyOutcome outcome;
+  try {
+    const InterruptGuard guard;  // Ctrl-C ends the optimisers with their best so far, as --time does
+    outcome = oli::run_study(doc, io::relative_to(std::filesystem::path(args.study).parent_path()), options);
+  } catch (const Error& e) {
+    for (const StudyOverride& o : overrides)
+      if (e.where().field == o.member) throw Error(e.code(), o.flag + ": " + e.message(), {.field = o.flag});
+    throw;
+  }
+  if (args.svg) {
+    const io::StudyFigures figures = oli::study_figures(outcome);
+    for (const io::NamedFigure& f : figures.figures) write_svg(*args.svg, f.name, f.figure);
+    for (const io::NamedTable& t : figures.tables)
+      io::write_file_atomically(std::filesystem::path(*args.svg) / t.name, t.text);
+  }
+  return outcome;
+}
+
+Json occt_baselines(const oli::StudyOutcome& run, const StudyArgs& args) {
+  oli::FairingBaselines b;
+  try {
+    b = oli::fairing_baselines(run);
+  } catch (const Error& e) {
+    if (e.where().field != "occt") throw;
+    throw Error(e.code(), "--occt: " + e.message(), {.field = "--occt"});
+  }
+  if (args.svg) write_svg(*args.svg, "baselines", b.figure);
+  return std::move(b.json);
 }
 
 void write_svg(const std::filesystem::path& dir, std::string_view name, const io::SvgFigure& figure) {
@@ -101,26 +138,9 @@ void write_svg(const std::filesystem::path& dir, std::string_view name, const io
   io::write_file_atomically(dir / (std::string(name) + ".svg"), figure.render());
 }
 
-static optim::RunLogFormat run_log_format(const std::filesystem::path& path) {
-  return path.extension() == ".csv" ? optim::RunLogFormat::Csv : optim::RunLogFormat::Json;
-}
-
-void write_run_log(const optim::RunLog& log, const std::filesystem::path& path) {
-  io::OutputFile file(path, "--log");
-  optim::RunLogWriter writer(file.stream(), run_log_format(path));
-  for (const optim::GenerationLog& g : log.generations()) writer.append(g);
-  writer.finish();
-  file.commit();
-}
-
-RunLogFile::RunLogFile(const std::filesystem::path& path)
-    : file_(path, "--log"), writer_(file_.stream(), run_log_format(path)) {}
-
-void RunLogFile::append(const optim::GenerationLog& generation) { writer_.append(generation); }
-
-void RunLogFile::commit() {
-  writer_.finish();
-  file_.commit();
+void record_run(Json& output, const StudyArgs& args) {
+  output["log"] = args.log ? Json(*args.log) : Json(nullptr);
+  if (args.log) io::write_file_atomically(*args.log, io::to_file_text(output));
 }
 
 }  // namespace hula::cli

@@ -2,8 +2,9 @@
 // What the study commands (`hula fair-knots`, `match-curvature`,
 // `match-curvature-torsion`, `fin-compound`, `edit-projection`, `hermite`)
 // share: the study file argument, the --seed / --threads overrides of the
-// file's own values, --log FILE (.csv or .json run log), --svg DIR (before /
-// after figures and convergence graphs) and the JSON envelope of the output.
+// file's own values, --time and Ctrl-C, the run itself (oli::run_study, the
+// runner of every door), --log FILE (.csv or .json run log) and --svg DIR
+// (the run's figures, oli::study_figures).
 #pragma once
 
 #include <signal.h>
@@ -14,12 +15,14 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "commands/common.hpp"
 #include "hula/io/atomic_file.hpp"
+#include "hula/io/run_log_file.hpp"
 #include "hula/io/study_file.hpp"
 #include "hula/io/svg.hpp"
-#include "hula/optim/run_log.hpp"
+#include "hula/oli/study_runner.hpp"
 
 namespace hula::cli {
 
@@ -63,10 +66,33 @@ class InterruptGuard {
 /// @param has_optimiser false for the editing studies (no iterations): they take no --time
 void add_study_options(CLI::App* sub, StudyArgs& args, bool has_optimiser = true);
 
-/// Checks the outputs (--log, --svg), reads the study file and applies the
-/// --seed / --threads overrides, --time and the SIGINT token to its header.
+/// A member of the study file that a command-line option replaces (--method replaces "method"), applied
+/// before the file is read, so the value is checked as the file's own would be.
+struct StudyOverride {
+  /// The study file's member.
+  std::string member{};
+  /// The option, named in an error about the member ("--method").
+  std::string flag{};
+  /// The value.
+  Json value{};
+};
+
+/// Checks the outputs (--log, --svg), reads the study file and applies the --seed / --threads overrides.
 /// @throws hula::Error as io::read_study_file
 [[nodiscard]] io::StudyDocument load_study(const StudyArgs& args, std::string_view kind);
+
+/// Runs the study of `args` through oli::run_study, the runner of every door: the file read (load_study)
+/// with `overrides` applied, the files it names read relative to its folder, --time and Ctrl-C
+/// (InterruptGuard) ending the optimisers with their best so far, every generation kept when --log asks;
+/// then writes the --svg figures and tables (oli::study_figures). The caller writes --log.
+/// @throws hula::Error as oli::run_study; an error in an overridden member names its option
+[[nodiscard]] oli::StudyOutcome run_study_command(const StudyArgs& args, std::string_view kind,
+                                                  const std::vector<StudyOverride>& overrides = {});
+
+/// `--occt`: Open CASCADE's fairing baselines of a fair-knots or planar match-curvature run
+/// (oli::fairing_baselines), with baselines.svg under --svg.
+/// @throws hula::Error as oli::fairing_baselines, naming --occt
+[[nodiscard]] Json occt_baselines(const oli::StudyOutcome& run, const StudyArgs& args);
 
 /// Writes `figure` as `<dir>/<name>.svg` atomically, creating `dir` first.
 /// @throws hula::Error(Errc::IoError) naming the path if it cannot be written
@@ -78,27 +104,8 @@ void write_svg(const std::filesystem::path& dir, std::string_view name, const io
 /// @throws hula::Error(Errc::IoError) naming --svg
 void check_svg_directory(const std::filesystem::path& dir);
 
-/// A run log streamed to its file generation by generation (bounded memory:
-/// nothing is kept), CSV when the path ends in .csv, else JSON. The file
-/// appears, atomically, only on commit(); a run that fails or is killed
-/// leaves the previous file as it was.
-class RunLogFile {
- public:
-  /// @throws hula::Error(Errc::IoError) naming --log if the path cannot be written
-  explicit RunLogFile(const std::filesystem::path& path);
-  /// Writes one generation (a write error is reported by commit()).
-  void append(const optim::GenerationLog& generation);
-  /// Ends the document and replaces the file.
-  /// @throws hula::Error(Errc::IoError) on any write error (a full disk, a file-size limit)
-  void commit();
-
- private:
-  io::OutputFile file_;
-  optim::RunLogWriter writer_;
-};
-
-/// Writes a run log as CSV (path ends in .csv) or JSON, atomically.
-/// @throws hula::Error(Errc::IoError) naming the path if it cannot be written
-void write_run_log(const optim::RunLog& log, const std::filesystem::path& path);
+/// Adds "log" (the --log path or null) to the output document of a study without generations and, with
+/// --log, writes the output document there too (it has no generations to log).
+void record_run(Json& output, const StudyArgs& args);
 
 }  // namespace hula::cli

@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include "hula/io/fair_knots_study_file.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "hula/core/error.hpp"
 #include "hula/io/json_curve.hpp"
@@ -260,6 +262,37 @@ Json fairing_result_to_json(const studies::FairingResult& r, double chord_energy
   out["termination"] = std::string(optim::termination_name(r.termination));
   out["message"] = r.message;
   if (!r.bounds.lower.empty()) out["bounds"] = Json{{"lower", r.bounds.lower}, {"upper", r.bounds.upper}};
+  return out;
+}
+
+Json fair_knots_result_to_json(const studies::FairKnotsStudy& study, const studies::FairKnotsOutcome& outcome) {
+  const studies::KnotFairingSetup& setup = study.setup;
+  const double chord_energy = outcome.chord_length.energy;
+  Json out = Json::object();
+  out["study"] = fair_knots_study_to_json(study);
+  out["energy"] = studies::fairing_energy_name(setup.energy);
+  out["chord_length"] = fairing_evaluation_to_json(outcome.chord_length);
+  if (outcome.given) out["given"] = fairing_evaluation_to_json(*outcome.given);
+  if (const std::optional<studies::EnergyMap>& map = outcome.map) {
+    out["map"] = Json{{"knots", Json::array({map->first, map->second})},
+                      {"grid", study.map->grid},
+                      {"min", Json{{"energy", map->min_energy}, {"k1", map->min_k1}, {"k2", map->min_k2}}}};
+    for (const studies::MapSection& sec : outcome.sections) {
+      Json energies = Json::array();
+      for (const double e : sec.energy) energies.push_back(std::isfinite(e) ? Json(e) : Json(nullptr));
+      out["map"]["sections"].push_back(Json{{"k1", sec.k1}, {"k2", sec.k2}, {"energy", energies}});
+    }
+  }
+  if (outcome.ga) out["ga"] = fairing_result_to_json(*outcome.ga, chord_energy);
+  if (outcome.deterministic) out["deterministic"] = fairing_result_to_json(*outcome.deterministic, chord_energy);
+  if (outcome.ga && outcome.deterministic) {
+    const std::vector<double>& a = outcome.ga->best.parameters;
+    const std::vector<double>& b = outcome.deterministic->best.parameters;
+    double dp = 0.0;
+    for (std::size_t i = 0; i < a.size(); ++i) dp = std::max(dp, std::abs(a[i] - b[i]));
+    out["agreement"] = Json{{"relative_energy", outcome.ga->best.energy / outcome.deterministic->best.energy - 1.0},
+                            {"max_parameter", dp}};
+  }
   return out;
 }
 

@@ -33,6 +33,14 @@ namespace hula::io {
 /// the last optimiser run ended, optim::termination_name) and, for the GA, "bounds".
 [[nodiscard]] Json fairing_result_to_json(const studies::FairingResult& result, double chord_energy);
 
+/// A fair-knots run's result document, what every door returns (docs/formats.md): "study" (resolved),
+/// "energy" (its name), "chord_length", "given"?, "map"? {"knots": [first, second], "grid", "min":
+/// {"energy", "k1", "k2"}, "sections"?: [{"k1", "k2", "energy" (null where undefined)}]}, "ga"?,
+/// "deterministic"? and, when both ran, "agreement" {"relative_energy": E_ga / E_det − 1, "max_parameter":
+/// the largest parameter difference}.
+[[nodiscard]] Json fair_knots_result_to_json(const studies::FairKnotsStudy& study,
+                                             const studies::FairKnotsOutcome& outcome);
+
 /// The energy map as CSV: header `k1,k2,energy`, one row per grid node (k1
 /// fastest), the energy empty where the cell is outside k1 < k2 or failed.
 /// Doubles are written to round-trip (shortest form).

@@ -71,6 +71,16 @@ Json run_log_to_json(const optim::RunLog& log) {
   return Json{{"generations", std::move(generations)}};
 }
 
+Json study_report_to_json(const studies::StudyReport& report) {
+  Json out = Json::object();
+  out["study"] = report.kind;
+  out["termination"] = report.cancelled ? "Cancelled" : "Completed";
+  out["generations"] = report.generations;
+  out["evaluations"] = report.evaluations;
+  out["seconds"] = report.seconds;
+  return out;
+}
+
 Json generation_event_json(const optim::GenerationLog& g, double elapsed) {
   const auto finite_or_null = [](double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); };
   Json e = Json::object();

@@ -18,6 +18,7 @@
 #include "hula/io/json_curve.hpp"
 #include "hula/optim/run_log.hpp"
 #include "hula/optim/run_report.hpp"
+#include "hula/studies/study.hpp"
 
 namespace hula::io {
 
@@ -37,6 +38,10 @@ struct RunIdentity {
 /// @throws hula::Error(Errc::ParseError) naming the member that is missing or mistyped, or an unknown
 ///   termination name
 [[nodiscard]] optim::RunReport run_report_from_json(const Json& json);
+
+/// A study run's report: {"study": kind, "termination": "Cancelled" or "Completed", "generations",
+/// "evaluations", "seconds"} (the study job's "report", docs/server.md).
+[[nodiscard]] Json study_report_to_json(const studies::StudyReport& report);
 
 /// The progress event of one generation (a server job's "generation" event): {"generation", "evaluations",
 /// "best": objectives of the best individual (feasible first, then smallest first objective; null for an

@@ -6,19 +6,15 @@
 #include <iterator>
 #include <optional>
 #include <set>
+#include <variant>
 
 #include "hula/core/error.hpp"
 #include "hula/curve/curve.hpp"
-#include "hula/io/editing_study_file.hpp"
-#include "hula/io/fair_knots_study_file.hpp"
 #include "hula/io/json_curve.hpp"
-#include "hula/io/match_study_file.hpp"
 #include "hula/io/path_resolver.hpp"
 #include "hula/io/run_report_json.hpp"
 #include "hula/io/study_file.hpp"
 #include "hula/oli/detail/entity_codec.hpp"
-#include "hula/studies/curvature_torsion_match.hpp"
-#include "hula/studies/match_study.hpp"
 
 #ifndef HULA_VERSION
 #define HULA_VERSION "unknown"
@@ -57,110 +53,6 @@ void resolve_entities(Json& value, const Document& document, std::set<Label>& re
     for (Json& element : value) resolve_entities(element, document, read);
 }
 
-Json log_json(const optim::RunLog& log) { return io::run_log_to_json(log); }
-
-void run_match(const io::StudyDocument& doc, const std::filesystem::path& base, const StudyRunOptions& options,
-               ComputedStudy& out) {
-  // Files a study names stay inside the document's folder (io::confined_to), as on a server.
-  io::MatchStudyFile file = io::match_study_from_json(doc, io::confined_to(base));
-  file.study.header.cancel = options.cancel;
-  file.study.header.on_generation = options.on_generation;
-  const studies::CurvatureMatch match(file.study.setup);
-  const studies::MatchResult result = studies::run_curvature_match(match, file.study, true);
-  out.run.seed = file.study.header.seed;
-  out.run.result = io::match_result_to_json(match, file, result);
-  out.run.log = log_json(result.log);
-  if (std::optional<nurbs::NurbsCurve> c = studies::match_result_curve(match, result))
-    out.curves.emplace_back(std::move(*c), out.prepared.kind + " result");
-}
-
-void run_match_torsion(const io::StudyDocument& doc, const std::filesystem::path& base, const StudyRunOptions& options,
-                       ComputedStudy& out) {
-  io::TorsionMatchStudyFile file = io::torsion_match_study_from_json(doc, io::confined_to(base));
-  studies::TorsionMatchStudy& study = file.study;
-  study.settings.cancel = options.cancel;
-  study.settings.on_generation = options.on_generation;
-  const studies::CurvatureMatch match(study.setup);
-  const studies::TorsionMatchResult result =
-      studies::run_curvature_torsion_match(match, study.settings, study.header.seed, study.header.threads, true);
-  out.run.seed = study.header.seed;
-  out.run.result = io::torsion_match_result_to_json(match, file, result);
-  out.run.log = log_json(result.log);
-  if (!result.front.empty()) {
-    std::vector<Vec3> pts(match.setup().points.size());
-    match.points_from(result.front[result.compromise].variables, pts);
-    out.curves.emplace_back(match.sampler().curve(pts), out.prepared.kind + " compromise");
-  }
-}
-
-// As `hula fair-knots` without the energy map and figures: the chord-length start, the given
-// parameters, and the GA and/or deterministic optimum, each optimum a result curve.
-void run_fair_knots(const io::StudyDocument& doc, const StudyRunOptions& options, ComputedStudy& out) {
-  studies::FairKnotsStudy study = io::fair_knots_study_from_json(doc);
-  for (optim::RunSettings* run : {&study.ga.binary.run, &study.ga.real.run}) {
-    run->stop.cancel = options.cancel;
-    run->on_generation = options.on_generation;
-  }
-  study.deterministic.cancel = options.cancel;
-  const studies::KnotFairingSetup& setup = study.setup;
-  const std::vector<double> chord = studies::chord_length_parameters(setup);
-  const studies::ParameterEvaluation before = studies::evaluate_parameters(setup, chord);
-  Json result = Json::object();
-  result["study"] = io::fair_knots_study_to_json(study);
-  result["energy"] = studies::fairing_energy_name(setup.energy);
-  result["chord_length"] = io::fairing_evaluation_to_json(before);
-  if (study.parameters)
-    result["given"] = io::fairing_evaluation_to_json(studies::evaluate_parameters(setup, *study.parameters));
-  optim::RunLog log;
-  if (study.method != studies::FairingMethod::Deterministic) {
-    const studies::FairingResult ga = studies::fair_knots_ga(setup, chord, study.ga, &log);
-    result["ga"] = io::fairing_result_to_json(ga, before.energy);
-    out.curves.emplace_back(ga.best.curve, "fair-knots GA optimum");
-  }
-  if (study.method != studies::FairingMethod::Ga) {
-    const studies::FairingResult det = studies::fair_knots_deterministic(setup, chord, study.deterministic);
-    result["deterministic"] = io::fairing_result_to_json(det, before.energy);
-    out.curves.emplace_back(det.best.curve, "fair-knots deterministic optimum");
-  }
-  out.run.seed = study.header.seed;
-  out.run.result = std::move(result);
-  out.run.log = log_json(log);
-}
-
-// As `hula edit-projection` (thesis 8.1): deterministic, no generations; the rebuilt curve is the result.
-void run_edit_projection(const io::StudyDocument& doc, ComputedStudy& out) {
-  const io::EditProjectionStudy study = io::read_edit_projection_study(doc);
-  const studies::ProjectionEditResult r =
-      studies::edit_projection(study.curve.nurbs(), study.edited.nurbs(), study.plane);
-  out.run.seed = study.header.seed;
-  out.run.result = io::edit_projection_result_to_json(study, r);
-  out.curves.emplace_back(r.curve, "edit-projection result");
-}
-
-// As `hula fin-compound` (thesis 8.3) without its figures; the result curve is the one `-o` writes (the
-// rebuilt 3-D curve, the compound or the parent). Deterministic, no generations.
-void run_fin_compound(const io::StudyDocument& doc, ComputedStudy& out) {
-  const io::FinCompoundStudy study = io::read_fin_compound_study(doc);
-  const io::FinCompoundRun run = io::run_fin_compound_study(study);
-  out.run.seed = study.header.seed;
-  out.run.result = io::fin_compound_result_to_json(study, run);
-  const char* what = run.edit ? "rebuilt curve" : (run.compound ? "compound" : "parent");
-  out.curves.emplace_back(run.result_curve(), std::string("fin-compound ") + what);
-}
-
-// As `hula hermite` (thesis 7.5.2) without its figures: the curve rebuilt from the edited handles.
-void run_hermite(const io::StudyDocument& doc, ComputedStudy& out) {
-  const io::HermiteStudy study = io::read_hermite_study(doc);
-  const studies::HermiteEditResult r = studies::hermite_edit(study.spline.points, study.edits, study.options);
-  out.run.seed = study.header.seed;
-  out.run.result = io::hermite_result_to_json(study, r);
-  out.curves.emplace_back(r.curve, "hermite result");
-}
-
-// The study kinds run inside a document (the header comment says what each stores).
-constexpr const char* kKinds[] = {
-    "match-curvature", "match-curvature-torsion", "fair-knots", "edit-projection", "fin-compound", "hermite"};
-
 PreparedStudy prepare(const Json& setup, const Document& document, std::optional<std::uint64_t> seed,
                       std::optional<Label> study) {
   PreparedStudy out;
@@ -175,9 +67,10 @@ PreparedStudy prepare(const Json& setup, const Document& document, std::optional
   out.kind = out.resolved.contains("study") && out.resolved["study"].is_string()
                  ? out.resolved["study"].get<std::string>()
                  : std::string();
-  if (std::find(std::begin(kKinds), std::end(kKinds), out.kind) == std::end(kKinds)) {
+  const std::vector<std::string>& kinds = study_kinds();
+  if (std::find(kinds.begin(), kinds.end(), out.kind) == kinds.end()) {
     std::string supported;
-    for (const char* k : kKinds) supported += (supported.empty() ? "" : ", ") + std::string(k);
+    for (const std::string& k : kinds) supported += (supported.empty() ? "" : ", ") + k;
     throw Error(Errc::InvalidArgument,
                 "study kind \"" + out.kind + "\" cannot run inside a document (supported: " + supported + ")",
                 {.field = "study"});
@@ -206,7 +99,8 @@ StudyRunResult record(Edit& edit, Label study, ComputedStudy ran) {
   StudyRunResult out;
   out.study = study;
   out.kind = ran.prepared.kind;
-  out.cancelled = ran.cancelled;
+  out.cancelled = ran.report.cancelled;
+  out.report = ran.report;
   Provenance p;
   p.operation = "study:" + ran.prepared.kind;
   p.inputs.push_back(study);
@@ -222,7 +116,7 @@ StudyRunResult record(Edit& edit, Label study, ComputedStudy ran) {
     p.details["inputs_changed"] = std::move(labels);
     p.details["read_at_revision"] = ran.prepared.revision;
   }
-  for (const auto& [curve, name] : ran.curves) out.curves.push_back(edit.add_curve(curve, {.name = name}, p));
+  for (const NamedCurve& c : ran.curves) out.curves.push_back(edit.add_curve(c.curve, {.name = c.name}, p));
   ran.run.result_curves = out.curves;
   out.result = ran.run.result;
   stored.runs.push_back(std::move(ran.run));
@@ -244,21 +138,17 @@ PreparedStudy prepare_rerun(const Document& document, Label study, std::optional
 ComputedStudy compute_study(PreparedStudy prepared, const std::filesystem::path& base, const StudyRunOptions& options) {
   ComputedStudy out;
   out.prepared = std::move(prepared);
-  const std::string& kind = out.prepared.kind;
-  const io::StudyDocument doc = io::study_from_json(out.prepared.resolved, kind);
-  if (kind == "match-curvature")
-    run_match(doc, base, options, out);
-  else if (kind == "match-curvature-torsion")
-    run_match_torsion(doc, base, options, out);
-  else if (kind == "fair-knots")
-    run_fair_knots(doc, options, out);
-  else if (kind == "edit-projection")
-    run_edit_projection(doc, out);
-  else if (kind == "fin-compound")
-    run_fin_compound(doc, out);
-  else
-    run_hermite(doc, out);
-  out.cancelled = options.cancel != nullptr && options.cancel->is_cancelled();
+  // Files a study names stay inside the document's folder (io::confined_to), as on a server.
+  StudyOutcome ran =
+      run_study(io::study_from_json(out.prepared.resolved, out.prepared.kind), io::confined_to(base), options);
+  out.run.seed = ran.seed;
+  out.run.result = std::move(ran.result);
+  // The editing studies have no generations: their stored log stays the empty array.
+  if (std::holds_alternative<MatchValues>(ran.values) || std::holds_alternative<TorsionMatchValues>(ran.values) ||
+      std::holds_alternative<FairKnotsValues>(ran.values))
+    out.run.log = io::run_log_to_json(ran.log);
+  out.curves = std::move(ran.curves);
+  out.report = ran.report;
   return out;
 }
 

@@ -13,15 +13,10 @@
 // data points from point set 3). The setup is stored with the references, so
 // a rerun reads the entities as they are then; the run records their labels.
 //
-// Study kinds run here (docs/formats.md): "match-curvature",
-// "match-curvature-torsion" (result curve: the best compromise) and
-// "fair-knots" (result curves: the GA's and/or the deterministic optimum; the
-// energy map and its sections are figures of the CLI and are not stored) and
-// "edit-projection" (the rebuilt curve; no generations), "fin-compound" (the
-// curve `hula fin-compound -o` writes: the rebuilt 3-D curve, the compound or
-// the parent) and "hermite" (the curve rebuilt from the edited handles); the
-// results of these three are what their commands print, without seed, threads
-// and log, and no figures are stored.
+// The run itself is oli::run_study of the resolved setup (study_runner.hpp: the
+// one runner of every door, with its kinds and result documents), its files
+// read inside the document's folder (io::confined_to); the run stores its
+// result document, its log and its result curves, not its figures.
 //
 // Phases (so a server need not hold the document's writer lock while a study
 // computes): prepare_study / prepare_rerun resolve the entity references
@@ -51,8 +46,7 @@
 
 #include "hula/curve/curve.hpp"
 #include "hula/oli/document.hpp"
-#include "hula/optim/run_log.hpp"
-#include "hula/optim/run_report.hpp"
+#include "hula/oli/study_runner.hpp"
 
 namespace hula::oli {
 
@@ -68,16 +62,8 @@ struct StudyRunResult {
   std::string kind{};
   /// True when the cancellation token was set before the run ended: the stored result is the best so far.
   bool cancelled = false;
-};
-
-/// How a study runs inside the document.
-struct StudyRunOptions {
-  /// Called on the running thread with each generation of every optimiser run the study makes, in
-  /// order (fair-knots re-centring rounds each start again at generation 0). Default none.
-  optim::GenerationCallback on_generation{};
-  /// Checked between generations (and simplex iterations); once set the optimisers stop with their
-  /// best so far, which is stored. Not owned; must outlive the run. Default none.
-  const optim::CancellationToken* cancel = nullptr;
+  /// How the run went (generations and evaluations across the study's optimiser runs, seconds).
+  studies::StudyReport report{};
 };
 
 /// A study file with its entity references resolved against one revision of a document (phase 1).
@@ -102,9 +88,9 @@ struct ComputedStudy {
   /// The run (seed, result, log); its result curves are set when committed.
   StudyRun run{};
   /// The result curves with the names they get in the document.
-  std::vector<std::pair<curve::Curve, std::string>> curves{};
-  /// True when the cancellation token was set when the computation ended.
-  bool cancelled = false;
+  std::vector<NamedCurve> curves{};
+  /// How the run went; report.cancelled when the cancellation token was set when the computation ended.
+  studies::StudyReport report{};
 };
 
 /// Resolves `study_file`'s entity references against `document` (phase 1; reads only).

@@ -771,6 +771,15 @@ std::vector<double> CurvatureMatch::curvature_samples(std::span<const double> x)
   return kappa;
 }
 
+std::vector<double> CurvatureMatch::torsion_samples(std::span<const double> x) const {
+  SplineProfileSampler::Workspace ws;
+  std::vector<Vec3> points(setup_.points.size());
+  std::vector<double> kappa(setup_.samples), tau(setup_.samples);
+  points_from(x, points);
+  (void)sampler_.sample(points, ws, kappa, tau);
+  return tau;
+}
+
 double CurvatureMatch::proximity_penalty(std::span<const Vec3> points) const {
   double sum = 0.0;
   for (std::size_t i = 0; i < setup_.proximity.size(); ++i) {

@@ -227,6 +227,8 @@ class CurvatureMatch {
   void validity_constraints(std::span<const Vec3> points, std::span<double> out) const;
   /// κ(u_i) of x (allocates; for reports and figures).
   [[nodiscard]] std::vector<double> curvature_samples(std::span<const double> x) const;
+  /// τ(u_i) of x, NaN where the torsion is undefined (allocates; for reports and figures).
+  [[nodiscard]] std::vector<double> torsion_samples(std::span<const double> x) const;
   /// Σ_i w_i |p_i − p_i⁰|² of CurvatureMatchSetup::proximity for the points `points` (0 without weights), p⁰ the
   /// proximity centre.
   [[nodiscard]] double proximity_penalty(std::span<const Vec3> points) const;

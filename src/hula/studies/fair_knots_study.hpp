@@ -47,4 +47,28 @@ struct FairKnotsStudy {
   std::optional<std::vector<double>> parameters{};
 };
 
+/// What a fair-knots study gives (run_fair_knots_study).
+struct FairKnotsOutcome {
+  /// The chord-length parameters (eq. 29) and their curve: the start of both optimisers.
+  ParameterEvaluation chord_length{};
+  /// The study's own parameters evaluated, when it gives some.
+  std::optional<ParameterEvaluation> given{};
+  /// The energy map around the chord-length parameters, when asked for.
+  std::optional<EnergyMap> map{};
+  /// Its cross sections at the study's `sections` values (201 nodes each).
+  std::vector<MapSection> sections{};
+  /// The GA's and the deterministic optimiser's results, as the method asks.
+  std::optional<FairingResult> ga{}, deterministic{};
+  /// The optimum of lower energy (the deterministic one when it is strictly lower, else the GA's); null when
+  /// no optimiser ran.
+  [[nodiscard]] const FairingResult* best() const noexcept;
+};
+
+/// Runs a fair-knots study (thesis 7.2–7.4): the chord-length start, the given parameters, the energy map
+/// and its sections (evaluations of the setup: their errors come before any optimiser runs), then the GA
+/// and/or Nelder–Mead from the chord-length parameters, as `study.method` says.
+/// @param log when not null, receives every generation of the GA (all its rounds)
+/// @throws as check_parameters, energy_map, map_section, fair_knots_ga and fair_knots_deterministic
+[[nodiscard]] FairKnotsOutcome run_fair_knots_study(const FairKnotsStudy& study, optim::RunLog* log = nullptr);
+
 }  // namespace hula::studies

@@ -32,4 +32,19 @@ struct StudyHeader {
   optim::GenerationCallback on_generation{};
 };
 
+/// How a study run went, whatever its kind: the report every door gives beside the study's result.
+struct StudyReport {
+  /// The study kind ("match-curvature", ...).
+  std::string kind{};
+  /// True when the cancellation token ended the run: the result is the best so far.
+  bool cancelled = false;
+  /// Generations of the study's optimiser runs, counted across them (re-centred rounds and the two
+  /// fair-knots optimisers each restart at generation 0); 0 for the studies without an optimiser.
+  std::size_t generations = 0;
+  /// Fitness evaluations of those generations, counted across the runs.
+  std::size_t evaluations = 0;
+  /// Wall-clock seconds of the run.
+  double seconds = 0.0;
+};
+
 }  // namespace hula::studies

@@ -35,20 +35,14 @@ std::shared_ptr<Job> find_job(JobPool& jobs, const Request& request) {
 // The work of a study job: prepare (read lock), compute (no lock), commit (writer lock, one transaction).
 JobWork study_job(std::shared_ptr<OpenDocument> doc, Json study, std::filesystem::path workspace) {
   return [doc = std::move(doc), study = std::move(study), workspace = std::move(workspace)](JobContext& context) {
-    const auto start = std::chrono::steady_clock::now();
-    const std::string kind = study.value("study", Json()).is_string() ? study["study"].get<std::string>() : "";
-    // Generations and evaluations run on across the study's optimiser runs (each restarts at 0).
-    std::size_t generations = 0, evaluations_before = 0, evaluations = 0;
     oli::StudyRunOptions options;
     options.cancel = &context.cancel;
-    options.on_generation = [&](const optim::GenerationLog& g) {
-      if (g.generation == 0) evaluations_before = evaluations;
-      evaluations = evaluations_before + g.evaluations;
-      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      Json e = io::generation_event_json(g, elapsed);
-      e["generation"] = generations++;
-      e["evaluations"] = evaluations;
-      e["study"] = kind;
+    // Generations and evaluations run on across the study's optimiser runs (each restarts at 0).
+    options.on_progress = [&](const optim::GenerationLog& g, const studies::StudyReport& so_far) {
+      Json e = io::generation_event_json(g, so_far.seconds);
+      e["generation"] = so_far.generations - 1;
+      e["evaluations"] = so_far.evaluations;
+      e["study"] = so_far.kind;
       context.publish(e);
     };
     oli::PreparedStudy prepared = doc->read([&](const oli::Document& d) { return oli::prepare_study(d, study); });
@@ -60,12 +54,7 @@ JobWork study_job(std::shared_ptr<OpenDocument> doc, Json study, std::filesystem
     o.throw_if_failed();
     JobOutcome out;
     out.cancelled = run.cancelled;
-    out.report = Json::object();
-    out.report["study"] = run.kind;
-    out.report["termination"] = run.cancelled ? "Cancelled" : "Completed";
-    out.report["generations"] = generations;
-    out.report["evaluations"] = evaluations;
-    out.report["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    out.report = io::study_report_to_json(run.report);
     Json curves = Json::array();
     for (const oli::Label l : run.curves) curves.push_back(l.value);
     out.result = Json::object();
