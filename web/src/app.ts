@@ -211,7 +211,7 @@ export class App {
   readonly serverLatencies: number[] = [];
   private pointerStamp = 0;
   /**
-   * The honest drag counters (issue 23, e2e/bench.spec.ts), reset when a drag
+   * The honest drag counters (read by e2e/bench.spec.ts), reset when a drag
    * starts: pointer moves that changed the dragged point, and frames that drew
    * the curve, its fins and (when it is the selected curve) the graphs at a
    * new position of it, with the times of the first and last such move.

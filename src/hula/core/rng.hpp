@@ -38,7 +38,7 @@ class Rng {
   std::array<std::uint64_t, 4> s_{};
 };
 
-// The draws are inline (issue 27: the GA's selection, crossover and mutation draw once per bit or
+// The draws are inline (the GA's selection, crossover and mutation draw once per bit or
 // variable, and an out-of-line call cost more than the generator).
 
 inline Rng::result_type Rng::operator()() noexcept {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The instruction set the vectorised kernels run with (issue 27): the portable baseline (two doubles per
+// The instruction set the vectorised kernels run with: the portable baseline (two doubles per
 // vector: SSE2 on x86-64) that every build has, and on x86-64 AVX2 (four) and AVX-512F (eight) when the
 // CPU and the OS support them, picked once at run time. The default build stays portable: only the
 // kernels' own translation units are compiled for the wider sets (nurbs/detail/span_simd*.cpp,

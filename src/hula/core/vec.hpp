@@ -72,7 +72,7 @@ namespace detail {
 /// Euclidean length without intermediate overflow or underflow.
 [[nodiscard]] inline double norm(const Vec3& a) {
   // |a|² in (1e-290, 1e290) means the largest component m has m² ≤ |a|² < 1e290 and 3 m² ≥ |a|² > 1e-290,
-  // so m lies in (1e-150, 1e150), where squaring loses nothing: the plain formula, inline (issue 27: the
+  // so m lies in (1e-150, 1e150), where squaring loses nothing: the plain formula, inline (the
   // out-of-line call and its libm fmax were 12 % of a 10-point interpolation). Else the scaled form.
   const double s = a.x * a.x + a.y * a.y + a.z * a.z;
   if (s > 1e-290 && s < 1e290) return std::sqrt(s);

@@ -101,7 +101,7 @@ void check_same_count(std::size_t got, std::size_t points, const char* field) {
                 {.field = field});
 }
 
-// Scratch of interpolate_cubic and parameterise, one per thread: no allocation once warm (issue 27).
+// Scratch of interpolate_cubic and parameterise, one per thread: no allocation once warm.
 struct Scratch {
   std::vector<double> a, b, c, turn, chord;
   BasisWorkspace basis;
@@ -501,7 +501,7 @@ void parameterise_checked(std::span<const Vec3> points, Parameterisation rule, c
       t[i + 1] = t[i] + span;
     }
   }
-  // Scaled by the reciprocal, as SplineProfileSampler does (issue 27: the divisions were a tenth of a
+  // Scaled by the reciprocal, as SplineProfileSampler does (the divisions were a tenth of a
   // 10-point interpolation); each parameter moves by at most one ulp against t_i / total.
   const double inv_total = 1.0 / t[N - 1];
   for (std::size_t i = 1; i + 1 < N; ++i) t[i] *= inv_total;

@@ -87,7 +87,7 @@ struct NurbsCurve::Data {
   std::vector<double> weights;
   int dimension;
   Box3 box;
-  // Built on first use and published with one compare-and-swap (issue 27: no call_once, whose futex
+  // Built on first use and published with one compare-and-swap (no call_once, whose futex
   // wake cost a system call per curve); a thread that loses the race drops its copy.
   mutable std::atomic<const SpanCache*> cache{nullptr};
 
@@ -215,7 +215,7 @@ inline std::size_t bucket_of(const SpanCache& c, double t) {
 
 // Span index s in [0, S) of t among breakpoints b[0..S] (exact comparisons): the largest s with
 // b[s] <= t (Right) or b[s] < t (Left), 0 if none, S − 1 at and beyond the end. The bucket of t gives
-// the candidate spans; a fixed number of branch-free halvings picks one (issue 27: std::upper_bound's
+// the candidate spans; a fixed number of branch-free halvings picks one (std::upper_bound's
 // unpredictable branches cost shuffled input ~30 ns a point, a plain branch-free binary search ~20).
 inline std::size_t locate(const SpanCache& c, double t, Side side) {
   const std::size_t j = bucket_of(c, t);

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Design by curvature on a curve entity (issue 21 item 4): the entity's curve
+// Design by curvature on a curve entity: the entity's curve
 // replaced by studies::edit_curvature's result inside the caller's
 // transaction, so the edit is one undo step and a failure changes nothing.
 // Every door (the server's curvature-edit route, scripts through the

@@ -38,7 +38,7 @@ std::size_t polynomial_mutation(std::span<double> x, std::span<const double> low
 }
 
 std::size_t bit_mutation(std::span<std::uint8_t> bits, double probability, unsigned level, Rng& rng) noexcept {
-  // chance() per bit, with its threshold worked out once for the chromosome (issue 27: llround per bit was a
+  // chance() per bit, with its threshold worked out once for the chromosome (llround per bit was a
   // third of the thesis GA's own time): the same draws from `rng`, the same decisions.
   const ChanceThreshold threshold(probability, level);
   std::size_t flipped = 0;

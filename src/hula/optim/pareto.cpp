@@ -243,7 +243,7 @@ void crowding_distance(std::span<const double> objectives, std::size_t m, std::s
     if (m == 2 && j == 1 && mutually_non_dominated_2d(f, scratch.data(), k)) {
       // Sorted by f1 (ties by index), a 2-D non-dominated set is its f0 order reversed, except that runs
       // of equal points (equal in both objectives) keep their index order: the same permutation the sort
-      // below gives, without sorting (issue 27: NSGA-II's own cost per generation).
+      // below gives, without sorting (NSGA-II's own cost per generation).
       std::reverse(first, last);
       for (auto run = first; run != last;) {
         auto end = run + 1;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Design by curvature on an existing curve (issue 21 item 4; thesis 8.2.2 and
+// Design by curvature on an existing curve (thesis 8.2.2 and
 // appendix 8's "edit the curvature graph"): the designer changes the curve's
 // curvature profile — drags its κ graph, or types a κ(s) law — and gets back a
 // curve of the same kind, with about as many handles, that keeps what joins it

@@ -73,7 +73,7 @@ void span_coefficients(std::size_t n, const double* slopes, const double* h, con
 // Solves the moment system in place (sample()'s Thomas algorithm): diag and the sub-diagonal h[k − 1]
 // (last_lower on the last row), upper becomes c'_k, rhs becomes d'_k, M the moments. Running values (the
 // previous row, the next moment) stay in locals: reloading them from the arrays just written put a
-// store-to-load forward on every step's critical path (issue 27).
+// store-to-load forward on every step's critical path.
 template <std::size_t D>
 void thomas_moments(std::size_t n, const double* diag, double* upper, double* rhs, const double* h, double last_lower,
                     double* M) {
@@ -159,7 +159,7 @@ bool SplineProfileSampler::sample(std::span<const Vec3> points, Workspace& ws, s
   };
   // Chord-length parameters normalised to [0, 1] (thesis eq. 29). Running values (the previous t, the
   // previous row of the elimination, the next moment) stay in locals below: reloading them from the
-  // arrays just written put a store-to-load forward on every step's critical path (issue 27).
+  // arrays just written put a store-to-load forward on every step's critical path.
   double* t = ws.t.data();
   double* h = ws.h.data();
   t[0] = 0.0;
@@ -705,7 +705,7 @@ namespace {
 // Eq. 31's (1/m) Σ |κ_i − κ*_i|, leaving r_i = κ_i − κ*_i in `kappa`: four partial sums over i mod 4
 // (each in sample order), combined as (s0 + s1) + (s2 + s3). The order is fixed (it does not depend on
 // the instruction set or the thread count) and the dependency chain is a quarter of a sequential sum's,
-// which was a quarter of a 200-sample evaluation (issue 27). Against the sequential sum the result
+// which was a quarter of a 200-sample evaluation. Against the sequential sum the result
 // differs in rounding only (relative 1e-15 for 200 samples).
 double mean_abs_residual(std::span<double> kappa, const std::vector<double>& target) {
   const std::size_t m = kappa.size();

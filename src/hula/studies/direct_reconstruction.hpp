@@ -45,7 +45,7 @@
 // normal to t* in space); for a prescribed end normal of a space curve, the
 // rotation about T(L) from n* to N(L), whose sensitivity is δΩ · T(L).
 //
-// Relative corrections and held end curvatures (issue 21, design by curvature):
+// Relative corrections and held end curvatures (design by curvature):
 // with an envelope e(u) the curvature correction is δκ(u) = e(u) Σ_k c_k B_k(u)
 // and the metric the L² norm of that product (Gauss–Legendre Gram matrix). With
 // e = κ* the curve's curvature is κ*(u)(1 + Σ c_k B_k(u)): wherever the target

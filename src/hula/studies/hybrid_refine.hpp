@@ -13,7 +13,7 @@
 //   Levenberg–Marquardt with box constraints (Problem::SetParameterLowerBound /
 //   UpperBound; the trust-region step is projected on the box and the step
 //   sequence stays feasible), dense QR, Jacobi scaling, non-monotonic steps.
-// - LsqSolver::ClampedLm (the issue-6 solver, kept to compare): Moré's (1978)
+// - LsqSolver::ClampedLm (the first hybrid solver, kept to compare): Moré's (1978)
 //   Levenberg–Marquardt with Marquardt scaling D = diag(‖J_j‖), step from
 //   [J; √λ D] δ ≈ [−r; 0] by Householder QR, then clamped to the box; λ ×1/3
 //   after an accepted step, ×4 after a rejected one. Clamping is not a bounded
@@ -46,7 +46,7 @@ namespace hula::studies {
 enum class LsqSolver {
   /// Ceres Solver's bounded trust-region Levenberg–Marquardt (default).
   Ceres,
-  /// The issue-6 Levenberg–Marquardt with the step clamped to the bounds (for comparison).
+  /// The first hybrid Levenberg–Marquardt with the step clamped to the bounds (for comparison).
   ClampedLm,
 };
 
@@ -57,7 +57,7 @@ enum class LsqSolver {
 
 /// Options of refine_levenberg_marquardt.
 struct LmOptions {
-  /// The solver. Default Ceres; ClampedLm only to compare with the issue-6 results.
+  /// The solver. Default Ceres; ClampedLm only to compare with its results.
   LsqSolver solver = LsqSolver::Ceres;
   /// Matching studies (run_curvature_match, planar): also build starts by integrating the target profile from
   /// the start point and tangent (the direct route, the profile read as one of normalised arc length). Where the

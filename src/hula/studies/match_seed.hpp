@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Curvature-matching setups seeded from a curve (issue 21 item 5, "From
+// Curvature-matching setups seeded from a curve (the workbench's "From
 // selection"): the study starts from the curve the designer selected — its
 // points as the design variables, its end tangents held, and its own curvature
 // (and, for a space curve, torsion) profile as the targets to edit — instead of

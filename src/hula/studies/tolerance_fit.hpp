@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Compact fair B-spline fits within a tolerance (issue 21): the one engine behind
+// Compact fair B-spline fits within a tolerance: the one engine behind
 // `hula fit` (studies::fit_scan, after ordering and noise estimation) and
 // `hula approximate --tolerance`. Given points with starting foot parameters:
 //

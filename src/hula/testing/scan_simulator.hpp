@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// A second, independent generator of scanned clouds (issue 21: a fit must not be tuned to
+// A second, independent generator of scanned clouds (a fit must not be tuned to
 // one generator). It shares nothing with point_clouds.hpp: its own known curves (Bézier and
 // polynomial graphs, a helix, closed loops; planar and space), given analytically with their
 // first two derivatives; its own random engine (std::mt19937_64, not hula::Rng); sampling at

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Construction of knot vectors and curves from data that is valid by construction (issue 27:
-// "validation once"): interpolate_cubic checks its points once and builds strictly increasing
+// Construction of knot vectors and curves from data that is valid by construction
+// (validation once): interpolate_cubic checks its points once and builds strictly increasing
 // parameters and finite control points below kMaxCoordinate itself, so the validating constructors'
 // second and third passes over the same numbers are skipped. In builds with asserts
 // (HULA_ENABLE_ASSERTS, the ci preset) the full validation still runs and a violation is an

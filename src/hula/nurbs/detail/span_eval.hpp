@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The span kernels of NurbsCurve's cache (issue 27): derivatives 0…K of one cached polynomial piece at
+// The span kernels of NurbsCurve's cache: derivatives 0…K of one cached polynomial piece at
 // local parameters x, for a compile-time degree P, derivative order K and rationality R, written once
 // over a lane type V that is either `double` (one point: the scalar path) or a GCC/Clang vector of
 // doubles (several points of one span at once: the SIMD path).

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The run kernels of NurbsCurve's batch evaluation (issue 27) for each instruction set of
+// The run kernels of NurbsCurve's batch evaluation for each instruction set of
 // hula/core/simd.hpp: detail/span_eval.hpp compiled for the portable baseline (span_simd.cpp) and, on
 // x86-64, for AVX2 and AVX-512F (span_simd_avx2.cpp, span_simd_avx512.cpp). Every variant gives
 // bit-identical results (span_eval.hpp), so the level changes speed only.

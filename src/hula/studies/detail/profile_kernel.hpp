@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The sample kernel of SplineProfileSampler (issue 27: the GA fitness): κ, and τ on request, of a
+// The sample kernel of SplineProfileSampler (the GA fitness): κ, and τ on request, of a
 // cubic spline at many sorted parameters, W samples per vector, written once over a lane type that is
 // `double` (one sample: the tail) or a GCC/Clang vector of doubles. Each lane performs exactly the
 // operations of the scalar sampler in the same order (no fused multiply-add: the including translation
