@@ -36,10 +36,20 @@ export const getDoc = (doc: string): Promise<DocumentState> =>
 
 /** The document's curve entities, each with its curve file. */
 export async function curves(doc: string): Promise<Entity[]> {
-  const summary = await getDoc(doc);
-  return Promise.all(
-    summary.entities.filter((e) => isCurveKind(e.kind)).map((e) => entity(doc, String(e.label))),
-  );
+  // The listing and the GETs are separate requests: a change the page makes in between (a split, an
+  // undo) can remove a listed entity, so a 404 re-reads the listing (a bounded number of times).
+  for (let attempt = 1; ; attempt++) {
+    const summary = await getDoc(doc);
+    try {
+      return await Promise.all(
+        summary.entities
+          .filter((e) => isCurveKind(e.kind))
+          .map((e) => entity(doc, String(e.label))),
+      );
+    } catch (e) {
+      if (attempt >= 5 || !(e instanceof Error) || !e.message.includes('→ 404')) throw e;
+    }
+  }
 }
 
 export async function history(doc: string): Promise<History> {
