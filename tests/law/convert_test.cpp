@@ -121,5 +121,24 @@ TEST(LawConvert, Errors) {
                     "not reached within 2 segments");
 }
 
+// checks: a law that jumps (a comparison inside it, as the curve-reader fuzzer wrote one) is refused at once
+// naming where, instead of bisecting to rounding and re-running the refinement with ever denser checks (11 s
+// under the fuzzer); a law with a kink (continuous, not differentiable) still converts within the tolerance,
+// checked against the closed form |t − 1| at dense samples.
+TEST(LawConvert, JumpsAreRefusedKinksAreFollowed) {
+  Context ctx;
+  HULA_EXPECT_ERROR(to_nurbs(parse("vec(2 - cos(t) < 2*sin(t), 0.5*t)", ctx), "t", 0, 4 * kPi), Errc::NumericalFailure,
+                    "not continuous near t = ");
+  const ToNurbsResult kink = to_nurbs(parse("vec(t, abs(t - 1))", ctx), "t", 0, 2);
+  EXPECT_LE(kink.max_deviation, 1e-6);
+  EXPECT_LE(dense_deviation(
+                kink.curve,
+                [](double t) {
+                  return Vec3{t, std::fabs(t - 1), 0};
+                },
+                0, 2),
+            1e-6);
+}
+
 }  // namespace
 }  // namespace hula::law

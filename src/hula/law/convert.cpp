@@ -105,7 +105,14 @@ ToNurbsResult to_nurbs(const Law& law, std::string_view parameter, double a, dou
         const double s = (static_cast<double>(k) - 0.37) / static_cast<double>(options.check_samples - 1);
         err = std::max(err, distance(f.position(ts[i] + s * h), hermite(ss[i], ss[i + 1], h, s)));
       }
-      if (err > check_tol && h > 1e-12 * std::max(1.0, std::fabs(ts[i]))) {
+      if (err > check_tol && !(h > 1e-12 * std::max(1.0, std::fabs(ts[i]))))
+        // Bisected down to rounding and still off by more than the tolerance: the law jumps here (a
+        // comparison, a step), and no C2 curve follows it within the tolerance.
+        throw Error(Errc::NumericalFailure, "to_nurbs: the law is not continuous near " + std::string(parameter) +
+                                                " = " + format_number(ts[i]) + " (still " + format_number(err) +
+                                                " off at the finest step; tolerance " +
+                                                format_number(options.tolerance) + ")");
+      if (err > check_tol) {
         const double m = 0.5 * (ts[i] + ts[i + 1]);
         nts.push_back(m);
         nss.push_back(f.at(m));
