@@ -51,9 +51,14 @@ def cli(hula, path, by):
 
 
 def plain(value):
-    """Python's answer in JSON's terms: arrays as lists, NaN as None, tuples as lists."""
+    """Python's answer in JSON's terms: StudyResult and dicts as dicts, arrays and tuples as lists, curves
+    as their JSON, NaN as None (shared by study_conformance_test.py)."""
+    if isinstance(value, hh.StudyResult):
+        return {k: plain(value[k]) for k in value.keys()}
     if isinstance(value, dict):
         return {k: plain(v) for k, v in value.items()}
+    if isinstance(value, hh.NurbsCurve):
+        return json.loads(value.to_json())
     if isinstance(value, np.ndarray):
         return plain(value.tolist())
     if isinstance(value, (list, tuple)):

@@ -12,7 +12,6 @@ the convergence graph, the map's grid); those are not compared.
 Usage: study_conformance_test.py HULA_BINARY   (PYTHONPATH must reach hulahoops)
 """
 import json
-import math
 import pathlib
 import subprocess
 import sys
@@ -23,9 +22,8 @@ ROOT = HERE.parent.parent
 sys.path.insert(0, str(ROOT / "tests" / "server"))
 from hula_server import Server, read_events, open_events  # noqa: E402
 
-import numpy as np  # noqa: E402
-
 import hulahoops as hh  # noqa: E402
+from conformance_test import plain  # noqa: E402  (Python's answer in JSON's terms)
 
 # Thesis 8.2.1 Example 1 (examples/studies/match-curvature-example1.json) with a small binary GA, then
 # the hybrid (GA + Levenberg-Marquardt) and the direct method on the same setup.
@@ -46,24 +44,6 @@ STUDIES = [
     ("match-curvature hybrid", dict(MATCH, seed=11, method="hybrid"), lambda s: hh.match_curvature(s)),
     ("fair-knots both", FAIR, lambda s: hh.fair_knots(s)),
 ]
-
-
-def plain(value):
-    """Python's answer in JSON's terms: StudyResult and dicts as dicts, arrays and tuples as lists, curves
-    as their JSON, NaN as None."""
-    if isinstance(value, hh.StudyResult):
-        return {k: plain(value[k]) for k in value.keys()}
-    if isinstance(value, dict):
-        return {k: plain(v) for k, v in value.items()}
-    if isinstance(value, hh.NurbsCurve):
-        return json.loads(value.to_json())
-    if isinstance(value, np.ndarray):
-        return plain(value.tolist())
-    if isinstance(value, (list, tuple)):
-        return [plain(v) for v in value]
-    if isinstance(value, float) and math.isnan(value):
-        return None
-    return value
 
 
 def first_difference(a, b, where="$", subset=False):
