@@ -239,6 +239,7 @@ test('the object list names, colours, hides and locks curves; the view state sur
   // Hidden: not drawn, not picked by a click on it.
   await page.getByRole('checkbox', { name: 'Show twisted' }).uncheck();
   await page.keyboard.press('Escape');
+  // No wait for the server: a hide shows at once.
   const on = await pixelOf(page, 'top', [0, 0, 0]);
   await page.mouse.click(on.x, on.y);
   await idle(page);

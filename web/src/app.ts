@@ -162,12 +162,34 @@ export class App {
   selected: string | null = null;
   /** Whether a curve is hidden: the document's `visible` attribute (oli), set in the object list. */
   isHidden(label: string): boolean {
+    const pending = this.pendingAttributes.get(label);
+    if (pending && 'visible' in pending) return pending['visible'] === false;
     return this.store.entities.get(label)?.attributes['visible'] === false;
   }
 
   /** Whether a curve is locked: the document's `locked` attribute (oli), set in the object list. */
   isLocked(label: string): boolean {
+    const pending = this.pendingAttributes.get(label);
+    if (pending && 'locked' in pending) return pending['locked'] === true;
     return this.store.entities.get(label)?.attributes['locked'] === true;
+  }
+
+  /**
+   * Attributes asked of the server and not yet answered: a hide or lock shows
+   * at once (a click just after "hide" must not pick the curve), and the
+   * stored value comes back if the server refuses.
+   */
+  private readonly pendingAttributes = new Map<string, Record<string, unknown>>();
+
+  private async patchAttributes(label: string, attributes: Record<string, unknown>): Promise<void> {
+    this.pendingAttributes.set(label, { ...this.pendingAttributes.get(label), ...attributes });
+    this.redrawCurve(label);
+    try {
+      await this.patch(label, { attributes });
+    } finally {
+      this.pendingAttributes.delete(label);
+      if (this.store.entities.has(label)) this.redrawCurve(label);
+    }
   }
   /** Result curves of the studies run from this page: curve label → study label. */
   readonly studyOf = new Map<string, string>();
@@ -421,13 +443,13 @@ export class App {
    * hidden curve is neither drawn nor picked.
    */
   async setHidden(label: string, hidden: boolean): Promise<void> {
-    await this.patch(label, { attributes: { visible: !hidden } });
+    await this.patchAttributes(label, { visible: !hidden });
     this.setStatus(`${this.nameOf(label)} ${hidden ? 'hidden' : 'shown'}`);
   }
 
   /** Lock or unlock a curve (the `locked` attribute): a locked curve is not picked nor dragged. */
   async setLocked(label: string, locked: boolean): Promise<void> {
-    await this.patch(label, { attributes: { locked } });
+    await this.patchAttributes(label, { locked });
     this.setStatus(`${this.nameOf(label)} ${locked ? 'locked' : 'unlocked'}`);
   }
 
