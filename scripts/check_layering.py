@@ -37,32 +37,10 @@ SERVER_STILL_DIRECT: set[tuple[str, str]] = set()
 # gone is reported, so the list stays the true list of what remains).
 APPS_REACH = SERVER_REACHES | {"oli_store", "oli_kernel", "oli_exchange"}
 APPS_STILL_DIRECT = {
-    ("apps/hula/commands/approximate.cpp", "nurbs"),
-    ("apps/hula/commands/approximate.cpp", "studies"),
     ("apps/hula/commands/batch.cpp", "optim"),
-    ("apps/hula/commands/closest.cpp", "nurbs"),
-    ("apps/hula/commands/clothoid.cpp", "intrinsic"),
-    ("apps/hula/commands/common.cpp", "diffgeom"),
-    ("apps/hula/commands/common.cpp", "intrinsic"),
-    ("apps/hula/commands/common.cpp", "nurbs"),
-    ("apps/hula/commands/common.hpp", "law"),
-    ("apps/hula/commands/common.hpp", "nurbs"),
-    ("apps/hula/commands/compare.cpp", "diffgeom"),
-    ("apps/hula/commands/compare.cpp", "nurbs"),
-    ("apps/hula/commands/demo.cpp", "diffgeom"),
-    ("apps/hula/commands/edit.cpp", "intrinsic"),
-    ("apps/hula/commands/edit.cpp", "nurbs"),
-    ("apps/hula/commands/energy.cpp", "diffgeom"),
-    ("apps/hula/commands/interpolate.cpp", "nurbs"),
     ("apps/hula/commands/islands.cpp", "optim"),
     ("apps/hula/commands/islands.hpp", "optim"),
-    ("apps/hula/commands/law.cpp", "law"),
-    ("apps/hula/commands/log_aesthetic.cpp", "diffgeom"),
-    ("apps/hula/commands/log_aesthetic.cpp", "intrinsic"),
     ("apps/hula/commands/optimise.cpp", "optim"),
-    ("apps/hula/commands/reconstruct.cpp", "intrinsic"),
-    ("apps/hula/commands/reconstruct.cpp", "law"),
-    ("apps/hula/commands/reconstruct.cpp", "studies"),
 }
 INCLUDE = re.compile(r'^\s*#\s*include\s*"hula/([a-z_]+)/([^"]+)"')
 SOURCES = {".hpp", ".cpp", ".h", ".cc"}
