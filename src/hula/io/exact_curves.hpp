@@ -38,9 +38,9 @@ struct ClothoidRequest {
   double start_angle = 0.0;
   Vec3 end_point{};
   double end_angle = 0.0;
-  std::optional<double> start_curvature;  ///< with end_curvature: the G2 spline
-  std::optional<double> end_curvature;
-  std::vector<double> at;  ///< arc lengths along the whole result to sample (none: no "points")
+  std::optional<double> start_curvature{};  ///< with end_curvature: the G2 spline
+  std::optional<double> end_curvature{};
+  std::vector<double> at{};  ///< arc lengths along the whole result to sample (none: no "points")
 };
 
 /// The segments of a clothoid interpolation and its JSON.
