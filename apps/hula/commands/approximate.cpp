@@ -3,10 +3,7 @@
 // of the given degree through the first and last point that keeps every point
 // within the tolerance (studies::fit_within_tolerance, the engine of `hula fit`,
 // without stray rejection), or the plain least-squares fit with a given count of
-// control points (--control-points, nurbs::approximate).
-#include "hula/nurbs/approximate.hpp"
-
-#include <algorithm>
+// control points (--control-points, nurbs::approximate): io::approximation_answer.
 #include <limits>
 #include <memory>
 #include <optional>
@@ -14,8 +11,8 @@
 #include "commands/common.hpp"
 #include "hula/core/error.hpp"
 #include "hula/io/atomic_file.hpp"
+#include "hula/io/curve_edits.hpp"
 #include "hula/io/points_file.hpp"
-#include "hula/studies/tolerance_fit.hpp"
 
 namespace hula::cli {
 
@@ -36,41 +33,16 @@ int run_approximate(const ApproximateArgs& a) {
                 ErrorWhere{.field = "tolerance"});
   io::check_output_path(a.output, "--output");
   const io::PointSet set = io::read_points_file(a.points);
-  nurbs::ApproximationOptions o;
-  o.degree = a.degree;
-  o.dimension = set.dimension;
-  o.parameterisation = io::parameterisation_from_name(a.parameterisation, "parameterisation");
+  const io::ApproximationAnswer fit = io::approximation_answer(
+      set, {.tolerance = a.tolerance,
+            .control_points = a.control_points,
+            .degree = a.degree,
+            .parameterisation = io::parameterisation_from_name(a.parameterisation, "parameterisation")});
+  io::write_curve_file(a.output, fit.curve);
   Json doc = Json::object();
   doc["output"] = a.output;
   doc["points"] = set.points.size();
-  if (a.tolerance) {
-    studies::ToleranceFitOptions t;
-    t.tolerance = *a.tolerance;
-    t.degree = a.degree;
-    t.min_degree = a.degree;
-    t.ends = studies::FitEnds::Interpolated;
-    t.max_control_points = std::max<std::size_t>(set.points.size(), static_cast<std::size_t>(a.degree) + 1);
-    const std::vector<double> start = nurbs::parameterise(set.points, o.parameterisation);
-    const studies::ToleranceFit fit = studies::fit_within_tolerance(set.points, start, {}, t);
-    io::write_curve_file(a.output, fit.faired);
-    doc["degree"] = fit.faired.degree();
-    doc["control_points"] = fit.faired.control_points().size();
-    doc["tolerance"] = *a.tolerance;
-    doc["max_deviation"] = fit.max_deviation;
-    doc["max_deviation_index"] = fit.max_deviation_index;
-    doc["fits"] = fit.fits;
-    doc["fit_max_deviation"] = fit.fit_max_deviation;
-    doc["smoothing"] = fit.smoothing;
-  } else {
-    o.control_points = *a.control_points;
-    const nurbs::ApproximationResult fit = nurbs::approximate(set.points, o);
-    io::write_curve_file(a.output, fit.curve);
-    doc["degree"] = fit.curve.degree();
-    doc["control_points"] = fit.curve.control_points().size();
-    doc["max_deviation"] = fit.max_deviation;
-    doc["max_deviation_index"] = fit.max_deviation_index;
-    doc["fits"] = 1;
-  }
+  doc.update(fit.report);
   print_result(doc, a.output);
   return kExitOk;
 }

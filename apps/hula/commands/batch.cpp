@@ -15,7 +15,8 @@
 // results file atomically after every finished item, so an interrupted
 // campaign resumes where it stopped: items already in the results file are
 // skipped. A failed item is recorded with its exit code and error and the
-// rest go on; the exit code is 0 only when every item succeeded.
+// rest go on; the exit code is 0 only when every item succeeded. The campaign
+// and results files are io/campaign_file.hpp's; this file runs the items.
 #include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -37,6 +38,7 @@
 #include "commands/common.hpp"
 #include "hula/core/error.hpp"
 #include "hula/io/atomic_file.hpp"
+#include "hula/io/campaign_file.hpp"
 
 #if defined(HULA_WITH_MPI)
 #include <mpi.h>
@@ -56,101 +58,6 @@ struct BatchArgs {
   std::size_t jobs = 1;
 };
 
-// One unit of work.
-struct Item {
-  std::string id;
-  fs::path study;
-  std::optional<std::uint64_t> seed;
-  Json set;  // JSON merge patch applied to the study (null = none)
-};
-
-Json parse_json_file(const fs::path& path, const std::string& field) {
-  const std::string text = io::read_text_file(path);
-  try {
-    return Json::parse(text);
-  } catch (const Json::parse_error& e) {
-    throw Error(Errc::ParseError, path.string() + ": " + e.what(), {.field = field});
-  }
-}
-
-// A string member, or `fallback` when it is absent or not a string. (Json::value() trips GCC 12's
-// -Wnull-dereference inside nlohmann's inlined code.)
-std::string string_member(const Json& j, const char* key, const std::string& fallback) {
-  const auto it = j.find(key);
-  return it != j.end() && it->is_string() ? it->get_ref<const std::string&>() : fallback;
-}
-
-std::uint64_t as_seed(const Json& v, const std::string& field) {
-  if (!v.is_number_unsigned())
-    throw Error(Errc::InvalidOption, field + " must be a non-negative integer seed", {.field = field});
-  return v.get<std::uint64_t>();
-}
-
-// The campaign's items, in file order: "items" first, then the sweep's seeds x settings.
-std::vector<Item> read_campaign(const fs::path& path) {
-  const Json doc = parse_json_file(path, "campaign");
-  if (!doc.is_object() || string_member(doc, "format", "") != "hula-campaign" || !doc.contains("version") ||
-      doc["version"] != 1) {
-    throw Error(Errc::ParseError, path.string() + ": not a campaign file (format \"hula-campaign\", version 1)",
-                {.field = "format"});
-  }
-  for (const auto& [key, value] : doc.items()) {
-    if (key != "format" && key != "version" && key != "comment" && key != "items" && key != "sweep")
-      throw Error(Errc::ParseError, "unknown member \"" + key + "\" of the campaign", {.field = key});
-  }
-  const fs::path base = path.parent_path();
-  std::vector<Item> items;
-  if (doc.contains("items")) {
-    const Json& list = doc["items"];
-    if (!list.is_array()) throw Error(Errc::ParseError, "items must be an array", {.field = "items"});
-    for (std::size_t i = 0; i < list.size(); ++i) {
-      const Json& j = list[i];
-      const std::string field = "items[" + std::to_string(i) + "]";
-      if (!j.is_object() || !j.contains("study") || !j["study"].is_string())
-        throw Error(Errc::ParseError, field + " needs a \"study\" file name", {.field = field, .index = i});
-      Item item;
-      item.study = base / j["study"].get_ref<const std::string&>();
-      item.id = string_member(j, "id", item.study.stem().string());
-      if (j.contains("seed")) item.seed = as_seed(j["seed"], field + ".seed");
-      if (j.contains("set")) item.set = j["set"];
-      items.push_back(std::move(item));
-    }
-  }
-  if (doc.contains("sweep")) {
-    const Json& s = doc["sweep"];
-    if (!s.is_object() || !s.contains("study") || !s["study"].is_string())
-      throw Error(Errc::ParseError, "sweep needs a \"study\" file name", {.field = "sweep.study"});
-    const fs::path study = base / s["study"].get_ref<const std::string&>();
-    std::vector<std::optional<std::uint64_t>> seeds{std::nullopt};
-    if (s.contains("seeds")) {
-      seeds.clear();
-      for (const Json& v : s["seeds"]) seeds.emplace_back(as_seed(v, "sweep.seeds"));
-    }
-    std::vector<Json> sets{Json()};
-    if (s.contains("settings")) {
-      sets.clear();
-      for (const Json& v : s["settings"]) sets.push_back(v);
-    }
-    for (std::size_t j = 0; j < sets.size(); ++j)
-      for (const auto& seed : seeds) {
-        Item item{study.stem().string(), study, seed, sets[j]};
-        if (sets.size() > 1) item.id += "/settings" + std::to_string(j);
-        if (seed) item.id += "/seed" + std::to_string(*seed);
-        items.push_back(std::move(item));
-      }
-  }
-  std::map<std::string, std::size_t> seen;
-  for (std::size_t i = 0; i < items.size(); ++i) {
-    if (auto [it, fresh] = seen.emplace(items[i].id, i); !fresh)
-      throw Error(Errc::InvalidOption,
-                  "item id \"" + items[i].id + "\" appears twice (items " + std::to_string(it->second) + " and " +
-                      std::to_string(i) + ")",
-                  {.field = "id", .index = i});
-  }
-  if (items.empty()) throw Error(Errc::InvalidOption, "the campaign has no items", {.field = "items"});
-  return items;
-}
-
 // A child process running one item, its output going to two temporary files.
 struct Running {
   std::size_t item = 0;
@@ -161,13 +68,9 @@ struct Running {
 
 std::string self_exe() { return fs::read_symlink("/proc/self/exe").string(); }
 
-Running start_item(const std::vector<Item>& items, std::size_t index, const fs::path& scratch) {
-  const Item& item = items[index];
-  Json study = parse_json_file(item.study, "study");
-  if (!study.is_object() || !study.contains("study") || !study["study"].is_string())
-    throw Error(Errc::ParseError, item.study.string() + ": not a study file (no \"study\" kind)", {.field = "study"});
-  if (item.seed) study["seed"] = *item.seed;
-  if (!item.set.is_null()) study.merge_patch(item.set);
+Running start_item(const std::vector<io::CampaignItem>& items, std::size_t index, const fs::path& scratch) {
+  const io::CampaignItem& item = items[index];
+  const Json study = io::campaign_item_study(item);
   const std::string tag = std::to_string(::getpid()) + "-" + std::to_string(index);
   Running r;
   r.item = index;
@@ -176,7 +79,7 @@ Running start_item(const std::vector<Item>& items, std::size_t index, const fs::
   r.err = scratch / (tag + ".err");
   io::write_file_atomically(r.study_copy, study.dump());
   const std::string exe = self_exe();
-  const std::string kind = study["study"].get_ref<const std::string&>();
+  const std::string kind = study.at("study").get_ref<const std::string&>();
   r.start = std::chrono::steady_clock::now();
   r.pid = ::fork();
   if (r.pid < 0) throw Error(Errc::IoError, "fork failed for item " + item.id, {.field = "jobs"});
@@ -195,8 +98,8 @@ Running start_item(const std::vector<Item>& items, std::size_t index, const fs::
 }
 
 // The result record of a finished child.
-Json finish_item(const std::vector<Item>& items, const Running& r, int status, int rank) {
-  const Item& item = items[r.item];
+Json finish_item(const std::vector<io::CampaignItem>& items, const Running& r, int status, int rank) {
+  const io::CampaignItem& item = items[r.item];
   std::error_code ec;
   fs::remove(r.study_copy, ec);
   const auto slurp = [](const fs::path& p) {
@@ -208,40 +111,17 @@ Json finish_item(const std::vector<Item>& items, const Running& r, int status, i
   const std::string out = slurp(r.out), err = slurp(r.err);
   fs::remove(r.out, ec);
   fs::remove(r.err, ec);
-  Json j = Json::object();
-  j["id"] = item.id;
-  j["study"] = item.study.string();
-  j["seed"] = item.seed ? Json(*item.seed) : Json(nullptr);
-  j["rank"] = rank;
-  j["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - r.start).count();
   const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
-  j["exit"] = code;
-  j["status"] = code == 0 ? "ok" : "failed";
-  const auto parsed = [](const std::string& text) {
-    try {
-      return Json::parse(text);
-    } catch (const Json::parse_error&) {
-      return Json(text);
-    }
-  };
-  if (code == 0)
-    j["result"] = parsed(out);
-  else
-    j["error"] = err.empty() ? Json("terminated by signal " + std::to_string(code - 128)) : parsed(err);
-  return j;
+  return io::campaign_item_record(
+      item, rank, std::chrono::duration<double>(std::chrono::steady_clock::now() - r.start).count(), code, out, err);
 }
 
 // The campaign's bookkeeping on the process that writes the results.
 class Results {
  public:
-  Results(fs::path path, const std::vector<Item>& items, std::string campaign)
+  Results(fs::path path, const std::vector<io::CampaignItem>& items, std::string campaign)
       : path_(std::move(path)), items_(items), campaign_(std::move(campaign)) {
-    if (fs::exists(path_)) {
-      const Json old = parse_json_file(path_, "results");
-      if (old.contains("items") && old["items"].is_object())
-        for (const auto& [id, value] : old["items"].items())
-          if (string_member(value, "status", "") == "ok") done_[id] = value;  // failed items run again
-    }
+    done_ = io::read_campaign_results(path_);
   }
   [[nodiscard]] bool done(const std::string& id) const { return done_.contains(id); }
   [[nodiscard]] std::size_t skipped() const { return skipped_; }
@@ -259,16 +139,7 @@ class Results {
               << '\n';
     write();
   }
-  void write() const {
-    Json items = Json::object();
-    for (const Item& i : items_)
-      if (auto it = done_.find(i.id); it != done_.end()) items[i.id] = it->second;
-    io::write_file_atomically(
-        path_,
-        Json{{"format", "hula-campaign-results"}, {"version", 1}, {"campaign", campaign_}, {"items", std::move(items)}}
-                .dump(1) +
-            "\n");
-  }
+  void write() const { io::write_file_atomically(path_, io::campaign_results_text(campaign_, items_, done_)); }
   [[nodiscard]] Json summary(double seconds, int ranks) const {
     std::size_t ok = 0;
     for (const auto& [id, j] : done_) ok += j["status"] == "ok" ? 1 : 0;
@@ -285,23 +156,11 @@ class Results {
 
  private:
   fs::path path_;
-  const std::vector<Item>& items_;
+  const std::vector<io::CampaignItem>& items_;
   std::string campaign_;
   std::map<std::string, Json> done_;
   std::size_t finished_ = 0, failed_ = 0, skipped_ = 0;
 };
-
-// The record of an item that could not start (unreadable or malformed study file).
-Json failed_record(const Item& item, const Error& e, int rank) {
-  return Json{{"id", item.id},
-              {"study", item.study.string()},
-              {"seed", item.seed ? Json(*item.seed) : Json(nullptr)},
-              {"rank", rank},
-              {"seconds", 0.0},
-              {"exit", kExitInvalidInput},
-              {"status", "failed"},
-              {"error", Json{{"code", errc_name(e.code())}, {"message", e.message()}}}};
-}
 
 // Waits a little for any of `running` to end; returns its index in `running` and status, if one did.
 std::optional<std::pair<std::size_t, int>> reap(const std::vector<Running>& running) {
@@ -325,7 +184,7 @@ void send_text(const std::string& text, int to, int tag) {
 
 int run_batch(const BatchArgs& a) {
   const fs::path campaign = a.campaign;
-  const std::vector<Item> items = read_campaign(campaign);
+  const std::vector<io::CampaignItem> items = io::read_campaign_file(campaign);
   const fs::path results_path =
       a.results ? fs::path(*a.results) : fs::path(campaign).replace_extension(".results.json");
   if (a.jobs == 0) throw Error(Errc::InvalidOption, "jobs = 0 must be >= 1", {.field = "jobs"});
@@ -355,7 +214,7 @@ int run_batch(const BatchArgs& a) {
         ::waitpid(r.pid, &status, 0);
         record = finish_item(items, r, status, rank).dump();
       } catch (const Error& e) {
-        record = failed_record(items[static_cast<std::size_t>(index)], e, rank).dump();
+        record = io::campaign_failed_record(items[static_cast<std::size_t>(index)], e, rank, kExitInvalidInput).dump();
       }
     }
     MPI_Finalize();
@@ -383,7 +242,7 @@ int run_batch(const BatchArgs& a) {
       try {
         running.push_back(start_item(items, index, scratch));
       } catch (const Error& e) {
-        results.record(failed_record(items[index], e, rank));
+        results.record(io::campaign_failed_record(items[index], e, rank, kExitInvalidInput));
       }
       busy = true;
     }

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
 // `hula closest CURVE --point x,y,z ...`: the point of the curve nearest to
 // each given point (nurbs::closest_point: global search, Newton foot), as
-// {"results": [{"point", "t", "closest", "distance"}]}.
+// {"results": [{"point", "t", "closest", "distance"}]} (io::closest_answer).
 #include <memory>
 
 #include "commands/common.hpp"
 #include "hula/core/error.hpp"
-#include "hula/nurbs/closest_point.hpp"
+#include "hula/io/curve_queries.hpp"
 
 namespace hula::cli {
 
@@ -19,26 +19,19 @@ struct ClosestArgs {
 
 int run_closest(const ClosestArgs& a) {
   const curve::Curve file = io::read_curve_file(a.curve);
-  const int dim = file.nurbs().dimension();
-  Json results = Json::array();
+  std::vector<Vec3> points;
+  std::vector<int> dimensions;
   for (std::size_t i = 0; i < a.points.size(); ++i) {
     const std::vector<double> p = parse_number_list(a.points[i], "point");
     if (p.size() != 2 && p.size() != 3)
       throw Error(Errc::InvalidArgument, "--point " + a.points[i] + ": needs 2 or 3 numbers",
                   ErrorWhere{.field = "point", .index = i});
-    const Vec3 q{p[0], p[1], p.size() == 3 ? p[2] : 0.0};
-    const nurbs::ClosestPointResult r = nurbs::closest_point(file.nurbs(), q);
-    Json j = Json::object();
-    j["point"] = vec_to_json(q, static_cast<int>(p.size()));
-    j["t"] = r.t;
-    j["closest"] = vec_to_json(r.point, dim);
-    j["distance"] = r.distance;
-    results.push_back(std::move(j));
+    points.push_back({p[0], p[1], p.size() == 3 ? p[2] : 0.0});
+    dimensions.push_back(static_cast<int>(p.size()));
   }
   Json doc = Json::object();
   doc["curve"] = a.curve;
-  if (file.law() != nullptr) doc["law_stand_in_deviation"] = file.approximation_deviation();
-  doc["results"] = std::move(results);
+  doc.update(io::closest_answer(file, points, dimensions));
   print_json(doc);
   return kExitOk;
 }

@@ -5,9 +5,8 @@
 // {"kind": "g1" | "g2", "segments": [...], "length", "iterations"} (io::clothoid_spline_to_json),
 // and with --at the points, angles and curvatures at given arc lengths along the whole result.
 // -o writes the result as a curve file by its curvature law (a natural curve, evaluated exactly:
-// intrinsic::clothoid_natural_data), or with --to-nurbs TOL as its NURBS within TOL.
-#include "hula/intrinsic/clothoid.hpp"
-
+// intrinsic::clothoid_natural_data), or with --to-nurbs TOL as its NURBS within TOL. The answer is
+// io::clothoid_answer.
 #include <limits>
 #include <memory>
 #include <optional>
@@ -16,9 +15,8 @@
 
 #include "commands/common.hpp"
 #include "hula/core/error.hpp"
-#include "hula/intrinsic/natural_curve.hpp"
 #include "hula/io/atomic_file.hpp"
-#include "hula/io/clothoid_json.hpp"
+#include "hula/io/exact_curves.hpp"
 
 namespace hula::cli {
 
@@ -40,55 +38,19 @@ Vec3 parse_xy(const std::string& text, const char* field) {
   return {v[0], v[1], 0.0};
 }
 
-// The point, tangent angle and curvature at arc length s along consecutive segments; `index` is the
-// position of s in --at, for the error.
-Json sample(const std::vector<intrinsic::ClothoidSegment>& segments, double s, std::size_t index) {
-  double total = 0.0;
-  for (const auto& c : segments) total += c.length;
-  if (!(s >= 0.0 && s <= total))
-    throw Error(Errc::OutOfDomain, "--at " + format_number(s) + " is outside [0, " + format_number(total) + "]",
-                ErrorWhere{.field = "at", .index = index});
-  double local = s;
-  std::size_t j = 0;
-  while (j + 1 < segments.size() && local > segments[j].length) local -= segments[j++].length;
-  const intrinsic::ClothoidSegment& c = segments[j];
-  Json p = Json::object();
-  p["s"] = s;
-  p["point"] = vec_to_json(c.point(local), 2);
-  p["theta"] = c.angle(local);
-  p["kappa"] = c.curvature(local);
-  return p;
-}
-
 int run_clothoid(const ClothoidArgs& a) {
-  const Vec3 p0 = parse_xy(a.start_point, "start-point"), p1 = parse_xy(a.end_point, "end-point");
-  std::vector<intrinsic::ClothoidSegment> segments;
-  Json doc = Json::object();
-  if (a.start_curvature) {
-    const intrinsic::ClothoidG2Result r =
-        intrinsic::fit_clothoid_g2(p0, *a.start_angle, *a.start_curvature, p1, *a.end_angle, *a.end_curvature);
-    segments.assign(r.segments.begin(), r.segments.end());
-    doc["kind"] = "g2";
-    doc.update(io::clothoid_spline_to_json(segments));
-    doc["iterations"] = r.iterations;
-  } else {
-    const intrinsic::ClothoidG1Result r = intrinsic::fit_clothoid_g1(p0, *a.start_angle, p1, *a.end_angle);
-    segments.push_back(r.segment);
-    doc["kind"] = "g1";
-    doc.update(io::clothoid_spline_to_json(segments));
-    doc["iterations"] = r.iterations;
-  }
-  if (!a.at.empty()) {
-    const std::vector<double> at = parse_number_list(a.at, "at");
-    Json points = Json::array();
-    for (std::size_t i = 0; i < at.size(); ++i) points.push_back(sample(segments, at[i], i));
-    doc["points"] = std::move(points);
-  }
+  io::ClothoidRequest q;
+  q.start_point = parse_xy(a.start_point, "start-point");
+  q.end_point = parse_xy(a.end_point, "end-point");
+  q.start_angle = *a.start_angle;
+  q.end_angle = *a.end_angle;
+  q.start_curvature = a.start_curvature;
+  q.end_curvature = a.end_curvature;
+  if (!a.at.empty()) q.at = parse_number_list(a.at, "at");
+  io::ClothoidAnswer answer = io::clothoid_answer(q);
+  Json doc = std::move(answer.json);
   if (!a.output.empty())
-    doc["output"] = write_exact_curve(a.output,
-                                      intrinsic::natural_curve(intrinsic::clothoid_natural_data(segments, a.tolerance),
-                                                               curve::kApproximationTolerance),
-                                      a.to_nurbs);
+    doc["output"] = io::write_exact_curve(a.output, io::clothoid_curve(answer.segments, a.tolerance), a.to_nurbs);
   print_result(doc, a.output);
   return kExitOk;
 }

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Shared pieces of the `hula` commands: the exit-code table, JSON output,
 // parsing of command-line lists and end conditions (with hula::Error naming
-// the option), and the description of a curve that `info` and `demo` print
-// (its planarity is diffgeom::planarity's, written by io).
+// the option; the lists and end conditions are io's readers). The commands
+// translate arguments into io/oli requests and print the answers.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -15,10 +15,7 @@
 
 #include "hula/core/vec.hpp"
 #include "hula/io/json_curve.hpp"
-#include "hula/law/expr.hpp"
-#include "hula/law/singularities.hpp"
-#include "hula/nurbs/interpolate.hpp"
-#include "hula/nurbs/nurbs_curve.hpp"
+#include "hula/io/option_text.hpp"
 
 namespace hula::cli {
 
@@ -97,33 +94,9 @@ CLI::Option* add_real_option(CLI::App* sub, const std::string& flags, std::optio
 /// (write its NURBS within TOL instead of its laws) and --tolerance T (the integration's position tolerance,
 /// default curve::kNaturalTolerance).
 void add_exact_output_options(CLI::App* sub, std::string& output, std::optional<double>& to_nurbs, double& tolerance);
-/// Writes `curve` to `path` (atomically): by its construction data, or with `to_nurbs` as its NURBS within that
-/// tolerance (intrinsic::to_nurbs). Returns the summary {"path", "kind" ("natural", "law" or "nurbs"),
-/// "max_deviation"? (with --to-nurbs), "tolerance"?}.
-/// @throws as intrinsic::to_nurbs and io::write_curve_file
-[[nodiscard]] Json write_exact_curve(const std::string& path, const curve::Curve& curve,
-                                     const std::optional<double>& to_nurbs);
-
-/// [x, y, z], or [x, y] when dimension is 2.
-[[nodiscard]] Json vec_to_json(const Vec3& v, int dimension);
-
-/// Parses a comma-separated list of numbers ("0,0.5,1").
-/// @param text the option's value
-/// @param field name used in messages and ErrorWhere.field (e.g. "t", "knots")
-/// @throws hula::Error(Errc::ParseError) naming `field[i]` and the text of the bad entry
-/// @throws hula::Error(Errc::NonFiniteInput) for nan/inf or a value outside the range of a double
-[[nodiscard]] std::vector<double> parse_number_list(std::string_view text, std::string_view field);
-
-/// Parses an END option: natural | bessel | not-a-knot | occt | clamped:x,y[,z].
-/// @throws hula::Error(Errc::ParseError) naming `field` ("start" or "end") and the value
-[[nodiscard]] nurbs::EndCondition parse_end_condition(std::string_view text, std::string_view field);
-
-/// The standard analysis of a curve printed by info and demo: degree, knots,
-/// control points, weights, domain, rational, dimension, length (arc_length,
-/// relative tolerance 1e-12), end derivatives C'(t0), C'(t1) and unit end
-/// tangents (null where |C'| vanishes), planarity.
-/// @throws hula::Error(Errc::NumericalFailure) if the arc length does not converge
-[[nodiscard]] Json analyse(const nurbs::NurbsCurve& curve);
+/// Comma-separated numbers and end conditions as io reads them (io/option_text.hpp).
+using io::parse_end_condition;
+using io::parse_number_list;
 
 /// A registered subcommand and the function that runs it after parsing
 /// (returns the exit code; hula::Error propagates to main).

@@ -5,13 +5,12 @@
 // and per-axis figures. `hula continuity A B`: the continuity of the join of
 // A's end with B's start (diffgeom::join_continuity: C0–C3, G0–G3, tangent
 // angle, curvature on each side, the derivative table of thesis Table 3).
-#include <cmath>
+// The answers are io::deviation_answer and io::join_continuity_answer.
 #include <memory>
 
 #include "commands/common.hpp"
 #include "hula/core/error.hpp"
-#include "hula/diffgeom/continuity.hpp"
-#include "hula/nurbs/deviation.hpp"
+#include "hula/io/curve_queries.hpp"
 
 namespace hula::cli {
 
@@ -23,8 +22,6 @@ struct TwoCurves {
   std::size_t samples = 1001;
   std::string mode = "parameter";
 };
-
-Json axes(const Vec3& v) { return Json::array({v.x, v.y, v.z}); }
 
 int run_deviation(const TwoCurves& args) {
   const curve::Curve a = io::read_curve_file(args.a);
@@ -38,46 +35,21 @@ int run_deviation(const TwoCurves& args) {
   else
     throw Error(Errc::InvalidArgument, "--mode " + args.mode + ": expected parameter or closest",
                 ErrorWhere{.field = "mode"});
-  const nurbs::DeviationResult r = nurbs::deviation(a.nurbs(), b.nurbs(), o);
   Json doc = Json::object();
   doc["a"] = args.a;
   doc["b"] = args.b;
-  doc["mode"] = args.mode;
-  doc["samples"] = r.samples;
-  doc["max"] = r.max;
-  doc["max_at"] = r.at;
-  doc["mean"] = r.mean;
-  doc["rms"] = r.rms;
-  doc["mean_axis"] = axes(r.mean_axis);
-  doc["max_axis"] = axes(r.max_axis);
+  doc.update(io::deviation_answer(a, b, o, args.mode));
   print_json(doc);
   return kExitOk;
 }
 
-Json number_or_null(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
-
-Json order_name(char prefix, int k) { return k < 0 ? Json(nullptr) : Json(std::string(1, prefix) + std::to_string(k)); }
-
 int run_continuity(const TwoCurves& args) {
   const curve::Curve a = io::read_curve_file(args.a);
   const curve::Curve b = io::read_curve_file(args.b);
-  const diffgeom::Continuity c = diffgeom::join_continuity(a.nurbs(), b.nurbs());
-  const int dim = std::max(a.nurbs().dimension(), b.nurbs().dimension());
-  Json left = Json::array(), right = Json::array();
-  for (std::size_t k = 0; k < 4; ++k) {
-    left.push_back(vec_to_json(c.left[k], dim));
-    right.push_back(vec_to_json(c.right[k], dim));
-  }
   Json doc = Json::object();
   doc["a"] = args.a;
   doc["b"] = args.b;
-  doc["parametric"] = order_name('C', c.parametric);
-  doc["geometric"] = order_name('G', c.geometric);
-  doc["tangent_angle"] = number_or_null(c.tangent_angle);
-  doc["curvature_left"] = number_or_null(c.curvature_left);
-  doc["curvature_right"] = number_or_null(c.curvature_right);
-  doc["left"] = std::move(left);
-  doc["right"] = std::move(right);
+  doc.update(io::join_continuity_answer(a, b));
   print_json(doc);
   return kExitOk;
 }

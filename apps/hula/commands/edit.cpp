@@ -5,17 +5,13 @@
 // tolerance), elevate (degree elevation), split (knot insertion to
 // multiplicity p), reverse and reparam (affine map of the knots), and to-nurbs (a law or natural curve
 // converted to a NURBS within a tolerance, intrinsic::to_nurbs). Each writes curve files and prints a JSON
-// summary of the result.
+// summary of the result. The edits are io::edit_curve's.
 #include <memory>
 
 #include "commands/common.hpp"
 #include "hula/core/error.hpp"
-#include "hula/intrinsic/natural_curve.hpp"
 #include "hula/io/atomic_file.hpp"
-#include "hula/nurbs/elevate.hpp"
-#include "hula/nurbs/knot_removal.hpp"
-#include "hula/nurbs/refine.hpp"
-#include "hula/nurbs/reparam.hpp"
+#include "hula/io/curve_edits.hpp"
 
 namespace hula::cli {
 
@@ -32,35 +28,23 @@ struct EditArgs {
   std::string domain;      // reparam
 };
 
-// The curve of a file; edits need the NURBS itself, not the stand-in of a law or natural curve.
-nurbs::NurbsCurve read_nurbs(const std::string& path) {
-  curve::Curve file = io::read_curve_file(path);
-  if (file.has_exact_evaluation())
-    throw Error(Errc::InvalidArgument,
-                path + " is a " + std::string(file.kind_name()) + " curve: edit its NURBS form (hula edit to-nurbs " +
-                    path + " --tolerance T -o FILE) instead",
-                ErrorWhere{.field = "curve"});
-  return file.nurbs();
-}
-
-Json summary(const std::string& path, const nurbs::NurbsCurve& c) {
-  Json j = Json::object();
-  j["output"] = path;
-  j["degree"] = c.degree();
-  j["control_points"] = c.control_points().size();
-  Json knots = Json::array();
-  for (double u : c.knots().values()) knots.push_back(u);
-  j["knots"] = std::move(knots);
-  j["domain"] = Json::array({c.domain().start, c.domain().end});
-  return j;
-}
-
-int write_one(const EditArgs& a, const char* operation, const nurbs::NurbsCurve& result) {
-  io::write_curve_file(a.output, result);
+// Runs the edit on the curve file and writes its curve(s): -o, and --second for split.
+int run_edit(const EditArgs& a, io::CurveEditRequest request, const char* operation) {
+  const curve::Curve file = io::read_curve_file(a.curve);
+  const io::CurveEditAnswer answer = io::edit_curve(file, a.curve, request);
+  io::write_curve_file(a.output, answer.curves.front());
+  if (request.edit == io::CurveEdit::Split) io::write_curve_file(a.second, answer.curves.back());
   Json doc = Json::object();
   doc["operation"] = operation;
-  doc["curve"] = summary(a.output, result);
-  print_result(doc, a.output);
+  doc.update(answer.report);
+  if (request.edit == io::CurveEdit::Split) {
+    doc["curves"] = Json::array({io::edited_curve_summary(a.output, answer.curves.front()),
+                                 io::edited_curve_summary(a.second, answer.curves.back())});
+    print_result(doc, io::is_std_stream(a.second) ? a.second : a.output);
+  } else {
+    doc["curve"] = io::edited_curve_summary(a.output, answer.curves.front());
+    print_result(doc, a.output);
+  }
   return kExitOk;
 }
 
@@ -75,68 +59,41 @@ void check_outputs(const EditArgs& a, bool split) {
 }
 
 int run_insert_knot(const EditArgs& a) {
-  return write_one(a, "insert-knot", nurbs::insert_knot(read_nurbs(a.curve), a.at, a.times));
+  return run_edit(a, {.edit = io::CurveEdit::InsertKnot, .at = a.at, .times = a.times}, "insert-knot");
 }
 
 int run_refine(const EditArgs& a) {
-  const std::vector<double> x = parse_number_list(a.knots, "knots");
-  return write_one(a, "refine", nurbs::refine_knots(read_nurbs(a.curve), x));
+  return run_edit(a, {.edit = io::CurveEdit::Refine, .knots = parse_number_list(a.knots, "knots")}, "refine");
 }
 
 // remove-knots: one knot (--at, up to --times) or every knot the tolerance allows.
 int run_remove_knots(const EditArgs& a, bool one_knot) {
-  const nurbs::NurbsCurve curve = read_nurbs(a.curve);
-  const nurbs::KnotRemovalResult r =
-      one_knot ? nurbs::remove_knot(curve, a.at, a.times, a.tolerance) : nurbs::remove_knots(curve, a.tolerance);
-  io::write_curve_file(a.output, r.curve);
-  Json doc = Json::object();
-  doc["operation"] = "remove-knots";
-  doc["removed"] = r.removed;
-  doc["error_bound"] = r.error_bound;
-  doc["tolerance"] = a.tolerance;
-  doc["curve"] = summary(a.output, r.curve);
-  print_result(doc, a.output);
-  return kExitOk;
+  return run_edit(a,
+                  {.edit = one_knot ? io::CurveEdit::RemoveKnot : io::CurveEdit::RemoveKnots,
+                   .at = a.at,
+                   .times = a.times,
+                   .tolerance = a.tolerance},
+                  "remove-knots");
 }
 
 int run_elevate(const EditArgs& a) {
-  return write_one(a, "elevate", nurbs::elevate_degree(read_nurbs(a.curve), a.times));
+  return run_edit(a, {.edit = io::CurveEdit::Elevate, .times = a.times}, "elevate");
 }
 
-int run_reverse(const EditArgs& a) { return write_one(a, "reverse", nurbs::reverse(read_nurbs(a.curve))); }
+int run_reverse(const EditArgs& a) { return run_edit(a, {.edit = io::CurveEdit::Reverse}, "reverse"); }
 
 int run_reparam(const EditArgs& a) {
   const std::vector<double> d = parse_number_list(a.domain, "domain");
   if (d.size() != 2)
     throw Error(Errc::InvalidArgument, "--domain " + a.domain + ": needs two numbers a,b",
                 ErrorWhere{.field = "domain"});
-  return write_one(a, "reparam", nurbs::reparameterise(read_nurbs(a.curve), nurbs::Interval{d[0], d[1]}));
+  return run_edit(a, {.edit = io::CurveEdit::Reparam, .domain = {d[0], d[1]}}, "reparam");
 }
 
-int run_split(const EditArgs& a) {
-  const nurbs::SplitResult s = nurbs::split(read_nurbs(a.curve), a.at);
-  io::write_curve_file(a.output, s.before);
-  io::write_curve_file(a.second, s.after);
-  Json doc = Json::object();
-  doc["operation"] = "split";
-  doc["at"] = a.at;
-  doc["curves"] = Json::array({summary(a.output, s.before), summary(a.second, s.after)});
-  print_result(doc, io::is_std_stream(a.second) ? a.second : a.output);
-  return kExitOk;
-}
+int run_split(const EditArgs& a) { return run_edit(a, {.edit = io::CurveEdit::Split, .at = a.at}, "split"); }
 
 int run_to_nurbs(const EditArgs& a) {
-  const curve::Curve file = io::read_curve_file(a.curve);
-  const intrinsic::CurveToNurbsResult r = intrinsic::to_nurbs(file, a.tolerance);
-  io::write_curve_file(a.output, r.curve);
-  Json doc = Json::object();
-  doc["operation"] = "to-nurbs";
-  doc["from"] = std::string(file.kind_name());
-  doc["tolerance"] = a.tolerance;
-  doc["max_deviation"] = r.max_deviation;
-  doc["curve"] = summary(a.output, r.curve);
-  print_result(doc, a.output);
-  return kExitOk;
+  return run_edit(a, {.edit = io::CurveEdit::ToNurbs, .tolerance = a.tolerance}, "to-nurbs");
 }
 
 CLI::App* operation(CLI::App* edit, const char* name, const char* help, EditArgs& a, const char* output_help) {

@@ -4,31 +4,21 @@
 // quadrature error estimate and whether it met its tolerance. Not an error when
 // it did not: the library's test is relative to the integral, so an energy that
 // is zero up to rounding (∫(dκ/ds)² ds of a circle, 1e-31 ± 1e-26) reports
-// "converged": false although its value is right to 1e-26.
-#include "hula/diffgeom/energy.hpp"
-
+// "converged": false although its value is right to 1e-26. The answer is io::energy_answer.
 #include <memory>
 
 #include "commands/common.hpp"
+#include "hula/io/curve_queries.hpp"
 
 namespace hula::cli {
 
 namespace {
 
-Json energy_json(const diffgeom::EnergyResult& r) {
-  Json j = Json::object();
-  j["value"] = r.value;
-  j["error_estimate"] = r.error_estimate;
-  j["converged"] = r.converged;
-  return j;
-}
-
 int run_energy(const std::string& path) {
   const curve::Curve file = io::read_curve_file(path);
   Json doc = Json::object();
   doc["curve"] = path;
-  doc["bending"] = energy_json(diffgeom::bending_energy(file.nurbs()));
-  doc["curvature_variation"] = energy_json(diffgeom::curvature_variation_energy(file.nurbs()));
+  doc.update(io::energy_answer(file));
   print_json(doc);
   return kExitOk;
 }

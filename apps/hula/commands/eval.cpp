@@ -116,7 +116,7 @@ int run_eval(const EvalArgs& a) {
   Json results = Json::array();
   for (std::size_t i = 0; i < ts.size(); ++i) {
     Json ders = Json::array();
-    for (std::size_t k = 0; k < per_t; ++k) ders.push_back(vec_to_json(out[i * per_t + k], dim));
+    for (std::size_t k = 0; k < per_t; ++k) ders.push_back(io::point_to_json(out[i * per_t + k], dim));
     Json r = Json::object();
     r["t"] = ts[i];
     r["derivatives"] = std::move(ders);

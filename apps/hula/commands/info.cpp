@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: MIT
 // `hula info`: the analysis of a curve file (kind, degree, knots, control
 // points, weights, domain, rational, dimension, arc length, end derivatives,
-// planarity) and, for the interpolated kind, the stored inputs.
+// planarity: io::curve_description_json) and, for the interpolated kind, the stored inputs.
 #include <memory>
 
 #include "commands/common.hpp"
+#include "hula/io/curve_queries.hpp"
 
 namespace hula::cli {
 
@@ -14,7 +15,7 @@ int run_info(const std::string& path) {
   Json doc = Json::object();
   doc["file"] = path;
   doc["kind"] = std::string(c.kind_name());
-  const Json analysis = analyse(c.nurbs());
+  const Json analysis = io::curve_description_json(c.nurbs());
   for (const auto& [key, value] : analysis.items()) doc[key] = value;
   // The construction data (without the file's format tag) of the kinds that are more than a NURBS.
   Json data = io::curve_to_json(c);

@@ -4,13 +4,12 @@
 // curve file atomically — the resolved "nurbs" kind, or with --keep-inputs the
 // "interpolated" kind that stores the inputs; --lagrange: the polynomial of
 // degree N − 1 through the points (thesis 5.3.1; nurbs::interpolate_lagrange)
-// as a NURBS. Prints a JSON summary.
-#include "hula/nurbs/interpolate.hpp"
-
+// as a NURBS (io::lagrange_curve). Prints a JSON summary.
 #include <memory>
 
 #include "commands/common.hpp"
 #include "hula/io/atomic_file.hpp"
+#include "hula/io/curve_edits.hpp"
 #include "hula/io/points_file.hpp"
 
 namespace hula::cli {
@@ -30,22 +29,17 @@ struct InterpolateArgs {
 // --lagrange: the Bézier curve of degree N − 1 through the points at the given (--knots) or
 // --parameterisation parameters. The summary has no end conditions (a polynomial has none).
 int run_lagrange(const InterpolateArgs& a, const io::PointSet& set) {
-  const std::vector<double> parameters =
-      a.knots.empty()
-          ? nurbs::parameterise(set.points, io::parameterisation_from_name(a.parameterisation, "parameterisation"))
-          : parse_number_list(a.knots, "knots");
-  const nurbs::NurbsCurve curve = nurbs::interpolate_lagrange(set.points, parameters, set.dimension);
+  const std::vector<double> parameters = a.knots.empty() ? std::vector<double>{} : parse_number_list(a.knots, "knots");
+  const auto rule = a.knots.empty() ? io::parameterisation_from_name(a.parameterisation, "parameterisation")
+                                    : nurbs::Parameterisation::ChordLength;  // unused: the knots are given
+  const auto curve = io::lagrange_curve(set, parameters, rule);
   io::write_curve_file(a.output, curve);
-  const nurbs::Interval dom = curve.domain();
   Json summary = Json::object();
   summary["output"] = a.output;
   summary["kind"] = "nurbs";
   summary["method"] = "lagrange";
   summary["points"] = set.points.size();
-  summary["dimension"] = curve.dimension();
-  summary["degree"] = curve.degree();
-  summary["control_points"] = curve.control_points().size();
-  summary["domain"] = Json::array({dom.start, dom.end});
+  summary.update(io::curve_shape_summary(curve));
   summary["parameterisation"] = a.knots.empty() ? a.parameterisation : std::string("given");
   print_result(summary, a.output);
   return kExitOk;
@@ -63,21 +57,16 @@ int run_interpolate(const InterpolateArgs& a) {
   in.start = parse_end_condition(a.start, "start");
   in.end = parse_end_condition(a.end, "end");
   const curve::Curve resolved = io::interpolated_curve(in, "knots");
-  const nurbs::NurbsCurve& curve = resolved.nurbs();
   if (a.keep_inputs)
     io::write_curve_file(a.output, resolved);
   else
-    io::write_curve_file(a.output, curve);
+    io::write_curve_file(a.output, resolved.nurbs());
 
-  const nurbs::Interval dom = curve.domain();
   Json summary = Json::object();
   summary["output"] = a.output;
   summary["kind"] = a.keep_inputs ? "interpolated" : "nurbs";
   summary["points"] = in.points.size();
-  summary["dimension"] = curve.dimension();
-  summary["degree"] = curve.degree();
-  summary["control_points"] = curve.control_points().size();
-  summary["domain"] = Json::array({dom.start, dom.end});
+  summary.update(io::curve_shape_summary(resolved.nurbs()));
   summary["parameterisation"] =
       in.parameters.empty() ? std::string(io::parameterisation_name(in.parameterisation)) : std::string("given");
   summary["start"] = io::end_condition_to_json(in.start, in.dimension);

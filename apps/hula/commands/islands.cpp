@@ -6,8 +6,6 @@
 #include <utility>
 #include <variant>
 
-#include "hula/io/run_report_json.hpp"
-
 #if defined(HULA_WITH_MPI)
 #include "hula/optim/islands_mpi.hpp"
 #endif
@@ -47,36 +45,6 @@ std::optional<IslandRun> run_islands_or_solve(const optim::Problem& problem, con
   }
 #endif
   return IslandRun{optim::solve(problem, options), "threads"};
-}
-
-Json islands_json(const optim::IslandOptions& o, const optim::SolveResult& result, const optim::Problem& problem,
-                  const std::string& transport) {
-  Json per = Json::array();
-  for (const optim::IslandReport& i : result.islands) {
-    Json migrations = Json::array();
-    for (const optim::MigrationEvent& e : i.migrations)
-      migrations.push_back(
-          Json{{"generation", e.generation}, {"from", e.from}, {"received", e.received}, {"accepted", e.accepted}});
-    Json j = Json::object();
-    j["island"] = i.island;
-    j["seed"] = i.seed;
-    if (problem.objectives == 1) j["best"] = Json{{"variables", i.best.variables}, {"objectives", i.best.objectives}};
-    j.update(io::run_report_to_json(i.report));
-    j["sent"] = i.sent;
-    j["received"] = i.received;
-    j["accepted"] = i.accepted;
-    if (problem.objectives > 1) j["archive"] = i.archive.size();
-    j["migrations"] = std::move(migrations);
-    per.push_back(std::move(j));
-  }
-  return Json{{"count", o.islands},
-              {"interval", o.interval},
-              {"migrants", o.migrants},
-              {"topology", std::string(optim::topology_name(o.topology))},
-              {"topology_seed", o.topology_seed},
-              {"mode", o.asynchronous ? "asynchronous" : "synchronous"},
-              {"transport", transport},
-              {"per_island", std::move(per)}};
 }
 
 }  // namespace hula::cli

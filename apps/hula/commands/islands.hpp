@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // `hula optimise --islands K`: the island model (hula/optim/islands.hpp) for
 // the Flexo algorithms of `hula optimise`, on K threads of this process. The
-// options and the JSON of the per-island statistics and migration log live
-// here so that optimise.cpp only forwards to them.
+// options live here so that optimise.cpp only forwards to them; the JSON of
+// the per-island statistics and migration log is io::islands_to_json.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -13,8 +13,7 @@
 #include <vector>
 
 #include "commands/common.hpp"
-#include "hula/optim/islands.hpp"
-#include "hula/optim/solve.hpp"
+#include "hula/io/optimise_request.hpp"
 
 namespace hula::cli {
 
@@ -47,10 +46,5 @@ struct IslandRun {
 /// @throws as optim::solve and optim::solve_islands_mpi
 [[nodiscard]] std::optional<IslandRun> run_islands_or_solve(const optim::Problem& problem,
                                                             const optim::SolveOptions& options);
-
-/// {"count", "interval", "migrants", "topology", "topology_seed", "mode", "transport", "per_island": [...]}
-/// with each island's champion (one objective), run report and migration log.
-[[nodiscard]] Json islands_json(const optim::IslandOptions& options, const optim::SolveResult& result,
-                                const optim::Problem& problem, const std::string& transport);
 
 }  // namespace hula::cli

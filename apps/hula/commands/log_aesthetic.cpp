@@ -5,21 +5,17 @@
 // curvature and dκ/ds as the analysis computes them (diffgeom::frenet of the curve value), and written
 // by its law with -o (or as a NURBS with --to-nurbs TOL). JSON out:
 // {"alpha", "rho0", "lambda", "length", "max_length", "curvature" (the law), "points": [{"s", "point",
-// "tangent", "kappa", "kappa_prime"}], "output"?}.
-#include "hula/intrinsic/log_aesthetic.hpp"
-
-#include <cmath>
+// "tangent", "kappa", "kappa_prime"}], "output"?} (io::log_aesthetic_answer).
+#include <limits>
 #include <memory>
-#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "commands/common.hpp"
 #include "hula/core/error.hpp"
-#include "hula/diffgeom/frenet.hpp"
-#include "hula/intrinsic/natural_curve.hpp"
 #include "hula/io/atomic_file.hpp"
+#include "hula/io/exact_curves.hpp"
 
 namespace hula::cli {
 
@@ -33,47 +29,21 @@ struct LogAestheticArgs {
 
 int run_log_aesthetic(const LogAestheticArgs& a) {
   if (!a.output.empty()) io::check_output_path(a.output, "--output");
-  const intrinsic::LogAestheticCurve la{*a.alpha, *a.rho0, *a.lambda, *a.length};
-  intrinsic::StartFrame start;
+  io::LogAestheticRequest q{.alpha = *a.alpha, .rho0 = *a.rho0, .lambda = *a.lambda, .length = *a.length};
   if (!a.start_point.empty()) {
     const std::vector<double> p = parse_number_list(a.start_point, "start-point");
     if (p.size() != 2)
       throw Error(Errc::InvalidArgument,
                   "--start-point needs 2 numbers x,y (a planar point), got " + std::to_string(p.size()),
                   ErrorWhere{.field = "start-point"});
-    start.point = {p[0], p[1], 0.0};
+    q.start_point = {p[0], p[1], 0.0};
   }
-  const double theta = a.start_angle.value_or(0.0);
-  start.tangent = {std::cos(theta), std::sin(theta), 0.0};
-  start.normal = {-std::sin(theta), std::cos(theta), 0.0};
-  const curve::Curve c = intrinsic::natural_curve(la.natural_data(start, a.tolerance), curve::kApproximationTolerance);
-  std::vector<double> ss;
-  if (a.at.empty())
-    ss = {0.0, 0.5 * la.length, la.length};
-  else
-    ss = parse_number_list(a.at, "at");
-  std::vector<diffgeom::FrenetPoint> frames(ss.size());
-  diffgeom::frenet(c, ss, frames);
-  Json doc = Json::object();
-  doc["alpha"] = la.alpha;
-  doc["rho0"] = la.rho0;
-  doc["lambda"] = la.lambda;
-  doc["length"] = la.length;
-  doc["max_length"] = std::isfinite(la.max_length()) ? Json(la.max_length()) : Json(nullptr);
-  doc["curvature"] = std::get<curve::NaturalData>(c.data()).curvature;
-  Json points = Json::array();
-  for (const diffgeom::FrenetPoint& p : frames) {
-    Json j = Json::object();
-    j["s"] = p.t;
-    j["point"] = vec_to_json(p.position, 2);
-    j["tangent"] = vec_to_json(p.tangent, 2);
-    j["kappa"] = p.signed_curvature;
-    // dκ/ds of the signed curvature: |κ|' carries the sign of κ (κ > 0 for every log-aesthetic segment here).
-    j["kappa_prime"] = p.frame_defined ? Json(p.curvature_derivative) : Json(nullptr);
-    points.push_back(std::move(j));
-  }
-  doc["points"] = std::move(points);
-  if (!a.output.empty()) doc["output"] = write_exact_curve(a.output, c, a.to_nurbs);
+  q.start_angle = a.start_angle.value_or(0.0);
+  if (!a.at.empty()) q.at = parse_number_list(a.at, "at");
+  q.tolerance = a.tolerance;
+  io::LogAestheticAnswer answer = io::log_aesthetic_answer(q);
+  Json doc = std::move(answer.json);
+  if (!a.output.empty()) doc["output"] = io::write_exact_curve(a.output, answer.curve, a.to_nurbs);
   print_result(doc, a.output);
   return kExitOk;
 }

@@ -11,6 +11,9 @@
 // with termination "Cancelled". `--time` sets the wall-time stop criterion the
 // same way. The --log file streams as the run goes and replaces its target
 // only when the run is done.
+//
+// The settings are read into the algorithm's options by io::solver_options (the reader a server problem
+// job uses too), the answer written by io::solve_result_to_json.
 #include <signal.h>
 
 #include <algorithm>
@@ -25,6 +28,8 @@
 #include <sstream>
 #include <string>
 #include <string_view>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "commands/common.hpp"
@@ -32,20 +37,15 @@
 #include "commands/study_common.hpp"
 #include "hula/core/error.hpp"
 #include "hula/io/atomic_file.hpp"
+#include "hula/io/optimise_request.hpp"
 #include "hula/io/problem_file.hpp"
 #include "hula/io/run_report_json.hpp"
-#include "hula/optim/pareto.hpp"
-#include "hula/optim/run_log.hpp"
-#include "hula/optim/solve.hpp"
-#include "hula/optim/test_problems.hpp"
 
 namespace hula::cli {
 
 namespace {
 
 using optim::Problem;
-using optim::RunReport;
-using optim::Solution;
 
 struct OptimiseArgs {
   std::string problem;
@@ -70,31 +70,6 @@ struct OptimiseArgs {
   bool progress = false;
   IslandArgs islands;
 };
-
-enum class Algorithm { BinaryGa, RealGa, Nsga2, NelderMead, Pagmo };
-
-struct AlgorithmChoice {
-  Algorithm kind = Algorithm::RealGa;
-  optim::PagmoAlgorithm pagmo = optim::PagmoAlgorithm::Nsga2;
-};
-
-// The algorithm named `name` (optim::solver_from_name, the one reader of algorithm names).
-AlgorithmChoice parse_algorithm(const std::string& name) {
-  const optim::SolverOptions o = optim::solver_from_name(name);
-  if (std::holds_alternative<optim::BinaryGaOptions>(o)) return {Algorithm::BinaryGa};
-  if (std::holds_alternative<optim::RealGaOptions>(o)) return {Algorithm::RealGa};
-  if (std::holds_alternative<optim::Nsga2Options>(o)) return {Algorithm::Nsga2};
-  if (std::holds_alternative<optim::NelderMeadOptions>(o)) return {Algorithm::NelderMead};
-  return {Algorithm::Pagmo, std::get<optim::PagmoOptions>(o).algorithm};
-}
-
-// Refuses an option the chosen algorithm does not take (no silent no-ops).
-void refuse(bool given, const char* field, const std::string& algorithm) {
-  if (given) {
-    throw Error(Errc::InvalidOption, std::string("--") + field + " is not supported by algorithm " + algorithm,
-                {.field = field});
-  }
-}
 
 // Applies --lower/--upper/--precision to every variable.
 void apply_bounds(Problem& problem, const OptimiseArgs& a) {
@@ -124,168 +99,50 @@ void apply_bounds(Problem& problem, const OptimiseArgs& a) {
   }
 }
 
-std::vector<double> parse_boost(const std::string& text) {
+std::pair<double, double> parse_boost(const std::string& text) {
   std::vector<double> b = parse_number_list(text, "boost");
   if (b.size() != 2) {
     throw Error(Errc::InvalidOption,
                 "--boost " + text + ": must be two numbers start,end (got " + std::to_string(b.size()) + ")",
                 {.field = "boost"});
   }
-  return b;
+  return {b[0], b[1]};
 }
 
-optim::StopCriteria stop_criteria(const OptimiseArgs& a, std::size_t population) {
-  optim::StopCriteria stop;
-  if (a.generations) stop.generations = *a.generations;
-  if (a.evaluations) {
-    stop.max_evaluations = *a.evaluations;
-    // The budget binds before the generation count, and the binary GA's
-    // boosting schedule (eq. 33) spans the generations the budget allows.
-    stop.generations = *a.evaluations / std::max<std::size_t>(population, 1);
-  }
-  if (a.time) stop.wall_time_seconds = *a.time;
-  stop.cancel = &interrupt_token();
-  return stop;
-}
-
-// The per-generation callback: streams the run log to its file and prints progress lines.
-optim::GenerationCallback generation_callback(const OptimiseArgs& a, io::RunLogFile* log) {
-  if (!log && !a.progress) return {};
-  return [&a, log](const optim::GenerationLog& g) {
-    if (log) log->append(g);
-    if (a.progress) {
-      const optim::GenerationStatistics s = optim::statistics(g);
-      Json line = Json::object();
-      line["generation"] = g.generation;
-      line["evaluations"] = g.evaluations;
-      line["best"] = std::isfinite(s.best) ? Json(s.best) : Json(nullptr);
-      std::cerr << line.dump() << '\n';
-      std::cerr.flush();
-    }
-  };
-}
-
-template <class Options>
-void fill_run(Options& o, const OptimiseArgs& a, io::RunLogFile* log) {
-  if (a.population) o.population = *a.population;
-  o.run.seed = a.seed.value_or(0);
-  o.run.threads = a.threads.value_or(1);
-  o.run.stop = stop_criteria(a, o.population);
-  o.run.on_generation = generation_callback(a, log);
-  if (a.crossover) o.crossover_probability = *a.crossover;
-  if (a.mutation) o.mutation_probability = *a.mutation;
-}
-
-// The algorithm's options from the command line, refusing the options it does not take.
-optim::SolverOptions solver_options(const OptimiseArgs& a, const AlgorithmChoice& choice, io::RunLogFile* log) {
-  const bool islands = a.islands.islands > 0;
-  switch (choice.kind) {
-    case Algorithm::RealGa: {
-      optim::RealGaOptions o;
-      fill_run(o, a, log);
-      return o;
-    }
-    case Algorithm::BinaryGa: {
-      optim::BinaryGaOptions o;
-      fill_run(o, a, log);
-      if (a.boost) {
-        const std::vector<double> b = parse_boost(*a.boost);
-        o.boost_start = b[0];
-        o.boost_end = b[1];
+// The settings of the command line, the log and progress streams as the per-generation callback.
+io::SolverRequest solver_request(const OptimiseArgs& a, std::optional<io::RunLogFile>& log) {
+  io::SolverRequest q;
+  q.algorithm = a.algorithm;
+  q.population = a.population;
+  q.generations = a.generations;
+  q.evaluations = a.evaluations;
+  q.threads = a.threads;
+  q.seed = a.seed;
+  q.crossover = a.crossover;
+  q.mutation = a.mutation;
+  if (a.boost) q.boost = parse_boost(*a.boost);  // ga-binary only: run_optimise refused it for the others
+  q.time = a.time;
+  q.islands = a.islands.islands > 0;
+  q.log = a.log.has_value();
+  q.progress = a.progress;
+  q.cancel = &interrupt_token();
+  if (a.log || a.progress)
+    q.on_generation = [&a, &log](const optim::GenerationLog& g) {
+      if (log) log->append(g);
+      if (a.progress) {
+        std::cerr << io::generation_progress_json(g).dump() << '\n';
+        std::cerr.flush();
       }
-      return o;
-    }
-    case Algorithm::Nsga2: {
-      optim::Nsga2Options o;
-      fill_run(o, a, log);
-      return o;
-    }
-    case Algorithm::NelderMead: {
-      // A deterministic local method from the centre of the bounds: no population, generations, seed,
-      // operators or threads.
-      refuse(a.population.has_value(), "population", a.algorithm);
-      refuse(a.generations.has_value(), "generations", a.algorithm);
-      refuse(a.seed.has_value(), "seed", a.algorithm);
-      refuse(a.crossover.has_value(), "crossover", a.algorithm);
-      refuse(a.mutation.has_value(), "mutation", a.algorithm);
-      refuse(a.threads.value_or(1) != 1, "threads", a.algorithm);
-      refuse(a.log.has_value(), "log", a.algorithm);
-      refuse(a.progress, "progress", a.algorithm);
-      refuse(islands, "islands", a.algorithm);
-      optim::NelderMeadOptions o;
-      if (a.evaluations) o.max_evaluations = *a.evaluations;
-      if (a.time) o.wall_time_seconds = *a.time;
-      o.cancel = &interrupt_token();
-      return o;
-    }
-    case Algorithm::Pagmo:
-      break;
-  }
-  // pagmo runs its own loop: no per-generation callback, stop criteria,
-  // cancellation or evaluation threads reach it through the adapter.
-  refuse(a.evaluations.has_value(), "evaluations", a.algorithm);
-  refuse(a.time.has_value(), "time", a.algorithm);
-  refuse(a.log.has_value(), "log", a.algorithm);
-  refuse(a.progress, "progress", a.algorithm);
-  refuse(a.crossover.has_value(), "crossover", a.algorithm);
-  refuse(a.mutation.has_value(), "mutation", a.algorithm);
-  refuse(a.threads.value_or(1) != 1, "threads", a.algorithm);
-  refuse(islands, "islands", a.algorithm);
-  optim::PagmoOptions o;
-  o.algorithm = choice.pagmo;
-  if (a.population) o.population = *a.population;
-  if (a.generations) o.generations = *a.generations;
-  o.seed = a.seed.value_or(0);
-  return o;
-}
-
-Json solution_json(const Solution& s, bool constrained) {
-  Json o = Json::object();
-  o["variables"] = s.variables;
-  o["objectives"] = s.objectives;
-  if (constrained) o["violation"] = s.violation;
-  return o;
-}
-
-Json report_json(const RunReport& r, const OptimiseArgs& a, const Problem& problem, std::size_t threads) {
-  return io::run_report_to_json(
-      r, {.seed = a.seed.value_or(0), .threads = threads, .algorithm = a.algorithm, .problem = problem.name});
-}
-
-// Smallest objective among the (feasible) solutions, lowest index on ties.
-const Solution& best_of(const std::vector<Solution>& solutions) {
-  const auto better = [](const Solution& x, const Solution& y) {
-    if (x.violation != y.violation) return x.violation < y.violation;
-    return x.objectives.at(0) < y.objectives.at(0);
-  };
-  return *std::min_element(solutions.begin(), solutions.end(), better);
-}
-
-Json front_json(std::vector<Solution> front, const Problem& problem, const std::optional<std::vector<double>>& ref) {
-  // Lexicographic order of the objectives: a stable, readable listing.
-  std::stable_sort(front.begin(), front.end(),
-                   [](const Solution& x, const Solution& y) { return x.objectives < y.objectives; });
-  const bool constrained = problem.inequality_constraints + problem.equality_constraints > 0;
-  Json doc = Json::object();
-  Json list = Json::array();
-  std::vector<double> points;
-  for (const Solution& s : front) {
-    list.push_back(solution_json(s, constrained));
-    if (s.violation == 0.0) points.insert(points.end(), s.objectives.begin(), s.objectives.end());
-  }
-  doc["front"] = std::move(list);
-  if (ref) {
-    doc["hypervolume"] = optim::hypervolume(points, problem.objectives, *ref);
-    doc["reference"] = *ref;
-  } else {
-    doc["hypervolume"] = nullptr;
-    doc["reference"] = nullptr;
-  }
-  return doc;
+    };
+  return q;
 }
 
 int run_optimise(const OptimiseArgs& a) {
-  const AlgorithmChoice algorithm = parse_algorithm(a.algorithm);
+  // The algorithm by its name alone (its settings are read below, once the log can take them).
+  const optim::SolverOptions named = io::solver_options({.algorithm = a.algorithm});
+  const bool binary = std::holds_alternative<optim::BinaryGaOptions>(named);
+  const bool flexo = binary || std::holds_alternative<optim::RealGaOptions>(named) ||
+                     std::holds_alternative<optim::Nsga2Options>(named);
   if (a.objectives && a.problem != "dtlz2") {
     throw Error(Errc::InvalidOption,
                 "--objectives " + std::to_string(*a.objectives) + ": only dtlz2 takes a number of objectives",
@@ -298,14 +155,11 @@ int run_optimise(const OptimiseArgs& a) {
     problem = std::move(file.problem);
     reference = std::move(file.reference);
   } else {
-    problem = optim::test_problem(a.problem, a.dimension.value_or(0), a.objectives.value_or(0));
-    // Built-in test problems are normalised so that 1.1 per objective bounds
-    // their Pareto fronts (the reference of the benchmarks).
-    reference = std::vector<double>(problem.objectives, 1.1);
+    std::tie(problem, reference) = io::builtin_problem(a.problem, a.dimension.value_or(0), a.objectives.value_or(0));
   }
   apply_bounds(problem, a);
   // Binary coding needs a resolution per variable; a built-in problem has none unless --precision gives it.
-  if (algorithm.kind == Algorithm::BinaryGa)
+  if (binary)
     for (std::size_t i = 0; i < problem.variables.size(); ++i)
       if (!(problem.variables[i].precision > 0.0))
         throw Error(Errc::InvalidOption,
@@ -327,39 +181,41 @@ int run_optimise(const OptimiseArgs& a) {
                   {.field = "reference"});
     }
   }
-  if (algorithm.kind != Algorithm::BinaryGa) refuse(a.boost.has_value(), "boost", a.algorithm);
+  if (!binary && a.boost)
+    throw Error(Errc::InvalidOption, "--boost is not supported by algorithm " + a.algorithm, {.field = "boost"});
   // The Flexo algorithms make offspring in pairs.
-  if (algorithm.kind != Algorithm::Pagmo && algorithm.kind != Algorithm::NelderMead && a.population)
+  if (flexo && a.population)
     (void)parse_integer_option(std::to_string(*a.population), "--population", 2, kMaxPopulation, true);
   if (a.log) io::check_output_path(*a.log, "--log");
 
   // One log and one progress stream per run: the islands' generations interleave.
   const bool islands = a.islands.islands > 0;
-  refuse(islands && a.log.has_value(), "log", a.algorithm + " with --islands");
-  refuse(islands && a.progress, "progress", a.algorithm + " with --islands");
+  for (const auto& [given, field] :
+       {std::pair{islands && a.log.has_value(), "log"}, std::pair{islands && a.progress, "progress"}})
+    if (given)
+      throw Error(Errc::InvalidOption,
+                  std::string("--") + field + " is not supported by algorithm " + a.algorithm + " with --islands",
+                  {.field = field});
   // The log streams to its temporary file as the run goes, and replaces the target only when the run is done.
   std::optional<io::RunLogFile> log;
-  if (a.log && algorithm.kind != Algorithm::Pagmo && algorithm.kind != Algorithm::NelderMead) log.emplace(*a.log);
+  if (a.log && flexo) log.emplace(*a.log);
   optim::SolveOptions options;
-  options.algorithm = solver_options(a, algorithm, log ? &*log : nullptr);
+  options.algorithm = io::solver_options(solver_request(a, log));
   if (islands) options.islands = island_options(a.islands);
   // pagmo never looks at the token: Ctrl-C ends it at once, as the shell would.
   std::optional<InterruptGuard> guard;
-  if (algorithm.kind != Algorithm::Pagmo) guard.emplace();
+  if (!std::holds_alternative<optim::PagmoOptions>(named)) guard.emplace();
   std::optional<IslandRun> run = run_islands_or_solve(problem, options);
   if (log) log->commit();
   if (!run) return kExitOk;  // an MPI rank other than 0: rank 0 prints the result
   const optim::SolveResult& out = run->result;
 
-  Json doc = Json::object();
-  if (problem.objectives == 1) {
-    const bool constrained = problem.inequality_constraints + problem.equality_constraints > 0;
-    doc["best"] = out.solutions.empty() ? Json(nullptr) : solution_json(best_of(out.solutions), constrained);
-  } else {
-    doc = front_json(out.solutions, problem, reference);
-  }
-  doc["report"] = report_json(out.report, a, problem, a.threads.value_or(1));
-  if (islands) doc["islands"] = islands_json(*options.islands, out, problem, run->transport);
+  Json doc = io::solve_result_to_json(out, problem, reference);
+  doc["report"] = io::run_report_to_json(out.report, {.seed = a.seed.value_or(0),
+                                                      .threads = a.threads.value_or(1),
+                                                      .algorithm = a.algorithm,
+                                                      .problem = problem.name});
+  if (islands) doc["islands"] = io::islands_to_json(*options.islands, out, problem, run->transport);
   print_json(doc);
   return kExitOk;
 }

@@ -21,22 +21,20 @@
 // what the end keeps (default tangent: end point and end tangent; curvature: also both end
 // curvatures), `--max-handles-factor` bounds the result's handles. Prints {"edit": the report} and
 // writes the edited curve (same kind as the original where it can be) with -o.
-#include <cmath>
+//
+// The answers are io::reconstruction_answer (shared with POST /api/reconstruct) and studies::edit_curvature
+// through io (as the server's curvature-edit route).
 #include <memory>
 #include <optional>
 #include <string>
 
 #include "commands/common.hpp"
 #include "hula/core/error.hpp"
-#include "hula/intrinsic/natural_curve.hpp"
-#include "hula/intrinsic/natural_equations.hpp"
 #include "hula/io/atomic_file.hpp"
+#include "hula/io/exact_curves.hpp"
 #include "hula/io/json_curve.hpp"
-#include "hula/io/match_study_file.hpp"
+#include "hula/io/reconstruction_answer.hpp"
 #include "hula/io/reconstruction_json.hpp"
-#include "hula/law/parser.hpp"
-#include "hula/studies/curvature_edit.hpp"
-#include "hula/studies/direct_reconstruction.hpp"
 
 namespace hula::cli {
 
@@ -90,16 +88,16 @@ int run_curvature_edit(const ReconstructArgs& a) {
         "--fit-tolerance with --curve: the edited curve keeps the original's knots (at most "
         "--max-handles-factor times its handles), not a tolerance");
   law::Context ctx;
-  studies::CurvatureEdit edit{.curvature = parse_law(a.kappa, ctx, "kappa"),
-                              .target = studies::curvature_target_from_name(a.target, "target")};
-  if (a.tau_option->count() > 0) edit.torsion = parse_law(a.tau, ctx, "tau");
-  studies::CurvatureEditOptions options;
-  options.hold = studies::end_hold_from_name(a.hold, "hold");
-  options.max_handles_factor = a.max_handles_factor;
-  options.reconstruction.max_steps = intrinsic::kFrontEndMaxSteps;
-  options.validate();
+  io::CurvatureEditRequest request;
+  request.edit.curvature = parse_law(a.kappa, ctx, "kappa");
+  request.edit.target = studies::curvature_target_from_name(a.target, "target");
+  if (a.tau_option->count() > 0) request.edit.torsion = parse_law(a.tau, ctx, "tau");
+  request.options.hold = studies::end_hold_from_name(a.hold, "hold");
+  request.options.max_handles_factor = a.max_handles_factor;
+  request.options.reconstruction.max_steps = intrinsic::kFrontEndMaxSteps;
+  request.options.validate();
   const curve::Curve original = io::read_curve_file(a.curve);
-  const studies::CurvatureEditResult r = studies::edit_curvature(original, edit, options);
+  const studies::CurvatureEditResult r = io::curvature_edit_answer(original, request);
   if (!a.output.empty()) io::write_curve_file(a.output, r.curve);
   Json doc = Json::object();
   doc["edit"] = io::curvature_edit_to_json(r);
@@ -113,31 +111,25 @@ int run_reconstruct(const ReconstructArgs& a) {
   if (a.length_option->count() == 0) throw CLI::RequiredError("--length");
   if (a.tau_option->count() == 0) throw CLI::RequiredError("--tau");
   law::Context ctx;
-  const law::Law kappa = parse_law(a.kappa, ctx, "kappa");
-  const law::Law tau = parse_law(a.tau, ctx, "tau");
-  intrinsic::StartFrame start;
-  if (!a.start_point.empty()) start.point = parse_vec(a.start_point, "start-point");
+  io::ReconstructionQuery q{.kappa = parse_law(a.kappa, ctx, "kappa"), .tau = parse_law(a.tau, ctx, "tau")};
+  q.length = a.length;
+  if (!a.start_point.empty()) q.start.point = parse_vec(a.start_point, "start-point");
   if (!a.start_frame.empty()) {
     const std::vector<double> v = parse_number_list(a.start_frame, "start-frame");
     if (v.size() != 6)
       throw Error(Errc::InvalidArgument,
                   "--start-frame needs 6 numbers Tx,Ty,Tz,Nx,Ny,Nz, got " + std::to_string(v.size()),
                   ErrorWhere{.field = "start-frame"});
-    start.tangent = {v[0], v[1], v[2]};
-    start.normal = {v[3], v[4], v[5]};
+    q.start.tangent = {v[0], v[1], v[2]};
+    q.start.normal = {v[3], v[4], v[5]};
   }
-  intrinsic::NurbsFitOptions fit_options;
-  fit_options.tolerance = a.fit_tolerance;
-  fit_options.relative = true;
-  fit_options.max_segments = intrinsic::kFrontEndMaxSegments;
+  q.tolerance = a.tolerance;
+  q.fit = io::front_end_fit_options(a.fit_tolerance);
   try {
-    fit_options.validate();
+    q.fit.validate();
   } catch (const Error& e) {
     throw Error(e.code(), "--fit-" + e.message(), ErrorWhere{.field = "fit-tolerance"});
   }
-  Json doc = Json::object();
-  std::optional<intrinsic::IntrinsicCurve> curve;
-  std::optional<intrinsic::NurbsFitResult> fit;
   const bool held = !a.end_point.empty() || !a.end_tangent.empty();
   if (a.exact && (held || a.output.empty()))
     throw Error(Errc::InvalidArgument,
@@ -148,51 +140,24 @@ int run_reconstruct(const ReconstructArgs& a) {
   if (a.free_length && !held)
     throw Error(Errc::InvalidArgument, "--free-length needs --end-point or --end-tangent: a free end fixes no length",
                 ErrorWhere{.field = "free-length"});
-  if (held) {
-    // The laws of s as profiles of u = s / L (reconstruct_direct's abscissa), for the boundary-value problem.
-    if (!std::isfinite(a.length) || !(a.length > 0.0))
-      throw Error(Errc::InvalidArgument, "--length = " + format_number(a.length) + " must be positive and finite",
-                  ErrorWhere{.field = "length"});
-    const law::Law s_of_u = a.length * ctx.parameter("u");
-    studies::DirectReconstructionProblem p{.curvature =
-                                               studies::Profile::from_law(law::substitute(kappa, "s", s_of_u))};
-    if (!(tau.is_constant() && tau.node().value == 0.0))
-      p.torsion = studies::Profile::from_law(law::substitute(tau, "s", s_of_u));
-    p.length = a.length;
-    p.start = start;
-    if (!a.end_point.empty()) p.end_point = parse_vec(a.end_point, "end-point");
-    if (!a.end_tangent.empty()) p.end_tangent = parse_vec(a.end_tangent, "end-tangent");
-    studies::DirectReconstructionOptions o;
-    o.vary_length = a.free_length;
-    o.end_tolerance = a.end_tolerance;
-    o.fit_options = fit_options;
-    studies::DirectReconstructionResult r = studies::reconstruct_direct(p, o);
-    doc["direct"] = io::direct_reconstruction_summary(r);
-    curve = std::move(r.curve);
-    fit = std::move(r.nurbs);
-  } else {
-    intrinsic::ReconstructionOptions options;
-    options.tolerance = a.tolerance;
-    options.max_steps = intrinsic::kFrontEndMaxSteps;
-    curve = intrinsic::reconstruct(kappa, tau, "s", a.length, start, options);
-    fit = intrinsic::fit_nurbs_converged(*curve, fit_options);
-  }
-  const double length = curve->length();
-  std::vector<double> ss;
-  if (a.at.empty())
-    for (int i = 0; i <= 4; ++i) ss.push_back(i == 4 ? length : length * i / 4.0);
-  else
-    ss = parse_number_list(a.at, "at");
-  Json points = io::frame_points_json(curve->evaluate(ss));
+  if (!a.end_point.empty()) q.end_point = parse_vec(a.end_point, "end-point");
+  if (!a.end_tangent.empty()) q.end_tangent = parse_vec(a.end_tangent, "end-tangent");
+  q.free_length = a.free_length;
+  q.end_tolerance = a.end_tolerance;
+  if (!a.at.empty()) q.at = parse_number_list(a.at, "at");
+  io::ReconstructionAnswer answer = io::reconstruction_answer(q);
   if (!a.output.empty() && a.exact) {
-    const curve::NaturalData data{a.kappa, a.tau, "s", a.length, start.point, start.tangent, start.normal, a.tolerance};
-    io::write_curve_file(a.output, intrinsic::natural_curve(data, curve::kApproximationTolerance));
+    const curve::NaturalData data{a.kappa,         a.tau,          "s",        a.length, q.start.point,
+                                  q.start.tangent, q.start.normal, a.tolerance};
+    io::write_curve_file(a.output, io::natural_equation_curve(data));
   } else if (!a.output.empty()) {
-    io::write_curve_file(a.output, fit->curve);
+    io::write_curve_file(a.output, answer.fit->curve);
   }
-  doc["points"] = std::move(points);
-  doc["integration"] = io::integration_summary(*curve);
-  doc["fit"] = io::fit_summary(*fit);
+  Json doc = Json::object();
+  if (!answer.direct.is_null()) doc["direct"] = std::move(answer.direct);
+  doc["points"] = std::move(answer.points);
+  doc["integration"] = std::move(answer.integration);
+  doc["fit"] = std::move(answer.fit_summary);
   print_result(doc, a.output);
   return kExitOk;
 }

@@ -7,6 +7,7 @@
 #include "hula/core/error.hpp"
 #include "hula/io/json_curve.hpp"
 #include "hula/io/json_read.hpp"
+#include "hula/io/reconstruction_answer.hpp"
 #include "hula/law/parser.hpp"
 
 namespace hula::io {
@@ -94,36 +95,26 @@ nlohmann::ordered_json reconstruction_request_json(const nlohmann::ordered_json&
     start.tangent = json::get_point(json::require_member(*f, path, "tangent"), path.member("tangent")).first;
     start.normal = json::get_point(json::require_member(*f, path, "normal"), path.member("normal")).first;
   }
-  intrinsic::ReconstructionOptions options;
+  ReconstructionQuery q{.kappa = kappa, .tau = tau, .length = length, .start = start};
   if (const Json* t = json::optional_member(body, "tolerance"))
-    options.tolerance = json::get_number(*t, json::root_path("tolerance"));
-  options.max_steps = intrinsic::kFrontEndMaxSteps;
-  intrinsic::NurbsFitOptions fit_options;
-  fit_options.tolerance = intrinsic::kFrontEndFitTolerance;
-  fit_options.relative = true;
-  fit_options.max_segments = intrinsic::kFrontEndMaxSegments;
+    q.tolerance = json::get_number(*t, json::root_path("tolerance"));
+  q.fit = front_end_fit_options(intrinsic::kFrontEndFitTolerance);
   if (const Json* t = json::optional_member(body, "fit_tolerance")) {
-    fit_options.tolerance = json::get_number(*t, json::root_path("fit_tolerance"));
+    q.fit.tolerance = json::get_number(*t, json::root_path("fit_tolerance"));
     try {
-      fit_options.validate();
+      q.fit.validate();
     } catch (const Error& e) {
       throw Error(e.code(), "fit_" + e.message(), ErrorWhere{.field = "fit_tolerance"});
     }
   }
-  const intrinsic::IntrinsicCurve curve = intrinsic::reconstruct(kappa, tau, "s", length, start, options);
-  std::vector<double> ss;
-  if (const Json* at = json::optional_member(body, "at"))
-    ss = json::get_number_array(*at, json::root_path("at"));
-  else
-    for (int i = 0; i <= 4; ++i) ss.push_back(i == 4 ? length : length * i / 4.0);
-  Json points = frame_points_json(curve.evaluate(ss));
-  const intrinsic::NurbsFitResult fit = intrinsic::fit_nurbs_converged(curve, fit_options);
+  if (const Json* at = json::optional_member(body, "at")) q.at = json::get_number_array(*at, json::root_path("at"));
+  ReconstructionAnswer answer = reconstruction_answer(q);
   Json out = Json::object();
-  out["points"] = std::move(points);
-  out["curve"] = curve_to_json(fit.curve);
-  out["max_deviation"] = fit.max_deviation;
-  out["integration"] = integration_summary(curve);
-  out["fit"] = fit_summary(fit);
+  out["points"] = std::move(answer.points);
+  out["curve"] = curve_to_json(answer.fit->curve);
+  out["max_deviation"] = answer.fit->max_deviation;
+  out["integration"] = std::move(answer.integration);
+  out["fit"] = std::move(answer.fit_summary);
   return out;
 }
 

@@ -10,6 +10,7 @@
 #include <variant>
 
 #include "hula/core/error.hpp"
+#include "hula/io/optimise_request.hpp"
 #include "hula/io/problem_file.hpp"
 #include "hula/io/run_report_json.hpp"
 #include "hula/optim/solve.hpp"
@@ -30,37 +31,21 @@ struct ProblemRun::State {
 
 namespace {
 
-Json solution_json(const optim::Solution& s) {
-  Json o = Json::object();
-  o["variables"] = s.variables;
-  o["objectives"] = s.objectives;
-  o["violation"] = s.violation;
-  return o;
-}
-
 // The state's algorithm with its run settings; with a flag and a callback, cancellation and progress.
 optim::SolverOptions solver_options(const ProblemRun::State& s, const CancellationToken* cancel,
                                     const std::function<void(Json)>* on_event) {
-  optim::SolverOptions options = s.algorithm;
+  io::SolverRequest q{.algorithm = s.algorithm_name,
+                      .population = s.population,
+                      .generations = s.generations,
+                      .seed = s.seed,
+                      .cancel = cancel};
   const auto start = std::chrono::steady_clock::now();
-  std::visit(
-      [&](auto& o) {
-        using T = std::decay_t<decltype(o)>;
-        if constexpr (std::is_same_v<T, optim::RealGaOptions> || std::is_same_v<T, optim::BinaryGaOptions> ||
-                      std::is_same_v<T, optim::Nsga2Options>) {
-          if (s.population) o.population = *s.population;
-          o.run.seed = s.seed;
-          o.run.stop.generations = s.generations;
-          o.run.stop.cancel = cancel;
-          if (on_event != nullptr && *on_event)
-            o.run.on_generation = [start, on_event](const optim::GenerationLog& g) {
-              const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-              (*on_event)(io::generation_event_json(g, elapsed));
-            };
-        }
-      },
-      options);
-  return options;
+  if (on_event != nullptr && *on_event)
+    q.on_generation = [start, on_event](const optim::GenerationLog& g) {
+      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      (*on_event)(io::generation_event_json(g, elapsed));
+    };
+  return io::solver_options(q);
 }
 
 }  // namespace
@@ -117,10 +102,10 @@ ProblemRunOutcome ProblemRun::run(const CancellationToken* cancel, const std::fu
   ProblemRunOutcome out;
   if (std::holds_alternative<optim::Nsga2Options>(s.algorithm)) {
     Json front = Json::array();
-    for (const optim::Solution& x : r.solutions) front.push_back(solution_json(x));
+    for (const optim::Solution& x : r.solutions) front.push_back(io::solution_to_json(x, true));
     out.result["front"] = std::move(front);
   } else {
-    out.result["best"] = solution_json(r.solutions.front());
+    out.result["best"] = io::solution_to_json(r.solutions.front(), true);
   }
   out.report =
       io::run_report_to_json(r.report, {.seed = s.seed, .algorithm = s.algorithm_name, .problem = s.problem.name});

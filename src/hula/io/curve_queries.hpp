@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: MIT
+// The answers of the one-shot questions asked about curve values — what a
+// curve is (`hula info`, `hula demo`), its nearest points (`hula closest`),
+// the distance between two curves (`hula deviation`), the continuity of a
+// join (`hula continuity`) and its fairness energies (`hula energy`) — each
+// one function from values to its JSON document, so that every door that
+// asks the question gets the same answer (docs/cli.md gives the shapes).
+// The options types of the answers (nurbs::DeviationOptions) come with this
+// header.
+#pragma once
+
+#include <span>
+
+#include "hula/curve/curve.hpp"
+#include "hula/io/json_curve.hpp"
+#include "hula/nurbs/deviation.hpp"
+
+namespace hula::io {
+
+/// What a NURBS curve is: {"degree", "dimension", "rational", "domain", "knots", "control_points", "weights"
+/// (null when not rational), "length" (nurbs::arc_length, relative tolerance 1e-12), "end_derivatives"
+/// {"start", "end"}, "end_tangents" {"start", "end"} (null where |C'| is rounding noise), "planarity"}.
+/// @throws hula::Error(Errc::NumericalFailure) if the arc length does not converge
+[[nodiscard]] Json curve_description_json(const nurbs::NurbsCurve& curve);
+
+/// As curve_description_json, with "maximum_curvature" (diffgeom::analyse_curve's feature) added.
+[[nodiscard]] Json curve_description_with_maximum_curvature_json(const nurbs::NurbsCurve& curve);
+
+/// The points of `curve` nearest to `points` (nurbs::closest_point on its NURBS): {"law_stand_in_deviation"?
+/// (a law curve, answered through its stand-in), "results": [{"point" (as given: `dimensions[i]` 2 or 3
+/// coordinates), "t", "closest", "distance"}]}.
+[[nodiscard]] Json closest_answer(const curve::Curve& curve, std::span<const Vec3> points,
+                                  std::span<const int> dimensions);
+
+/// The sampled distance between a and b (nurbs::deviation on their NURBS): {"mode" (`mode_name`), "samples",
+/// "max", "max_at", "mean", "rms", "mean_axis", "max_axis"} (per-axis members always [x, y, z]).
+/// @throws as nurbs::deviation
+[[nodiscard]] Json deviation_answer(const curve::Curve& a, const curve::Curve& b,
+                                    const nurbs::DeviationOptions& options, std::string_view mode_name);
+
+/// The continuity of the join of a's end with b's start (diffgeom::join_continuity): {"parametric": "C<k>" or
+/// null, "geometric": "G<k>" or null, "tangent_angle", "curvature_left", "curvature_right" (null where
+/// undefined), "left", "right" (C, C', C'', C''' on each side)}.
+/// @throws as diffgeom::join_continuity
+[[nodiscard]] Json join_continuity_answer(const curve::Curve& a, const curve::Curve& b);
+
+/// The fairness energies of a curve (diffgeom::bending_energy and curvature_variation_energy of its NURBS):
+/// {"bending": {"value", "error_estimate", "converged"}, "curvature_variation": {...}}.
+[[nodiscard]] Json energy_answer(const curve::Curve& curve);
+
+/// The thesis's example curves of `hula demo` (7.1.2, Table 3) and their descriptions.
+[[nodiscard]] Json thesis_examples_json();
+
+}  // namespace hula::io

@@ -1,0 +1,125 @@
+// SPDX-License-Identifier: MIT
+// Exact-curve answers (exact_curves.hpp).
+#include "hula/io/exact_curves.hpp"
+
+#include <cmath>
+#include <utility>
+#include <variant>
+
+#include "hula/core/error.hpp"
+#include "hula/diffgeom/frenet.hpp"
+#include "hula/intrinsic/log_aesthetic.hpp"
+#include "hula/intrinsic/natural_curve.hpp"
+#include "hula/io/clothoid_json.hpp"
+
+namespace hula::io {
+
+Json write_exact_curve(const std::string& path, const curve::Curve& curve, const std::optional<double>& to_nurbs) {
+  Json j = Json::object();
+  j["path"] = path;
+  if (to_nurbs) {
+    const intrinsic::CurveToNurbsResult n = intrinsic::to_nurbs(curve, *to_nurbs);
+    write_curve_file(path, n.curve);
+    j["kind"] = "nurbs";
+    j["tolerance"] = n.tolerance;
+    j["max_deviation"] = n.max_deviation;
+    j["control_points"] = n.curve.control_points().size();
+  } else {
+    write_curve_file(path, curve);
+    j["kind"] = std::string(curve.kind_name());
+  }
+  return j;
+}
+
+curve::Curve natural_equation_curve(const curve::NaturalData& data) {
+  return intrinsic::natural_curve(data, curve::kApproximationTolerance);
+}
+
+namespace {
+
+// The point, tangent angle and curvature at arc length s along consecutive segments; `index` is the
+// position of s in the request's `at`, for the error.
+Json clothoid_sample(const std::vector<intrinsic::ClothoidSegment>& segments, double s, std::size_t index) {
+  double total = 0.0;
+  for (const auto& c : segments) total += c.length;
+  if (!(s >= 0.0 && s <= total))
+    throw Error(Errc::OutOfDomain, "--at " + format_number(s) + " is outside [0, " + format_number(total) + "]",
+                ErrorWhere{.field = "at", .index = index});
+  double local = s;
+  std::size_t j = 0;
+  while (j + 1 < segments.size() && local > segments[j].length) local -= segments[j++].length;
+  const intrinsic::ClothoidSegment& c = segments[j];
+  Json p = Json::object();
+  p["s"] = s;
+  p["point"] = point_to_json(c.point(local), 2);
+  p["theta"] = c.angle(local);
+  p["kappa"] = c.curvature(local);
+  return p;
+}
+
+}  // namespace
+
+ClothoidAnswer clothoid_answer(const ClothoidRequest& q) {
+  ClothoidAnswer out;
+  out.json = Json::object();
+  if (q.start_curvature && q.end_curvature) {
+    const intrinsic::ClothoidG2Result r = intrinsic::fit_clothoid_g2(q.start_point, q.start_angle, *q.start_curvature,
+                                                                     q.end_point, q.end_angle, *q.end_curvature);
+    out.segments.assign(r.segments.begin(), r.segments.end());
+    out.json["kind"] = "g2";
+    out.json.update(clothoid_spline_to_json(out.segments));
+    out.json["iterations"] = r.iterations;
+  } else {
+    const intrinsic::ClothoidG1Result r =
+        intrinsic::fit_clothoid_g1(q.start_point, q.start_angle, q.end_point, q.end_angle);
+    out.segments.push_back(r.segment);
+    out.json["kind"] = "g1";
+    out.json.update(clothoid_spline_to_json(out.segments));
+    out.json["iterations"] = r.iterations;
+  }
+  if (!q.at.empty()) {
+    Json points = Json::array();
+    for (std::size_t i = 0; i < q.at.size(); ++i) points.push_back(clothoid_sample(out.segments, q.at[i], i));
+    out.json["points"] = std::move(points);
+  }
+  return out;
+}
+
+curve::Curve clothoid_curve(const std::vector<intrinsic::ClothoidSegment>& segments, double tolerance) {
+  return intrinsic::natural_curve(intrinsic::clothoid_natural_data(segments, tolerance),
+                                  curve::kApproximationTolerance);
+}
+
+LogAestheticAnswer log_aesthetic_answer(const LogAestheticRequest& q) {
+  const intrinsic::LogAestheticCurve la{q.alpha, q.rho0, q.lambda, q.length};
+  intrinsic::StartFrame start;
+  start.point = q.start_point;
+  start.tangent = {std::cos(q.start_angle), std::sin(q.start_angle), 0.0};
+  start.normal = {-std::sin(q.start_angle), std::cos(q.start_angle), 0.0};
+  curve::Curve c = intrinsic::natural_curve(la.natural_data(start, q.tolerance), curve::kApproximationTolerance);
+  const std::vector<double> ss = q.at ? *q.at : std::vector<double>{0.0, 0.5 * la.length, la.length};
+  std::vector<diffgeom::FrenetPoint> frames(ss.size());
+  diffgeom::frenet(c, ss, frames);
+  Json doc = Json::object();
+  doc["alpha"] = la.alpha;
+  doc["rho0"] = la.rho0;
+  doc["lambda"] = la.lambda;
+  doc["length"] = la.length;
+  doc["max_length"] = std::isfinite(la.max_length()) ? Json(la.max_length()) : Json(nullptr);
+  doc["curvature"] = std::get<curve::NaturalData>(c.data()).curvature;
+  Json points = Json::array();
+  for (const diffgeom::FrenetPoint& p : frames) {
+    Json j = Json::object();
+    j["s"] = p.t;
+    j["point"] = point_to_json(p.position, 2);
+    j["tangent"] = point_to_json(p.tangent, 2);
+    j["kappa"] = p.signed_curvature;
+    // dκ/ds of the signed curvature: |κ|' carries the sign of κ (κ > 0 for every log-aesthetic segment here).
+    j["kappa_prime"] = p.frame_defined ? Json(p.curvature_derivative) : Json(nullptr);
+    points.push_back(std::move(j));
+  }
+  doc["points"] = std::move(points);
+  return {std::move(c), std::move(doc)};
+}
+
+}  // namespace hula::io

@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: MIT
+// The answers of the commands that make exact curves (curves held by their
+// laws, evaluated exactly: intrinsic/natural_curve.hpp) — the clothoid
+// Hermite interpolants (`hula clothoid`), the log-aesthetic segments (`hula
+// log-aesthetic`) — and the writing of an exact curve, by its laws or as its
+// NURBS within a tolerance (their -o/--to-nurbs, `hula edit to-nurbs`).
+// The request types of the answers (intrinsic::StartFrame,
+// intrinsic::ClothoidSegment) come with this header.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "hula/curve/curve.hpp"
+#include "hula/intrinsic/clothoid.hpp"
+#include "hula/intrinsic/natural_equations.hpp"
+#include "hula/io/json_curve.hpp"
+
+namespace hula::io {
+
+/// Writes `curve` to `path` (atomically): by its construction data, or with `to_nurbs` as its NURBS within that
+/// tolerance (intrinsic::to_nurbs). Returns the summary {"path", "kind" ("natural", "law" or "nurbs"),
+/// "tolerance"?, "max_deviation"?, "control_points"? (the last three with `to_nurbs`)}.
+/// @throws as intrinsic::to_nurbs and write_curve_file
+[[nodiscard]] Json write_exact_curve(const std::string& path, const curve::Curve& curve,
+                                     const std::optional<double>& to_nurbs);
+
+/// The exact curve of natural equations given as text (a natural curve, its stand-in NURBS within
+/// curve::kApproximationTolerance).
+/// @throws as intrinsic::natural_curve
+[[nodiscard]] curve::Curve natural_equation_curve(const curve::NaturalData& data);
+
+/// A G1 or G2 clothoid Hermite interpolation: planar end points (z = 0) and tangent angles (radians from +x,
+/// counter-clockwise), and with both end curvatures the G2 spline of three clothoids.
+struct ClothoidRequest {
+  Vec3 start_point{};
+  double start_angle = 0.0;
+  Vec3 end_point{};
+  double end_angle = 0.0;
+  std::optional<double> start_curvature{};  ///< with end_curvature: the G2 spline
+  std::optional<double> end_curvature{};
+  std::vector<double> at{};  ///< arc lengths along the whole result to sample (none: no "points")
+};
+
+/// The segments of a clothoid interpolation and its JSON.
+struct ClothoidAnswer {
+  std::vector<intrinsic::ClothoidSegment> segments;
+  /// {"kind": "g1" | "g2", "segments", "length" (clothoid_spline_to_json), "iterations", "points"?: [{"s",
+  /// "point", "theta", "kappa"}] at `at`}.
+  Json json;
+};
+
+/// intrinsic::fit_clothoid_g1 or fit_clothoid_g2 of the request, sampled at its arc lengths.
+/// @throws as the fits; hula::Error(Errc::OutOfDomain) naming at[i] outside [0, length]
+[[nodiscard]] ClothoidAnswer clothoid_answer(const ClothoidRequest& request);
+
+/// The exact curve of consecutive clothoid segments (a natural curve: its curvature law, position integrated
+/// to `tolerance`).
+[[nodiscard]] curve::Curve clothoid_curve(const std::vector<intrinsic::ClothoidSegment>& segments, double tolerance);
+
+/// A log-aesthetic segment of slope alpha (intrinsic/log_aesthetic.hpp) from a planar start point and angle.
+struct LogAestheticRequest {
+  double alpha = 0.0;
+  double rho0 = 1.0;
+  double lambda = 0.0;
+  double length = 1.0;
+  Vec3 start_point{};
+  double start_angle = 0.0;
+  std::optional<std::vector<double>> at{};  ///< arc lengths to sample (default 0, L/2, L)
+  double tolerance = curve::kNaturalTolerance;
+};
+
+/// The exact curve of a log-aesthetic segment and its JSON.
+struct LogAestheticAnswer {
+  curve::Curve curve;
+  /// {"alpha", "rho0", "lambda", "length", "max_length" (null when unbounded), "curvature" (the law), "points":
+  /// [{"s", "point", "tangent", "kappa", "kappa_prime"}]} with κ and dκ/ds as the analysis computes them
+  /// (diffgeom::frenet of the curve value).
+  Json json;
+};
+
+/// @throws hula::Error naming the field for parameters outside the family (intrinsic::LogAestheticCurve)
+[[nodiscard]] LogAestheticAnswer log_aesthetic_answer(const LogAestheticRequest& request);
+
+}  // namespace hula::io

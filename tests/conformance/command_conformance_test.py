@@ -1,0 +1,206 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+"""Command conformance: the one-shot questions that more than one door answers
+give the same answer through each (DESIGN.md, "One engine, one answer"; each
+door calls the same io entry):
+
+- where two curves meet, where a curve meets itself and how far apart two curves
+  are: `hula intersect` / `hula distance`, POST /api/intersect and /api/distance,
+  hulahoops.intersect / distance (io::intersection_answer, io::distance_answer);
+- a law's values and derivatives: `hula law EXPR --at ... --derivatives N` and
+  POST /api/law (io::law_evaluation_json);
+- a curve from its natural equations: `hula reconstruct` and POST /api/reconstruct
+  (io::reconstruction_answer; the CLI prints the points, integration and fit members
+  the route answers, the route adds the fitted curve);
+- an optimisation problem run with an algorithm named as every door names it:
+  `hula optimise --problem-file` and a problem job of `hula serve` (io::solver_options,
+  the one reader of solver settings; the best solution and the run report).
+
+Answers are compared value for value, every double bit for bit; wall-clock members
+("seconds") are left out. Each case also checks an independent fact so that a door
+answering nothing cannot pass (a circle's radius from κ = 1, a sphere's minimum).
+
+Usage: command_conformance_test.py HULA_BINARY   (PYTHONPATH must reach hulahoops)
+"""
+import json
+import math
+import pathlib
+import subprocess
+import sys
+import tempfile
+
+HERE = pathlib.Path(__file__).resolve().parent
+ROOT = HERE.parent.parent
+sys.path.insert(0, str(ROOT / "tests" / "server"))
+from hula_server import Server, open_events, read_events  # noqa: E402
+
+import hulahoops as hh  # noqa: E402
+from conformance_test import first_difference, plain  # noqa: E402
+
+CORPUS = ROOT / "tests" / "data" / "conformance"
+# NURBS curves of the corpus that cross or come close (planar and space, rational ones included).
+PAIRS = [("planar_bezier_s", "random_planar_nurbs_0"), ("random_planar_nurbs_0", "random_planar_nurbs_1"),
+         ("random_space_nurbs_0", "random_space_nurbs_1"), ("rational_circle", "random_rational_0")]
+SELF = ["random_planar_nurbs_1", "random_space_nurbs_0", "space_bezier_issue22"]
+LAWS = [("sin(t)*t", "0,0.5,1,2", 3), ("vec(cos(t), sin(t), 0.5*t)", "0,1,2.5", 2), ("abs(t - 0.5)", "0.25,0.5", 1)]
+# Natural equations (κ, τ, L): a circle of radius 1 (planar), a helix, a curve whose torsion varies.
+RECONSTRUCTIONS = [("1", "0", 2 * math.pi, None), ("0.5", "0.25", 10.0, [0, 2.5, 10]),
+                   ("1 + 0.5*sin(s)", "0.3*cos(2*s)", 5.0, None)]
+# A constrained two-objective problem file's single-objective cousin and a plain one.
+PROBLEMS = [
+    ({"name": "shifted-sphere", "variables": [{"name": "x", "lower": -2, "upper": 2},
+                                              {"name": "y", "lower": -2, "upper": 2}],
+      "objectives": ["(x - 0.5)^2 + (y + 0.25)^2"]}, "ga-real", 3),
+    ({"name": "constrained", "variables": [{"name": "x", "lower": 0, "upper": 3}, {"name": "y", "lower": 0, "upper": 3}],
+      "objectives": ["(x - 2)^2 + (y - 1)^2"],
+      "constraints": [{"expression": "x + y - 2", "type": "inequality"}]}, "ga-real", 5),
+]
+
+
+def run(hula, *args):
+    r = subprocess.run([hula, *args], capture_output=True, text=True, timeout=300)
+    if r.returncode != 0:
+        raise AssertionError(f"hula {' '.join(args)} failed ({r.returncode}): {r.stderr}")
+    return json.loads(r.stdout)
+
+
+def post(server, path, body):
+    status, _, text = server.request("POST", path, body)
+    assert status == 200, (path, status, text)
+    return json.loads(text)
+
+
+def without_seconds(value):
+    if isinstance(value, dict):
+        return {k: without_seconds(v) for k, v in value.items() if k != "seconds"}
+    if isinstance(value, list):
+        return [without_seconds(v) for v in value]
+    return value
+
+
+def compare(failures, name, answers):
+    """answers: [(door, value)]; the first is the reference."""
+    (door0, ref), *rest = answers
+    for door, value in rest:
+        d = first_difference(without_seconds(ref), without_seconds(value))
+        if d:
+            failures.append(f"{name}: {door0} and {door} differ at {d}")
+
+
+def curve_file(name):
+    return CORPUS / f"{name}.json"
+
+
+def curve_json(name):
+    return json.loads(curve_file(name).read_text())
+
+
+def intersections(hula, server, failures):
+    checked = 0
+    for a, b in PAIRS:
+        cli = run(hula, "intersect", str(curve_file(a)), str(curve_file(b)))
+        del cli["a"], cli["b"]
+        http = post(server, "/api/intersect", {"a": curve_json(a), "b": curve_json(b)})
+        py = plain(hh.intersect(hh.NurbsCurve.from_json(curve_json(a)), hh.NurbsCurve.from_json(curve_json(b))))
+        compare(failures, f"intersect {a} {b}", [("CLI", cli), ("HTTP", http), ("Python", py)])
+        # Every reported point lies on both curves, within the tolerance.
+        for p in cli["points"]:
+            if not p["distance"] <= cli["tolerance"]:
+                failures.append(f"intersect {a} {b}: a point {p} is {p['distance']} apart")
+        cli = run(hula, "distance", str(curve_file(a)), str(curve_file(b)))
+        del cli["a"], cli["b"]
+        http = post(server, "/api/distance", {"a": curve_json(a), "b": curve_json(b)})
+        py = plain(hh.distance(hh.NurbsCurve.from_json(curve_json(a)), hh.NurbsCurve.from_json(curve_json(b))))
+        compare(failures, f"distance {a} {b}", [("CLI", cli), ("HTTP", http), ("Python", py)])
+        gap = math.dist(cli["point_a"], cli["point_b"])
+        if not abs(gap - cli["distance"]) <= 1e-9 * max(1.0, gap):
+            failures.append(f"distance {a} {b}: |point_a - point_b| = {gap} but distance = {cli['distance']}")
+        checked += 2
+    for a in SELF:
+        cli = run(hula, "intersect", str(curve_file(a)), "--self")
+        del cli["a"], cli["self"]
+        http = post(server, "/api/intersect", {"a": curve_json(a)})
+        py = plain(hh.intersect(hh.NurbsCurve.from_json(curve_json(a))))
+        compare(failures, f"intersect {a} --self", [("CLI", cli), ("HTTP", http), ("Python", py)])
+        checked += 1
+    return checked
+
+
+def laws(hula, server, failures):
+    for expression, at, order in LAWS:
+        cli = run(hula, "law", expression, "--at", at, "--derivatives", str(order))
+        http = post(server, "/api/law", {"expression": expression, "at": [float(t) for t in at.split(",")],
+                                         "derivatives": order})
+        compare(failures, f"law {expression}", [("CLI", cli), ("HTTP", http)])
+        if expression == "sin(t)*t":
+            # d/dt (t sin t) = sin t + t cos t at t = 1.
+            d1 = cli["results"][2]["derivatives"][1][0]
+            if abs(d1 - (math.sin(1) + math.cos(1))) > 1e-12:
+                failures.append(f"law {expression}: derivative at 1 is {d1}")
+    return len(LAWS)
+
+
+def reconstructions(hula, server, failures):
+    for kappa, tau, length, at in RECONSTRUCTIONS:
+        args = ["reconstruct", "--kappa", kappa, "--tau", tau, "--length", repr(length)]
+        body = {"kappa": kappa, "tau": tau, "length": length}
+        if at is not None:
+            args += ["--at", ",".join(repr(float(s)) for s in at)]
+            body["at"] = at
+        cli = run(hula, *args)
+        http = post(server, "/api/reconstruct", body)
+        compare(failures, f"reconstruct {kappa} {tau}",
+                [("CLI", cli), ("HTTP", {k: http[k] for k in ("points", "integration", "fit")})])
+        if kappa == "1" and tau == "0":
+            # A full turn of the unit circle ends where it starts.
+            end = cli["points"][-1]["position"]
+            if math.dist(end, [0, 0, 0]) > 1e-8:
+                failures.append(f"reconstruct circle: ends at {end}")
+    return len(RECONSTRUCTIONS)
+
+
+def job(server, body):
+    status, _, text = server.request("POST", "/api/jobs", body)
+    assert status == 202, text
+    conn, response = open_events(server, f"/api/jobs/{json.loads(text)['job']}/events")
+    events = list(read_events(response))
+    conn.close()
+    event, data = events[-1]
+    assert event == "done" and data["state"] == "done", events[-1]
+    return data
+
+
+def optimisations(hula, server, failures, folder):
+    for problem, algorithm, seed in PROBLEMS:
+        path = pathlib.Path(folder) / f"{problem['name']}.json"
+        path.write_text(json.dumps(problem))
+        cli = run(hula, "optimise", "--problem-file", str(path), "--algorithm", algorithm, "--population", "16",
+                  "--generations", "20", "--seed", str(seed))
+        done = job(server, {"problem": problem, "algorithm": algorithm, "population": 16, "generations": 20,
+                            "seed": seed})
+        best = {k: done["result"]["best"][k] for k in cli["best"]}  # the job always writes "violation"
+        compare(failures, f"optimise {problem['name']}",
+                [("CLI", {"best": cli["best"], "report": {k: v for k, v in cli["report"].items() if k != "threads"}}),
+                 ("HTTP", {"best": best, "report": done["report"]})])
+        if problem["name"] == "shifted-sphere" and not cli["best"]["objectives"][0] < 0.05:
+            failures.append(f"optimise shifted-sphere: best {cli['best']} is not near (0.5, -0.25)")
+    return len(PROBLEMS)
+
+
+def main():
+    hula = sys.argv[1]
+    failures = []
+    with tempfile.TemporaryDirectory() as folder, Server(hula) as server:
+        checked = intersections(hula, server, failures)
+        checked += laws(hula, server, failures)
+        checked += reconstructions(hula, server, failures)
+        checked += optimisations(hula, server, failures, folder)
+    for f in failures:
+        print("FAIL:", f)
+    print(f"command conformance: {checked} questions through CLI, HTTP (and Python where it answers), "
+          f"{len(failures)} difference(s)")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
