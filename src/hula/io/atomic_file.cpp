@@ -220,6 +220,17 @@ std::string read_text_file(const std::filesystem::path& path, std::size_t max_by
   return contents;
 }
 
+void check_readable_size(std::size_t bytes, const std::filesystem::path& path, std::string_view option,
+                         std::size_t max_bytes) {
+  if (bytes <= max_bytes) return;
+  const std::string shown = is_std_stream(path) ? std::string("standard output") : "'" + path.string() + "'";
+  throw Error(Errc::InvalidArgument,
+              "not writing " + shown + ": the file would be " + std::to_string(bytes) + " bytes, over the " +
+                  std::to_string(max_bytes) +
+                  "-byte limit of the readers of this kind of file (hula could not read it back)",
+              ErrorWhere{.field = std::string(option)});
+}
+
 void check_output_path(const std::filesystem::path& path, std::string_view option) {
   if (is_std_stream(path)) return;
   if (path.empty() || !path.has_filename() || path.filename() == "." || path.filename() == "..")
