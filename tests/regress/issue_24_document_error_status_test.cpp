@@ -6,10 +6,10 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "hula/core/error.hpp"
+#include "hula/io/atomic_file.hpp"
 #include "hula/oli/document.hpp"
 #include "hula/server/http.hpp"
 #include "hula/testing/temp_dir.hpp"
@@ -40,20 +40,16 @@ TEST(Issue24DocumentErrorStatus, LockedAndCorruptDocumentsHaveTheirOwnCodes) {
     oli::Document writer = oli::Document::create(path);
     EXPECT_EQ(code_of([&] { (void)oli::Document::open(path); }), "DocumentLocked");
   }
-  std::string bytes;
-  {
-    std::ifstream in(path, std::ios::binary);
-    bytes.assign(std::istreambuf_iterator<char>(in), {});
-  }
+  const std::string bytes = io::read_text_file(path);
   ASSERT_GT(bytes.size(), 4096U);
   const fs::path truncated = dir / "t.hula";
-  std::ofstream(truncated, std::ios::binary) << bytes.substr(0, 50);
+  io::write_file_atomically(truncated, bytes.substr(0, 50));
   EXPECT_EQ(code_of([&] { (void)oli::Document::open(truncated, oli::OpenMode::ReadOnly); }), "DocumentCorrupt");
   // A valid 100-byte header over pages of garbage: SQLite reports SQLITE_CORRUPT or SQLITE_NOTADB.
   const fs::path garbage = dir / "g.hula";
   std::string g = bytes;
   for (std::size_t i = 100; i < g.size(); ++i) g[i] = static_cast<char>(0xA5);
-  std::ofstream(garbage, std::ios::binary) << g;
+  io::write_file_atomically(garbage, g);
   EXPECT_EQ(code_of([&] { (void)oli::Document::open(garbage, oli::OpenMode::ReadOnly); }), "DocumentCorrupt");
 }
 
