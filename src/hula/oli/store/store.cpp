@@ -21,6 +21,7 @@
 #include <utility>
 
 #include "hula/core/error.hpp"
+#include "hula/io/owned_files.hpp"
 
 namespace hula::oli::store {
 namespace {
@@ -386,7 +387,10 @@ Store Store::create(const std::filesystem::path& path, const DocumentRow& row, b
   // Build the new file under a temporary name in the same directory, then
   // rename it into place: a failure at any point leaves `path` as it was.
   const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
-  std::string pattern = (dir / ("." + path.filename().string() + ".new-XXXXXX")).string();
+  // `.NAME.new-<pid>-XXXXXX` with its -wal/-shm/-journal: what a killed `doc new` left (its pid is gone) goes.
+  const std::string temp_prefix = "." + path.filename().string() + ".new-";
+  io::remove_orphaned(dir, temp_prefix);
+  std::string pattern = (dir / (io::owned_name(temp_prefix) + "-XXXXXX")).string();
   const int fd = ::mkstemp(pattern.data());
   if (fd < 0) fail(path, std::string("cannot create the file: ") + std::strerror(errno));
   ::close(fd);
@@ -446,7 +450,12 @@ Store Store::open(const std::filesystem::path& path, Access access) {
   auto impl = std::make_unique<Impl>();
   impl->path = path;
   impl->access = access;
-  if (access == Access::ReadWrite) impl->lock = lock_for_writing(path);
+  if (access == Access::ReadWrite) {
+    impl->lock = lock_for_writing(path);
+    // A writer also clears what a killed `doc new --force` of this name left beside it.
+    io::remove_orphaned(path.has_parent_path() ? path.parent_path() : std::filesystem::path("."),
+                        "." + path.filename().string() + ".new-");
+  }
   check_header(path);
   if (access == Access::ReadWrite)
     impl->connect(SQLITE_OPEN_READWRITE);
