@@ -89,6 +89,17 @@ TEST(Issue24KillLeftovers, LiveOwnersTemporariesAreKept) {
   EXPECT_EQ(names_in(dir.path()), (std::vector<std::string>{".d.hula.new-notapid", mine, "d.hula"}));
 }
 
+// checks: a temporary named with the pid of a live process that started after the temporary was last changed
+// (here this test's pid on a file dated a day back) is a killed run's whose pid was reused: it is removed.
+TEST(Issue24KillLeftovers, ReusedPidIsNoOwner) {
+  TempDir dir;
+  const std::string old = ".d.hula.new-" + std::to_string(::getpid()) + "-old123";
+  write(dir / old, "left by a killed run");
+  fs::last_write_time(dir / old, fs::file_time_type::clock::now() - std::chrono::hours(24));
+  ASSERT_EQ(hula({"doc", "new", (dir / "d.hula").string()}).exit_code, 0);
+  EXPECT_EQ(names_in(dir.path()), std::vector<std::string>{"d.hula"});
+}
+
 #ifdef HULA_WITH_OCCT
 // A whole STEP file of about `size` bytes (its header holds the time it was written).
 bool whole_step(const std::string& text, std::size_t size) {
