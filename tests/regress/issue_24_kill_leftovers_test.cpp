@@ -9,6 +9,7 @@
 // dies with its parent.
 #include <signal.h>
 #include <stdlib.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -78,6 +79,61 @@ TEST(Issue24KillLeftovers, KilledDocNewLeavesNothingAfterTheNextRun) {
   EXPECT_EQ(json::parse(check.out)["ok"], true);
 }
 
+// A pid no process has: a child that has exited and been reaped.
+pid_t dead_pid() {
+  const pid_t child = ::fork();
+  if (child == 0) ::_exit(0);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  return child;
+}
+
+// checks: what a `doc new --force` killed between creating its database and renaming it leaves — the
+// database with its -wal, -shm and -journal, named with its (dead) pid — is removed by the next `doc new`, and
+// by the next writer of the document (`doc add`); the kill windows are milliseconds, so this places them.
+TEST(Issue24KillLeftovers, KilledDocNewDatabaseIsRemovedByTheNextRun) {
+  TempDir dir;
+  const std::string doc = (dir / "d.hula").string();
+  const std::string left = ".d.hula.new-" + std::to_string(dead_pid()) + "-Ab12Cd";
+  for (const char* suffix : {"", "-wal", "-shm", "-journal"}) write(dir / (left + suffix), std::string(4096, 'x'));
+  ASSERT_EQ(hula({"doc", "new", "--force", doc}).exit_code, 0);
+  EXPECT_EQ(names_in(dir.path()), std::vector<std::string>{"d.hula"});
+  for (const char* suffix : {"", "-wal"}) write(dir / (left + suffix), "x");
+  write(dir / "points.csv", kPointsCsv);
+  ASSERT_EQ(hula({"doc", "add", doc, "--points", (dir / "points.csv").string()}).exit_code, 0);
+  EXPECT_EQ(names_in(dir.path()), (std::vector<std::string>{"d.hula", "points.csv"}));
+}
+
+#ifdef HULA_WITH_OCCT
+// checks: the scratch folder of a killed exchange (`hula-exchange-<dead pid>-XXXXXX` with the request holding the
+// curve data) is removed by the next export; another user's name pattern (`hula-exchange-x`) is left.
+TEST(Issue24KillLeftovers, KilledExchangeScratchIsRemovedByTheNextExport) {
+  TempDir dir;
+  const fs::path tmp = dir / "tmp";
+  fs::create_directory(tmp);
+  const fs::path left = tmp / ("hula-exchange-" + std::to_string(dead_pid()) + "-Ab12Cd");
+  fs::create_directory(left);
+  write(left / "request.json", "{}");
+  fs::create_directory(tmp / "hula-exchange-x");
+  write(dir / "points.csv", kPointsCsv);
+  ASSERT_EQ(hula({"interpolate", "--points", (dir / "points.csv").string(), "-o", (dir / "c.json").string()}).exit_code,
+            0);
+  const std::string doc = (dir / "d.hula").string();
+  ASSERT_EQ(hula({"doc", "new", doc}).exit_code, 0);
+  ASSERT_EQ(hula({"doc", "add", doc, "--curve", (dir / "c.json").string()}).exit_code, 0);
+  const char* old_tmpdir = ::getenv("TMPDIR");
+  const std::string saved = old_tmpdir != nullptr ? old_tmpdir : "";
+  ::setenv("TMPDIR", tmp.c_str(), 1);
+  const ProcessResult r = hula({"doc", "export", doc, "1", "--format", "step", "-o", (dir / "c.step").string()});
+  if (old_tmpdir != nullptr)
+    ::setenv("TMPDIR", saved.c_str(), 1);
+  else
+    ::unsetenv("TMPDIR");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(names_in(tmp), std::vector<std::string>{"hula-exchange-x"});
+}
+#endif
+
 // checks: temporaries of a live process — this test's, named with its pid — are never taken for a killed
 // run's: a `doc new` beside them leaves them.
 TEST(Issue24KillLeftovers, LiveOwnersTemporariesAreKept) {
@@ -86,7 +142,7 @@ TEST(Issue24KillLeftovers, LiveOwnersTemporariesAreKept) {
   write(dir / mine, "live");
   write(dir / ".d.hula.new-notapid", "not ours");
   ASSERT_EQ(hula({"doc", "new", (dir / "d.hula").string()}).exit_code, 0);
-  EXPECT_EQ(names_in(dir.path()), (std::vector<std::string>{".d.hula.new-notapid", mine, "d.hula"}));
+  EXPECT_EQ(names_in(dir.path()), (std::vector<std::string>{mine, ".d.hula.new-notapid", "d.hula"}));
 }
 
 // checks: a temporary named with the pid of a live process that started after the temporary was last changed

@@ -12,6 +12,7 @@
 #include <cerrno>
 #include <cstdlib>
 #include <fstream>
+#include <limits>
 #include <optional>
 #include <sstream>
 #include <vector>
@@ -32,7 +33,8 @@ std::optional<pid_t> leading_pid(std::string_view rest) {
 }
 
 // Seconds since the epoch at which process `pid` started, from /proc/<pid>/stat field 22 and the boot time
-// (/proc/stat btime); none when unknown.
+// (/proc/stat btime, whole seconds rounded down: the estimate is never later than the true start); +inf for a
+// zombie (it has ended); none when unknown.
 std::optional<double> process_start(pid_t pid) {
   std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
   std::string line;
@@ -42,8 +44,10 @@ std::optional<double> process_start(pid_t pid) {
   std::istringstream fields(line.substr(paren + 1));
   std::string field;
   unsigned long long ticks = 0;
-  for (int i = 3; i <= 22 && fields >> field; ++i)
+  for (int i = 3; i <= 22 && fields >> field; ++i) {
+    if (i == 3 && (field == "Z" || field == "X")) return std::numeric_limits<double>::infinity();
     if (i == 22) ticks = std::strtoull(field.c_str(), nullptr, 10);
+  }
   std::ifstream proc_stat("/proc/stat");
   unsigned long long boot = 0;
   while (std::getline(proc_stat, line))
@@ -57,10 +61,11 @@ std::optional<double> process_start(pid_t pid) {
 bool owner_gone(pid_t pid, const struct timespec& modified) {
   if (pid == ::getpid()) return false;
   if (::kill(pid, 0) != 0) return errno == ESRCH;
-  // A live process of that id which started after the entry's last change cannot have made it. The boot
-  // time is whole seconds: allow 2 s before calling the id reused.
+  // A process of that id which started after the entry's last change cannot have made it (the id was reused;
+  // the start estimate is never late; 1 s more absorbs a clock slewed since, so that a true owner is never
+  // taken for another); a zombie has ended.
   const std::optional<double> start = process_start(pid);
-  return start && *start > static_cast<double>(modified.tv_sec) + 2.0;
+  return start && *start > static_cast<double>(modified.tv_sec) + static_cast<double>(modified.tv_nsec) * 1e-9 + 1.0;
 }
 
 }  // namespace

@@ -19,8 +19,8 @@ namespace hula::io {
 
 /// Removes the entries of `dir` whose owner is gone: names `<prefix><pid>`
 /// followed by the end or a non-digit, owned by this user, whose process `pid`
-/// no longer exists or started after the entry was last modified (the id was
-/// reused). Entries of live owners (this process included), names that do not
+/// no longer exists, is a zombie, or started over a second after the entry
+/// was last modified (the id was reused). Entries of live owners (this process included), names that do not
 /// parse, other users' entries and symbolic links are left alone; a directory
 /// is removed with its contents (links inside it are removed, not followed).
 /// Errors (a vanished entry, an unreadable `dir`) are ignored: the cleaning is
