@@ -27,7 +27,7 @@ from . import _core
 from .errors import (CoincidentPointsError, Error, InvalidArgumentError, InvalidDegreeError, InvalidKnotsError,
                      InvalidOptionError, InvalidWeightError, IoError, NonFiniteInputError, NumericalFailureError,
                      OutOfDomainError, ParseError, ScaleOutOfRangeError, TooFewPointsError)
-from .errors import HelperFailureError, UnsupportedError
+from .errors import DocumentCorruptError, DocumentLockedError, HelperFailureError, StorageFullError, UnsupportedError
 from .document import Document
 from .optimise import OptimiseResult, Problem, builtin_problem, evaluate_builtin, from_pygmo, optimise
 from .studies import StudyResult, fair_knots, match_curvature
@@ -52,5 +52,5 @@ __all__ = [
     "Error", "InvalidArgumentError", "NonFiniteInputError", "TooFewPointsError", "CoincidentPointsError",
     "InvalidKnotsError", "InvalidDegreeError", "InvalidWeightError", "OutOfDomainError", "InvalidOptionError",
     "ParseError", "IoError", "NumericalFailureError", "ScaleOutOfRangeError", "UnsupportedError",
-    "HelperFailureError",
+    "HelperFailureError", "DocumentLockedError", "DocumentCorruptError", "StorageFullError",
 ]

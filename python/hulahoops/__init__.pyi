@@ -13,7 +13,9 @@ from .errors import (CoincidentPointsError as CoincidentPointsError, Error as Er
                      NonFiniteInputError as NonFiniteInputError, NumericalFailureError as NumericalFailureError,
                      OutOfDomainError as OutOfDomainError, ParseError as ParseError,
                      ScaleOutOfRangeError as ScaleOutOfRangeError, TooFewPointsError as TooFewPointsError)
-from .errors import HelperFailureError as HelperFailureError, UnsupportedError as UnsupportedError
+from .errors import DocumentCorruptError as DocumentCorruptError, DocumentLockedError as DocumentLockedError
+from .errors import HelperFailureError as HelperFailureError, StorageFullError as StorageFullError
+from .errors import UnsupportedError as UnsupportedError
 from .optimise import (OptimiseResult as OptimiseResult, Problem as Problem, builtin_problem as builtin_problem,
                        evaluate_builtin as evaluate_builtin, from_pygmo as from_pygmo, optimise as optimise)
 from .document import Document as Document

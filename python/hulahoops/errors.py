@@ -89,6 +89,18 @@ class HelperFailureError(Error):
     """An isolated helper process (STEP/IGES exchange) crashed, hung or ran out of memory."""
 
 
+class DocumentLockedError(IoError):
+    """A document is open for writing elsewhere, or stayed busy past SQLite's timeout."""
+
+
+class DocumentCorruptError(IoError):
+    """A document file is truncated or corrupt."""
+
+
+class StorageFullError(IoError):
+    """The disk is full or a file-size limit was reached while writing a document."""
+
+
 _BY_CODE: dict[str, type[Error]] = {
     "InvalidArgument": InvalidArgumentError,
     "NonFiniteInput": NonFiniteInputError,
@@ -105,6 +117,9 @@ _BY_CODE: dict[str, type[Error]] = {
     "ScaleOutOfRange": ScaleOutOfRangeError,
     "Unsupported": UnsupportedError,
     "HelperFailure": HelperFailureError,
+    "DocumentLocked": DocumentLockedError,
+    "DocumentCorrupt": DocumentCorruptError,
+    "StorageFull": StorageFullError,
 }
 
 

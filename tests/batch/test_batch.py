@@ -75,3 +75,57 @@ def test_resume_after_kill(tmp_path):
     assert r.returncode == 0, r.stderr
     summary = json.loads(r.stdout)
     assert summary["skipped"] == finished_before and summary["ran"] == 8 - finished_before and summary["ok"] == 8
+
+
+def live_processes_mentioning(text):
+    # pids of live (not zombie) processes whose command line holds `text`
+    found = []
+    for entry in pathlib.Path("/proc").iterdir():
+        if not entry.name.isdigit():
+            continue
+        try:
+            if text in (entry / "cmdline").read_bytes().decode(errors="replace"):
+                found.append(int(entry.name))
+        except OSError:
+            pass
+    return found
+
+
+def test_finished_line_means_recorded_and_kills_leave_nothing(tmp_path):
+    # checks a campaign SIGKILLed right after it prints an item's "finished" line has that item's record in the
+    # results file (the line came before the write), that its items die with it (only the campaign's own
+    # process is killed, not its group), and that the next run removes the study copies and scratch folder
+    # the killed ones left: three kills, then a run to the end
+    tmpdir = tmp_path / "tmp"
+    tmpdir.mkdir()
+    env = dict(os.environ, TMPDIR=str(tmpdir))
+    c = campaign(tmp_path, list(range(1, 7)), generations=60)
+    results = tmp_path / "c.results.json"
+    recorded = set()
+    for kill in range(3):
+        proc = subprocess.Popen([HULA, "batch", c, "--jobs", "2"], stdout=subprocess.DEVNULL,
+                                stderr=subprocess.PIPE, env=env)
+        finished = None
+        for line in proc.stderr:
+            if b'"finished"' in line:
+                proc.kill()
+                finished = json.loads(line)["id"]
+                break
+        proc.wait()
+        proc.stderr.close()
+        assert finished is not None, f"kill {kill}: the campaign ended without a finished line"
+        items = json.loads(results.read_text())["items"]
+        assert finished in items, f"kill {kill}: {finished} was announced finished but is not in the results"
+        recorded.add(finished)
+        # the study processes die with the campaign: within 5 s none runs on a study copy of this campaign
+        copy = f".hula-batch-{proc.pid}-"
+        deadline = time.monotonic() + 5
+        while live_processes_mentioning(copy) and time.monotonic() < deadline:
+            time.sleep(0.05)
+        assert not live_processes_mentioning(copy), f"kill {kill}: an item of the killed campaign still runs"
+    r = run([c, "--jobs", "2"], env=env)
+    assert r.returncode == 0, r.stderr
+    summary = json.loads(r.stdout)
+    assert summary["ok"] == 6 and summary["skipped"] >= len(recorded)
+    assert not list(tmp_path.glob(".hula-batch-*")), list(tmp_path.glob(".hula-batch-*"))
+    assert not list(tmpdir.iterdir()), list(tmpdir.iterdir())

@@ -35,11 +35,11 @@ void raw_sql(const std::filesystem::path& p, const char* sql) {
   sqlite3_close(db);
 }
 
-std::string error_of(const std::function<void()>& f) {
+std::string error_of(const std::function<void()>& f, Errc code = Errc::IoError) {
   try {
     f();
   } catch (const Error& e) {
-    EXPECT_EQ(e.code(), Errc::IoError);
+    EXPECT_EQ(errc_name(e.code()), errc_name(code)) << e.message();
     return e.message();
   }
   ADD_FAILURE() << "no error";
@@ -165,11 +165,12 @@ TEST(Store, CorruptTruncatedAndForeignFilesAreRefusedUntouched) {
   ASSERT_GT(good.size(), 8192u);
   struct Case {
     std::string name, bytes, expect;
+    Errc code = Errc::DocumentCorrupt;
   };
   std::string garbled = good;
   for (std::size_t i = 4096; i < garbled.size(); i += 7) garbled[i] = static_cast<char>(garbled[i] ^ 0x5a);
   const std::vector<Case> cases = {
-      {"garbage.hula", std::string(5000, 'g'), "not a HulaHoops document"},
+      {"garbage.hula", std::string(5000, 'g'), "not a HulaHoops document", Errc::IoError},
       {"empty.hula", "", "truncated"},
       {"half.hula", good.substr(0, good.size() / 2), "corrupt"},
       {"header.hula", good.substr(0, 60), "truncated"},
@@ -177,10 +178,12 @@ TEST(Store, CorruptTruncatedAndForeignFilesAreRefusedUntouched) {
   };
   for (const Case& c : cases) {
     write_all(dir / c.name, c.bytes);
-    const std::string message = error_of([&] {
-      Store s = Store::open(dir / c.name, Access::ReadWrite);
-      (void)s.load();
-    });
+    const std::string message = error_of(
+        [&] {
+          Store s = Store::open(dir / c.name, Access::ReadWrite);
+          (void)s.load();
+        },
+        c.code);
     EXPECT_NE(message.find(c.name), std::string::npos) << message;
     EXPECT_NE(message.find(c.expect), std::string::npos) << c.name << ": " << message;
     EXPECT_EQ(read_all(dir / c.name), c.bytes) << c.name;
@@ -195,7 +198,8 @@ TEST(Store, SecondWriterIsRefused) {
   testing::TempDir dir;
   Store writer = Store::create(dir / "a.hula", {}, false);
   writer.apply(one_entity_batch(1, 1, "one"));
-  const std::string message = error_of([&] { (void)Store::open(dir / "a.hula", Access::ReadWrite); });
+  const std::string message =
+      error_of([&] { (void)Store::open(dir / "a.hula", Access::ReadWrite); }, Errc::DocumentLocked);
   EXPECT_NE(message.find("open for writing by another process"), std::string::npos) << message;
   const pid_t pid = fork();
   ASSERT_GE(pid, 0);

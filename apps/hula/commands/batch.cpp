@@ -14,10 +14,14 @@
 // and get the next item's index back). Rank 0 (or the only process) writes the
 // results file atomically after every finished item, so an interrupted
 // campaign resumes where it stopped: items already in the results file are
-// skipped. A failed item is recorded with its exit code and error and the
-// rest go on; the exit code is 0 only when every item succeeded. The campaign
+// skipped; an item's "finished" line is printed once its record is in the
+// file. A failed item is recorded with its exit code and error and the rest
+// go on; the exit code is 0 only when every item succeeded. The children die
+// with the campaign (PR_SET_PDEATHSIG), and what a killed campaign left (its
+// study copies, its scratch folder) is removed by the next one. The campaign
 // and results files are io/campaign_file.hpp's; this file runs the items.
 #include <fcntl.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -30,6 +34,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -39,6 +44,7 @@
 #include "hula/core/error.hpp"
 #include "hula/io/atomic_file.hpp"
 #include "hula/io/campaign_file.hpp"
+#include "hula/io/owned_files.hpp"
 
 #if defined(HULA_WITH_MPI)
 #include <mpi.h>
@@ -58,6 +64,11 @@ struct BatchArgs {
   std::size_t jobs = 1;
 };
 
+// The names of what a campaign's process owns: `.hula-batch-<pid>-<item>.json` study copies beside the
+// study files and the `hula-batch-<pid>` scratch folder in the temporary directory (io::owned_name).
+constexpr std::string_view kStudyCopyPrefix = ".hula-batch-";
+constexpr std::string_view kScratchPrefix = "hula-batch-";
+
 // A child process running one item, its output going to two temporary files.
 struct Running {
   std::size_t item = 0;
@@ -71,19 +82,23 @@ std::string self_exe() { return fs::read_symlink("/proc/self/exe").string(); }
 Running start_item(const std::vector<io::CampaignItem>& items, std::size_t index, const fs::path& scratch) {
   const io::CampaignItem& item = items[index];
   const Json study = io::campaign_item_study(item);
-  const std::string tag = std::to_string(::getpid()) + "-" + std::to_string(index);
+  const std::string tag = io::owned_name("") + "-" + std::to_string(index);
   Running r;
   r.item = index;
-  r.study_copy = item.study.parent_path() / (".hula-batch-" + tag + ".json");
+  r.study_copy = item.study.parent_path() / (io::owned_name(kStudyCopyPrefix) + "-" + std::to_string(index) + ".json");
   r.out = scratch / (tag + ".out");
   r.err = scratch / (tag + ".err");
   io::write_file_atomically(r.study_copy, study.dump());
   const std::string exe = self_exe();
   const std::string kind = study.at("study").get_ref<const std::string&>();
   r.start = std::chrono::steady_clock::now();
+  const pid_t parent = ::getpid();
   r.pid = ::fork();
   if (r.pid < 0) throw Error(Errc::IoError, "fork failed for item " + item.id, {.field = "jobs"});
   if (r.pid == 0) {
+    // The item dies with the campaign: a killed campaign leaves no study running on (it is rerun on resume).
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent) ::_exit(127);
     const int out = ::open(r.out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     const int err = ::open(r.err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (out < 0 || err < 0) ::_exit(127);
@@ -130,6 +145,7 @@ class Results {
     done_[j["id"].get_ref<const std::string&>()] = j;
     if (j["status"] != "ok") ++failed_;
     ++finished_;
+    write();  // before the line: a kill right after "finished" must not lose the item's record
     std::cerr << Json{{"finished", finished_},
                       {"id", j["id"]},
                       {"status", j["status"]},
@@ -137,7 +153,6 @@ class Results {
                       {"seconds", j["seconds"]}}
                      .dump()
               << '\n';
-    write();
   }
   void write() const { io::write_file_atomically(path_, io::campaign_results_text(campaign_, items_, done_)); }
   [[nodiscard]] Json summary(double seconds, int ranks) const {
@@ -189,7 +204,13 @@ int run_batch(const BatchArgs& a) {
       a.results ? fs::path(*a.results) : fs::path(campaign).replace_extension(".results.json");
   if (a.jobs == 0) throw Error(Errc::InvalidOption, "jobs = 0 must be >= 1", {.field = "jobs"});
   io::check_output_path(results_path, a.results ? "--results" : "path");  // before any item runs
-  const fs::path scratch = fs::temp_directory_path() / ("hula-batch-" + std::to_string(::getpid()));
+  // What killed campaigns left: their scratch folders, and their study copies beside this one's studies.
+  const fs::path temp = fs::temp_directory_path();
+  io::remove_orphaned(temp, kScratchPrefix);
+  std::set<fs::path> study_dirs;
+  for (const io::CampaignItem& item : items) study_dirs.insert(item.study.parent_path());
+  for (const fs::path& dir : study_dirs) io::remove_orphaned(dir.empty() ? fs::path(".") : dir, kStudyCopyPrefix);
+  const fs::path scratch = temp / io::owned_name(kScratchPrefix);
   fs::create_directories(scratch);
   const auto start = std::chrono::steady_clock::now();
   int rank = 0, ranks = 1;

@@ -47,8 +47,8 @@ void add_study_options(CLI::App* sub, StudyArgs& args, bool has_optimiser) {
                      "Worker threads, 0 = all cores (overrides the file's \"threads\"; results do not depend on it)");
   if (has_optimiser)
     add_real_option(sub, "--time", args.time, 0.0, std::numeric_limits<double>::max(), true,
-                    "Wall-time limit of the optimiser in seconds, > 0 (default: none); ends with the best so far, "
-                    "as Ctrl-C does");
+                    "Wall-time limit of the whole run in seconds (every optimiser and round), > 0 (default: none); "
+                    "ends with the best so far, as Ctrl-C does");
   sub->add_option("--log", args.log, "Write the per-generation run log here (CSV if it ends in .csv, else JSON)");
   sub->add_option("--svg", args.svg, "Write the before/after figures and convergence graphs into this directory");
 }

@@ -38,6 +38,12 @@ std::string_view errc_name(Errc code) noexcept {
       return "Unsupported";
     case Errc::HelperFailure:
       return "HelperFailure";
+    case Errc::DocumentLocked:
+      return "DocumentLocked";
+    case Errc::DocumentCorrupt:
+      return "DocumentCorrupt";
+    case Errc::StorageFull:
+      return "StorageFull";
   }
   return "Unknown";
 }

@@ -33,7 +33,13 @@ enum class Errc : std::uint8_t {
   ScaleOutOfRange,   ///< model coordinates too large or too small to handle
   Unsupported,       ///< the selected kernel backend has no such operation (where.field names it)
   HelperFailure,     ///< an isolated helper process (STEP/IGES exchange) crashed, hung or ran out of memory
+  DocumentLocked,    ///< a document is held by another writer, or SQLite stayed busy/locked past its timeout
+  DocumentCorrupt,   ///< a document file is corrupt or truncated
+  StorageFull,       ///< the disk is full or a file-size limit was reached while writing
 };
+
+/// The last Errc value (for iterating over every code).
+inline constexpr Errc kLastErrc = Errc::StorageFull;
 
 /// The stable name of a code, e.g. "InvalidKnots".
 [[nodiscard]] std::string_view errc_name(Errc code) noexcept;

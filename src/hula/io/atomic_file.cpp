@@ -6,7 +6,6 @@
 // the target's directory, fsync, lstat re-check, rename, directory fsync.
 #include "hula/io/atomic_file.hpp"
 
-#include <dirent.h>
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -22,6 +21,7 @@
 #include <vector>
 
 #include "hula/core/error.hpp"
+#include "hula/io/owned_files.hpp"
 
 namespace hula::io {
 namespace {
@@ -143,36 +143,6 @@ class FdStreambuf : public std::streambuf {
 
 constexpr std::string_view kTempInfix = ".tmp-";
 
-// Removes `.<name>.tmp-<pid>-XXXXXX` files in `dir` whose writer process no
-// longer exists (a write killed before its rename). Temporaries of live
-// processes, and names that do not parse, are left alone.
-void remove_stale_temporaries(const std::filesystem::path& dir, const std::string& name) {
-  const std::string prefix = "." + name + std::string(kTempInfix);
-  DIR* d = ::opendir(dir.c_str());
-  if (d == nullptr) return;
-  std::vector<std::string> stale;
-  while (const dirent* e = ::readdir(d)) {
-    const std::string_view entry(e->d_name);
-    if (entry.size() <= prefix.size() || entry.substr(0, prefix.size()) != prefix) continue;
-    const std::string_view rest = entry.substr(prefix.size());
-    const std::size_t dash = rest.find('-');
-    if (dash == 0 || dash == std::string_view::npos || rest.size() - dash - 1 != 6) continue;
-    long long pid = 0;
-    bool digits = true;
-    for (const char c : rest.substr(0, dash)) {
-      if (c < '0' || c > '9' || pid > 100000000) {
-        digits = false;
-        break;
-      }
-      pid = pid * 10 + (c - '0');
-    }
-    if (!digits || pid <= 0 || pid == static_cast<long long>(::getpid())) continue;
-    if (::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) stale.emplace_back(entry);
-  }
-  ::closedir(d);
-  for (const std::string& s : stale) (void)::unlinkat(AT_FDCWD, (dir / s).c_str(), 0);
-}
-
 std::filesystem::path directory_of(const std::filesystem::path& path) {
   return path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
 }
@@ -218,6 +188,17 @@ std::string read_text_file(const std::filesystem::path& path, std::size_t max_by
     contents.append(buffer.data(), static_cast<std::size_t>(n));
   }
   return contents;
+}
+
+void check_readable_size(std::size_t bytes, const std::filesystem::path& path, std::string_view option,
+                         std::size_t max_bytes) {
+  if (bytes <= max_bytes) return;
+  const std::string shown = is_std_stream(path) ? std::string("standard output") : "'" + path.string() + "'";
+  throw Error(Errc::InvalidArgument,
+              "not writing " + shown + ": the file would be " + std::to_string(bytes) + " bytes, over the " +
+                  std::to_string(max_bytes) +
+                  "-byte limit of the readers of this kind of file (hula could not read it back)",
+              ErrorWhere{.field = std::string(option)});
 }
 
 void check_output_path(const std::filesystem::path& path, std::string_view option) {
@@ -267,8 +248,9 @@ OutputFile::OutputFile(const std::filesystem::path& path, std::string_view optio
     check_output_path(path, option);
     const std::filesystem::path dir = directory_of(path);
     const std::string name = path.filename().string();
-    remove_stale_temporaries(dir, name);
-    s.temp = (dir / ("." + name + std::string(kTempInfix) + std::to_string(::getpid()) + "-XXXXXX")).string();
+    // What a killed writer of this target left (its pid is gone) goes; a live writer's temporary stays.
+    remove_orphaned(dir, "." + name + std::string(kTempInfix));
+    s.temp = (dir / (owned_name("." + name + std::string(kTempInfix)) + "-XXXXXX")).string();
     s.fd = ::mkstemp(s.temp.data());
     if (s.fd < 0) {
       const int err = errno;

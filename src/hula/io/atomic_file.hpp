@@ -44,6 +44,22 @@ inline constexpr std::size_t kMaxInputBytes = std::size_t{64} << 20;
 ///   longer than `max_bytes` (the cap is named), a read error; ErrorWhere.field is "path"
 [[nodiscard]] std::string read_text_file(const std::filesystem::path& path, std::size_t max_bytes = kMaxInputBytes);
 
+/// Largest curve or point file read (1 GiB): what `hula` writes, `hula` reads. An
+/// interpolated curve of 1,000,000 points is a ~70 MB file, a NURBS of as many
+/// poles ~100 MB. Writers of these files refuse (check_readable_size) rather than
+/// write a file above this limit.
+inline constexpr std::size_t kMaxGeometryInputBytes = std::size_t{1} << 30;
+
+/// Checks, before a file is written, that readers will take it back.
+/// @param bytes the size of the text about to be written
+/// @param path the output path, for the message
+/// @param option how the user gave the path ("--output")
+/// @param max_bytes the readers' limit for this kind of file
+/// @throws hula::Error(Errc::InvalidArgument) naming the path, the size and the limit when
+///   `bytes` > `max_bytes`; ErrorWhere.field is `option`. Nothing is written.
+void check_readable_size(std::size_t bytes, const std::filesystem::path& path, std::string_view option,
+                         std::size_t max_bytes = kMaxGeometryInputBytes);
+
 /// Checks that `path` can be written before a computation starts: `-`, or a
 /// name in an existing, writable directory that is either absent or a regular
 /// file (not a symlink, directory, device, FIFO or socket).

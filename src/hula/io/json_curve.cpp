@@ -302,7 +302,9 @@ curve::Curve parse_curve_json(std::string_view text) {
   return curve_from_json(json::parse_json_text(text, "curve file"));
 }
 
-curve::Curve read_curve_file(const std::filesystem::path& path) { return parse_curve_json(read_text_file(path)); }
+curve::Curve read_curve_file(const std::filesystem::path& path) {
+  return parse_curve_json(read_text_file(path, kMaxGeometryInputBytes));
+}
 
 namespace {
 struct DataWriter {
@@ -364,7 +366,9 @@ Json curve_to_json(const curve::Curve& curve) {
 std::string to_file_text(const Json& document) { return format_json(document); }
 
 void write_curve_file(const std::filesystem::path& path, const curve::Curve& curve) {
-  write_file_atomically(path, to_file_text(curve_to_json(curve)));
+  const std::string text = to_file_text(curve_to_json(curve));
+  check_readable_size(text.size(), path, "path");
+  write_file_atomically(path, text);
 }
 
 }  // namespace hula::io

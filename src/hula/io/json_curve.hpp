@@ -95,7 +95,7 @@ inline constexpr int kCurveFormatVersion = 1;
 [[nodiscard]] curve::Curve curve_from_json(const Json& document);
 /// Parses curve-file text; as curve_from_json, plus ParseError with line/column for bad JSON.
 [[nodiscard]] curve::Curve parse_curve_json(std::string_view text);
-/// Reads a curve file from disk.
+/// Reads a curve file from disk (at most kMaxGeometryInputBytes, the limit write_curve_file keeps to).
 /// @throws hula::Error(Errc::IoError) naming the path, or as parse_curve_json
 [[nodiscard]] curve::Curve read_curve_file(const std::filesystem::path& path);
 
@@ -112,6 +112,8 @@ inline constexpr int kCurveFormatVersion = 1;
 /// numbers on one line, final newline).
 [[nodiscard]] std::string to_file_text(const Json& document);
 /// Writes a curve file (curve_to_json), atomically.
+/// @throws hula::Error(Errc::InvalidArgument) naming the path, before writing, when the text would be
+///   longer than kMaxGeometryInputBytes (read_curve_file could not read it back)
 /// @throws hula::Error(Errc::IoError) naming the path
 void write_curve_file(const std::filesystem::path& path, const curve::Curve& curve);
 

@@ -226,7 +226,7 @@ PointSet parse_points(std::string_view text) {
 }
 
 PointSet read_points_file(const std::filesystem::path& path) {
-  const std::string text = read_text_file(path);
+  const std::string text = read_text_file(path, kMaxGeometryInputBytes);
   try {
     return parse_points(text);
   } catch (const Error& e) {

@@ -61,7 +61,8 @@ struct PointSet {
 /// Parses either form (JSON when the first non-blank character is '[').
 [[nodiscard]] PointSet parse_points(std::string_view text);
 
-/// Reads a point file in either form; any extension (.csv, .txt, .dat, .xyz, .json, …).
+/// Reads a point file in either form; any extension (.csv, .txt, .dat, .xyz, .json, …), of at most
+/// kMaxGeometryInputBytes.
 /// @throws hula::Error(Errc::IoError) naming the path, or as parse_points with the path
 ///   before the message ("wing.dat: line 4, column 3: …")
 [[nodiscard]] PointSet read_points_file(const std::filesystem::path& path);

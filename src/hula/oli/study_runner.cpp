@@ -23,6 +23,8 @@ struct Progress {
   const StudyRunOptions& options;
   studies::StudyReport& report;
   std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+  // One deadline for the whole run, whatever optimisers and rounds it makes.
+  optim::Deadline deadline = optim::deadline_after(options.wall_time_seconds);
   std::size_t evaluations_before = 0;
 
   optim::GenerationCallback callback() {
@@ -39,11 +41,11 @@ struct Progress {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
   void apply(optim::StopCriteria& stop) const {
-    stop.wall_time_seconds = options.wall_time_seconds;
+    stop.deadline = deadline;
     stop.cancel = options.cancel;
   }
   void apply(studies::StudyHeader& header) {
-    header.wall_time_seconds = options.wall_time_seconds;
+    header.deadline = deadline;
     header.cancel = options.cancel;
     header.on_generation = callback();
   }
@@ -66,7 +68,7 @@ void run_match_torsion(const io::StudyDocument& doc, const io::PathResolver& res
                        StudyOutcome& out) {
   io::TorsionMatchStudyFile file = io::torsion_match_study_from_json(doc, resolver);
   studies::TorsionMatchStudy& study = file.study;
-  study.settings.wall_time_seconds = progress.options.wall_time_seconds;
+  study.settings.deadline = progress.deadline;
   study.settings.cancel = progress.options.cancel;
   study.settings.on_generation = progress.callback();
   auto match = std::make_shared<const studies::CurvatureMatch>(study.setup);
@@ -91,7 +93,7 @@ void run_fair_knots(const io::StudyDocument& doc, Progress& progress, StudyOutco
     progress.apply(run->stop);
     run->on_generation = progress.callback();
   }
-  study.deterministic.wall_time_seconds = progress.options.wall_time_seconds;
+  study.deterministic.deadline = progress.deadline;
   study.deterministic.cancel = progress.options.cancel;
   studies::FairKnotsOutcome outcome =
       studies::run_fair_knots_study(study, progress.options.keep_log ? &out.log : nullptr);

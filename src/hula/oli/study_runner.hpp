@@ -53,8 +53,10 @@ struct StudyRunOptions {
   /// Checked between generations (and simplex iterations); once set the optimisers stop with their best
   /// so far, which is the result. Not owned; must outlive the run. Default none.
   const optim::CancellationToken* cancel = nullptr;
-  /// Wall-clock limit of each optimiser run in seconds, > 0; 0 = none (default). The run then depends on
-  /// the machine: leave it at 0 when reproducibility matters.
+  /// Wall-clock limit of the whole run in seconds, from the start of run_study: every optimiser and every
+  /// re-centred round shares this one deadline and ends with its best so far once it passes (a `--time`
+  /// of 0.3 s on a study of 11 rounds is 0.3 s, not 11 × 0.3 s). 0 = none (default). The run then depends
+  /// on the machine: leave it at 0 when reproducibility matters.
   double wall_time_seconds = 0.0;
   /// Collect every individual of every generation into StudyOutcome::log. Default true (a document stores
   /// it).

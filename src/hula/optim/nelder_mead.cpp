@@ -74,6 +74,7 @@ NelderMeadResult nelder_mead(const ObjectiveFn& f, std::span<const double> start
   const auto started = std::chrono::steady_clock::now();
   const auto stop_requested = [&] {
     if (options.cancel != nullptr && options.cancel->is_cancelled()) return true;
+    if (deadline_passed(options.deadline)) return true;
     return options.wall_time_seconds > 0.0 &&
            std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() >=
                options.wall_time_seconds;

@@ -43,6 +43,9 @@ struct NelderMeadOptions {
   /// every iteration. The run ends with the best point so far and
   /// Termination::Cancelled. Default none.
   const CancellationToken* cancel = nullptr;
+  /// A deadline shared with the other runs of a command (its `--time`); the run ends with the best
+  /// point so far and Termination::WallTime once it passes. Default none.
+  Deadline deadline{};
   /// @throws hula::Error(Errc::InvalidOption) naming the field and its value.
   void validate() const;
 };

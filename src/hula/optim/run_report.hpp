@@ -8,12 +8,29 @@
 #pragma once
 
 #include <atomic>
+#include <chrono>
 #include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
 
 namespace hula::optim {
+
+/// A point on the monotonic clock by which a whole command must end (`--time S` of a command that runs
+/// several optimisers or rounds: every run it starts shares one deadline); unset = none.
+using Deadline = std::optional<std::chrono::steady_clock::time_point>;
+
+/// The deadline `seconds` from now, or none for 0.
+[[nodiscard]] inline Deadline deadline_after(double seconds) {
+  if (!(seconds > 0.0)) return std::nullopt;
+  return std::chrono::steady_clock::now() +
+         std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(seconds));
+}
+
+/// True once `deadline` is set and has passed.
+[[nodiscard]] inline bool deadline_passed(const Deadline& deadline) noexcept {
+  return deadline && std::chrono::steady_clock::now() >= *deadline;
+}
 
 /// A flag another thread (a UI, a Ctrl-C handler) sets to end a run cleanly.
 /// The algorithm checks it between generations and returns the best so far
@@ -75,6 +92,9 @@ struct StopCriteria {
   double wall_time_seconds = 0.0;
   /// Optional cancellation token, not owned; must outlive the run. Default none.
   const CancellationToken* cancel = nullptr;
+  /// A deadline shared with the other runs of a command (its `--time`): the run ends with
+  /// Termination::WallTime once it passes, whenever the run started. Default none.
+  Deadline deadline{};
 
   /// @throws hula::Error(Errc::InvalidOption) if target is not finite,
   ///   stagnation_tolerance is negative or not finite, or wall_time_seconds

@@ -77,6 +77,12 @@ unsigned http_status(Errc code) noexcept {
       return 422;
     case Errc::Unsupported:  // the document's kernel backend has no such operation
       return 501;
+    case Errc::DocumentCorrupt:  // the named document cannot be read as a document
+      return 422;
+    case Errc::DocumentLocked:  // another writer holds it (a CLI `doc run`); retry later
+      return 423;
+    case Errc::StorageFull:
+      return 507;
     case Errc::IoError:
       return 500;
   }

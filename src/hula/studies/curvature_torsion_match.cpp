@@ -96,7 +96,7 @@ TorsionMatchResult run_once(const CurvatureMatch& match, const TorsionMatchSetti
   options.run.seed = seed;
   options.run.threads = threads;
   options.run.stop.generations = settings.generations;
-  options.run.stop.wall_time_seconds = settings.wall_time_seconds;
+  options.run.stop.deadline = settings.deadline;
   options.run.stop.cancel = settings.cancel;
   match.setup().validity.apply(options.run);
   options.run.on_generation = [&](const optim::GenerationLog& g) {

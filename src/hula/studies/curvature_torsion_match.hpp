@@ -58,8 +58,9 @@ struct TorsionMatchSettings {
   std::size_t max_recentres = 0;
   /// The map of both objectives around the best compromise, when asked for.
   std::optional<MatchMapSettings> map{};
-  /// Wall-clock limit of the NSGA-II run in seconds, 0 = none (`--time`; not a file member).
-  double wall_time_seconds = 0.0;
+  /// The run's deadline, shared by every round: each ends with its front so far once it passes
+  /// (`--time`; not a file member). Default none.
+  optim::Deadline deadline{};
   /// Cancellation token (SIGINT), not owned; the run ends with its front so far. Not a file member.
   const optim::CancellationToken* cancel = nullptr;
   /// Called with each NSGA-II generation (progress of a server job). Not a file member. Default none.

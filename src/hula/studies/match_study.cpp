@@ -48,7 +48,7 @@ optim::GaResult run_ga(const CurvatureMatch& match, const MatchStudy& study, Mat
   run.seed = study.header.seed;
   run.threads = study.header.threads;
   run.stop.generations = g.generations;
-  run.stop.wall_time_seconds = study.header.wall_time_seconds;
+  run.stop.deadline = study.header.deadline;
   run.stop.cancel = study.header.cancel;
   if (g.seed_start) run.initial = {match.start_variables()};
   match.setup().validity.apply(run);

@@ -21,9 +21,9 @@ struct StudyHeader {
   std::uint64_t seed = 1;
   /// Worker threads (0 = all cores). Results never depend on it. Default 1.
   std::size_t threads = 1;
-  /// Wall-clock limit of the study's optimiser in seconds, 0 = none; the run
-  /// ends with its best so far. Set by the caller (`--time`), not a file member.
-  double wall_time_seconds = 0.0;
+  /// The run's deadline (`--time`): every optimiser and every re-centred round of the study ends
+  /// with its best so far once it passes. Set by the caller, not a file member. Default none.
+  optim::Deadline deadline{};
   /// Cancellation token (SIGINT) the optimiser checks between generations, not
   /// owned. Set by the caller, not a file member. Default none.
   const optim::CancellationToken* cancel = nullptr;

@@ -19,6 +19,7 @@
 #include "hula/core/error.hpp"
 #include "hula/io/atomic_file.hpp"
 #include "hula/io/json_read.hpp"
+#include "hula/io/owned_files.hpp"
 #include "hula/oli/exchange/detail/helper_process.hpp"
 #include "hula/oli/exchange/detail/protocol.hpp"
 
@@ -30,8 +31,12 @@ namespace fs = std::filesystem;
 // A directory private to one exchange, removed with its contents.
 class ScratchDir {
  public:
+  // `hula-exchange-<pid>-XXXXXX`: the folders of exchanges whose process was killed (its pid is gone) are
+  // removed by the next one.
   ScratchDir() {
-    std::string tmpl = (fs::temp_directory_path() / "hula-exchange-XXXXXX").string();
+    const fs::path temp = fs::temp_directory_path();
+    io::remove_orphaned(temp, kPrefix);
+    std::string tmpl = (temp / (io::owned_name(kPrefix) + "-XXXXXX")).string();
     if (::mkdtemp(tmpl.data()) == nullptr)
       throw Error(Errc::IoError, std::string("cannot create a temporary directory: ") + std::strerror(errno),
                   {.field = "path"});
@@ -46,6 +51,7 @@ class ScratchDir {
   [[nodiscard]] const fs::path& path() const { return path_; }
 
  private:
+  static constexpr std::string_view kPrefix = "hula-exchange-";
   fs::path path_;
 };
 

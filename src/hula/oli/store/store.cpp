@@ -21,6 +21,7 @@
 #include <utility>
 
 #include "hula/core/error.hpp"
+#include "hula/io/owned_files.hpp"
 
 namespace hula::oli::store {
 namespace {
@@ -35,8 +36,24 @@ static_assert(kMigrations.size() == kSchemaVersion, "one migration per schema ve
 // recovery, checkpoints) before reporting the file busy.
 constexpr int kBusyTimeoutMs = 2000;
 
-[[noreturn]] void fail(const std::filesystem::path& path, const std::string& what) {
-  throw Error(Errc::IoError, path.string() + ": " + what, {.field = "path"});
+[[noreturn]] void fail(const std::filesystem::path& path, const std::string& what, Errc code = Errc::IoError) {
+  throw Error(code, path.string() + ": " + what, {.field = "path"});
+}
+
+// The code of an SQLite failure: locked or busy, corrupt, full, or another I/O error.
+Errc sqlite_errc(int rc) {
+  switch (rc & 0xff) {
+    case SQLITE_BUSY:
+    case SQLITE_LOCKED:
+      return Errc::DocumentLocked;
+    case SQLITE_CORRUPT:
+    case SQLITE_NOTADB:
+      return Errc::DocumentCorrupt;
+    case SQLITE_FULL:
+      return Errc::StorageFull;
+    default:
+      return Errc::IoError;
+  }
 }
 
 std::string sqlite_reason(sqlite3* db, int rc) {
@@ -85,7 +102,8 @@ LockFd lock_for_writing(const std::filesystem::path& path) {
     if (errno == EWOULDBLOCK)
       fail(path,
            "the document is open for writing by another process (or another document in this one); "
-           "close it there first");
+           "close it there first",
+           Errc::DocumentLocked);
     fail(path, std::string("cannot lock: ") + std::strerror(errno));
   }
   return lock;
@@ -101,7 +119,8 @@ void check_header(const std::filesystem::path& path) {
   ::close(fd);
   if (got < 0) fail(path, std::string("cannot read: ") + std::strerror(errno));
   if (got < static_cast<ssize_t>(header.size()))
-    fail(path, "not a HulaHoops document (the file is truncated: " + std::to_string(got) + " bytes)");
+    fail(path, "not a HulaHoops document (the file is truncated: " + std::to_string(got) + " bytes)",
+         Errc::DocumentCorrupt);
   if (std::memcmp(header.data(), "SQLite format 3", 16) != 0) fail(path, "not a HulaHoops document (not SQLite)");
   auto be32 = [&](std::size_t at) {
     return static_cast<std::uint32_t>(header[at]) << 24 | static_cast<std::uint32_t>(header[at + 1]) << 16 |
@@ -217,7 +236,7 @@ struct Store::Impl {
 
   void check(int rc, std::string_view what) const {
     if (rc != SQLITE_OK && rc != SQLITE_DONE && rc != SQLITE_ROW)
-      fail(path, std::string(what) + ": " + sqlite_reason(db, rc));
+      fail(path, std::string(what) + ": " + sqlite_reason(db, rc), sqlite_errc(rc));
   }
 
   sqlite3_stmt* prepare(std::string_view sql) const {
@@ -242,7 +261,7 @@ struct Store::Impl {
       sqlite3_free(message);
       if ((rc & 0xff) == SQLITE_CORRUPT || (rc & 0xff) == SQLITE_NOTADB || (rc & 0xff) == SQLITE_FULL)
         reason = sqlite_reason(db, rc);
-      fail(path, std::string(what) + ": " + reason);
+      fail(path, std::string(what) + ": " + reason, sqlite_errc(rc));
     }
   }
 
@@ -255,9 +274,35 @@ struct Store::Impl {
     return value;
   }
 
-  void connect(int flags) {
-    const int rc = sqlite3_open_v2(path.c_str(), &db, flags | SQLITE_OPEN_NOMUTEX, nullptr);
-    if (rc != SQLITE_OK) fail(path, "cannot open: " + sqlite_reason(db, rc));
+  // Opens `path` for reading. In a directory this process cannot write (a read-only mount) SQLite cannot
+  // create the -shm a WAL reader needs; no writer can create one there either, so, unless a -wal is left
+  // over from a writer, the file cannot change and is opened immutable (no locks, no -shm).
+  void connect_read_only() {
+    const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+    std::error_code ec;
+    const bool wal = std::filesystem::exists(path.string() + "-wal", ec);
+    if (wal || ::access(dir.c_str(), W_OK) == 0) {
+      connect(SQLITE_OPEN_READONLY);
+      return;
+    }
+    std::string uri = "file:";
+    for (const char c : std::filesystem::absolute(path, ec).string()) {
+      if (c == '%' || c == '?' || c == '#') {
+        constexpr char kHex[] = "0123456789ABCDEF";
+        uri += '%';
+        uri += kHex[(static_cast<unsigned char>(c) >> 4) & 0xF];
+        uri += kHex[static_cast<unsigned char>(c) & 0xF];
+      } else {
+        uri += c;
+      }
+    }
+    uri += "?immutable=1";
+    connect(SQLITE_OPEN_READONLY | SQLITE_OPEN_URI, uri.c_str());
+  }
+
+  void connect(int flags, const char* name = nullptr) {
+    const int rc = sqlite3_open_v2(name != nullptr ? name : path.c_str(), &db, flags | SQLITE_OPEN_NOMUTEX, nullptr);
+    if (rc != SQLITE_OK) fail(path, "cannot open: " + sqlite_reason(db, rc), sqlite_errc(rc));
     sqlite3_extended_result_codes(db, 1);
     sqlite3_busy_timeout(db, kBusyTimeoutMs);
   }
@@ -342,7 +387,10 @@ Store Store::create(const std::filesystem::path& path, const DocumentRow& row, b
   // Build the new file under a temporary name in the same directory, then
   // rename it into place: a failure at any point leaves `path` as it was.
   const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
-  std::string pattern = (dir / ("." + path.filename().string() + ".new-XXXXXX")).string();
+  // `.NAME.new-<pid>-XXXXXX` with its -wal/-shm/-journal: what a killed `doc new` left (its pid is gone) goes.
+  const std::string temp_prefix = "." + path.filename().string() + ".new-";
+  io::remove_orphaned(dir, temp_prefix);
+  std::string pattern = (dir / (io::owned_name(temp_prefix) + "-XXXXXX")).string();
   const int fd = ::mkstemp(pattern.data());
   if (fd < 0) fail(path, std::string("cannot create the file: ") + std::strerror(errno));
   ::close(fd);
@@ -402,9 +450,17 @@ Store Store::open(const std::filesystem::path& path, Access access) {
   auto impl = std::make_unique<Impl>();
   impl->path = path;
   impl->access = access;
-  if (access == Access::ReadWrite) impl->lock = lock_for_writing(path);
+  if (access == Access::ReadWrite) {
+    impl->lock = lock_for_writing(path);
+    // A writer also clears what a killed `doc new --force` of this name left beside it.
+    io::remove_orphaned(path.has_parent_path() ? path.parent_path() : std::filesystem::path("."),
+                        "." + path.filename().string() + ".new-");
+  }
   check_header(path);
-  impl->connect(access == Access::ReadWrite ? SQLITE_OPEN_READWRITE : SQLITE_OPEN_READONLY);
+  if (access == Access::ReadWrite)
+    impl->connect(SQLITE_OPEN_READWRITE);
+  else
+    impl->connect_read_only();
   // SQLite opens a write-protected file read-only without saying so: refuse it here instead.
   if (access == Access::ReadWrite && sqlite3_db_readonly(impl->db, "main") == 1)
     fail(path, "cannot open for writing: the file is write-protected");

@@ -124,6 +124,7 @@ std::optional<Termination> RunControl::check(std::size_t generation, std::size_t
   if (stop_.target && progress <= *stop_.target) return Termination::TargetReached;
   if (stop_.stagnation_generations > 0 && stagnant_ >= stop_.stagnation_generations) return Termination::Stagnation;
   if (stop_.wall_time_seconds > 0.0 && seconds() >= stop_.wall_time_seconds) return Termination::WallTime;
+  if (deadline_passed(stop_.deadline)) return Termination::WallTime;
   if (stop_.cancel != nullptr && stop_.cancel->is_cancelled()) return Termination::Cancelled;
   return std::nullopt;
 }
@@ -146,7 +147,9 @@ void RunControl::finish(RunReport& report, Termination reason, std::size_t gener
       report.message = "no improvement for " + std::to_string(stop_.stagnation_generations) + " generations";
       break;
     case Termination::WallTime:
-      report.message = "wall time " + format_number(stop_.wall_time_seconds) + " s elapsed";
+      report.message = stop_.wall_time_seconds > 0.0 && seconds() >= stop_.wall_time_seconds
+                           ? "wall time " + format_number(stop_.wall_time_seconds) + " s elapsed"
+                           : std::string("the run's wall-time deadline passed");
       break;
     case Termination::Cancelled:
       report.message = "cancelled after " + std::to_string(generation) + " generations";

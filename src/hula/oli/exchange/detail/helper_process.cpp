@@ -2,6 +2,7 @@
 #include "hula/oli/exchange/detail/helper_process.hpp"
 
 #include <fcntl.h>
+#include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -51,6 +52,7 @@ HelperOutcome run_helper(const std::filesystem::path& program, const std::vector
   const rlimit as_limit{static_cast<rlim_t>(memory_limit), static_cast<rlim_t>(memory_limit)};
   const rlimit no_core{0, 0};
 
+  const pid_t parent = ::getpid();
   const pid_t pid = ::fork();
   if (pid < 0) {
     const int e = errno;
@@ -59,6 +61,10 @@ HelperOutcome run_helper(const std::filesystem::path& program, const std::vector
                 {.field = "helper"});
   }
   if (pid == 0) {
+    // The helper dies with its parent: a killed `hula` must not leave it running (and writing the output
+    // after its parent is gone); if the parent died before the request was made, the helper does not start.
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent) ::_exit(127);
     ::setpgid(0, 0);
     ::setrlimit(RLIMIT_AS, &as_limit);
     ::setrlimit(RLIMIT_CORE, &no_core);

@@ -12,7 +12,7 @@ namespace {
 
 // The Errc whose stable name is `name` (errc_name's inverse), or nullopt.
 std::optional<Errc> errc_from_name(std::string_view name) {
-  for (int i = 0; i <= static_cast<int>(Errc::HelperFailure); ++i) {
+  for (int i = 0; i <= static_cast<int>(kLastErrc); ++i) {
     const auto code = static_cast<Errc>(i);
     if (errc_name(code) == name) return code;
   }
