@@ -5,7 +5,7 @@
 
 import uPlot from 'uplot';
 import type { App } from '../app';
-import { handlesOf } from '../app';
+import { handlesOf } from '../store/curves';
 import type {
   CurveFile,
   GenerationEvent,

@@ -3,7 +3,7 @@
 // badges), history; and the dialogs (law curve, natural equations, open/new, help).
 
 import type { App } from '../app';
-import { ALL_FINS, SPACE_FINS, handlesOf } from '../app';
+import { ALL_FINS, SPACE_FINS, handlesOf } from '../store/curves';
 import type { CurveFile, EndCondition, FinKind, Parameterisation } from '../api/types';
 import { el } from './dom';
 import { FIN_COLOURS } from '../viewport/viewports';
