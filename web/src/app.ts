@@ -16,6 +16,7 @@ import type {
   Job,
 } from './api/types';
 import { DocumentStore } from './store/store';
+import { snapTargets } from './controller/snap';
 import { SPACE_FINS, combescureSize, handlesOf, type ViewSettings } from './store/curves';
 import {
   curveColour,
@@ -408,29 +409,15 @@ export class App {
       const m = this.viewports.viewProj(view);
       const at = projectToScreen(p, m, w, h);
       if (at) {
-        const points: Vec3[] = [];
-        const pointOwner: string[] = [];
-        const polylines: Vec3[][] = [];
-        const lineOwner: string[] = [];
-        for (const [label, e] of this.store.entities) {
-          if (!e.curve || this.isHidden(label)) continue;
-          handlesOf(e.curve).forEach((q, i) => {
-            if (exclude?.label === label && exclude.index === i) return;
-            points.push(q);
-            pointOwner.push(label);
-          });
-          const a = this.analysisOf(label);
-          if (a && a.points.length > 1 && exclude?.label !== label) {
-            const line = a.points.map(toVec3);
-            points.push(line[0]!, line[line.length - 1]!);
-            pointOwner.push(label, label);
-            polylines.push(line);
-            lineOwner.push(label);
-          }
-        }
-        const hit = snapToObjects(at, { points, polylines }, m, w, h, 8);
+        const targets = snapTargets(
+          this.store.entities,
+          (l) => this.isHidden(l),
+          (l) => this.analysisOf(l)?.points,
+          exclude,
+        );
+        const hit = snapToObjects(at, targets, m, w, h, 8);
         if (hit) {
-          const owner = (hit.kind === 'point' ? pointOwner : lineOwner)[hit.index]!;
+          const owner = (hit.kind === 'point' ? targets.pointOwner : targets.lineOwner)[hit.index]!;
           this.lastSnap = { kind: hit.kind, label: owner };
           return hit.point;
         }
