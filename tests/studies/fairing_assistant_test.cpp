@@ -142,8 +142,9 @@ TEST(FairingAssistant, HoldEndsKeepsEndPointsAndTangents) {
       EXPECT_EQ(r.faired_points.back(), r.data_points.back());
       for (const bool end : {false, true}) {
         EXPECT_LT(distance(end_point(r.curve, end), end_point(c, end)), 1e-9) << "end " << end;
-        if (hold == AssistantHold::Tangents)
+        if (hold == AssistantHold::Tangents) {
           EXPECT_LT(distance(end_tangent(r.curve, end), end_tangent(c, end)), 1e-9) << "end " << end;
+        }
       }
     }
   }
