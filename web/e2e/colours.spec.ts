@@ -25,9 +25,11 @@ const line = (y: number): { kind: 'bezier'; control_points: number[][] } => ({
 
 /** The drawn colour of every curve of the document, none selected, keyed by label. */
 async function drawn(page: Page): Promise<Record<string, number>> {
-  await page.keyboard.press('Escape');
+  // The select tool (a drawing tool keeps Escape for itself), then Escape clears the selection.
+  await page.keyboard.press('v');
   await page.keyboard.press('Escape');
   await idle(page);
+  expect(await page.evaluate(() => window.__hula.app.selected)).toBeNull();
   return page.evaluate(() => {
     const app = window.__hula.app;
     const out: Record<string, number> = {};
@@ -41,18 +43,20 @@ test('a new curve takes a colour no visible curve has, kept across a reload', as
   const doc = await newDoc('colours');
   // Two curves from elsewhere (no colour attribute): drawn in their labels' palette colours.
   await addCurve(doc, 'first', line(-60));
-  await addCurve(doc, 'second', line(-40));
+  await addCurve(doc, 'second', line(60));
   await openApp(page, doc);
   const before = await drawn(page);
   expect(new Set(Object.values(before)).size).toBe(2);
-  // Three Béziers drawn in the top view, one after another.
-  for (const y of [-10, 20, 50]) {
+  // Three Béziers drawn in the top view between them (inside the view the page fitted), one after another.
+  for (const [i, y] of [-30, 0, 30].entries()) {
     await page.keyboard.press('b');
+    let px = { x: 0, y: 0 };
     for (const x of [0, 40, 80]) {
-      const px = await pixelOf(page, 'top', [x, y, 0] as Vec3);
+      px = await pixelOf(page, 'top', [x, y, 0] as Vec3);
       await page.mouse.click(px.x, px.y);
     }
-    await page.keyboard.press('Enter');
+    await page.mouse.click(px.x, px.y, { button: 'right' });
+    await expect.poll(async () => (await curves(doc)).length).toBe(3 + i);
     await idle(page);
     const colours = await drawn(page);
     // Every curve's colour differs from every other's.
