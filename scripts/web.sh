@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # The web workbench's checks and build (web/): `npm ci`, lint, format check,
-# type check, unit tests (Vitest) and the production build into web/dist.
+# type check, the import-cycle check (scripts/check-cycles.mjs), unit tests
+# (Vitest) and the production build into web/dist.
 # With --e2e, also the Playwright end-to-end tests in Debian's chromium
 # against a real `hula serve` (HULA_BIN, else build/ci's or build/release's hula).
 set -euo pipefail
@@ -11,6 +12,7 @@ npm ci --no-progress
 npm run lint
 npm run format:check
 npm run typecheck
+npm run check:cycles
 npm test
 npx vite build
 if [ "${1:-}" = "--e2e" ]; then

@@ -20,14 +20,17 @@ TEST(FairPreviewJson, RequestDefaults) {
   EXPECT_EQ(r.options.tolerance, 0.5);
   EXPECT_EQ(r.options.method, studies::AssistantMethod::MinimalVariation);
   EXPECT_EQ(r.options.time_budget_seconds, 0.1);
+  EXPECT_EQ(r.options.hold, studies::AssistantHold::Free);
   EXPECT_FALSE(r.analysis.has_value());
 }
 
 // checks every member is read: the knot method by its name, the budget, and the analysis kept as given
 TEST(FairPreviewJson, RequestEveryMember) {
   const FairPreviewRequest r = fair_preview_request_from_json(
-      Json::parse(R"({"tolerance": 0.25, "method": "knots", "budget": 2, "analysis": {"samples": 5, "by": "x"}})"));
+      Json::parse(R"({"tolerance": 0.25, "method": "knots", "budget": 2, "hold": "tangents",
+                      "analysis": {"samples": 5, "by": "x"}})"));
   EXPECT_EQ(r.options.tolerance, 0.25);
+  EXPECT_EQ(r.options.hold, studies::AssistantHold::Tangents);
   EXPECT_EQ(r.options.method, studies::AssistantMethod::Knots);
   EXPECT_EQ(r.options.time_budget_seconds, 2.0);
   ASSERT_TRUE(r.analysis.has_value());
@@ -62,6 +65,10 @@ TEST(FairPreviewJson, RequestErrorsNameTheMember) {
                     Errc::InvalidOption, "budget");
   HULA_EXPECT_ERROR(fair_preview_request_from_json(Json::parse(R"({"tolerance": 1, "method": "smooth"})")),
                     Errc::InvalidOption, "smooth");
+  HULA_EXPECT_ERROR(fair_preview_request_from_json(Json::parse(R"({"tolerance": 1, "hold": "ends"})")),
+                    Errc::InvalidOption, "hold");
+  HULA_EXPECT_ERROR(fair_preview_request_from_json(Json::parse(R"({"tolerance": 1, "hold": true})")), Errc::ParseError,
+                    "hold");
 }
 
 // checks the ghost's members and their order against the contract, and each value against the result given
@@ -80,12 +87,14 @@ TEST(FairPreviewJson, GhostMembersInContractOrder) {
   studies::AssistantOptions options;
   options.tolerance = 0.5;
   options.method = studies::AssistantMethod::Knots;
+  options.hold = studies::AssistantHold::Points;
   const Json j = fair_preview_to_json(r, options, 12);
   std::vector<std::string> names;
   for (const auto& [k, v] : j.items()) names.push_back(k);
   EXPECT_EQ(names, (std::vector<std::string>{"revision", "method", "tolerance", "curve", "energy_before",
                                              "energy_after", "max_deviation", "data_points", "faired_points",
-                                             "iterations", "stopped", "seconds"}));
+                                             "iterations", "stopped", "seconds", "hold"}));
+  EXPECT_EQ(j["hold"], "points");
   EXPECT_EQ(j["revision"], 12);
   EXPECT_EQ(j["method"], "knots");
   EXPECT_EQ(j["tolerance"], 0.5);

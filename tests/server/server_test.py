@@ -1188,6 +1188,57 @@ class DocumentTest(unittest.TestCase):
             self.assertEqual(self.call("GET", base)["revision"], revision)
             self.assertEqual(self.call("GET", entity), original)
 
+    # checks export: a NURBS curve and a law curve written as STEP (AP214 and AP242) and IGES, read back by
+    # `hula doc import` (the NURBS's knots and control points to 1e-9 in order, the names kept, the law's
+    # approximation deviation reported and below 1e-6 of its size), JSON read back by the import route as the
+    # same construction data; bad labels and formats refused naming the field; the document never changes
+    def test_export(self):
+        self.new_document("export.hula")
+        base = "/api/documents/export.hula"
+        quad = {"kind": "nurbs", "degree": 3, "knots": [0, 0, 0, 0, 0.3, 1, 1, 1, 1],
+                "control_points": [[0, 0, 0], [10, 20, 0], [30, 20, 5], [40, 0, 5], [55, -3, 2]]}
+        nurbs = self.call("POST", base + "/entities", {"curve": quad, "name": "rail"}, expect=201)["label"]
+        law = {"kind": "law", "expression": "vec(t, t^2, t^3)", "parameter": "t", "domain": [0, 1]}
+        law_label = self.call("POST", base + "/entities", {"curve": law, "name": "cubic"}, expect=201)["label"]
+        revision = self.call("GET", base)["revision"]
+        for fmt, reported, ext in (("step", "step-ap214", "step"), ("step-ap242", "step-ap242", "step"),
+                                   ("iges", "iges", "igs")):
+            r = self.call("POST", base + "/export", {"labels": [nurbs, law_label], "format": fmt})
+            self.assertEqual((r["format"], r["labels"]), (reported, [nurbs, law_label]))
+            self.assertGreater(r["max_deviation"], 0)
+            self.assertLess(r["max_deviation"], 1e-6)
+            with tempfile.TemporaryDirectory() as tmp:
+                scratch, path = os.path.join(tmp, "s.hula"), os.path.join(tmp, "out." + ext)
+                with open(path, "w") as f:
+                    f.write(r["content"])
+                subprocess.run([HULA, "doc", "new", scratch], check=True, capture_output=True, timeout=60)
+                got = json.loads(subprocess.run([HULA, "doc", "import", scratch, path], check=True,
+                                                capture_output=True, timeout=120).stdout)
+                self.assertEqual(len(got["labels"]), 2, fmt)
+                first = json.loads(subprocess.run([HULA, "doc", "show", scratch, str(got["labels"][0])], check=True,
+                                                  capture_output=True, timeout=60).stdout)
+            self.assertEqual(first["attributes"]["name"], "rail", fmt)
+            self.assertEqual(len(first["control_points"]), len(quad["control_points"]), fmt)
+            for p, q in zip(first["control_points"], quad["control_points"]):
+                self.assertLessEqual(math.dist(p, q), 1e-9, fmt)
+            for u, v in zip(first["knots"], quad["knots"]):
+                self.assertAlmostEqual(u, v, delta=1e-12)
+        r = self.call("POST", base + "/export", {"labels": [nurbs], "format": "json"})
+        self.assertEqual(r["format"], "json")
+        back = self.call("POST", base + "/import", {"filename": "rail.json", "content": r["content"]}, expect=201)
+        got = self.call("GET", f"{base}/entities/{back['labels'][0]}")
+        self.assertEqual((got["knots"], got["control_points"]), (quad["knots"], quad["control_points"]))
+        self.call("POST", base + "/undo")
+        revision = self.call("GET", base)["revision"]
+        for body, field in (({"labels": [], "format": "step"}, "labels"), ({"labels": [999], "format": "step"}, None),
+                            ({"labels": [0], "format": "iges"}, "labels"), ({"labels": [nurbs], "format": "dwg"}, "format"),
+                            ({"labels": [nurbs], "format": "step", "path": "/tmp/x"}, None)):
+            e = self.call("POST", base + "/export", body, expect=400)["error"]
+            if field:
+                self.assertEqual(e["where"]["field"], field, body)
+        self.call("POST", "/api/documents/missing.hula/export", {"labels": [1], "format": "step"}, expect=404)
+        self.assertEqual(self.call("GET", base)["revision"], revision)
+
     # checks import of a workspace JSON file (same construction data back), an uploaded STEP file written
     # by `hula doc export` (its control points back to 1e-9, provenance import:step), and that names
     # outside the workspace, symbolic links, missing files and a garbage STEP file are refused with the
@@ -1306,6 +1357,12 @@ class DocumentTest(unittest.TestCase):
             self.assertEqual(knots["curve"]["points"], curve["points"])
             self.assertLess(knots["energy_after"], knots["energy_before"], f"Example {n}")
             self.assertEqual(knots["max_deviation"], 0.0)
+            # "hold": "points" keeps the first and last data points exactly, and says so
+            held = self.call("POST", entity + "/fair-preview", {"tolerance": tolerance, "budget": 5, "hold": "points"})
+            self.assertEqual(held["hold"], "points")
+            self.assertEqual(held["curve"]["points"][0], curve["points"][0])
+            self.assertEqual(held["curve"]["points"][-1], curve["points"][-1])
+            self.assertLessEqual(held["energy_after"], held["energy_before"])
             # "curve": the ghost of a drag's position sent beside its PATCH is the ghost of the entity once
             # the PATCH is stored (same data points, same energies), and the preview leaves the entity as it was
             dragged = dict(curve, points=[list(p) for p in curve["points"]])
@@ -1324,6 +1381,8 @@ class DocumentTest(unittest.TestCase):
         self.assertEqual((e["code"], e["where"]["field"]), ("InvalidOption", "tolerance"))
         e = self.call("POST", entity + "/fair-preview", {"tolerance": 1, "method": "smooth"}, expect=400)["error"]
         self.assertEqual(e["where"]["field"], "method")
+        e = self.call("POST", entity + "/fair-preview", {"tolerance": 1, "hold": "ends"}, expect=400)["error"]
+        self.assertEqual(e["where"]["field"], "hold")
         self.call("POST", entity + "/fair-preview", {}, expect=400)
         self.call("POST", f"{base}/entities/999/fair-preview", {"tolerance": 1}, expect=404)
         e = self.call("POST", entity + "/fair-preview", {"tolerance": 1, "curve": {"kind": "bezier"}}, expect=400)["error"]
@@ -1337,7 +1396,7 @@ class DocumentTest(unittest.TestCase):
     # class with a body (or SSE events) valid against the document
     def test_zz_every_operation_seen(self):
         wanted = operations(self.api, "/api/documents")
-        self.assertEqual(len(wanted), 22)
+        self.assertEqual(len(wanted), 23)
         self.assertEqual(wanted - self.api.seen, set())
 
 

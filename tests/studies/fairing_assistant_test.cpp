@@ -102,6 +102,72 @@ TEST(FairingAssistant, NurbsControlPointsStayWithinTolerance) {
   for (std::size_t k = 0; k < cps.size(); ++k) EXPECT_LE(distance(moved[k], cps[k]), 1.0) << "control point " << k;
 }
 
+// The unit tangent of a curve at the start (end = false) or end of its domain.
+Vec3 end_tangent(const curve::Curve& c, bool end) {
+  const nurbs::NurbsCurve& n = c.nurbs();
+  const Vec3 d = n.derivatives(end ? n.domain().end : n.domain().start, 1)[1];
+  return d / norm(d);
+}
+
+Vec3 end_point(const curve::Curve& c, bool end) {
+  const nurbs::NurbsCurve& n = c.nurbs();
+  return n.derivatives(end ? n.domain().end : n.domain().start, 0)[0];
+}
+
+// A wavy clamped cubic NURBS (seeded noise on a sine), 30 control points.
+curve::Curve wavy_nurbs() {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> noise(-1.0, 1.0);
+  std::vector<Vec3> cps;
+  for (int i = 0; i < 30; ++i) cps.push_back({10.0 * i, 20.0 * std::sin(0.3 * i) + noise(rng), 0.0});
+  return curve::Curve(nurbs::NurbsCurve(nurbs::KnotVector::uniform_clamped(30, 3), cps, {}, 2));
+}
+
+// Checks held ends on an interpolated curve with natural ends (Example 3) and a wavy NURBS: with
+// "points" both end points stay within 1e-9 and with "tangents" the end unit tangents too,
+// while the energy still drops; "free" moves Example 3's end tangent by more than 1e-6, so the checks
+// can fail. The knot method holds the tangents of Example 3 the same way.
+TEST(FairingAssistant, HoldEndsKeepsEndPointsAndTangents) {
+  const std::vector<std::pair<std::string, curve::Curve>> curves = {{"Example 3", thesis_examples()[2]},
+                                                                    {"wavy NURBS", wavy_nurbs()}};
+  for (const auto& [name, c] : curves) {
+    for (const AssistantHold hold : {AssistantHold::Points, AssistantHold::Tangents}) {
+      SCOPED_TRACE(name + ", hold " + std::string(assistant_hold_name(hold)));
+      const AssistantResult r = fair_within_tolerance(c, {.tolerance = 1.0, .time_budget_seconds = 5.0, .hold = hold});
+      EXPECT_LT(r.energy_after, 0.999 * r.energy_before);
+      EXPECT_EQ(r.faired_points.front(), r.data_points.front());
+      EXPECT_EQ(r.faired_points.back(), r.data_points.back());
+      for (const bool end : {false, true}) {
+        EXPECT_LT(distance(end_point(r.curve, end), end_point(c, end)), 1e-9) << "end " << end;
+        if (hold == AssistantHold::Tangents) {
+          EXPECT_LT(distance(end_tangent(r.curve, end), end_tangent(c, end)), 1e-9) << "end " << end;
+        }
+      }
+    }
+  }
+  const curve::Curve example3 = thesis_examples()[2];
+  const AssistantResult free = fair_within_tolerance(example3, {.tolerance = 1.0, .time_budget_seconds = 5.0});
+  EXPECT_GT(distance(end_tangent(free.curve, false), end_tangent(example3, false)), 1e-6);
+  const AssistantResult knots = fair_within_tolerance(
+      example3, {.method = AssistantMethod::Knots, .time_budget_seconds = 5.0, .hold = AssistantHold::Tangents});
+  EXPECT_LT(knots.energy_after, knots.energy_before);
+  for (const bool end : {false, true})
+    EXPECT_LT(distance(end_tangent(knots.curve, end), end_tangent(example3, end)), 1e-9) << "end " << end;
+}
+
+// Checks hold names round-trip and an unknown one, and held ends of an unclamped NURBS, are refused naming "hold".
+TEST(FairingAssistant, HoldNamesAndUnclampedNurbs) {
+  for (const AssistantHold h : {AssistantHold::Free, AssistantHold::Points, AssistantHold::Tangents})
+    EXPECT_EQ(assistant_hold_from_name(assistant_hold_name(h)), h);
+  HULA_EXPECT_ERROR((void)assistant_hold_from_name("ends"), Errc::InvalidOption, "hold");
+  std::vector<Vec3> cps;
+  for (int i = 0; i < 8; ++i) cps.push_back({10.0 * i, 5.0 * (i % 2), 0.0});
+  std::vector<double> knots;
+  for (int i = 0; i < 12; ++i) knots.push_back(i);
+  const curve::Curve unclamped(nurbs::NurbsCurve(nurbs::KnotVector(knots, 3), cps, {}, 2));
+  HULA_EXPECT_ERROR(fair_within_tolerance(unclamped, {.hold = AssistantHold::Points}), Errc::InvalidArgument, "hold");
+}
+
 // Checks the bad-input contract: bad tolerance, budget and method name; a law curve; knots on a NURBS.
 TEST(FairingAssistant, RejectsBadInputNamingIt) {
   const curve::Curve c = thesis_examples()[0];

@@ -15,6 +15,7 @@ import { loadavg } from 'node:os';
 import type { CurveFile } from '../src/api/types';
 import {
   addCurve,
+  analysis,
   api,
   entity,
   expect,
@@ -226,4 +227,76 @@ test('fairing assistant: ghost after a drag, accepted with A (Examples 1–3)', 
   mkdirSync('test-results', { recursive: true });
   writeFileSync('test-results/fairing-bench.json', JSON.stringify(results, null, 2));
   console.log('fairing', JSON.stringify(results));
+});
+
+// Hold ends: with "end points and tangents" the accepted ghost of a wavy clamped cubic NURBS keeps its
+// first two and last two control points within 1e-9 (so its end points and, C′(a) ∝ P1 − P0 and
+// C′(b) ∝ Pn − Pn−1 on the same knots, its end tangents), while inner points move and ∫κ′² ds drops;
+// with "end points", Example 3's accepted ghost starts and ends where it did (server analysis, 1e-9).
+test('fairing assistant: hold ends keeps the end points and tangents', async ({ page }) => {
+  needsDocuments();
+  test.setTimeout(180_000);
+  const n = 12;
+  const wavy: CurveFile = {
+    kind: 'nurbs',
+    degree: 3,
+    knots: [0, 0, 0, 0, ...Array.from({ length: n - 4 }, (_, i) => (i + 1) / (n - 3)), 1, 1, 1, 1],
+    control_points: Array.from({ length: n }, (_, i) => [
+      10 * i,
+      12 * Math.sin(0.9 * i) + (i % 3),
+      0,
+    ]),
+  };
+  const cases: { curve: CurveFile; hold: string; name: string }[] = [
+    { curve: wavy, hold: 'tangents', name: 'wavy' },
+    { curve: examples[2]!.curve, hold: 'points', name: 'example3' },
+  ];
+  for (const c of cases) {
+    const doc = await newDoc(`fair-hold-${c.name}`);
+    const label = await addCurve(doc, c.name, c.curve);
+    await openApp(page, doc);
+    await page.evaluate((l) => {
+      window.__hula.app.select(l);
+    }, label);
+    await page.locator('#fair-tolerance').fill('2');
+    await page.locator('#fair-tolerance').dispatchEvent('change');
+    await page.locator('#fair-hold').selectOption(c.hold);
+    await page.locator('#fair-on').check();
+    await expect
+      .poll(() =>
+        page.evaluate(() => {
+          const r = window.__hula.app.fairing.preview?.result;
+          return r ? r.energy_after < r.energy_before && r.hold : null;
+        }),
+      )
+      .toBe(c.hold);
+    await idle(page);
+    if (c.name === 'wavy') await shot(page, 'fairing-hold-ends');
+    const ghostBefore = await page.evaluate(
+      () => window.__hula.app.fairing.preview!.result.energy_before,
+    );
+    const before = await analysis(doc, label, { by: 'parameter', samples: 3 });
+    await page.locator('#viewports .view[data-view="top"]').focus();
+    await page.keyboard.press('a');
+    await idle(page);
+    const after = await analysis(doc, label, { by: 'parameter', samples: 3 });
+    for (const i of [0, 2])
+      expect(Math.hypot(...after.points[i]!.map((x, k) => x - before.points[i]![k]!))).toBeLessThan(
+        1e-9,
+      );
+    // The stored curve is the fairer ghost.
+    expect((await preview(doc, label, 2)).energy_before).toBeLessThan(0.999 * ghostBefore);
+    if (c.name === 'wavy') {
+      const got = (await entity(doc, label)).curve as { control_points: number[][] };
+      const want = (wavy as { control_points: number[][] }).control_points;
+      for (const k of [0, 1, n - 2, n - 1])
+        expect(Math.hypot(...got.control_points[k]!.map((x, j) => x - want[k]![j]!))).toBeLessThan(
+          1e-9,
+        );
+      const moved = got.control_points.map((p, k) =>
+        Math.hypot(...p.map((x, j) => x - want[k]![j]!)),
+      );
+      expect(Math.max(...moved)).toBeGreaterThan(1e-3);
+    }
+  }
 });

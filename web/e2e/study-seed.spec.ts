@@ -81,6 +81,7 @@ test('From selection seeds the curvature + torsion study from a space Bézier', 
   // A short run of that study: the job's resolved study carries the same tangents and targets.
   study.nsga2 = { population: 8, generations: 2 };
   study.polish = false;
+  await page.locator('#opt-advanced').check(); // the study file as JSON
   await page.locator('#opt-study').fill(JSON.stringify(study));
   await page.locator('#opt-start').click();
   await expect(page.locator('#opt-info')).toHaveAttribute('data-state', 'done', {

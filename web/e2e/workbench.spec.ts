@@ -386,6 +386,7 @@ test('preview and apply a curvature + torsion Pareto point', async ({ page }) =>
   // A small run (a few seconds) without the polish, which could collapse the set to one curve.
   study['nsga2'] = { population: 16, generations: 8 };
   study['polish'] = false;
+  await page.locator('#opt-advanced').check(); // the study file as JSON
   await page.locator('#opt-study').fill(JSON.stringify(study));
   await page.locator('#opt-start').click();
   await expect(page.locator('#opt-info')).toHaveAttribute('data-state', 'done', {

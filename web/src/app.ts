@@ -16,7 +16,16 @@ import type {
   Job,
 } from './api/types';
 import { DocumentStore } from './store/store';
-import { curveColour, loadViewState, saveViewState, type ViewState } from './store/viewstate';
+import { snapTargets } from './controller/snap';
+import { SPACE_FINS, combescureSize, handlesOf, type ViewSettings } from './store/curves';
+import {
+  curveColour,
+  freshColour,
+  hex,
+  loadViewState,
+  saveViewState,
+  type ViewState,
+} from './store/viewstate';
 import { Graph, readout, type Abscissa, type Quantity } from './graphs/graph';
 import { boxDiagonal, nearestIndex } from './graphs/scale';
 import { Viewports, toVec3 } from './viewport/viewports';
@@ -24,7 +33,10 @@ import {
   dragPlane,
   pickNearest,
   pickPolyline,
+  projectToScreen,
+  snapToObjects,
   workingPlane,
+  type WorkingPlane,
   type Vec3,
   type ViewName,
 } from './viewport/math';
@@ -43,70 +55,13 @@ import { analyseNurbs } from './geometry/analysis';
 import { DesignByCurvature } from './panels/design';
 import { OptimisePanel } from './panels/optimise';
 import { FairingAssistant } from './tools/fairing';
-
-export interface ViewSettings {
-  fins: FinKind[];
-  /** The user's fin scale, relative to `finBase`. */
-  scale: number;
-  /**
-   * Drawing factor per fin kind, fixed when first needed (so combs compare
-   * across edits): the longest curvature (torsion, Combescure) fin is 15 % of
-   * the curve's extent, unit fins (normal, binormal, Bishop) 10 %. Without it a fin of
-   * κ = 0.01 at scale 1 is 0.01 long: invisible.
-   */
-  finBase?: Partial<Record<FinKind, number>>;
-  samples: number;
-  frames: boolean;
-}
-
-export const ALL_FINS: FinKind[] = [
-  'curvature',
-  'torsion',
-  'normal',
-  'binormal',
-  'bishop-u',
-  'bishop-v',
-  'combescure',
-];
-
-/** Fins that carry nothing on a planar curve (τ = 0): torsion, binormal (8.4, 8.6), Combescure (8.3, 8.5). */
-export const SPACE_FINS: ReadonlySet<FinKind> = new Set<FinKind>([
-  'torsion',
-  'binormal',
-  'combescure',
-]);
-
-/**
- * The largest Combescure fin of a comb per unit of scale, max |Q − P| / scale = max √(1 + (τ/κ)²):
- * the server's fins measured, as the curvature fins' factor uses the server's κ.
- */
-export function combescureSize(
-  comb: { base: readonly (readonly number[])[]; tip: readonly (readonly number[] | null)[] },
-  scale: number,
-): number {
-  let m = 0;
-  comb.tip.forEach((q, i) => {
-    const b = comb.base[i];
-    if (q && b) m = Math.max(m, Math.hypot(...[0, 1, 2].map((k) => (q[k] ?? 0) - (b[k] ?? 0))));
-  });
-  return scale > 0 ? m / scale : 0;
-}
-
-/** Handles (control points or data points) of a curve file: what a drag moves. */
-export function handlesOf(curve: CurveFile | undefined): Vec3[] {
-  if (!curve) return [];
-  switch (curve.kind) {
-    case 'nurbs':
-    case 'bezier':
-      return curve.control_points.map(toVec3);
-    case 'interpolated':
-    case 'hermite':
-      return curve.points.map(toVec3);
-    case 'law':
-    case 'natural':
-      return [];
-  }
-}
+import {
+  EXPORT_FORMATS,
+  ExportMenu,
+  download,
+  exportFileName,
+  type MenuFormat,
+} from './panels/export';
 
 interface Drag {
   label: string;
@@ -157,6 +112,7 @@ export class App {
   readonly design: DesignByCurvature;
   readonly optimise: OptimisePanel;
   readonly fairing: FairingAssistant;
+  readonly exportMenu: ExportMenu;
   /** The hover readout at the cursor on the curve (s or t, κ, R, τ). */
   private readonly curveReadout: HTMLElement;
   selected: string | null = null;
@@ -257,6 +213,7 @@ export class App {
     this.design = new DesignByCurvature(this);
     this.optimise = new OptimisePanel(this);
     this.fairing = new FairingAssistant(this, document.getElementById('side')!);
+    this.exportMenu = new ExportMenu((format) => void this.exportSelected(format));
     this.makeGraphs();
     this.bindViews();
     this.bindToolbar();
@@ -392,6 +349,7 @@ export class App {
       layout: this.viewports.layout,
       active: this.viewports.active,
       snap: this.viewports.snap,
+      objectSnap: this.objectSnap,
       abscissa: this.abscissa,
       curves,
       studyOf: Object.fromEntries(this.studyOf),
@@ -412,6 +370,7 @@ export class App {
         this.settings.set(label, { ...c, fins: [...c.fins] });
       for (const [c, st] of Object.entries(v.studyOf)) this.studyOf.set(c, st);
       this.setSnap(v.snap);
+      this.setObjectSnap(v.objectSnap);
       this.setAbscissa(v.abscissa);
       this.viewports.setLayout(v.layout, v.active);
       if (v.selected !== null && this.store.entities.has(v.selected)) this.select(v.selected);
@@ -419,6 +378,53 @@ export class App {
     } finally {
       this.restoring = false;
     }
+  }
+
+  /** Snap to existing points and curves (toggle "Objects", Shift+G). */
+  objectSnap = false;
+  /** What the last snapped point landed on, for the status line and tests. */
+  lastSnap: { kind: 'point' | 'curve' | 'grid'; label?: string } | null = null;
+
+  setObjectSnap(on: boolean): void {
+    (document.getElementById('osnap') as HTMLInputElement).checked = on;
+    this.objectSnap = on;
+    this.viewStateChanged();
+  }
+
+  /**
+   * A point of `plane` (the pointer's, or a dragged handle's) snapped as the toggles ask: with object
+   * snap, onto the nearest handle of a visible curve, else the nearest point of a visible curve as
+   * drawn, within 8 pixels (`exclude`: the handle being dragged and its curve's polyline, which move
+   * with it); else onto the grid when grid snap is on; else as it is.
+   */
+  snapPoint(
+    view: ViewName,
+    p: Vec3,
+    plane: WorkingPlane,
+    exclude?: { label: string; index: number },
+  ): Vec3 {
+    this.lastSnap = null;
+    if (this.objectSnap) {
+      const { w, h } = this.viewports.size(view);
+      const m = this.viewports.viewProj(view);
+      const at = projectToScreen(p, m, w, h);
+      if (at) {
+        const targets = snapTargets(
+          this.store.entities,
+          (l) => this.isHidden(l),
+          (l) => this.analysisOf(l)?.points,
+          exclude,
+        );
+        const hit = snapToObjects(at, targets, m, w, h, 8);
+        if (hit) {
+          const owner = (hit.kind === 'point' ? targets.pointOwner : targets.lineOwner)[hit.index]!;
+          this.lastSnap = { kind: hit.kind, label: owner };
+          return hit.point;
+        }
+      }
+    }
+    if (this.viewports.snap) this.lastSnap = { kind: 'grid' };
+    return this.viewports.snapped(view, p, plane);
   }
 
   setSnap(on: boolean): void {
@@ -618,9 +624,19 @@ export class App {
 
   // ---- editing ---------------------------------------------------------------
 
+  /** A curve's drawn colour (its colour attribute, else its label's palette colour). */
+  colourOf(label: string): number {
+    return curveColour(label, this.store.entities.get(label)?.attributes);
+  }
+
   async createCurve(name: string, curve: CurveFile): Promise<string | undefined> {
+    // A colour no visible curve has, stored with the curve so it stays across reloads and tabs.
+    const visible = [...this.store.entities.values()]
+      .filter((e) => e.curve !== undefined && !this.isHidden(String(e.label)))
+      .map((e) => this.colourOf(String(e.label)));
+    const colour = hex(freshColour(visible));
     const reply = await this.run(
-      () => this.client.createEntity(this.store.name, name, curve),
+      () => this.client.createEntity(this.store.name, name, curve, { colour }),
       `Create ${curve.kind} curve`,
     );
     if (!reply) return undefined;
@@ -883,7 +899,7 @@ export class App {
       selected: label === this.selected,
       fins: this.shownFins(label, a),
       frames: s.frames,
-      colour: curveColour(label),
+      colour: this.colourOf(label),
       visible: !this.isHidden(label),
     });
     const root = this.viewports.root;
@@ -1039,7 +1055,9 @@ export class App {
 
   pointAt(view: ViewName, ev: PointerEvent): Vec3 | null {
     const [x, y] = this.local(view, ev);
-    return this.viewports.pointOn(view, x, y, workingPlane(view));
+    const plane = workingPlane(view);
+    const p = this.viewports.pointOn(view, x, y, plane, false);
+    return p && this.snapPoint(view, p, plane);
   }
 
   private bindViews(): void {
@@ -1220,7 +1238,10 @@ export class App {
     const at = this.viewports.pointOn(view, x, y, plane, false);
     const g = d.grab;
     const p = at
-      ? this.viewports.snapped(view, [at[0] + g[0], at[1] + g[1], at[2] + g[2]], plane)
+      ? this.snapPoint(view, [at[0] + g[0], at[1] + g[1], at[2] + g[2]], plane, {
+          label: d.label,
+          index: d.index,
+        })
       : null;
     // A pointer event that does not move the point (the one a release may bring, or a move
     // within a snapped grid cell) is no move: nothing to send, and the pointer has not moved.
@@ -1468,6 +1489,10 @@ export class App {
     snap.addEventListener('change', () => {
       this.setSnap(snap.checked);
     });
+    const osnap = document.getElementById('osnap') as HTMLInputElement;
+    osnap.addEventListener('change', () => {
+      this.setObjectSnap(osnap.checked);
+    });
     document.getElementById('import-file')!.addEventListener('change', (ev) => {
       const input = ev.target as HTMLInputElement;
       const file = input.files?.[0];
@@ -1521,7 +1546,12 @@ export class App {
         void this.panels.openDialog();
         break;
       case 'export':
-        this.exportSelected();
+        this.exportMenu.toggle();
+        break;
+      case 'export-json':
+      case 'export-step':
+      case 'export-iges':
+        this.exportMenu.pick(name.slice('export-'.length) as MenuFormat);
         break;
       case 'help':
         this.panels.helpDialog();
@@ -1557,18 +1587,23 @@ export class App {
     this.fitAll();
   }
 
-  exportSelected(): void {
-    const e = this.selectedEntity;
-    if (!e?.curve) {
-      this.setStatus('Export: nothing is selected; click a curve first (V)', true);
-      return;
-    }
-    const blob = new Blob([JSON.stringify(e.curve, null, 1)], { type: 'application/json' });
-    const a = document.createElement('a');
-    a.href = URL.createObjectURL(blob);
-    a.download = `${e.name || e.label}.json`;
-    a.click();
-    URL.revokeObjectURL(a.href);
+  /** Writes the selected curve in `format` through the server and offers the file as a download. */
+  async exportSelected(format: MenuFormat): Promise<void> {
+    const label = this.needSelection('Export');
+    if (label === null) return;
+    const what = `Export ${format.toUpperCase()}`;
+    const reply = await this.run(
+      () => this.client.exportFile(this.store.name, [label], format),
+      `${what} of ${this.nameOf(label)}`,
+    );
+    if (!reply) return;
+    const filename = exportFileName(this.store.entities.get(label)?.name ?? '', label, format);
+    download(reply.content, filename, EXPORT_FORMATS[format].mime);
+    const deviation =
+      reply.max_deviation !== undefined && reply.max_deviation > 0
+        ? ` (NURBS approximation within ${reply.max_deviation.toExponential(1)})`
+        : '';
+    this.setStatus(`Exported ${this.nameOf(label)} as ${filename}${deviation}`);
   }
 
   private key(ev: KeyboardEvent): void {
@@ -1624,7 +1659,10 @@ export class App {
     if (tools[k]) this.setTool(tools[k]);
     else if (actions[k]) this.action(actions[k]);
     else if (views[k]) this.setLayout('single', views[k]);
-    else if (k === 'g') {
+    else if (k === 'g' && ev.shiftKey) {
+      this.setObjectSnap(!this.objectSnap);
+      this.setStatus(`Object snap ${this.objectSnap ? 'on' : 'off'} (Shift+G)`);
+    } else if (k === 'g') {
       this.setSnap(!this.viewports.snap);
       this.setStatus(`Grid snap ${this.viewports.snap ? 'on' : 'off'} (G)`);
     } else if (k === 'p') this.navMode = this.navMode === 'pan' ? null : 'pan';

@@ -2,10 +2,10 @@
 // The codec of the fairing assistant's preview (studies::fair_within_tolerance,
 // POST /api/documents/{name}/entities/{label}/fair-preview, docs/server.md):
 // the request {"tolerance", "method"?: "min-variation"|"knots", "budget"?,
-// "analysis"?, "curve"?} ("curve": the page's edit in flight, faired instead of
+// "hold"?: "free"|"points"|"tangents", "analysis"?, "curve"?} ("curve": the page's edit in flight, faired instead of
 // the stored entity) and the ghost it answers {"revision", "method", "tolerance",
 // "curve", "energy_before", "energy_after", "max_deviation", "data_points",
-// "faired_points", "iterations", "stopped", "seconds"} (then "analysis" when
+// "faired_points", "iterations", "stopped", "seconds", "hold"} (then "analysis" when
 // asked, written by the server). Member names and order are a contract
 // (src/hula/server/openapi.json): extend, never rename.
 #pragma once
@@ -20,7 +20,8 @@ namespace hula::io {
 
 /// A fairing-preview request.
 struct FairPreviewRequest {
-  /// "tolerance" (required), "method" (default min-variation), "budget" → time_budget_seconds; validated.
+  /// "tolerance" (required), "method" (default min-variation), "budget" → time_budget_seconds, "hold"
+  /// (default free); validated.
   studies::AssistantOptions options{};
   /// The "analysis" member as given (the viewport analysis options of the ghost), when present.
   std::optional<Json> analysis{};

@@ -99,6 +99,38 @@ curve::Curve rebuild(const curve::Curve& c, std::vector<Vec3> points) {
   }
 }
 
+// The curve the search rebuilds from moved data points. With held tangents an interpolated curve's
+// end conditions that follow the points (natural, Bessel, not-a-knot, OCCT) become clamped ones with
+// the curve's own end derivatives dC/dt (t on [0, 1]): the same curve at the input's points, whose end
+// tangents no longer move with them. Clamped and direction ends already hold their tangents.
+curve::Curve prepared(const curve::Curve& c, AssistantHold hold) {
+  if (hold != AssistantHold::Tangents || c.kind() != curve::Kind::Interpolated) return c;
+  curve::InterpolatedData d = std::get<curve::InterpolatedData>(c.data());
+  const nurbs::NurbsCurve& n = c.nurbs();
+  const Interval dom = n.domain();
+  const auto fixed = [](const nurbs::EndCondition& e) {
+    return e.kind == nurbs::EndCondition::Kind::Clamped || e.kind == nurbs::EndCondition::Kind::Direction;
+  };
+  if (!fixed(d.start)) d.start = nurbs::EndCondition::clamped(n.derivatives(dom.start, 1)[1] * dom.length());
+  if (!fixed(d.end)) d.end = nurbs::EndCondition::clamped(n.derivatives(dom.end, 1)[1] * dom.length());
+  return curve::Curve::interpolated(std::move(d));
+}
+
+// The data points that do not move (see AssistantOptions::hold).
+std::vector<bool> held_points(const curve::Curve& c, AssistantHold hold, std::size_t n) {
+  std::vector<bool> held(n, false);
+  if (hold == AssistantHold::Free || n == 0) return held;
+  if (c.kind() == curve::Kind::Nurbs && !c.nurbs().knots().is_clamped())
+    throw Error(Errc::InvalidArgument,
+                "hold = " + std::string(assistant_hold_name(hold)) +
+                    ": the NURBS curve is not clamped, so its ends are not control points that can be held",
+                ErrorWhere{.field = "hold"});
+  held.front() = held.back() = true;
+  const bool control = c.kind() == curve::Kind::Nurbs || c.kind() == curve::Kind::Bezier;
+  if (hold == AssistantHold::Tangents && control && n >= 2) held[1] = held[n - 2] = true;
+  return held;
+}
+
 // The residual vector r of a curve (its squared norm approximates ∫κ'² ds).
 class Residuals {
  public:
@@ -130,15 +162,22 @@ class Residuals {
 
 // Min-variation: Levenberg–Marquardt on x with every point projected into its tolerance ball.
 struct MinVariation {
-  const curve::Curve& input;
+  curve::Curve input;  // the curve rebuilt from moved points (prepared for the held ends)
   const AssistantOptions& options;
   std::vector<Vec3> q0;
+  std::vector<bool> held;  // data points that stay exactly at q0
   int dim;
   Residuals residuals;
   Clock::time_point t0;
 
   MinVariation(const curve::Curve& c, const AssistantOptions& o, Clock::time_point start)
-      : input(c), options(o), q0(data_points_of(c)), dim(c.dimension()), residuals(c.nurbs()), t0(start) {}
+      : input(prepared(c, o.hold)),
+        options(o),
+        q0(data_points_of(c)),
+        held(held_points(c, o.hold, q0.size())),
+        dim(c.dimension()),
+        residuals(c.nurbs()),
+        t0(start) {}
 
   [[nodiscard]] std::vector<Vec3> points_of(const Eigen::VectorXd& x) const {
     std::vector<Vec3> q = q0;
@@ -152,6 +191,10 @@ struct MinVariation {
     const double radius = options.tolerance * (1.0 - kBallMargin);
     for (std::size_t k = 0; k < q0.size(); ++k) {
       const auto base = static_cast<Eigen::Index>(k) * dim;
+      if (held[k]) {
+        for (int j = 0; j < dim; ++j) x[base + j] = q0[k][static_cast<std::size_t>(j)];
+        continue;
+      }
       double n2 = 0.0;
       for (int j = 0; j < dim; ++j) n2 += std::pow(x[base + j] - q0[k][static_cast<std::size_t>(j)], 2);
       const double n = std::sqrt(n2);
@@ -195,6 +238,10 @@ struct MinVariation {
         break;
       }
       for (Eigen::Index c = 0; c < n; ++c) {
+        if (held[static_cast<std::size_t>(c / dim)]) {  // no step: A(c, c) = g(c) = 0
+          J.col(c).setZero();
+          continue;
+        }
         Eigen::VectorXd xh = x;
         xh[c] += h;
         if (!evaluate(xh, r_h)) r_h = r;  // a column that cannot move is left out of the step
@@ -238,7 +285,9 @@ AssistantResult fair_knots_within(const curve::Curve& c, const AssistantOptions&
                 "curve through at least 3 points, not a " +
                     std::string(c.kind_name()) + " curve",
                 ErrorWhere{.field = "curve"});
-  const auto& data = std::get<curve::InterpolatedData>(c.data());
+  // Points are kept by the method itself; held tangents become the ends' own derivatives.
+  const curve::Curve base = prepared(c, options.hold);
+  const auto& data = std::get<curve::InterpolatedData>(base.data());
   KnotFairingSetup setup;
   setup.points = data.points;
   setup.dimension = data.dimension;
@@ -281,6 +330,26 @@ AssistantMethod assistant_method_from_name(std::string_view name) {
   if (name == "min-variation") return AssistantMethod::MinimalVariation;
   throw Error(Errc::InvalidOption, "method '" + std::string(name) + "' is not \"knots\" or \"min-variation\"",
               ErrorWhere{.field = "method"});
+}
+
+std::string_view assistant_hold_name(AssistantHold hold) noexcept {
+  switch (hold) {
+    case AssistantHold::Points:
+      return "points";
+    case AssistantHold::Tangents:
+      return "tangents";
+    case AssistantHold::Free:
+      break;
+  }
+  return "free";
+}
+
+AssistantHold assistant_hold_from_name(std::string_view name) {
+  if (name == "free") return AssistantHold::Free;
+  if (name == "points") return AssistantHold::Points;
+  if (name == "tangents") return AssistantHold::Tangents;
+  throw Error(Errc::InvalidOption, "hold '" + std::string(name) + "' is not \"free\", \"points\" or \"tangents\"",
+              ErrorWhere{.field = "hold"});
 }
 
 void AssistantOptions::validate() const {

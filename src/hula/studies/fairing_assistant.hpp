@@ -39,6 +39,19 @@ enum class AssistantMethod {
 /// @throws hula::Error(Errc::InvalidOption) naming "method" and the text for any other name
 [[nodiscard]] AssistantMethod assistant_method_from_name(std::string_view name);
 
+/// What the fairing keeps at the curve's two ends.
+enum class AssistantHold {
+  Free,      ///< every data point may move (within the tolerance)
+  Points,    ///< the end points stay exactly where they are
+  Tangents,  ///< the end points and the end tangent directions stay exactly as they are
+};
+
+/// "free", "points" or "tangents".
+[[nodiscard]] std::string_view assistant_hold_name(AssistantHold hold) noexcept;
+/// The hold named "free", "points" or "tangents".
+/// @throws hula::Error(Errc::InvalidOption) naming "hold" and the text for any other name
+[[nodiscard]] AssistantHold assistant_hold_from_name(std::string_view name);
+
 /// Options of fair_within_tolerance.
 struct AssistantOptions {
   /// The method. Default MinimalVariation.
@@ -52,6 +65,13 @@ struct AssistantOptions {
   double time_budget_seconds = 0.1;
   /// Most Levenberg–Marquardt iterations (min-variation), 1 … 1000. Default 30.
   std::size_t max_iterations = 30;
+  /// What stays at the ends. Default Free. Points: the first and last data points are not moved (an
+  /// interpolated or Hermite curve passes through them; a NURBS or Bézier curve must be clamped, its end
+  /// control points are its ends). Tangents: besides, a NURBS or Bézier curve's second and last but one
+  /// control points are not moved (C'(a) ∝ P1 − P0 and C'(b) ∝ P_n − P_{n−1}); a Hermite curve's
+  /// tangents never move; an interpolated curve's ends become direction end conditions along its own
+  /// end tangents (nurbs::EndCondition::direction), so the ghost leaves and arrives in the same directions.
+  AssistantHold hold = AssistantHold::Free;
   /// @throws hula::Error(Errc::InvalidOption) naming the field and its value
   void validate() const;
 };
@@ -85,6 +105,8 @@ struct AssistantResult {
 /// @throws hula::Error(Errc::InvalidOption) from options.validate()
 /// @throws hula::Error(Errc::InvalidArgument) naming "curve" for a law or natural curve, or for the
 ///   knot method on a curve that is not interpolated through ≥ 3 points
+/// @throws hula::Error(Errc::InvalidArgument) naming "hold" for held ends of an unclamped NURBS curve
+///   (its end points are not control points)
 /// @throws as fair_knots_deterministic (knots)
 /// Complexity per iteration (min-variation): n + 1 curve constructions and residual evaluations for
 /// n free coordinates, plus an n × n solve.

@@ -15,6 +15,8 @@ import type {
   ErrorBody,
   FairPreview,
   FairPreviewRequest,
+  ExportFormat,
+  ExportResult,
   Health,
   History as DocHistory,
   Label,
@@ -173,8 +175,17 @@ export class Client {
       await this.request('GET', `${this.doc(doc)}/entities/${encodeURIComponent(label)}`),
     );
   }
-  createEntity(doc: string, name: string, curve: CurveFile): Promise<ChangeReply> {
-    return this.request('POST', `${this.doc(doc)}/entities`, { name, curve });
+  createEntity(
+    doc: string,
+    name: string,
+    curve: CurveFile,
+    attributes?: Record<string, unknown>,
+  ): Promise<ChangeReply> {
+    return this.request('POST', `${this.doc(doc)}/entities`, {
+      name,
+      curve,
+      ...(attributes ? { attributes } : {}),
+    });
   }
   putEntity(doc: string, label: string, curve: CurveFile): Promise<ChangeReply> {
     return this.request('PUT', `${this.doc(doc)}/entities/${encodeURIComponent(label)}`, { curve });
@@ -227,6 +238,13 @@ export class Client {
     content: string,
   ): Promise<ChangeReply & { labels: Label[] }> {
     return this.request('POST', `${this.doc(doc)}/import`, { filename, content });
+  }
+  /** The entities written as a JSON, STEP or IGES file by the server (the document is only read). */
+  exportFile(doc: string, labels: Label[], format: ExportFormat): Promise<ExportResult> {
+    return this.request('POST', `${this.doc(doc)}/export`, {
+      labels: labels.map(Number),
+      format,
+    });
   }
   deleteEntity(doc: string, label: string): Promise<ChangeReply> {
     return this.request('DELETE', `${this.doc(doc)}/entities/${encodeURIComponent(label)}`);

@@ -415,6 +415,18 @@ export type ImportResult = {
   warnings?: string[];
 };
 
+export type ExportRequest = {
+  labels: number[];
+  format: "json" | "step" | "step-ap214" | "step-ap242" | "iges";
+};
+
+export type ExportResult = {
+  labels: number[];
+  format: "json" | "step-ap214" | "step-ap242" | "iges";
+  content: string;
+  max_deviation?: number;
+};
+
 export type SplitRequest = {
   t: number;
 };
@@ -429,6 +441,7 @@ export type FairPreviewRequest = {
   tolerance: number;
   method?: "min-variation" | "knots";
   budget?: number;
+  hold?: "free" | "points" | "tangents";
   analysis?: AnalysisRequest;
   curve?: CurveFile;
 };
@@ -447,6 +460,7 @@ export type FairPreview = {
   stopped: boolean;
   seconds: number;
   analysis?: Analysis;
+  hold: "free" | "points" | "tangents";
 };
 
 export type ChangeWithAnalysis = {

@@ -180,28 +180,25 @@ export interface FairPreviewRequest {
   method?: FairMethod;
   /** Wall-clock budget of the optimisation, seconds. */
   budget?: number;
+  /** What stays at the ends: nothing, the end points, or the end points and tangents. */
+  hold?: FairHold;
   analysis?: AnalysisRequest;
   /** Fair this curve instead of the entity's (the page's edit in flight: a drag's latest position). */
   curve?: CurveFile;
 }
-export type FairMethod = 'min-variation' | 'knots';
+export type FairMethod = Api.FairPreview['method'];
+export type FairHold = Api.FairPreview['hold'];
 
-export interface FairPreview {
-  revision: number;
-  method: FairMethod;
-  tolerance: number;
+/** The fairing assistant's ghost: the server's reply, with its curve as the page's curve type and
+ * its analysis (asked for or not) adapted as every analysis the page reads. */
+export type FairPreview = Omit<Api.FairPreview, 'curve' | 'analysis'> & {
   curve: CurveFile;
-  /** ∫(dκ/ds)² ds of the entity's curve and of the ghost. */
-  energy_before: number;
-  energy_after: number;
-  max_deviation: number;
-  data_points: number[][];
-  faired_points: number[][];
-  iterations: number;
-  stopped: boolean;
-  seconds: number;
   analysis: Analysis | undefined;
-}
+};
+
+/** POST .../export: the entities written as a file (its text in the reply). */
+export type ExportFormat = Api.ExportRequest['format'];
+export type ExportResult = Api.ExportResult;
 
 export interface LawRequest {
   expression: string;

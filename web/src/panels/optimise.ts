@@ -5,7 +5,7 @@
 
 import uPlot from 'uplot';
 import type { App } from '../app';
-import { handlesOf } from '../app';
+import { handlesOf } from '../store/curves';
 import type {
   CurveFile,
   GenerationEvent,
@@ -17,51 +17,7 @@ import { NurbsEvaluator } from '../geometry/nurbs';
 import { logMagnitude, paddedRange, tickLabels } from '../graphs/scale';
 import type { Vec3 } from '../viewport/math';
 import { toVec3 } from '../viewport/viewports';
-
-export type StudyKind = 'match-curvature' | 'match-curvature-torsion' | 'fair-knots';
-
-/** A study file for the selected curve's points (the fields come from docs/formats.md). */
-export function studyTemplate(
-  kind: StudyKind,
-  points: number[][],
-  method = 'ga',
-): Record<string, unknown> {
-  const pts = points.map((p) => [...p]);
-  const zero = pts.map((p) => p.map(() => 0));
-  const free = pts.map((p, i) => p.map(() => (i === 0 ? 0 : 5)));
-  const envelope = { format: 'hula-study', version: 1, study: kind, seed: 1, threads: 1 };
-  switch (kind) {
-    case 'match-curvature':
-      return {
-        ...envelope,
-        points: pts,
-        lower: free,
-        upper: free,
-        target: { of_points: pts, mirror: true },
-        samples: 100,
-        method,
-        ...(method === 'direct' ? { abscissa: 'arclength' } : {}),
-        ...(method === 'direct'
-          ? {}
-          : { ga: { algorithm: 'real', population: 40, generations: 40 } }),
-      };
-    case 'match-curvature-torsion':
-      return {
-        ...envelope,
-        points: pts.map((p) => [p[0] ?? 0, p[1] ?? 0, p[2] ?? 0]),
-        lower: free.map((p) => [p[0] ?? 0, p[1] ?? 0, p[2] ?? 0]),
-        upper: free.map((p) => [p[0] ?? 0, p[1] ?? 0, p[2] ?? 0]),
-        start_tangent: [1, 0, 0],
-        end_tangent: [1, 0, 0],
-        target: { law: '0.02' },
-        torsion_target: { law: '0.01' },
-        samples: 60,
-        nsga2: { population: 40, generations: 40 },
-      };
-    case 'fair-knots':
-      return { ...envelope, points: pts, lower: zero, upper: zero };
-  }
-}
+import { StudyForm, studyTemplate, type Study, type StudyKind } from './study-form';
 
 /**
  * An `optimise` job request (POST /api/jobs): a problem file (docs/formats.md
@@ -83,10 +39,19 @@ export const PROBLEM_TEMPLATE = {
   seed: 1,
 };
 
+/** The start points of docs/formats.md's curvature-matching example (thesis Example 1). */
+const DEFAULT_POINTS = [
+  [0, 0],
+  [5, 20],
+  [40, 0],
+];
+
 export class OptimisePanel {
   private readonly kind: HTMLSelectElement;
   private readonly method: HTMLSelectElement;
   private readonly text: HTMLTextAreaElement;
+  private readonly advanced: HTMLInputElement;
+  readonly form: StudyForm;
   private readonly start: HTMLButtonElement;
   private readonly cancel: HTMLButtonElement;
   private readonly info: HTMLElement;
@@ -116,7 +81,9 @@ export class OptimisePanel {
           <option value="ga">ga</option><option value="hybrid">hybrid</option><option value="direct">direct</option>
         </select>
       </div>
-      <textarea id="opt-study" aria-label="Study file (JSON)" spellcheck="false"></textarea>
+      <div id="opt-form" class="study-form" role="group" aria-label="Study settings"></div>
+      <label class="inline"><input type="checkbox" id="opt-advanced" aria-label="Advanced: edit the study file as JSON" /> advanced (JSON)</label>
+      <textarea id="opt-study" aria-label="Study file (JSON)" spellcheck="false" hidden></textarea>
       <div class="row"><button id="opt-fill" aria-label="Fill the study from the selected curve">From selection</button>
       <button id="opt-start" aria-label="Start the optimisation">Run</button>
       <button id="opt-cancel" aria-label="Cancel the optimisation (keeps the best so far)" disabled>Cancel</button></div>
@@ -127,6 +94,13 @@ export class OptimisePanel {
     this.kind = box.querySelector('#opt-kind')!;
     this.method = box.querySelector('#opt-method')!;
     this.text = box.querySelector('#opt-study')!;
+    this.advanced = box.querySelector('#opt-advanced')!;
+    this.form = new StudyForm(box.querySelector('#opt-form')!, (study) => {
+      this.text.value = JSON.stringify(study, null, 1);
+    });
+    this.advanced.addEventListener('change', () => {
+      this.setAdvanced(this.advanced.checked);
+    });
     this.start = box.querySelector('#opt-start')!;
     this.cancel = box.querySelector('#opt-cancel')!;
     this.info = box.querySelector('#opt-info')!;
@@ -150,6 +124,8 @@ export class OptimisePanel {
     this.cancel.addEventListener('click', () => {
       if (this.job) void this.app.run(() => this.app.client.cancelJob(this.job!));
     });
+    // Until "From selection": the documented example's points (docs/formats.md).
+    this.setStudy(studyTemplate('match-curvature', DEFAULT_POINTS, this.method.value));
   }
 
   /**
@@ -167,7 +143,7 @@ export class OptimisePanel {
       );
       // A newer choice (another kind or curve) made while the seed was on its way wins.
       if (study && this.kindName() === 'match-curvature-torsion' && this.app.selected === label)
-        this.text.value = JSON.stringify(study, null, 1);
+        this.setStudy(study);
       return;
     }
     const pts = handlesOf(e?.curve).map((p) =>
@@ -175,24 +151,57 @@ export class OptimisePanel {
     );
     const kind = this.kind.value;
     if (kind === 'problem') {
-      this.text.value = JSON.stringify(PROBLEM_TEMPLATE, null, 1);
+      this.setStudy(PROBLEM_TEMPLATE);
       return;
     }
-    this.text.value = JSON.stringify(
-      studyTemplate(
-        kind as StudyKind,
-        pts.length
-          ? pts
-          : [
-              [0, 0],
-              [5, 20],
-              [40, 0],
-            ],
-        this.method.value,
-      ),
-      null,
-      1,
+    this.setStudy(
+      studyTemplate(kind as StudyKind, pts.length ? pts : DEFAULT_POINTS, this.method.value),
     );
+  }
+
+  /**
+   * Shows a study: in the form (a study kind) and in the JSON text. An optimise problem has no
+   * form: its JSON is always shown.
+   */
+  setStudy(study: Record<string, unknown>): void {
+    this.text.value = JSON.stringify(study, null, 1);
+    const kind = this.kindName();
+    if (kind === 'problem') this.form.show(null, {});
+    else this.form.show(kind as StudyKind, structuredClone(study));
+    this.showMode();
+  }
+
+  /**
+   * The advanced view: the study file as JSON text. Leaving it reads the text back into the form;
+   * text that is not a JSON object keeps the JSON view open, with a toast saying why.
+   */
+  setAdvanced(on: boolean): void {
+    if (!on && this.kindName() !== 'problem') {
+      let parsed: unknown;
+      try {
+        parsed = JSON.parse(this.text.value);
+      } catch (e) {
+        parsed = e;
+      }
+      if (typeof parsed !== 'object' || parsed === null || Array.isArray(parsed)) {
+        this.app.toast(
+          new Error(
+            `the study text is not a JSON object${parsed instanceof Error ? ` (${parsed.message})` : ''}: fix it or fill the study again`,
+          ),
+        );
+        this.advanced.checked = true;
+        return;
+      }
+      this.form.show(this.kindName() as StudyKind, parsed as Study);
+    }
+    this.advanced.checked = on;
+    this.showMode();
+  }
+
+  private showMode(): void {
+    const json = this.advanced.checked || this.kindName() === 'problem';
+    this.text.hidden = !json;
+    this.form.root.hidden = json;
   }
 
   /** The chosen study kind (read afresh: it may change while a request is on its way). */
@@ -203,6 +212,14 @@ export class OptimisePanel {
   /** Start the job, follow its events, show its result. */
   async run(): Promise<void> {
     let body: Record<string, unknown>;
+    if (this.kindName() !== 'problem' && !this.advanced.checked) {
+      const { study, errors } = this.form.read();
+      if (errors.length > 0) {
+        this.app.setStatus(`Study not started: ${errors.join('; ')}`, true);
+        return;
+      }
+      this.text.value = JSON.stringify(study, null, 1);
+    }
     try {
       const parsed = JSON.parse(this.text.value) as Record<string, unknown>;
       body =
@@ -287,7 +304,10 @@ export class OptimisePanel {
     again.setAttribute('aria-label', `Re-run job ${job.job}`);
     const text = this.text.value;
     again.addEventListener('click', () => {
+      // The exact JSON that ran, shown as such.
       this.text.value = text;
+      this.advanced.checked = true;
+      this.showMode();
       void this.run();
     });
     li.appendChild(again);

@@ -3,11 +3,11 @@
 // badges), history; and the dialogs (law curve, natural equations, open/new, help).
 
 import type { App } from '../app';
-import { ALL_FINS, SPACE_FINS, handlesOf } from '../app';
+import { ALL_FINS, SPACE_FINS, handlesOf } from '../store/curves';
 import type { CurveFile, EndCondition, FinKind, Parameterisation } from '../api/types';
 import { el } from './dom';
 import { FIN_COLOURS } from '../viewport/viewports';
-import { curveColour, hex } from '../store/viewstate';
+import { hex } from '../store/viewstate';
 
 function section(parent: HTMLElement, title: string, id: string): HTMLElement {
   const d = el('details', { id, open: '' });
@@ -40,10 +40,11 @@ export const SHORTCUTS: [string, string][] = [
   ['Q', 'single / four views'],
   ['1 2 3 4', 'top, front, side, 3-D view alone'],
   ['G', 'grid snapping on/off'],
+  ['Shift+G', 'snapping to points and curves on/off (before the grid)'],
   ['P / R', 'pan / orbit with the left button (right-click ends)'],
   ['Wheel, middle drag, Alt-drag', 'zoom, pan, orbit (3-D view)'],
   ['O', 'open or create a document'],
-  ['E', 'export the selected curve'],
+  ['E', 'export the selected curve: menu of JSON (J), STEP (S), IGES (I)'],
   ['?', 'this help'],
 ];
 
@@ -113,7 +114,7 @@ export class Panels {
       const li = el('li', { 'data-label': label });
       if (label === app.selected) li.classList.add('selected');
       const swatch = el('span', { class: 'swatch' });
-      if (isCurve) swatch.style.background = hex(curveColour(label));
+      if (isCurve) swatch.style.background = hex(app.colourOf(label));
       const study = app.studyOf.get(label);
       const studyName = study ? app.store.entities.get(study)?.name : undefined;
       const name = el(

@@ -3,6 +3,9 @@ import {
   CURVE_PALETTE,
   DEFAULT_VIEW_STATE,
   curveColour,
+  DEFAULT_COLOUR,
+  freshColour,
+  hex,
   loadViewState,
   saveViewState,
   viewStateKey,
@@ -27,6 +30,7 @@ describe('view state per document', () => {
     layout: 'single',
     active: 'front',
     snap: true,
+    objectSnap: true,
     abscissa: 't',
     curves: { '3': { fins: ['curvature', 'torsion'], scale: 2.5, samples: 300, frames: true } },
     studyOf: { '9': '8' },
@@ -76,5 +80,30 @@ describe('curve colours', () => {
     expect(new Set(first).size).toBe(CURVE_PALETTE.length);
     // None is the selection's blue.
     expect(first).not.toContain(0x4da3ff);
+  });
+});
+
+describe('colours of new curves', () => {
+  it('take the stored colour attribute over the label, unless it is the server default', () => {
+    expect(curveColour('1', { colour: '#5fd0c8' })).toBe(0x5fd0c8);
+    expect(curveColour('1', { colour: DEFAULT_COLOUR })).toBe(curveColour('1'));
+    expect(curveColour('1', { colour: 'red' })).toBe(curveColour('1'));
+    expect(curveColour('1', {})).toBe(curveColour('1'));
+  });
+  it('give each new curve a colour no visible curve has, while the palette lasts', () => {
+    const used: number[] = [];
+    for (let i = 0; i < CURVE_PALETTE.length; i++) {
+      const c = freshColour(used);
+      expect(used).not.toContain(c);
+      used.push(c);
+    }
+    expect(new Set(used).size).toBe(CURVE_PALETTE.length);
+    // Past the palette: the least used, in palette order; a colour outside the palette counts for nothing.
+    expect(freshColour([...used, CURVE_PALETTE[0], 0x123456])).toBe(CURVE_PALETTE[1]);
+    // A hidden curve does not count: only what the caller passes (the visible curves) does.
+    expect(freshColour([CURVE_PALETTE[0], CURVE_PALETTE[2]])).toBe(CURVE_PALETTE[1]);
+    // The choice survives the trip through the stored "#rrggbb" attribute.
+    const c = freshColour([CURVE_PALETTE[0]]);
+    expect(curveColour('9', { colour: hex(c) })).toBe(c);
   });
 });

@@ -18,6 +18,8 @@ export interface ViewState {
   layout: 'quad' | 'single';
   active: 'top' | 'front' | 'side' | 'persp';
   snap: boolean;
+  /** Snap to existing points and curves (before the grid). */
+  objectSnap: boolean;
   abscissa: 's' | 't';
   curves: Record<string, CurveViewState>;
   /** Result curves of the studies run from this page: curve label → study label. */
@@ -29,6 +31,7 @@ export const DEFAULT_VIEW_STATE: ViewState = {
   layout: 'quad',
   active: 'top',
   snap: false,
+  objectSnap: false,
   abscissa: 's',
   curves: {},
   studyOf: {},
@@ -92,6 +95,7 @@ export function loadViewState(storage: Pick<Storage, 'getItem'>, doc: string): V
         ? active
         : 'top',
     snap: o['snap'] === true,
+    objectSnap: o['objectSnap'] === true,
     abscissa: o['abscissa'] === 't' ? 't' : 's',
     curves,
     studyOf:
@@ -126,8 +130,11 @@ export const CURVE_PALETTE = [
   0xe8ecf1, 0xf2a65a, 0xf07fb0, 0xe6d36a, 0x5fd0c8, 0xb59cf0, 0xff8a7a, 0xa8c96a,
 ] as const;
 
-/** A curve's colour: fixed by its label, so it stays the same across reloads and tabs. */
-export function curveColour(label: string): number {
+/** The colour attribute the server gives a curve created without one (oli::Attributes). */
+export const DEFAULT_COLOUR = '#1f77b4';
+
+/** A palette colour fixed by the label: the colour of a curve whose colour attribute is the default. */
+export function paletteColour(label: string): number {
   const n = Number(label);
   const i = Number.isInteger(n)
     ? Math.abs(n)
@@ -136,6 +143,29 @@ export function curveColour(label: string): number {
         0,
       );
   return CURVE_PALETTE[i % CURVE_PALETTE.length]!;
+}
+
+/**
+ * A curve's colour: its stored colour attribute ("#rrggbb", kept by the document, so the same
+ * across reloads and tabs), or, while that is the server's default, the palette colour of its label.
+ */
+export function curveColour(label: string, attributes?: Readonly<Record<string, unknown>>): number {
+  const c = attributes?.['colour'];
+  if (typeof c === 'string' && /^#[0-9a-f]{6}$/.test(c) && c !== DEFAULT_COLOUR)
+    return parseInt(c.slice(1), 16);
+  return paletteColour(label);
+}
+
+/**
+ * The colour for a new curve: the first palette colour none of `used` (the visible curves'
+ * colours) is; when every one is taken, the one used least (the first such in palette order).
+ */
+export function freshColour(used: Iterable<number>): number {
+  const count = new Map<number, number>(CURVE_PALETTE.map((c) => [c, 0]));
+  for (const c of used) if (count.has(c)) count.set(c, count.get(c)! + 1);
+  let best: number = CURVE_PALETTE[0];
+  for (const c of CURVE_PALETTE) if (count.get(c)! < count.get(best)!) best = c;
+  return best;
 }
 
 export const hex = (c: number): string => `#${c.toString(16).padStart(6, '0')}`;

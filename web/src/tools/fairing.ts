@@ -14,7 +14,7 @@
 // accepted, only while the page still holds the curve it was computed from.
 import { ApiError } from '../api/client';
 import { finLines } from '../api/adapt';
-import type { Analysis, CurveFile, FairMethod, FairPreview } from '../api/types';
+import type { Analysis, CurveFile, FairHold, FairMethod, FairPreview } from '../api/types';
 import type { App } from '../app';
 import { el } from '../panels/dom';
 
@@ -26,15 +26,17 @@ const HOLD_MS = 20;
 /** The optimisation budget the page asks for, seconds: with the round trip and a frame, ≤ 150 ms. */
 const BUDGET_S = 0.08;
 
-/** What a ghost is of: the curve and the assistant's settings (tolerance, method). */
-function ghostKey(curve: CurveFile, tolerance: number, method: FairMethod): string {
-  return `${tolerance} ${method} ${JSON.stringify(curve)}`;
+/** What a ghost is of: the curve and the assistant's settings (tolerance, method, held ends). */
+function ghostKey(curve: CurveFile, tolerance: number, method: FairMethod, hold: FairHold): string {
+  return `${tolerance} ${method} ${hold} ${JSON.stringify(curve)}`;
 }
 
 export class FairingAssistant {
   enabled = false;
   tolerance = 1;
   method: FairMethod = 'min-variation';
+  /** What the ghost keeps at the curve's ends (the server's "hold"). */
+  hold: FairHold = 'free';
   /** The ghost on screen: for which curve (label and ghostKey of the curve it fairs). */
   preview: { label: string; key: string; result: FairPreview } | null = null;
   /** Last pointer move of a drag to the frame that drew the ghost for its final position, ms. */
@@ -74,6 +76,9 @@ export class FairingAssistant {
     const method = el('select', { id: 'fair-method', 'aria-label': 'Fairing method' });
     method.innerHTML =
       '<option value="min-variation">minimal curvature variation</option><option value="knots">knot fairing</option>';
+    const hold = el('select', { id: 'fair-hold', 'aria-label': 'Hold ends' });
+    hold.innerHTML =
+      '<option value="free">free</option><option value="points">end points</option><option value="tangents">end points and tangents</option>';
     const accept = el('button', { type: 'button', id: 'fair-accept' }, 'Accept (A)');
     this.readout = el('div', { id: 'fair-readout', class: 'readout', 'aria-live': 'polite' });
     const row = (label: string, input: HTMLElement): HTMLElement => {
@@ -85,6 +90,7 @@ export class FairingAssistant {
       row('on', this.toggle),
       row('tolerance', tol),
       row('method', method),
+      row('hold ends', hold),
       accept,
       this.readout,
     );
@@ -100,6 +106,10 @@ export class FairingAssistant {
     });
     method.addEventListener('change', () => {
       this.method = method.value as FairMethod;
+      this.edited(this.app.selected);
+    });
+    hold.addEventListener('change', () => {
+      this.hold = hold.value as FairHold;
       this.edited(this.app.selected);
     });
     accept.addEventListener('click', () => {
@@ -193,7 +203,7 @@ export class FairingAssistant {
     const label = this.app.selected;
     const curve = label ? this.app.heldCurve(label) : undefined;
     if (!this.enabled || !label || !curve) return null;
-    return { label, curve, key: ghostKey(curve, this.tolerance, this.method) };
+    return { label, curve, key: ghostKey(curve, this.tolerance, this.method, this.hold) };
   }
 
   private request(): void {
@@ -226,6 +236,7 @@ export class FairingAssistant {
         {
           tolerance: this.tolerance,
           method: this.method,
+          hold: this.hold,
           budget: BUDGET_S,
           curve: want.curve,
           analysis: {
@@ -339,7 +350,7 @@ export class FairingAssistant {
       this.app.dragPending ||
       this.app.heldCurve(p.label) !== stored ||
       !stored ||
-      ghostKey(stored, this.tolerance, this.method) !== p.key
+      ghostKey(stored, this.tolerance, this.method, this.hold) !== p.key
     ) {
       this.app.setStatus('Fairing: the ghost is out of date; wait for the new one');
       return;

@@ -9,6 +9,7 @@ import {
   pickPolyline,
   projectToScreen,
   snapToGrid,
+  snapToObjects,
   workingPlane,
   type Vec3,
 } from './math';
@@ -104,5 +105,46 @@ describe('picking', () => {
     const hit = pickPolyline([140, 101], pts, vp, 200, 200, 3);
     expect(hit?.index).toBe(1);
     expect(hit?.distance).toBeCloseTo(1, 9);
+  });
+});
+
+describe('object snap', () => {
+  // The top view of a 100 × 100 window onto [-50, 50]²: x right, y up, one unit per pixel.
+  const m = [1 / 50, 0, 0, 0, 0, 1 / 50, 0, 0, 0, 0, -1 / 50, 0, 0, 0, 0, 1];
+  const px = (x: number, y: number): [number, number] => [x + 50, 50 - y];
+  const targets = {
+    points: [
+      [10, 10, 0],
+      [12, 10, 0],
+    ] as Vec3[],
+    polylines: [
+      [
+        [-40, -20, 0],
+        [0, -20, 0],
+        [40, 20, 0],
+      ],
+    ] as Vec3[][],
+  };
+  it('lands exactly on the nearest point within the radius, before any curve', () => {
+    const s = snapToObjects(px(10.6, 11), targets, m, 100, 100, 6)!;
+    expect(s.point).toEqual([10, 10, 0]);
+    expect(s.kind).toBe('point');
+    expect(s.index).toBe(0);
+    expect(s.distance).toBeCloseTo(Math.hypot(0.6, 1), 12);
+    expect(snapToObjects(px(11.6, 10), targets, m, 100, 100, 6)!.point).toEqual([12, 10, 0]);
+  });
+  it('lands on the nearest point of a curve when no point is near', () => {
+    const s = snapToObjects(px(-10, -17), targets, m, 100, 100, 6)!;
+    expect(s.kind).toBe('curve');
+    expect(s.point[0]).toBeCloseTo(-10, 12);
+    expect(s.point[1]).toBeCloseTo(-20, 12);
+    // On the slanted segment y = x − 20: the foot of the perpendicular from (30, 0) is (25, 5).
+    const t = snapToObjects(px(30, 0), targets, m, 100, 100, 8)!;
+    expect(t.point[0]).toBeCloseTo(25, 12);
+    expect(t.point[1]).toBeCloseTo(5, 12);
+    expect(t.distance).toBeCloseTo(Math.hypot(5, 5), 12);
+  });
+  it('gives nothing beyond the radius', () => {
+    expect(snapToObjects(px(-10, 0), targets, m, 100, 100, 6)).toBeNull();
   });
 });

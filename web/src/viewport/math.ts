@@ -245,3 +245,60 @@ export function bounds(points: Iterable<Vec3>): { min: Vec3; max: Vec3 } | null 
   }
   return min ? { min, max } : null;
 }
+
+/** What object snap can land on: points (handles, end points) and polylines (curves as drawn). */
+export interface SnapTargets {
+  readonly points: readonly Vec3[];
+  readonly polylines: readonly (readonly Vec3[])[];
+}
+
+/**
+ * Object snap: the target point nearest the cursor on screen within `radius` pixels (points win
+ * over curves: a handle or end point is what a designer aims at), else the nearest point of a
+ * polyline within `radius` (the segment's closest point on screen, at the same fraction of the
+ * segment in space: exact in the orthographic views, on the chord in perspective), else null.
+ * Ties go to the first target, so a snap is deterministic. `index` is the point's or polyline's.
+ */
+export function snapToObjects(
+  cursor: readonly [number, number],
+  targets: SnapTargets,
+  viewProj: Mat4,
+  width: number,
+  height: number,
+  radius: number,
+): { point: Vec3; kind: 'point' | 'curve'; index: number; distance: number } | null {
+  const near = pickNearest(cursor, targets.points, viewProj, width, height, radius);
+  if (near)
+    return {
+      point: targets.points[near.index]!,
+      kind: 'point',
+      index: near.index,
+      distance: near.distance,
+    };
+  let best: { point: Vec3; kind: 'curve'; index: number; distance: number } | null = null;
+  for (const [index, line] of targets.polylines.entries()) {
+    let prev = line.length > 0 ? projectToScreen(line[0]!, viewProj, width, height) : null;
+    for (let i = 1; i < line.length; i++) {
+      const s = projectToScreen(line[i]!, viewProj, width, height);
+      if (prev && s) {
+        const dx = s[0] - prev[0];
+        const dy = s[1] - prev[1];
+        const len2 = dx * dx + dy * dy;
+        const f =
+          len2 === 0
+            ? 0
+            : Math.max(
+                0,
+                Math.min(1, ((cursor[0] - prev[0]) * dx + (cursor[1] - prev[1]) * dy) / len2),
+              );
+        const d = Math.hypot(prev[0] + f * dx - cursor[0], prev[1] + f * dy - cursor[1]);
+        if (d <= radius && (!best || d < best.distance)) {
+          const a = line[i - 1]!;
+          best = { point: add(a, scale(sub(line[i]!, a), f)), kind: 'curve', index, distance: d };
+        }
+      }
+      prev = s;
+    }
+  }
+  return best;
+}

@@ -467,6 +467,13 @@ export class Viewports {
     return cv;
   }
 
+  /** The colour a curve's line is drawn in now (the selection's blue when selected): for inspection and tests. */
+  drawnColour(label: string): number | undefined {
+    return (
+      this.curves.get(label)?.curve.material as THREE.LineBasicMaterial | undefined
+    )?.color.getHex();
+  }
+
   /** Draw one curve from its server analysis and its handles. */
   drawCurve(label: string, d: CurveDrawing): void {
     const cv = this.curveView(label);

@@ -9,15 +9,20 @@
 // curves of a STEP, IGES or JSON file, or the points of a point file (.csv,
 // .txt, .dat, .xyz: io::parse_points), a plain name in the workspace or the
 // file's text in the body, as new entities, in one "import" step.
+// POST /api/documents/{name}/export {"labels", "format"}: the entities
+// written as a JSON, STEP or IGES file, its text in the reply (the document is
+// only read).
 #include "hula/server/documents.hpp"
 
-#include <stdlib.h>  // mkstemps
+#include <stdlib.h>  // mkstemps, mkdtemp
 #include <unistd.h>  // close
 
 #include <cctype>
 #include <fstream>
+#include <limits>
 
 #include "hula/io/atomic_file.hpp"
+#include "hula/io/json_curve.hpp"
 #include "hula/io/json_read.hpp"
 #include "hula/io/points_file.hpp"
 #include "hula/oli/json_exchange.hpp"
@@ -83,6 +88,42 @@ std::string import_extension(const std::string& name, const char* field) {
                 ErrorWhere{.field = field});
   return ext.substr(1);
 }
+
+// The labels of an export request: a non-empty array of positive integers.
+std::vector<oli::Label> export_labels(const Json& body) {
+  const json::JsonPath path = json::root_path("labels");
+  const Json& array = json::get_array(json::require_member(body, json::JsonPath(), "labels"), path);
+  if (array.empty()) throw Error(Errc::InvalidArgument, "labels: name at least one entity to export", path.where);
+  std::vector<oli::Label> labels;
+  for (std::size_t i = 0; i < array.size(); ++i) {
+    const long long v = json::get_integer(array[i], path.element(i), 1, std::numeric_limits<long long>::max());
+    labels.push_back(oli::Label{static_cast<std::uint64_t>(v)});
+  }
+  return labels;
+}
+
+#ifdef HULA_WITH_OCCT
+// A private temporary directory removed when done: the exchange helper writes files, not text.
+class ExportDirectory {
+ public:
+  ExportDirectory() {
+    std::string pattern = (std::filesystem::temp_directory_path() / "hula-export-XXXXXX").string();
+    if (mkdtemp(pattern.data()) == nullptr)
+      throw Error(Errc::IoError, "cannot create a temporary directory for the export", ErrorWhere{.field = "format"});
+    path_ = pattern;
+  }
+  ExportDirectory(const ExportDirectory&) = delete;
+  ExportDirectory& operator=(const ExportDirectory&) = delete;
+  ~ExportDirectory() {
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
+  }
+  [[nodiscard]] const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
+#endif
 
 // A file the import route reads: a workspace file, or the uploaded text in a temporary file
 // removed when done (the exchange helper reads files, not text).
@@ -238,6 +279,38 @@ void add_documents(Router& router, const Context& context) {
     out["labels"] = std::move(list);
     for (auto& [key, value] : cad.items()) out[key] = std::move(value);
     return json_response(201, out);
+  });
+  router.add("POST", "/api/documents/{name}/export", [&docs](const Request& request) {
+    const Json body = request.json();
+    json::reject_unknown_members(body, json::JsonPath(), {"labels", "format"});
+    const std::vector<oli::Label> labels = export_labels(body);
+    const std::string format =
+        json::get_string(json::require_member(body, json::JsonPath(), "format"), json::root_path("format"));
+    const auto doc = docs.get(request.params.at(0));
+    Json out = Json::object();
+    Json list = Json::array();
+    for (const oli::Label l : labels) list.push_back(l.value);
+    out["labels"] = std::move(list);
+    if (format == "json") {
+      out["format"] = format;
+      out["content"] = io::to_file_text(doc->read([&](const oli::Document& d) { return oli::export_json(d, labels); }));
+      return json_response(200, out);
+    }
+#ifdef HULA_WITH_OCCT
+    const oli::ExchangeFormat exchange = oli::exchange_format_from_name(format);
+    // The curves are read under the document's lock; the helper process runs after it is released.
+    const auto items = doc->read([&](const oli::Document& d) { return oli::export_items(d, labels); });
+    const ExportDirectory dir;
+    const auto report = oli::export_curves(
+        dir.path() / (exchange == oli::ExchangeFormat::Iges ? "out.igs" : "out.step"), items, exchange);
+    out["format"] = std::string(oli::exchange_format_name(report.format));
+    out["content"] = io::read_text_file(report.path);
+    out["max_deviation"] = report.max_deviation;
+    return json_response(200, out);
+#else
+    throw Error(Errc::Unsupported, "exporting " + format + " needs Open CASCADE, and this hula was built without it",
+                ErrorWhere{.field = "format"});
+#endif
   });
   router.add("POST", "/api/documents/{name}/undo", [&docs](const Request& request) {
     const auto doc = docs.get(request.params.at(0));
