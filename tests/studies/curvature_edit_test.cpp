@@ -319,8 +319,9 @@ curve::Curve s_curve_of_width(double width) {
 // result by arc length (analyse_curve), not by the fit. Bounds, as fractions of the drag h: the exact target is out
 // of reach (the bump adds h L / 6 of turning that the held end tangent takes back elsewhere, and the handle budget
 // limits the bump's shape), so the least-squares fit spreads a miss over the profile: measured 0.27–0.60 h at the
-// drag and 0.40–0.79 h at worst; bounds 0.65 h and 0.85 h. Matched at the original's parameters instead (as first
-// built), the S's κ at the dragged fraction went the wrong way: misses of 6–9 h.
+// drag and 0.40–0.79 h at worst (before the fit refused straightened stretches); bounds 0.65 h and 0.85 h. Matched
+// at the original's parameters instead (as first built), the S's κ at the dragged fraction went the wrong way:
+// misses of 6–9 h.
 TEST(CurvatureEdit, DragMatchesTheTargetAtTheNewCurvesOwnArcLengthFractions) {
   struct Case {
     std::string name;
