@@ -3,7 +3,8 @@
 // and of the thesis's Example 1 corner keeps both end points and end tangents
 // within 1e-9, keeps the inflection count, leaves a curve with at most twice
 // the original's handles, and raises the curvature at the dragged arc length
-// by about what the drag asked — every check over the server's API.
+// (the same fraction of the edited curve's own length) by about what the drag
+// asked — every check over the server's API.
 import { test } from '@playwright/test';
 import type { Analysis, CurveFile } from '../src/api/types';
 import {
@@ -161,12 +162,17 @@ for (const [name, curve, holds] of cases) {
       }
       // The S stays an S (one inflection), the corner stays convex (none).
       expect(inflections(a1)).toBe(inflections(a0));
-      // |κ| where the drag was went up by about what the drag asked: at the point of the curve that was at
-      // s0 (its parameter t0; the edit keeps features at their parameters, while holding the ends shifts
-      // arc lengths a little, which would move the S's sharp peak past a fixed s).
+      // |κ| where the drag was went up by about what the drag asked, where the κ(s) graph of the edited
+      // curve shows the dragged point: at the same fraction (30 %) of its own length (holding the ends
+      // changes the length), asked of the server's analysis by arc length at exactly that s.
+      const l1 = a1.s[a1.s.length - 1]!;
+      const [k1] = (await analysis(doc, label, { at: [0.3 * l1], by: 'arclength' })).kappa;
+      const movedAtSameS = k1! - k0;
+      // For comparison: at the parameter the dragged point had (the edit matches κ by arc length, so a
+      // feature of the profile may move in t).
       const t0 = at(a0.s, a0.t, s0);
       const p = await analysis(doc, label, { samples: 2001, by: 'parameter' });
-      const moved = at(p.t, p.kappa, t0) - k0;
+      const movedAtSameT = at(p.t, p.kappa, t0) - k0;
       // The measured numbers (the report's table).
       console.log(
         JSON.stringify({
@@ -181,14 +187,16 @@ for (const [name, curve, holds] of cases) {
           end_tangent_error: dist(a1.frames[n1]!.T, a0.frames[n0]!.T),
           end_curvature_errors: [a1.kappa[0]! - a0.kappa[0]!, a1.kappa[n1]! - a0.kappa[n0]!],
           kappa_asked: asked,
-          kappa_moved: moved,
-          // The same at 30 % of the edited curve's own length (the fit holds κ at the original's parameters).
+          kappa_moved: movedAtSameS,
+          kappa_moved_at_same_s: movedAtSameS,
+          kappa_moved_at_same_t: movedAtSameT,
+          // The same from the 200 arc-length samples (linear between them).
           kappa_moved_at_same_u: at(a1.s, a1.kappa, 0.3 * a1.s[n1]!) - k0,
-          length: [length, a1.s[n1]],
+          length: [length, l1],
         }),
       );
-      expect(moved).toBeGreaterThan(0.5 * asked);
-      expect(moved).toBeLessThan(1.5 * asked);
+      expect(movedAtSameS).toBeGreaterThan(0.5 * asked);
+      expect(movedAtSameS).toBeLessThan(1.5 * asked);
       if (name === 'S-spline' && hold === 'tangent') await shot(page, 'design-by-curvature-s');
 
       // Undo gives the original back.

@@ -5,7 +5,8 @@
 // refinement up to the handle budget (see the header).
 //
 // Notation: a, b the original's domain; L its length; s arc length, u = s / L;
-// t_j the samples' parameters, κ*_j the target at u_j, r_j = r(s_j) the
+// t_j the samples' parameters (on a fit: where its arc length is u_j times its
+// own length L'), κ*_j the target at u_j, r_j = r(s_j) the
 // reconstruction's points; R_i the fit's (rational) basis of degree p; P_i its
 // control points, x their coordinates stacked; T, N, B the Frenet frame
 // (planar: N = n × T the signed normal, B = n the plane normal); σ = |C'| the
@@ -17,6 +18,8 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <limits>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -51,12 +54,14 @@ constexpr double kEditResolution = 0.2;
 // An end curvature this small relative to the curve's largest counts as zero (a natural end): the fit keeps it
 // zero so no inflection appears at the end.
 constexpr double kZeroEndCurvature = 1e-9;
+// A target sample this large relative to max |κ*| bends: the fit may not make the curve straight there.
+constexpr double kStraightTarget = 1e-3;
 // Null space of the end rows: singular values below this fraction of the largest count as zero.
 constexpr double kNullSpace = 1e-10;
 // Central-difference step of the polish's Jacobian, as a fraction of the curve's size.
 constexpr double kDifferenceStep = 1e-6;
 // Levenberg–Marquardt iterations of the profile fit, and damping increases tried per iteration.
-constexpr int kPolishIterations = 15;
+constexpr int kPolishIterations = 30;
 constexpr int kDampingTries = 8;
 // Parameter-correction rounds per fit, and Newton steps per round.
 constexpr int kCorrectionRounds = 3;
@@ -329,18 +334,132 @@ std::vector<Vec3> position_fit(const FitBasis& fb, std::span<const double> t, st
 // κ at t: signed about the plane, or unsigned for space curves.
 double curvature_at(const diffgeom::FrenetPoint& f, bool planar) { return planar ? f.signed_curvature : f.curvature; }
 
-// The profile targets of the fit at fixed parameters t_j: κ*_j, and for a space curve τ*_j with the weight that
-// puts a torsion miss on the scale of a curvature miss.
+// The profile targets of the fit at the fractions u_j of the curve's own length: κ*_j, and for a space curve τ*_j
+// with the weight that puts a torsion miss on the scale of a curvature miss. t_j: the start curve's parameters there
+// (the arc-length grid's nodes).
 struct ProfileTargets {
-  std::vector<double> t, kappa, tau;
+  std::vector<double> u, t, kappa, tau;
   double torsion_weight = 0.0;
 };
 
-// Levenberg–Marquardt on the control points x: min Σ_j (κ(t_j; x) − κ*_j)² (+ w_τ² (τ(t_j; x) − τ*_j)²), the
-// parameters t_j fixed (a feature of the profile stays at its parameter, so a sharp peak is compared with itself,
-// not with a neighbour after a small shift along the curve). The end rows (and a planar curve's plane) are
-// linear in x and held exactly: x = x₀ + Z y, Z an orthonormal basis of their null space (SVD). The Jacobian is by
-// central differences in y.
+// Gauss–Lobatto's 4-point rule on [−1, 1]: nodes ±1, ±1/√5, weights 1/6, 5/6 (exact to degree 5).
+constexpr double kLobattoNode = 0.44721359549995793928;  // 1/√5
+constexpr double kLobattoEnd = 1.0 / 6.0;
+constexpr double kLobattoInner = 5.0 / 6.0;
+// Newton steps of the arc-length inversion on one grid interval (it converges to rounding in 3–5).
+constexpr int kInverseSteps = 30;
+
+// A curve's parameters at fractions of its own length: s(t) = ∫ σ integrated on a grid fixed while the control
+// points move (the start curve's sample parameters and the knots) by Gauss–Lobatto's 4-point rule per interval,
+// and inverted by Newton on the cubic Hermite interpolant of s on the interval (s and s' = σ at both ends). The
+// grid being fixed, t_j is a smooth function of the control points (a finite-difference Jacobian sees no switch of
+// an adaptive rule); the error is O(h⁴ max|σ‴|) per interval of width h.
+class OwnArcLength {
+ public:
+  OwnArcLength(const nurbs::KnotVector& knots, std::span<const double> t) {
+    const Interval dom = knots.domain();
+    nodes_.assign(t.begin(), t.end());
+    for (const double k : knots.breakpoints()) nodes_.push_back(k);
+    nodes_.push_back(dom.start);
+    nodes_.push_back(dom.end);
+    std::erase_if(nodes_, [&](double x) { return !(x >= dom.start && x <= dom.end); });
+    std::sort(nodes_.begin(), nodes_.end());
+    nodes_.erase(std::unique(nodes_.begin(), nodes_.end()), nodes_.end());
+    const std::vector<double> breaks = knots.breakpoints();
+    for (std::size_t k = 0; k + 1 < nodes_.size(); ++k) {
+      const double mid = 0.5 * (nodes_[k] + nodes_[k + 1]), half = 0.5 * (nodes_[k + 1] - nodes_[k]);
+      inner_.push_back(mid - kLobattoNode * half);
+      inner_.push_back(mid + kLobattoNode * half);
+      // σ just left of an interior knot (the curve may be only C0 there); elsewhere σ is continuous.
+      const bool knot = nodes_[k + 1] < dom.end && std::binary_search(breaks.begin(), breaks.end(), nodes_[k + 1]);
+      if (knot) left_knots_.push_back(k + 1);
+    }
+  }
+
+  // t_j with s(t_j) = u_j · L for u_j in [0, 1] (u = 0 and 1 give the domain's ends exactly); returns L.
+  double parameters(const nurbs::NurbsCurve& c, std::span<const double> u, std::span<double> t) {
+    const std::size_t n = nodes_.size();
+    d_.resize(2 * std::max(n, inner_.size()));
+    speed_.resize(n);
+    speed_left_.resize(n);
+    c.derivatives(nodes_, 1, std::span<Vec3>(d_).first(2 * n));
+    for (std::size_t k = 0; k < n; ++k) speed_[k] = speed_left_[k] = norm(d_[2 * k + 1]);
+    start_derivative_ = d_[1];
+    regular_ = true;
+    for (std::size_t k = 0; k + 1 < n && regular_; ++k) regular_ = dot(d_[2 * k + 1], d_[2 * k + 3]) > 0.0;
+    for (const std::size_t k : left_knots_)
+      speed_left_[k] = norm(c.derivatives(nodes_[k], 1, {.side = nurbs::Side::Left})[1]);
+    end_derivative_ = c.derivatives(nodes_.back(), 1, {.side = nurbs::Side::Left})[1];
+    speed_left_.back() = norm(end_derivative_);
+    c.derivatives(inner_, 1, std::span<Vec3>(d_).first(2 * inner_.size()));
+    s_.assign(n, 0.0);
+    for (std::size_t k = 0; k + 1 < n; ++k) {
+      const double half = 0.5 * (nodes_[k + 1] - nodes_[k]);
+      s_[k + 1] = s_[k] + half * (kLobattoEnd * (speed_[k] + speed_left_[k + 1]) +
+                                  kLobattoInner * (norm(d_[4 * k + 1]) + norm(d_[4 * k + 3])));
+    }
+    const double length = s_.back();
+    for (std::size_t j = 0; j < u.size(); ++j) {
+      if (u[j] <= 0.0) {
+        t[j] = nodes_.front();
+        continue;
+      }
+      if (u[j] >= 1.0) {
+        t[j] = nodes_.back();
+        continue;
+      }
+      const double target = u[j] * length;
+      const auto above = static_cast<std::size_t>(std::upper_bound(s_.begin(), s_.end(), target) - s_.begin());
+      const std::size_t k = std::min(std::max<std::size_t>(above, 1) - 1, n - 2);
+      t[j] = nodes_[k] + (nodes_[k + 1] - nodes_[k]) * inverse_hermite(k, target);
+    }
+    return length;
+  }
+
+  // Of the last curve given to parameters(): false if its tangent turns by more than a right angle between two
+  // neighbouring nodes (a cusp between them: the fit went through zero speed), and C' at both ends.
+  [[nodiscard]] bool regular() const noexcept { return regular_; }
+  [[nodiscard]] const Vec3& start_derivative() const noexcept { return start_derivative_; }
+  [[nodiscard]] const Vec3& end_derivative() const noexcept { return end_derivative_; }
+
+ private:
+  // θ in [0, 1] where the interval k's Hermite cubic of s reaches `target`: Newton inside a bisection bracket.
+  [[nodiscard]] double inverse_hermite(std::size_t k, double target) const {
+    const double h = nodes_[k + 1] - nodes_[k], ds = s_[k + 1] - s_[k];
+    const double a = h * speed_[k], b = h * speed_left_[k + 1];
+    const auto value = [&](double x) {
+      return s_[k] + a * x * (1 - x) * (1 - x) - b * x * x * (1 - x) + ds * x * x * (3 - 2 * x);
+    };
+    const auto slope = [&](double x) { return a * (1 - x) * (1 - 3 * x) - b * x * (2 - 3 * x) + 6 * ds * x * (1 - x); };
+    double lo = 0.0, hi = 1.0, x = ds > 0.0 ? std::clamp((target - s_[k]) / ds, 0.0, 1.0) : 0.5;
+    for (int step = 0; step < kInverseSteps; ++step) {
+      const double f = value(x) - target;
+      if (f == 0.0) break;
+      (f < 0.0 ? lo : hi) = x;
+      const double d = slope(x);
+      double next = d > 0.0 ? x - f / d : 0.5 * (lo + hi);
+      if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+      const bool done = std::abs(next - x) <= 4 * std::numeric_limits<double>::epsilon();
+      x = next;
+      if (done) break;
+    }
+    return x;
+  }
+
+  std::vector<double> nodes_, inner_;
+  std::vector<std::size_t> left_knots_;
+  std::vector<Vec3> d_;
+  std::vector<double> speed_, speed_left_, s_;
+  Vec3 start_derivative_{}, end_derivative_{};
+  bool regular_ = true;
+};
+
+// Levenberg–Marquardt on the control points x: min Σ_j (κ(t_j(x); x) − κ*_j)² (+ w_τ² (τ(t_j(x); x) − τ*_j)²),
+// t_j(x) where the candidate's own arc length is u_j times its own length (OwnArcLength): the profile is compared
+// where the designer drew it on the κ(s) graph, the length free (a held end makes an edited curve longer or
+// shorter, and a sharp peak compared at fixed parameters slides along s). The end rows (and a planar curve's
+// plane) are linear in x and held exactly: x = x₀ + Z y, Z an orthonormal basis of their null space (SVD). The
+// Jacobian is by central differences in y.
 nurbs::NurbsCurve profile_fit(const FitBasis& fb, const nurbs::NurbsCurve& start, const FitEnd& first,
                               const FitEnd& last, const std::optional<Vec3>& plane, const ProfileTargets& targets) {
   const auto n = static_cast<Eigen::Index>(fb.knots.control_point_count());
@@ -371,11 +490,39 @@ nurbs::NurbsCurve profile_fit(const FitBasis& fb, const nurbs::NurbsCurve& start
   const bool planar = plane.has_value();
   diffgeom::FrenetOptions fo;
   if (plane) fo.plane_normal = *plane;
-  const std::size_t count = targets.t.size();
+  const std::size_t count = targets.u.size();
   const auto m = static_cast<Eigen::Index>(planar ? count : 2 * count);
   std::vector<diffgeom::FrenetPoint> frames(count);
+  OwnArcLength own(fb.knots, targets.t);
+  std::vector<double> t(count);
+  // Sign changes of a planar profile, values within kZeroEndCurvature of the largest |κ*| counting as zero.
+  double kappa_scale = 0.0;
+  for (const double k : targets.kappa) kappa_scale = std::max(kappa_scale, std::abs(k));
+  const auto sign_changes = [&](const auto& kappa_of) {
+    int changes = 0, previous = 0;
+    for (std::size_t j = 0; j < count; ++j) {
+      const double k = kappa_of(j);
+      const int sign = k > kZeroEndCurvature * kappa_scale ? 1 : (k < -kZeroEndCurvature * kappa_scale ? -1 : 0);
+      if (sign != 0 && previous != 0 && sign != previous) ++changes;
+      if (sign != 0) previous = sign;
+    }
+    return changes;
+  };
+  int candidate_changes = 0;
+  // Samples where the candidate is straight (|κ| within kZeroEndCurvature of the scale) but the target clearly bends
+  // (|κ*| above kStraightTarget of the scale): a fit that flattens a stretch to rounding leaves sign noise there.
+  std::size_t candidate_flat = 0;
   const auto residual = [&](const nurbs::NurbsCurve& c) {
-    diffgeom::frenet(c, targets.t, frames, fo);
+    static_cast<void>(own.parameters(c, targets.u, t));
+    diffgeom::frenet(c, t, frames, fo);
+    if (planar) {
+      candidate_changes = sign_changes([&](std::size_t j) { return frames[j].signed_curvature; });
+      candidate_flat = 0;
+      for (std::size_t j = 0; j < count; ++j)
+        if (std::abs(frames[j].signed_curvature) <= kZeroEndCurvature * kappa_scale &&
+            std::abs(targets.kappa[j]) > kStraightTarget * kappa_scale)
+          ++candidate_flat;
+    }
     Vector r(m);
     for (std::size_t j = 0; j < count; ++j) {
       r(static_cast<Eigen::Index>(j)) = curvature_at(frames[j], planar) - targets.kappa[j];
@@ -391,6 +538,10 @@ nurbs::NurbsCurve profile_fit(const FitBasis& fb, const nurbs::NurbsCurve& start
   double lambda = 1e-3;
   nurbs::NurbsCurve current = start;
   Vector r0 = residual(current);
+  // A planar fit keeps to the inflections the target (or the start) has: a step that adds one is refused.
+  const int allowed_changes =
+      std::max(candidate_changes, sign_changes([&](std::size_t j) { return targets.kappa[j]; }));
+  const std::size_t allowed_flat = candidate_flat;
   for (int iteration = 0; iteration < kPolishIterations; ++iteration) {
     Matrix jac(m, z.cols());
     for (Eigen::Index k = 0; k < z.cols(); ++k) {
@@ -409,7 +560,12 @@ nurbs::NurbsCurve profile_fit(const FitBasis& fb, const nurbs::NurbsCurve& start
       const Vector dy = a.ldlt().solve(-jtr);
       nurbs::NurbsCurve trial = curve_of(y + dy);
       const Vector r1 = residual(trial);
-      if (r1.allFinite() && r1.squaredNorm() < r0.squaredNorm()) {
+      // A step through zero speed (a cusp, or an end tangent reversed), one that adds an inflection or straightens
+      // a stretch the target bends is refused like a worse one: more damping.
+      const bool regular = own.regular() && candidate_changes <= allowed_changes && candidate_flat <= allowed_flat &&
+                           dot(own.start_derivative(), first.state.tangent) > 0.0 &&
+                           (last.rule == EndRule::None || dot(own.end_derivative(), last.state.tangent) > 0.0);
+      if (regular && r1.allFinite() && r1.squaredNorm() < r0.squaredNorm()) {
         y += dy;
         current = std::move(trial);
         r0 = r1;
@@ -625,7 +781,7 @@ CurvatureEditResult edit_curvature(const curve::Curve& original, const Curvature
                   ErrorWhere{.field = "curve"});
   };
 
-  ProfileTargets targets{.t = o.t, .kappa = target, .tau = tau_target, .torsion_weight = 0.0};
+  ProfileTargets targets{.u = o.u, .t = o.t, .kappa = target, .tau = tau_target, .torsion_weight = 0.0};
   if (!planar) {
     double tau_max = 0.0;
     for (const double v : tau_target) tau_max = std::max(tau_max, std::abs(v));
@@ -697,8 +853,10 @@ CurvatureEditResult edit_curvature(const curve::Curve& original, const Curvature
   for (;;) {
     const FitBasis fb = basis_of(current);
     current = profile_fit(fb, current, first, last, plane, targets);
+    std::vector<double> own_t(count);
+    static_cast<void>(OwnArcLength(fb.knots, targets.t).parameters(current, targets.u, own_t));
     std::vector<diffgeom::FrenetPoint> ff(count);
-    diffgeom::frenet(current, targets.t, ff, fo);
+    diffgeom::frenet(current, own_t, ff, fo);
     worst = 0.0;
     mean = 0.0;
     std::size_t at = 0;
@@ -713,7 +871,7 @@ CurvatureEditResult edit_curvature(const curve::Curve& original, const Curvature
     mean /= static_cast<double>(count);
     if (worst <= curvature_tol || handles_of(fb.knots) >= budget) break;
     // Refine: a knot at the middle of the worst sample's span (exact: the curve is unchanged).
-    const std::size_t span = fb.knots.find_span(std::min(targets.t[at], std::nextafter(dom.end, dom.start)));
+    const std::size_t span = fb.knots.find_span(std::min(own_t[at], std::nextafter(dom.end, dom.start)));
     current = nurbs::insert_knot(current, 0.5 * (fb.knots[span] + fb.knots[span + 1]));
   }
 

@@ -21,9 +21,12 @@
 //     knots, and its profile becomes the target.
 //  3. The profile fit: Levenberg–Marquardt on the control points of the
 //     original's knot vector (its degree, breakpoints and weights) minimising
-//     Σ_j (κ(t_j) − κ*_j)² (+ the torsion misses of a space curve) at fixed
-//     parameters t_j (a sharp peak is compared with itself, not with its
-//     neighbour after a small shift), the end conditions held exactly as linear
+//     Σ_j (κ(t_j) − κ*_j)² (+ the torsion misses of a space curve) where t_j is
+//     the candidate's own parameter at the fraction u_j of its own length (the
+//     κ(s) graph the designer drew, redrawn for the new length: the length is
+//     free, re-measured on every candidate on a fixed quadrature grid so the
+//     misses are smooth in the control points; a step through zero speed is
+//     refused like a worse one), the end conditions held exactly as linear
 //     rows: C(a) = start, C'(a) ∥ T (and at b); a natural end (κ = 0) keeps
 //     C''·N = 0 so no inflection appears there; for G2 the end speeds σ are
 //     frozen and C'(a) = σ T, C''(a)·N = κ σ², C''(a)·B = 0. While the fit misses
@@ -93,7 +96,8 @@ struct CurvatureEditOptions {
   /// original's count. Default 2; valid [1, 10].
   double max_handles_factor = 2.0;
   /// Curvature tolerance relative to the target's max |κ*| (and at most a fifth of the largest change asked): the
-  /// fit is refined while max_j |κ(t_j) − κ*_j| exceeds it and the budget allows. Default 0.02; valid [1e-6, 1].
+  /// fit is refined while max_j |κ(s_j) − κ*_j| exceeds it and the budget allows, s_j = u_j times the fit's own
+  /// length. Default 0.02; valid [1e-6, 1].
   double curvature_tolerance = 0.02;
   /// Arc-length samples of the profiles and of the fit. Default 400; valid [50, 100 000].
   std::size_t samples = 400;
@@ -124,8 +128,8 @@ struct CurvatureEditResult {
   /// Length of the original and of the result (model units).
   double length_before = 0.0;
   double length_after = 0.0;
-  /// max_j and mean_j |κ(t_j) − κ*_j| of the result against the target it was fitted to (the reconstruction's
-  /// profile for a typed law), 1 / model units.
+  /// max_j and mean_j |κ(u_j L') − κ*_j| of the result (length L') against the target it was fitted to (the
+  /// reconstruction's profile for a typed law) at the samples' fractions u_j of the length, 1 / model units.
   double max_curvature_deviation = 0.0;
   double mean_curvature_deviation = 0.0;
   /// A typed law: the reconstruction's mean and max |κ − κ*| (the price of the held ends); 0 for a change.
@@ -165,7 +169,8 @@ struct CurvatureEditResult {
 /// ```
 /// @param original a curve of degree ≥ 2 with a defined tangent at both ends; a space curve also needs κ > 0
 ///   everywhere (its torsion is undefined where κ = 0)
-/// @param edit the target or change (and torsion) as laws of the original's arc length
+/// @param edit the target or change (and torsion) as laws of the original's arc length s on [0, L]; the result
+///   matches them at the same fractions s / L of its own length
 /// @param options what the end keeps, the handle budget, tolerances
 /// @throws hula::Error(Errc::InvalidArgument) naming "curvature" or "torsion" for a law of another parameter or
 ///   context, or a non-scalar law; "torsion" for a planar curve; "curve" for a straight or degree-1 curve, a
