@@ -187,6 +187,7 @@ export class Panels {
     if (!c) return;
     const pts = handlesOf(c);
     const table = el('table', { 'aria-label': 'Point coordinates' });
+    const size = Math.max(1, ...pts.flat().map(Math.abs));
     pts.forEach((p, i) => {
       const tr = el('tr');
       tr.appendChild(el('td', {}, String(i)));
@@ -195,7 +196,7 @@ export class Panels {
         const input = el('input', {
           type: 'number',
           step: 'any',
-          value: String(v),
+          value: coordinateText(v, size),
           'aria-label': `point ${i} ${'xyz'[k]!}`,
           'data-point': String(i),
           'data-axis': String(k),
@@ -630,4 +631,15 @@ export class Panels {
       () => undefined,
     );
   }
+}
+
+/**
+ * A coordinate as the point table shows it: rounding noise (below 1e-12 of the
+ * curve's size, e.g. z = 3e-15 on a planar curve) reads 0, and no more than 12
+ * significant digits, so a narrow field never shows "3.00708" for 3.00708e-15.
+ * Only the text is rounded; an edit of another axis keeps the stored value.
+ */
+export function coordinateText(v: number, size: number): string {
+  if (Math.abs(v) < 1e-12 * size) return '0';
+  return String(Number(v.toPrecision(12)));
 }
