@@ -166,46 +166,5 @@ TEST(InterpolateOcct, OcctOwnParametersAreChordLengths) {
   }
 }
 
-// checks: the closed spline against GeomAPI_Interpolate with PeriodicFlag (N + 1 parameters, the last the
-// closure's) on seeded point sets of 3 … 40 points: positions and first two derivatives within 1e-12 of the
-// derivative's size at 500 samples, and C(0) = C(1), C'(0) = C'(1), C''(0) = C''(1).
-TEST(InterpolateOcct, ClosedMatchesPeriodicInterpolate) {
-  Rng rng(2626);
-  for (std::size_t n : {3U, 4U, 7U, 12U, 40U}) {
-    const auto pts = random_points(n, rng, 3.0);
-    std::vector<Vec3> closed(pts);
-    closed.push_back(pts.front());
-    const std::vector<double> t = parameterise(closed, Parameterisation::ChordLength);
-    const NurbsCurve ours = interpolate_closed_cubic(pts);
-    Handle(TColgp_HArray1OfPnt) P = new TColgp_HArray1OfPnt(1, static_cast<int>(n));
-    Handle(TColStd_HArray1OfReal) T = new TColStd_HArray1OfReal(1, static_cast<int>(n) + 1);
-    for (std::size_t i = 0; i < n; ++i) P->SetValue(static_cast<int>(i) + 1, gp_Pnt(pts[i].x, pts[i].y, pts[i].z));
-    for (std::size_t i = 0; i <= n; ++i) T->SetValue(static_cast<int>(i) + 1, t[i]);
-    GeomAPI_Interpolate interp(P, T, Standard_True, 1e-9);
-    interp.Perform();
-    ASSERT_TRUE(interp.IsDone());
-    const Handle(Geom_BSplineCurve) c = interp.Curve();
-    std::array<double, 3> scale{};
-    for (int i = 0; i <= 500; ++i) {
-      const auto d = ours.derivatives(i / 500.0, 2);
-      for (std::size_t k = 0; k < 3; ++k) scale[k] = std::max(scale[k], norm(d[k]));
-    }
-    for (int i = 0; i <= 500; ++i) {
-      const double u = (i + 0.37) / 501.0;
-      const auto d = ours.derivatives(u, 2);
-      gp_Pnt p;
-      gp_Vec v1, v2;
-      c->D2(u, p, v1, v2);
-      EXPECT_LE(distance(d[0], to_vec(p.XYZ())), kRel * scale[0]) << "n=" << n << " u=" << u;
-      EXPECT_LE(distance(d[1], to_vec(v1.XYZ())), kRel * 10 * scale[1]) << "n=" << n << " u=" << u;
-      EXPECT_LE(distance(d[2], to_vec(v2.XYZ())), kRel * 100 * scale[2]) << "n=" << n << " u=" << u;
-    }
-    const auto a = ours.derivatives(0.0, 2);
-    const auto b = ours.derivatives(1.0, 2);
-    for (std::size_t k = 0; k < 3; ++k) EXPECT_LE(distance(a[k], b[k]), 1e-12 * scale[k]) << "n=" << n << " k=" << k;
-    for (std::size_t i = 0; i < n; ++i) EXPECT_LE(distance(ours.evaluate(t[i]), pts[i]), 1e-14 * scale[0]);
-  }
-}
-
 }  // namespace
 }  // namespace hula::nurbs

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "hula/core/error.hpp"
 #include "hula/diffgeom/detail/derived_curve.hpp"
@@ -22,7 +23,10 @@ void check_finite(const Vec3& v, const char* field) {
 MappedCurve mapped(const law::Law& l, const detail::ParentLaw& p, const curve::Curve& c, double tolerance,
                    const char* field, const std::string& what, const std::string& why) {
   try {
-    detail::DerivedCurve d = detail::derived_curve(l, p, true, c.domain(), tolerance);
+    // Both maps take the first derivative of a NURBS: fit span by span where that leaves less than C2.
+    detail::DerivedCurve d =
+        detail::derived_curve(l, p, true, c.domain(), tolerance,
+                              p.printable ? std::vector<double>{} : detail::low_continuity_knots(c.nurbs(), 1));
     return {std::move(d.curve), d.exact, d.deviation};
   } catch (const Error&) {
     detail::rethrow_undefined(field, what, why);
@@ -57,6 +61,8 @@ law::Law polar_law(const law::Law& curve, std::string_view parameter, const Vec3
   // the speeds cancel, so Q is rational in the derivatives.
   const law::Law h = dx * y - dy * x;
   const double r2 = radius * radius;
+  // A 3-D curve at constant z maps into its own plane.
+  if (curve.dimension() == 3) return law::vec(centre.x + r2 * (-dy) / h, centre.y + r2 * dx / h, law::term(curve, 3));
   return law::vec(centre.x + r2 * (-dy) / h, centre.y + r2 * dx / h);
 }
 
@@ -66,9 +72,7 @@ MappedCurve orthotomic(const curve::Curve& curve, const Vec3& pole, double k, co
   if (!(std::isfinite(k) && k != 0.0))
     throw Error(Errc::InvalidArgument, "k = " + format_number(k) + " must be finite and non-zero", {.field = "k"});
   const detail::ParentLaw p = detail::parent_law(curve);
-  // A 2-D curve's leaf law is a 3-vector with z = 0: read it as a plane law so the result stays 2-D.
-  const law::Law r =
-      curve.dimension() == 2 && p.r.dimension() == 3 ? law::vec(law::term(p.r, 1), law::term(p.r, 2)) : p.r;
+  const law::Law r = detail::plane_law(p, curve);
   const Vec3 P = curve.dimension() == 2 ? Vec3{pole.x, pole.y, 0.0} : pole;
   return mapped(orthotomic_law(r, p.parameter, P, k), p, curve, options.tolerance, "curve", "the orthotomic",
                 " (C' = 0 there)");
@@ -76,15 +80,14 @@ MappedCurve orthotomic(const curve::Curve& curve, const Vec3& pole, double k, co
 
 MappedCurve polar_map(const curve::Curve& curve, const Vec3& centre, double radius, const MappingOptions& options) {
   options.validate();
-  if (curve.dimension() != 2)
-    throw Error(Errc::InvalidArgument, "a polar map needs a planar (2-D) curve; this one is 3-D", {.field = "curve"});
+  detail::require_xy_plane(curve, "a polar map");
   check_finite(centre, "centre");
   if (!(std::isfinite(radius) && radius > 0.0))
     throw Error(Errc::InvalidArgument, "radius = " + format_number(radius) + " must be positive and finite",
                 {.field = "radius"});
   const detail::ParentLaw p = detail::parent_law(curve);
-  return mapped(polar_law(p.r, p.parameter, centre, radius), p, curve, options.tolerance, "centre", "the polar map",
-                " (a tangent line passes through the centre there)");
+  return mapped(polar_law(detail::plane_law(p, curve), p.parameter, centre, radius), p, curve, options.tolerance,
+                "centre", "the polar map", " (a tangent line passes through the centre there)");
 }
 
 }  // namespace hula::diffgeom

@@ -31,7 +31,8 @@ namespace hula::diffgeom {
 /// @throws hula::Error(Errc::InvalidArgument) naming "law" for a scalar law
 [[nodiscard]] law::Law orthotomic_law(const law::Law& curve, std::string_view parameter, const Vec3& pole, double k);
 
-/// Q = P + ρ² n / ((C − P)·n) of a plane curve law (x, y read from a 2- or 3-vector law), a 2-vector law.
+/// Q = P + ρ² n / ((C − P)·n) of a plane curve law in x, y: a 2-vector law, or for a 3-vector law a 3-vector law
+/// whose z is the curve's.
 /// @throws hula::Error(Errc::InvalidArgument) naming "law" for a scalar law
 [[nodiscard]] law::Law polar_law(const law::Law& curve, std::string_view parameter, const Vec3& centre, double radius);
 
@@ -47,7 +48,7 @@ struct MappingOptions {
 /// A mapped curve.
 struct MappedCurve {
   /// On the curve's domain and parameter: a law curve (exact) when the input is a law curve, else a NURBS within
-  /// the tolerance. Dimension: the input's for orthotomics, 2 for polar maps.
+  /// the tolerance. Dimension: the input's.
   curve::Curve curve;
   /// True when curve is a law curve.
   bool exact = false;
@@ -65,7 +66,9 @@ struct MappedCurve {
                                      const MappingOptions& options = {});
 
 /// The polar map of a plane curve with respect to the circle of centre P and radius ρ.
-/// @throws hula::Error(Errc::InvalidArgument) naming "curve" for a 3-D curve, "centre" or "radius" for bad values
+/// @param curve a plane curve in the XY plane (2-D, or 3-D at constant z: the map is then 3-D at that z)
+/// @throws hula::Error(Errc::InvalidArgument) naming "curve" for a curve out of the XY plane, "centre" or "radius"
+///   for bad values
 /// @throws hula::Error(Errc::NumericalFailure) naming "centre" where a tangent line passes through P
 /// Example: the circle of radius 2 about P maps onto the circle of radius ρ²/2 about P.
 [[nodiscard]] MappedCurve polar_map(const curve::Curve& curve, const Vec3& centre, double radius,

@@ -60,31 +60,23 @@ law::Law planar_offset_law(const law::Law& curve, std::string_view parameter, do
 
 PlanarOffset planar_offset(const curve::Curve& curve, double distance, const OffsetOptions& options) {
   options.validate();
-  if (curve.dimension() != 2) {
-    // A 3-D curve in a plane z = constant is offset in that plane.
-    const Planarity pl = planarity(curve.nurbs());
-    const Box3 box = curve.nurbs().control_box();
-    const bool flat =
-        pl.planar && (pl.normal ? std::abs(pl.normal->z) >= 1.0 - 1e-12 : box.max.z - box.min.z <= pl.tolerance);
-    if (!flat)
-      throw Error(Errc::InvalidArgument,
-                  "a planar offset needs a plane curve in the XY plane (2-D, or 3-D with constant z); this one is not",
-                  {.field = "curve"});
-  }
+  // A 3-D curve in a plane z = constant is offset in that plane.
+  detail::require_xy_plane(curve, "a planar offset");
   if (!std::isfinite(distance))
     throw Error(Errc::InvalidArgument, "distance = " + format_number(distance) + " must be finite",
                 {.field = "distance"});
   const Interval dom = curve.domain();
   ParentLaw p = parent_law(curve);
-  // A 2-D curve's NURBS leaf is a 3-vector with z = 0: read it as a plane law so the offset stays 2-D.
-  const law::Law r =
-      curve.dimension() == 2 && p.r.dimension() == 3 ? law::vec(component(p.r, 1), component(p.r, 2)) : p.r;
+  const law::Law r = detail::plane_law(p, curve);
   const law::Law offset = planar_offset_law(r, p.parameter, distance);
 
   // A law curve's offset is a law curve (exact) when its text stays within the parser's limit.
   detail::DerivedCurve derived = [&] {
     try {
-      return detail::derived_curve(offset, p, true, dom, options.tolerance);
+      // The offset of a NURBS is one derivative less smooth than it: fit it span by span where that is below C2.
+      return detail::derived_curve(
+          offset, p, true, dom, options.tolerance,
+          p.printable ? std::vector<double>{} : detail::low_continuity_knots(curve.nurbs(), 1));
     } catch (const Error&) {
       detail::rethrow_undefined("curve", "the planar offset", " (C' = 0 there)");
     }
@@ -114,14 +106,29 @@ PlanarOffset planar_offset(const curve::Curve& curve, double distance, const Off
   out.cusps.insert(out.cusps.end(), cusp_roots.unresolved.begin(), cusp_roots.unresolved.end());
   std::sort(out.cusps.begin(), out.cusps.end());
 
+  // An open curve's offset also changes from valid to invalid where it crosses the circle of radius |d| about an
+  // end point (beyond it the end is nearer than d): roots of |O − C(end)|² − d².
+  std::vector<double> end_crossings;
+  const Vec3 c0 = curve.point(dom.start);
+  const Vec3 c1 = curve.point(dom.end);
+  if (norm(c0 - c1) > 100.0 * options.tolerance) {
+    for (const Vec3& e : {c0, c1}) {
+      const law::Law w = offset - p.context.constant(e, offset.dimension());
+      const std::vector<double> hits =
+          law::roots(law::dot(w, w) - distance * distance, p.parameter, dom.start, dom.end);
+      end_crossings.insert(end_crossings.end(), hits.begin(), hits.end());
+    }
+  }
+
   nurbs::IntersectOptions io;
   io.tolerance.resabs = 4.0 * options.tolerance;
   const nurbs::IntersectionResult self = nurbs::self_intersect(raw, io);
   out.loops = self.points;
 
-  // Split points: cusps, both parameters of every self-intersection and the ends of overlaps.
+  // Split points: cusps, end-circle crossings, both parameters of every self-intersection and the ends of overlaps.
   std::vector<double> cuts{dom.start, dom.end};
   cuts.insert(cuts.end(), out.cusps.begin(), out.cusps.end());
+  cuts.insert(cuts.end(), end_crossings.begin(), end_crossings.end());
   for (const auto& x : self.points) cuts.insert(cuts.end(), {x.s, x.t});
   for (const auto& o : self.overlaps) cuts.insert(cuts.end(), {o.s0, o.s1, o.t0, o.t1});
   std::sort(cuts.begin(), cuts.end());
@@ -316,7 +323,10 @@ HelicalOffset helical_offset(const curve::Curve& curve, std::string_view distanc
   }
   const law::Law h = helical_offset_law(r, d, theta, u, v);
   try {
-    detail::DerivedCurve c = detail::derived_curve(h, p, !leaf, dom, options.tolerance);
+    // The frames take up to the third derivative of a NURBS: fit span by span where that leaves less than C2.
+    detail::DerivedCurve c =
+        detail::derived_curve(h, p, !leaf, dom, options.tolerance,
+                              p.printable ? std::vector<double>{} : detail::low_continuity_knots(curve.nurbs(), 3));
     out.curve = std::move(c.curve);
     out.exact = c.exact;
     out.deviation = c.deviation + angle_error;

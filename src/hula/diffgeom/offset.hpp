@@ -10,7 +10,8 @@
 // curves", CAGD 7, 1990). Its curvature is κ / (1 − dκ). Trimming keeps the
 // points of the raw offset whose distance to the curve is |d| (the others are
 // nearer to some other part of the curve): the raw offset is split at its
-// cusps and self-intersections and each piece is kept or dropped by the
+// cusps, its self-intersections and (open curves) its crossings of the circles
+// of radius |d| about the end points, and each piece is kept or dropped by the
 // distance of its midpoint to the curve.
 //
 // The helical offset (thesis 6.5.2) H(t) = C(t) + d(t) (cos θ(t) U(t) +

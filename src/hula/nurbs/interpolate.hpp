@@ -177,8 +177,8 @@ struct FrenetHandle {
 /// The start and end conditions of `options` are not used.
 /// @throws hula::Error(Errc::TooFewPoints) if fewer than 3 distinct points
 /// @throws as interpolate_cubic (InvalidArgument naming "parameters" for a count other than N + 1)
-/// Example: 4 points on a circle, uniform parameters, give a closed C2 curve through them (the periodic spline
-///   GeomAPI_Interpolate builds with PeriodicFlag).
+/// Example: the square (1, 0), (0, 1), (−1, 0), (0, −1) at uniform parameters gives D_i = 6 × (Q_i turned by 90°)
+///   and C(1/8) = (11/16, 11/16).
 [[nodiscard]] NurbsCurve interpolate_closed_cubic(std::span<const Vec3> points,
                                                   const InterpolationOptions& options = {});
 
