@@ -44,6 +44,15 @@ namespace hula::cli {
 [[nodiscard]] Command add_intersect(CLI::App& app);
 /// `hula distance` (commands/intersect.cpp): the smallest distance between two curves.
 [[nodiscard]] Command add_distance(CLI::App& app);
+/// `hula offset` (commands/offset.cpp): planar offsets with cusps and loops trimmed.
+[[nodiscard]] Command add_offset(CLI::App& app);
+/// `hula helical-offset` (commands/offset.cpp): helical offsets in the Frenet or Bishop frame.
+[[nodiscard]] Command add_helical_offset(CLI::App& app);
+/// `hula orthotomic` and `hula polar` (commands/mapping.cpp): the mapping techniques of thesis 6.3.2.
+[[nodiscard]] Command add_orthotomic(CLI::App& app);
+[[nodiscard]] Command add_polar(CLI::App& app);
+/// `hula hermite-frenet` (commands/hermite.cpp): Hermite handles with normal and binormal (torsion) constraints.
+[[nodiscard]] Command add_hermite_frenet(CLI::App& app);
 }  // namespace hula::cli
 
 #ifndef HULA_VERSION
@@ -181,6 +190,11 @@ int main(int argc, char** argv) {
         hula::cli::add_closest(app),
         hula::cli::add_intersect(app),
         hula::cli::add_distance(app),
+        hula::cli::add_offset(app),
+        hula::cli::add_helical_offset(app),
+        hula::cli::add_orthotomic(app),
+        hula::cli::add_polar(app),
+        hula::cli::add_hermite_frenet(app),
         hula::cli::add_clothoid(app),
         hula::cli::add_log_aesthetic(app),
         hula::cli::add_deviation(app),

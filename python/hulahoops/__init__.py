@@ -10,6 +10,10 @@ Geometry:
     analyse           κ, τ, T, N, B, speed, fins along a curve (thesis ch. 6).
     reconstruct       a curve from its natural equations κ(s), τ(s) (thesis 8.2.2).
     intersect         where two curves (or one curve with itself) meet; distance: how far apart.
+    offset            planar offset of a plane curve, cusps and loops trimmed;
+                      helical_offset: winding around a curve (thesis 6.5.2).
+    orthotomic        K-orthotomic about a pole; polar_map: poles of the tangents (thesis 6.3.2).
+    hermite_frenet    a C3 curve through handles fixing tangent, curvature, normal and torsion.
 Optimisation:
     optimise, Problem, from_pygmo   Flexo GAs and NSGA-II with NumPy objectives.
 Studies:
@@ -43,10 +47,15 @@ analyse = _core.analyse
 reconstruct = _core.reconstruct
 intersect = _core.intersect
 distance = _core.distance
+offset = _core.offset
+helical_offset = _core.helical_offset
+orthotomic = _core.orthotomic
+polar_map = _core.polar_map
+hermite_frenet = _core.hermite_frenet
 
 __all__ = [
     "NurbsCurve", "ClosestPoint", "IntrinsicCurve", "NurbsFit", "Law", "interpolate", "read_points", "analyse",
-    "reconstruct", "intersect", "distance",
+    "reconstruct", "intersect", "distance", "offset", "helical_offset", "orthotomic", "polar_map", "hermite_frenet",
     "optimise", "Problem", "OptimiseResult", "from_pygmo", "builtin_problem", "evaluate_builtin",
     "fair_knots", "match_curvature", "StudyResult", "Document",
     "Error", "InvalidArgumentError", "NonFiniteInputError", "TooFewPointsError", "CoincidentPointsError",

@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: MIT
 # Type stubs of hulahoops (docs/python.md). Units: coordinates in model units,
 # curvature and torsion in 1/model units, t the curve's own parameter, s arc length.
+import os
 from typing import Any, Callable, Literal, Sequence, overload
 
 import numpy as np
@@ -74,6 +75,9 @@ class NurbsCurve:
     def refine(self, knots: ArrayLike) -> NurbsCurve: ...
     def elevate(self, times: int = 1) -> NurbsCurve:
         """The same curve with degree + times (The NURBS Book A5.9)."""
+    def reduce_degree(self, tolerance: float) -> dict[str, Any]:
+        """Degree − 1 within tolerance (non-rational curves): {"curve", "error_bound" (max change bound),
+        "bezier_bound" (the per-piece part)}; NumericalFailureError naming tolerance when it cannot be met."""
     def split(self, t: float) -> tuple[NurbsCurve, NurbsCurve]:
         """The pieces on [a, t] and [t, b], each clamped at t."""
     def reverse(self) -> NurbsCurve: ...
@@ -96,10 +100,12 @@ class NurbsCurve:
 
 def interpolate(points: ArrayLike, *, start: str | ArrayLike = "natural", end: str | ArrayLike = "natural",
                 parameterisation: Literal["chord", "uniform", "centripetal", "foley"] = "chord",
-                parameters: ArrayLike | None = None) -> NurbsCurve:
+                parameters: ArrayLike | None = None, closed: bool = False) -> NurbsCurve:
     """The C2 cubic spline through (n, 2) or (n, 3) points (thesis 5.5, 7.1).
     start/end: "natural", "bessel", "not-a-knot", "occt", or a tangent vector dC/dt (t in [0, 1]).
-    parameters: explicit data parameters (increasing, from 0 to 1) instead of the parameterisation."""
+    parameters: explicit data parameters (increasing, from 0 to 1) instead of the parameterisation.
+    closed: the periodic spline back to the first point, C2 at the closure (start/end unused; parameters then
+    has n + 1 values, the last the closure's)."""
 
 def read_points(path: str) -> Array:
     """The points of a point file as an (n, 2) or (n, 3) array: JSON, or lines of 2 or 3 numbers separated by
@@ -156,6 +162,35 @@ def intersect(a: NurbsCurve, b: NurbsCurve | None = None, *, tolerance: float | 
 
 def distance(a: NurbsCurve, b: NurbsCurve, *, tolerance: float | None = None) -> dict[str, Any]:
     """The smallest distance between a and b: {"distance", "s", "t", "point_a", "point_b"}."""
+
+def offset(curve: NurbsCurve | dict[str, Any] | str | os.PathLike[str], distance: float, *,
+           tolerance: float | None = None, trim: bool = True) -> dict[str, Any]:
+    """Planar offset of a plane curve by `distance` (model units, positive to the left of the direction of
+    travel; docs/formats.md "Offset results"): {"distance", "tolerance", "exact", "deviation", "raw" (curve
+    file: a law curve when the input is one), "cusps": [t], "loops": [{"s", "t", "point", "angle"}], "trimmed":
+    [{"spans": [[t0, t1]], "closed", "curve"}]}. tolerance: of the offset's NURBS (default 1e-6)."""
+
+def helical_offset(curve: NurbsCurve | dict[str, Any] | str | os.PathLike[str], distance: str, *, twist: str = "0",
+                   frame: Literal["frenet", "bishop"] = "frenet", tolerance: float | None = None) -> dict[str, Any]:
+    """Helical offset C + d (cos θ U + sin θ V) (thesis 6.5.2) with d and θ law texts of the curve parameter and
+    {U, V} the Frenet {N, B} or the Bishop frame: {"frame", "distance", "twist", "tolerance", "exact",
+    "deviation", "plane_normal" (a plane curve's Bishop frame), "curve" (curve file; a law curve when exact)}."""
+
+def orthotomic(curve: NurbsCurve | dict[str, Any] | str | os.PathLike[str], pole: Sequence[float], *, k: float = 2.0,
+               tolerance: float | None = None) -> dict[str, Any]:
+    """K-orthotomic P + K (foot of the perpendicular from P on the tangent − P) (thesis 6.3.2; K = 2 the
+    orthotomic, 1 the pedal): {"mapping", "pole", "k", "tolerance", "exact", "deviation", "curve"}."""
+
+def hermite_frenet(document: dict[str, Any]) -> NurbsCurve:
+    """The C3 septic Hermite curve through Frenet handles (docs/formats.md "Frenet handle files"):
+    {"handles": [{"point", "tangent" (dC/dt), "normal", "curvature", "torsion"}], "parameters"?}; at every
+    handle the curve has that tangent, curvature κ with normal N, and torsion τ."""
+
+def polar_map(curve: NurbsCurve | dict[str, Any] | str | os.PathLike[str], centre: Sequence[float], *,
+              radius: float = 1.0, tolerance: float | None = None) -> dict[str, Any]:
+    """Polar map of a plane curve about the circle (centre, radius): the poles of its tangent lines, where its
+    inflections are cusps (thesis 6.3.2): {"mapping", "centre", "radius", "tolerance", "exact", "deviation",
+    "curve"}."""
 
 class Law:
     """A law expression (docs/formats.md "Law expressions") of named parameters."""

@@ -18,5 +18,6 @@ void register_optimise(pybind11::module_& m);
 void register_studies(pybind11::module_& m);
 void register_document(pybind11::module_& m);
 void register_intersect(pybind11::module_& m);
+void register_offset(pybind11::module_& m);
 
 }  // namespace hula::python

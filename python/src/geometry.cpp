@@ -412,6 +412,17 @@ void register_geometry(py::module_& m) {
           "elevate", [](const NurbsCurve& c, int times) { return nurbs::elevate_degree(c, times); },
           py::arg("times") = 1)
       .def(
+          "reduce_degree",
+          [](const NurbsCurve& c, double tolerance) {
+            nurbs::DegreeReductionResult r = nurbs::reduce_degree(c, tolerance);
+            py::dict d;
+            d["curve"] = std::move(r.curve);
+            d["error_bound"] = r.error_bound;
+            d["bezier_bound"] = r.bezier_bound;
+            return d;
+          },
+          py::arg("tolerance"))
+      .def(
           "split",
           [](const NurbsCurve& c, double t) {
             nurbs::SplitResult r = nurbs::split(c, t);
@@ -497,7 +508,7 @@ void register_geometry(py::module_& m) {
   m.def(
       "interpolate",
       [](py::handle points, py::handle start, py::handle end, const std::string& parameterisation,
-         py::handle parameters) {
+         py::handle parameters, bool closed) {
         const Points p = as_points(points, "points", 2);
         nurbs::InterpolationOptions o;
         o.dimension = p.dimension;
@@ -505,10 +516,10 @@ void register_geometry(py::module_& m) {
         o.end = end_condition(end, "end");
         o.parameterisation = io::parameterisation_from_name(parameterisation);
         if (!parameters.is_none()) o.parameters = as_vector(parameters, "parameters");
-        return nurbs::interpolate_cubic(p.points, o);
+        return closed ? nurbs::interpolate_closed_cubic(p.points, o) : nurbs::interpolate_cubic(p.points, o);
       },
       py::arg("points"), py::kw_only(), py::arg("start") = "natural", py::arg("end") = "natural",
-      py::arg("parameterisation") = "chord", py::arg("parameters") = py::none());
+      py::arg("parameterisation") = "chord", py::arg("parameters") = py::none(), py::arg("closed") = false);
 
   m.def("analyse", &analyse, py::arg("curve"), py::arg("samples") = 100, py::kw_only(), py::arg("at") = py::none(),
         py::arg("by") = "parameter", py::arg("arc_lengths") = false, py::arg("bishop") = false,

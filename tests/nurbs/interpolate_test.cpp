@@ -8,10 +8,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "hula/core/error.hpp"
@@ -617,6 +619,138 @@ TEST(InterpolateCubic, DirectionEndErrorsNameTheEnd) {
                     "start.derivative is a zero direction");
   HULA_EXPECT_ERROR(interpolate_cubic(pts, {.end = EndCondition::direction({std::nan(""), 1, 0})}), Errc::InvalidOption,
                     "end.derivative[0] = nan");
+}
+
+// checks the closed spline through the square's vertices (1, 0), (0, 1), (−1, 0), (0, −1) at uniform parameters
+// against the closed form of its cyclic system: D_i = 6 × (P_i turned by 90°), so C(1/8) = (11/16, 11/16); C2 at
+// the closure; a closed list (last = first) gives the same curve.
+TEST(InterpolateClosedCubic, SquareClosedForm) {
+  const std::vector<Vec3> sq{{1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}};
+  InterpolationOptions o;
+  o.parameterisation = Parameterisation::Uniform;
+  o.dimension = 2;
+  const NurbsCurve c = interpolate_closed_cubic(sq, o);
+  EXPECT_EQ(c.degree(), 3);
+  EXPECT_EQ(c.control_points().size(), 7U);  // 4 spans, simple interior knots: 4 + 3
+  const auto d0 = c.derivatives(0.0, 2);
+  EXPECT_LE(distance(d0[0], {1, 0, 0}), 1e-15);
+  EXPECT_LE(distance(d0[1], {0, 6, 0}), 1e-13);
+  EXPECT_LE(distance(c.evaluate(0.125), {0.6875, 0.6875, 0}), 1e-15);
+  const auto d1 = c.derivatives(1.0, 2);
+  for (std::size_t k = 0; k < 3; ++k) EXPECT_LE(distance(d0[k], d1[k]), 1e-12) << k;
+  for (std::size_t i = 0; i < 4; ++i) EXPECT_LE(distance(c.evaluate(0.25 * static_cast<double>(i)), sq[i]), 1e-15);
+  std::vector<Vec3> again(sq);
+  again.push_back(sq.front());
+  const NurbsCurve c2 = interpolate_closed_cubic(again, o);
+  for (int i = 0; i <= 20; ++i) EXPECT_LE(distance(c.evaluate(i / 20.0), c2.evaluate(i / 20.0)), 1e-15);
+}
+
+// checks the closed spline on seeded point sets of 3 … 40 points against what defines it uniquely (the C2 periodic
+// cubic spline with simple knots at the data parameters): degree 3, C(t_i) = Q_i, and the left and right first and
+// second derivatives equal at every knot and across the closure, all to 1e-12 of their size.
+TEST(InterpolateClosedCubic, IsTheUniquePeriodicSpline) {
+  Rng rng(2626);
+  for (std::size_t n : {3U, 4U, 7U, 12U, 40U}) {
+    std::vector<Vec3> pts(n);
+    for (auto& q : pts) q = Vec3{rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)} * 3.0;
+    std::vector<Vec3> closed(pts);
+    closed.push_back(pts.front());
+    const std::vector<double> t = parameterise(closed, Parameterisation::ChordLength);
+    const NurbsCurve c = interpolate_closed_cubic(pts);
+    ASSERT_EQ(c.degree(), 3);
+    ASSERT_EQ(c.control_points().size(), n + 3);
+    std::array<double, 3> scale{};
+    for (int i = 0; i <= 500; ++i) {
+      const auto d = c.derivatives(i / 500.0, 2);
+      for (std::size_t k = 0; k < 3; ++k) scale[k] = std::max(scale[k], norm(d[k]));
+    }
+    for (std::size_t i = 0; i < n; ++i) EXPECT_LE(distance(c.evaluate(t[i]), pts[i]), 1e-13 * scale[0]) << n;
+    for (std::size_t i = 0; i < n; ++i) {
+      // At t_0 the left side is the closure's: the end of the curve.
+      const auto right = c.derivatives(t[i], 2);
+      const auto left = i == 0 ? c.derivatives(1.0, 2) : c.derivatives(t[i], 2, {.side = Side::Left});
+      for (std::size_t k = 0; k < 3; ++k) EXPECT_LE(distance(left[k], right[k]), 1e-12 * scale[k]) << n << " " << i;
+    }
+  }
+}
+
+// checks too few points and a parameter list of the wrong length are refused naming them.
+TEST(InterpolateClosedCubic, BadInputNamesIt) {
+  const std::vector<Vec3> two{{0, 0, 0}, {1, 0, 0}};
+  HULA_EXPECT_ERROR(interpolate_closed_cubic(two), Errc::TooFewPoints, "got 2");
+  const std::vector<Vec3> three{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  InterpolationOptions o;
+  o.parameters = {0.0, 0.5, 1.0};  // needs 4: the closure's too
+  try {
+    (void)interpolate_closed_cubic(three, o);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.where().field, "parameters");
+  }
+}
+
+// κ and τ of a curve at t from its first three derivatives (thesis eq. 11, 17), written out here.
+std::pair<double, double> kappa_tau(const NurbsCurve& c, double t) {
+  const auto d = c.derivatives(t, 3);
+  const Vec3 a = cross(d[1], d[2]);
+  return {norm(a) / std::pow(norm(d[1]), 3), dot(a, d[3]) / dot(a, a)};
+}
+
+// checks the Frenet handles against the circular helix (a cos s, a sin s, b s), κ = a/(a² + b²), τ = b/(a² + b²):
+// handles sampled from its exact T, N, κ, τ at 9 points of one turn give a curve with those κ, τ and N at every
+// handle (1e-10) that stays within 1e-5 of the helix between them (O(h⁸), closed form at the same parameter).
+TEST(HermiteFrenet, HelixHandles) {
+  const double a = 2.0, b = 0.5, c2 = a * a + b * b;
+  const double L = 2.0 * std::numbers::pi;  // s ∈ [0, 2π], t = s / L
+  std::vector<FrenetHandle> handles;
+  std::vector<double> ts;
+  for (int i = 0; i <= 8; ++i) {
+    const double s = L * i / 8.0;
+    FrenetHandle h;
+    h.point = {a * std::cos(s), a * std::sin(s), b * s};
+    h.tangent = L * Vec3{-a * std::sin(s), a * std::cos(s), b};  // dC/dt = L dC/ds
+    h.normal = {-std::cos(s), -std::sin(s), 0.0};
+    h.curvature = a / c2;
+    h.torsion = b / c2;
+    handles.push_back(h);
+    ts.push_back(i / 8.0);
+  }
+  const NurbsCurve c = hermite_frenet(handles, ts);
+  EXPECT_EQ(c.degree(), 7);
+  for (int i = 0; i <= 8; ++i) {
+    const auto [k, tau] = kappa_tau(c, ts[static_cast<std::size_t>(i)]);
+    EXPECT_NEAR(k, a / c2, 1e-10) << i;
+    EXPECT_NEAR(tau, b / c2, 1e-10) << i;
+    const auto d = c.derivatives(ts[static_cast<std::size_t>(i)], 2);
+    const Vec3 n = d[2] - dot(d[2], d[1]) / dot(d[1], d[1]) * d[1];
+    EXPECT_LE(distance(n / norm(n), handles[static_cast<std::size_t>(i)].normal), 1e-10) << i;
+  }
+  for (int i = 0; i <= 400; ++i) {
+    const double t = i / 400.0, s = L * t;
+    EXPECT_LE(distance(c.evaluate(t), {a * std::cos(s), a * std::sin(s), b * s}), 1e-5) << t;
+  }
+  // C3 everywhere: the derivatives of both sides of each handle agree.
+  for (int i = 1; i < 8; ++i) {
+    const auto left = c.derivatives(i / 8.0, 3, {.side = Side::Left});
+    const auto right = c.derivatives(i / 8.0, 3);
+    for (std::size_t k = 0; k <= 3; ++k) EXPECT_LE(distance(left[k], right[k]), 1e-9 * norm(right[k]) + 1e-9) << i;
+  }
+}
+
+// checks a handle with zero tangent, a normal along the tangent and a negative curvature are refused naming them.
+TEST(HermiteFrenet, BadHandlesNameThem) {
+  std::vector<FrenetHandle> h(2);
+  h[0].point = {0, 0, 0};
+  h[0].tangent = {1, 0, 0};
+  h[1].point = {1, 0, 0};
+  h[1].tangent = {0, 0, 0};
+  HULA_EXPECT_ERROR((void)hermite_frenet(h), Errc::InvalidArgument, "tangent[1]");
+  h[1].tangent = {1, 0, 0};
+  h[0].curvature = 1.0;
+  h[0].normal = {2, 0, 0};
+  HULA_EXPECT_ERROR((void)hermite_frenet(h), Errc::InvalidArgument, "normal[0]");
+  h[0].curvature = -1.0;
+  HULA_EXPECT_ERROR((void)hermite_frenet(h), Errc::InvalidArgument, "curvature[0]");
 }
 
 }  // namespace

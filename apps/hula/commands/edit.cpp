@@ -2,7 +2,8 @@
 // `hula edit OPERATION CURVE -o OUT`: the kernel's shape-preserving and
 // splitting operations on a NURBS curve file (thesis 5.5, The NURBS Book ch. 5):
 // insert-knot (Boehm, A5.1), refine (A5.4), remove-knots (A5.8, within a
-// tolerance), elevate (degree elevation), split (knot insertion to
+// tolerance), elevate (degree elevation), reduce-degree (within a tolerance),
+// split (knot insertion to
 // multiplicity p), reverse and reparam (affine map of the knots), and to-nurbs (a law or natural curve
 // converted to a NURBS within a tolerance, intrinsic::to_nurbs). Each writes curve files and prints a JSON
 // summary of the result. The edits are io::edit_curve's.
@@ -80,6 +81,10 @@ int run_elevate(const EditArgs& a) {
   return run_edit(a, {.edit = io::CurveEdit::Elevate, .times = a.times}, "elevate");
 }
 
+int run_reduce_degree(const EditArgs& a) {
+  return run_edit(a, {.edit = io::CurveEdit::ReduceDegree, .tolerance = a.tolerance}, "reduce-degree");
+}
+
 int run_reverse(const EditArgs& a) { return run_edit(a, {.edit = io::CurveEdit::Reverse}, "reverse"); }
 
 int run_reparam(const EditArgs& a) {
@@ -108,7 +113,9 @@ CLI::App* operation(CLI::App* edit, const char* name, const char* help, EditArgs
 Command add_edit(CLI::App& app) {
   auto a = std::make_shared<EditArgs>();
   CLI::App* edit = app.add_subcommand(
-      "edit", "Edit a NURBS curve: insert-knot, refine, remove-knots, elevate, split, reverse, reparam, to-nurbs");
+      "edit",
+      "Edit a NURBS curve: insert-knot, refine, remove-knots, elevate, reduce-degree, split, reverse, reparam, "
+      "to-nurbs");
   edit->require_subcommand(1);
   const char* out = "Curve file to write (atomically)";
   CLI::App* insert = operation(edit, "insert-knot", "Insert a knot (the curve is unchanged)", *a, out);
@@ -128,6 +135,10 @@ Command add_edit(CLI::App& app) {
       ->needs(remove_at);
   CLI::App* elevate = operation(edit, "elevate", "Raise the degree (the curve is unchanged)", *a, out);
   elevate->add_option("--times", a->times, "Degree increase >= 1 (default 1)")->check(CLI::Range(1, 64));
+  CLI::App* reduce =
+      operation(edit, "reduce-degree", "Lower the degree by one while the curve moves by at most --tolerance", *a, out);
+  reduce->add_option("--tolerance", a->tolerance, "Largest change of the curve allowed, model units (>= 0)")
+      ->required();
   CLI::App* split =
       operation(edit, "split", "Split at a parameter into two curve files", *a, "Curve file of the part before --at");
   split->add_option("--at", a->at, "Parameter strictly inside the domain")->required();
@@ -138,13 +149,14 @@ Command add_edit(CLI::App& app) {
   CLI::App* to_nurbs =
       operation(edit, "to-nurbs", "Convert a law or natural (exact) curve to a NURBS within --tolerance", *a, out);
   to_nurbs->add_option("--tolerance", a->tolerance, "Largest distance NURBS-curve, model units, in (0, 1]")->required();
-  return {edit, [a, insert, refine, remove, remove_at, elevate, split, reverse, reparam, to_nurbs] {
+  return {edit, [a, insert, refine, remove, remove_at, elevate, reduce, split, reverse, reparam, to_nurbs] {
             check_outputs(*a, split->parsed());
             if (to_nurbs->parsed()) return run_to_nurbs(*a);
             if (insert->parsed()) return run_insert_knot(*a);
             if (refine->parsed()) return run_refine(*a);
             if (remove->parsed()) return run_remove_knots(*a, remove_at->count() > 0);
             if (elevate->parsed()) return run_elevate(*a);
+            if (reduce->parsed()) return run_reduce_degree(*a);
             if (split->parsed()) return run_split(*a);
             if (reverse->parsed()) return run_reverse(*a);
             return reparam->parsed() ? run_reparam(*a) : kExitUsage;

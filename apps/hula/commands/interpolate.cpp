@@ -4,7 +4,10 @@
 // curve file atomically — the resolved "nurbs" kind, or with --keep-inputs the
 // "interpolated" kind that stores the inputs; --lagrange: the polynomial of
 // degree N − 1 through the points (thesis 5.3.1; nurbs::interpolate_lagrange)
-// as a NURBS (io::lagrange_curve). Prints a JSON summary.
+// as a NURBS (io::lagrange_curve); --closed: the periodic C2 cubic back to the
+// first point (nurbs::interpolate_closed_cubic). Prints a JSON summary.
+#include "hula/nurbs/interpolate.hpp"
+
 #include <memory>
 
 #include "commands/common.hpp"
@@ -24,6 +27,7 @@ struct InterpolateArgs {
   std::string output;
   bool keep_inputs = false;
   bool lagrange = false;
+  bool closed = false;
 };
 
 // --lagrange: the Bézier curve of degree N − 1 through the points at the given (--knots) or
@@ -45,10 +49,34 @@ int run_lagrange(const InterpolateArgs& a, const io::PointSet& set) {
   return kExitOk;
 }
 
+// --closed: the periodic C2 cubic back to the first point (nurbs::interpolate_closed_cubic), no end conditions.
+int run_closed(const InterpolateArgs& a, const io::PointSet& set) {
+  nurbs::InterpolationOptions o;
+  o.dimension = set.dimension;
+  o.parameterisation = io::parameterisation_from_name(a.parameterisation, "parameterisation");
+  if (!a.knots.empty()) o.parameters = parse_number_list(a.knots, "knots");
+  const nurbs::NurbsCurve curve = nurbs::interpolate_closed_cubic(set.points, o);
+  io::write_curve_file(a.output, curve);
+  const nurbs::Interval dom = curve.domain();
+  Json summary = Json::object();
+  summary["output"] = a.output;
+  summary["kind"] = "nurbs";
+  summary["method"] = "closed";
+  summary["points"] = set.points.size();
+  summary["dimension"] = curve.dimension();
+  summary["degree"] = curve.degree();
+  summary["control_points"] = curve.control_points().size();
+  summary["domain"] = Json::array({dom.start, dom.end});
+  summary["parameterisation"] = a.knots.empty() ? a.parameterisation : std::string("given");
+  print_result(summary, a.output);
+  return kExitOk;
+}
+
 int run_interpolate(const InterpolateArgs& a) {
   io::check_output_path(a.output, "--output");
   io::PointSet set = io::read_points_file(a.points);
   if (a.lagrange) return run_lagrange(a, set);
+  if (a.closed) return run_closed(a, set);
   curve::InterpolatedData in;
   in.points = std::move(set.points);
   in.dimension = set.dimension;
@@ -100,6 +128,13 @@ Command add_interpolate(CLI::App& app) {
                                  "Lagrange interpolation: the polynomial of degree N - 1 through the N points (at most "
                                  "65), a Bezier curve, instead of the cubic spline; no --start/--end");
   lagrange->excludes(keep);
+  auto* closed = sub->add_flag("--closed", args->closed,
+                               "Closed (periodic) spline: back to the first point, C2 there too; --knots then has "
+                               "one more value, the closure's; no --start/--end");
+  closed->excludes(keep);
+  closed->excludes(lagrange);
+  closed->excludes("--start");
+  closed->excludes("--end");
   lagrange->excludes("--start");
   lagrange->excludes("--end");
   return {sub, [args] { return run_interpolate(*args); }};

@@ -54,6 +54,14 @@ CurveEditAnswer edit_curve(const curve::Curve& c, const std::string& path, const
     case CurveEdit::Elevate:
       out.curves.push_back(nurbs::elevate_degree(nurbs_of(c, path), q.times));
       break;
+    case CurveEdit::ReduceDegree: {
+      nurbs::DegreeReductionResult r = nurbs::reduce_degree(nurbs_of(c, path), q.tolerance);
+      out.report["error_bound"] = r.error_bound;
+      out.report["bezier_bound"] = r.bezier_bound;
+      out.report["tolerance"] = q.tolerance;
+      out.curves.push_back(std::move(r.curve));
+      break;
+    }
     case CurveEdit::Split: {
       nurbs::SplitResult s = nurbs::split(nurbs_of(c, path), q.at);
       out.report["at"] = q.at;

@@ -22,20 +22,31 @@
 namespace hula::io {
 
 /// The edits of `hula edit`.
-enum class CurveEdit { InsertKnot, Refine, RemoveKnot, RemoveKnots, Elevate, Split, Reverse, Reparam, ToNurbs };
+enum class CurveEdit {
+  InsertKnot,
+  Refine,
+  RemoveKnot,
+  RemoveKnots,
+  Elevate,
+  ReduceDegree,
+  Split,
+  Reverse,
+  Reparam,
+  ToNurbs
+};
 
 /// What an edit needs; each edit reads its own members.
 struct CurveEditRequest {
   CurveEdit edit = CurveEdit::Reverse;
   double at = 0.0;               ///< InsertKnot, RemoveKnot, Split
   int times = 1;                 ///< InsertKnot, RemoveKnot, Elevate
-  double tolerance = 0.0;        ///< RemoveKnot, RemoveKnots, ToNurbs
+  double tolerance = 0.0;        ///< RemoveKnot, RemoveKnots, ReduceDegree, ToNurbs
   std::vector<double> knots{};   ///< Refine
   nurbs::Interval domain{0, 1};  ///< Reparam
 };
 
 /// The curves an edit made (two for Split, one otherwise) and its report members: {"removed", "error_bound",
-/// "tolerance"} (remove-knots), {"at"} (split), {"from", "tolerance", "max_deviation"} (to-nurbs), none else.
+/// "tolerance"} (remove-knots), {"error_bound", "bezier_bound", "tolerance"} (reduce-degree), {"at"} (split), {"from", "tolerance", "max_deviation"} (to-nurbs), none else.
 struct CurveEditAnswer {
   std::vector<nurbs::NurbsCurve> curves;
   Json report = Json::object();

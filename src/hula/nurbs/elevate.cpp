@@ -11,6 +11,8 @@
 #include "hula/nurbs/elevate.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +20,9 @@
 #include "hula/core/error.hpp"
 #include "hula/nurbs/basis.hpp"
 #include "hula/nurbs/detail/homogeneous.hpp"
+#include "hula/nurbs/knot_removal.hpp"
+#include "hula/nurbs/refine.hpp"
+#include "hula/nurbs/reparam.hpp"
 
 namespace hula::nurbs {
 
@@ -77,6 +82,60 @@ NurbsCurve elevate_degree(const NurbsCurve& curve, int times) {
   for (std::size_t i = 0; i < N; ++i)
     Qw[i] = {rhs[i * columns], rhs[i * columns + 1], rhs[i * columns + 2], rational ? rhs[i * columns + 3] : 1.0};
   return detail::from_homogeneous(new_knots, Qw, rational, curve.dimension(), "elevate_degree");
+}
+
+DegreeReductionResult reduce_degree(const NurbsCurve& curve, double tolerance) {
+  if (!(std::isfinite(tolerance) && tolerance >= 0.0))
+    throw Error(Errc::InvalidArgument, "tolerance = " + format_number(tolerance) + " must be finite and >= 0",
+                {.field = "tolerance"});
+  const int p = curve.degree();
+  if (p < 2) throw Error(Errc::InvalidDegree, "degree 1 cannot be reduced", {.field = "curve"});
+  if (curve.is_rational())
+    throw Error(Errc::InvalidArgument, "degree reduction takes a non-rational curve; this one is rational",
+                {.field = "curve"});
+  // Rounding floor: a curve that is exactly an elevated one reduces with a bound of a few ulps of its size.
+  const double floor = 1e-12 * std::max(1.0, curve.model_size());
+  const int q = p - 1;
+  const int r = (p - 1) / 2;
+  double worst = 0.0;
+  double worst_at = curve.domain().start;
+  std::optional<NurbsCurve> joined;
+  for (const NurbsCurve& piece : decompose_to_bezier(curve)) {
+    const std::span<const Vec3> P = piece.control_points();
+    std::vector<Vec3> Q(static_cast<std::size_t>(p));
+    // From the left: Q_i = (P_i − α_i Q_{i−1}) / (1 − α_i), α_i = i/p, i = 0 … r.
+    for (int i = 0; i <= r; ++i) {
+      const double a = static_cast<double>(i) / p;
+      const auto ui = static_cast<std::size_t>(i);
+      Q[ui] = i == 0 ? P[0] : (P[ui] - a * Q[ui - 1]) / (1.0 - a);
+    }
+    // From the right: Q_{i−1} = (P_i − (1 − α_i) Q_i) / α_i, i = p … r + 2.
+    for (int i = p; i >= r + 2; --i) {
+      const double a = static_cast<double>(i) / p;
+      const auto ui = static_cast<std::size_t>(i);
+      Q[ui - 1] = i == p ? P[ui] : (P[ui] - (1.0 - a) * Q[ui]) / a;
+    }
+    const double a = static_cast<double>(r + 1) / p;
+    const auto ur = static_cast<std::size_t>(r);
+    const double e = norm(P[ur + 1] - (a * Q[ur] + (1.0 - a) * Q[ur + 1]));
+    const Interval d = piece.domain();
+    if (e > worst) {
+      worst = e;
+      worst_at = 0.5 * (d.start + d.end);
+    }
+    std::vector<double> U(static_cast<std::size_t>(q) + 1, d.start);
+    U.insert(U.end(), static_cast<std::size_t>(q) + 1, d.end);
+    NurbsCurve reduced(q, std::move(U), std::move(Q), {}, curve.dimension());
+    joined = joined ? join(*joined, reduced, floor) : reduced;
+  }
+  if (worst > std::max(tolerance, floor))
+    throw Error(Errc::NumericalFailure,
+                "the degree cannot be reduced within tolerance = " + format_number(tolerance) +
+                    ": the piece around t = " + format_number(worst_at) + " moves by up to " + format_number(worst),
+                {.field = "tolerance"});
+  // Knot removal within the rest of the tolerance restores continuity (C0 joints up to C^(q−1)).
+  const KnotRemovalResult k = remove_knots(*joined, std::max(0.0, tolerance - worst));
+  return {k.curve, worst + k.error_bound, worst};
 }
 
 }  // namespace hula::nurbs

@@ -34,6 +34,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <string>
 
 #include "hula/core/banded.hpp"
@@ -41,6 +42,8 @@
 #include "hula/nurbs/basis.hpp"
 #include "hula/nurbs/detail/curve_access.hpp"
 #include "hula/nurbs/detail/option_checks.hpp"
+#include "hula/nurbs/knot_removal.hpp"
+#include "hula/nurbs/reparam.hpp"
 
 namespace hula::nurbs {
 
@@ -788,6 +791,160 @@ NurbsCurve hermite_quintic(std::span<const Vec3> points, std::span<const Vec3> d
   P.push_back(B[5]);
   U.insert(U.end(), 6, 1.0);
   return make_curve(KnotVector(std::move(U), kQuintic), std::move(P), dimension);
+}
+
+NurbsCurve interpolate_closed_cubic(std::span<const Vec3> points, const InterpolationOptions& options) {
+  options.validate();
+  Box3 box;
+  check_vectors(points, options.dimension, "points", &box);
+  // The closed point list: Q_0 … Q_{N−1} then Q_0 again (a given repeat of Q_0 at the end is dropped).
+  std::vector<Vec3> q(points.begin(), points.end());
+  if (q.size() >= 2 && distance(q.front(), q.back()) <= resolution_for_size(options.tolerance, box.diagonal()))
+    q.pop_back();
+  if (q.size() < 3)
+    throw Error(Errc::TooFewPoints, "a closed spline needs at least 3 distinct points, got " + std::to_string(q.size()),
+                {.field = "points"});
+  const std::size_t N = q.size();
+  q.push_back(q.front());
+  const std::vector<double> t = data_parameters(q, options.parameters, options.parameterisation, options.tolerance);
+
+  // Cyclic tridiagonal system for the derivatives D_0 … D_{N−1} (row i: a_i D_{i−1} + b_i D_i + c_i D_{i+1}).
+  std::vector<double> a(N), b(N), c(N);
+  std::vector<Vec3> r(N);
+  for (std::size_t i = 0; i < N; ++i) {
+    const std::size_t prev = (i + N - 1) % N;
+    const double hp = t[prev + 1] - t[prev];  // h_{i−1}, the closing chord's for i = 0
+    const double hi = t[i + 1] - t[i];
+    a[i] = hi;
+    b[i] = 2.0 * (hp + hi);
+    c[i] = hp;
+    r[i] = 3.0 * ((hi / hp) * (q[i] - q[prev]) + (hp / hi) * (q[i + 1] - q[i]));
+  }
+  // Sherman–Morrison (Numerical Recipes 2.7 "cyclic"): the corners alpha = a_0 (D_{N−1} in row 0) and
+  // beta = c_{N−1} (D_0 in the last row) moved into a rank-one correction of a tridiagonal matrix T.
+  const double gamma = -b[0];
+  const double corner_top = a[0];
+  const double corner_bottom = c[N - 1];
+  std::vector<double> diag(N);
+  for (std::size_t i = 0; i < N; ++i) diag[i] = b[i];
+  diag[0] = b[0] - gamma;
+  diag[N - 1] = b[N - 1] - corner_bottom * corner_top / gamma;
+  // Thomas algorithm for T x = rhs (sub-diagonal a_i, i ≥ 1; super-diagonal c_i, i ≤ N − 2); T is diagonally
+  // dominant, so no pivoting is needed.
+  std::vector<double> cp(N);
+  auto thomas = [&](auto rhs) {
+    using V = typename decltype(rhs)::value_type;
+    std::vector<V> x(N);
+    double m = diag[0];
+    x[0] = rhs[0] / m;
+    for (std::size_t i = 1; i < N; ++i) {
+      cp[i - 1] = c[i - 1] / m;
+      m = diag[i] - a[i] * cp[i - 1];
+      x[i] = (rhs[i] - a[i] * x[i - 1]) / m;
+    }
+    for (std::size_t i = N - 1; i-- > 0;) x[i] = x[i] - cp[i] * x[i + 1];
+    return x;
+  };
+  std::vector<Vec3> D = thomas(r);
+  std::vector<double> u(N, 0.0);
+  u[0] = gamma;
+  u[N - 1] = corner_bottom;
+  const std::vector<double> z = thomas(u);
+  const double denom = 1.0 + z[0] + corner_top * z[N - 1] / gamma;
+  const Vec3 fact = (D[0] + (corner_top / gamma) * D[N - 1]) / denom;
+  for (std::size_t i = 0; i < N; ++i) D[i] = D[i] - z[i] * fact;
+  D.push_back(D.front());
+
+  NurbsCurve curve = hermite_cubic(q, D, t, options.dimension);
+  // hermite_cubic doubles each interior knot; the C2 data make the second copy removable exactly.
+  std::vector<double> interior;
+  for (double k : curve.knots().values())
+    if (k > 0.0 && k < 1.0 && (interior.empty() || interior.back() != k)) interior.push_back(k);
+  for (double k : interior) curve = remove_knot(curve, k, 1, 0.0).curve;
+  return curve;
+}
+
+NurbsCurve hermite_septic(std::span<const Vec3> points, std::span<const Vec3> derivatives,
+                          std::span<const Vec3> second_derivatives, std::span<const Vec3> third_derivatives,
+                          std::span<const double> parameters, int dimension) {
+  check_dimension_argument(dimension);
+  check_count(points.size(), 2, "hermite_septic");
+  check_vectors(points, dimension, "points");
+  check_same_count(derivatives.size(), points.size(), "derivatives");
+  check_vectors(derivatives, dimension, "derivatives");
+  check_same_count(second_derivatives.size(), points.size(), "second_derivatives");
+  check_vectors(second_derivatives, dimension, "second_derivatives");
+  check_same_count(third_derivatives.size(), points.size(), "third_derivatives");
+  check_vectors(third_derivatives, dimension, "third_derivatives");
+  const std::size_t N = points.size();
+  const std::vector<double> t = data_parameters(points, parameters, Parameterisation::ChordLength, Tolerance{});
+  constexpr int kSeptic = 7;
+  std::optional<NurbsCurve> joined;
+  for (std::size_t i = 0; i + 1 < N; ++i) {
+    const double h = t[i + 1] - t[i];
+    // Bézier derivatives at an end: C' = 7/h ΔB, C'' = 42/h² Δ²B, C''' = 210/h³ Δ³B (mirrored at the end,
+    // where the odd orders change sign).
+    std::vector<Vec3> B(8);
+    B[0] = points[i];
+    B[1] = B[0] + (h / 7.0) * derivatives[i];
+    B[2] = 2.0 * B[1] - B[0] + (h * h / 42.0) * second_derivatives[i];
+    B[3] = 3.0 * B[2] - 3.0 * B[1] + B[0] + (h * h * h / 210.0) * third_derivatives[i];
+    B[7] = points[i + 1];
+    B[6] = B[7] - (h / 7.0) * derivatives[i + 1];
+    B[5] = 2.0 * B[6] - B[7] + (h * h / 42.0) * second_derivatives[i + 1];
+    B[4] = 3.0 * B[5] - 3.0 * B[6] + B[7] - (h * h * h / 210.0) * third_derivatives[i + 1];
+    std::vector<double> U(8, t[i]);
+    U.insert(U.end(), 8, t[i + 1]);
+    NurbsCurve piece = make_curve(KnotVector(std::move(U), kSeptic), std::move(B), dimension);
+    joined = joined ? join(*joined, piece, 0.0) : piece;
+  }
+  // The pieces meet C3 by construction: three of the seven copies of each joint come out (to rounding).
+  NurbsCurve c = *joined;
+  for (std::size_t i = 1; i + 1 < N; ++i) c = remove_knot(c, c.knots().values()[8 + 4 * (i - 1)], 3, 0.0).curve;
+  return c;
+}
+
+NurbsCurve hermite_frenet(std::span<const FrenetHandle> handles, std::span<const double> parameters, int dimension) {
+  check_dimension_argument(dimension);
+  check_count(handles.size(), 2, "hermite_frenet");
+  const std::size_t N = handles.size();
+  std::vector<Vec3> P(N), D1(N), D2(N), D3(N);
+  for (std::size_t i = 0; i < N; ++i) {
+    const FrenetHandle& h = handles[i];
+    auto finite = [&](const Vec3& v, const char* field) {
+      if (!(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z)))
+        throw Error(Errc::NonFiniteInput, std::string(field) + "[" + std::to_string(i) + "] is not finite",
+                    {.field = field, .index = i});
+    };
+    finite(h.point, "point");
+    finite(h.tangent, "tangent");
+    finite(h.normal, "normal");
+    finite({h.curvature, h.torsion, 0.0}, "curvature");
+    const double v = norm(h.tangent);
+    if (!(v > 0.0))
+      throw Error(Errc::InvalidArgument, "tangent[" + std::to_string(i) + "] is zero: a handle needs a direction",
+                  {.field = "tangent", .index = i});
+    if (h.curvature < 0.0)
+      throw Error(Errc::InvalidArgument,
+                  "curvature[" + std::to_string(i) + "] = " + format_number(h.curvature) +
+                      " must be >= 0 (the normal gives its direction)",
+                  {.field = "curvature", .index = i});
+    const Vec3 T = h.tangent / v;
+    P[i] = h.point;
+    D1[i] = h.tangent;
+    if (h.curvature == 0.0) continue;  // C'' = C''' = 0: a flat point
+    const Vec3 n = h.normal - dot(h.normal, T) * T;
+    if (!(norm(n) > 1e-12 * std::max(1.0, norm(h.normal))))
+      throw Error(Errc::InvalidArgument,
+                  "normal[" + std::to_string(i) + "] is zero or parallel to the tangent: the curvature needs a normal",
+                  {.field = "normal", .index = i});
+    const Vec3 Nn = n / norm(n);
+    const Vec3 Bn = cross(T, Nn);
+    const double k = h.curvature;
+    D2[i] = (v * v * k) * Nn;
+    D3[i] = (v * v * v) * (-k * k * T + (k * h.torsion) * Bn);
+  }
+  return hermite_septic(P, D1, D2, D3, parameters, dimension);
 }
 
 }  // namespace hula::nurbs

@@ -128,6 +128,60 @@ struct InterpolationOptions {
 /// @throws hula::Error(Errc::InvalidOption) from options.validate()
 [[nodiscard]] NurbsCurve interpolate_cubic(std::span<const Vec3> points, const InterpolationOptions& options = {});
 
+/// Piecewise septic Hermite: C3 through points with given first, second and third derivatives (dC/dt, d²C/dt²,
+/// d³C/dt³, t ∈ [0, 1]). Each segment is the degree-7 Bézier curve of its end data
+/// (ΔB0 = h D/7, Δ²B0 = h² S/42, Δ³B0 = h³ W/210 at the start, mirrored at the end); the segments are joined and
+/// the knots reduced to multiplicity 4 (C3) exactly.
+/// @param points, derivatives, second_derivatives, third_derivatives N ≥ 2 each
+/// @param parameters as hermite_cubic; @param dimension 2 or 3
+/// @throws as hermite_quintic, naming "third_derivatives" for the third array
+[[nodiscard]] NurbsCurve hermite_septic(std::span<const Vec3> points, std::span<const Vec3> derivatives,
+                                        std::span<const Vec3> second_derivatives,
+                                        std::span<const Vec3> third_derivatives,
+                                        std::span<const double> parameters = {}, int dimension = 3);
+
+/// A Hermite handle given by its Frenet data (thesis 7.5 and its further work: "higher degree differential
+/// constraints input like normal and bi-normal"): the point, the tangent with its speed, the curvature vector κN
+/// and the torsion τ (the turning of the binormal B = T × N).
+struct FrenetHandle {
+  Vec3 point{};    ///< model units
+  Vec3 tangent{};  ///< dC/dt, t ∈ [0, 1]: non-zero (direction and speed)
+  /// Principal normal direction (its tangential part is removed); zero for no curvature at the handle (κ = 0).
+  Vec3 normal{};
+  double curvature = 0.0;  ///< κ ≥ 0, 1/model units, along `normal`
+  double torsion = 0.0;    ///< τ, 1/model units (used where κ > 0)
+};
+
+/// The C3 septic Hermite curve through handles that fixes, at every handle, the point, the tangent (and speed),
+/// the curvature κ with its normal N, and the torsion τ (so the binormal B = T × N): with v = |C'|, the data
+/// C'' = v² κ N and C''' = v³ (−κ² T + κ τ B) (arc-length speed held: v' = v'' = 0; κ' = 0 at the handle) give
+/// κ, N and τ of the curve there exactly.
+/// @param handles N ≥ 2
+/// @param parameters as hermite_cubic (chord length by default); @param dimension 2 (normals in z = 0, τ = 0) or 3
+/// @throws hula::Error(Errc::InvalidArgument) naming "tangent" (zero), "normal" (parallel to the tangent with
+///   κ > 0) or "curvature" (negative) with the handle's index; NonFiniteInput naming the field
+/// Example: handles sampled from a circular helix (its T, N, κ, τ) give a curve with the helix's κ and τ at them.
+[[nodiscard]] NurbsCurve hermite_frenet(std::span<const FrenetHandle> handles, std::span<const double> parameters = {},
+                                        int dimension = 3);
+
+/// Closed (periodic) C2 cubic spline through N ≥ 3 points: the curve runs through the points in order and back
+/// to the first, C2 everywhere including the closure, on [0, 1] in clamped form (its ends equal, first and second
+/// derivatives equal at both ends), with simple interior knots at the data parameters t_1 … t_{N−1}.
+/// Parameters: `options.parameters` (N + 1 values, the last one the closure's, strictly increasing) or
+/// options.parameterisation over the N + 1 points with the first repeated at the end. A last point equal to the
+/// first (within the coincidence tolerance) is dropped, so a closed point list gives the same curve.
+/// Method: the derivatives D_i of the C2 cubic Hermite spline from the cyclic tridiagonal system
+///   h_i D_{i−1} + 2 (h_{i−1} + h_i) D_i + h_{i−1} D_{i+1} = 3 (h_i Δ_{i−1} / h_{i−1} + h_{i−1} Δ_i / h_i),
+/// indices mod N, h_i = t_{i+1} − t_i, Δ_i = Q_{i+1} − Q_i (diagonally dominant; Sherman–Morrison on the Thomas
+/// algorithm, O(N)), then hermite_cubic and removal of the redundant second copy of each knot (A5.8).
+/// The start and end conditions of `options` are not used.
+/// @throws hula::Error(Errc::TooFewPoints) if fewer than 3 distinct points
+/// @throws as interpolate_cubic (InvalidArgument naming "parameters" for a count other than N + 1)
+/// Example: the square (1, 0), (0, 1), (−1, 0), (0, −1) at uniform parameters gives D_i = 6 × (Q_i turned by 90°)
+///   and C(1/8) = (11/16, 11/16).
+[[nodiscard]] NurbsCurve interpolate_closed_cubic(std::span<const Vec3> points,
+                                                  const InterpolationOptions& options = {});
+
 /// Lagrange interpolation (thesis 5.3.1): the polynomial of degree N - 1 through
 /// N ≥ 2 points, as a Bézier curve on [0, 1]. `parameters` as in
 /// InterpolationOptions (empty: uniform, the thesis's evenly spaced values).

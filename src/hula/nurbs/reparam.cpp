@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "hula/core/error.hpp"
+#include "hula/nurbs/elevate.hpp"
 #include "hula/nurbs/refine.hpp"
 
 namespace hula::nurbs {
@@ -74,6 +75,64 @@ SplitResult split(const NurbsCurve& curve, double t) {
   }
   return SplitResult{NurbsCurve(p, std::move(left), {Q.begin(), Q.begin() + sf}, std::move(wl), curve.dimension()),
                      NurbsCurve(p, std::move(right), {Q.begin() + sf - 1, Q.end()}, std::move(wr), curve.dimension())};
+}
+
+NurbsCurve segment(const NurbsCurve& curve, Interval part) {
+  const Interval d = curve.domain();
+  if (!(part.start >= d.start && part.end <= d.end && part.start < part.end))
+    throw Error(Errc::OutOfDomain,
+                "part = [" + format_number(part.start) + ", " + format_number(part.end) +
+                    "] must satisfy start < end inside the domain [" + format_number(d.start) + ", " +
+                    format_number(d.end) + "]",
+                {.field = "part"});
+  NurbsCurve c = part.end < d.end ? split(curve, part.end).before : curve;
+  return part.start > d.start ? split(c, part.start).after : c;
+}
+
+NurbsCurve join(const NurbsCurve& a, const NurbsCurve& b, double gap) {
+  if (!a.knots().is_clamped()) throw Error(Errc::InvalidArgument, "a: knot vector must be clamped", {.field = "a"});
+  if (!b.knots().is_clamped()) throw Error(Errc::InvalidArgument, "b: knot vector must be clamped", {.field = "b"});
+  const NurbsCurve A = a.degree() < b.degree() ? elevate_degree(a, b.degree() - a.degree()) : a;
+  const NurbsCurve B = b.degree() < a.degree() ? elevate_degree(b, a.degree() - b.degree()) : b;
+  const std::span<const Vec3> PA = A.control_points();
+  const std::span<const Vec3> PB = B.control_points();
+  const Vec3 ea = PA.back();
+  const Vec3 sb = PB.front();
+  if (!(norm(ea - sb) <= gap))
+    throw Error(Errc::InvalidArgument,
+                "a ends at (" + format_number(ea.x) + ", " + format_number(ea.y) + ", " + format_number(ea.z) +
+                    ") and b starts at (" + format_number(sb.x) + ", " + format_number(sb.y) + ", " +
+                    format_number(sb.z) + "), farther apart than gap = " + format_number(gap),
+                {.field = "gap"});
+  const int p = A.degree();
+  const Interval da = A.domain();
+  const Interval db = B.domain();
+  // b follows a with its own parameter length, so its derivatives keep their size.
+  // (kept as it is when it already starts where a ends, so adjacent pieces keep their exact knots)
+  const KnotVector kb =
+      db.start == da.end ? B.knots() : B.knots().reparameterised({da.end, da.end + (db.end - db.start)});
+  const std::span<const double> UB = kb.values();
+  const std::span<const double> UA = A.knots().values();
+  // U = a's knots without the last copy of its end, then b's knots without the p + 1 copies of its start:
+  // the joint keeps multiplicity p (C0).
+  std::vector<double> U(UA.begin(), UA.end() - 1);
+  U.insert(U.end(), UB.begin() + p + 1, UB.end());
+  std::vector<Vec3> P(PA.begin(), PA.end());
+  P.back() = 0.5 * (ea + sb);
+  P.insert(P.end(), PB.begin() + 1, PB.end());
+  std::vector<double> W;
+  if (A.is_rational() || B.is_rational()) {
+    const std::span<const double> WA = A.weights();
+    const std::span<const double> WB = B.weights();
+    const double wa = WA.empty() ? 1.0 : WA.back();
+    const double wb = WB.empty() ? 1.0 : WB.front();
+    W.assign(PA.size(), 1.0);
+    if (!WA.empty()) std::copy(WA.begin(), WA.end(), W.begin());
+    // Scaling every weight of b by one factor leaves b unchanged and makes the shared weight agree.
+    for (std::size_t i = 1; i < PB.size(); ++i) W.push_back((WB.empty() ? 1.0 : WB[i]) * wa / wb);
+  }
+  const int dim = a.dimension() == 2 && b.dimension() == 2 ? 2 : 3;
+  return NurbsCurve(p, std::move(U), std::move(P), std::move(W), dim);
 }
 
 }  // namespace hula::nurbs

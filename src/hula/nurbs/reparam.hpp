@@ -36,4 +36,19 @@ struct SplitResult {
 /// Complexity O(n + p²).
 [[nodiscard]] SplitResult split(const NurbsCurve& curve, double t);
 
+/// The part of the curve on [start, end] (split at both ends, each end clamped).
+/// @param part a ≤ start < end ≤ b
+/// @throws hula::Error(Errc::OutOfDomain) naming "part" unless a ≤ start < end ≤ b
+[[nodiscard]] NurbsCurve segment(const NurbsCurve& curve, Interval part);
+
+/// Joins two curves end to start into one, C0 at the joint (knot of multiplicity p there): the
+/// lower-degree curve is degree-elevated, b is reparameterised to follow a with its own parameter
+/// length, and b's weights are scaled so that the shared control point has one weight.
+/// @param a, b curves with clamped knot vectors whose end and start meet within `gap` (the shared
+///   control point is their midpoint), both planar or mixed (the result is 3-D unless both are 2-D)
+/// @throws hula::Error(Errc::InvalidArgument) naming "a" or "b" if a knot vector is not clamped, or naming
+///   "gap" if |a(end) − b(start)| > gap (both points given)
+/// Complexity O(n_a + n_b) after elevation.
+[[nodiscard]] NurbsCurve join(const NurbsCurve& a, const NurbsCurve& b, double gap);
+
 }  // namespace hula::nurbs
