@@ -22,6 +22,7 @@ packages=(
   chromium
   help2man util-linux
   libceres-dev
+  libdxflib-dev
 )
 # The web workbench (web/) needs Node.js >= 20 and npm; Debian's nodejs/npm
 # are installed only when no node is on the PATH (a newer one is kept).

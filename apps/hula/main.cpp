@@ -184,6 +184,7 @@ int main(int argc, char** argv) {
         hula::cli::add_match_curvature(app),
         hula::cli::add_match_curvature_torsion(app),
         hula::cli::add_doc(app),
+        hula::cli::add_convert(app),
         hula::cli::add_edit(app),
         hula::cli::add_approximate(app),
         hula::cli::add_fit(app),

@@ -103,3 +103,17 @@ def test_shipped_reference_is_the_documented_curve(tmp_path):
     words[words.index("-o") + 1] = str(tmp_path / "reference.json")
     subprocess.run([HULA] + words[1:], check=True, capture_output=True, timeout=120)
     assert (tmp_path / "reference.json").read_bytes() == (SOURCE / "examples" / "cli" / "reference.json").read_bytes()
+
+
+def test_every_howto_example_runs(workdir):
+    # checks each ```sh command of the how-to pages (docs/howto/*.md) exits 0 and prints JSON or nothing
+    ran = 0
+    for page in sorted((SOURCE / "docs" / "howto").glob("*.md")):
+        for heading, lines in blocks(page.read_text(), "sh"):
+            for line in lines:
+                r = subprocess.run(argv(line), cwd=workdir, capture_output=True, text=True, timeout=600)
+                assert r.returncode == 0, f"{page.name} {heading}: `{line}` exited {r.returncode}: {r.stderr[-2000:]}"
+                if r.stdout.strip():
+                    json.loads(r.stdout)
+                ran += 1
+    assert ran >= 10

@@ -1264,6 +1264,21 @@ class DocumentTest(unittest.TestCase):
         r = self.call("POST", base + "/import", {"filename": "quad.step", "content": text}, expect=201)
         self.assertEqual(len(r["labels"]), 1)
         self.assertEqual((r["skipped"], r["warnings"]), (0, []))
+        # a DXF written by `hula convert`: the B-spline back bit for bit, with its name and layer
+        with tempfile.TemporaryDirectory() as tmp:
+            dxf = os.path.join(tmp, "quad.dxf")
+            subprocess.run([HULA, "convert", os.path.join(self.server.workspace, "quad.json"), "-o", dxf],
+                           check=True, capture_output=True, timeout=120)
+            with open(dxf) as f:
+                text = f.read()
+        d = self.call("POST", base + "/import", {"filename": "quad.dxf", "content": text}, expect=201)
+        got = self.call("GET", f"{base}/entities/{d['labels'][0]}")
+        self.assertEqual((got["knots"], got["control_points"]), (quad["knots"], quad["control_points"]))
+        self.assertEqual(got["provenance"]["operation"], "import:dxf")
+        self.assertEqual((got["attributes"]["name"], got["attributes"]["layer"]), ("quad", "default"))
+        e = self.call("POST", base + "/import", {"filename": "half.dxf", "content": text[: len(text) // 2]}, expect=400)
+        self.assertIn("half.dxf", e["error"]["message"])
+        self.call("POST", base + "/undo", expect=200)
         # A STEP file from another CAD system (ST-Developer) whose curve fonts OCCT cannot read: the 22 curves come
         # in, the presentation failures are warnings (issue 21)
         cage = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "data", "real", "cad", "splinecage.stp")

@@ -152,6 +152,8 @@ struct Command {
 [[nodiscard]] Command add_continuity(CLI::App& app);
 /// `hula energy`: bending and curvature-variation energies.
 [[nodiscard]] Command add_energy(CLI::App& app);
+/// `hula convert`: curves between JSON, STEP, IGES, DXF and SVG.
+[[nodiscard]] Command add_convert(CLI::App& app);
 /// `hula completion bash`: a completion script generated from the registered commands.
 [[nodiscard]] Command add_completion(CLI::App& app);
 /// Runs the demo and prints its JSON.

@@ -21,7 +21,10 @@ std::vector<ExportCurve> export_items(const Document& document, std::span<const 
       throw Error(Errc::InvalidArgument,
                   "label " + std::to_string(labels[i].value) + " is not a curve (STEP and IGES carry curves only)",
                   {.field = "labels", .index = i});
-    out.push_back(export_curve(entity->attributes().name, entity->curve()));
+    ExportCurve item = export_curve(entity->attributes().name, entity->curve());
+    item.colour = entity->attributes().colour;
+    item.layer = entity->attributes().layer;
+    out.push_back(std::move(item));
   }
   return out;
 }
@@ -44,6 +47,8 @@ std::vector<Label> add_imported(Edit& edit, const ImportReport& report, const st
     p.details["type"] = c.type;
     Attributes attributes;
     attributes.name = c.name;
+    if (!c.colour.empty()) attributes.colour = c.colour;
+    if (!c.layer.empty()) attributes.layer = c.layer;
     out.push_back(edit.add_curve(curve::Curve(c.curve), attributes, p));
   }
   return out;

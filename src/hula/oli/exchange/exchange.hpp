@@ -70,6 +70,11 @@ struct ExportCurve {
   /// Maximum distance of `curve` from the curve it stands for, in model units; 0 when `curve` is
   /// the curve itself.
   double deviation = 0.0;
+  /// The curve's colour "#rrggbb", written as its XCAF colour (STEP styled item, IGES colour
+  /// definition), or empty for none.
+  std::string colour{};
+  /// The curve's layer, written as its XCAF layer (STEP presentation layer, IGES level), or empty.
+  std::string layer{};
 };
 
 /// The export item of a curve value: its NURBS (for a law or natural-equation curve, the NURBS
@@ -107,6 +112,10 @@ struct ImportedCurve {
   std::string type;
   /// The curve as NURBS on the edge's bounds (3-D).
   nurbs::NurbsCurve curve;
+  /// The colour the file gives the curve (XCAF), "#rrggbb", or empty.
+  std::string colour{};
+  /// The layer the file puts the curve on (XCAF), or empty.
+  std::string layer{};
 };
 
 /// What an import read.

@@ -37,11 +37,15 @@
 #include <IGESData_IGESEntity.hxx>
 #include <IGESData_IGESModel.hxx>
 #include <IGESData_IGESWriter.hxx>
+#include <IGESGraph_Color.hxx>
 #include <IGESSelect_WorkLibrary.hxx>
 #include <Interface_Check.hxx>
 #include <Interface_CheckIterator.hxx>
 #include <Interface_HArray1OfHAsciiString.hxx>
 #include <Interface_Static.hxx>
+#include <Quantity_Color.hxx>
+#include <STEPCAFControl_Reader.hxx>
+#include <STEPCAFControl_Writer.hxx>
 #include <STEPControl_Controller.hxx>
 #include <STEPControl_Reader.hxx>
 #include <STEPControl_Writer.hxx>
@@ -52,18 +56,29 @@
 #include <StepGeom_TrimmedCurve.hxx>
 #include <StepRepr_RepresentationItem.hxx>
 #include <StepShape_EdgeCurve.hxx>
+#include <TColStd_HSequenceOfExtendedString.hxx>
 #include <TCollection_HAsciiString.hxx>
+#include <TDF_LabelSequence.hxx>
+#include <TDataStd_Name.hxx>
+#include <TDocStd_Document.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Edge.hxx>
 #include <Transfer_TransientProcess.hxx>
+#include <XCAFApp_Application.hxx>
+#include <XCAFDoc_ColorTool.hxx>
+#include <XCAFDoc_DocumentTool.hxx>
+#include <XCAFDoc_LayerTool.hxx>
+#include <XCAFDoc_ShapeTool.hxx>
 #include <XSControl_TransferReader.hxx>
 #include <XSControl_WorkSession.hxx>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -129,6 +144,51 @@ void print_file(io::OutputFile& out, const fs::path& path, Print&& print) {
   if (!print(out.stream())) write_failed(path, "the Open CASCADE writer failed");
 }
 
+// "#rrggbb" as an sRGB colour, or nullopt for an empty or malformed text.
+std::optional<Quantity_Color> occt_colour(const std::string& colour) {
+  if (colour.size() != 7 || colour[0] != '#') return std::nullopt;
+  unsigned rgb = 0;
+  if (std::sscanf(colour.c_str() + 1, "%6x", &rgb) != 1) return std::nullopt;
+  return Quantity_Color(((rgb >> 16) & 0xff) / 255.0, ((rgb >> 8) & 0xff) / 255.0, (rgb & 0xff) / 255.0,
+                        Quantity_TOC_sRGB);
+}
+
+// The "#rrggbb" of an sRGB colour (each channel rounded to 8 bits).
+std::string colour_text(const Quantity_Color& colour) {
+  double r = 0.0, g = 0.0, b = 0.0;
+  colour.Values(r, g, b, Quantity_TOC_sRGB);
+  auto byte = [](double v) { return static_cast<unsigned>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0)); };
+  char text[8];
+  std::snprintf(text, sizeof text, "#%02x%02x%02x", byte(r), byte(g), byte(b));
+  return text;
+}
+
+TCollection_ExtendedString utf8(const std::string& text) { return TCollection_ExtendedString(text.c_str(), true); }
+
+std::string utf8(const TCollection_ExtendedString& text) {
+  std::string out(static_cast<std::size_t>(text.LengthOfCString()), '\0');
+  char* data = out.data();
+  out.resize(static_cast<std::size_t>(text.ToUTF8CString(data)));
+  return out;
+}
+
+// The curves as an XCAF document: one free edge shape per curve, named (its STEP product name), with
+// its colour and layer.
+Handle(TDocStd_Document) xcaf_document(const ExportRequest& r) {
+  Handle(TDocStd_Document) doc = new TDocStd_Document("MDTV-XCAF");
+  XCAFApp_Application::GetApplication()->InitDocument(doc);
+  const Handle(XCAFDoc_ShapeTool) shapes = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
+  const Handle(XCAFDoc_ColorTool) colours = XCAFDoc_DocumentTool::ColorTool(doc->Main());
+  const Handle(XCAFDoc_LayerTool) layers = XCAFDoc_DocumentTool::LayerTool(doc->Main());
+  for (const auto& c : r.curves) {
+    const TDF_Label label = shapes->AddShape(BRepBuilderAPI_MakeEdge(to_occt(c.curve)).Edge(), Standard_False);
+    TDataStd_Name::Set(label, utf8(c.name));
+    if (const auto colour = occt_colour(c.colour)) colours->SetColor(label, *colour, XCAFDoc_ColorCurv);
+    if (!c.layer.empty()) layers->SetLayer(label, utf8(c.layer));
+  }
+  return doc;
+}
+
 void write_step(const ExportRequest& r, io::OutputFile& file, double max_deviation) {
   STEPControl_Controller::Init();
   Interface_Static::SetCVal("write.step.schema", r.format == ExchangeFormat::StepAp242 ? "AP242DIS" : "AP214IS");
@@ -138,13 +198,15 @@ void write_step(const ExportRequest& r, io::OutputFile& file, double max_deviati
     Interface_Static::SetIVal("write.precision.mode", 2);
     Interface_Static::SetRVal("write.precision.val", rounded_up(max_deviation));
   }
-  STEPControl_Writer writer;
-  TopoDS_Compound compound;
-  BRep_Builder builder;
-  builder.MakeCompound(compound);
-  for (const auto& c : r.curves) builder.Add(compound, BRepBuilderAPI_MakeEdge(to_occt(c.curve)).Edge());
-  if (writer.Transfer(compound, STEPControl_GeometricCurveSet) != IFSelect_RetDone)
+  // Through XCAF, so each curve is a product named after it, with its colour (a styled item) and its
+  // layer (a presentation layer assignment).
+  STEPCAFControl_Writer caf;
+  caf.SetNameMode(Standard_True);
+  caf.SetColorMode(Standard_True);
+  caf.SetLayerMode(Standard_True);
+  if (!caf.Transfer(xcaf_document(r), STEPControl_GeometricCurveSet))
     write_failed(r.path, "the STEP translator refused the curves");
+  STEPControl_Writer& writer = caf.ChangeWriter();
   // Name the written curves: the writer adds, per edge and in order, one B-spline entity and, in
   // the GEOMETRIC_CURVE_SET, one TRIMMED_CURVE of it (both are named, as other systems read either).
   const Handle(StepData_StepModel) model = writer.Model();
@@ -199,6 +261,14 @@ void write_iges(const ExportRequest& r, io::OutputFile& file, double max_deviati
       Handle(IGESBasic_Name) name = new IGESBasic_Name;
       name->Init(1, new TCollection_HAsciiString(c.name.c_str()));
       entity->AddProperty(name);
+    }
+    if (const auto colour = occt_colour(c.colour)) {
+      // A colour definition (entity 314) in percent of full intensity, as IGES 5.3 has it.
+      double red = 0.0, green = 0.0, blue = 0.0;
+      colour->Values(red, green, blue, Quantity_TOC_sRGB);
+      Handle(IGESGraph_Color) definition = new IGESGraph_Color;
+      definition->Init(red * 100.0, green * 100.0, blue * 100.0, new TCollection_HAsciiString(c.colour.c_str()));
+      entity->InitColor(definition);
     }
     writer.AddEntity(entity);
   }
@@ -259,14 +329,50 @@ ImportedCurve edge_curve(const TopoDS_Edge& edge, std::string name, std::string 
   Handle(Geom_BSplineCurve) bspline = Handle(Geom_BSplineCurve)::DownCast(curve);
   if (bspline.IsNull() || first != bspline->FirstParameter() || last != bspline->LastParameter())
     bspline = GeomConvert::CurveToBSplineCurve(new Geom_TrimmedCurve(curve, first, last));
+  if (bspline->IsPeriodic()) {
+    // OCCT's STEP reader turns a closed B-spline (closed_curve .T., first pole = last pole) into a
+    // periodic one; back to the clamped form on the edge's bounds (end knots of multiplicity p + 1),
+    // the one the file wrote, poles equal up to the rounding of the end knot insertions.
+    bspline = Handle(Geom_BSplineCurve)::DownCast(bspline->Copy());
+    bspline->SetNotPeriodic();
+    bspline->Segment(first, last);
+  }
   return {std::move(name), std::move(source), type, from_occt(bspline, 3)};
+}
+
+// The colour and layer XCAF gives `shape` (or, failing that, `root`, the shape it belongs to).
+struct Presentation {
+  std::string colour;
+  std::string layer;
+};
+Presentation presentation(const Handle(TDocStd_Document) & doc, const TopoDS_Shape& shape, const TopoDS_Shape& root) {
+  const Handle(XCAFDoc_ColorTool) colours = XCAFDoc_DocumentTool::ColorTool(doc->Main());
+  const Handle(XCAFDoc_LayerTool) layers = XCAFDoc_DocumentTool::LayerTool(doc->Main());
+  Presentation out;
+  for (const TopoDS_Shape* s : {&shape, &root}) {
+    Quantity_Color colour;
+    if (out.colour.empty() &&
+        (colours->GetColor(*s, XCAFDoc_ColorCurv, colour) || colours->GetColor(*s, XCAFDoc_ColorGen, colour)))
+      out.colour = colour_text(colour);
+    Handle(TColStd_HSequenceOfExtendedString) names;
+    if (out.layer.empty() && layers->GetLayers(*s, names) && !names.IsNull() && names->Length() > 0)
+      out.layer = utf8(names->Value(1));
+  }
+  return out;
 }
 
 ImportReport read_step(const fs::path& path) {
   STEPControl_Controller::Init();
-  STEPControl_Reader reader;
-  if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) not_readable(path, "the STEP reader refuses the file");
-  reader.TransferRoots();
+  // Through XCAF for the colours and layers; the geometry and the names come from the same transfer.
+  STEPCAFControl_Reader caf;
+  caf.SetNameMode(Standard_True);
+  caf.SetColorMode(Standard_True);
+  caf.SetLayerMode(Standard_True);
+  if (caf.ReadFile(path.c_str()) != IFSelect_RetDone) not_readable(path, "the STEP reader refuses the file");
+  Handle(TDocStd_Document) doc = new TDocStd_Document("MDTV-XCAF");
+  XCAFApp_Application::GetApplication()->InitDocument(doc);
+  (void)caf.Transfer(doc);
+  STEPControl_Reader& reader = caf.ChangeReader();
   // OCCT records presentation and schema problems (a curve font or colour it cannot read, an
   // unresolved reference, an entity of the wrong type) as failures and carries on with what it
   // could read: every edge it transferred is imported, and the failures become warnings.
@@ -275,7 +381,11 @@ ImportReport read_step(const fs::path& path) {
   ImportReport report;
   report.warnings = failures(reader.WS(), false);
   TopTools_IndexedMapOfShape edges;
-  for (int i = 1; i <= reader.NbShapes(); ++i) TopExp::MapShapes(reader.Shape(i), TopAbs_EDGE, edges);
+  std::vector<TopoDS_Shape> roots;  // the root shape of each edge
+  for (int i = 1; i <= reader.NbShapes(); ++i) {
+    TopExp::MapShapes(reader.Shape(i), TopAbs_EDGE, edges);
+    roots.resize(static_cast<std::size_t>(edges.Extent()), reader.Shape(i));
+  }
   for (int i = 1; i <= edges.Extent(); ++i) {
     const TopoDS_Edge& edge = TopoDS::Edge(edges(i));
     double first = 0.0, last = 0.0;
@@ -291,6 +401,9 @@ ImportReport read_step(const fs::path& path) {
     const int number = entity.IsNull() ? 0 : model->Number(entity);
     report.curves.push_back(edge_curve(edge, entity.IsNull() ? std::string() : step_name(entity),
                                        number > 0 ? "#" + std::to_string(number) : "", type));
+    const Presentation p = presentation(doc, edge, roots[static_cast<std::size_t>(i - 1)]);
+    report.curves.back().colour = p.colour;
+    report.curves.back().layer = p.layer;
   }
   return report;
 }
@@ -298,6 +411,22 @@ ImportReport read_step(const fs::path& path) {
 // The IGES entity an edge was transferred from (mode -1: the whole transfer process), or null.
 Handle(IGESData_IGESEntity) iges_entity(const Handle(XSControl_TransferReader) & transfer, const TopoDS_Edge& edge) {
   return Handle(IGESData_IGESEntity)::DownCast(transfer->EntityFromShapeResult(edge, -1));
+}
+
+// The colour of an IGES entity: its colour definition (314, in percent) or its colour number (1–8), or empty.
+std::string iges_colour(const Handle(IGESData_IGESEntity) & entity) {
+  if (entity->DefColor() == IGESData_DefReference) {
+    const auto definition = Handle(IGESGraph_Color)::DownCast(entity->Color());
+    if (definition.IsNull()) return {};
+    double red = 0.0, green = 0.0, blue = 0.0;
+    definition->RGBIntensity(red, green, blue);
+    return colour_text(Quantity_Color(red / 100.0, green / 100.0, blue / 100.0, Quantity_TOC_sRGB));
+  }
+  // Colour numbers of IGES 5.3 table 3: 1 black, 2 red, 3 green, 4 blue, 5 yellow, 6 magenta, 7 cyan, 8 white.
+  static constexpr const char* kNumbered[] = {"#000000", "#ff0000", "#00ff00", "#0000ff",
+                                              "#ffff00", "#ff00ff", "#00ffff", "#ffffff"};
+  const int rank = entity->RankColor();
+  return entity->DefColor() == IGESData_DefValue && rank >= 1 && rank <= 8 ? kNumbered[rank - 1] : std::string();
 }
 
 ImportReport read_iges(const fs::path& path) {
@@ -329,6 +458,7 @@ ImportReport read_iges(const fs::path& path) {
         !entity.IsNull() && entity->HasName() ? std::string(entity->NameValue()->ToCString()) : std::string();
     const int number = entity.IsNull() ? 0 : model->Number(entity);
     report.curves.push_back(edge_curve(edge, name, number > 0 ? "DE " + std::to_string(2 * number - 1) : "", kind));
+    if (!entity.IsNull()) report.curves.back().colour = iges_colour(entity);
   }
   return report;
 }

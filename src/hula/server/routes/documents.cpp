@@ -25,6 +25,7 @@
 #include "hula/io/json_curve.hpp"
 #include "hula/io/json_read.hpp"
 #include "hula/io/points_file.hpp"
+#include "hula/oli/file_convert.hpp"
 #include "hula/oli/json_exchange.hpp"
 #include "hula/server/security.hpp"
 #ifdef HULA_WITH_OCCT
@@ -77,15 +78,16 @@ bool is_points_extension(const std::string& ext) {
   return ext == "csv" || ext == "txt" || ext == "dat" || ext == "xyz";
 }
 
-// The lower-case extension of an import file name: step, stp, iges, igs, json or a point file's (else 400).
+// The lower-case extension of an import file name: step, stp, iges, igs, dxf, json or a point file's (else 400).
 std::string import_extension(const std::string& name, const char* field) {
   std::string ext = std::filesystem::path(name).extension().string();
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext != ".step" && ext != ".stp" && ext != ".iges" && ext != ".igs" && ext != ".json" &&
+  if (ext != ".step" && ext != ".stp" && ext != ".iges" && ext != ".igs" && ext != ".dxf" && ext != ".json" &&
       !is_points_extension(ext.empty() ? ext : ext.substr(1)))
-    throw Error(Errc::InvalidArgument,
-                "import file '" + name + "' must end in .step, .stp, .iges, .igs, .json, .csv, .txt, .dat or .xyz",
-                ErrorWhere{.field = field});
+    throw Error(
+        Errc::InvalidArgument,
+        "import file '" + name + "' must end in .step, .stp, .iges, .igs, .dxf, .json, .csv, .txt, .dat or .xyz",
+        ErrorWhere{.field = field});
   return ext.substr(1);
 }
 
@@ -141,7 +143,7 @@ class ImportFile {
     name_ = json::get_string(json::require_member(body, json::JsonPath(), "filename"), json::root_path("filename"));
     extension_ = import_extension(name_, "filename");
     content_ = json::get_string(json::require_member(body, json::JsonPath(), "content"), json::root_path("content"));
-    if (extension_ == "json" || is_points_extension(extension_)) return;
+    if (extension_ == "json" || extension_ == "dxf" || is_points_extension(extension_)) return;
     std::string pattern = (std::filesystem::temp_directory_path() / "hula-import-XXXXXX.").string() + extension_;
     const int fd = mkstemps(pattern.data(), static_cast<int>(extension_.size() + 1));
     if (fd < 0)
@@ -164,6 +166,7 @@ class ImportFile {
   }
 
   [[nodiscard]] bool json() const { return extension_ == "json"; }
+  [[nodiscard]] bool dxf() const { return extension_ == "dxf"; }
   [[nodiscard]] bool points() const { return is_points_extension(extension_); }
   [[nodiscard]] const std::string& name() const { return name_; }
   [[nodiscard]] const std::filesystem::path& path() const { return path_; }
@@ -253,6 +256,14 @@ void add_documents(Router& router, const Context& context) {
         return d.transact("import",
                           [&](oli::Edit& e) { labels = {oli::import_points(e, std::move(points), file.name())}; });
       });
+    } else if (file.dxf()) {
+      // DXF SPLINE entities (io/dxf_file.hpp, dxflib): read here, no helper process.
+      const io::DxfReadReport report = io::parse_dxf(file.text(), file.name());
+      outcome = doc->change([&](oli::Document& d) {
+        return d.transact("import", [&](oli::Edit& e) { labels = oli::add_dxf_imported(e, report, file.name()); });
+      });
+      cad["skipped"] = report.skipped;
+      cad["warnings"] = report.warnings;
     } else if (file.json()) {
       const Json input = io::json::parse_json_text(file.text(), file.name());
       outcome = doc->change([&](oli::Document& d) {

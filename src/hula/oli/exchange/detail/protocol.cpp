@@ -33,8 +33,11 @@ io::Json request_to_json(const Request& request) {
     out["path"] = e->path.string();
     io::Json curves = io::Json::array();
     for (const auto& c : e->curves)
-      curves.push_back(
-          {{"name", c.name}, {"deviation", c.deviation}, {"curve", io::curve_to_json(curve::Curve(c.curve))}});
+      curves.push_back({{"name", c.name},
+                        {"deviation", c.deviation},
+                        {"colour", c.colour},
+                        {"layer", c.layer},
+                        {"curve", io::curve_to_json(curve::Curve(c.curve))}});
     out["curves"] = std::move(curves);
   } else {
     out["operation"] = "import";
@@ -60,9 +63,14 @@ Request request_from_json(const io::Json& document) {
   const auto& curves = js::get_array(js::require_member(document, root, "curves"), root.member("curves"));
   for (std::size_t i = 0; i < curves.size(); ++i) {
     const auto p = root.member("curves").element(i);
+    auto optional_string = [&](const char* member) {
+      const auto* v = js::optional_member(curves[i], member);
+      return v == nullptr ? std::string() : js::get_string(*v, p.member(member));
+    };
     r.curves.push_back({js::get_string(js::require_member(curves[i], p, "name"), p.member("name")),
                         io::curve_from_json(js::require_member(curves[i], p, "curve")).nurbs(),
-                        js::get_number(js::require_member(curves[i], p, "deviation"), p.member("deviation"))});
+                        js::get_number(js::require_member(curves[i], p, "deviation"), p.member("deviation")),
+                        optional_string("colour"), optional_string("layer")});
   }
   return r;
 }
@@ -77,6 +85,8 @@ io::Json import_answer_to_json(const ImportReport& report) {
     curves.push_back({{"name", c.name},
                       {"source", c.source},
                       {"type", c.type},
+                      {"colour", c.colour},
+                      {"layer", c.layer},
                       {"curve", io::curve_to_json(curve::Curve(c.curve))}});
   return {{"ok", {{"curves", std::move(curves)}, {"skipped", report.skipped}, {"warnings", report.warnings}}}};
 }
@@ -115,7 +125,8 @@ ImportReport import_answer_from_json(const io::Json& ok) {
     ImportReport report;
     for (const auto& c : ok.at("curves"))
       report.curves.push_back({c.at("name").get<std::string>(), c.at("source").get<std::string>(),
-                               c.at("type").get<std::string>(), io::curve_from_json(c.at("curve")).nurbs()});
+                               c.at("type").get<std::string>(), io::curve_from_json(c.at("curve")).nurbs(),
+                               c.value("colour", std::string()), c.value("layer", std::string())});
     report.skipped = ok.at("skipped").get<std::size_t>();
     report.warnings = ok.at("warnings").get<std::vector<std::string>>();
     return report;
