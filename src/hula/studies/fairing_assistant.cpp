@@ -2,7 +2,7 @@
 // The fairing assistant; see fairing_assistant.hpp.
 //
 // Notation: q_k the data points (q0_k the input's), x the vector of their free
-// coordinates (x, y for planar curves, x, y, z otherwise), r(x) the residuals
+// moves along move_axes() (in the plane of a planar curve), r(x) the residuals
 // sqrt(w_q (h/2) |C'(t_q)|) κ'(t_q) at the 5 Gauss–Legendre nodes of every
 // knot span (h the span width), J = ∂r/∂x by forward differences.
 #include "hula/studies/fairing_assistant.hpp"
@@ -17,6 +17,7 @@
 #include "hula/core/error.hpp"
 #include "hula/diffgeom/energy.hpp"
 #include "hula/diffgeom/frenet.hpp"
+#include "hula/diffgeom/planarity.hpp"
 #include "hula/nurbs/interpolate.hpp"
 #include "hula/studies/knot_fairing.hpp"
 
@@ -160,13 +161,32 @@ class Residuals {
   diffgeom::FrenetScale scale_;
 };
 
-// Min-variation: Levenberg–Marquardt on x with every point projected into its tolerance ball.
+// The directions a data point may move in: the two axes of its plane for a planar curve (a
+// planar curve stays planar: off the plane κ′ changes only to second order, so its finite
+// differences are noise, and a step along them would bend the curve out of its plane by up to
+// the tolerance), the coordinate axes otherwise.
+std::vector<Vec3> move_axes(const curve::Curve& c) {
+  if (c.dimension() == 2) return {Vec3{1, 0, 0}, Vec3{0, 1, 0}};
+  const diffgeom::Planarity plane = diffgeom::planarity(c.nurbs());
+  if (!plane.planar || !plane.normal) return {Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1}};
+  const Vec3 n = *plane.normal;
+  // The coordinate axis least aligned with n, made orthogonal to it.
+  const Vec3 pick = std::abs(n.x) <= std::abs(n.y) && std::abs(n.x) <= std::abs(n.z) ? Vec3{1, 0, 0}
+                    : std::abs(n.y) <= std::abs(n.z)                                 ? Vec3{0, 1, 0}
+                                                                                     : Vec3{0, 0, 1};
+  const Vec3 u = normalized(pick - n * dot(pick, n));
+  return {u, cross(n, u)};
+}
+
+// Min-variation: Levenberg–Marquardt on x (the points' moves along their axes) with every
+// point projected into its tolerance ball.
 struct MinVariation {
   curve::Curve input;  // the curve rebuilt from moved points (prepared for the held ends)
   const AssistantOptions& options;
   std::vector<Vec3> q0;
   std::vector<bool> held;  // data points that stay exactly at q0
-  int dim;
+  std::vector<Vec3> axes;  // orthonormal move directions, the same for every point
+  int dim;                 // axes.size()
   Residuals residuals;
   Clock::time_point t0;
 
@@ -175,34 +195,33 @@ struct MinVariation {
         options(o),
         q0(data_points_of(c)),
         held(held_points(c, o.hold, q0.size())),
-        dim(c.dimension()),
+        axes(move_axes(c)),
+        dim(static_cast<int>(axes.size())),
         residuals(c.nurbs()),
         t0(start) {}
 
   [[nodiscard]] std::vector<Vec3> points_of(const Eigen::VectorXd& x) const {
     std::vector<Vec3> q = q0;
-    for (std::size_t k = 0; k < q.size(); ++k)
-      for (int j = 0; j < dim; ++j) q[k][static_cast<std::size_t>(j)] = x[static_cast<Eigen::Index>(k) * dim + j];
+    for (std::size_t k = 0; k < q.size(); ++k) {
+      if (held[k]) continue;  // exactly q0, not q0 + 0 · axes
+      for (int j = 0; j < dim; ++j)
+        q[k] = q[k] + axes[static_cast<std::size_t>(j)] * x[static_cast<Eigen::Index>(k) * dim + j];
+    }
     return q;
   }
 
-  // Moves every point of x back into its ball of radius tolerance (1 − kBallMargin) about q0.
+  // Moves every point of x back into its ball of radius tolerance (1 − kBallMargin) about q0
+  // (the axes are orthonormal: the move's length is the norm of its coefficients).
   void project(Eigen::VectorXd& x) const {
     const double radius = options.tolerance * (1.0 - kBallMargin);
     for (std::size_t k = 0; k < q0.size(); ++k) {
-      const auto base = static_cast<Eigen::Index>(k) * dim;
+      auto move = x.segment(static_cast<Eigen::Index>(k) * dim, dim);
       if (held[k]) {
-        for (int j = 0; j < dim; ++j) x[base + j] = q0[k][static_cast<std::size_t>(j)];
+        move.setZero();
         continue;
       }
-      double n2 = 0.0;
-      for (int j = 0; j < dim; ++j) n2 += std::pow(x[base + j] - q0[k][static_cast<std::size_t>(j)], 2);
-      const double n = std::sqrt(n2);
-      if (n <= radius) continue;
-      for (int j = 0; j < dim; ++j) {
-        const double c = q0[k][static_cast<std::size_t>(j)];
-        x[base + j] = c + (x[base + j] - c) * (radius / n);
-      }
+      const double n = move.norm();
+      if (n > radius) move *= radius / n;
     }
   }
 
@@ -220,9 +239,7 @@ struct MinVariation {
 
   AssistantResult run() {
     const auto n = static_cast<Eigen::Index>(q0.size()) * dim;
-    Eigen::VectorXd x(n);
-    for (std::size_t k = 0; k < q0.size(); ++k)
-      for (int j = 0; j < dim; ++j) x[static_cast<Eigen::Index>(k) * dim + j] = q0[k][static_cast<std::size_t>(j)];
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
     Eigen::VectorXd r, r_try, r_h;
     if (!evaluate(x, r))
       throw Error(Errc::NumericalFailure, "the curve's curvature variation is not finite at its own data points",
