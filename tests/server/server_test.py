@@ -1202,7 +1202,7 @@ class DocumentTest(unittest.TestCase):
         law_label = self.call("POST", base + "/entities", {"curve": law, "name": "cubic"}, expect=201)["label"]
         revision = self.call("GET", base)["revision"]
         for fmt, reported, ext in (("step", "step-ap214", "step"), ("step-ap242", "step-ap242", "step"),
-                                   ("iges", "iges", "igs")):
+                                   ("iges", "iges", "igs"), ("dxf", "dxf", "dxf")):
             r = self.call("POST", base + "/export", {"labels": [nurbs, law_label], "format": fmt})
             self.assertEqual((r["format"], r["labels"]), (reported, [nurbs, law_label]))
             self.assertGreater(r["max_deviation"], 0)

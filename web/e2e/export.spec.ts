@@ -1,6 +1,7 @@
-// Export from the toolbar's Export menu (JSON, STEP, IGES) in Debian's chromium against a real
-// `hula serve`: the downloaded STEP and IGES files are read back by `hula doc import` (Open
-// CASCADE's reader in the exchange helper) and compared with the curve the document holds.
+// Export from the toolbar's Export menu (JSON, STEP, IGES, DXF) in Debian's chromium against a
+// real `hula serve`: the downloaded STEP and IGES files are read back by `hula doc import` (Open
+// CASCADE's reader in the exchange helper), the DXF by dxflib, and compared with the curve the
+// document holds.
 import { execFileSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -124,6 +125,20 @@ test('export IGES and JSON by keys', async ({ page }) => {
   await json.saveAs(jsonFile);
   const written = JSON.parse(readFileSync(jsonFile, 'utf8')) as typeof rail;
   expect(written).toMatchObject(rail);
+});
+
+// DXF by key D: one SPLINE with the curve's name, read back exactly (dxf writes every digit).
+test('export DXF by key, read back by hula doc import', async ({ page }) => {
+  await openWithRail(page, 'export-dxf');
+  await page.keyboard.press('e');
+  const [dxf] = await Promise.all([page.waitForEvent('download'), page.keyboard.press('d')]);
+  expect(dxf.suggestedFilename()).toBe('rail.dxf');
+  const file = join(mkdtempSync(join(tmpdir(), 'hula-dl-')), 'rail.dxf');
+  await dxf.saveAs(file);
+  expect(readFileSync(file, 'latin1')).toMatch(/SPLINE/);
+  const { labels, first } = readBack(file);
+  expect(labels).toHaveLength(1);
+  expectRail(first, 'import:dxf');
 });
 
 // With nothing selected the status line says so and nothing is downloaded; Escape closes the menu.

@@ -1551,6 +1551,7 @@ export class App {
       case 'export-json':
       case 'export-step':
       case 'export-iges':
+      case 'export-dxf':
         this.exportMenu.pick(name.slice('export-'.length) as MenuFormat);
         break;
       case 'help':

@@ -232,12 +232,23 @@ std::vector<io::DxfCurve> dxf_items(const Document& document, std::span<const La
   return out;
 }
 
-double export_dxf(const Document& document, std::span<const Label> labels, const fs::path& path) {
-  const auto items = dxf_items(document, labels);
+namespace {
+double largest_deviation(const Document& document, std::span<const Label> labels) {
   double deviation = 0.0;
   for (Label l : labels) deviation = std::max(deviation, document.get(l).curve().approximation_deviation());
-  io::write_dxf_file(path, items);
   return deviation;
+}
+}  // namespace
+
+DxfExport dxf_export(const Document& document, std::span<const Label> labels) {
+  const auto items = dxf_items(document, labels);
+  return {io::dxf_text(items), largest_deviation(document, labels)};
+}
+
+double export_dxf(const Document& document, std::span<const Label> labels, const fs::path& path) {
+  const auto items = dxf_items(document, labels);
+  io::write_dxf_file(path, items);
+  return largest_deviation(document, labels);
 }
 
 std::vector<Label> add_dxf_imported(Edit& edit, const io::DxfReadReport& report, const fs::path& source) {

@@ -84,6 +84,14 @@ ConvertReport convert_file(const std::filesystem::path& input, const std::filesy
 /// @throws hula::Error(Errc::InvalidArgument) naming a label that is missing or not a curve, or for no labels
 [[nodiscard]] std::vector<io::DxfCurve> dxf_items(const Document& document, std::span<const Label> labels);
 
+/// The curves of `labels` as DXF text (dxf_items, then io::dxf_text) and the largest NURBS
+/// approximation deviation among them (0 when all are NURBS): what the server's export returns.
+struct DxfExport {
+  std::string text;
+  double max_deviation = 0.0;
+};
+[[nodiscard]] DxfExport dxf_export(const Document& document, std::span<const Label> labels);
+
 /// Writes the curves of `labels` to a DXF file (dxf_items, then io::write_dxf_file).
 /// @returns the largest NURBS approximation deviation of the curves written (0 when all are NURBS)
 [[nodiscard]] double export_dxf(const Document& document, std::span<const Label> labels,

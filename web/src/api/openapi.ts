@@ -417,12 +417,12 @@ export type ImportResult = {
 
 export type ExportRequest = {
   labels: number[];
-  format: "json" | "step" | "step-ap214" | "step-ap242" | "iges";
+  format: "json" | "dxf" | "step" | "step-ap214" | "step-ap242" | "iges";
 };
 
 export type ExportResult = {
   labels: number[];
-  format: "json" | "step-ap214" | "step-ap242" | "iges";
+  format: "json" | "dxf" | "step-ap214" | "step-ap242" | "iges";
   content: string;
   max_deviation?: number;
 };

@@ -1,5 +1,5 @@
 // The toolbar's Export menu: the selected curve written by the server as a
-// JSON curve file, a STEP (AP214) or an IGES 5.3 file, and downloaded under
+// JSON curve file, a STEP (AP214), an IGES 5.3 or a DXF (SPLINE) file, and downloaded under
 // the curve's name. The page never writes a format itself.
 
 import type { ExportFormat } from '../api/types';
@@ -9,6 +9,7 @@ export const EXPORT_FORMATS = {
   json: { extension: 'json', mime: 'application/json' },
   step: { extension: 'step', mime: 'model/step' },
   iges: { extension: 'igs', mime: 'model/iges' },
+  dxf: { extension: 'dxf', mime: 'image/vnd.dxf' },
 } as const satisfies Partial<Record<ExportFormat, { extension: string; mime: string }>>;
 export type MenuFormat = keyof typeof EXPORT_FORMATS;
 
@@ -35,7 +36,7 @@ export function download(text: string, filename: string, mime: string): void {
 
 /**
  * The drop-down under the Export button: opened by the button or key E (focus on its first item),
- * an item (or its key J, S, I) runs `choose`; Escape, a click elsewhere or a choice closes it.
+ * an item (or its key J, S, I, D) runs `choose`; Escape, a click elsewhere or a choice closes it.
  */
 export class ExportMenu {
   private readonly button: HTMLButtonElement;
@@ -48,7 +49,7 @@ export class ExportMenu {
       if (this.isOpen && !this.button.parentElement!.contains(ev.target as Node)) this.close();
     });
     this.menu.addEventListener('keydown', (ev) => {
-      const keys: Record<string, MenuFormat> = { j: 'json', s: 'step', i: 'iges' };
+      const keys: Record<string, MenuFormat> = { j: 'json', s: 'step', i: 'iges', d: 'dxf' };
       const k = ev.key.toLowerCase();
       const items = [...this.menu.querySelectorAll<HTMLButtonElement>('button')];
       const at = items.indexOf(document.activeElement as HTMLButtonElement);

@@ -9,7 +9,7 @@
 // curves of a STEP, IGES or JSON file, or the points of a point file (.csv,
 // .txt, .dat, .xyz: io::parse_points), a plain name in the workspace or the
 // file's text in the body, as new entities, in one "import" step.
-// POST /api/documents/{name}/export {"labels", "format"}: the entities
+// POST /api/documents/{name}/export {"labels", "format"} (json, dxf, step…, iges): the entities
 // written as a JSON, STEP or IGES file, its text in the reply (the document is
 // only read).
 #include "hula/server/documents.hpp"
@@ -305,6 +305,13 @@ void add_documents(Router& router, const Context& context) {
     if (format == "json") {
       out["format"] = format;
       out["content"] = io::to_file_text(doc->read([&](const oli::Document& d) { return oli::export_json(d, labels); }));
+      return json_response(200, out);
+    }
+    if (format == "dxf") {  // dxflib, in this process: no helper, no temporary file
+      oli::DxfExport dxf = doc->read([&](const oli::Document& d) { return oli::dxf_export(d, labels); });
+      out["format"] = format;
+      out["content"] = std::move(dxf.text);
+      out["max_deviation"] = dxf.max_deviation;
       return json_response(200, out);
     }
 #ifdef HULA_WITH_OCCT
