@@ -109,7 +109,12 @@ function(hula_add_plugin name)
   target_link_libraries(hula_plugin_${name} PRIVATE ${ARG_LIBS} hula::warnings hula::sanitize)
   target_compile_definitions(hula_plugin_${name} PRIVATE
     "HULA_PLUGIN_EXPORT=extern \"C\" __attribute__((visibility(\"default\")))")
-  target_link_options(hula_plugin_${name} PRIVATE -Wl,--exclude-libs,ALL -Wl,--no-undefined -Wl,-Bsymbolic)
+  target_link_options(hula_plugin_${name} PRIVATE -Wl,--exclude-libs,ALL -Wl,-Bsymbolic)
+  # Every symbol resolved at link time, not at dlopen; not with sanitizers, whose runtime (clang's is
+  # static) is found in the program only.
+  if(NOT HULA_SANITIZE)
+    target_link_options(hula_plugin_${name} PRIVATE -Wl,--no-undefined)
+  endif()
   set_target_properties(hula_plugin_${name} PROPERTIES
     OUTPUT_NAME hula_${name} PREFIX lib
     LIBRARY_OUTPUT_DIRECTORY ${HULA_PLUGIN_BUILD_DIR}
