@@ -92,3 +92,33 @@ function(hula_add_bench name)
   # bench/reference/: the hand-written kernels every ratio in docs/benchmarks.md is measured against.
   target_include_directories(bench_${name} PRIVATE ${PROJECT_SOURCE_DIR}/bench)
 endfunction()
+
+# Plugins (hula/core/plugin.hpp): a MODULE library libhula_<name>.so, loaded with dlopen on first use so
+# that programs which never use it do not load the large library it wraps at start-up. It links its own
+# copies of the static modules it needs, hidden (--exclude-libs): only its extern "C" entry points,
+# marked HULA_PLUGIN_EXPORT, are visible. Built into HULA_PLUGIN_BUILD_DIR, installed into
+# HULA_PLUGIN_INSTALL_DIR; `owner` (the static target whose code calls plugin_symbol) depends on it, so
+# every program linking the owner has the plugin built beside it.
+#
+#   hula_add_plugin(pagmo OWNER hula_optim_pagmo SOURCES pagmo_plugin.cpp LIBS hula::optim Pagmo::pagmo)
+set(HULA_PLUGIN_BUILD_DIR ${PROJECT_BINARY_DIR}/lib/hulahoops)
+set(HULA_PLUGIN_INSTALL_DIR ${CMAKE_INSTALL_LIBDIR}/hulahoops)
+function(hula_add_plugin name)
+  cmake_parse_arguments(ARG "" "OWNER" "SOURCES;LIBS" ${ARGN})
+  add_library(hula_plugin_${name} MODULE ${ARG_SOURCES})
+  target_link_libraries(hula_plugin_${name} PRIVATE ${ARG_LIBS} hula::warnings hula::sanitize)
+  target_compile_definitions(hula_plugin_${name} PRIVATE
+    "HULA_PLUGIN_EXPORT=extern \"C\" __attribute__((visibility(\"default\")))")
+  target_link_options(hula_plugin_${name} PRIVATE -Wl,--exclude-libs,ALL -Wl,-Bsymbolic)
+  # Every symbol resolved at link time, not at dlopen; not with sanitizers, whose runtime (clang's is
+  # static) is found in the program only.
+  if(NOT HULA_SANITIZE)
+    target_link_options(hula_plugin_${name} PRIVATE -Wl,--no-undefined)
+  endif()
+  set_target_properties(hula_plugin_${name} PROPERTIES
+    OUTPUT_NAME hula_${name} PREFIX lib
+    LIBRARY_OUTPUT_DIRECTORY ${HULA_PLUGIN_BUILD_DIR}
+    CXX_VISIBILITY_PRESET hidden VISIBILITY_INLINES_HIDDEN ON)
+  install(TARGETS hula_plugin_${name} LIBRARY DESTINATION ${HULA_PLUGIN_INSTALL_DIR})
+  add_dependencies(${ARG_OWNER} hula_plugin_${name})
+endfunction()

@@ -28,6 +28,25 @@ foreach(f include/hula/version.hpp include/hula/nurbs/nurbs_curve.hpp lib/cmake/
   endif()
 endforeach()
 
+# The plugins (hula/core/plugin.hpp) are installed beside the libraries, and the installed `hula` loads
+# them from there (bin/../lib/hulahoops), not from the build tree.
+set(plugins pagmo)
+if(WITH_OCCT)
+  list(APPEND plugins occt)
+endif()
+foreach(p IN LISTS plugins)
+  if(NOT EXISTS ${prefix}/lib/hulahoops/libhula_${p}.so)
+    message(FATAL_ERROR "the install tree lacks lib/hulahoops/libhula_${p}.so")
+  endif()
+endforeach()
+execute_process(COMMAND ${CMAKE_COMMAND} -E env LD_DEBUG=files ${prefix}/bin/hula optimise --problem sphere
+    --dimension 2 --algorithm pagmo-de --population 8 --generations 2 --seed 1
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+string(FIND "${err}" "file=${prefix}/bin/../lib/hulahoops/libhula_pagmo.so" at)
+if(NOT rc EQUAL 0 OR at EQUAL -1)
+  message(FATAL_ERROR "the installed hula did not run pagmo-de with the installed plugin (${rc}):\n${out}\n${err}")
+endif()
+
 # find_package route.
 run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/cmake-consumer -B ${WORK_DIR}/build -G Ninja
     -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_CXX_COMPILER=${CXX} -DCMAKE_BUILD_TYPE=Release)

@@ -75,7 +75,7 @@ FairingBaselines fairing_baselines(const StudyOutcome& outcome) {
                       .t2 = ends[1].tangent,
                       .k1 = ends[0].tangent_defined ? ends[0].signed_curvature : 0.0,
                       .k2 = ends[1].tangent_defined ? ends[1].signed_curvature : 0.0};
-  const std::vector<FairingBaseline> baselines = occt_fairing_baselines(e, s.points);
+  const std::vector<FairingBaseline> baselines = occt_fairing_baselines_in_plugin(e, s.points);
   const auto num = [](double v) { return std::isfinite(v) ? io::Json(v) : io::Json(nullptr); };
   FairingBaselines out;
   out.json["ends"] =

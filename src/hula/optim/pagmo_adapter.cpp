@@ -1,105 +1,16 @@
 // SPDX-License-Identifier: MIT
 #include "hula/optim/pagmo_adapter.hpp"
 
-#include <atomic>
 #include <chrono>
-#include <cmath>
-#include <limits>
-#include <memory>
-#include <pagmo/algorithm.hpp>
-#include <pagmo/algorithms/cmaes.hpp>
-#include <pagmo/algorithms/de.hpp>
-#include <pagmo/algorithms/moead.hpp>
-#include <pagmo/algorithms/nsga2.hpp>
-#include <pagmo/algorithms/pso.hpp>
-#include <pagmo/algorithms/sade.hpp>
-#include <pagmo/algorithms/sga.hpp>
-#include <pagmo/population.hpp>
-#include <pagmo/problem.hpp>
-#include <pagmo/utils/multi_objective.hpp>
 #include <stdexcept>
 #include <string>
 
 #include "hula/core/error.hpp"
+#include "hula/core/plugin.hpp"
+#include "hula/optim/detail/pagmo_plugin.hpp"
 
 namespace hula::optim {
 namespace {
-
-struct Counters {
-  std::atomic<std::size_t> failed{0};
-  std::atomic<std::size_t> succeeded{0};
-};
-
-// pagmo user-defined problem wrapping a Flexo Problem. pagmo orders the
-// fitness vector as objectives, equality constraints, inequality constraints;
-// Flexo writes objectives, inequality, equality, so the adapter reorders.
-struct Udp {
-  const Problem* problem = nullptr;
-  std::shared_ptr<Counters> counters{};
-
-  [[nodiscard]] pagmo::vector_double fitness(const pagmo::vector_double& x) const {
-    const Problem& p = *problem;
-    pagmo::vector_double values(p.values_per_point());
-    bool ok = true;
-    try {
-      if (p.evaluate)
-        p.evaluate(x, values);
-      else
-        p.evaluate_many(x, values);  // a batch of one point
-      for (const double v : values) ok = ok && std::isfinite(v);
-    } catch (...) {
-      ok = false;
-    }
-    if (!ok) {
-      ++counters->failed;
-      for (double& v : values) v = std::numeric_limits<double>::max();
-    } else {
-      ++counters->succeeded;
-    }
-    pagmo::vector_double out(values.size());
-    const std::size_t m = p.objectives;
-    const std::size_t ni = p.inequality_constraints;
-    const std::size_t ne = p.equality_constraints;
-    std::copy_n(values.begin(), m, out.begin());
-    std::copy_n(values.begin() + static_cast<std::ptrdiff_t>(m + ni), ne, out.begin() + static_cast<std::ptrdiff_t>(m));
-    std::copy_n(values.begin() + static_cast<std::ptrdiff_t>(m), ni, out.begin() + static_cast<std::ptrdiff_t>(m + ne));
-    return out;
-  }
-  [[nodiscard]] std::pair<pagmo::vector_double, pagmo::vector_double> get_bounds() const {
-    pagmo::vector_double lo, hi;
-    for (const auto& v : problem->variables) {
-      lo.push_back(v.lower);
-      hi.push_back(v.upper);
-    }
-    return {lo, hi};
-  }
-  [[nodiscard]] pagmo::vector_double::size_type get_nobj() const { return problem->objectives; }
-  [[nodiscard]] pagmo::vector_double::size_type get_nec() const { return problem->equality_constraints; }
-  [[nodiscard]] pagmo::vector_double::size_type get_nic() const { return problem->inequality_constraints; }
-  [[nodiscard]] std::string get_name() const { return problem->name.empty() ? "flexo problem" : problem->name; }
-};
-
-pagmo::algorithm make_algorithm(const PagmoOptions& o) {
-  const auto gen = static_cast<unsigned>(o.generations);
-  const auto seed = static_cast<unsigned>(o.seed);
-  switch (o.algorithm) {
-    case PagmoAlgorithm::Cmaes:
-      return pagmo::algorithm(pagmo::cmaes(gen, -1, -1, -1, -1, 0.5, 1e-6, 1e-6, false, true, seed));
-    case PagmoAlgorithm::De:
-      return pagmo::algorithm(pagmo::de(gen, 0.8, 0.9, 2u, 1e-6, 1e-6, seed));
-    case PagmoAlgorithm::Sade:
-      return pagmo::algorithm(pagmo::sade(gen, 2u, 1u, 1e-6, 1e-6, false, seed));
-    case PagmoAlgorithm::Pso:
-      return pagmo::algorithm(pagmo::pso(gen, 0.7298, 2.05, 2.05, 0.5, 5u, 2u, 4u, false, seed));
-    case PagmoAlgorithm::Sga:
-      return pagmo::algorithm(pagmo::sga(gen, .90, 1., .02, 1., 2u, "exponential", "polynomial", "tournament", seed));
-    case PagmoAlgorithm::Moead:
-      return pagmo::algorithm(pagmo::moead(gen, "grid", "tchebycheff", 20u, 1.0, 0.5, 20., 0.9, 2u, true, seed));
-    case PagmoAlgorithm::Nsga2:
-      return pagmo::algorithm(pagmo::nsga2(gen, 0.95, 10., 0.01, 50., seed));
-  }
-  throw InternalError("unknown PagmoAlgorithm");
-}
 
 bool is_multi_objective(PagmoAlgorithm a) { return a == PagmoAlgorithm::Moead || a == PagmoAlgorithm::Nsga2; }
 
@@ -123,21 +34,6 @@ const char* name_of(PagmoAlgorithm a) {
   return "?";
 }
 
-Solution solution_of(const Problem& p, const pagmo::vector_double& x, const pagmo::vector_double& f) {
-  Solution s;
-  s.variables = x;
-  s.objectives.assign(f.begin(), f.begin() + static_cast<std::ptrdiff_t>(p.objectives));
-  // Recompute the violation in Flexo's convention from pagmo's layout.
-  std::vector<double> values(p.values_per_point());
-  const std::size_t m = p.objectives;
-  const std::size_t ne = p.equality_constraints;
-  const std::size_t ni = p.inequality_constraints;
-  std::copy_n(f.begin(), m, values.begin());
-  std::copy_n(f.begin() + static_cast<std::ptrdiff_t>(m + ne), ni, values.begin() + static_cast<std::ptrdiff_t>(m));
-  std::copy_n(f.begin() + static_cast<std::ptrdiff_t>(m), ne, values.begin() + static_cast<std::ptrdiff_t>(m + ni));
-  s.violation = p.violation(values);
-  return s;
-}
 }  // namespace
 
 PagmoAlgorithm pagmo_algorithm(std::string_view name) {
@@ -171,36 +67,25 @@ PagmoResult solve_with_pagmo(const Problem& problem, const PagmoOptions& options
                     " does not handle constraints; use solve_real_ga or solve_nsga2",
                 {.field = "algorithm"});
   }
+  // Loaded on the first pagmo run only (detail/pagmo_plugin.hpp); a failed load is retried next time.
+  static const auto run_pagmo =
+      reinterpret_cast<detail::PagmoRunFunction>(plugin_symbol("pagmo", detail::kPagmoRunSymbol));
   const auto start = std::chrono::steady_clock::now();
-  auto counters = std::make_shared<Counters>();
-  PagmoResult result;
+  detail::PagmoRun run;
   try {
-    pagmo::problem prob(Udp{&problem, counters});
-    pagmo::population pop(prob, options.population, options.seed);
-    pagmo::algorithm algo = make_algorithm(options);
-    pop = algo.evolve(pop);
-    result.report.evaluations = static_cast<std::size_t>(pop.get_problem().get_fevals());
-    if (counters->succeeded == 0) {
-      throw Error(
-          Errc::NumericalFailure,
-          "no evaluation returned finite values in " + std::to_string(result.report.evaluations) + " evaluations",
-          {.field = "evaluate"});
-    }
-    if (!multi) {
-      result.best = solution_of(problem, pop.champion_x(), pop.champion_f());
-    } else {
-      const auto& f = pop.get_f();
-      const auto ndf = pagmo::fast_non_dominated_sorting(f);
-      for (const auto i : std::get<0>(ndf).front()) {
-        if (f[i][0] == std::numeric_limits<double>::max()) continue;
-        result.front.push_back(solution_of(problem, pop.get_x()[i], f[i]));
-      }
-    }
+    run_pagmo(problem, options, run);
   } catch (const std::invalid_argument& e) {
     throw Error(Errc::InvalidOption, std::string("pagmo ") + name_of(options.algorithm) + " refused: " + e.what(),
                 {.field = "algorithm"});
   }
-  result.report.failed_evaluations = counters->failed;
+  if (run.succeeded == 0) {
+    throw Error(
+        Errc::NumericalFailure,
+        "no evaluation returned finite values in " + std::to_string(run.result.report.evaluations) + " evaluations",
+        {.field = "evaluate"});
+  }
+  PagmoResult result = std::move(run.result);
+  result.report.failed_evaluations = run.failed;
   result.report.termination = Termination::MaxGenerations;
   result.report.generations = options.generations;
   result.report.message = std::to_string(options.generations) + " generations of pagmo " + name_of(options.algorithm);

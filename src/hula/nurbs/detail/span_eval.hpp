@@ -21,31 +21,13 @@
 #endif
 
 #include <cstddef>
+
+#include "hula/core/simd_lanes.hpp"
 #if defined(__SSE2__)
 #include <immintrin.h>  // movemask (static inline intrinsics: nothing with external linkage)
 #endif
 
 namespace hula::nurbs::detail::HULA_SPAN_ISA {
-
-/// W doubles as one GCC/Clang vector (W = 1 is plain double).
-template <int W>
-struct Lanes;
-template <>
-struct Lanes<1> {
-  using type = double;
-};
-template <>
-struct Lanes<2> {
-  using type = double __attribute__((vector_size(16)));
-};
-template <>
-struct Lanes<4> {
-  using type = double __attribute__((vector_size(32)));
-};
-template <>
-struct Lanes<8> {
-  using type = double __attribute__((vector_size(64)));
-};
 
 // s in every lane. s − 0 is s for every double, −0 and NaN included (s + 0 would turn −0 into +0), so the
 // lanes start from the very values the scalar path uses.
@@ -201,7 +183,7 @@ inline void store_points(V (*o)[3], double* p) {
   } else if constexpr (W == 4) {
     store_points4<K>(o, p);
   } else if constexpr (W == 8) {
-    using V4 = typename Lanes<4>::type;
+    using V4 = simd_lanes_t<4>;
     V4 lo[K + 1][3], hi[K + 1][3];
     for (int k = 0; k <= K; ++k)
       for (int c = 0; c < 3; ++c) {
@@ -220,7 +202,7 @@ inline void store_points(V (*o)[3], double* p) {
 template <int W, int P, bool R, int K>
 std::size_t eval_run(const double* a, double mid, double scale, double lo, double hi, const double* ts, std::size_t n,
                      double* out) {
-  using V = typename Lanes<W>::type;
+  using V = simd_lanes_t<W>;
   constexpr std::size_t stride = 3 * (K + 1);
   std::size_t i = 0;
   for (; i + W <= n; i += W) {

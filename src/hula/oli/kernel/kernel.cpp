@@ -5,7 +5,8 @@
 
 #include "hula/oli/kernel/native_kernel.hpp"
 #ifdef HULA_WITH_OCCT
-#include "hula/oli/kernel/occt_kernel.hpp"
+#include "hula/core/plugin.hpp"
+#include "hula/oli/kernel/detail/occt_plugin.hpp"
 #endif
 
 namespace hula::oli {
@@ -34,7 +35,11 @@ std::shared_ptr<const Kernel> make_kernel(std::string_view name) {
   if (name == "native") return native_instance();
 #ifdef HULA_WITH_OCCT
   if (name == "occt") {
-    static const std::shared_ptr<const Kernel> k = std::make_shared<const OcctKernel>();
+    // Open CASCADE is loaded on the first request only (detail/occt_plugin.hpp); the plugin's
+    // instance lives as long as the process, so the pointer owns nothing.
+    static const std::shared_ptr<const Kernel> k(
+        reinterpret_cast<detail::OcctKernelFunction>(plugin_symbol("occt", detail::kOcctKernelSymbol))(),
+        [](const Kernel*) {});
     return k;
   }
 #endif
@@ -44,5 +49,15 @@ std::shared_ptr<const Kernel> make_kernel(std::string_view name) {
               "unknown kernel backend '" + std::string(name) + "' (this build has: " + known + ")",
               {.field = "backend"});
 }
+
+#ifdef HULA_WITH_OCCT
+std::vector<FairingBaseline> occt_fairing_baselines_in_plugin(const FairingEnds& ends, std::span<const Vec3> points) {
+  static const auto fair =
+      reinterpret_cast<detail::OcctFairingFunction>(plugin_symbol("occt", detail::kOcctFairingSymbol));
+  std::vector<FairingBaseline> out;
+  fair(ends, points, out);
+  return out;
+}
+#endif
 
 }  // namespace hula::oli

@@ -57,4 +57,11 @@ struct FairingBaseline {
 [[nodiscard]] std::vector<FairingBaseline> occt_fairing_baselines(const FairingEnds& ends,
                                                                   std::span<const Vec3> points);
 
+/// occt_fairing_baselines computed by the Open CASCADE plugin (libhula_occt.so, loaded on first use),
+/// for callers that must not link Open CASCADE themselves (the document, hence every `hula` command).
+/// @throws as occt_fairing_baselines; hula::Error(Errc::IoError) with field "plugin" if the plugin is
+///   not installed
+[[nodiscard]] std::vector<FairingBaseline> occt_fairing_baselines_in_plugin(const FairingEnds& ends,
+                                                                            std::span<const Vec3> points);
+
 }  // namespace hula::oli

@@ -18,30 +18,13 @@
 #endif
 
 #include <cstddef>
+
+#include "hula/core/simd_lanes.hpp"
 #if defined(__SSE2__)
 #include <immintrin.h>  // square roots (static inline intrinsics: nothing with external linkage)
 #endif
 
 namespace hula::studies::detail::HULA_PROFILE_ISA {
-
-template <int W>
-struct Lanes;
-template <>
-struct Lanes<1> {
-  using type = double;
-};
-template <>
-struct Lanes<2> {
-  using type = double __attribute__((vector_size(16)));
-};
-template <>
-struct Lanes<4> {
-  using type = double __attribute__((vector_size(32)));
-};
-template <>
-struct Lanes<8> {
-  using type = double __attribute__((vector_size(64)));
-};
 
 // The lane mask type of V: what a comparison of two V gives (bool for double).
 template <class V>
@@ -173,7 +156,7 @@ double profile_samples(const double* coef, const double* tstart, const unsigned*
   std::size_t i = 0;
   double probe = 0.0;
   if constexpr (W > 1) {
-    using V = typename Lanes<W>::type;
+    using V = simd_lanes_t<W>;
     V lanes{};
     for (; i + W <= m; i += W) {
       double* ti = T ? tau + i : nullptr;

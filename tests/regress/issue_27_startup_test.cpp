@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: MIT
+// Issue 27, item 4: every `hula` command paid for loading Open CASCADE and pagmo2 (and running pagmo's
+// static initialisers) at start-up, `hula --version` included. Both are plugins now
+// (hula/core/plugin.hpp), loaded by the commands that use them. Checked with the dynamic loader's own
+// report of the files it opens (LD_DEBUG=files), not with timing.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "hula/testing/run_process.hpp"
+#include "hula/testing/temp_dir.hpp"
+
+#ifndef HULA_CLI_PATH
+#error "HULA_CLI_PATH must name the hula binary"
+#endif
+
+namespace {
+
+using hula::testing::ProcessResult;
+
+// Runs hula with the loader reporting every shared object it opens on stderr.
+ProcessResult hula_traced(const std::vector<std::string>& args) {
+  std::vector<std::string> argv = {"LD_DEBUG=files", HULA_CLI_PATH};
+  argv.insert(argv.end(), args.begin(), args.end());
+  return hula::testing::run_process("/usr/bin/env", argv);
+}
+
+// True if the loader opened a file whose name contains `name` (its "file=PATH [0];" lines).
+bool opened(const ProcessResult& r, const std::string& name) {
+  std::size_t at = 0;
+  while ((at = r.err.find("file=", at)) != std::string::npos) {
+    const std::size_t end = r.err.find_first_of(" \n", at);
+    if (r.err.substr(at, end - at).find(name) != std::string::npos) return true;
+    at = end;
+  }
+  return false;
+}
+
+// checks: `hula --version` opens neither Open CASCADE's toolkits nor pagmo nor their plugins
+TEST(Issue27Startup, VersionLoadsNeitherOpenCascadeNorPagmo) {
+  const ProcessResult r = hula_traced({"--version"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out, "hula " HULA_VERSION "\n");
+  EXPECT_NE(r.err.find("file=libtbb"), std::string::npos) << "LD_DEBUG=files reported nothing:\n" << r.err;
+  EXPECT_FALSE(opened(r, "libTKernel")) << r.err;
+  EXPECT_FALSE(opened(r, "libpagmo")) << r.err;
+  EXPECT_FALSE(opened(r, "libhula_")) << r.err;
+}
+
+// checks: a pagmo algorithm still runs from the command line, through the plugin, which brings libpagmo
+TEST(Issue27Startup, PagmoAlgorithmLoadsThePlugin) {
+  const ProcessResult r = hula_traced({"optimise", "--problem", "sphere", "--dimension", "3", "--algorithm", "pagmo-de",
+                                       "--population", "10", "--generations", "5", "--seed", "1"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"evaluations\""), std::string::npos) << r.out;
+  EXPECT_TRUE(opened(r, "/libhula_pagmo.so")) << r.err;
+  EXPECT_TRUE(opened(r, "libpagmo")) << r.err;
+}
+
+// checks: a document with the occt backend still adds a curve, through the plugin, which brings Open CASCADE
+TEST(Issue27Startup, OcctBackendLoadsThePlugin) {
+  const hula::testing::TempDir dir;
+  const std::string curve = (dir.path() / "c.json").string(), doc = (dir.path() / "d.hula").string();
+  ASSERT_EQ(hula_traced({"interpolate", "--points", "examples/cli/pts.csv", "-o", curve}).exit_code, 0);
+  ASSERT_EQ(hula_traced({"doc", "new", doc, "--backend", "occt"}).exit_code, 0);
+  const ProcessResult r = hula_traced({"doc", "add", doc, "--curve", curve});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out, "{\n  \"label\": 1,\n  \"revision\": 1\n}\n");
+  EXPECT_TRUE(opened(r, "/libhula_occt.so")) << r.err;
+  EXPECT_TRUE(opened(r, "libTKernel")) << r.err;
+}
+
+}  // namespace
