@@ -32,6 +32,21 @@ foreach(m IN LISTS hula_installed)
   string(APPEND HULA_PC_LIBS " -lhula_${m}")
 endforeach()
 string(STRIP "${HULA_PC_LIBS}" HULA_PC_LIBS)
+# What the modules need of other packages (the libraries are static, so a private dependency is the
+# consumer's too): those with a pkg-config file in Requires, the others in Libs after ours.
+#   TBB (core), nlohmann_json (io), Eigen (studies), SQLite (oli_store), glog (Ceres's headers, in studies);
+#   Ceres (studies), pagmo2 with Boost.Serialization (optim_pagmo), threads (server, core);
+#   with Open CASCADE: its headers (occt_convert.hpp), HULA_WITH_OCCT and the toolkits of HulaHoops::occt.
+set(HULA_PC_REQUIRES "tbb nlohmann_json eigen3 sqlite3 libglog")
+set(HULA_PC_DEP_LIBS "-lceres -lpagmo -lboost_serialization -ldxflib -pthread")
+set(HULA_PC_CFLAGS "-std=c++20")
+if(HULA_WITH_OCCT)
+  string(PREPEND HULA_PC_CFLAGS "-I${OpenCASCADE_INCLUDE_DIR} -DHULA_WITH_OCCT ")
+  get_target_property(hula_occt_tks hula_occt INTERFACE_LINK_LIBRARIES)
+  list(TRANSFORM hula_occt_tks PREPEND "-l")
+  list(JOIN hula_occt_tks " " hula_occt_tks)
+  string(PREPEND HULA_PC_DEP_LIBS "-L${OpenCASCADE_LIBRARY_DIR} ${hula_occt_tks} ")
+endif()
 # Relocatable: the prefix is found from the .pc file's own directory, so `cmake --install
 # --prefix DIR` works without reconfiguring.
 file(RELATIVE_PATH HULA_PC_PREFIX_FROM_PCDIR ${CMAKE_INSTALL_FULL_LIBDIR}/pkgconfig ${CMAKE_INSTALL_PREFIX})

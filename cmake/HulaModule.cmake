@@ -10,7 +10,7 @@
 # The DEPS list of a module *is* the layering of DESIGN.md: a module may only
 # depend on modules below it, and hula_add_module refuses an upward edge.
 
-set(HULA_MODULE_ORDER core nurbs law curve diffgeom intrinsic optim studies io oli_store oli_kernel oli_exchange oli server testing)
+set(HULA_MODULE_ORDER core nurbs law curve diffgeom intrinsic optim studies io io_studies oli_store oli_kernel oli_exchange oli server testing)
 
 function(hula_add_module name)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPS;PUBLIC_LIBS;PRIVATE_LIBS" ${ARGN})

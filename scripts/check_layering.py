@@ -15,6 +15,11 @@ Scans every C++ source and header under src/hula/<module>/ and apps/ for
     (the CLI translates: it calls io and oli entries), except the MPI runtime
     includes APPS_STILL_DIRECT lists with their reasons; a listed include that
     is gone is reported too, so the list stays the true list of what remains.
+  - an include of a studies header, or of an io_studies header, from a file of
+    io outside io_studies (the study codecs: the files of
+    hula_add_module(io_studies SOURCES ...) in src/hula/io/CMakeLists.txt,
+    each .cpp with its .hpp): reading a curve, points or a law does not
+    depend on the studies.
 `testing` (test support) may include any module.
 
 Usage: check_layering.py [--root DIR]   (DIR holds cmake/, src/ and apps/)
@@ -26,7 +31,7 @@ import pathlib
 import re
 import sys
 
-SERVER_REACHES = {"core", "curve", "io", "oli", "server"}
+SERVER_REACHES = {"core", "curve", "io", "io_studies", "oli", "server"}
 # (file, module) the server would still include directly: none (the analysis, /api/law and
 # /api/reconstruct go through io, problem jobs through oli::ProblemRun). Kept so a step back is explicit.
 SERVER_STILL_DIRECT: set[tuple[str, str]] = set()
@@ -54,12 +59,24 @@ def module_order(root: pathlib.Path) -> list[str]:
     return m.group(1).split()
 
 
+def io_studies_stems(root: pathlib.Path) -> set[str]:
+    """The file stems of the io_studies target, read from its SOURCES in src/hula/io/CMakeLists.txt."""
+    cmake = root / "src" / "hula" / "io" / "CMakeLists.txt"
+    if not cmake.is_file():
+        return set()
+    m = re.search(r"hula_add_module\(io_studies\s+SOURCES\s+(.*?)\s+DEPS", cmake.read_text(), re.S)
+    if not m:
+        sys.exit("check_layering: no hula_add_module(io_studies SOURCES ...) in src/hula/io/CMakeLists.txt")
+    return {pathlib.PurePosixPath(s).stem for s in m.group(1).split()}
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--root", default=pathlib.Path(__file__).resolve().parent.parent, type=pathlib.Path)
     root = parser.parse_args().root.resolve()
     order = module_order(root)
     rank = {name: i for i, name in enumerate(order)}
+    study_codecs = io_studies_stems(root)
     violations = []
     direct_seen = set()
     scanned = 0
@@ -71,6 +88,8 @@ def main() -> int:
                 continue
             rel = path.relative_to(root)
             owner = rel.parts[2] if rel.parts[0] == "src" else "apps"
+            if owner == "io" and len(rel.parts) == 4 and path.stem in study_codecs:
+                owner = "io_studies"
             if owner != "apps" and owner not in rank:
                 violations.append(f"layering violation: {rel}: module '{owner}' is not in HULA_MODULE_ORDER")
                 continue
@@ -81,6 +100,12 @@ def main() -> int:
                     continue
                 target, rest = m.group(1), m.group(2)
                 shown = f'"hula/{target}/{rest}"'
+                if target == "io" and pathlib.PurePosixPath(rest).stem in study_codecs and "/" not in rest:
+                    target = "io_studies"
+                if owner == "io" and target in ("studies", "io_studies"):
+                    violations.append(f"layering violation: {rel}:{line_no} includes {shown} "
+                                      f"(io's codecs do not depend on studies: a study codec belongs to io_studies)")
+                    continue
                 if target not in rank:
                     violations.append(f"layering violation: {rel}:{line_no} includes {shown} (no module '{target}')")
                 elif target != owner and rest.startswith("detail/"):

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# Quick start, part 1: install what is missing, build the release
-# configuration and the web workbench, start `hula serve` on a working copy
+# Quick start, part 1: install what is missing for a run (scripts/setup-debian.sh
+# without --test: no test toolchain), build the release configuration (with
+# the Python package and MPI islands when their packages are present; the
+# configure step says which) and the web workbench, start `hula serve` on a working copy
 # of the example workspace (the thesis's curves, examples/workspace/) and
 # print the URL to open, token included. Ctrl-C stops the server.
 # With arguments, runs `hula` with them instead (`scripts/run.sh demo` is the
@@ -9,7 +11,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup-debian.sh
-cmake --preset release >/dev/null
+# Only the configure lines that say what this build holds ("-- HulaHoops: ...").
+cmake --preset release | sed -n 's/^-- HulaHoops: /run: /p' >&2
 cmake --build --preset release
 hula=build/release/apps/hula/hula
 if [ $# -gt 0 ]; then exec "$hula" "$@"; fi

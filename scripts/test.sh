@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# Quick start, part 2: install what is missing, build the `ci` configuration
+# Quick start, part 2: install what is missing, the test toolchain included
+# (scripts/setup-debian.sh --test), build the `ci` configuration
 # (RelWithDebInfo at -O2 -g1, -Werror, _GLIBCXX_ASSERTIONS, Open CASCADE required) and
 # check that the tracked C++ sources are clang-format clean, fuzz the law
 # parser and every reader for 20 s each (about two minutes) when clang-14 is
@@ -12,7 +13,7 @@ cd "$(dirname "$0")/.."
 # The elapsed time at each step, so a slow CI run shows where its time went.
 step() { echo "test.sh: [$((SECONDS / 60)) min $((SECONDS % 60)) s] $*" >&2; }
 step "setup"
-scripts/setup-debian.sh
+scripts/setup-debian.sh --test
 step "configure and build (ci preset)"
 cmake --preset ci
 cmake --build --preset ci

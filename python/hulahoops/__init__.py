@@ -36,6 +36,7 @@ from .document import Document
 from .optimise import OptimiseResult, Problem, builtin_problem, evaluate_builtin, from_pygmo, optimise
 from .studies import StudyResult, fair_knots, match_curvature
 
+__version__: str = _core.__version__
 NurbsCurve = _core.NurbsCurve
 ClosestPoint = _core.ClosestPoint
 IntrinsicCurve = _core.IntrinsicCurve

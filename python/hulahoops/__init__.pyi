@@ -24,6 +24,8 @@ from .studies import StudyResult as StudyResult, fair_knots as fair_knots, match
 
 ArrayLike = npt.ArrayLike
 Array = npt.NDArray[np.float64]
+__version__: str
+
 DomainPolicy = Literal["strict", "clamp", "extrapolate"]
 SidePolicy = Literal["right", "left"]
 

@@ -382,35 +382,56 @@ void register_geometry(py::module_& m) {
         return "ClosestPoint(t=" + format_number(r.t) + ", distance=" + format_number(r.distance) + ")";
       });
 
-  py::class_<NurbsCurve>(m, "NurbsCurve")
+  py::class_<NurbsCurve>(m, "NurbsCurve",
+                         "An immutable, validated NURBS curve of any degree >= 1, planar (dimension 2) or spatial "
+                         "(3).\n\nnurbs.NurbsCurve; curve(t) and curve.derivatives(t, n) are vectorised over NumPy "
+                         "arrays (docs/python.md).")
       .def(py::init(&make_curve), py::arg("degree"), py::arg("knots"), py::arg("control_points"),
-           py::arg("weights") = py::none())
-      .def_property_readonly("degree", &NurbsCurve::degree)
-      .def_property_readonly("dimension", &NurbsCurve::dimension)
-      .def_property_readonly("is_rational", &NurbsCurve::is_rational)
-      .def_property_readonly("knots", [](const NurbsCurve& c) { return to_array(c.knots().values()); })
-      .def_property_readonly("control_points",
-                             [](const NurbsCurve& c) { return to_rows(c.control_points(), c.dimension()); })
-      .def_property_readonly("weights",
-                             [](const NurbsCurve& c) -> py::object {
-                               if (!c.is_rational()) return py::none();
-                               return to_array(c.weights());
-                             })
-      .def_property_readonly("domain",
-                             [](const NurbsCurve& c) { return py::make_tuple(c.domain().start, c.domain().end); })
+           py::arg("weights") = py::none(),
+           "knots: the full (clamped or not) non-decreasing knot vector, n + degree + 1 values.\n"
+           "control_points: (n, 2) or (n, 3) in model units. weights: n positive finite numbers, or None.\n"
+           "Raises InvalidKnotsError, InvalidDegreeError, InvalidWeightError, NonFiniteInputError naming the entry.")
+      .def_property_readonly("degree", &NurbsCurve::degree, "The polynomial degree p >= 1.")
+      .def_property_readonly("dimension", &NurbsCurve::dimension, "2 (planar, z = 0) or 3.")
+      .def_property_readonly("is_rational", &NurbsCurve::is_rational, "True when the weights are not all equal.")
+      .def_property_readonly(
+          "knots", [](const NurbsCurve& c) { return to_array(c.knots().values()); },
+          "The full knot vector, n + degree + 1 values (a copy).")
+      .def_property_readonly(
+          "control_points", [](const NurbsCurve& c) { return to_rows(c.control_points(), c.dimension()); },
+          "(n, dimension), model units (a copy).")
+      .def_property_readonly(
+          "weights",
+          [](const NurbsCurve& c) -> py::object {
+            if (!c.is_rational()) return py::none();
+            return to_array(c.weights());
+          },
+          "The n weights of a rational curve, else None.")
+      .def_property_readonly(
+          "domain", [](const NurbsCurve& c) { return py::make_tuple(c.domain().start, c.domain().end); },
+          "(start, end) of the parameter t.")
       .def("__call__", &evaluate, py::arg("t"), py::kw_only(), py::arg("domain") = "strict", py::arg("side") = "right",
-           py::arg("out") = py::none())
+           py::arg("out") = py::none(),
+           "Points C(t), shape t.shape + (dimension,), model units. Vectorised in C++, GIL released.\n"
+           "domain: \"strict\" raises OutOfDomainError naming the index of the first t outside the domain;\n"
+           "\"clamp\" evaluates at the nearest end; \"extrapolate\" continues the end pieces.\n"
+           "side: one-sided limit (\"right\" or \"left\") at knots of reduced continuity.\n"
+           "out: a C-contiguous float64 array of shape t.shape + (3,) to write into (always 3 columns, no "
+           "allocation).")
       .def("derivatives", &derivatives, py::arg("t"), py::arg("order"), py::kw_only(), py::arg("domain") = "strict",
-           py::arg("side") = "right")
+           py::arg("side") = "right",
+           "C, C', ..., C^(order) with respect to t, shape t.shape + (order + 1, dimension); domain and side as "
+           "for curve(t).")
       .def(
           "insert_knot", [](const NurbsCurve& c, double u, int times) { return nurbs::insert_knot(c, u, times); },
-          py::arg("u"), py::arg("times") = 1)
+          py::arg("u"), py::arg("times") = 1,
+          "The same curve with u inserted `times` times (Boehm; The NURBS Book A5.1).")
       .def(
           "refine", [](const NurbsCurve& c, py::handle k) { return nurbs::refine_knots(c, as_vector(k, "knots")); },
-          py::arg("knots"))
+          py::arg("knots"), "The same curve with every knot of `knots` (non-decreasing) inserted (A5.4).")
       .def(
           "elevate", [](const NurbsCurve& c, int times) { return nurbs::elevate_degree(c, times); },
-          py::arg("times") = 1)
+          py::arg("times") = 1, "The same curve with degree + times (The NURBS Book A5.9).")
       .def(
           "reduce_degree",
           [](const NurbsCurve& c, double tolerance) {
@@ -428,14 +449,16 @@ void register_geometry(py::module_& m) {
             nurbs::SplitResult r = nurbs::split(c, t);
             return py::make_tuple(std::move(r.before), std::move(r.after));
           },
-          py::arg("t"))
-      .def("reverse", [](const NurbsCurve& c) { return nurbs::reverse(c); })
+          py::arg("t"), "The pieces on [a, t] and [t, b], each clamped at t.")
+      .def(
+          "reverse", [](const NurbsCurve& c) { return nurbs::reverse(c); },
+          "The same curve traversed backwards: C_r(t) = C(a + b - t).")
       .def(
           "reparameterise",
           [](const NurbsCurve& c, double a, double b) {
             return nurbs::reparameterise(c, {a, b});
           },
-          py::arg("start"), py::arg("end"))
+          py::arg("start"), py::arg("end"), "The same curve on the domain [start, end] (a linear change of t).")
       .def(
           "arc_length",
           [](const NurbsCurve& c, std::optional<double> a, std::optional<double> b, double tolerance) {
@@ -443,14 +466,16 @@ void register_geometry(py::module_& m) {
             return nurbs::arc_length(c, a.value_or(c.domain().start), b.value_or(c.domain().end),
                                      {.tolerance = tolerance});
           },
-          py::arg("start") = py::none(), py::arg("end") = py::none(), py::kw_only(), py::arg("tolerance") = 1e-12)
+          py::arg("start") = py::none(), py::arg("end") = py::none(), py::kw_only(), py::arg("tolerance") = 1e-12,
+          "Length between parameters (default the whole domain), model units, to a relative tolerance.")
       .def(
           "parameter_at_length",
           [](const NurbsCurve& c, double s, double tolerance) {
             const py::gil_scoped_release release;
             return nurbs::parameter_at_length(c, s, {.tolerance = tolerance});
           },
-          py::arg("s"), py::kw_only(), py::arg("tolerance") = 1e-12)
+          py::arg("s"), py::kw_only(), py::arg("tolerance") = 1e-12,
+          "The parameter t at arc length s (model units) from the domain start.")
       .def(
           "closest_point",
           [](const NurbsCurve& c, py::handle point) {
@@ -458,14 +483,16 @@ void register_geometry(py::module_& m) {
             const py::gil_scoped_release release;
             return nurbs::closest_point(c, p);
           },
-          py::arg("point"))
-      .def("to_json", &to_json_text)
-      .def_static("from_json", &from_json, py::arg("document"))
+          py::arg("point"), "The ClosestPoint of the curve to a point (2 or 3 coordinates).")
+      .def("to_json", &to_json_text, "The curve file text (docs/formats.md \"Curve files\").")
+      .def_static("from_json", &from_json, py::arg("document"),
+                  "A curve file's text or dict; interpolated and law kinds are resolved to NURBS.")
       .def_static(
-          "load", [](const std::string& path) { return io::read_curve_file(path).nurbs(); }, py::arg("path"))
+          "load", [](const std::string& path) { return io::read_curve_file(path).nurbs(); }, py::arg("path"),
+          "Reads a curve file (docs/formats.md \"Curve files\").")
       .def(
-          "save", [](const NurbsCurve& c, const std::string& path) { io::write_curve_file(path, c); },
-          py::arg("path"))
+          "save", [](const NurbsCurve& c, const std::string& path) { io::write_curve_file(path, c); }, py::arg("path"),
+          "Writes the curve file atomically.")
       .def(py::self == py::self)  // NOLINT(misc-redundant-expression)
       .def(py::pickle([](const NurbsCurve& c) { return to_json_text(c); },
                       [](const std::string& text) { return io::parse_curve_json(text).nurbs(); }))
@@ -503,7 +530,10 @@ void register_geometry(py::module_& m) {
         const io::PointSet set = io::read_points_file(path);
         return to_rows(set.points, set.dimension);
       },
-      py::arg("path"));
+      py::arg("path"),
+      "The points of a point file as an (n, 2) or (n, 3) array: JSON, or lines of 2 or 3 numbers separated by\n"
+      "whitespace, commas or semicolons, with header lines (an airfoil's name) and # comments; Selig and Lednicer\n"
+      "airfoil files (docs/formats.md \"Point files\"). Errors name the file, the line and the separator.");
 
   m.def(
       "interpolate",
@@ -519,35 +549,53 @@ void register_geometry(py::module_& m) {
         return closed ? nurbs::interpolate_closed_cubic(p.points, o) : nurbs::interpolate_cubic(p.points, o);
       },
       py::arg("points"), py::kw_only(), py::arg("start") = "natural", py::arg("end") = "natural",
-      py::arg("parameterisation") = "chord", py::arg("parameters") = py::none(), py::arg("closed") = false);
+      py::arg("parameterisation") = "chord", py::arg("parameters") = py::none(), py::arg("closed") = false,
+      "The C2 cubic spline through (n, 2) or (n, 3) points (thesis 5.5, 7.1); closed=True: the periodic C2\n"
+      "cubic back to the first point (no end conditions).\n"
+      "start/end: \"natural\", \"bessel\", \"not-a-knot\", \"occt\", or a tangent vector dC/dt (t in [0, 1]).\n"
+      "parameterisation: \"chord\", \"uniform\", \"centripetal\" or \"foley\".\n"
+      "parameters: explicit data parameters (increasing, from 0 to 1) instead of the parameterisation.");
 
   m.def("analyse", &analyse, py::arg("curve"), py::arg("samples") = 100, py::kw_only(), py::arg("at") = py::none(),
         py::arg("by") = "parameter", py::arg("arc_lengths") = false, py::arg("bishop") = false,
         py::arg("fins") = std::vector<std::string>{}, py::arg("fin_scale") = py::none(), py::arg("fin_density") = 0,
-        py::arg("features") = false);
+        py::arg("features") = false,
+        "The curve's analysis (as `hula analyse` and POST .../analysis give it; docs/formats.md \"Curve analysis\"):\n"
+        "t, s (arc lengths, by arc length or with arc_lengths), points (n, 3), frames {T, N, B} (n, 3), curvature,\n"
+        "torsion, curvature_derivative, speed (n,), bishop {U, V} (with bishop), fins [{kind, scale, t, base, tip}],\n"
+        "planarity {planar, normal, max_deviation, tolerance} and, with features, {inflections, curvature_extrema,\n"
+        "torsion_extrema, knots, curvature_monotonicity, maximum_curvature}. Undefined values are NaN.\n"
+        "curve: a NurbsCurve or a curve file as a dict.");
 
-  py::class_<intrinsic::NurbsFitResult>(m, "NurbsFit")
-      .def_readonly("curve", &intrinsic::NurbsFitResult::curve)
-      .def_readonly("max_deviation", &intrinsic::NurbsFitResult::max_deviation)
-      .def_readonly("segments", &intrinsic::NurbsFitResult::segments)
-      .def_readonly("converged", &intrinsic::NurbsFitResult::converged);
+  py::class_<intrinsic::NurbsFitResult>(m, "NurbsFit", "A NURBS fitted to an IntrinsicCurve (IntrinsicCurve.to_nurbs).")
+      .def_readonly("curve", &intrinsic::NurbsFitResult::curve, "The quintic NurbsCurve.")
+      .def_readonly("max_deviation", &intrinsic::NurbsFitResult::max_deviation,
+                    "The largest distance measured between the NURBS and the curve, model units.")
+      .def_readonly("segments", &intrinsic::NurbsFitResult::segments, "Number of Hermite segments.")
+      .def_readonly("converged", &intrinsic::NurbsFitResult::converged,
+                    "False when the segment budget ran out before the tolerance was met.");
 
-  py::class_<intrinsic::IntrinsicCurve>(m, "IntrinsicCurve")
-      .def_property_readonly("length", &intrinsic::IntrinsicCurve::length)
-      .def_property_readonly("method", [](const intrinsic::IntrinsicCurve& c) { return method_name(c.method()); })
-      .def_property_readonly("tolerance", &intrinsic::IntrinsicCurve::tolerance)
+  py::class_<intrinsic::IntrinsicCurve>(
+      m, "IntrinsicCurve",
+      "A curve integrated from its natural equations, parameterised by arc length s in [0, length].")
+      .def_property_readonly("length", &intrinsic::IntrinsicCurve::length, "The arc length L, model units.")
+      .def_property_readonly(
+          "method", [](const intrinsic::IntrinsicCurve& c) { return method_name(c.method()); },
+          "How the curve was integrated.")
+      .def_property_readonly("tolerance", &intrinsic::IntrinsicCurve::tolerance,
+                             "The integration tolerance, model units.")
       .def(
           "__call__",
           [](const intrinsic::IntrinsicCurve& c, py::handle s) { return py::object(frames(c, s)["position"]); },
-          py::arg("s"))
-      .def("frames", &frames, py::arg("s"))
+          py::arg("s"), "Positions, shape s.shape + (3,); OutOfDomainError outside [0, length].")
+      .def("frames", &frames, py::arg("s"), "s, position, T, N, B (s.shape + (3,)), kappa, tau (s.shape).")
       .def(
           "to_nurbs",
           [](const intrinsic::IntrinsicCurve& c, double tolerance) {
             const py::gil_scoped_release release;
             return intrinsic::fit_nurbs(c, {.tolerance = tolerance});
           },
-          py::arg("tolerance") = 1e-9);
+          py::arg("tolerance") = 1e-9, "A quintic NurbsFit within `tolerance` model units of the curve.");
 
   m.def(
       "reconstruct",
@@ -567,7 +615,10 @@ void register_geometry(py::module_& m) {
       },
       py::arg("kappa"), py::arg("tau") = 0.0, py::kw_only(), py::arg("length"),
       py::arg("point") = std::vector<double>{0.0, 0.0, 0.0}, py::arg("tangent") = std::vector<double>{1.0, 0.0, 0.0},
-      py::arg("normal") = std::vector<double>{0.0, 1.0, 0.0}, py::arg("tolerance") = 1e-10, py::arg("parameter") = "s");
+      py::arg("normal") = std::vector<double>{0.0, 1.0, 0.0}, py::arg("tolerance") = 1e-10, py::arg("parameter") = "s",
+      "The curve with curvature kappa(s) and torsion tau(s) (1/model units; Law, text or number) for s in\n"
+      "[0, length] (thesis 8.2.2), starting at `point` with unit tangent and normal (defaults: origin, +x, +y).\n"
+      "tau = 0 gives a planar curve with signed kappa (eq. 34); otherwise Frenet-Serret is integrated.");
 }
 
 }  // namespace hula::python

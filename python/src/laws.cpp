@@ -132,23 +132,32 @@ py::object call(PyLaw& l, const py::args& args, const py::kwargs& kwargs) {
 }  // namespace
 
 void register_laws(py::module_& m) {
-  py::class_<PyLaw>(m, "Law")
+  py::class_<PyLaw>(m, "Law", "A law expression (docs/formats.md \"Law expressions\") of named parameters.")
       .def(py::init([](const std::string& text, std::vector<std::string> parameters) {
              return parse_law(text, parameters, law::Context());
            }),
-           py::arg("text"), py::arg("parameters") = std::vector<std::string>{"t"})
-      .def_property_readonly("parameters", [](const PyLaw& l) { return l.parameters; })
-      .def_property_readonly("dimension", [](const PyLaw& l) { return l.law.dimension(); })
-      .def_property_readonly("text", [](const PyLaw& l) { return law::print(l.law); })
+           py::arg("text"), py::arg("parameters") = std::vector<std::string>{"t"},
+           "Parses `text` with the given parameter names. Raises ParseError with where = {\"line\", \"column\"} of "
+           "the fault.")
+      .def_property_readonly(
+          "parameters", [](const PyLaw& l) { return l.parameters; }, "The parameter names.")
+      .def_property_readonly(
+          "dimension", [](const PyLaw& l) { return l.law.dimension(); }, "1 for scalar laws, 2 or 3 for vector laws.")
+      .def_property_readonly(
+          "text", [](const PyLaw& l) { return law::print(l.law); }, "The law printed back (parses to the same law).")
       .def("__str__", [](const PyLaw& l) { return law::print(l.law); })
       .def("__repr__", [](const PyLaw& l) { return "Law(\"" + law::print(l.law) + "\")"; })
-      .def("__call__", &call)
+      .def("__call__", &call,
+           "Values at broadcast parameter arrays (positional in the order of `parameters`, or by name): a float\n"
+           "for scalar inputs, else an array of the broadcast shape (+ (dimension,) for vector laws). Undefined\n"
+           "values (log of a negative number...) are NaN.")
       .def(
           "derive",
           [](const PyLaw& l, const std::optional<std::string>& parameter, int order) {
             return PyLaw{law::derivative(l.law, parameter_or_only(l, parameter), order), l.parameters, {}};
           },
-          py::arg("parameter") = py::none(), py::arg("order") = 1)
+          py::arg("parameter") = py::none(), py::arg("order") = 1,
+          "The exact symbolic derivative of the given order (parameter: the only one by default).")
       .def(
           "integrate",
           [](const PyLaw& l, double a, double b, const std::optional<std::string>& parameter,
@@ -158,7 +167,9 @@ void register_laws(py::module_& m) {
             return law::integrate(l.law, name, a, b, {.relative_tolerance = relative_tolerance}).value;
           },
           py::arg("a"), py::arg("b"), py::kw_only(), py::arg("parameter") = py::none(),
-          py::arg("relative_tolerance") = 1e-12)
+          py::arg("relative_tolerance") = 1e-12,
+          "The integral from a to b of a scalar law (adaptive Gauss-Kronrod, split at singularities; tanh-sinh at\n"
+          "an integrable singular end, exp-sinh / sinh-sinh for a or b = +-inf); nan when divergent.")
       .def(
           "antiderivative",
           [](const PyLaw& l, const std::optional<std::string>& parameter) -> std::optional<PyLaw> {
@@ -166,7 +177,9 @@ void register_laws(py::module_& m) {
             if (!F) return std::nullopt;
             return PyLaw{*F, l.parameters, {}};
           },
-          py::arg("parameter") = py::none())
+          py::arg("parameter") = py::none(),
+          "A closed-form F with F' = self (substitution, by parts, rational, atan/asin forms, trigonometric\n"
+          "powers; docs/modules/law.md), or None when no rule applies.")
       .def(
           "roots",
           [](const PyLaw& l, double a, double b, const std::optional<std::string>& parameter) {
@@ -178,7 +191,8 @@ void register_laws(py::module_& m) {
             }
             return to_array(r);
           },
-          py::arg("a"), py::arg("b"), py::kw_only(), py::arg("parameter") = py::none())
+          py::arg("a"), py::arg("b"), py::kw_only(), py::arg("parameter") = py::none(),
+          "All roots of a scalar law in [a, b], increasing.")
       .def(py::pickle([](const PyLaw& l) { return py::make_tuple(law::print(l.law), l.parameters); },
                       [](const py::tuple& t) {
                         return parse_law(t[0].cast<std::string>(), t[1].cast<std::vector<std::string>>(),

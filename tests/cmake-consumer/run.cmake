@@ -1,9 +1,10 @@
 # SPDX-License-Identifier: MIT
-# ctest driver of the consumer test: installs the build tree into a fresh
-# prefix, configures, builds and runs tests/cmake-consumer against it with
-# find_package(HulaHoops) (and the oli kernel consumer when WITH_OCCT), then compiles the same program with the flags of
-# hulahoops.pc (pkg-config) and runs it too.
+# ctest driver of the consumer test: installs the build tree into a fresh prefix, configures, builds and
+# runs tests/cmake-consumer against it with find_package(HulaHoops) — one program per exported target,
+# and every target the installed HulaHoopsTargets.cmake declares must have one — then compiles and runs
+# the same programs with the flags of hulahoops.pc (pkg-config) instead.
 #   cmake -DBUILD_DIR=... -DSOURCE_DIR=... -DWORK_DIR=... -DCXX=... [-DWITH_OCCT=ON] -P run.cmake
+cmake_minimum_required(VERSION 3.25)  # policies of script mode (IN_LIST)
 foreach(var BUILD_DIR SOURCE_DIR WORK_DIR CXX)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "run.cmake needs -D${var}=...")
@@ -11,6 +12,8 @@ foreach(var BUILD_DIR SOURCE_DIR WORK_DIR CXX)
 endforeach()
 file(REMOVE_RECURSE ${WORK_DIR})
 set(prefix ${WORK_DIR}/prefix)
+set(scratch ${WORK_DIR}/scratch)
+file(MAKE_DIRECTORY ${scratch})
 
 function(run)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -47,16 +50,32 @@ if(NOT rc EQUAL 0 OR at EQUAL -1)
   message(FATAL_ERROR "the installed hula did not run pagmo-de with the installed plugin (${rc}):\n${out}\n${err}")
 endif()
 
-# find_package route.
+# find_package route: each program links its one target.
 run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/cmake-consumer -B ${WORK_DIR}/build -G Ninja
     -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_CXX_COMPILER=${CXX} -DCMAKE_BUILD_TYPE=Release)
-run(${CMAKE_COMMAND} --build ${WORK_DIR}/build)
-run(${WORK_DIR}/build/consumer)
-if(WITH_OCCT)
-  run(${WORK_DIR}/build/consumer_kernel)
-endif()
+run(${CMAKE_COMMAND} --build ${WORK_DIR}/build --parallel 2)
 
-# pkg-config route (the .pc finds its prefix from its own directory: relocatable).
+# Every exported target has its program (a new module without one fails here).
+file(READ ${prefix}/lib/cmake/HulaHoops/HulaHoopsTargets.cmake exported_text)
+string(REGEX MATCHALL "add_library\\(HulaHoops::[a-z_]+" exported "${exported_text}")
+list(TRANSFORM exported REPLACE "add_library\\(HulaHoops::" "")
+file(READ ${WORK_DIR}/build/consumer-targets.txt programs)
+list(LENGTH exported exported_count)
+foreach(t IN LISTS exported)
+  if(NOT t IN_LIST programs)
+    message(FATAL_ERROR "HulaHoops::${t} is exported but tests/cmake-consumer has no ${t}.cpp linking it")
+  endif()
+endforeach()
+if(exported_count LESS 15)
+  message(FATAL_ERROR "only ${exported_count} exported targets found: ${exported}")
+endif()
+foreach(t IN LISTS programs)
+  run(${WORK_DIR}/build/consumer_${t} ${prefix} ${scratch})
+endforeach()
+message(STATUS "find_package(HulaHoops): ${exported_count} exported targets, each linked alone and run")
+
+# pkg-config route (the .pc finds its prefix from its own directory: relocatable): the same programs
+# with `pkg-config --cflags --libs hulahoops` only.
 find_program(PKG_CONFIG pkg-config REQUIRED)
 set(ENV{PKG_CONFIG_PATH} ${prefix}/lib/pkgconfig)
 execute_process(COMMAND ${PKG_CONFIG} --cflags --libs hulahoops
@@ -64,6 +83,9 @@ execute_process(COMMAND ${PKG_CONFIG} --cflags --libs hulahoops
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "pkg-config does not know hulahoops")
 endif()
+message(STATUS "pkg-config --cflags --libs hulahoops: ${flags}")
 separate_arguments(flags UNIX_COMMAND "${flags}")
-run(${CXX} ${SOURCE_DIR}/tests/cmake-consumer/main.cpp -o ${WORK_DIR}/consumer-pc ${flags})
-run(${WORK_DIR}/consumer-pc)
+foreach(t IN LISTS programs)
+  run(${CXX} ${SOURCE_DIR}/tests/cmake-consumer/${t}.cpp -o ${WORK_DIR}/pc-${t} ${flags})
+  run(${WORK_DIR}/pc-${t} ${prefix} ${scratch})
+endforeach()

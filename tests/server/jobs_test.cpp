@@ -44,6 +44,23 @@ pid_t job_thread(JobPool& pool) {
 
 // checks every job runs on a thread the kernel schedules as SCHED_IDLE with nice 19 (proc(5) fields
 // 41 and 19, and sched_getscheduler), while the thread that made the pool keeps its own priority
+// checks two threads shutting the pool down at once (Server::stop from the caller's thread while Server::run
+// winds down) both return: each worker is joined once
+TEST(JobPool, ConcurrentShutdownsBothReturn) {
+  for (int round = 0; round < 50; ++round) {
+    JobPool pool(JobPoolOptions{.workers = 2});
+    std::atomic<int> done{0};
+    std::thread other([&] {
+      pool.shutdown();
+      ++done;
+    });
+    pool.shutdown();
+    ++done;
+    other.join();
+    EXPECT_EQ(done.load(), 2);
+  }
+}
+
 TEST(JobPool, WorkersRunAtTheLowestSchedulingPriority) {
   const std::vector<std::string> own_before = task_stat(::gettid());
   JobPool pool(JobPoolOptions{.workers = 2});

@@ -5,9 +5,7 @@
 // "interpolated" kind that stores the inputs; --lagrange: the polynomial of
 // degree N − 1 through the points (thesis 5.3.1; nurbs::interpolate_lagrange)
 // as a NURBS (io::lagrange_curve); --closed: the periodic C2 cubic back to the
-// first point (nurbs::interpolate_closed_cubic). Prints a JSON summary.
-#include "hula/nurbs/interpolate.hpp"
-
+// first point (io::closed_cubic_curve). Prints a JSON summary.
 #include <memory>
 
 #include "commands/common.hpp"
@@ -49,13 +47,11 @@ int run_lagrange(const InterpolateArgs& a, const io::PointSet& set) {
   return kExitOk;
 }
 
-// --closed: the periodic C2 cubic back to the first point (nurbs::interpolate_closed_cubic), no end conditions.
+// --closed: the periodic C2 cubic back to the first point (io::closed_cubic_curve), no end conditions.
 int run_closed(const InterpolateArgs& a, const io::PointSet& set) {
-  nurbs::InterpolationOptions o;
-  o.dimension = set.dimension;
-  o.parameterisation = io::parameterisation_from_name(a.parameterisation, "parameterisation");
-  if (!a.knots.empty()) o.parameters = parse_number_list(a.knots, "knots");
-  const nurbs::NurbsCurve curve = nurbs::interpolate_closed_cubic(set.points, o);
+  const std::vector<double> given = a.knots.empty() ? std::vector<double>{} : parse_number_list(a.knots, "knots");
+  const nurbs::NurbsCurve curve =
+      io::closed_cubic_curve(set, given, io::parameterisation_from_name(a.parameterisation, "parameterisation"));
   io::write_curve_file(a.output, curve);
   const nurbs::Interval dom = curve.domain();
   Json summary = Json::object();

@@ -115,6 +115,15 @@ nurbs::NurbsCurve lagrange_curve(const PointSet& set, std::span<const double> pa
   return nurbs::interpolate_lagrange(set.points, ts, set.dimension);
 }
 
+nurbs::NurbsCurve closed_cubic_curve(const PointSet& set, std::span<const double> parameters,
+                                     nurbs::Parameterisation rule) {
+  nurbs::InterpolationOptions o;
+  o.dimension = set.dimension;
+  o.parameterisation = rule;
+  if (!parameters.empty()) o.parameters = std::vector<double>(parameters.begin(), parameters.end());
+  return nurbs::interpolate_closed_cubic(set.points, o);
+}
+
 ApproximationAnswer approximation_answer(const PointSet& set, const ApproximationRequest& q) {
   if (q.tolerance.has_value() == q.control_points.has_value())
     throw Error(Errc::InvalidArgument, "give exactly one of tolerance and control_points",

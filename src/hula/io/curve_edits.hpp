@@ -72,6 +72,12 @@ struct CurveEditAnswer {
 [[nodiscard]] nurbs::NurbsCurve lagrange_curve(const PointSet& points, std::span<const double> parameters,
                                                nurbs::Parameterisation rule);
 
+/// The closed (periodic, C2) cubic spline through the points and back to the first
+/// (nurbs::interpolate_closed_cubic) at `parameters`, or when empty at the parameters of `rule`.
+/// @throws as nurbs::interpolate_closed_cubic
+[[nodiscard]] nurbs::NurbsCurve closed_cubic_curve(const PointSet& points, std::span<const double> parameters,
+                                                   nurbs::Parameterisation rule);
+
 /// A least-squares approximation of points: within `tolerance` (the fewest control points, a compact fair
 /// B-spline through the first and last point: studies::fit_within_tolerance without stray rejection), or
 /// with a given count of control points (nurbs::approximate).

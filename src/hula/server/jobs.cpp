@@ -226,6 +226,7 @@ void JobPool::run(const std::shared_ptr<Job>& job) {
 }
 
 void JobPool::shutdown() {
+  const std::lock_guard joining(shutdown_mutex_);
   std::deque<std::shared_ptr<Job>> queued;
   std::vector<std::shared_ptr<Job>> all;
   {

@@ -107,6 +107,8 @@ class JobPool {
   void cancel(Job& job);
 
   /// Cancels every job, waits for the running ones to store their outcome and joins the workers.
+  /// Safe to call from several threads at once (Server::stop from any thread while Server::run ends):
+  /// a second caller waits for the first and returns.
   void shutdown();
 
   /// Why a worker thread could not lower its scheduling priority (SCHED_IDLE, nice 19), or "" when
@@ -119,6 +121,8 @@ class JobPool {
   void finish(Job& job, JobState state);
   JobPoolOptions options_;
   mutable std::mutex mutex_;
+  /// Held through shutdown(), so that two callers never join the same worker.
+  std::mutex shutdown_mutex_;
   std::condition_variable wake_;
   std::deque<std::shared_ptr<Job>> queue_;
   std::map<std::string, std::shared_ptr<Job>> jobs_;
