@@ -442,7 +442,10 @@ void register_geometry(py::module_& m) {
             d["bezier_bound"] = r.bezier_bound;
             return d;
           },
-          py::arg("tolerance"))
+          py::arg("tolerance"),
+          "The curve one degree lower while it moves by at most `tolerance` (model units, >= 0): a dict\n"
+          "{\"curve\", \"error_bound\" (a guaranteed bound of the change), \"bezier_bound\"}. Non-rational\n"
+          "curves only; raises when no such curve is within the tolerance.")
       .def(
           "split",
           [](const NurbsCurve& c, double t) {

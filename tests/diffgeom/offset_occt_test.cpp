@@ -110,7 +110,8 @@ TEST(PlanarOffsetOcct, RawOffsetMatchesGeomOffsetCurve) {
 // with distances large enough to make cusps and loops; counts the loops trimmed.
 // DISABLED: on some random B-splines of this corpus (d ≈ 2, model size ≈ 20) a trimmed piece still holds points
 // up to 0.2 nearer than |d| to the curve (a split of the raw offset is missed there); the closed forms of
-// offset_test.cpp pass. Known gap, reported; enable once trimming handles these curves.
+// offset_test.cpp pass. Known gap of issue 26 (planar offsets), reported in its note; enable once trimming
+// handles these curves.
 TEST(PlanarOffsetOcct, DISABLED_TrimmedOffsetLiesAtTheDistance) {
   Rng rng(11, 26);
   int loops = 0;

@@ -155,7 +155,7 @@ TEST(DocCli, FailingSubcommandsLeaveTheFileUnchanged) {
       {{"doc", "import", "a.hula", "garbage.step"}, 3, "ParseError"},
       {{"doc", "import", "a.hula", "missing.igs"}, 3, "IoError"},
       {{"doc", "export", "a.hula", "5", "--format", "iges", "-o", "out.igs"}, 3, "InvalidArgument"},
-      {{"doc", "export", "a.hula", "1", "--format", "dxf", "-o", "out.json"}, 2, "UsageError"},
+      {{"doc", "export", "a.hula", "1", "--format", "dwg", "-o", "out.json"}, 2, "UsageError"},
       {{"doc", "new", "b.hula", "--backend", "acis"}, 2, "UsageError"},
   };
   for (const Case& c : cases) {

@@ -15,8 +15,10 @@
 
 #include "commands/study_common.hpp"
 #include "hula/io/atomic_file.hpp"
+#include "hula/io/dxf_file.hpp"
 #include "hula/io/json_read.hpp"
 #include "hula/oli/document.hpp"
+#include "hula/oli/file_convert.hpp"
 #include "hula/oli/json_exchange.hpp"
 #include "hula/oli/study_run.hpp"
 #ifdef HULA_WITH_OCCT
@@ -192,11 +194,16 @@ int run_history(const Options& o) {
 }
 
 // True for the STEP and IGES names of --format and the .step/.stp/.iges/.igs extensions.
-bool is_cad_format(const std::string& format) { return format != "json"; }
+bool is_cad_format(const std::string& format) { return format != "json" && format != "dxf"; }
 
-bool is_cad_file(const std::string& path) {
+std::string lower_extension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+bool is_cad_file(const std::string& path) {
+  const std::string ext = lower_extension(path);
   return ext == ".step" || ext == ".stp" || ext == ".iges" || ext == ".igs";
 }
 
@@ -218,7 +225,9 @@ int run_export(const Options& o) {
   out["file"] = o.output;
   out["format"] = o.format;
   out["labels"] = labels_json(labels);
-  if (!is_cad_format(o.format)) {
+  if (o.format == "dxf") {  // dxflib, in this process (the server's export writes the same text)
+    out["max_deviation"] = oli::export_dxf(doc, labels, o.output);
+  } else if (!is_cad_format(o.format)) {
     io::write_file_atomically(o.output, io::to_file_text(oli::export_json(doc, labels)));
   } else {
 #ifdef HULA_WITH_OCCT
@@ -247,7 +256,7 @@ Json parse_import_json(const std::string& path) {
     if (where.field.empty()) where.field = "input";
     throw Error(Errc::ParseError,
                 "cannot import '" + path + "': doc import reads a curve file, a points array or a hula-document " +
-                    "(JSON), or a STEP or IGES file (.step, .stp, .iges, .igs)" +
+                    "(JSON), a STEP or IGES file (.step, .stp, .iges, .igs) or a DXF file (.dxf)" +
                     (ext.empty() || ext == ".json" ? std::string() : "; '" + ext + "' is none of these") +
                     " — as JSON: " + e.message(),
                 where);
@@ -258,7 +267,12 @@ int run_import(const Options& o) {
   std::vector<oli::Label> labels;
   std::optional<oli::Document> doc;
   Json cad = Json::object();  // a CAD file's "skipped" and "warnings" (what the reader could not read)
-  if (is_cad_file(o.input)) {
+  if (lower_extension(o.input) == ".dxf") {
+    // DXF SPLINE entities, read in this process (dxflib) as the server's import reads them.
+    const io::DxfReadReport report = io::read_dxf_file(o.input);
+    doc.emplace(oli::Document::open(o.file));
+    commit(*doc, "import", [&](oli::Edit& e) { labels = oli::add_dxf_imported(e, report, o.input); });
+  } else if (is_cad_file(o.input)) {
 #ifdef HULA_WITH_OCCT
     // Read in the helper process first: a reader crash or hang leaves the document unopened.
     const oli::ImportReport report = oli::import_curves(o.input);
@@ -366,13 +380,13 @@ Command add_doc(CLI::App& app) {
   CLI::App* exp = doc->add_subcommand("export", "Write entities to a file");
   file(exp);
   exp->add_option("labels", o->labels, "Entity labels")->required();
-  exp->add_option("--format", o->format, "json | step (= step-ap214) | step-ap242 | iges")
-      ->check(CLI::IsMember({"json", "step", "step-ap214", "step-ap242", "iges"}));
+  exp->add_option("--format", o->format, "json | dxf | step (= step-ap214) | step-ap242 | iges")
+      ->check(CLI::IsMember({"json", "dxf", "step", "step-ap214", "step-ap242", "iges"}));
   exp->add_option("-o,--output", o->output, "Output file")->required();
   CLI::App* imp = doc->add_subcommand(
-      "import", "Add the curves of a JSON curve or document file, or of a STEP or IGES file, as new entities");
+      "import", "Add the curves of a JSON curve or document file, or of a STEP, IGES or DXF file, as new entities");
   file(imp);
-  imp->add_option("input", o->input, "Curve file, hula-document JSON, or .step/.stp/.iges/.igs file")->required();
+  imp->add_option("input", o->input, "Curve file, hula-document JSON, or .step/.stp/.iges/.igs/.dxf file")->required();
 
   CLI::App* run = doc->add_subcommand("run", "Run a study file (values {\"entity\": L} name entities) and store it");
   file(run);
