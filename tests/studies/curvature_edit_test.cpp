@@ -318,8 +318,13 @@ curve::Curve s_curve_of_width(double width) {
 // across, a rational quarter circle, a space Bézier ~1,000 units across), ends held; measured by re-sampling the
 // result by arc length (analyse_curve), not by the fit. Bounds, as fractions of the drag h: the exact target is out
 // of reach (the bump adds h L / 6 of turning that the held end tangent takes back elsewhere, and the handle budget
-// limits the bump's shape), so the least-squares fit spreads a miss over the profile: measured 0.27–0.60 h at the
-// drag and 0.40–0.79 h at worst (before the fit refused straightened stretches); bounds 0.65 h and 0.85 h. Matched
+// limits the bump's shape), so the least-squares fit spreads a miss over the profile. With the drag's support weighted
+// 1.5× at its peak (planar curves), measured: |κ| moved 0.57–0.62 h on the S-splines (G1 and G2), 1.04 h on the
+// quarter circle, 0.65–0.71 h on the space Bézier (unweighted: 0.41–0.42 h, 0.73 h, the same); misses 0.04–0.43 h
+// at the drag and 0.40–0.72 h at worst. Bounds: moved ≥ 0.5 h, 0.5 h at the drag, 0.8 h at worst. 0.8 h moved on
+// every curve is not reached: a heavier weight moved the S's spot 0.64–0.81 h but let the fit trade a κ spike
+// elsewhere (worst misses of 7–117 h), and spreading the added turning over the rest of the target moved it less
+// (0.22–0.37 h unweighted). Matched
 // at the original's parameters instead (as first built), the S's κ at the dragged fraction went the wrong way:
 // misses of 6–9 h.
 TEST(CurvatureEdit, DragMatchesTheTargetAtTheNewCurvesOwnArcLengthFractions) {
@@ -348,9 +353,9 @@ TEST(CurvatureEdit, DragMatchesTheTargetAtTheNewCurvesOwnArcLengthFractions) {
       const double h = 0.1 * std::abs(p.kappa[0]);
       const FractionMisses m = drag_by_fraction(k.curve, h, k.f0, hold);
       expect_ends(m.result, hold == EndHold::Curvature);
-      EXPECT_LE(m.at_edit, 0.65 * h) << m.at_edit / h;
-      EXPECT_LE(m.worst, 0.85 * h) << m.worst / h;
-      EXPECT_GE(m.moved, 0.35 * h) << m.moved / h;  // the way asked
+      EXPECT_LE(m.at_edit, 0.5 * h) << m.at_edit / h;
+      EXPECT_LE(m.worst, 0.8 * h) << m.worst / h;
+      EXPECT_GE(m.moved, 0.5 * h) << m.moved / h;  // the way asked
       EXPECT_LE(m.result.handles_after, 2 * m.result.handles_before);
     }
 }

@@ -195,7 +195,9 @@ for (const [name, curve, holds] of cases) {
           length: [length, l1],
         }),
       );
-      expect(movedAtSameS).toBeGreaterThan(0.5 * asked);
+      // Measured 0.65–1.08 of the drag (the held ends take back the bump's turning); 0.5–0.9 before the
+      // fit weighed the dragged stretch of a planar curve more.
+      expect(movedAtSameS).toBeGreaterThan(0.6 * asked);
       expect(movedAtSameS).toBeLessThan(1.5 * asked);
       if (name === 'S-spline' && hold === 'tangent') await shot(page, 'design-by-curvature-s');
 

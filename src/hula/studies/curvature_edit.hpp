@@ -21,7 +21,10 @@
 //     knots, and its profile becomes the target.
 //  3. The profile fit: Levenberg–Marquardt on the control points of the
 //     original's knot vector (its degree, breakpoints and weights) minimising
-//     Σ_j (κ(t_j) − κ*_j)² (+ the torsion misses of a space curve) where t_j is
+//     Σ_j w_j² (κ(t_j) − κ*_j)² (+ the torsion misses of a space curve; w_j = 1,
+//     up to 1.5 inside a planar drag's support, so less of the miss the held
+//     ends force falls where the designer dragged; the unweighted fit is kept
+//     instead when it is nearer at the drag's peak) where t_j is
 //     the candidate's own parameter at the fraction u_j of its own length (the
 //     κ(s) graph the designer drew, redrawn for the new length: the length is
 //     free, re-measured on every candidate on a fixed quadrature grid so the
