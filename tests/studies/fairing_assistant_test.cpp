@@ -164,8 +164,7 @@ TEST(FairingAssistant, PlanarCurveStaysInItsPlane) {
   const nurbs::NurbsCurve flat = wavy_nurbs().nurbs();
   const double c30 = std::cos(M_PI / 6), s30 = std::sin(M_PI / 6);
   const Vec3 offset{5, -7, 40};
-  const std::vector<std::pair<std::string, Vec3>> planes = {{"z = 0", Vec3{0, 0, 1}},
-                                                            {"tilted", Vec3{0, -s30, c30}}};
+  const std::vector<std::pair<std::string, Vec3>> planes = {{"z = 0", Vec3{0, 0, 1}}, {"tilted", Vec3{0, -s30, c30}}};
   const AssistantResult reference = fair_within_tolerance(wavy_nurbs(), {.tolerance = 1.0, .time_budget_seconds = 5.0});
   for (const auto& [name, normal] : planes) {
     SCOPED_TRACE(name);

@@ -46,7 +46,8 @@ struct CurveEditRequest {
 };
 
 /// The curves an edit made (two for Split, one otherwise) and its report members: {"removed", "error_bound",
-/// "tolerance"} (remove-knots), {"error_bound", "bezier_bound", "tolerance"} (reduce-degree), {"at"} (split), {"from", "tolerance", "max_deviation"} (to-nurbs), none else.
+/// "tolerance"} (remove-knots), {"error_bound", "bezier_bound", "tolerance"} (reduce-degree), {"at"} (split), {"from",
+/// "tolerance", "max_deviation"} (to-nurbs), none else.
 struct CurveEditAnswer {
   std::vector<nurbs::NurbsCurve> curves;
   Json report = Json::object();
