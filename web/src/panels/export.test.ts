@@ -17,7 +17,7 @@ describe('exportFileName', () => {
     expect(exportFileName('', '7', 'iges')).toBe('curve-7.igs');
     expect(exportFileName('..', '7', 'json')).toBe('curve-7.json');
   });
-  it('offers exactly JSON, STEP and IGES (no format the server does not write)', () => {
-    expect(Object.keys(EXPORT_FORMATS).sort()).toEqual(['iges', 'json', 'step']);
+  it('offers exactly JSON, STEP, IGES and DXF (no format the server does not write)', () => {
+    expect(Object.keys(EXPORT_FORMATS).sort()).toEqual(['dxf', 'iges', 'json', 'step']);
   });
 });
