@@ -30,17 +30,17 @@ TEST(Issue24Messages, ToleranceZeroNamesTheOptionAndItsRange) {
   }
 }
 
-// checks: importing a file that is neither JSON nor STEP/IGES names the formats doc import reads and the
-// file's extension; the document is unchanged.
+// checks: importing a file that is neither JSON, STEP/IGES nor DXF (a DWG name) names the formats doc import
+// reads and the file's extension; the document is unchanged.
 TEST(Issue24Messages, ImportOfAnUnknownFormatNamesTheFormatsExpected) {
   TempDir dir;
   const std::string doc = (dir / "d.hula").string();
   ASSERT_EQ(hula({"doc", "new", doc}).exit_code, 0);
-  write(dir / "a.dxf", "0\nSECTION\n2\nENTITIES\n0\nENDSEC\n0\nEOF\n");
-  const ProcessResult r = hula({"doc", "import", doc, (dir / "a.dxf").string()});
+  write(dir / "a.dwg", "0\nSECTION\n2\nENTITIES\n0\nENDSEC\n0\nEOF\n");
+  const ProcessResult r = hula({"doc", "import", doc, (dir / "a.dwg").string()});
   EXPECT_EQ(r.exit_code, 3) << r.err;
   const std::string m = message_of(r);
-  for (const char* piece : {"a.dxf", "'.dxf' is none of these", "JSON", ".step", ".iges"})
+  for (const char* piece : {"a.dwg", "'.dwg' is none of these", "JSON", ".step", ".iges", ".dxf"})
     EXPECT_NE(m.find(piece), std::string::npos) << piece << " in " << m;
   EXPECT_EQ(error_of(r)["error"]["where"]["field"], "input");
   EXPECT_EQ(json::parse(hula({"doc", "list", doc}).out)["revision"], 0);
