@@ -20,29 +20,6 @@ void check_sizes(std::size_t a, std::size_t b, const char* what) {
                                            std::to_string(a) + " vs " + std::to_string(b) + ")");
 }
 
-std::string escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '&':
-        out += "&amp;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
-
 std::string num(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.2f", v);
@@ -101,6 +78,29 @@ struct Range {
 };
 
 }  // namespace
+
+std::string xml_escape(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '&':
+        out += "&amp;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
 
 SvgFigure::SvgFigure(double width, double height) : width_(std::max(100.0, width)), height_(std::max(100.0, height)) {}
 
@@ -192,8 +192,8 @@ std::string SvgFigure::render() const {
                     "\" font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" "
                     "fill=\"white\"/>\n";
   if (!title_.empty())
-    out += "<text x=\"" + num(width_ / 2) + "\" y=\"25\" text-anchor=\"middle\" font-size=\"15\">" + escape(title_) +
-           "</text>\n";
+    out += "<text x=\"" + num(width_ / 2) + "\" y=\"25\" text-anchor=\"middle\" font-size=\"15\">" +
+           xml_escape(title_) + "</text>\n";
 
   for (const auto& h : heatmaps_) {
     Range rv;
@@ -224,7 +224,7 @@ std::string SvgFigure::render() const {
     out += "<text x=\"" + num(bx + bw + 4) + "\" y=\"" + num(top + 10) + "\">" + label(rv.hi) + "</text>\n";
     out += "<text x=\"" + num(bx + bw + 4) + "\" y=\"" + num(top + ph) + "\">" + label(rv.lo) + "</text>\n";
     if (!h.legend.empty())
-      out += "<text x=\"" + num(bx) + "\" y=\"" + num(top + ph + 20) + "\">" + escape(h.legend) + "</text>\n";
+      out += "<text x=\"" + num(bx) + "\" y=\"" + num(top + ph + 20) + "\">" + xml_escape(h.legend) + "</text>\n";
   }
 
   if (axes_) {
@@ -245,9 +245,9 @@ std::string SvgFigure::render() const {
              (log_y_ ? "1e" + label(t) : label(t)) + "</text>\n";
     }
     out += "<text x=\"" + num(ox + pw / 2) + "\" y=\"" + num(oy + ph + 40) + "\" text-anchor=\"middle\">" +
-           escape(x_label_) + "</text>\n";
+           xml_escape(x_label_) + "</text>\n";
     out += "<text transform=\"translate(18 " + num(oy + ph / 2) + ") rotate(-90)\" text-anchor=\"middle\">" +
-           escape(y_label_) + "</text>\n";
+           xml_escape(y_label_) + "</text>\n";
   }
 
   const auto stroke_attrs = [](const SvgStyle& s) {
@@ -309,7 +309,7 @@ std::string SvgFigure::render() const {
       else
         out += "<line x1=\"" + num(lx) + "\" y1=\"" + num(ly - 4) + "\" x2=\"" + num(lx + 24) + "\" y2=\"" +
                num(ly - 4) + "\"" + stroke_attrs(it.style) + "/>\n";
-      out += "<text x=\"" + num(lx + 30) + "\" y=\"" + num(ly) + "\">" + escape(it.legend) + "</text>\n";
+      out += "<text x=\"" + num(lx + 30) + "\" y=\"" + num(ly) + "\">" + xml_escape(it.legend) + "</text>\n";
       lx += 40 + 7.0 * static_cast<double>(it.legend.size());
     }
   }

@@ -14,6 +14,9 @@
 
 namespace hula::io {
 
+/// `text` with & < > " replaced by their XML entities (SVG text, titles and attributes).
+[[nodiscard]] std::string xml_escape(const std::string& text);
+
 /// How a series is drawn.
 struct SvgStyle {
   /// Stroke colour (any SVG colour). Default black.

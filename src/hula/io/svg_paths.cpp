@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "hula/core/error.hpp"
+#include "hula/io/svg.hpp"
 #include "hula/nurbs/cubic_bezier.hpp"
 
 namespace hula::io {
@@ -18,29 +19,6 @@ std::string num(double value) {
   char buffer[32];
   const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
   return std::string(buffer, ec == std::errc() ? end : buffer);
-}
-
-std::string escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
 }
 
 bool is_colour(const std::string& c) {
@@ -79,7 +57,7 @@ SvgPaths svg_paths(const std::vector<SvgPathCurve>& curves, const SvgPathOptions
     paths += "    <path id=\"curve-" + std::to_string(i + 1) + "\" stroke=\"" + c.colour +
              "\" stroke-width=\"1\" vector-effect=\"non-scaling-stroke\" data-exact=\"" + (exact ? "true" : "false") +
              "\" data-max-deviation=\"" + num(deviation) + "\" d=\"" + d + "\">" +
-             (c.name.empty() ? std::string() : "<title>" + escape(c.name) + "</title>") + "</path>\n";
+             (c.name.empty() ? std::string() : "<title>" + xml_escape(c.name) + "</title>") + "</path>\n";
     ++out.report.curves;
     if (exact) ++out.report.exact;
     out.report.pieces += path.pieces.size();
