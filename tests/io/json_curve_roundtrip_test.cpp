@@ -13,7 +13,10 @@
 #include "hula/core/error.hpp"
 #include "hula/core/rng.hpp"
 #include "hula/intrinsic/natural_curve.hpp"
+#include "hula/io/curve_text_scan.hpp"
 #include "hula/io/json_curve.hpp"
+#include "hula/io/json_read.hpp"
+#include "hula/io/json_write.hpp"
 #include "hula/testing/expect_error.hpp"
 
 namespace hula::io {
@@ -207,6 +210,170 @@ TEST(JsonCurveFormat, TagWrittenAndChecked) {
                     Errc::ParseError, "version = 2");
   HULA_EXPECT_ERROR(parse_curve_json(R"({"version": 1.5, "kind": "bezier", "control_points": [[0, 0], [1, 2]]})"),
                     Errc::ParseError, "version");
+}
+
+// The general reader alone (through the JSON value), or nullopt when it refuses the text.
+std::optional<curve::Curve> general_read(const std::string& text) {
+  try {
+    return curve_from_json(json::parse_json_text(text, "curve file"));
+  } catch (const Error&) {
+    return std::nullopt;
+  }
+}
+
+bool same_curve_bits(const curve::Curve& a, const curve::Curve& b) {
+  if (a.kind() != b.kind() || a.dimension() != b.dimension()) return false;
+  const nurbs::NurbsCurve &x = a.nurbs(), &y = b.nurbs();
+  if (x.degree() != y.degree()) return false;
+  const auto same = [](auto u, auto v) {
+    if (u.size() != v.size()) return false;
+    for (std::size_t i = 0; i < u.size(); ++i)
+      if (!same_bits(u[i], v[i])) return false;
+    return true;
+  };
+  if (!same(x.knots().values(), y.knots().values()) || !same(x.weights(), y.weights())) return false;
+  const auto p = x.control_points(), q = y.control_points();
+  if (p.size() != q.size()) return false;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (std::size_t c = 0; c < 3; ++c)
+      if (!same_bits(p[i][c], q[i][c])) return false;
+  return true;
+}
+
+// checks: the streamed file text is format_json of the curve's JSON value byte for byte, for every kind
+// and for numbers at the edges of nlohmann's fixed/scientific layout.
+TEST(CurveFileText, IsFormatJsonOfTheValue) {
+  int tested = 0;
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    Rng rng(seed, 11);
+    std::vector<curve::Curve> curves;
+    try {
+      curves = random_curves_of_every_kind(rng, seed);
+      curves.emplace_back(random_curve(rng));
+    } catch (const Error&) {
+      continue;
+    }
+    for (const curve::Curve& c : curves) {
+      ASSERT_EQ(curve_file_text(c), format_json(curve_to_json(c))) << "seed " << seed;
+      ++tested;
+    }
+  }
+  EXPECT_GE(tested, 150);
+  for (double v : {1234567890123456.0, 123456789012345.0, 1e15, 1e16, 0.0001, 0.00012345, 1.5e-5, 5e-324, 1e300}) {
+    const curve::Curve c = nurbs::NurbsCurve(1, {0, 0, 1, 1}, {{v, -v, 0}, {1, 2, 3}});
+    EXPECT_EQ(curve_file_text(c), format_json(curve_to_json(c))) << v;
+  }
+}
+
+// checks: the fast path reads what hula writes to the same bits as the general reader, for random
+// NURBS (rational, 2-D and 3-D, 1e-300..1e300) and Bézier curves.
+TEST(CurveTextScan, ReadsWrittenFilesAsTheGeneralReaderDoes) {
+  int scanned = 0;
+  for (std::uint64_t seed = 1; seed <= 300; ++seed) {
+    Rng rng(seed, 7);
+    std::optional<curve::Curve> c;
+    try {
+      c = seed % 3 == 0 ? random_curves_of_every_kind(rng, 1).front() : curve::Curve(random_curve(rng));
+    } catch (const Error&) {
+      continue;
+    }
+    const std::string text = curve_file_text(*c);
+    const std::optional<curve::Curve> fast = scan_plain_curve_text(text), general = general_read(text);
+    ASSERT_TRUE(fast.has_value()) << "seed " << seed << "\n" << text;
+    ASSERT_TRUE(general.has_value()) << "seed " << seed;
+    ASSERT_TRUE(same_curve_bits(*fast, *general)) << "seed " << seed << "\n" << text;
+    ++scanned;
+  }
+  EXPECT_GE(scanned, 150);
+}
+
+// checks: hand-written texts at the edges of JSON's grammar: the fast path either declines or gives
+// the general reader's curve bit for bit; the cases the general reader reads differently or refuses
+// are declined.
+TEST(CurveTextScan, DeclinesWhatIsNotPlain) {
+  const std::string head = R"({"kind": "nurbs", "degree": 1, "knots": [0, 0, 1, 1], "control_points": )";
+  const auto nurbs = [&](const std::string& points, const std::string& rest = "") {
+    return head + points + rest + "}";
+  };
+  // Read by the fast path, equal to the general reader ("-0" is the integer 0, as nlohmann reads it).
+  for (const std::string& text :
+       {nurbs("[[-0, 1], [2, 3]]"), nurbs("[[0.1, 1e2], [2E-3, -3.5e+1]]"),
+        nurbs("[[1,2,3],[4,5,6]]", ", \"weights\": null"), nurbs("[[1, 2], [3, 4]]", ", \"weights\": [1, 2]"),
+        nurbs("[[9007199254740993, 1], [18446744073709551615, 1]]"),
+        nurbs("[[184467440737095516160, 1], [-9223372036854775809, 1]]"),
+        nurbs("[[1, 2], [3, 4]]", ", \"format\": \"hula-curve\", \"version\": 1"),
+        std::string(R"({"kind":"bezier","control_points":[[0,0],[1,2],[3,1]],"weights":[1,0.5,1]})")}) {
+    const std::optional<curve::Curve> fast = scan_plain_curve_text(text), general = general_read(text);
+    ASSERT_TRUE(fast.has_value()) << text;
+    ASSERT_TRUE(general.has_value()) << text;
+    EXPECT_TRUE(same_curve_bits(*fast, *general)) << text;
+  }
+  // Declined: the general reader reads these (unknown members, escapes, a repeated member keeping its
+  // last value, subnormal underflow, huge integers) or refuses them with a message.
+  for (const std::string& text :
+       {nurbs("[[1, 2], [3, 4]]", ", \"name\": \"a\""),
+        nurbs("[[1, 2], [3, 4]]", ", \"degree\": 1"),
+        nurbs("[[1e-400, 2], [3, 4]]"),
+        nurbs("[[1e999, 2], [3, 4]]"),
+        nurbs("[[01, 2], [3, 4]]"),
+        nurbs("[[1., 2], [3, 4]]"),
+        nurbs("[[.5, 2], [3, 4]]"),
+        nurbs("[[+1, 2], [3, 4]]"),
+        nurbs("[[NaN, 2], [3, 4]]"),
+        nurbs("[[1, 2], [3, 4, 5]]"),
+        nurbs("[[1], [3, 4]]"),
+        nurbs("[]"),
+        nurbs("[[1, 2], [3, 4]]", ", \"weights\": []"),
+        nurbs("[[1, 2], [3, 4]]", ", \"version\": 2"),
+        nurbs("[[1, 2], [3, 4]]") + " x",
+        nurbs("[[1, 2], [3, 4],]"),
+        nurbs("[[1, 2], [3, 4]]", ", \"kind\": \"bezier\""),
+        nurbs("[[1, 2], [3, 4]]", ", \"format\": \"hula\\u002dcurve\""),
+        nurbs("[[1, 2], [3, 4]]", ", \"weights\": [1, -1]"),
+        nurbs("[[1, 2], [3, 4]]", ", \"weights\": [1]"),
+        nurbs("[[1, 2], [3, 4]]", ", \"version\": 1.0"),
+        std::string(R"({"kind": "interpolated", "points": [[0, 0], [1, 1]]})"),
+        std::string(R"({"kind": "bezier", "degree": 1, "control_points": [[0, 0], [1, 1]]})")})
+    EXPECT_FALSE(scan_plain_curve_text(text).has_value()) << text;
+}
+
+// checks (property): for 3,000 seeded mutations of written files (a byte replaced, inserted or
+// deleted among JSON's significant characters), whenever the fast path reads a curve the general
+// reader reads the same curve bit for bit: the fast path never accepts what the general reader
+// refuses or reads differently.
+TEST(CurveTextScan, NeverDisagreesWithTheGeneralReaderOnMutatedFiles) {
+  static constexpr std::string_view kBytes = "0123456789-+.eE,:[]{}\" nul\\";
+  Rng rng(2026, 12);
+  int accepted = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const bool bezier = trial % 4 == 0;
+    const curve::Curve c = bezier
+                               ? curve::Curve::bezier({{{0, 0, 0}, {1, 2, 0}, {3.5, -1, 0}}, {1, 0.5, 2}, 2})
+                               : curve::Curve(nurbs::NurbsCurve(2, {0, 0, 0, 0.5, 1, 1, 1},
+                                                                {{0, 0, 1}, {1, 2, -0.25}, {3, 1, 1e-7}, {4, 0, 2}}));
+    std::string text = curve_file_text(c);
+    for (int edits = 1 + static_cast<int>(rng.below(3)); edits > 0; --edits) {
+      const std::size_t at = rng.below(text.size());
+      const char byte = kBytes[rng.below(kBytes.size())];
+      switch (rng.below(3)) {
+        case 0:
+          text[at] = byte;
+          break;
+        case 1:
+          text.insert(text.begin() + static_cast<std::ptrdiff_t>(at), byte);
+          break;
+        default:
+          text.erase(at, 1);
+      }
+    }
+    const std::optional<curve::Curve> fast = scan_plain_curve_text(text);
+    if (!fast) continue;
+    ++accepted;
+    const std::optional<curve::Curve> general = general_read(text);
+    ASSERT_TRUE(general.has_value()) << "trial " << trial << ": the general reader refuses\n" << text;
+    ASSERT_TRUE(same_curve_bits(*fast, *general)) << "trial " << trial << "\n" << text;
+  }
+  EXPECT_GE(accepted, 150);  // many mutations only change a digit: both readers read them
 }
 
 }  // namespace

@@ -18,6 +18,10 @@ int run_info(const std::string& path) {
   const Json analysis = io::curve_description_json(c.nurbs());
   for (const auto& [key, value] : analysis.items()) doc[key] = value;
   // The construction data (without the file's format tag) of the kinds that are more than a NURBS.
+  if (c.kind() == curve::Kind::Nurbs || c.kind() == curve::Kind::Bezier) {
+    print_json(doc);
+    return kExitOk;
+  }
   Json data = io::curve_to_json(c);
   data.erase("format");
   data.erase("version");

@@ -6,14 +6,19 @@
 // "knots", "control_points", "weights" and "degree" with their indices.
 #include "hula/io/json_curve.hpp"
 
+#include <array>
 #include <climits>
+#include <optional>
+#include <span>
 #include <utility>
 #include <variant>
 
 #include "hula/core/error.hpp"
 #include "hula/intrinsic/natural_curve.hpp"
 #include "hula/io/atomic_file.hpp"
+#include "hula/io/curve_text_scan.hpp"
 #include "hula/io/json_read.hpp"
+#include "hula/io/json_text.hpp"
 #include "hula/io/json_write.hpp"
 
 namespace hula::io {
@@ -91,12 +96,6 @@ Json points_to_json(std::span<const Vec3> points, int dimension) {
 }
 
 namespace {
-
-Json numbers_to_json(std::span<const double> values) {
-  Json a = Json::array();
-  for (double v : values) a.push_back(v);
-  return a;
-}
 
 curve::Curve read_nurbs(const Json& doc) {
   const JsonPath root;
@@ -299,6 +298,9 @@ curve::Curve curve_from_json(const Json& document) {
 }
 
 curve::Curve parse_curve_json(std::string_view text) {
+  // The plain files hula writes are read straight into the kernel's arrays; anything else (and every
+  // error) goes through the JSON value, whose reader names what is wrong.
+  if (std::optional<curve::Curve> plain = scan_plain_curve_text(text)) return std::move(*plain);
   return curve_from_json(json::parse_json_text(text, "curve file"));
 }
 
@@ -307,68 +309,130 @@ curve::Curve read_curve_file(const std::filesystem::path& path) {
 }
 
 namespace {
+// The curve file, written once for both JSON values (JsonTree: curve_to_json) and streamed text
+// (JsonText: write_curve_file, which writes a million-point curve without building a value).
+template <class W>
+void write_point(W& w, const Vec3& p, int dimension) {
+  w.scalars(dimension == 2 ? 2 : 3, [&](std::size_t i) { w.number(i == 0 ? p.x : i == 1 ? p.y : p.z); });
+}
+
+template <class W>
+void write_points(W& w, std::span<const Vec3> points, int dimension) {
+  w.containers(points.size(), [&](std::size_t i) { write_point(w, points[i], dimension); });
+}
+
+template <class W>
+void write_numbers(W& w, std::span<const double> values) {
+  w.scalars(values.size(), [&](std::size_t i) { w.number(values[i]); });
+}
+
+template <class W>
 struct DataWriter {
-  Json& doc;
+  W& w;
   int dimension;
   void operator()(const curve::NurbsData& d) const {
     const nurbs::NurbsCurve& c = d.curve;
-    doc["degree"] = c.degree();
-    doc["knots"] = numbers_to_json(c.knots().values());
-    doc["control_points"] = points_to_json(c.control_points(), c.dimension());
-    doc["weights"] = c.is_rational() ? numbers_to_json(c.weights()) : Json(nullptr);
+    w.member("degree").integer(c.degree());
+    write_numbers(w.member("knots"), c.knots().values());
+    write_points(w.member("control_points"), c.control_points(), c.dimension());
+    if (c.is_rational())
+      write_numbers(w.member("weights"), c.weights());
+    else
+      w.member("weights").null();
   }
   void operator()(const curve::BezierData& d) const {
-    doc["control_points"] = points_to_json(d.control_points, d.dimension);
-    doc["weights"] = d.weights.empty() ? Json(nullptr) : numbers_to_json(d.weights);
+    write_points(w.member("control_points"), d.control_points, d.dimension);
+    if (d.weights.empty())
+      w.member("weights").null();
+    else
+      write_numbers(w.member("weights"), d.weights);
   }
   void operator()(const curve::InterpolatedData& d) const {
-    doc["points"] = points_to_json(d.points, d.dimension);
-    doc["parameterisation"] = std::string(parameterisation_name(d.parameterisation));
-    if (!d.parameters.empty()) doc["parameters"] = numbers_to_json(d.parameters);
-    doc["start"] = end_condition_to_json(d.start, d.dimension);
-    doc["end"] = end_condition_to_json(d.end, d.dimension);
+    write_points(w.member("points"), d.points, d.dimension);
+    w.member("parameterisation").string(parameterisation_name(d.parameterisation));
+    if (!d.parameters.empty()) write_numbers(w.member("parameters"), d.parameters);
+    w.member("start").value(end_condition_to_json(d.start, d.dimension));
+    w.member("end").value(end_condition_to_json(d.end, d.dimension));
   }
   void operator()(const curve::HermiteData& d) const {
-    doc["points"] = points_to_json(d.points, d.dimension);
-    doc["tangents"] = points_to_json(d.tangents, d.dimension);
-    if (!d.second_derivatives.empty()) doc["second_derivatives"] = points_to_json(d.second_derivatives, d.dimension);
-    if (!d.parameters.empty()) doc["parameters"] = numbers_to_json(d.parameters);
+    write_points(w.member("points"), d.points, d.dimension);
+    write_points(w.member("tangents"), d.tangents, d.dimension);
+    if (!d.second_derivatives.empty()) write_points(w.member("second_derivatives"), d.second_derivatives, d.dimension);
+    if (!d.parameters.empty()) write_numbers(w.member("parameters"), d.parameters);
   }
   void operator()(const curve::LawData& d) const {
-    doc["expression"] = d.expression;
-    doc["parameter"] = d.parameter;
-    doc["domain"] = Json::array({d.domain.start, d.domain.end});
+    w.member("expression").string(d.expression);
+    w.member("parameter").string(d.parameter);
+    const std::array<double, 2> domain{d.domain.start, d.domain.end};
+    write_numbers(w.member("domain"), domain);
   }
   void operator()(const curve::NaturalData& d) const {
-    doc["curvature"] = d.curvature;
-    doc["torsion"] = d.torsion;
-    doc["parameter"] = d.parameter;
-    doc["length"] = d.length;
-    Json start = Json::object();
-    start["point"] = point_to_json(d.start_point, 3);
-    start["tangent"] = point_to_json(d.start_tangent, 3);
-    start["normal"] = point_to_json(d.start_normal, 3);
-    doc["start"] = std::move(start);
-    doc["tolerance"] = d.tolerance;
+    w.member("curvature").string(d.curvature);
+    w.member("torsion").string(d.torsion);
+    w.member("parameter").string(d.parameter);
+    w.member("length").number(d.length);
+    w.member("start").begin_object();
+    write_point(w.member("point"), d.start_point, 3);
+    write_point(w.member("tangent"), d.start_tangent, 3);
+    write_point(w.member("normal"), d.start_normal, 3);
+    w.end_object();
+    w.member("tolerance").number(d.tolerance);
   }
 };
+
+template <class W>
+void write_curve(W& w, const curve::Curve& curve) {
+  w.begin_object();
+  w.member("format").string(kCurveFormat);
+  w.member("version").integer(kCurveFormatVersion);
+  w.member("kind").string(curve.kind_name());
+  std::visit(DataWriter<W>{w, curve.dimension()}, curve.data());
+  w.end_object();
+}
 }  // namespace
 
 Json curve_to_json(const curve::Curve& curve) {
-  Json doc = Json::object();
-  doc["format"] = std::string(kCurveFormat);
-  doc["version"] = kCurveFormatVersion;
-  doc["kind"] = std::string(curve.kind_name());
-  std::visit(DataWriter{doc, curve.dimension()}, curve.data());
+  Json doc;
+  JsonTree tree(doc);
+  write_curve(tree, curve);
   return doc;
 }
 
 std::string to_file_text(const Json& document) { return format_json(document); }
 
+std::string curve_file_text(const curve::Curve& curve) {
+  std::string text;
+  JsonText w(text, true);
+  write_curve(w, curve);
+  text += '\n';
+  return text;
+}
+
 void write_curve_file(const std::filesystem::path& path, const curve::Curve& curve) {
-  const std::string text = to_file_text(curve_to_json(curve));
-  check_readable_size(text.size(), path, "path");
-  write_file_atomically(path, text);
+  if (is_std_stream(path)) {
+    // Standard output cannot be taken back: the size is checked before the first byte.
+    const std::string text = curve_file_text(curve);
+    check_readable_size(text.size(), path, "path");
+    write_file_atomically(path, text);
+    return;
+  }
+  // A file is streamed through its temporary: past the readers' limit the write stops and the
+  // temporary is removed (OutputFile), leaving the target as it was.
+  OutputFile file(path, "path");
+  std::size_t written = 0;
+  const auto drain = [&](std::string& text) {
+    written += text.size();
+    check_readable_size(written, path, "path");
+    file.stream().write(text.data(), static_cast<std::streamsize>(text.size()));
+    text.clear();
+  };
+  std::string buffer;
+  buffer.reserve(JsonText::kDrainBytes + (JsonText::kDrainBytes >> 2));
+  JsonText w(buffer, true, drain);
+  write_curve(w, curve);
+  buffer += '\n';
+  drain(buffer);
+  file.commit();
 }
 
 }  // namespace hula::io

@@ -111,9 +111,12 @@ inline constexpr int kCurveFormatVersion = 1;
 /// Serialises a document as the files are written (format_json: 2-space indentation, arrays of
 /// numbers on one line, final newline).
 [[nodiscard]] std::string to_file_text(const Json& document);
-/// Writes a curve file (curve_to_json), atomically.
-/// @throws hula::Error(Errc::InvalidArgument) naming the path, before writing, when the text would be
-///   longer than kMaxGeometryInputBytes (read_curve_file could not read it back)
+/// The text of a curve file: format_json(curve_to_json(curve)), byte for byte, written without
+/// building the JSON value.
+[[nodiscard]] std::string curve_file_text(const curve::Curve& curve);
+/// Writes a curve file (curve_file_text), atomically, streamed in bounded memory.
+/// @throws hula::Error(Errc::InvalidArgument) naming the path when the text would be longer than
+///   kMaxGeometryInputBytes (read_curve_file could not read it back); the target is left as it was
 /// @throws hula::Error(Errc::IoError) naming the path
 void write_curve_file(const std::filesystem::path& path, const curve::Curve& curve);
 

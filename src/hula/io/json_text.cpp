@@ -41,13 +41,7 @@ JsonText& JsonText::member(std::string_view name) {
 }
 
 JsonText& JsonText::number(double v) {
-  if (!std::isfinite(v)) return null();
-  if (v == 0.0) return raw("0.0");  // -0.0 too, as format_json
-  char buffer[32];
-  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v);
-  const std::string_view text(buffer, static_cast<std::size_t>(end - buffer));
-  out_ += text;
-  if (text.find_first_of(".e") == std::string_view::npos) out_ += ".0";
+  append_json_number(out_, v);
   return *this;
 }
 

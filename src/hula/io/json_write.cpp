@@ -82,16 +82,9 @@ bool is_scalar(const Json& v) { return !v.is_array() && !v.is_object(); }
 
 void put_scalar(std::string& out, const Json& v) {
   switch (v.type()) {
-    case Json::value_t::number_float: {
-      const double x = v.get_ref<const Json::number_float_t&>();
-      if (x == 0.0)
-        out += "0.0";  // -0.0 compares equal to 0.0: both print as 0.0
-      else if (!std::isfinite(x))
-        out += "null";  // as nlohmann writes NaN and infinities
-      else
-        put_double(out, x);
+    case Json::value_t::number_float:
+      append_json_number(out, v.get_ref<const Json::number_float_t&>());
       return;
-    }
     case Json::value_t::number_integer:
       put_integer(out, v.get_ref<const Json::number_integer_t&>());
       return;
@@ -145,6 +138,15 @@ void put(std::string& out, const Json& v, std::size_t indent, bool compact) {
 }
 
 }  // namespace
+
+void append_json_number(std::string& out, double v) {
+  if (v == 0.0)
+    out += "0.0";  // -0.0 compares equal to 0.0: both print as 0.0
+  else if (!std::isfinite(v))
+    out += "null";  // as nlohmann writes NaN and infinities
+  else
+    put_double(out, v);
+}
 
 std::string format_json(const json::Json& value) {
   std::string out;

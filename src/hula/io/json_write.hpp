@@ -21,4 +21,8 @@ namespace hula::io {
 /// One line of JSON (no newline inside, final newline): the `jsonl` form.
 [[nodiscard]] std::string format_json_line(const json::Json& value);
 
+/// Appends a double as format_json writes it: "0.0" for ±0, "null" when not finite, else the
+/// shortest round-trip digits in nlohmann's layout (fixed for decimal exponents in (-4, 15]).
+void append_json_number(std::string& out, double v);
+
 }  // namespace hula::io
