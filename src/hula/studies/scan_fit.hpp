@@ -16,7 +16,7 @@
 //     knots split where points lie beyond the tolerance and the neighbours lean
 //     the same way (the curve is short of a feature), spikes left out as strays,
 //     parameter correction, degree choice, knot removal, then fairing within the
-//     tolerance that moves the curve by at most max(2.5 σ̂, 0.05 × tolerance) (the
+//     tolerance that moves the curve by at most max(σ̂, 0.01 × tolerance) (the
 //     fairing may not trade the fit to the data for smoothness beyond the noise).
 //     When the faired curve's ∫κ'² ds is not lower than the fit's, the fit is kept.
 //
