@@ -258,6 +258,19 @@ def test_man_pages_from_the_option_tables(tmp_path):
         assert r.returncode == 0 and r.stderr == "", r.stderr
 
 
+def test_install_puts_completion_and_man_pages_in_place(tmp_path):
+    # checks `cmake --install` of the hula directory installs the completion under share/bash-completion and the
+    # pages under share/man/man1, and that the installed script completes
+    build = pathlib.Path(os.environ["HULA_APPS_BUILD_DIR"])
+    r = subprocess.run(["cmake", "--install", str(build), "--prefix", str(tmp_path)], capture_output=True, text=True,
+                       timeout=120)
+    assert r.returncode == 0, r.stderr
+    script = tmp_path / "share" / "bash-completion" / "completions" / "hula"
+    assert complete(script, "hula", "doc", "ex") == ["export"]
+    pages = {p.name for p in (tmp_path / "share" / "man" / "man1").glob("hula-*.1")}
+    assert {"hula-doc.1", "hula-doc-export.1", "hula-serve.1", "hula-completion.1"} <= pages
+
+
 def test_help_matches_behaviour():
     # checks the help does not call demo the default command (plain `hula` prints the help)
     top = run().stdout
