@@ -34,6 +34,7 @@
 #include "commands/common.hpp"
 #include "commands/doc.hpp"
 #include "hula/core/error.hpp"
+#include "hula/io/atomic_file.hpp"
 #include "hula/io/error_json.hpp"
 #include "hula/io/json_write.hpp"
 
@@ -214,11 +215,17 @@ int main(int argc, char** argv) {
     } catch (const CLI::CallForVersion& e) {
       return print_exit_text(app, e);
     }
+    // Pipes (`--points <(cat pts.csv)`, a named FIFO) are inputs like files for the commands typed in a
+    // shell; `hula serve` never blocks on a path a request names.
     for (const auto& command : commands)
-      if (command.app->parsed()) return command.run();
+      if (command.app->parsed()) {
+        hula::io::set_pipe_inputs(command.app->get_name() != "serve");
+        return command.run();
+      }
     return print_help(app);
   } catch (const CLI::ParseError& e) {
-    print_error(plain_error("UsageError", e.what(), option_in(e.what())));
+    print_error(plain_error("UsageError", std::string(e.what()) + hula::cli::did_you_mean(app, argc, argv),
+                            option_in(e.what())));
     return hula::cli::kExitUsage;
   } catch (const hula::Error& e) {
     print_error(hula::io::error_to_json(e));

@@ -23,6 +23,19 @@ def test_python_md_blocks_run(tmp_path, monkeypatch):
         exec(compile(block, f"docs/python.md block {i}", "exec"), namespace)  # noqa: S102 - our own docs
 
 
+def test_howto_python_blocks_run(tmp_path, monkeypatch):
+    # checks the how-to pages' Python blocks (docs/howto/*.md) execute, each page in its own namespace
+    shutil.copytree(SOURCE / "examples", tmp_path / "examples")
+    monkeypatch.chdir(tmp_path)
+    ran = 0
+    for page in sorted((SOURCE / "docs" / "howto").glob("*.md")):
+        namespace = {}
+        for i, block in enumerate(re.findall(r"```python\n(.*?)```", page.read_text(encoding="utf-8"), flags=re.S)):
+            exec(compile(block, f"docs/howto/{page.name} block {i}", "exec"), namespace)  # noqa: S102 - our own docs
+            ran += 1
+    assert ran >= 3
+
+
 def test_readme_python_block_runs():
     # checks the README's Python example executes
     text = (SOURCE / "README.md").read_text(encoding="utf-8")

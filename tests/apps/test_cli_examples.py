@@ -68,22 +68,39 @@ def argv(line):
 
 @pytest.fixture(scope="module")
 def workdir(tmp_path_factory):
-    """A scratch copy of examples/, the directory every example runs from (as from the repository root)."""
+    """A scratch copy of examples/ and tests/data/real/ (the airfoils of docs/howto/airfoil.md), the directory
+    every example runs from (as from the repository root)."""
     root = tmp_path_factory.mktemp("cli-examples")
     shutil.copytree(SOURCE / "examples", root / "examples")
+    shutil.copytree(SOURCE / "tests" / "data" / "real", root / "tests" / "data" / "real")
     return root
 
 
+def check_output(line, stdout):
+    """The output of an example: JSON or nothing, or with --format csv|jsonl|text that table (jsonl lines of JSON,
+    a csv "# " header and rows, some text)."""
+    table = re.search(r"--format (csv|jsonl|text)", line)
+    if table and table.group(1) == "jsonl":
+        for record in stdout.splitlines():
+            json.loads(record)
+    elif table and table.group(1) == "csv":
+        assert stdout.startswith("# ") and len(stdout.splitlines()) >= 2, f"`{line}`: {stdout[:200]}"
+    elif table:
+        assert stdout.strip(), f"`{line}` printed nothing"
+    elif stdout.strip():
+        json.loads(stdout)
+
+
 def test_every_sh_example_runs(workdir):
-    # checks each docs/cli.md ```sh command exits with its documented code and prints JSON or nothing
+    # checks each docs/cli.md ```sh command exits with its documented code and prints JSON or nothing (or the
+    # table its --format asks for)
     ran = 0
     for heading, line in commands():
         expected = re.search(r"#\s*exit (\d+)", line)
         r = subprocess.run(argv(line), cwd=workdir, capture_output=True, text=True, timeout=600)
         want = int(expected.group(1)) if expected else 0
         assert r.returncode == want, f"{heading}: `{line}` exited {r.returncode}, not {want}: {r.stderr[-2000:]}"
-        if r.stdout.strip():
-            json.loads(r.stdout)
+        check_output(line, r.stdout)
         ran += 1
     assert ran >= 30
 
@@ -106,14 +123,14 @@ def test_shipped_reference_is_the_documented_curve(tmp_path):
 
 
 def test_every_howto_example_runs(workdir):
-    # checks each ```sh command of the how-to pages (docs/howto/*.md) exits 0 and prints JSON or nothing
+    # checks each ```sh command of the how-to pages (docs/howto/*.md) exits 0 and prints JSON or nothing (or the
+    # table its --format asks for)
     ran = 0
     for page in sorted((SOURCE / "docs" / "howto").glob("*.md")):
         for heading, lines in blocks(page.read_text(), "sh"):
             for line in lines:
                 r = subprocess.run(argv(line), cwd=workdir, capture_output=True, text=True, timeout=600)
                 assert r.returncode == 0, f"{page.name} {heading}: `{line}` exited {r.returncode}: {r.stderr[-2000:]}"
-                if r.stdout.strip():
-                    json.loads(r.stdout)
+                check_output(line, r.stdout)
                 ran += 1
-    assert ran >= 10
+    assert ran >= 20

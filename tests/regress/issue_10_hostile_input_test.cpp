@@ -35,11 +35,12 @@ TEST(Issue10HostileInput, DeeplyNestedJsonIsRefusedByEveryReader) {
   }
 }
 
-// checks: /dev/zero and a FIFO as input files are refused at once as non-regular files naming - as the way to pipe.
+// checks: /dev/zero as an input file is refused at once as a non-regular file naming - as the way to pipe.
+// (A FIFO is read as a pipe by the command line since issue 25, tests/apps/test_terminal_cli.py; the
+// server still refuses it, tests/regress/issue_24_server_requests_test.cpp.)
 TEST(Issue10HostileInput, NonRegularInputsAreRefused) {
   TempDir dir;
-  ASSERT_EQ(::mkfifo((dir / "fifo").c_str(), 0600), 0);
-  for (const std::string& path : {std::string("/dev/zero"), (dir / "fifo").string()}) {
+  for (const std::string& path : {std::string("/dev/zero")}) {
     const ProcessResult r = hula({"info", path});
     EXPECT_EQ(r.exit_code, 3) << r.err;
     EXPECT_NE(message_of(r).find("give - to read standard input"), std::string::npos) << r.err;

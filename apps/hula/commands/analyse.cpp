@@ -32,6 +32,7 @@ struct AnalyseArgs {
   std::optional<double> fin_scale;
   std::optional<int> fin_density;
   std::string view = "auto";
+  std::string format = "json";
 };
 
 // Fins per comb when --fin-density is not given (docs/cli.md).
@@ -61,7 +62,10 @@ int run_analyse(const AnalyseArgs& a) {
   if (!a.svg.empty())
     for (const io::NamedFigure& f : io::curve_figures(subject, figure_options).figures)
       write_svg(a.svg, f.name, f.figure);
-  print_text(text);
+  if (const auto table = io::table_format_from_name(a.format))
+    print_text(io::format_table(io::analysis_table(io::json::parse_json_text(text, "the analysis")), *table));
+  else
+    print_text(text);
   return kExitOk;
 }
 }  // namespace
@@ -92,6 +96,9 @@ Command add_analyse(CLI::App& app) {
   add_integer_option(sub, "--fin-density", args->fin_density, 2, 100000, "Fins per kind, in [2, 100000] (default 120)");
   sub->add_option("--view", args->view, "View of curve.svg: auto | xy | yz | zx | isometric (default auto)")
       ->check(CLI::IsMember({"auto", "xy", "yz", "zx", "isometric"}));
+  add_format_option(sub, args->format,
+                    "one sample per line: t, s, point, T, N, B, curvature, torsion, curvature_derivative, speed, "
+                    "U, V; fins, features and planarity only in json");
   return {sub, [args, sub] {
             if (sub->count("--at") == 0 && sub->count("--samples") == 0)
               throw Error(Errc::InvalidArgument, "give --at or --samples", {.field = "at"});

@@ -15,6 +15,7 @@ namespace {
 struct ClosestArgs {
   std::string curve;
   std::vector<std::string> points;
+  std::string format = "json";
 };
 
 int run_closest(const ClosestArgs& a) {
@@ -32,7 +33,7 @@ int run_closest(const ClosestArgs& a) {
   Json doc = Json::object();
   doc["curve"] = a.curve;
   doc.update(io::closest_answer(file, points, dimensions));
-  print_json(doc);
+  print_formatted(doc, a.format, [](const Json& d) { return io::closest_table(d["results"]); });
   return kExitOk;
 }
 
@@ -43,6 +44,7 @@ Command add_closest(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("closest", "The point of a curve nearest to given points");
   sub->add_option("curve", a->curve, "Curve file (JSON)")->required();
   sub->add_option("--point", a->points, "A point x,y[,z] (repeat the option for several)")->required();
+  add_format_option(sub, a->format, "one result per line: point, t, closest, distance");
   return {sub, [a] { return run_closest(*a); }};
 }
 

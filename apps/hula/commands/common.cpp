@@ -22,12 +22,22 @@ void print_result(const Json& document, std::string_view output) {
 
 void print_text(std::string_view text) { io::write_stdout(text); }
 
-OutputFormat output_format_from_name(std::string_view name) {
-  if (name == "json") return OutputFormat::JsonDocument;
-  if (name == "jsonl") return OutputFormat::JsonLines;
-  if (name == "csv") return OutputFormat::Csv;
-  if (name == "text") return OutputFormat::Text;
-  throw CLI::ValidationError("--format " + std::string(name), "must be json, jsonl, csv or text");
+CLI::Option* add_format_option(CLI::App* sub, std::string& format, const std::string& records) {
+  return sub
+      ->add_option("--format", format,
+                   "json (default: the JSON document) | jsonl (" + records +
+                       ") | csv (a \"# name ...\" header, then one row per record) | text (one line per record)")
+      ->check(CLI::IsMember({"json", "jsonl", "csv", "text"}));
+}
+
+void print_formatted(const Json& document, std::string_view format,
+                     const std::function<io::Table(const Json&)>& make_table) {
+  const std::optional<io::TableFormat> table = io::table_format_from_name(format);
+  if (!table) {
+    print_json(document);
+    return;
+  }
+  print_text(io::format_table(make_table(document), *table));
 }
 
 namespace {

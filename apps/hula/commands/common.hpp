@@ -16,6 +16,7 @@
 #include "hula/core/vec.hpp"
 #include "hula/io/json_curve.hpp"
 #include "hula/io/option_text.hpp"
+#include "hula/io/table_text.hpp"
 
 namespace hula::cli {
 
@@ -45,11 +46,16 @@ inline constexpr long long kMaxThreads = 1024;
 /// The largest seed: seeds are signed 64-bit on the command line and in files.
 inline constexpr long long kMaxSeed = 9'223'372'036'854'775'807;
 
-/// Output shapes of commands that print records (--format).
-enum class OutputFormat { JsonDocument, JsonLines, Csv, Text };
-/// Parses json | jsonl | csv | text.
-/// @throws CLI::ValidationError naming --format
-[[nodiscard]] OutputFormat output_format_from_name(std::string_view name);
+/// Adds --format json|jsonl|csv|text (default json) to a command that prints records; `records` says
+/// what one record is in the help ("one sample per line").
+CLI::Option* add_format_option(CLI::App* sub, std::string& format, const std::string& records);
+/// Shows `choices` as the option's value set ("TEXT:{a,b}" in --help, the values `hula completion bash`
+/// completes) without checking them: the option's reader checks the value and names what it accepts.
+CLI::Option* set_choices(CLI::Option* option, const std::vector<std::string>& choices);
+/// Prints `document` (--format json) or the table `make_table` builds from it (jsonl, csv, text:
+/// io::format_table, the one table writer).
+void print_formatted(const Json& document, std::string_view format,
+                     const std::function<io::Table(const Json&)>& make_table);
 
 /// Prints a JSON document on stdout (io::format_json: 2-space indentation,
 /// arrays of numbers on one line, no -0.0, final newline).
@@ -119,7 +125,7 @@ struct Command {
 [[nodiscard]] Command add_reconstruct(CLI::App& app);
 /// `hula info`: the analysis of a curve file.
 [[nodiscard]] Command add_info(CLI::App& app);
-/// `hula demo`: the thesis's example curves (also the default command).
+/// `hula demo`: the thesis's example curves.
 [[nodiscard]] Command add_demo(CLI::App& app);
 /// `hula optimise`: a GA, NSGA-II or pagmo2 algorithm on a test problem or problem file.
 [[nodiscard]] Command add_optimise(CLI::App& app);
@@ -154,8 +160,11 @@ struct Command {
 [[nodiscard]] Command add_energy(CLI::App& app);
 /// `hula convert`: curves between JSON, STEP, IGES, DXF and SVG.
 [[nodiscard]] Command add_convert(CLI::App& app);
-/// `hula completion bash`: a completion script generated from the registered commands.
+/// `hula completion bash|man`: the completion script and the man pages, generated from the registered commands.
 [[nodiscard]] Command add_completion(CLI::App& app);
+/// "; did you mean `hula interpolate`?" (or "; did you mean --samples?") for the first word of the command
+/// line that names no command or option of `root` but is near one; empty when there is none.
+[[nodiscard]] std::string did_you_mean(const CLI::App& root, int argc, char** argv);
 /// Runs the demo and prints its JSON.
 int run_demo();
 

@@ -21,6 +21,7 @@ struct TwoCurves {
   std::string b;
   std::size_t samples = 1001;
   std::string mode = "parameter";
+  std::string format = "json";
 };
 
 int run_deviation(const TwoCurves& args) {
@@ -39,7 +40,7 @@ int run_deviation(const TwoCurves& args) {
   doc["a"] = args.a;
   doc["b"] = args.b;
   doc.update(io::deviation_answer(a, b, o, args.mode));
-  print_json(doc);
+  print_formatted(doc, args.format, [](const Json& d) { return io::record_table(d); });
   return kExitOk;
 }
 
@@ -63,9 +64,13 @@ Command add_deviation(CLI::App& app) {
   sub->add_option("b", a->b, "Compared curve file (JSON)")->required();
   sub->add_option("--samples", a->samples, "Samples, ends included, >= 2 (default 1001)")
       ->check(CLI::Range(std::size_t{2}, std::size_t{10'000'000}));
-  sub->add_option("--mode", a->mode,
-                  "parameter: A(s) vs B(s) at equal normalised parameters (thesis 10.2.2, default); "
-                  "closest: A(s) vs the nearest point of B");
+  set_choices(sub->add_option("--mode", a->mode,
+                              "parameter: A(s) vs B(s) at equal normalised parameters (thesis 10.2.2, default); "
+                              "closest: A(s) vs the nearest point of B"),
+              {"parameter", "closest"});
+  add_format_option(sub, a->format,
+                    "the summary as one record: a, b, mode, samples, max, max_at, mean, rms, "
+                    "mean_axis, max_axis");
   return {sub, [a] { return run_deviation(*a); }};
 }
 

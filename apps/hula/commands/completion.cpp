@@ -1,22 +1,76 @@
 // SPDX-License-Identifier: MIT
-// `hula completion bash`: a bash completion script generated from the CLI
-// definition itself (the subcommands and their options as registered with
-// CLI11), so it cannot drift from the program. Install it with
-//   hula completion bash > /etc/bash_completion.d/hula
-// or `source <(hula completion bash)`.
+// `hula completion bash` and `hula completion man`: the bash completion script
+// and the man pages, generated from the CLI definition itself (the commands,
+// their subcommands, options, help texts and the choices of enumerated
+// options as registered with CLI11, the tables `--help` prints), so they
+// cannot drift from the program. `cmake --install` installs both (the script
+// under share/bash-completion/completions, the pages under share/man/man1);
+// by hand: `source <(hula completion bash)`.
+#include <filesystem>
+#include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "commands/common.hpp"
+#include "hula/core/error.hpp"
+#include "hula/io/atomic_file.hpp"
+
+#ifndef HULA_VERSION
+#define HULA_VERSION "unknown"
+#endif
 
 namespace hula::cli {
 
 namespace {
 
-// "--a --b -o" for the options of `app` (long and short names, help excluded).
+// Every subcommand, option group included (CLI11's are nameless subcommands).
+std::vector<const CLI::App*> all_subcommands(const CLI::App& app) {
+  return app.get_subcommands([](const CLI::App*) { return true; });
+}
+
+// The named subcommands of `app`.
+std::vector<const CLI::App*> commands_of(const CLI::App& app) {
+  std::vector<const CLI::App*> out;
+  for (const CLI::App* sub : all_subcommands(app))
+    if (!sub->get_name().empty() && !sub->get_group().empty()) out.push_back(sub);
+  return out;
+}
+
+// The options of `app` and of its option groups (help flags included).
+std::vector<const CLI::Option*> options_of(const CLI::App& app) {
+  std::vector<const CLI::Option*> out;
+  for (const CLI::Option* o : app.get_options()) out.push_back(o);
+  for (const CLI::App* sub : all_subcommands(app))
+    if (sub->get_name().empty())
+      for (const CLI::Option* o : options_of(*sub)) out.push_back(o);
+  return out;
+}
+
+// The choices of an enumerated option: the set its IsMember check (or set_choices) shows in the
+// type name, "TEXT:{json,jsonl,csv,text}".
+std::vector<std::string> choices_of(const CLI::Option& o) {
+  const std::string type = o.get_type_name();
+  const std::size_t open = type.find(":{");
+  const std::size_t close = type.find('}', open == std::string::npos ? 0 : open);
+  std::vector<std::string> out;
+  if (open == std::string::npos || close == std::string::npos) return out;
+  std::string item;
+  for (std::size_t i = open + 2; i <= close; ++i) {
+    if (type[i] == ',' || i == close) {
+      if (!item.empty()) out.push_back(item);
+      item.clear();
+    } else {
+      item += type[i];
+    }
+  }
+  return out;
+}
+
+// "--a --b -o" for the named options of `app`.
 std::string option_words(const CLI::App& app) {
   std::string words;
-  for (const CLI::Option* o : app.get_options()) {
+  for (const CLI::Option* o : options_of(app)) {
     if (!o->nonpositional()) continue;
     for (const std::string& l : o->get_lnames()) words += (words.empty() ? "--" : " --") + l;
     for (const std::string& s : o->get_snames()) words += (words.empty() ? "-" : " -") + s;
@@ -24,28 +78,59 @@ std::string option_words(const CLI::App& app) {
   return words;
 }
 
-std::string bash_script(const CLI::App& root) {
-  std::string commands;
-  std::string cases;
-  for (const CLI::App* sub : root.get_subcommands([](const CLI::App*) { return true; })) {
-    commands += (commands.empty() ? "" : " ") + sub->get_name();
-    std::string words = option_words(*sub);
-    // Option groups are nameless nested apps holding options; named ones are sub-subcommands.
-    for (const CLI::App* nested : sub->get_subcommands([](const CLI::App*) { return true; }))
-      words += " " + (nested->get_name().empty() ? option_words(*nested) : nested->get_name());
-    cases += "    " + sub->get_name() + ") words=\"" + words + "\" ;;\n";
+// A bash single-quoted word.
+std::string bash_word(const std::string& s) {
+  std::string out = "'";
+  for (const char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+// The tables of the script for `app` at command path `path` ("hula", "hula doc export": bash refuses an
+// empty key).
+void tables(const CLI::App& app, const std::string& path, std::string& subs, std::string& opts, std::string& values) {
+  std::string names;
+  for (const CLI::App* sub : commands_of(app)) names += (names.empty() ? "" : " ") + sub->get_name();
+  subs += "    [" + bash_word(path) + "]=" + bash_word(names) + "\n";
+  opts += "    [" + bash_word(path) + "]=" + bash_word(option_words(app)) + "\n";
+  for (const CLI::Option* o : options_of(app)) {
+    const std::vector<std::string> choices = choices_of(*o);
+    if (choices.empty() || !o->nonpositional()) continue;
+    std::string words;
+    for (const std::string& c : choices) words += (words.empty() ? "" : " ") + c;
+    for (const std::string& l : o->get_lnames())
+      values += "    [" + bash_word(path + "|--" + l) + "]=" + bash_word(words) + "\n";
+    for (const std::string& s : o->get_snames())
+      values += "    [" + bash_word(path + "|-" + s) + "]=" + bash_word(words) + "\n";
   }
+  for (const CLI::App* sub : commands_of(app)) tables(*sub, path + " " + sub->get_name(), subs, opts, values);
+}
+
+std::string bash_script(const CLI::App& root) {
+  std::string subs, opts, values;
+  tables(root, "hula", subs, opts, values);
   std::string s;
   s += "# bash completion for hula, generated by `hula completion bash` from the command definitions.\n";
+  s += "# Completes commands and their subcommands (hula doc ex<TAB>), options (the command's and hula's),\n";
+  s += "# the values of enumerated options (--algorithm n<TAB>) and file names.\n";
   s += "_hula() {\n";
-  s += "  local cur=\"${COMP_WORDS[COMP_CWORD]}\" words=\"\"\n";
-  s += "  if [[ ${COMP_CWORD} -eq 1 ]]; then\n";
-  s += "    COMPREPLY=($(compgen -W \"" + commands + " " + option_words(root) + "\" -- \"$cur\"))\n";
-  s += "    return\n";
-  s += "  fi\n";
-  s += "  case \"${COMP_WORDS[1]}\" in\n" + cases + "  esac\n";
-  s += "  if [[ \"$cur\" == -* ]]; then\n";
-  s += "    COMPREPLY=($(compgen -W \"$words --error-format\" -- \"$cur\"))\n";
+  s += "  local -A subs=(\n" + subs + "  )\n";
+  s += "  local -A opts=(\n" + opts + "  )\n";
+  s += "  local -A values=(\n" + values + "  )\n";
+  s += "  local cur=\"${COMP_WORDS[COMP_CWORD]}\" prev=\"\" path=hula word i\n";
+  s += "  ((COMP_CWORD > 0)) && prev=\"${COMP_WORDS[COMP_CWORD - 1]}\"\n";
+  s += "  # The command path: the words before the cursor that name a (sub)command of the path so far.\n";
+  s += "  for ((i = 1; i < COMP_CWORD; i++)); do\n";
+  s += "    word=\"${COMP_WORDS[i]}\"\n";
+  s += "    if [[ \" ${subs[$path]} \" == *\" $word \"* ]]; then path=\"$path $word\"; fi\n";
+  s += "  done\n";
+  s += "  if [[ -n \"${values[$path|$prev]+set}\" ]]; then\n";
+  s += "    COMPREPLY=($(compgen -W \"${values[$path|$prev]}\" -- \"$cur\"))\n";
+  s += "  elif [[ -n \"${values[hula|$prev]+set}\" ]]; then\n";
+  s += "    COMPREPLY=($(compgen -W \"${values[hula|$prev]}\" -- \"$cur\"))\n";
+  s += "  elif [[ \"$cur\" == -* ]]; then\n";
+  s += "    COMPREPLY=($(compgen -W \"${opts[$path]} ${opts[hula]}\" -- \"$cur\"))\n";
+  s += "  elif [[ -n \"${subs[$path]}\" ]]; then\n";
+  s += "    COMPREPLY=($(compgen -W \"${subs[$path]}\" -- \"$cur\"))\n";
   s += "  else\n";
   s += "    COMPREPLY=($(compgen -f -- \"$cur\"))\n";
   s += "  fi\n";
@@ -54,15 +139,193 @@ std::string bash_script(const CLI::App& root) {
   return s;
 }
 
+// Text escaped for roff: backslashes doubled, a leading . or ' guarded.
+std::string roff(const std::string& text) {
+  std::string out;
+  for (const char c : text) out += c == '\\' ? std::string("\\e") : c == '-' ? std::string("\\-") : std::string(1, c);
+  if (!out.empty() && (out.front() == '.' || out.front() == '\'')) out = "\\&" + out;
+  return out;
+}
+
+// The first example of each command path in the ```sh and ```console blocks of docs/cli.md: the
+// commands the test apps_cli_examples runs.
+std::map<std::string, std::string> examples_by_command(const std::string& page, const CLI::App& root) {
+  std::map<std::string, std::string> out;
+  bool inside = false;
+  std::size_t start = 0;
+  while (start < page.size()) {
+    std::size_t end = page.find('\n', start);
+    if (end == std::string::npos) end = page.size();
+    std::string line = page.substr(start, end - start);
+    start = end + 1;
+    if (line == "```sh" || line == "```console") {
+      inside = true;
+      continue;
+    }
+    if (line == "```") inside = false;
+    if (!inside) continue;
+    if (line.starts_with("$ ")) line = line.substr(2);
+    if (!line.starts_with("hula ")) continue;
+    // The longest command path the words name.
+    std::string path;
+    const CLI::App* app = &root;
+    std::size_t at = 5;
+    for (;;) {
+      const std::size_t space = line.find(' ', at);
+      const std::string word = line.substr(at, space == std::string::npos ? std::string::npos : space - at);
+      const CLI::App* next = nullptr;
+      for (const CLI::App* sub : commands_of(*app))
+        if (sub->get_name() == word) next = sub;
+      if (next == nullptr) break;
+      path += (path.empty() ? "" : " ") + word;
+      app = next;
+      if (space == std::string::npos) break;
+      at = space + 1;
+    }
+    if (!path.empty() && !out.contains(path)) out[path] = line;
+  }
+  return out;
+}
+
+std::string man_page(const CLI::App& app, const std::string& path, const std::string& example) {
+  const std::string name = "hula-" + [&] {
+    std::string dashed = path;
+    for (char& c : dashed)
+      if (c == ' ') c = '-';
+    return dashed;
+  }();
+  std::string upper;
+  for (const char c : name) upper += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  std::string s;
+  s += ".\\\" Generated by `hula completion man` from the command's option table (what --help prints).\n";
+  s += ".TH " + upper + " 1 \"\" \"hula " HULA_VERSION "\" \"HulaHoops\"\n";
+  s += ".SH NAME\n" + roff(name) + " \\- " + roff(app.get_description()) + "\n";
+  s += ".SH SYNOPSIS\n.B hula " + roff(path) + "\n";
+  const std::vector<const CLI::App*> subs = commands_of(app);
+  if (!subs.empty()) s += "\\fISUBCOMMAND\\fR ";
+  s += "[\\fIOPTIONS\\fR]";
+  for (const CLI::Option* o : app.get_options())
+    if (!o->nonpositional()) s += " \\fI" + roff(o->get_name()) + "\\fR";
+  s += "\n.SH DESCRIPTION\n" + roff(app.get_description()) + ".\n";
+  if (!app.get_footer().empty()) s += ".PP\n" + roff(app.get_footer()) + "\n";
+  if (!subs.empty()) {
+    s += ".SH COMMANDS\n";
+    for (const CLI::App* sub : subs)
+      s += ".TP\n.B " + roff(sub->get_name()) + "\n" + roff(sub->get_description()) + " (see \\fBhula-" + roff(path) +
+           "-" + roff(sub->get_name()) + "\\fR(1)).\n";
+  }
+  std::string positionals, options;
+  for (const CLI::Option* o : options_of(app)) {
+    std::string entry = ".TP\n\\fB" + roff(o->get_name(false, true)) + "\\fR";
+    // The type without its set of choices ("TEXT", not "TEXT:{json,jsonl,...}"): the choices follow the
+    // description, where the lines can break.
+    std::string type = o->get_type_name();
+    const std::vector<std::string> choices = choices_of(*o);
+    if (const std::size_t set = type.find(":{"); set != std::string::npos)
+      type.erase(set, type.find('}', set) - set + 1);
+    if (!type.empty() && o->get_items_expected_max() > 0) entry += " \\fI" + roff(type) + "\\fR";
+    entry += "\n" + roff(o->get_description().empty() ? std::string("(no description)") : o->get_description());
+    if (!choices.empty()) {
+      std::string list;
+      for (const std::string& c : choices) list += (list.empty() ? "" : ", ") + c;
+      entry += " One of: " + roff(list) + ".";
+    }
+    entry += "\n";
+    (o->nonpositional() ? options : positionals) += entry;
+  }
+  if (!positionals.empty()) s += ".SH ARGUMENTS\n" + positionals;
+  s += ".SH OPTIONS\n" + options;
+  s += ".TP\n\\fB\\-\\-error\\-format\\fR \\fItext|json\\fR\nHow errors are printed on stderr (see \\fBhula\\fR(1)).\n";
+  s += ".SH EXAMPLE\n.nf\n" + roff(example) + "\n.fi\n";
+  s += ".SH EXIT STATUS\n0 ok, 2 usage error, 3 invalid input, 4 numerical failure, 5 internal error, 6 out of "
+       "memory.\n";
+  s += ".SH SEE ALSO\n\\fBhula\\fR(1), docs/cli.md\n";
+  return s;
+}
+
+// The command paths of `app` ("doc", "doc export", ...), depth first.
+void command_paths(const CLI::App& app, const std::string& path,
+                   std::vector<std::pair<std::string, const CLI::App*>>& out) {
+  for (const CLI::App* sub : commands_of(app)) {
+    const std::string sub_path = path.empty() ? sub->get_name() : path + " " + sub->get_name();
+    out.emplace_back(sub_path, sub);
+    command_paths(*sub, sub_path, out);
+  }
+}
+
+// The example of `path`: its own, else the first of its subcommands' (`hula doc` shows a `hula doc new`).
+const std::string* example_of(const std::string& path, const std::map<std::string, std::string>& examples) {
+  if (const auto own = examples.find(path); own != examples.end()) return &own->second;
+  for (const auto& [sub, line] : examples)
+    if (sub.starts_with(path + " ")) return &line;
+  return nullptr;
+}
+
+// Writes hula-<command>.1 for every command path of `root` under `dir`; returns how many. Every page has an
+// example: a command without one in the pages is refused, all of them named, before anything is written.
+std::size_t write_man_pages(const CLI::App& root, const std::filesystem::path& dir,
+                            const std::map<std::string, std::string>& examples) {
+  std::vector<std::pair<std::string, const CLI::App*>> paths;
+  command_paths(root, "", paths);
+  std::string missing;
+  for (const auto& [path, app] : paths)
+    if (example_of(path, examples) == nullptr) missing += (missing.empty() ? "`hula " : ", `hula ") + path + "`";
+  if (!missing.empty())
+    throw Error(Errc::InvalidArgument,
+                "--examples: no example in a ```sh or ```console block for " + missing + " (each man page shows one)",
+                {.field = "examples"});
+  std::filesystem::create_directories(dir);
+  for (const auto& [path, app] : paths) {
+    std::string file = "hula-" + path + ".1";
+    for (char& c : file)
+      if (c == ' ') c = '-';
+    io::write_file_atomically(dir / file, man_page(*app, path, *example_of(path, examples)), "--output-dir");
+  }
+  return paths.size();
+}
+
 }  // namespace
+
+CLI::Option* set_choices(CLI::Option* option, const std::vector<std::string>& choices) {
+  std::string set;
+  for (const std::string& c : choices) set += (set.empty() ? "{" : ",") + c;
+  return option->check(CLI::Validator([](const std::string&) { return std::string(); }, set + "}", "choices"));
+}
 
 Command add_completion(CLI::App& app) {
   auto shell = std::make_shared<std::string>();
-  CLI::App* sub = app.add_subcommand("completion", "Print a shell completion script (bash) for hula");
-  sub->add_option("shell", *shell, "The shell: bash")->required()->check(CLI::IsMember({"bash"}));
+  auto dir = std::make_shared<std::string>();
+  auto examples = std::make_shared<std::vector<std::string>>();
+  auto output = std::make_shared<std::string>("-");
+  CLI::App* sub = app.add_subcommand(
+      "completion", "Print the bash completion script, or write the man pages (hula-COMMAND.1) into a directory");
+  sub->add_option("shell", *shell, "bash: the completion script on stdout | man: the man pages into --output-dir")
+      ->required()
+      ->check(CLI::IsMember({"bash", "man"}));
+  sub->add_option("-o,--output", *output, "The completion script's file (bash; default - : standard output)");
+  sub->add_option("--output-dir", *dir, "Directory of the man pages (man)");
+  sub->add_option("--examples", *examples,
+                  "The pages whose ```sh and ```console blocks give each man page its example (man; docs/cli.md "
+                  "docs/server.md; the first page naming a command gives its example)");
   CLI::App* root = &app;
-  return {sub, [root] {
-            print_text(bash_script(*root));
+  return {sub, [root, shell, dir, examples, output] {
+            if (*shell == "bash") {
+              if (io::is_std_stream(*output))
+                print_text(bash_script(*root));
+              else
+                io::write_file_atomically(*output, bash_script(*root), "--output");
+              return kExitOk;
+            }
+            if (dir->empty() || examples->empty())
+              throw Error(Errc::InvalidArgument, "completion man needs --output-dir DIR and --examples docs/cli.md",
+                          {.field = dir->empty() ? "output-dir" : "examples"});
+            std::map<std::string, std::string> found;
+            for (const std::string& page : *examples) found.merge(examples_by_command(io::read_text_file(page), *root));
+            const std::size_t written = write_man_pages(*root, *dir, found);
+            Json out = Json::object();
+            out["directory"] = *dir;
+            out["pages"] = written;
+            print_json(out);
             return kExitOk;
           }};
 }

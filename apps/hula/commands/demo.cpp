@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// `hula demo` (the default command): the thesis's example curves and their
+// `hula demo`: the thesis's example curves and their
 // analysis as JSON (io::thesis_examples_json) —
 //  * 7.1.2 / eq. 29: the chord-length cubic spline through (0,0,0), (40,25,0),
 //    (80,-25,0), (120,0,0) with its cumulative chord lengths 47.17, 111.20, 158.37,
@@ -19,7 +19,7 @@ int run_demo() {
 }
 
 Command add_demo(CLI::App& app) {
-  CLI::App* sub = app.add_subcommand("demo", "Analyse the thesis's example curves (default command)");
+  CLI::App* sub = app.add_subcommand("demo", "Analyse the thesis's example curves");
   return {sub, [] { return run_demo(); }};
 }
 

@@ -305,7 +305,10 @@ int run_study(const Options& o) {
   const InterruptGuard guard;  // Ctrl-C ends the optimiser with its best so far, which is stored
   oli::StudyRunOptions options;
   options.cancel = &interrupt_token();
+  TerminalProgress progress;
+  if (progress.active()) options.on_generation = [&progress](const optim::GenerationLog& g) { progress.show(g); };
   commit(doc, "run study", [&](oli::Edit& e) { ran = oli::run_study(e, study, base, options); });
+  progress.finish();
   Json out = ran.result;
   out["cancelled"] = ran.cancelled;
   out["study_label"] = ran.study.value;

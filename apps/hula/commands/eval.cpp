@@ -22,53 +22,17 @@ struct EvalArgs {
   std::string format = "json";
 };
 
-// Prints the results in the chosen --format: the JSON document, one JSON
-// record per line (jsonl), CSV rows "t,x,y[,z],dx,dy[,dz],..." under a
-// comment line "# t x y z dx ..." (no commas: it survives `cut -d, -f2-`,
-// after which the rows read back as a points file), or text lines
+// Prints {"results": ...} or, in the other --formats, the table of io::derivative_table: one record per
+// line (jsonl), CSV rows "t,x,y[,z],dx,dy[,dz],..." under a comment line "# t x y z dx ..." (no commas: it
+// survives `cut -d, -f2-`, after which the rows read back as a points file), or text lines
 // "t = 0.5: [x, y, z] [dx, dy, dz]".
-void print_results(const Json& results, int dimension, int derivatives, OutputFormat format) {
-  if (format == OutputFormat::JsonDocument) {
-    Json doc = Json::object();
-    doc["results"] = results;
-    print_json(doc);
-    return;
-  }
-  std::string out;
-  if (format == OutputFormat::Csv) {
-    static constexpr const char* kAxes[] = {"x", "y", "z"};
-    out += "# t";
-    for (int k = 0; k <= derivatives; ++k)
-      for (int c = 0; c < dimension; ++c)
-        out += " " + (k == 0 ? std::string() : "d" + (k == 1 ? std::string() : std::to_string(k))) + kAxes[c];
-    out += '\n';
-  }
-  for (const Json& r : results) {
-    if (format == OutputFormat::JsonLines) {
-      out += io::format_json_line(r);
-      continue;
-    }
-    const std::string t = r["t"].dump();
-    if (format == OutputFormat::Csv) {
-      out += t;
-      for (const Json& d : r["derivatives"])
-        for (const Json& c : d) {
-          std::string v = io::format_json_line(c);
-          v.pop_back();  // the newline
-          out += "," + v;
-        }
-      out += '\n';
-    } else {
-      out += "t = " + t + ":";
-      for (const Json& d : r["derivatives"]) {
-        std::string v = io::format_json_line(d);
-        v.pop_back();
-        out += " " + v;
-      }
-      out += '\n';
-    }
-  }
-  print_text(out);
+void print_results(const Json& results, int dimension, int derivatives, std::string_view format) {
+  Json doc = Json::object();
+  doc["results"] = results;
+  print_formatted(doc, format, [&](const Json& d) {
+    return io::derivative_table(d["results"], static_cast<std::size_t>(dimension),
+                                static_cast<std::size_t>(derivatives));
+  });
 }
 
 int run_eval(const EvalArgs& a) {
@@ -109,7 +73,7 @@ int run_eval(const EvalArgs& a) {
     }
     print_results(io::law_results_to_json(ts, io::law_derivatives(*c.law(), c.law_parameter(), us, a.derivatives),
                                           c.law()->dimension(), a.derivatives),
-                  static_cast<int>(c.law()->dimension()), a.derivatives, output_format_from_name(a.format));
+                  static_cast<int>(c.law()->dimension()), a.derivatives, a.format);
     return kExitOk;
   }
   const int dim = c.dimension();
@@ -122,7 +86,7 @@ int run_eval(const EvalArgs& a) {
     r["derivatives"] = std::move(ders);
     results.push_back(std::move(r));
   }
-  print_results(results, dim, a.derivatives, output_format_from_name(a.format));
+  print_results(results, dim, a.derivatives, a.format);
   return kExitOk;
 }
 }  // namespace

@@ -26,6 +26,7 @@ struct LawArgs {
   std::string expression;
   std::string parameter = "t";
   std::string at;
+  std::string format = "json";
   int derivatives = 0;
   int print_derivative = -1;
   std::string roots;
@@ -70,6 +71,10 @@ std::pair<double, double> integration_interval(const std::string& text) {
 
 int run_law(const LawArgs& a) {
   if (!a.output.empty()) io::check_output_path(a.output, "--output");
+  if (a.format != "json" && a.at.empty())
+    throw Error(Errc::InvalidArgument,
+                "--format " + a.format + ": the table formats print the values at --at; give --at",
+                ErrorWhere{.field = "format"});
   io::LawQuery q;
   q.expression = a.expression;
   q.parameter = a.parameter;
@@ -93,7 +98,11 @@ int run_law(const LawArgs& a) {
   const io::LawAnswer answer = io::law_answer(q);
   // -o -: the curve file alone is what stdout carries.
   if (answer.curve) io::write_curve_file(a.output, *answer.curve);
-  if (!answer.curve || !io::is_std_stream(a.output)) print_json(answer.json);
+  if (!answer.curve || !io::is_std_stream(a.output))
+    print_formatted(answer.json, a.format, [&](const Json& d) {
+      return io::derivative_table(d["results"], d["dimension"].get<std::size_t>(),
+                                  static_cast<std::size_t>(a.derivatives));
+    });
   return kExitOk;
 }
 
@@ -105,6 +114,7 @@ Command add_law(CLI::App& app) {
   sub->add_option("expression", args->expression, "Law expression, e.g. 'vec(2*cos(t), 2*sin(t), 0.5*t)'")->required();
   sub->add_option("--parameter", args->parameter, "Parameter name (default t)");
   sub->add_option("--at", args->at, "Parameters t0,t1,... at which to evaluate");
+  add_format_option(sub, args->format, "one --at result per line, as hula eval; the other queries only in json");
   sub->add_option("--derivatives", args->derivatives, "Highest derivative order N in [0, 16] for --at (default 0)")
       ->check(CLI::Range(0, 16));
   sub->add_option("--print-derivative", args->print_derivative, "Print the N-th derivative expression, N in [0, 8]")

@@ -52,11 +52,11 @@ int run_match(const MatchArgs& a) {
   return kExitOk;
 }
 
-int run_match_torsion(const StudyArgs& a) {
+int run_match_torsion(const StudyArgs& a, const std::string& format) {
   const oli::StudyOutcome run = run_study_command(a, "match-curvature-torsion");
   if (a.log) io::write_run_log_file(run.log, *a.log);
   print_warnings(run.result);
-  print_json(run.result);
+  print_formatted(run.result, format, [](const Json& d) { return io::records_table(d["front"]); });
   return kExitOk;
 }
 
@@ -64,6 +64,7 @@ int run_match_torsion(const StudyArgs& a) {
 
 Command add_match_curvature_torsion(CLI::App& app) {
   auto a = std::make_shared<StudyArgs>();
+  auto format = std::make_shared<std::string>("json");
   CLI::App* sub = app.add_subcommand(
       "match-curvature-torsion",
       "Match prescribed curvature and torsion profiles as two objectives (NSGA-II, optional LM polish)");
@@ -71,7 +72,9 @@ Command add_match_curvature_torsion(CLI::App& app) {
   sub->footer(
       "--svg DIR writes curve_before.svg, curve_after.svg, profile.svg, torsion_profile.svg, pareto.svg, "
       "convergence.svg, and with a \"map\" fitness_map.svg, torsion_map.svg and fitness_map.csv.");
-  return {sub, [a] { return run_match_torsion(*a); }};
+  add_format_option(sub, *format,
+                    "one member of the front per line: curvature, torsion, polished; the curves only in json");
+  return {sub, [a, format] { return run_match_torsion(*a, *format); }};
 }
 
 Command add_match_curvature(CLI::App& app) {

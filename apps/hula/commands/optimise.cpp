@@ -40,6 +40,7 @@
 #include "hula/io/optimise_request.hpp"
 #include "hula/io/problem_file.hpp"
 #include "hula/io/run_report_json.hpp"
+#include "hula/optim/solve.hpp"
 
 namespace hula::cli {
 
@@ -68,6 +69,7 @@ struct OptimiseArgs {
   std::optional<std::string> log;
   std::optional<std::string> reference;
   bool progress = false;
+  std::string format = "json";
   IslandArgs islands;
 };
 
@@ -109,8 +111,10 @@ std::pair<double, double> parse_boost(const std::string& text) {
   return {b[0], b[1]};
 }
 
-// The settings of the command line, the log and progress streams as the per-generation callback.
-io::SolverRequest solver_request(const OptimiseArgs& a, std::optional<io::RunLogFile>& log) {
+// The settings of the command line, the log and progress streams (the --progress JSON lines, the
+// terminal's progress line) as the per-generation callback.
+io::SolverRequest solver_request(const OptimiseArgs& a, std::optional<io::RunLogFile>& log, TerminalProgress& terminal,
+                                 const std::vector<double>& reference) {
   io::SolverRequest q;
   q.algorithm = a.algorithm;
   q.population = a.population;
@@ -126,12 +130,14 @@ io::SolverRequest solver_request(const OptimiseArgs& a, std::optional<io::RunLog
   q.log = a.log.has_value();
   q.progress = a.progress;
   q.cancel = &interrupt_token();
-  if (a.log || a.progress)
-    q.on_generation = [&a, &log](const optim::GenerationLog& g) {
+  if (a.log || a.progress || terminal.active())
+    q.on_generation = [&a, &log, &terminal, &reference](const optim::GenerationLog& g) {
       if (log) log->append(g);
       if (a.progress) {
-        std::cerr << io::generation_progress_json(g).dump() << '\n';
+        std::cerr << io::generation_progress_json(g, reference).dump() << '\n';
         std::cerr.flush();
+      } else {
+        terminal.show(g);
       }
     };
   return q;
@@ -199,13 +205,18 @@ int run_optimise(const OptimiseArgs& a) {
   // The log streams to its temporary file as the run goes, and replaces the target only when the run is done.
   std::optional<io::RunLogFile> log;
   if (a.log && flexo) log.emplace(*a.log);
+  // The terminal's progress line: one run's generations (not the islands', which interleave), unless
+  // --progress prints its JSON lines there.
+  const std::vector<double> progress_reference = reference.value_or(std::vector<double>{});
+  TerminalProgress terminal(progress_reference, !islands && !a.progress);
   optim::SolveOptions options;
-  options.algorithm = io::solver_options(solver_request(a, log));
+  options.algorithm = io::solver_options(solver_request(a, log, terminal, progress_reference));
   if (islands) options.islands = island_options(a.islands);
   // pagmo never looks at the token: Ctrl-C ends it at once, as the shell would.
   std::optional<InterruptGuard> guard;
   if (!std::holds_alternative<optim::PagmoOptions>(named)) guard.emplace();
   std::optional<IslandRun> run = run_islands_or_solve(problem, options);
+  terminal.finish();
   if (log) log->commit();
   if (!run) return kExitOk;  // an MPI rank other than 0: rank 0 prints the result
   const optim::SolveResult& out = run->result;
@@ -216,7 +227,10 @@ int run_optimise(const OptimiseArgs& a) {
                                                       .algorithm = a.algorithm,
                                                       .problem = problem.name});
   if (islands) doc["islands"] = io::islands_to_json(*options.islands, out, problem, run->transport);
-  print_json(doc);
+  print_formatted(doc, a.format, [](const Json& d) {
+    if (d.contains("front")) return io::front_table(d["front"]);
+    return io::front_table(d["best"].is_null() ? Json::array() : Json::array({d["best"]}));
+  });
   return kExitOk;
 }
 
@@ -241,8 +255,9 @@ Command add_optimise(CLI::App& app) {
                      "Number of objectives of dtlz2 (default 3; at most 64)")
       ->needs(problem)
       ->excludes(file);
-  sub->add_option("--algorithm", a->algorithm,
-                  "ga-binary | ga-real | nsga2 | nelder-mead | pagmo-<cmaes|de|sade|pso|sga|moead|nsga2>")
+  set_choices(sub->add_option("--algorithm", a->algorithm,
+                              "ga-binary | ga-real | nsga2 | nelder-mead | pagmo-<cmaes|de|sade|pso|sga|moead|nsga2>"),
+              optim::solver_names())
       ->required();
   add_integer_option(sub, "--population", a->population, 1, kMaxPopulation,
                      "Individuals per generation (default: the algorithm's own; even for the Flexo algorithms; at "
@@ -269,6 +284,9 @@ Command add_optimise(CLI::App& app) {
   sub->add_option("--reference", a->reference, "Hypervolume reference r1,r2,... (default 1.1 per objective)");
   sub->add_flag("--progress", a->progress, "Print one JSON line per generation on stderr");
   add_island_options(sub, a->islands);
+  add_format_option(sub, a->format,
+                    "one member of the final front (or the best solution) per line: objectives, variables; the "
+                    "hypervolume and the report only in json");
   return {sub, [a] { return run_optimise(*a); }};
 }
 

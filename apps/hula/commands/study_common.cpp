@@ -7,11 +7,13 @@
 #include <atomic>
 #include <cerrno>
 #include <cstring>
+#include <iostream>
 #include <limits>
 #include <system_error>
 
 #include "hula/core/error.hpp"
 #include "hula/io/atomic_file.hpp"
+#include "hula/io/optimise_request.hpp"
 #include "hula/oli/fairing_baselines.hpp"
 
 namespace hula::cli {
@@ -83,6 +85,41 @@ void check_svg_directory(const std::filesystem::path& dir) {
     throw Error(Errc::IoError, "--svg: cannot create the directory '" + dir.string() + "'", {.field = "svg"});
 }
 
+TerminalProgress::TerminalProgress(std::vector<double> reference, bool enabled)
+    : active_(enabled && ::isatty(STDERR_FILENO) == 1), reference_(std::move(reference)) {}
+
+TerminalProgress::~TerminalProgress() {
+  try {
+    finish();
+  } catch (...) {  // a failing terminal leaves nothing to report the progress to
+  }
+}
+
+void TerminalProgress::finish() {
+  if (!active_) return;
+  if (pending_) draw(*pending_);
+  if (drawn_) std::cerr << '\n' << std::flush;
+  active_ = false;
+}
+
+void TerminalProgress::show(const optim::GenerationLog& g) {
+  if (!active_) return;
+  constexpr auto kRedraw = std::chrono::milliseconds(100);
+  if (drawn_ && std::chrono::steady_clock::now() - last_ < kRedraw) {
+    pending_ = g;
+    return;
+  }
+  draw(g);
+}
+
+void TerminalProgress::draw(const optim::GenerationLog& g) {
+  // Carriage return, the line, erase to the end of the line: the line is redrawn in place.
+  std::cerr << '\r' << io::generation_progress_line(g, reference_) << "\x1b[K" << std::flush;
+  drawn_ = true;
+  pending_.reset();
+  last_ = std::chrono::steady_clock::now();
+}
+
 io::StudyDocument load_study(const StudyArgs& args, std::string_view kind) {
   // Every output is checked before the study runs, not after.
   if (args.log) io::check_output_path(*args.log, "--log");
@@ -101,6 +138,8 @@ oli::StudyOutcome run_study_command(const StudyArgs& args, std::string_view kind
   options.wall_time_seconds = args.time.value_or(0.0);
   options.cancel = &interrupt_token();
   options.keep_log = args.log.has_value();
+  TerminalProgress progress;
+  if (progress.active()) options.on_generation = [&progress](const optim::GenerationLog& g) { progress.show(g); };
   oli::StudyOutcome outcome;
   try {
     const InterruptGuard guard;  // Ctrl-C ends the optimisers with their best so far, as --time does

@@ -10,6 +10,7 @@
 #include <signal.h>
 
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -60,6 +61,34 @@ class InterruptGuard {
  private:
   struct sigaction previous_ {};
   bool installed_ = false;
+};
+
+/// The progress line of a long run on a terminal: when standard error is a terminal, each generation's
+/// io::generation_progress_line (generation, evaluations, best; with several objectives the front size
+/// and hypervolume) redraws one line of stderr, at most every 0.1 s, and the last generation's line stays,
+/// ended by a newline, when the run ends. When stderr is not a terminal (a pipe, a file, a CI log)
+/// nothing is written.
+class TerminalProgress {
+ public:
+  /// `reference`: the hypervolume reference (empty: none); `enabled` false: never active.
+  explicit TerminalProgress(std::vector<double> reference = {}, bool enabled = true);
+  ~TerminalProgress();
+  TerminalProgress(const TerminalProgress&) = delete;
+  TerminalProgress& operator=(const TerminalProgress&) = delete;
+  /// True when stderr is a terminal.
+  [[nodiscard]] bool active() const noexcept { return active_; }
+  /// Shows `g` (or keeps it for the final line when the last redraw is too recent).
+  void show(const optim::GenerationLog& g);
+  /// Draws the last generation kept and ends the line (before the result is printed); idempotent.
+  void finish();
+
+ private:
+  void draw(const optim::GenerationLog& g);
+  bool active_ = false;
+  std::vector<double> reference_;
+  std::chrono::steady_clock::time_point last_{};
+  bool drawn_ = false;
+  std::optional<optim::GenerationLog> pending_;
 };
 
 /// Adds STUDY (positional, required), --seed, --threads, --time, --log and --svg to `sub`.

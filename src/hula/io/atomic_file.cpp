@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // POSIX implementation of the checked reads and atomic writes (see
-// atomic_file.hpp): open with O_NONBLOCK + fstat so a FIFO or device is
-// refused before it can block or stream forever, a capped read loop, and for
+// atomic_file.hpp): open with O_NONBLOCK + fstat so a FIFO (unless
+// set_pipe_inputs) or device is refused before it can block or stream forever, a capped read loop, and for
 // writing an fd-backed streambuf whose every write(2) is checked, mkstemp in
 // the target's directory, fsync, lstat re-check, rename, directory fsync.
 #include "hula/io/atomic_file.hpp"
@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include <array>
+#include <atomic>
 #include <cerrno>
 #include <csignal>
 #include <cstring>
@@ -143,6 +144,9 @@ class FdStreambuf : public std::streambuf {
 
 constexpr std::string_view kTempInfix = ".tmp-";
 
+// set_pipe_inputs: off unless a command line turns it on.
+std::atomic<bool> g_pipe_inputs{false};
+
 std::filesystem::path directory_of(const std::filesystem::path& path) {
   return path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
 }
@@ -151,22 +155,29 @@ std::filesystem::path directory_of(const std::filesystem::path& path) {
 
 bool is_std_stream(const std::filesystem::path& path) { return path.native() == kStdStreamName; }
 
+void set_pipe_inputs(bool on) noexcept { g_pipe_inputs.store(on, std::memory_order_relaxed); }
+
 std::string read_text_file(const std::filesystem::path& path, std::size_t max_bytes) {
   const bool is_stdin = is_std_stream(path);
   const std::string_view option = "path";
   int fd = STDIN_FILENO;
   std::optional<FdGuard> guard;
   if (!is_stdin) {
-    // O_NONBLOCK: opening a FIFO without a writer must not hang before the type check.
-    fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
+    // O_NONBLOCK: opening a FIFO without a writer must not hang before the type check. A pipe read as a file
+    // (set_pipe_inputs: a named pipe or a process substitution, `<(cat pts.csv)`) is opened blocking, so it
+    // waits for its writer as `cat` would instead of reading an empty end-of-file, and read once to its end.
+    struct stat named {};
+    const bool pipe =
+        g_pipe_inputs.load(std::memory_order_relaxed) && ::stat(path.c_str(), &named) == 0 && S_ISFIFO(named.st_mode);
+    fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NOCTTY | (pipe ? 0 : O_NONBLOCK));
     if (fd < 0) throw_io(path, option, "cannot open file", errno);
     guard.emplace(fd);
     struct stat st {};
     if (::fstat(fd, &st) != 0) throw_io(path, option, "cannot stat file", errno);
-    if (!S_ISREG(st.st_mode))
+    if (!S_ISREG(st.st_mode) && !(pipe && S_ISFIFO(st.st_mode)))
       throw_io(path, option,
                std::string("cannot read ") + file_kind(st.st_mode) + " as a file (give - to read standard input):", 0);
-    if (static_cast<unsigned long long>(st.st_size) > max_bytes)
+    if (S_ISREG(st.st_mode) && static_cast<unsigned long long>(st.st_size) > max_bytes)
       throw_io(path, option,
                "the input is larger than the " + std::to_string(max_bytes) + "-byte limit on an input file:", 0);
     const int flags = ::fcntl(fd, F_GETFL);

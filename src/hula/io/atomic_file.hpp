@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Whole-file I/O for the io module and the CLI, safe against hostile paths and
 // faults:
-// - reading: a regular file or `-` (standard input), never a device, FIFO or
-//   directory, and never more than a stated number of bytes;
+// - reading: a regular file or `-` (standard input), never a device,
+//   directory or FIFO (a pipe, when set_pipe_inputs allows it: a named FIFO
+//   or a process substitution such as `<(cat pts.csv)`, read once), and
+//   never more than a stated number of bytes;
 // - writing: a regular file replaced atomically (a temporary file in the same
 //   directory, fsync, rename over the target, directory fsync), or `-`
 //   (standard output). Symlinks, devices, FIFOs and directories are refused by
@@ -35,12 +37,18 @@ inline constexpr std::string_view kStdStreamName = "-";
 /// file is ~20 MB. Larger inputs are refused before they exhaust memory.
 inline constexpr std::size_t kMaxInputBytes = std::size_t{64} << 20;
 
-/// Reads a whole regular file, or standard input for `-`, as bytes.
+/// Whether read_text_file reads pipes (named FIFOs, process substitutions such as /dev/fd/63), once,
+/// to their end, under the same cap; a named FIFO waits for its writer, as `cat` would. Off by default:
+/// a server must never block on a path it is given. The command line turns it on for the commands a
+/// user runs from a shell (not `hula serve`).
+void set_pipe_inputs(bool on) noexcept;
+
+/// Reads a whole regular file (or pipe, see set_pipe_inputs), or standard input for `-`, as bytes.
 /// @param path file to read, or `-`
 /// @param max_bytes refuse inputs longer than this
 /// @returns the contents
 /// @throws hula::Error(Errc::IoError) naming the path and the reason: missing,
-///   permission denied, not a regular file (directory, device, FIFO, socket),
+///   permission denied, not a regular file (directory, device, FIFO unless set_pipe_inputs, socket),
 ///   longer than `max_bytes` (the cap is named), a read error; ErrorWhere.field is "path"
 [[nodiscard]] std::string read_text_file(const std::filesystem::path& path, std::size_t max_bytes = kMaxInputBytes);
 

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <span>
 #include <type_traits>
 #include <variant>
 
@@ -176,12 +178,62 @@ Json islands_to_json(const optim::IslandOptions& o, const optim::SolveResult& re
               {"per_island", std::move(per)}};
 }
 
-Json generation_progress_json(const optim::GenerationLog& g) {
+GenerationProgress generation_progress(const optim::GenerationLog& g, std::span<const double> reference) {
+  GenerationProgress p;
+  p.generation = g.generation;
+  p.evaluations = g.evaluations;
+  const std::size_t m = g.objectives;
+  const std::size_t n = g.size();
+  p.best.assign(m, std::numeric_limits<double>::quiet_NaN());
+  // The feasible, successfully evaluated members with finite objectives.
+  std::vector<double> feasible;
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool ok = g.failed[i] == 0 && (g.violation.empty() || g.violation[i] == 0.0);
+    if (!ok) continue;
+    const std::span<const double> f(g.objective_values.data() + i * m, m);
+    if (!std::all_of(f.begin(), f.end(), [](double v) { return std::isfinite(v); })) continue;
+    for (std::size_t k = 0; k < m; ++k)
+      if (!(f[k] >= p.best[k])) p.best[k] = f[k];
+    feasible.insert(feasible.end(), f.begin(), f.end());
+  }
+  if (m < 2 || feasible.empty() || feasible.size() / m > kMaxProgressFrontSort) return p;
+  const optim::ParetoRanking ranking = optim::non_dominated_sort(feasible, m);
+  std::vector<double> front;
+  for (std::size_t i = 0; i < ranking.rank.size(); ++i)
+    if (ranking.rank[i] == 0) front.insert(front.end(), feasible.begin() + i * m, feasible.begin() + (i + 1) * m);
+  p.front_size = front.size() / m;
+  if (reference.size() == m && m <= kMaxProgressHypervolumeObjectives)
+    p.hypervolume = optim::hypervolume(front, m, reference);
+  return p;
+}
+
+Json generation_progress_json(const optim::GenerationLog& g, std::span<const double> reference) {
   const optim::GenerationStatistics s = optim::statistics(g);
   Json line = Json::object();
   line["generation"] = g.generation;
   line["evaluations"] = g.evaluations;
   line["best"] = std::isfinite(s.best) ? Json(s.best) : Json(nullptr);
+  const GenerationProgress p = generation_progress(g, reference);
+  Json objectives = Json::array();
+  for (const double v : p.best) objectives.push_back(std::isfinite(v) ? Json(v) : Json(nullptr));
+  line["objectives"] = std::move(objectives);
+  if (g.objectives > 1) {
+    line["front_size"] = p.front_size ? Json(*p.front_size) : Json(nullptr);
+    line["hypervolume"] = p.hypervolume ? Json(*p.hypervolume) : Json(nullptr);
+  }
+  return line;
+}
+
+std::string generation_progress_line(const optim::GenerationLog& g, std::span<const double> reference) {
+  const GenerationProgress p = generation_progress(g, reference);
+  const auto number = [](double v) { return std::isfinite(v) ? format_number(v) : std::string("-"); };
+  std::string line = "generation " + std::to_string(p.generation) + "  evaluations " + std::to_string(p.evaluations);
+  if (p.best.size() == 1) return line + "  best " + number(p.best[0]);
+  line += "  best";
+  for (std::size_t k = 0; k < p.best.size() && k < 4; ++k) line += (k == 0 ? " " : ", ") + number(p.best[k]);
+  if (p.best.size() > 4) line += ", ...";
+  if (p.front_size) line += "  front " + std::to_string(*p.front_size);
+  if (p.hypervolume) line += "  hypervolume " + number(*p.hypervolume);
   return line;
 }
 

@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -69,7 +70,37 @@ struct SolverRequest {
 [[nodiscard]] Json islands_to_json(const optim::IslandOptions& options, const optim::SolveResult& result,
                                    const optim::Problem& problem, const std::string& transport);
 
-/// One progress line: {"generation", "evaluations", "best" (null when none is finite)}.
-[[nodiscard]] Json generation_progress_json(const optim::GenerationLog& generation);
+/// The progress figures of one generation.
+struct GenerationProgress {
+  std::size_t generation = 0;
+  std::size_t evaluations = 0;
+  /// The smallest value of each objective among the feasible members (NaN when none is finite).
+  std::vector<double> best{};
+  /// Several objectives: the feasible members no other feasible member dominates (absent with one
+  /// objective, or above kMaxProgressFrontSort feasible members, where the sort would slow the run).
+  std::optional<std::size_t> front_size{};
+  /// The hypervolume of that front w.r.t. `reference` (absent without a reference of the objectives'
+  /// size, or above kMaxProgressHypervolumeObjectives objectives).
+  std::optional<double> hypervolume{};
+};
+/// The largest population whose front a progress report sorts.
+inline constexpr std::size_t kMaxProgressFrontSort = 10'000;
+/// The most objectives whose hypervolume a progress report measures (optim::hypervolume is meant for <= 5).
+inline constexpr std::size_t kMaxProgressHypervolumeObjectives = 5;
+
+/// The progress of generation `g`; `reference` is the hypervolume reference (empty: none).
+[[nodiscard]] GenerationProgress generation_progress(const optim::GenerationLog& g,
+                                                     std::span<const double> reference = {});
+
+/// One progress line of `--progress`: {"generation", "evaluations", "best" (objective 0, null when none is
+/// finite), "objectives" (the best of each objective, null when none is finite), and with several objectives
+/// "front_size" and "hypervolume" (null when generation_progress leaves them out)}.
+[[nodiscard]] Json generation_progress_json(const optim::GenerationLog& generation,
+                                            std::span<const double> reference = {});
+
+/// The terminal's progress line (no newline): "generation 12  evaluations 1300  best 0.0123", with several
+/// objectives "generation 12  evaluations 1300  best 0.01, 0.2  front 23  hypervolume 0.651".
+[[nodiscard]] std::string generation_progress_line(const optim::GenerationLog& generation,
+                                                   std::span<const double> reference = {});
 
 }  // namespace hula::io

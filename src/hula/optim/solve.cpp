@@ -88,6 +88,12 @@ constexpr std::string_view kPagmoPrefix = "pagmo-";
 constexpr std::array<std::string_view, 7> kPagmoNames{"cmaes", "de", "sade", "pso", "sga", "moead", "nsga2"};
 }  // namespace
 
+std::vector<std::string> solver_names() {
+  std::vector<std::string> names{"ga-real", "ga-binary", "nsga2", "nelder-mead"};
+  for (const std::string_view pagmo : kPagmoNames) names.push_back(std::string(kPagmoPrefix) + std::string(pagmo));
+  return names;
+}
+
 SolverOptions solver_from_name(std::string_view name, std::string_view field) {
   if (name == "ga-real") return RealGaOptions{};
   if (name == "ga-binary") return BinaryGaOptions{};

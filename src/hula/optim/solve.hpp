@@ -38,6 +38,10 @@ using SolverOptions = std::variant<RealGaOptions, BinaryGaOptions, Nsga2Options,
 /// @throws hula::Error(Errc::InvalidArgument) naming `field` and listing the accepted names
 [[nodiscard]] SolverOptions solver_from_name(std::string_view name, std::string_view field = "algorithm");
 
+/// Every name solver_from_name reads, in its order ("ga-real", ..., "pagmo-nsga2"): for completions and
+/// listings.
+[[nodiscard]] std::vector<std::string> solver_names();
+
 /// The name of the algorithm of `options` (solver_from_name's spelling; pagmo's as "pagmo-<name>").
 [[nodiscard]] std::string solver_name(const SolverOptions& options);
 
