@@ -92,6 +92,14 @@ ToNurbsResult to_nurbs(const Law& law, std::string_view parameter, double a, dou
     ts.push_back(t);
     ss.push_back(f.at(t));
   }
+  // The end sample takes its derivatives from inside the interval: at a knot of a NURBS leaf the evaluator
+  // gives the right-hand derivatives, and where they jump (an interval ending at a break of the law's
+  // smoothness) the last Hermite segment would follow the next span and never converge.
+  {
+    const Sample inside = f.at(std::nextafter(b, a));
+    ss.back().d1 = inside.d1;
+    ss.back().d2 = inside.d2;
+  }
   const double check_tol = 0.5 * options.tolerance;
   for (int round = 0;; ++round) {
     std::vector<double> nts{ts[0]};
