@@ -37,8 +37,8 @@ Response offset(const Request& request) {
   const Json body = request.json();
   json::reject_unknown_members(body, json::JsonPath(), {"curve", "distance", "tolerance", "trim"});
   const curve::Curve c = read_curve_member(body, "curve");
-  const double distance = json::get_number(json::require_member(body, json::JsonPath(), "distance"),
-                                           json::root_path("distance"));
+  const double distance =
+      json::get_number(json::require_member(body, json::JsonPath(), "distance"), json::root_path("distance"));
   diffgeom::OffsetOptions options;
   options.tolerance = number_member(body, "tolerance", options.tolerance);
   if (const Json* trim = json::optional_member(body, "trim")) {
@@ -63,8 +63,8 @@ Response helical_offset(const Request& request) {
     options.frame = *frame;
   }
   options.tolerance = number_member(body, "tolerance", options.tolerance);
-  return json_response(200, io::helical_offset_answer(c, law_member(body, "distance", ""),
-                                                      law_member(body, "twist", "0"), options));
+  return json_response(
+      200, io::helical_offset_answer(c, law_member(body, "distance", ""), law_member(body, "twist", "0"), options));
 }
 
 Vec3 point_member(const Json& body, const char* field) {
@@ -81,8 +81,8 @@ Response orthotomic(const Request& request) {
   const Json body = request.json();
   json::reject_unknown_members(body, json::JsonPath(), {"curve", "pole", "k", "tolerance"});
   const curve::Curve c = read_curve_member(body, "curve");
-  return json_response(200, io::orthotomic_answer(c, point_member(body, "pole"), number_member(body, "k", 2.0),
-                                                  mapping_options(body)));
+  return json_response(
+      200, io::orthotomic_answer(c, point_member(body, "pole"), number_member(body, "k", 2.0), mapping_options(body)));
 }
 
 Response polar(const Request& request) {
