@@ -80,6 +80,9 @@ class NurbsCurve:
     def reduce_degree(self, tolerance: float) -> dict[str, Any]:
         """Degree − 1 within tolerance (non-rational curves): {"curve", "error_bound" (max change bound),
         "bezier_bound" (the per-piece part)}; NumericalFailureError naming tolerance when it cannot be met."""
+    def to_law(self) -> dict[str, Any]:
+        """The curve written out as an exact law of t (`hula edit to-law`): {"law" (a Law), "expression", "spans",
+        "degree", "max_difference", "expression_length"}."""
     def split(self, t: float) -> tuple[NurbsCurve, NurbsCurve]:
         """The pieces on [a, t] and [t, b], each clamped at t."""
     def reverse(self) -> NurbsCurve: ...

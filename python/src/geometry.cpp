@@ -24,6 +24,7 @@
 #include "hula/diffgeom/analysis.hpp"
 #include "hula/intrinsic/natural_equations.hpp"
 #include "hula/io/curve_analysis_json.hpp"
+#include "hula/io/curve_edits.hpp"
 #include "hula/io/intersection_json.hpp"
 #include "hula/io/json_curve.hpp"
 #include "hula/io/points_file.hpp"
@@ -446,6 +447,18 @@ void register_geometry(py::module_& m) {
           "The curve one degree lower while it moves by at most `tolerance` (model units, >= 0): a dict\n"
           "{\"curve\", \"error_bound\" (a guaranteed bound of the change), \"bezier_bound\"}. Non-rational\n"
           "curves only; raises when no such curve is within the tolerance.")
+      .def(
+          "to_law",
+          [](const NurbsCurve& c) {
+            const io::LawConversionAnswer a = io::law_from_nurbs(curve::Curve(c), "curve");
+            py::dict d = to_python(a.report);
+            d["law"] = parse_law(a.expression, {"t"}, law::Context());
+            d["expression"] = a.expression;
+            return d;
+          },
+          "The curve written out as an exact law of t (a rational polynomial per knot span, `hula edit to-law`):\n"
+          "a dict {\"law\" (a Law), \"expression\", \"spans\", \"degree\", \"max_difference\" (max |law(t) - C(t)|\n"
+          "over 1,001 samples), \"expression_length\"}.")
       .def(
           "split",
           [](const NurbsCurve& c, double t) {

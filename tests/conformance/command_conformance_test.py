@@ -9,6 +9,11 @@ door calls the same io entry):
   hulahoops.intersect / distance (io::intersection_answer, io::distance_answer);
 - a law's values and derivatives: `hula law EXPR --at ... --derivatives N` and
   POST /api/law (io::law_evaluation_json);
+- the curves made from a curve: `hula offset`, `hula helical-offset`, `hula orthotomic`,
+  `hula polar`, POST /api/offset, /api/helical-offset, /api/orthotomic, /api/polar and
+  hulahoops.offset, helical_offset, orthotomic, polar_map (io::offset_answer,
+  helical_offset_answer, orthotomic_answer, polar_answer; the commands write the made
+  curve to -o, read back here, where the route and the binding answer it as "curve");
 - a curve from its natural equations: `hula reconstruct` and POST /api/reconstruct
   (io::reconstruction_answer; the CLI prints the points, integration and fit members
   the route answers, the route adds the fitted curve);
@@ -46,6 +51,12 @@ LAWS = [("sin(t)*t", "0,0.5,1,2", 3), ("vec(cos(t), sin(t), 0.5*t)", "0,1,2.5", 
 # Natural equations (κ, τ, L): a circle of radius 1 (planar), a helix, a curve whose torsion varies.
 RECONSTRUCTIONS = [("1", "0", 2 * math.pi, None), ("0.5", "0.25", 10.0, [0, 2.5, 10]),
                    ("1 + 0.5*sin(s)", "0.3*cos(2*s)", 5.0, None)]
+# Offsets (curve, distance: NURBS with loops and cusps, a law curve exact), helical offsets (curve, distance, twist,
+# frame) and mappings (curve, kind, point, k or radius).
+OFFSETS = [("random_planar_nurbs_0", -0.4), ("planar_bezier_s", 0.3), ("rational_circle", 0.25)]
+HELICAL = [("law_helix", "0.3", "4*t", "frenet"), ("random_space_nurbs_0", "0.1 + 0.05*t", "2*t", "frenet"),
+           ("law_helix", "0.3", "0", "bishop"), ("planar_bezier_s", "0.2", "3*t", "bishop")]
+MAPPINGS = [("planar_bezier_s", "orthotomic", [0.5, -1.0], 2.0), ("rational_circle", "polar", [0.1, 0.2], 1.5)]
 # A constrained two-objective problem file's single-objective cousin and a plain one.
 PROBLEMS = [
     ({"name": "shifted-sphere", "variables": [{"name": "x", "lower": -2, "upper": 2},
@@ -159,6 +170,41 @@ def reconstructions(hula, server, failures):
     return len(RECONSTRUCTIONS)
 
 
+def constructions(hula, server, failures, folder):
+    out = str(pathlib.Path(folder) / "made.json")
+    for name, d in OFFSETS:
+        cli = run(hula, "offset", str(curve_file(name)), "--distance", repr(d))
+        del cli["curve"]
+        http = post(server, "/api/offset", {"curve": curve_json(name), "distance": d})
+        py = plain(hh.offset(curve_json(name), d))
+        compare(failures, f"offset {name} {d}", [("CLI", cli), ("HTTP", http), ("Python", py)])
+        if name == "rational_circle" and not (len(cli["trimmed"]) == 1 and cli["trimmed"][0]["closed"]):
+            failures.append(f"offset {name}: a circle's offset is not one closed piece: {cli['trimmed']}")
+    for name, d, twist, frame in HELICAL:
+        cli = run(hula, "helical-offset", str(curve_file(name)), "--distance", d, "--twist", twist, "--frame", frame,
+                  "-o", out)
+        del cli["input"], cli["output"]
+        cli["curve"] = json.loads(pathlib.Path(out).read_text())
+        http = post(server, "/api/helical-offset", {"curve": curve_json(name), "distance": d, "twist": twist,
+                                                    "frame": frame})
+        py = plain(hh.helical_offset(curve_json(name), d, twist=twist, frame=frame))
+        compare(failures, f"helical-offset {name}", [("CLI", cli), ("HTTP", http), ("Python", py)])
+    for name, kind, point, value in MAPPINGS:
+        text = ",".join(repr(float(x)) for x in point)
+        if kind == "orthotomic":
+            cli = run(hula, "orthotomic", str(curve_file(name)), "--pole", text, "--k", repr(value), "-o", out)
+            http = post(server, "/api/orthotomic", {"curve": curve_json(name), "pole": point, "k": value})
+            py = plain(hh.orthotomic(curve_json(name), point, k=value))
+        else:
+            cli = run(hula, "polar", str(curve_file(name)), "--centre", text, "--radius", repr(value), "-o", out)
+            http = post(server, "/api/polar", {"curve": curve_json(name), "centre": point, "radius": value})
+            py = plain(hh.polar_map(curve_json(name), point, radius=value))
+        del cli["input"], cli["output"]
+        cli["curve"] = json.loads(pathlib.Path(out).read_text())
+        compare(failures, f"{kind} {name}", [("CLI", cli), ("HTTP", http), ("Python", py)])
+    return len(OFFSETS) + len(HELICAL) + len(MAPPINGS)
+
+
 def job(server, body):
     status, _, text = server.request("POST", "/api/jobs", body)
     assert status == 202, text
@@ -194,6 +240,7 @@ def main():
         checked = intersections(hula, server, failures)
         checked += laws(hula, server, failures)
         checked += reconstructions(hula, server, failures)
+        checked += constructions(hula, server, failures, folder)
         checked += optimisations(hula, server, failures, folder)
     for f in failures:
         print("FAIL:", f)

@@ -190,6 +190,57 @@ class ApiTest(unittest.TestCase):
         e = self.call("POST", "/api/distance", {"a": circle, "b": line, "tolerance": 0}, expect=400)
         self.assertEqual(e["error"]["where"]["field"], "tolerance")
 
+    # checks the construction routes against closed forms on the law circle of radius 2 (exact answers, evaluated
+    # back through POST /api/law): its offset by 0.5 (left, inwards) is the circle of radius 1.5, one closed trimmed
+    # piece and no cusp; its orthotomic about the centre is the circle of radius 4, its polar map about the unit circle the circle of
+    # radius 1/2, and its helical offset (Frenet, d = 0.5, no twist) lies 0.5 from it in the plane; bad members are
+    # named
+    def test_constructions(self):
+        circle = {"kind": "law", "expression": "vec(2*cos(t), 2*sin(t))", "parameter": "t",
+                  "domain": [0, 2 * math.pi]}
+        at = [0.1 + 0.7 * k for k in range(9)]
+
+        def radii(curve):
+            values = self.call("POST", "/api/law", {"expression": curve["expression"], "at": at})
+            return [math.hypot(*r["derivatives"][0][:2]) for r in values["results"]]
+
+        body = self.call("POST", "/api/offset", {"curve": circle, "distance": 0.5})
+        self.assertTrue(body["exact"])
+        self.assertEqual(body["cusps"], [])
+        self.assertEqual(len(body["trimmed"]), 1)
+        self.assertTrue(body["trimmed"][0]["closed"])
+        for r in radii(body["raw"]):
+            self.assertAlmostEqual(r, 1.5, places=13)
+        body = self.call("POST", "/api/offset", {"curve": circle, "distance": 0.5, "trim": False})
+        self.assertEqual(body["trimmed"], [])
+        body = self.call("POST", "/api/orthotomic", {"curve": circle, "pole": [0, 0]})
+        self.assertEqual((body["mapping"], body["k"]), ("orthotomic", 2))
+        for r in radii(body["curve"]):
+            self.assertAlmostEqual(r, 4.0, places=13)
+        body = self.call("POST", "/api/polar", {"curve": circle, "centre": [0, 0], "radius": 1})
+        for r in radii(body["curve"]):
+            self.assertAlmostEqual(r, 0.5, places=13)
+        body = self.call("POST", "/api/helical-offset", {"curve": circle, "distance": 0.5, "frame": "bishop"})
+        self.assertEqual((body["frame"], body["distance"], body["twist"]), ("bishop", "0.5", "0"))
+        self.assertTrue(body["exact"])
+        for r in radii(body["curve"]):
+            self.assertAlmostEqual(abs(r - 2.0), 0.5, places=13)
+        e = self.call("POST", "/api/offset", {"curve": circle}, expect=400)
+        self.assertEqual(e["error"]["where"]["field"], "distance")
+        e = self.call("POST", "/api/offset", {"curve": circle, "distance": 1, "trim": "yes"}, expect=400)
+        self.assertEqual(e["error"]["where"]["field"], "trim")
+        e = self.call("POST", "/api/offset", {"curve": circle, "distance": 1, "tolerance": 1}, expect=400)
+        self.assertEqual(e["error"]["where"]["field"], "tolerance")
+        e = self.call("POST", "/api/helical-offset", {"curve": circle, "distance": 1, "frame": "twisty"}, expect=400)
+        self.assertEqual(e["error"]["where"]["field"], "frame")
+        e = self.call("POST", "/api/polar", {"curve": circle, "centre": [0, 0], "radius": -1}, expect=400)
+        self.assertEqual(e["error"]["where"]["field"], "radius")
+        e = self.call("POST", "/api/orthotomic", {"curve": {"kind": "law"}, "pole": [0, 0]}, expect=400)
+        self.assertEqual(e["error"]["where"]["field"], "curve.expression")
+        bad = {"kind": "nurbs", "degree": 1, "knots": [0, 0, 2, 1, 1], "control_points": [[0, 0], [1, 0], [2, 0]]}
+        e = self.call("POST", "/api/polar", {"curve": bad, "centre": [0, 0]}, expect=422)
+        self.assertTrue(e["error"]["where"]["field"].startswith("curve"), e)
+
     # checks reconstruction against the closed form circle of kappa = 1 (radius 1, quarter turn at s = pi/2), the fit
     # within the default 1e-6 of the size (the half circle's box is 2 by 1: diagonal sqrt(5))
     def test_reconstruct(self):

@@ -5,8 +5,9 @@
 // tolerance), elevate (degree elevation), reduce-degree (within a tolerance),
 // split (knot insertion to
 // multiplicity p), reverse and reparam (affine map of the knots), and to-nurbs (a law or natural curve
-// converted to a NURBS within a tolerance, intrinsic::to_nurbs). Each writes curve files and prints a JSON
-// summary of the result. The edits are io::edit_curve's.
+// converted to a NURBS within a tolerance, intrinsic::to_nurbs) and to-law (a NURBS written out as an exact law
+// curve, io::law_from_nurbs). Each writes curve files and prints a JSON summary of the result. The edits are
+// io::edit_curve's.
 #include <memory>
 
 #include "commands/common.hpp"
@@ -101,6 +102,24 @@ int run_to_nurbs(const EditArgs& a) {
   return run_edit(a, {.edit = io::CurveEdit::ToNurbs, .tolerance = a.tolerance}, "to-nurbs");
 }
 
+// to-law: the NURBS as a law curve file, with the conversion's report.
+int run_to_law(const EditArgs& a) {
+  const curve::Curve file = io::read_curve_file(a.curve);
+  const io::LawConversionAnswer answer = io::law_from_nurbs(file, a.curve);
+  io::write_curve_file(a.output, answer.curve);
+  Json doc = Json::object();
+  doc["operation"] = "to-law";
+  doc.update(answer.report);
+  Json curve = Json::object();
+  curve["output"] = a.output;
+  curve["kind"] = "law";
+  curve["parameter"] = "t";
+  curve["domain"] = Json::array({answer.curve.domain().start, answer.curve.domain().end});
+  doc["curve"] = std::move(curve);
+  print_result(doc, a.output);
+  return kExitOk;
+}
+
 CLI::App* operation(CLI::App* edit, const char* name, const char* help, EditArgs& a, const char* output_help) {
   CLI::App* op = edit->add_subcommand(name, help);
   op->add_option("curve", a.curve, "NURBS curve file (JSON)")->required();
@@ -115,7 +134,7 @@ Command add_edit(CLI::App& app) {
   CLI::App* edit = app.add_subcommand(
       "edit",
       "Edit a NURBS curve: insert-knot, refine, remove-knots, elevate, reduce-degree, split, reverse, reparam, "
-      "to-nurbs");
+      "to-nurbs, to-law");
   edit->require_subcommand(1);
   const char* out = "Curve file to write (atomically)";
   CLI::App* insert = operation(edit, "insert-knot", "Insert a knot (the curve is unchanged)", *a, out);
@@ -149,9 +168,12 @@ Command add_edit(CLI::App& app) {
   CLI::App* to_nurbs =
       operation(edit, "to-nurbs", "Convert a law or natural (exact) curve to a NURBS within --tolerance", *a, out);
   to_nurbs->add_option("--tolerance", a->tolerance, "Largest distance NURBS-curve, model units, in (0, 1]")->required();
-  return {edit, [a, insert, refine, remove, remove_at, elevate, reduce, split, reverse, reparam, to_nurbs] {
+  CLI::App* to_law = operation(
+      edit, "to-law", "Write a NURBS curve out as an exact law curve (a rational polynomial per knot span)", *a, out);
+  return {edit, [a, insert, refine, remove, remove_at, elevate, reduce, split, reverse, reparam, to_nurbs, to_law] {
             check_outputs(*a, split->parsed());
             if (to_nurbs->parsed()) return run_to_nurbs(*a);
+            if (to_law->parsed()) return run_to_law(*a);
             if (insert->parsed()) return run_insert_knot(*a);
             if (refine->parsed()) return run_refine(*a);
             if (remove->parsed()) return run_remove_knots(*a, remove_at->count() > 0);

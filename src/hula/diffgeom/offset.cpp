@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
+#include <span>
 #include <string>
 #include <utility>
 #include <variant>
@@ -36,6 +38,73 @@ constexpr int kVerifySamples = 1000;
 
 // Component k (1-based) of a 2- or 3-vector law.
 law::Law component(const law::Law& v, int k) { return law::term(v, k); }
+
+// The cusps of the offset by d, increasing: |C'|³ − d (x'y'' − y'x'') = 0 ⇔ dκ = 1. A sign change that is no
+// root is a curvature jump across 1/d at a knot, where the offset turns back as sharply: a cusp too.
+std::vector<double> offset_cusps(const ParentLaw& p, Interval dom, double distance) {
+  const law::Law dx = law::derivative(component(p.r, 1), p.parameter);
+  const law::Law dy = law::derivative(component(p.r, 2), p.parameter);
+  const law::Law ddx = law::derivative(dx, p.parameter);
+  const law::Law ddy = law::derivative(dy, p.parameter);
+  const law::Law speed2 = dx * dx + dy * dy;
+  const law::Law g = speed2 * law::sqrt(speed2) - distance * (dx * ddy - dy * ddx);
+  const law::RootReport roots = law::find_roots(g, p.parameter, dom.start, dom.end);
+  std::vector<double> out = roots.roots;
+  out.insert(out.end(), roots.unresolved.begin(), roots.unresolved.end());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// The breaks of an offset's NURBS fit, increasing: the knots where it is below C2 and its cusps (where a fit
+// across the turn would crawl). A cusp within 1e-9 of the domain of a knot or of another break is that break
+// (a curvature jump at a knot is found as a sign change beside it; the knot is the exact place).
+std::vector<double> fit_breaks(const curve::Curve& curve, const ParentLaw& p, std::span<const double> cusps) {
+  const Interval dom = curve.domain();
+  const double min_span = 1e-9 * (dom.end - dom.start);
+  std::vector<double> out = p.printable ? std::vector<double>{} : detail::low_continuity_knots(curve.nurbs(), 1);
+  for (double c : cusps) {
+    const bool near = c - dom.start <= min_span || dom.end - c <= min_span ||
+                      std::any_of(out.begin(), out.end(), [&](double b) { return std::abs(b - c) <= min_span; });
+    if (!near) out.push_back(c);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// The point C + d n and its parameter derivative (1 − dκ) C' of the planar offset by d, κ signed.
+std::array<Vec3, 2> offset_point(const curve::Curve& c, double d, double t) {
+  const std::vector<Vec3> D = c.derivatives(t, 2);
+  const double speed = std::hypot(D[1].x, D[1].y);
+  const double kappa = (D[1].x * D[2].y - D[1].y * D[2].x) / (speed * speed * speed);
+  return {D[0] + d * Vec3{-D[1].y, D[1].x, 0.0} / speed, (1.0 - d * kappa) * D[1]};
+}
+
+// Newton on C(s) + d n(s) = C(u) − d n(u) from a crossing of the two fitted offsets; s and u are left as they
+// are unless the iteration converges inside the domain.
+void refine_crossing(const curve::Curve& c, double d, Interval dom, double& s, double& u) {
+  double a = s;
+  double b = u;
+  for (int it = 0; it < 20; ++it) {
+    const auto [P, dP] = offset_point(c, d, a);
+    const auto [Q, dQ] = offset_point(c, -d, b);
+    const Vec3 f = P - Q;
+    // [dP −dQ] (δa, δb) = −f in x, y.
+    const double det = -dP.x * dQ.y + dQ.x * dP.y;
+    if (!(std::abs(det) > 0.0)) return;
+    const double da = (f.x * dQ.y - f.y * dQ.x) / det;
+    const double db = (dP.x * f.y - dP.y * f.x) / det;
+    a += da;
+    b -= db;
+    if (!dom.contains(a) || !dom.contains(b)) return;
+    if (std::abs(da) + std::abs(db) <= 1e-15 * (dom.end - dom.start)) break;
+  }
+  const auto P = offset_point(c, d, a)[0];
+  const auto Q = offset_point(c, -d, b)[0];
+  if (norm(P - Q) <= 1e-9 * (1.0 + std::abs(d))) {
+    s = a;
+    u = b;
+  }
+}
 
 }  // namespace
 
@@ -70,13 +139,13 @@ PlanarOffset planar_offset(const curve::Curve& curve, double distance, const Off
   const law::Law r = detail::plane_law(p, curve);
   const law::Law offset = planar_offset_law(r, p.parameter, distance);
 
+  const std::vector<double> cusps = offset_cusps(p, dom, distance);
   // A law curve's offset is a law curve (exact) when its text stays within the parser's limit.
   detail::DerivedCurve derived = [&] {
     try {
-      // The offset of a NURBS is one derivative less smooth than it: fit it span by span where that is below C2.
-      return detail::derived_curve(
-          offset, p, true, dom, options.tolerance,
-          p.printable ? std::vector<double>{} : detail::low_continuity_knots(curve.nurbs(), 1));
+      // The offset of a NURBS is one derivative less smooth than it: fit it span by span where that is below C2,
+      // and on either side of its cusps.
+      return detail::derived_curve(offset, p, true, dom, options.tolerance, fit_breaks(curve, p, cusps));
     } catch (const Error&) {
       detail::rethrow_undefined("curve", "the planar offset", " (C' = 0 there)");
     }
@@ -92,19 +161,7 @@ PlanarOffset planar_offset(const curve::Curve& curve, double distance, const Off
     out.deviation = std::max(out.deviation, norm(raw.evaluate(t) - (d[0] + distance * n)));
   }
   if (!options.trim) return out;
-
-  // Cusps: |C'|³ − d (x'y'' − y'x'') = 0 ⇔ dκ = 1. A sign change that is no root is a curvature jump
-  // across 1/d at a knot, where the offset turns back as sharply: a cusp too.
-  const law::Law dx = law::derivative(component(p.r, 1), p.parameter);
-  const law::Law dy = law::derivative(component(p.r, 2), p.parameter);
-  const law::Law ddx = law::derivative(dx, p.parameter);
-  const law::Law ddy = law::derivative(dy, p.parameter);
-  const law::Law speed2 = dx * dx + dy * dy;
-  const law::Law g = speed2 * law::sqrt(speed2) - distance * (dx * ddy - dy * ddx);
-  const law::RootReport cusp_roots = law::find_roots(g, p.parameter, dom.start, dom.end);
-  out.cusps = cusp_roots.roots;
-  out.cusps.insert(out.cusps.end(), cusp_roots.unresolved.begin(), cusp_roots.unresolved.end());
-  std::sort(out.cusps.begin(), out.cusps.end());
+  out.cusps = cusps;
 
   // An open curve's offset also changes from valid to invalid where it crosses the circle of radius |d| about an
   // end point (beyond it the end is nearer than d): roots of |O − C(end)|² − d².
@@ -125,12 +182,36 @@ PlanarOffset planar_offset(const curve::Curve& curve, double distance, const Off
   const nurbs::IntersectionResult self = nurbs::self_intersect(raw, io);
   out.loops = self.points;
 
-  // Split points: cusps, end-circle crossings, both parameters of every self-intersection and the ends of overlaps.
+  // A point of the offset also becomes nearer than |d| to the curve where a part of the curve that bends back
+  // reaches it from the other side: there it lies on the opposite offset C − d n too. Those crossings of the
+  // raw offset with the opposite one (fitted the same way) split it as well; without them a piece running into
+  // the other side's reach of a curled open curve (or a self-crossing closed one) was kept whole.
+  // The opposite offset only locates the crossings (refined on the exact offsets below), so where its cusps keep
+  // the fit from reaching the tolerance a coarser fit does.
+  const law::Law opposite_law = planar_offset_law(r, p.parameter, -distance);
+  const std::vector<double> breaks = fit_breaks(curve, p, offset_cusps(p, dom, -distance));
+  std::optional<detail::DerivedCurve> opposite;
+  for (double tol = options.tolerance; !opposite; tol *= 10.0) {
+    try {
+      opposite = detail::derived_curve(opposite_law, p, true, dom, tol, breaks);
+    } catch (const Error& e) {
+      if (e.code() != Errc::NumericalFailure || tol >= 1e-3) throw;
+    }
+  }
+  nurbs::IntersectOptions across_options;
+  across_options.tolerance.resabs = 4.0 * std::max(options.tolerance, opposite->deviation);
+  nurbs::IntersectionResult across = nurbs::intersect(raw, opposite->curve.nurbs(), across_options);
+  for (nurbs::CurveIntersection& x : across.points) refine_crossing(curve, distance, dom, x.s, x.t);
+
+  // Split points: cusps, end-circle crossings, both parameters of every self-intersection and the ends of overlaps,
+  // and the crossings of the opposite offset.
   std::vector<double> cuts{dom.start, dom.end};
   cuts.insert(cuts.end(), out.cusps.begin(), out.cusps.end());
   cuts.insert(cuts.end(), end_crossings.begin(), end_crossings.end());
   for (const auto& x : self.points) cuts.insert(cuts.end(), {x.s, x.t});
   for (const auto& o : self.overlaps) cuts.insert(cuts.end(), {o.s0, o.s1, o.t0, o.t1});
+  for (const auto& x : across.points) cuts.push_back(x.s);
+  for (const auto& o : across.overlaps) cuts.insert(cuts.end(), {o.s0, o.s1});
   std::sort(cuts.begin(), cuts.end());
   const double min_span = 1e-12 * (dom.end - dom.start);
   std::vector<double> unique;

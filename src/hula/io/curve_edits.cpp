@@ -3,9 +3,13 @@
 #include "hula/io/curve_edits.hpp"
 
 #include <algorithm>
+#include <array>
 
 #include "hula/core/error.hpp"
 #include "hula/intrinsic/natural_curve.hpp"
+#include "hula/law/convert.hpp"
+#include "hula/law/parser.hpp"
+#include "hula/law/tape.hpp"
 #include "hula/nurbs/approximate.hpp"
 #include "hula/nurbs/elevate.hpp"
 #include "hula/nurbs/interpolate.hpp"
@@ -84,6 +88,38 @@ CurveEditAnswer edit_curve(const curve::Curve& c, const std::string& path, const
       break;
     }
   }
+  return out;
+}
+
+LawConversionAnswer law_from_nurbs(const curve::Curve& c, const std::string& path) {
+  if (c.has_exact_evaluation())
+    throw Error(Errc::InvalidArgument,
+                path + " is a " + std::string(c.kind_name()) +
+                    " curve, held by its laws already: only a NURBS "
+                    "(or Bézier, interpolated, Hermite) curve is written out as a law",
+                ErrorWhere{.field = "curve"});
+  const nurbs::NurbsCurve& n = c.nurbs();
+  const law::Context context;
+  const law::Law l = law::explicit_from_nurbs(n, context, "t");
+  LawConversionAnswer out{curve::Curve::from_law(law::print(l), "t", n.domain()), law::print(l)};
+  // The difference is measured on the text as the law curve holds it (parsed back), not on the built law.
+  const law::CurveEvaluator exact(law::parse(out.expression, context), "t", 0);
+  const Interval d = n.domain();
+  double worst = 0.0;
+  for (int i = 0; i <= 1000; ++i) {
+    const double t = i == 1000 ? d.end : d.start + (d.end - d.start) * i / 1000.0;
+    std::array<Vec3, 1> v{};
+    (void)exact.derivatives(t, v);
+    worst = std::max(worst, norm(v[0] - n.evaluate(t)));
+  }
+  std::size_t spans = 0;
+  const auto U = n.knots().values();
+  for (std::size_t i = 0; i + 1 < U.size(); ++i)
+    if (U[i] < U[i + 1]) ++spans;
+  out.report["spans"] = spans;
+  out.report["degree"] = n.degree();
+  out.report["max_difference"] = worst;
+  out.report["expression_length"] = out.expression.size();
   return out;
 }
 

@@ -60,6 +60,21 @@ struct CurveEditAnswer {
 [[nodiscard]] CurveEditAnswer edit_curve(const curve::Curve& curve, const std::string& path,
                                          const CurveEditRequest& request);
 
+/// NURBS → law (`hula edit to-law`, hulahoops.NurbsCurve.to_law): the curve written out as a law of t
+/// (law::explicit_from_nurbs, printed) and that law as a law curve on the curve's domain.
+struct LawConversionAnswer {
+  curve::Curve curve;      ///< the law curve (its stand-in NURBS within curve::kApproximationTolerance)
+  std::string expression;  ///< its law text, of parameter "t"
+  /// {"spans" (rational polynomial pieces), "degree", "max_difference" (max |law(t) − C(t)| over 1,001 samples of
+  /// the domain, the law evaluated exactly), "expression_length"}.
+  Json report = Json::object();
+};
+
+/// @param path the curve's file, named in errors
+/// @throws hula::Error(Errc::InvalidArgument) naming "curve" for a law or natural curve (already exact); as
+///   curve::Curve::from_law (ParseError naming "expression" when the text passes the parser's 64 KiB limit)
+[[nodiscard]] LawConversionAnswer law_from_nurbs(const curve::Curve& curve, const std::string& path);
+
 /// {"output": path, "degree", "control_points" (count), "knots", "domain"}: a written curve as `hula edit`
 /// reports it.
 [[nodiscard]] Json edited_curve_summary(const std::string& path, const nurbs::NurbsCurve& curve);

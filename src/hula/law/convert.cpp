@@ -6,13 +6,16 @@
 //   H3 = (s³ − 2s⁴ + s⁵)/2,     H4 = −4s³ + 7s⁴ − 3s⁵,   H5 = 10s³ − 15s⁴ + 6s⁵.
 #include "hula/law/convert.hpp"
 
+#include <array>
 #include <cmath>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "hula/core/error.hpp"
 #include "hula/law/tape.hpp"
 #include "hula/nurbs/interpolate.hpp"
+#include "hula/nurbs/refine.hpp"
 
 namespace hula::law {
 
@@ -92,6 +95,14 @@ ToNurbsResult to_nurbs(const Law& law, std::string_view parameter, double a, dou
     ts.push_back(t);
     ss.push_back(f.at(t));
   }
+  // The end sample takes its derivatives from inside the interval: at a knot of a NURBS leaf the evaluator
+  // gives the right-hand derivatives, and where they jump (an interval ending at a break of the law's
+  // smoothness) the last Hermite segment would follow the next span and never converge.
+  {
+    const Sample inside = f.at(std::nextafter(b, a));
+    ss.back().d1 = inside.d1;
+    ss.back().d2 = inside.d2;
+  }
   const double check_tol = 0.5 * options.tolerance;
   for (int round = 0;; ++round) {
     std::vector<double> nts{ts[0]};
@@ -161,6 +172,75 @@ ToNurbsResult to_nurbs(const Law& law, std::string_view parameter, double a, dou
     return to_nurbs(law, parameter, a, b, denser);
   }
   return r;
+}
+
+namespace {
+
+// Power-basis coefficients a_j of the Bernstein coefficients b_k of degree p: a_j = C(p, j) Σ_k (−1)^(j−k) C(j, k) b_k.
+std::vector<double> power_basis(const std::vector<double>& b) {
+  const std::size_t p = b.size() - 1;
+  auto binomial = [](std::size_t n, std::size_t k) {
+    double r = 1.0;
+    for (std::size_t i = 1; i <= k; ++i) r = r * static_cast<double>(n - k + i) / static_cast<double>(i);
+    return r;
+  };
+  std::vector<double> a(p + 1, 0.0);
+  for (std::size_t j = 0; j <= p; ++j) {
+    double sum = 0.0;
+    for (std::size_t k = 0; k <= j; ++k) sum += ((j - k) % 2 == 0 ? 1.0 : -1.0) * binomial(j, k) * b[k];
+    a[j] = binomial(p, j) * sum;
+  }
+  return a;
+}
+
+Law horner(const std::vector<double>& a, const Law& s, const Context& context) {
+  Law acc = context.constant(a.back());
+  for (std::size_t j = a.size() - 1; j-- > 0;) acc = acc * s + a[j];
+  return acc;
+}
+
+Law balanced(const std::vector<Law>& spans, const std::vector<double>& starts, const Law& t, const Context& context,
+             std::size_t lo, std::size_t hi) {
+  if (lo == hi) return spans[lo];
+  const std::size_t mid = (lo + hi + 1) / 2;
+  return piecewise(less(t, context.constant(starts[mid])), balanced(spans, starts, t, context, lo, mid - 1),
+                   balanced(spans, starts, t, context, mid, hi));
+}
+
+}  // namespace
+
+Law explicit_from_nurbs(const nurbs::NurbsCurve& curve, const Context& context, std::string_view parameter) {
+  const Law t = context.parameter(parameter);
+  const bool rational = curve.is_rational();
+  const int dim = curve.dimension() == 2 ? 2 : 3;
+  std::vector<Law> spans;
+  std::vector<double> starts;
+  for (const nurbs::NurbsCurve& piece : nurbs::decompose_to_bezier(curve)) {
+    const Interval d = piece.domain();
+    const Law s = (t - d.start) / (d.end - d.start);
+    const std::span<const Vec3> P = piece.control_points();
+    const std::span<const double> W = piece.weights();
+    std::array<std::vector<double>, 3> xyz;
+    std::vector<double> w;
+    for (std::size_t k = 0; k < P.size(); ++k) {
+      const double wk = rational && !W.empty() ? W[k] : 1.0;
+      // Rational: the homogeneous coordinates w P; the weights their own polynomial.
+      const double m = rational ? wk : 1.0;
+      xyz[0].push_back(m * P[k].x);
+      xyz[1].push_back(m * P[k].y);
+      xyz[2].push_back(m * P[k].z);
+      w.push_back(wk);
+    }
+    std::array<Law, 3> c{horner(power_basis(xyz[0]), s, context), horner(power_basis(xyz[1]), s, context),
+                         horner(power_basis(xyz[2]), s, context)};
+    if (rational) {
+      const Law den = horner(power_basis(w), s, context);
+      for (Law& ci : c) ci = ci / den;
+    }
+    spans.push_back(dim == 2 ? vec(c[0], c[1]) : vec(c[0], c[1], c[2]));
+    starts.push_back(d.start);
+  }
+  return balanced(spans, starts, t, context, 0, spans.size() - 1);
 }
 
 }  // namespace hula::law

@@ -26,6 +26,16 @@ namespace hula::law {
 [[nodiscard]] Law from_nurbs(const nurbs::NurbsCurve& curve, const Context& context, std::string_view parameter = "t",
                              std::string_view name = {});
 
+/// NURBS → law, written out: the curve as a printable law of `parameter` (no curve leaf), one rational polynomial
+/// per knot span — its Bézier piece in the power basis of the span's local parameter s = (t − u_i)/(u_{i+1} − u_i),
+/// in Horner form — the spans chosen by piecewise(t < u_i, …, …) in a balanced tree. On the domain it evaluates as
+/// the curve to rounding (relative to the control points' size); outside it the end spans' polynomials continue.
+/// print() of it parses back (law::parse) to the same values.
+/// @throws as Context::parameter (a reserved name)
+/// Example: the line from (0, 0) to (2, 0) on [0, 1] is vec(2*t, 0).
+[[nodiscard]] Law explicit_from_nurbs(const nurbs::NurbsCurve& curve, const Context& context,
+                                      std::string_view parameter = "t");
+
 /// Options of to_nurbs().
 struct ToNurbsOptions {
   /// Largest allowed distance |law(t) − curve(t)| in model units. Default 1e-6 (resabs); valid > 0.

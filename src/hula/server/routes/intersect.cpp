@@ -19,18 +19,6 @@ namespace {
 
 namespace json = io::json;
 
-// The curve under `field`, errors naming it ("a.control_points[2]: ...").
-curve::Curve read_curve(const Json& body, const char* field) {
-  const Json& value = json::require_member(body, json::JsonPath(), field);
-  try {
-    return io::curve_from_json(value);
-  } catch (const Error& e) {
-    ErrorWhere where = e.where();
-    where.field = where.field.empty() ? std::string(field) : std::string(field) + "." + where.field;
-    throw Error(e.code(), std::string(field) + ": " + e.message(), where);
-  }
-}
-
 nurbs::IntersectOptions read_options(const Json& body) {
   nurbs::IntersectOptions o;
   if (const Json* t = json::optional_member(body, "tolerance")) {
@@ -48,21 +36,32 @@ nurbs::IntersectOptions read_options(const Json& body) {
 Response intersect(const Request& request) {
   const Json body = request.json();
   json::reject_unknown_members(body, json::JsonPath(), {"a", "b", "tolerance"});
-  const curve::Curve a = read_curve(body, "a");
+  const curve::Curve a = read_curve_member(body, "a");
   std::optional<curve::Curve> b;
-  if (json::optional_member(body, "b") != nullptr) b = read_curve(body, "b");
+  if (json::optional_member(body, "b") != nullptr) b = read_curve_member(body, "b");
   return json_response(200, io::intersection_answer(a, b ? &*b : nullptr, read_options(body)));
 }
 
 Response distance(const Request& request) {
   const Json body = request.json();
   json::reject_unknown_members(body, json::JsonPath(), {"a", "b", "tolerance"});
-  const curve::Curve a = read_curve(body, "a");
-  const curve::Curve b = read_curve(body, "b");
+  const curve::Curve a = read_curve_member(body, "a");
+  const curve::Curve b = read_curve_member(body, "b");
   return json_response(200, io::distance_answer(a, b, read_options(body)));
 }
 
 }  // namespace
+
+curve::Curve read_curve_member(const Json& body, const char* field) {
+  const Json& value = json::require_member(body, json::JsonPath(), field);
+  try {
+    return io::curve_from_json(value);
+  } catch (const Error& e) {
+    ErrorWhere where = e.where();
+    where.field = where.field.empty() ? std::string(field) : std::string(field) + "." + where.field;
+    throw Error(e.code(), std::string(field) + ": " + e.message(), where);
+  }
+}
 
 void add_intersect(Router& router, const Context&) {
   router.add("POST", "/api/intersect", intersect);
