@@ -16,6 +16,10 @@ namespace hula::studies {
 
 namespace {
 
+double elapsed_seconds(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 void check_range(bool ok, const char* field, double value, const char* range) {
   if (!ok)
     throw Error(Errc::InvalidOption, std::string("lm.") + field + " = " + format_number(value) + " must be " + range,
@@ -89,16 +93,29 @@ class CeresResiduals final : public ceres::CostFunction {
   std::size_t& evaluations_;
 };
 
-// Stops Ceres once the mean |r| reaches the target (Ceres's own tolerances are relative).
+// Stops Ceres once the mean |r| reaches the target (Ceres's own tolerances are relative), or once the time
+// budget (0 = none) has run out after an accepted step.
 class TargetCallback final : public ceres::IterationCallback {
  public:
-  explicit TargetCallback(double cost_target) : cost_target_(cost_target) {}
+  TargetCallback(double cost_target, double budget_seconds, std::chrono::steady_clock::time_point start)
+      : cost_target_(cost_target), budget_seconds_(budget_seconds), start_(start) {}
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& summary) override {
-    return summary.cost <= cost_target_ ? ceres::SOLVER_TERMINATE_SUCCESSFULLY : ceres::SOLVER_CONTINUE;
+    if (summary.cost <= cost_target_) return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
+    if (summary.iteration > 0 && summary.step_is_successful) accepted_ = true;
+    if (accepted_ && budget_seconds_ > 0.0 && elapsed_seconds(start_) >= budget_seconds_) {
+      out_of_time_ = true;
+      return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
+    }
+    return ceres::SOLVER_CONTINUE;
   }
+  [[nodiscard]] bool out_of_time() const noexcept { return out_of_time_; }
 
  private:
   double cost_target_;
+  double budget_seconds_;
+  std::chrono::steady_clock::time_point start_;
+  bool accepted_ = false;
+  bool out_of_time_ = false;
 };
 
 }  // namespace
@@ -121,6 +138,8 @@ void LmOptions::validate() const {
   check_range(std::isfinite(initial_lambda) && initial_lambda > 0.0, "initial_lambda", initial_lambda,
               "finite and > 0");
   check_range(difference_step > 0.0 && difference_step <= 1e-2, "difference_step", difference_step, "in (0, 1e-2]");
+  check_range(std::isfinite(time_budget_seconds) && time_budget_seconds >= 0.0, "time_budget_seconds",
+              time_budget_seconds, "finite and >= 0");
 }
 
 LmResult refine_levenberg_marquardt(const LeastSquaresProblem& problem, std::span<const double> start,
@@ -218,6 +237,8 @@ LmResult refine_levenberg_marquardt(const LeastSquaresProblem& problem, std::spa
         need_jacobian = true;
         if (reduction < options.relative_tolerance)
           return end_with(Termination::Converged, "a step lowered the cost by less than relative_tolerance");
+        if (options.time_budget_seconds > 0.0 && elapsed_seconds(clock_start) >= options.time_budget_seconds)
+          return end_with(Termination::WallTime, "time_budget_seconds ran out");
       } else {
         lambda *= 4.0;
         if (lambda > 1e16) return end_with(Termination::Stagnation, "damping overflow: no step lowers the cost");
@@ -264,7 +285,7 @@ LmResult refine_levenberg_marquardt(const LeastSquaresProblem& problem, std::spa
       so.num_threads = 1;
       // mean |r| <= rms |r| = √(‖r‖² / m): a cost ½‖r‖² <= ½ m t² guarantees the target; the true mean is reported.
       const double t = options.target_mean;
-      TargetCallback stop(0.5 * static_cast<double>(m) * t * t);
+      TargetCallback stop(0.5 * static_cast<double>(m) * t * t, options.time_budget_seconds, clock_start);
       so.callbacks.push_back(&stop);
       ceres::Solver::Summary summary;
       ceres::Solve(so, &cp, &summary);
@@ -273,6 +294,8 @@ LmResult refine_levenberg_marquardt(const LeastSquaresProblem& problem, std::spa
         throw Error(Errc::NumericalFailure, "the residuals are undefined at the solver's result", {.field = "start"});
       if (mean_abs(r) <= t)
         end_with(Termination::TargetReached, "target_mean reached");
+      else if (stop.out_of_time())
+        end_with(Termination::WallTime, "time_budget_seconds ran out");
       else if (summary.termination_type == ceres::CONVERGENCE)
         end_with(Termination::Converged, summary.message);
       else if (summary.termination_type == ceres::NO_CONVERGENCE)
@@ -282,7 +305,7 @@ LmResult refine_levenberg_marquardt(const LeastSquaresProblem& problem, std::spa
     }
   }
   result.mean_after = mean_abs(r);
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
+  result.seconds = elapsed_seconds(clock_start);
   return result;
 }
 

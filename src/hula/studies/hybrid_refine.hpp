@@ -82,6 +82,10 @@ struct LmOptions {
   bool exact_jacobian = true;
   /// Finite-difference step relative to max(1, |x_j|); in (0, 1e-2]. Default 1e-6.
   double difference_step = 1e-6;
+  /// Wall-clock budget of the solve, seconds; 0 = none (default), otherwise finite and > 0. Checked after
+  /// every step once a step has been accepted (the first accepted step always runs); a solve it ends reports
+  /// Termination::WallTime and keeps its best point. Not part of the study files (a caller's limit).
+  double time_budget_seconds = 0.0;
 
   /// @throws hula::Error(Errc::InvalidOption) naming the field and its value when outside the ranges above
   void validate() const;
@@ -99,7 +103,8 @@ struct LmResult {
   std::size_t evaluations = 0;
   /// Why it stopped: TargetReached, Converged (an accepted step lowered ‖r‖² by less than relative_tolerance,
   /// or Ceres's CONVERGENCE), MaxGenerations (max_iterations steps), Stagnation (the damping overflowed: no
-  /// step lowers the cost; Ceres's FAILURE), with a message (Ceres's own for its solver).
+  /// step lowers the cost; Ceres's FAILURE), WallTime (LmOptions::time_budget_seconds ran out), with a
+  /// message (Ceres's own for its solver).
   optim::Termination termination = optim::Termination::MaxGenerations;
   std::string message{};
   /// Wall time in seconds.
