@@ -96,10 +96,25 @@ TEST_P(LmTermination, TimeBudget) {
   EXPECT_LT(r.iterations, 40U);  // the default 200 would run on to (1, 1)
   for (const double bad : {-1.0, std::nan("")}) {
     o.time_budget_seconds = bad;
-    HULA_EXPECT_ERROR(
-        static_cast<void>(refine_levenberg_marquardt(kRosenbrock, std::vector<double>{-1.2, 1.0}, o)),
-        Errc::InvalidOption, "time_budget_seconds");
+    HULA_EXPECT_ERROR(static_cast<void>(refine_levenberg_marquardt(kRosenbrock, std::vector<double>{-1.2, 1.0}, o)),
+                      Errc::InvalidOption, "time_budget_seconds");
   }
+}
+
+// checks: one-sided differences (forward_differences) still take Rosenbrock's residuals from (−1.2, 1) to
+// (1, 1) (the closed-form minimum), with fewer residual evaluations than central differences need
+TEST_P(LmTermination, ForwardDifferences) {
+  LmOptions central = with(GetParam());
+  central.target_mean = 1e-8;
+  LmOptions forward = central;
+  forward.forward_differences = true;
+  const LmResult c = refine_levenberg_marquardt(kRosenbrock, std::vector<double>{-1.2, 1.0}, central);
+  const LmResult f = refine_levenberg_marquardt(kRosenbrock, std::vector<double>{-1.2, 1.0}, forward);
+  EXPECT_EQ(f.termination, Termination::TargetReached) << f.message;
+  EXPECT_NEAR(f.variables[0], 1.0, 1e-6);
+  EXPECT_NEAR(f.variables[1], 1.0, 1e-6);
+  EXPECT_LT(static_cast<double>(f.evaluations) / static_cast<double>(f.iterations),
+            static_cast<double>(c.evaluations) / static_cast<double>(c.iterations));
 }
 
 INSTANTIATE_TEST_SUITE_P(Solvers, LmTermination, ::testing::Values(LsqSolver::ClampedLm, LsqSolver::Ceres),

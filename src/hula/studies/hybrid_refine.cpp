@@ -26,16 +26,27 @@ void check_range(bool ok, const char* field, double value, const char* range) {
                 {.field = std::string("lm.") + field});
 }
 
-// Central-difference Jacobian column j at x (one-sided where a bound is within the step), false if the residuals
-// are undefined on both sides.
+// Jacobian column j at x by central differences (one-sided where a bound is within the step), or, given the
+// residuals r_at of x (LmOptions::forward_differences), by a one-sided difference to the side that is inside
+// the bounds; false if the residuals are undefined there.
 template <class Eval>
 bool difference_column(const std::vector<optim::Variable>& vars, std::span<const double> x, std::size_t j, double step,
                        std::vector<double>& x_fd, Eigen::VectorXd& r_plus, Eigen::VectorXd& r_minus, Eval&& eval,
-                       Eigen::Ref<Eigen::VectorXd> column) {
+                       Eigen::Ref<Eigen::VectorXd> column, const Eigen::VectorXd* r_at = nullptr) {
   const double h = step * std::max(1.0, std::fabs(x[j]));
   const double hi = std::min(x[j] + h, vars[j].upper);
   const double lo = std::max(x[j] - h, vars[j].lower);
   x_fd.assign(x.begin(), x.end());
+  if (r_at != nullptr) {
+    const double to = hi > x[j] ? hi : lo;
+    x_fd[j] = to;
+    if (!(to != x[j]) || !eval(x_fd, r_plus)) {
+      column.setZero();
+      return false;
+    }
+    column = (r_plus - *r_at) / (to - x[j]);
+    return true;
+  }
   x_fd[j] = hi;
   const bool ok_hi = eval(x_fd, r_plus);
   x_fd[j] = lo;
@@ -52,8 +63,8 @@ bool difference_column(const std::vector<optim::Variable>& vars, std::span<const
 // difference_column (Ceres's own numeric differentiation would step outside the bounds).
 class CeresResiduals final : public ceres::CostFunction {
  public:
-  CeresResiduals(const LeastSquaresProblem& problem, double step, std::size_t& evaluations)
-      : problem_(problem), step_(step), evaluations_(evaluations) {
+  CeresResiduals(const LeastSquaresProblem& problem, double step, bool forward, std::size_t& evaluations)
+      : problem_(problem), step_(step), forward_(forward), evaluations_(evaluations) {
     set_num_residuals(static_cast<int>(problem.residual_count));
     mutable_parameter_block_sizes()->push_back(static_cast<std::int32_t>(problem.variables.size()));
   }
@@ -81,7 +92,8 @@ class CeresResiduals final : public ceres::CostFunction {
     Eigen::VectorXd r_plus(r.size()), r_minus(r.size()), column(r.size());
     std::vector<double> x_fd;
     for (std::size_t j = 0; j < n; ++j) {
-      (void)difference_column(problem_.variables, x, j, step_, x_fd, r_plus, r_minus, eval, column);
+      (void)difference_column(problem_.variables, x, j, step_, x_fd, r_plus, r_minus, eval, column,
+                              forward_ ? &r : nullptr);
       J.col(static_cast<Eigen::Index>(j)) = column;
     }
     return true;
@@ -90,6 +102,7 @@ class CeresResiduals final : public ceres::CostFunction {
  private:
   const LeastSquaresProblem& problem_;
   double step_;
+  bool forward_;
   std::size_t& evaluations_;
 };
 
@@ -209,7 +222,7 @@ LmResult refine_levenberg_marquardt(const LeastSquaresProblem& problem, std::spa
         } else {
           for (std::size_t j = 0; j < n; ++j)
             (void)difference_column(vars, x, j, options.difference_step, x_fd, r_plus, r_minus, eval,
-                                    J.col(static_cast<Eigen::Index>(j)));
+                                    J.col(static_cast<Eigen::Index>(j)), options.forward_differences ? &r : nullptr);
         }
         need_jacobian = false;
       }
@@ -255,7 +268,9 @@ LmResult refine_levenberg_marquardt(const LeastSquaresProblem& problem, std::spa
     ceres::Problem::Options problem_options;
     problem_options.cost_function_ownership = ceres::TAKE_OWNERSHIP;
     ceres::Problem cp(problem_options);
-    cp.AddResidualBlock(new CeresResiduals(problem, options.difference_step, result.evaluations), nullptr, x.data());
+    cp.AddResidualBlock(
+        new CeresResiduals(problem, options.difference_step, options.forward_differences, result.evaluations), nullptr,
+        x.data());
     std::vector<int> fixed;
     for (std::size_t j = 0; j < n; ++j) {
       // Ceres wants lower < upper; a zero-width box is a fixed coordinate.

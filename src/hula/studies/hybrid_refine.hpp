@@ -82,6 +82,10 @@ struct LmOptions {
   bool exact_jacobian = true;
   /// Finite-difference step relative to max(1, |x_j|); in (0, 1e-2]. Default 1e-6.
   double difference_step = 1e-6;
+  /// Without an exact Jacobian: one-sided (forward, or backward at an upper bound) differences from the
+  /// residuals at x, n residual evaluations per Jacobian instead of 2n, accurate to O(step) instead of
+  /// O(step²) (for a caller with a deadline: the fairing assistant's ghost). Default false (central).
+  bool forward_differences = false;
   /// Wall-clock budget of the solve, seconds; 0 = none (default), otherwise finite and > 0. Checked after
   /// every step once a step has been accepted (the first accepted step always runs); a solve it ends reports
   /// Termination::WallTime and keeps its best point. Not part of the study files (a caller's limit).
