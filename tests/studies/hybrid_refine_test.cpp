@@ -117,6 +117,21 @@ TEST_P(LmTermination, ForwardDifferences) {
             static_cast<double>(c.evaluations) / static_cast<double>(c.iterations));
 }
 
+// checks: Rosenbrock's residuals from (−1.2, 1) with max_accepted_steps = 2 and room for 200 steps: the
+// run ends MaxGenerations after its second accepted step, lower than the start but not at (1, 1)
+TEST_P(LmTermination, AcceptedStepBudget) {
+  LmOptions o = with(GetParam());
+  o.max_accepted_steps = 2;
+  const LmResult r = refine_levenberg_marquardt(kRosenbrock, std::vector<double>{-1.2, 1.0}, o);
+  EXPECT_EQ(r.termination, Termination::MaxGenerations) << r.message;
+  const auto rosenbrock = [](const std::vector<double>& x) {
+    return 100.0 * (x[1] - x[0] * x[0]) * (x[1] - x[0] * x[0]) + (1.0 - x[0]) * (1.0 - x[0]);
+  };
+  EXPECT_LT(rosenbrock(r.variables), rosenbrock({-1.2, 1.0}));
+  EXPECT_GT(std::hypot(r.variables[0] - 1.0, r.variables[1] - 1.0), 1e-3);
+  EXPECT_LT(r.iterations, 200U);
+}
+
 INSTANTIATE_TEST_SUITE_P(Solvers, LmTermination, ::testing::Values(LsqSolver::ClampedLm, LsqSolver::Ceres),
                          [](const auto& solver) { return std::string(lsq_solver_name(solver.param)); });
 

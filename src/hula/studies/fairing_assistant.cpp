@@ -290,7 +290,9 @@ struct MinVariation {
     out.faired_points = q0;
     if (free.empty()) return out;
     LmOptions lm;
-    lm.max_iterations = options.max_iterations;
+    // As many accepted steps as options.max_iterations, each after at most 12 tries of the damping.
+    lm.max_accepted_steps = options.max_iterations;
+    lm.max_iterations = 12 * options.max_iterations;
     lm.target_mean = 0.0;
     lm.relative_tolerance = 1e-9;
     // The budget is the call's: what is left of it (the first accepted step always runs).

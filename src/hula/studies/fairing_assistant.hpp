@@ -64,7 +64,8 @@ struct AssistantOptions {
   /// must be drawn ≤ 150 ms after the pointer stops). The best curve so far is returned when it runs out;
   /// the first step that lowers the energy always runs.
   double time_budget_seconds = 0.1;
-  /// Most Levenberg–Marquardt steps, accepted or not (min-variation), 1 … 1000. Default 30.
+  /// Most Levenberg–Marquardt iterations (min-variation: accepted steps, each after at most 12 tries of the
+  /// damping), 1 … 1000. Default 30.
   std::size_t max_iterations = 30;
   /// What stays at the ends. Default Free. Points: the first and last data points are not moved (an
   /// interpolated or Hermite curve passes through them; a NURBS or Bézier curve must be clamped, its end

@@ -110,25 +110,33 @@ class CeresResiduals final : public ceres::CostFunction {
 // budget (0 = none) has run out after an accepted step.
 class TargetCallback final : public ceres::IterationCallback {
  public:
-  TargetCallback(double cost_target, double budget_seconds, std::chrono::steady_clock::time_point start)
-      : cost_target_(cost_target), budget_seconds_(budget_seconds), start_(start) {}
+  TargetCallback(double cost_target, double budget_seconds, std::size_t max_accepted,
+                 std::chrono::steady_clock::time_point start)
+      : cost_target_(cost_target), budget_seconds_(budget_seconds), max_accepted_(max_accepted), start_(start) {}
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& summary) override {
     if (summary.cost <= cost_target_) return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
-    if (summary.iteration > 0 && summary.step_is_successful) accepted_ = true;
-    if (accepted_ && budget_seconds_ > 0.0 && elapsed_seconds(start_) >= budget_seconds_) {
+    if (summary.iteration > 0 && summary.step_is_successful) ++accepted_;
+    if (accepted_ > 0 && budget_seconds_ > 0.0 && elapsed_seconds(start_) >= budget_seconds_) {
       out_of_time_ = true;
+      return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
+    }
+    if (max_accepted_ > 0 && accepted_ >= max_accepted_) {
+      out_of_steps_ = true;
       return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
     }
     return ceres::SOLVER_CONTINUE;
   }
   [[nodiscard]] bool out_of_time() const noexcept { return out_of_time_; }
+  [[nodiscard]] bool out_of_steps() const noexcept { return out_of_steps_; }
 
  private:
   double cost_target_;
   double budget_seconds_;
+  std::size_t max_accepted_;
   std::chrono::steady_clock::time_point start_;
-  bool accepted_ = false;
+  std::size_t accepted_ = 0;
   bool out_of_time_ = false;
+  bool out_of_steps_ = false;
 };
 
 }  // namespace
@@ -209,6 +217,7 @@ LmResult refine_levenberg_marquardt(const LeastSquaresProblem& problem, std::spa
     double cost = r.squaredNorm();
     double lambda = options.initial_lambda;
     bool need_jacobian = true;
+    std::size_t accepted = 0;
     for (std::size_t step = 0; step < budget; ++step) {
       if (mean_abs(r) <= target) return end_with(Termination::TargetReached, "target_mean reached");
       if (need_jacobian) {
@@ -252,6 +261,9 @@ LmResult refine_levenberg_marquardt(const LeastSquaresProblem& problem, std::spa
           return end_with(Termination::Converged, "a step lowered the cost by less than relative_tolerance");
         if (options.time_budget_seconds > 0.0 && elapsed_seconds(clock_start) >= options.time_budget_seconds)
           return end_with(Termination::WallTime, "time_budget_seconds ran out");
+        if (options.max_accepted_steps > 0 && ++accepted >= options.max_accepted_steps)
+          return end_with(Termination::MaxGenerations,
+                          "max_accepted_steps = " + std::to_string(options.max_accepted_steps) + " steps accepted");
       } else {
         lambda *= 4.0;
         if (lambda > 1e16) return end_with(Termination::Stagnation, "damping overflow: no step lowers the cost");
@@ -300,7 +312,8 @@ LmResult refine_levenberg_marquardt(const LeastSquaresProblem& problem, std::spa
       so.num_threads = 1;
       // mean |r| <= rms |r| = √(‖r‖² / m): a cost ½‖r‖² <= ½ m t² guarantees the target; the true mean is reported.
       const double t = options.target_mean;
-      TargetCallback stop(0.5 * static_cast<double>(m) * t * t, options.time_budget_seconds, clock_start);
+      TargetCallback stop(0.5 * static_cast<double>(m) * t * t, options.time_budget_seconds, options.max_accepted_steps,
+                          clock_start);
       so.callbacks.push_back(&stop);
       ceres::Solver::Summary summary;
       ceres::Solve(so, &cp, &summary);
@@ -311,6 +324,9 @@ LmResult refine_levenberg_marquardt(const LeastSquaresProblem& problem, std::spa
         end_with(Termination::TargetReached, "target_mean reached");
       else if (stop.out_of_time())
         end_with(Termination::WallTime, "time_budget_seconds ran out");
+      else if (stop.out_of_steps())
+        end_with(Termination::MaxGenerations,
+                 "max_accepted_steps = " + std::to_string(options.max_accepted_steps) + " steps accepted");
       else if (summary.termination_type == ceres::CONVERGENCE)
         end_with(Termination::Converged, summary.message);
       else if (summary.termination_type == ceres::NO_CONVERGENCE)

@@ -70,6 +70,9 @@ struct LmOptions {
   bool direct_start = true;
   /// Steps (accepted or rejected) at most; >= 1. Default 200.
   std::size_t max_iterations = 200;
+  /// Accepted steps at most (each one recomputes the Jacobian); 0 = no limit but max_iterations (default).
+  /// A solve it ends reports Termination::MaxGenerations.
+  std::size_t max_accepted_steps = 0;
   /// Stop once the mean curvature distance is <= this; >= 0, finite. Default 1e-10.
   double target_mean = 1e-10;
   /// Stop when an accepted step lowers ‖r‖² by less than this fraction of it; >= 0. Default 1e-14.
