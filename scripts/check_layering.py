@@ -32,21 +32,9 @@ import re
 import sys
 
 SERVER_REACHES = {"core", "curve", "io", "io_studies", "oli", "server"}
-# (file, module) the server would still include directly: none (the analysis, /api/law and
-# /api/reconstruct go through io, problem jobs through oli::ProblemRun). Kept so a step back is explicit.
-SERVER_STILL_DIRECT: set[tuple[str, str]] = set()
-# apps/ (the CLI) reaches what the server reaches, and the server and oli's own targets. Every command
-# translates its arguments into an io/oli entry and prints the answer; what stays below is what truly must:
-# (file, module) -> why. A listed include that is gone is reported, so the list stays the true list.
+# apps/ (the CLI) reaches what the server reaches, and the server and oli's own targets: every command
+# translates its arguments into an io/oli entry and prints the answer (mpirun's ranks too: oli/process_ranks).
 APPS_REACH = SERVER_REACHES | {"oli_store", "oli_kernel", "oli_exchange"}
-APPS_STILL_DIRECT = {
-    ("apps/hula/commands/batch.cpp", "optim"):
-        "HULA_MPI builds only: optim/islands_mpi's launched_by_mpi() tells the campaign whether this process is one "
-        "rank of an mpirun job (the MPI runtime of the process the CLI owns, not an engine pipeline)",
-    ("apps/hula/commands/islands.cpp", "optim"):
-        "HULA_MPI builds only: optim::solve_islands_mpi runs this process's island when `hula optimise --islands` "
-        "is launched by mpirun (one rank per island; the other doors run islands on threads through optim::solve)",
-}
 INCLUDE = re.compile(r'^\s*#\s*include\s*"hula/([a-z_]+)/([^"]+)"')
 SOURCES = {".hpp", ".cpp", ".h", ".cc"}
 
@@ -78,7 +66,6 @@ def main() -> int:
     rank = {name: i for i, name in enumerate(order)}
     study_codecs = io_studies_stems(root)
     violations = []
-    direct_seen = set()
     scanned = 0
     for base in (root / "src" / "hula", root / "apps"):
         if not base.is_dir():
@@ -115,20 +102,11 @@ def main() -> int:
                     violations.append(
                         f"layering violation: {rel}:{line_no} includes {shown} ({target} is not below {owner})")
                 elif owner == "server" and target not in SERVER_REACHES:
-                    direct_seen.add((rel.as_posix(), target))
-                    if (rel.as_posix(), target) not in SERVER_STILL_DIRECT:
-                        violations.append(f"layering violation: {rel}:{line_no} includes {shown} "
-                                          f"(server reaches {target} through oli or io)")
+                    violations.append(f"layering violation: {rel}:{line_no} includes {shown} "
+                                      f"(server reaches {target} through oli or io)")
                 elif owner == "apps" and target not in APPS_REACH:
-                    direct_seen.add((rel.as_posix(), target))
-                    if (rel.as_posix(), target) not in APPS_STILL_DIRECT:
-                        violations.append(f"layering violation: {rel}:{line_no} includes {shown} "
-                                          f"(the CLI reaches {target} through oli or io)")
-    for listed, name in ((SERVER_STILL_DIRECT, "SERVER_STILL_DIRECT"), (APPS_STILL_DIRECT, "APPS_STILL_DIRECT")):
-        for f, target in sorted(set(listed) - direct_seen):
-            if (root / f).is_file():
-                violations.append(f"layering violation: {f} no longer includes {target}: "
-                                  f"drop it from {name} in scripts/check_layering.py")
+                    violations.append(f"layering violation: {rel}:{line_no} includes {shown} "
+                                      f"(the CLI reaches {target} through oli or io)")
     for v in violations:
         print(v)
     if violations:

@@ -436,17 +436,18 @@ void register_geometry(py::module_& m) {
       .def(
           "reduce_degree",
           [](const NurbsCurve& c, double tolerance) {
-            nurbs::DegreeReductionResult r = nurbs::reduce_degree(c, tolerance);
-            py::dict d;
-            d["curve"] = std::move(r.curve);
-            d["error_bound"] = r.error_bound;
-            d["bezier_bound"] = r.bezier_bound;
+            // `hula edit reduce-degree`'s edit and report (io::edit_curve), so both give the same bytes.
+            io::CurveEditAnswer answer =
+                io::edit_curve(curve::Curve(c), "curve", {.edit = io::CurveEdit::ReduceDegree, .tolerance = tolerance});
+            py::dict d = to_python(answer.report);
+            d["curve"] = std::move(answer.curves.front());
             return d;
           },
           py::arg("tolerance"),
           "The curve one degree lower while it moves by at most `tolerance` (model units, >= 0): a dict\n"
-          "{\"curve\", \"error_bound\" (a guaranteed bound of the change), \"bezier_bound\"}. Non-rational\n"
-          "curves only; raises when no such curve is within the tolerance.")
+          "{\"curve\", \"error_bound\" (a guaranteed bound of the change), \"bezier_bound\", \"tolerance\"}\n"
+          "(`hula edit reduce-degree`'s report). Non-rational curves only; raises when no such curve is within\n"
+          "the tolerance.")
       .def(
           "to_law",
           [](const NurbsCurve& c) {
@@ -558,11 +559,15 @@ void register_geometry(py::module_& m) {
         const Points p = as_points(points, "points", 2);
         nurbs::InterpolationOptions o;
         o.dimension = p.dimension;
-        o.start = end_condition(start, "start");
-        o.end = end_condition(end, "end");
         o.parameterisation = io::parameterisation_from_name(parameterisation);
         if (!parameters.is_none()) o.parameters = as_vector(parameters, "parameters");
-        return closed ? nurbs::interpolate_closed_cubic(p.points, o) : nurbs::interpolate_cubic(p.points, o);
+        // `hula interpolate --closed`'s curve (io::closed_cubic_curve), so both give the same bytes.
+        if (closed)
+          return io::closed_cubic_curve({.points = p.points, .dimension = p.dimension}, o.parameters,
+                                        o.parameterisation);
+        o.start = end_condition(start, "start");
+        o.end = end_condition(end, "end");
+        return nurbs::interpolate_cubic(p.points, o);
       },
       py::arg("points"), py::kw_only(), py::arg("start") = "natural", py::arg("end") = "natural",
       py::arg("parameterisation") = "chord", py::arg("parameters") = py::none(), py::arg("closed") = false,

@@ -19,7 +19,11 @@ door calls the same io entry):
   the route answers, the route adds the fitted curve);
 - an optimisation problem run with an algorithm named as every door names it:
   `hula optimise --problem-file` and a problem job of `hula serve` (io::solver_options,
-  the one reader of solver settings; the best solution and the run report).
+  the one reader of solver settings; the best solution and the run report);
+- a closed interpolating spline and a degree reduction: `hula interpolate --closed` and
+  hulahoops.interpolate(closed=True) (io::closed_cubic_curve), `hula edit reduce-degree`
+  and NurbsCurve.reduce_degree (io::edit_curve); the server answers neither. The written
+  curve files are compared byte for byte.
 
 Answers are compared value for value, every double bit for bit; wall-clock members
 ("seconds") are left out. Each case also checks an independent fact so that a door
@@ -233,6 +237,67 @@ def optimisations(hula, server, failures, folder):
     return len(PROBLEMS)
 
 
+# Closed interpolation: points about an ellipse with seeded noise (rounded to 6 decimals so the file is exact).
+def seeded_points(seed, count, dimension):
+    rng = random_generator(seed)
+    return [[round(10 * math.cos(2 * math.pi * i / count) + rng.uniform(-2, 2), 6),
+             round(6 * math.sin(2 * math.pi * i / count) + rng.uniform(-2, 2), 6)]
+            + ([round(rng.uniform(-3, 3), 6)] if dimension == 3 else []) for i in range(count)]
+
+
+def random_generator(seed):
+    import random
+    return random.Random(seed)
+
+
+# A square whose closed spline is known in closed form, a seeded planar and a seeded space set.
+CLOSED = [("square", [[1, 0], [0, 1], [-1, 0], [0, -1]], "uniform"),
+          ("planar", seeded_points(5, 9, 2), "chord"), ("space", seeded_points(6, 7, 3), "centripetal")]
+# Degree reduction: corpus curves (planar, space, a Bézier) elevated once, so exactly reducible with tolerance 0.
+REDUCTIONS = ["random_planar_nurbs_0", "random_space_nurbs_0", "planar_bezier_s"]
+
+
+def edits(hula, failures, folder):
+    folder = pathlib.Path(folder)
+    checked = 0
+    for name, points, rule in CLOSED:
+        source = folder / f"{name}.points.json"
+        source.write_text(json.dumps(points))
+        out = folder / f"{name}.closed.json"
+        run(hula, "interpolate", "--points", str(source), "--closed", "--parameterisation", rule, "-o", str(out))
+        ring = hh.interpolate(points, closed=True, parameterisation=rule)
+        compare(failures, f"interpolate --closed {name}", [("CLI", json.loads(out.read_text())), ("Python", plain(ring))])
+        ring.save(str(folder / f"{name}.closed.py.json"))
+        if out.read_bytes() != (folder / f"{name}.closed.py.json").read_bytes():
+            failures.append(f"interpolate --closed {name}: the CLI's and Python's curve files differ")
+        # Independent facts: the curve passes through every point and ends where it starts; the square's
+        # uniform closed spline has C(1/8) = (11/16, 11/16) (its closed form).
+        if math.dist(ring(0.0), ring(1.0)) > 1e-12:
+            failures.append(f"interpolate --closed {name}: C(0) = {list(ring(0.0))} but C(1) = {list(ring(1.0))}")
+        if name == "square" and math.dist(ring(0.125), [0.6875, 0.6875]) > 1e-15:
+            failures.append(f"interpolate --closed square: C(1/8) = {list(ring(0.125))}, not (11/16, 11/16)")
+        checked += 1
+    for name in REDUCTIONS:
+        elevated = hh.NurbsCurve.from_json(curve_json(name)).elevate(1)
+        source = folder / f"{name}.elevated.json"
+        elevated.save(str(source))
+        out = folder / f"{name}.reduced.json"
+        cli = run(hula, "edit", "reduce-degree", str(source), "--tolerance", "0", "-o", str(out))
+        py = elevated.reduce_degree(0.0)
+        compare(failures, f"edit reduce-degree {name}",
+                [("CLI", {"curve": json.loads(out.read_text()), **{k: cli[k] for k in py if k != "curve"}}),
+                 ("Python", plain(py))])
+        py["curve"].save(str(folder / f"{name}.reduced.py.json"))
+        if out.read_bytes() != (folder / f"{name}.reduced.py.json").read_bytes():
+            failures.append(f"edit reduce-degree {name}: the CLI's and Python's curve files differ")
+        # Independent fact: an elevated curve comes back to its own degree, its shape unchanged.
+        original = hh.NurbsCurve.from_json(curve_json(name))
+        if py["curve"].degree != original.degree or not py["error_bound"] < 1e-9:
+            failures.append(f"edit reduce-degree {name}: degree {py['curve'].degree}, bound {py['error_bound']}")
+        checked += 1
+    return checked
+
+
 def main():
     hula = sys.argv[1]
     failures = []
@@ -242,6 +307,7 @@ def main():
         checked += reconstructions(hula, server, failures)
         checked += constructions(hula, server, failures, folder)
         checked += optimisations(hula, server, failures, folder)
+        checked += edits(hula, failures, folder)
     for f in failures:
         print("FAIL:", f)
     print(f"command conformance: {checked} questions through CLI, HTTP (and Python where it answers), "

@@ -3,8 +3,9 @@
 // message, on least-squares problems built to end each way: a linear residual
 // whose first Gauss–Newton step hits the target exactly, an inconsistent pair
 // (x − 1, x + 1) whose minimum 2 is not 0 (converged), Rosenbrock's residuals
-// with one step allowed (iteration budget), and residuals undefined off the
-// start (no step is ever accepted: the damping overflows).
+// with one step allowed (iteration budget) or a spent time budget (wall time),
+// and residuals undefined off the start (no step is ever accepted: the damping
+// overflows).
 #include "hula/studies/hybrid_refine.hpp"
 
 #include <gtest/gtest.h>
@@ -12,6 +13,8 @@
 #include <cmath>
 #include <span>
 #include <vector>
+
+#include "hula/testing/expect_error.hpp"
 
 namespace hula::studies {
 namespace {
@@ -75,6 +78,58 @@ TEST_P(LmTermination, IterationBudget) {
   const LmResult r = refine_levenberg_marquardt(kRosenbrock, std::vector<double>{-1.2, 1.0}, o);
   EXPECT_EQ(r.termination, Termination::MaxGenerations) << r.message;
   EXPECT_GT(r.mean_after, 1e-3);
+}
+
+// checks: Rosenbrock's residuals from (−1.2, 1) with a budget that is spent before the solve starts
+// (1e-9 s): the first accepted step still runs (the cost drops below the start's), then the run ends
+// WallTime at the next check, long before (1, 1); a negative or NaN budget is refused naming it
+TEST_P(LmTermination, TimeBudget) {
+  LmOptions o = with(GetParam());
+  o.time_budget_seconds = 1e-9;
+  const LmResult r = refine_levenberg_marquardt(kRosenbrock, std::vector<double>{-1.2, 1.0}, o);
+  EXPECT_EQ(r.termination, Termination::WallTime) << r.message;
+  const auto rosenbrock = [](const std::vector<double>& x) {
+    return 100.0 * (x[1] - x[0] * x[0]) * (x[1] - x[0] * x[0]) + (1.0 - x[0]) * (1.0 - x[0]);
+  };
+  EXPECT_LT(rosenbrock(r.variables), rosenbrock({-1.2, 1.0}));
+  EXPECT_GT(std::hypot(r.variables[0] - 1.0, r.variables[1] - 1.0), 1e-3);
+  EXPECT_LT(r.iterations, 40U);  // the default 200 would run on to (1, 1)
+  for (const double bad : {-1.0, std::nan("")}) {
+    o.time_budget_seconds = bad;
+    HULA_EXPECT_ERROR(static_cast<void>(refine_levenberg_marquardt(kRosenbrock, std::vector<double>{-1.2, 1.0}, o)),
+                      Errc::InvalidOption, "time_budget_seconds");
+  }
+}
+
+// checks: one-sided differences (forward_differences) still take Rosenbrock's residuals from (−1.2, 1) to
+// (1, 1) (the closed-form minimum), with fewer residual evaluations than central differences need
+TEST_P(LmTermination, ForwardDifferences) {
+  LmOptions central = with(GetParam());
+  central.target_mean = 1e-8;
+  LmOptions forward = central;
+  forward.forward_differences = true;
+  const LmResult c = refine_levenberg_marquardt(kRosenbrock, std::vector<double>{-1.2, 1.0}, central);
+  const LmResult f = refine_levenberg_marquardt(kRosenbrock, std::vector<double>{-1.2, 1.0}, forward);
+  EXPECT_EQ(f.termination, Termination::TargetReached) << f.message;
+  EXPECT_NEAR(f.variables[0], 1.0, 1e-6);
+  EXPECT_NEAR(f.variables[1], 1.0, 1e-6);
+  EXPECT_LT(static_cast<double>(f.evaluations) / static_cast<double>(f.iterations),
+            static_cast<double>(c.evaluations) / static_cast<double>(c.iterations));
+}
+
+// checks: Rosenbrock's residuals from (−1.2, 1) with max_accepted_steps = 2 and room for 200 steps: the
+// run ends MaxGenerations after its second accepted step, lower than the start but not at (1, 1)
+TEST_P(LmTermination, AcceptedStepBudget) {
+  LmOptions o = with(GetParam());
+  o.max_accepted_steps = 2;
+  const LmResult r = refine_levenberg_marquardt(kRosenbrock, std::vector<double>{-1.2, 1.0}, o);
+  EXPECT_EQ(r.termination, Termination::MaxGenerations) << r.message;
+  const auto rosenbrock = [](const std::vector<double>& x) {
+    return 100.0 * (x[1] - x[0] * x[0]) * (x[1] - x[0] * x[0]) + (1.0 - x[0]) * (1.0 - x[0]);
+  };
+  EXPECT_LT(rosenbrock(r.variables), rosenbrock({-1.2, 1.0}));
+  EXPECT_GT(std::hypot(r.variables[0] - 1.0, r.variables[1] - 1.0), 1e-3);
+  EXPECT_LT(r.iterations, 200U);
 }
 
 INSTANTIATE_TEST_SUITE_P(Solvers, LmTermination, ::testing::Values(LsqSolver::ClampedLm, LsqSolver::Ceres),

@@ -45,12 +45,7 @@
 #include "hula/io/atomic_file.hpp"
 #include "hula/io/campaign_file.hpp"
 #include "hula/io/owned_files.hpp"
-
-#if defined(HULA_WITH_MPI)
-#include <mpi.h>
-
-#include "hula/optim/islands_mpi.hpp"
-#endif
+#include "hula/oli/process_ranks.hpp"
 
 namespace hula::cli {
 
@@ -186,15 +181,6 @@ std::optional<std::pair<std::size_t, int>> reap(const std::vector<Running>& runn
   return std::nullopt;
 }
 
-#if defined(HULA_WITH_MPI)
-constexpr int kTagResult = 11;  // worker -> 0: a result record (JSON text; empty on the first request)
-constexpr int kTagItem = 12;    // 0 -> worker: an item index, or -1 = stop
-
-void send_text(const std::string& text, int to, int tag) {
-  MPI_Send(text.data(), static_cast<int>(text.size()), MPI_CHAR, to, tag, MPI_COMM_WORLD);
-}
-#endif
-
 }  // namespace
 
 int run_batch(const BatchArgs& a) {
@@ -213,37 +199,28 @@ int run_batch(const BatchArgs& a) {
   const fs::path scratch = temp / io::owned_name(kScratchPrefix);
   fs::create_directories(scratch);
   const auto start = std::chrono::steady_clock::now();
-  int rank = 0, ranks = 1;
-#if defined(HULA_WITH_MPI)
-  const bool mpi = optim::launched_by_mpi();
-  if (mpi) {
-    MPI_Init(nullptr, nullptr);
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-    MPI_Comm_size(MPI_COMM_WORLD, &ranks);
-  }
-  if (mpi && rank != 0) {
+  // Under mpirun every rank is a slot (oli::CampaignRanks); otherwise this process is the only rank.
+  std::optional<oli::CampaignRanks> job;
+  job.emplace();
+  const int rank = job->rank(), ranks = job->ranks();
+  if (rank != 0) {
     // A worker: ask for an item, run it, send its record with the next request.
     std::string record;
-    while (true) {
-      send_text(record, 0, kTagResult);
-      int index = -1;
-      MPI_Recv(&index, 1, MPI_INT, 0, kTagItem, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-      if (index < 0) break;
+    while (const std::optional<std::size_t> index = job->next_item(record)) {
       try {
-        const Running r = start_item(items, static_cast<std::size_t>(index), scratch);
+        const Running r = start_item(items, *index, scratch);
         int status = 0;
         ::waitpid(r.pid, &status, 0);
         record = finish_item(items, r, status, rank).dump();
       } catch (const Error& e) {
-        record = io::campaign_failed_record(items[static_cast<std::size_t>(index)], e, rank, kExitInvalidInput).dump();
+        record = io::campaign_failed_record(items[*index], e, rank, kExitInvalidInput).dump();
       }
     }
-    MPI_Finalize();
+    job.reset();  // leaves the MPI job
     std::error_code ec;
     fs::remove_all(scratch, ec);
     return kExitOk;
   }
-#endif
   Results results(results_path, items, campaign.string());
   std::vector<std::size_t> todo;
   for (std::size_t i = 0; i < items.size(); ++i) {
@@ -272,34 +249,23 @@ int run_batch(const BatchArgs& a) {
       running.erase(running.begin() + static_cast<std::ptrdiff_t>(ended->first));
       busy = true;
     }
-#if defined(HULA_WITH_MPI)
-    if (mpi && remote_active > 0) {
-      int flag = 0;
-      MPI_Status status;
-      MPI_Iprobe(MPI_ANY_SOURCE, kTagResult, MPI_COMM_WORLD, &flag, &status);
-      if (flag != 0) {
-        int count = 0;
-        MPI_Get_count(&status, MPI_CHAR, &count);
-        std::string text(static_cast<std::size_t>(count), '\0');
-        MPI_Recv(text.data(), count, MPI_CHAR, status.MPI_SOURCE, kTagResult, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-        if (!text.empty()) results.record(Json::parse(text));
-        int index = -1;
+    if (remote_active > 0) {
+      if (const std::optional<oli::CampaignRanks::Request> request = job->poll()) {
+        if (!request->record.empty()) results.record(Json::parse(request->record));
+        std::optional<std::size_t> index;
         if (next < todo.size())
-          index = static_cast<int>(todo[next++]);
+          index = todo[next++];
         else
           --remote_active;
-        MPI_Send(&index, 1, MPI_INT, status.MPI_SOURCE, kTagItem, MPI_COMM_WORLD);
+        job->reply(request->worker, index);
         busy = true;
       }
     }
-#endif
     if (!busy) std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
   results.write();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-#if defined(HULA_WITH_MPI)
-  if (mpi) MPI_Finalize();
-#endif
+  job.reset();  // leaves the MPI job
   std::error_code ec;
   fs::remove_all(scratch, ec);
   print_json(results.summary(seconds, ranks));

@@ -2,14 +2,6 @@
 // `hula optimise --islands K`; see islands.hpp.
 #include "commands/islands.hpp"
 
-#include <optional>
-#include <utility>
-#include <variant>
-
-#if defined(HULA_WITH_MPI)
-#include "hula/optim/islands_mpi.hpp"
-#endif
-
 namespace hula::cli {
 
 void add_island_options(CLI::App* sub, IslandArgs& args) {
@@ -33,18 +25,6 @@ optim::IslandOptions island_options(const IslandArgs& args) {
   o.topology_seed = args.topology_seed;
   o.asynchronous = args.asynchronous;
   return o;
-}
-
-std::optional<IslandRun> run_islands_or_solve(const optim::Problem& problem, const optim::SolveOptions& options) {
-#if defined(HULA_WITH_MPI)
-  if (options.islands && optim::launched_by_mpi()) {
-    std::optional<optim::IslandsResult> merged =
-        optim::solve_islands_mpi(problem, optim::island_algorithm(options.algorithm), *options.islands);
-    if (!merged) return std::nullopt;
-    return IslandRun{optim::solve_result(problem, std::move(*merged)), "mpi"};
-  }
-#endif
-  return IslandRun{optim::solve(problem, options), "threads"};
 }
 
 }  // namespace hula::cli

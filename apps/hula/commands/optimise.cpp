@@ -40,6 +40,7 @@
 #include "hula/io/optimise_request.hpp"
 #include "hula/io/problem_file.hpp"
 #include "hula/io/run_report_json.hpp"
+#include "hula/oli/process_ranks.hpp"
 #include "hula/optim/solve.hpp"
 
 namespace hula::cli {
@@ -215,7 +216,7 @@ int run_optimise(const OptimiseArgs& a) {
   // pagmo never looks at the token: Ctrl-C ends it at once, as the shell would.
   std::optional<InterruptGuard> guard;
   if (!std::holds_alternative<optim::PagmoOptions>(named)) guard.emplace();
-  std::optional<IslandRun> run = run_islands_or_solve(problem, options);
+  std::optional<oli::RankedSolve> run = oli::solve_on_ranks(problem, options);
   terminal.finish();
   if (log) log->commit();
   if (!run) return kExitOk;  // an MPI rank other than 0: rank 0 prints the result

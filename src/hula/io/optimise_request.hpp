@@ -47,6 +47,8 @@ struct SolverRequest {
 /// @throws hula::Error(Errc::InvalidOption) naming the refused setting ("--population is not supported by
 ///   algorithm nelder-mead"); as optim::solver_from_name
 [[nodiscard]] optim::SolverOptions solver_options(const SolverRequest& request);
+/// The algorithm names solver_options accepts (the CLI's choices and completions).
+[[nodiscard]] std::vector<std::string> algorithm_names();
 
 /// A built-in test problem (optim::test_problem) and its hypervolume reference, 1.1 per objective (the built-in
 /// problems are normalised so that it bounds their Pareto fronts).

@@ -4,14 +4,17 @@
 // Notation: q_k the data points (q0_k the input's), x the vector of their free
 // moves along move_axes() (in the plane of a planar curve), r(x) the residuals
 // sqrt(w_q (h/2) |C'(t_q)|) κ'(t_q) at the 5 Gauss–Legendre nodes of every
-// knot span (h the span width), J = ∂r/∂x by forward differences.
+// knot span (h the span width); Ceres minimises ‖r(x)‖² with J = ∂r/∂x by
+// forward differences (refine_levenberg_marquardt).
 #include "hula/studies/fairing_assistant.hpp"
 
-#include <Eigen/Dense>
+#include <algorithm>
 #include <array>
+#include <boost/math/quadrature/gauss.hpp>
 #include <chrono>
 #include <cmath>
-#include <limits>
+#include <numeric>
+#include <span>
 #include <string>
 
 #include "hula/core/error.hpp"
@@ -19,6 +22,7 @@
 #include "hula/diffgeom/frenet.hpp"
 #include "hula/diffgeom/planarity.hpp"
 #include "hula/nurbs/interpolate.hpp"
+#include "hula/studies/hybrid_refine.hpp"
 #include "hula/studies/knot_fairing.hpp"
 
 namespace hula::studies {
@@ -29,14 +33,32 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-// 5-point Gauss–Legendre nodes and weights on [-1, 1] (Abramowitz & Stegun 25.4.30).
-constexpr std::array<double, 5> kNodes{-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831,
-                                       0.9061798459386640};
-constexpr std::array<double, 5> kWeights{0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665,
-                                         0.2369268850561891};
+// The 5-point Gauss–Legendre rule on [-1, 1]: Boost.Math's nodes (it keeps the non-negative half of the
+// symmetric rule) and their mirror images.
+struct GaussRule {
+  std::vector<double> nodes, weights;
+};
 
-// A tolerance ball is shrunk by this relative amount before projecting into it, so that the
-// rounding of q0 + d never puts a point outside the user's tolerance.
+const GaussRule& gauss5() {
+  static const GaussRule rule = [] {
+    using Gauss = boost::math::quadrature::gauss<double, 5>;
+    GaussRule r;
+    for (std::size_t i = 0; i < Gauss::abscissa().size(); ++i) {
+      const double x = Gauss::abscissa()[i], w = Gauss::weights()[i];
+      r.nodes.push_back(x);
+      r.weights.push_back(w);
+      if (x != 0.0) {
+        r.nodes.push_back(-x);
+        r.weights.push_back(w);
+      }
+    }
+    return r;
+  }();
+  return rule;
+}
+
+// A tolerance ball is shrunk by this relative amount, so that the rounding of q0 + d never puts a
+// point outside the user's tolerance.
 constexpr double kBallMargin = 1e-9;
 
 // The energy options of the reported energies: 1e-8 relative is far below any difference the user
@@ -132,28 +154,37 @@ std::vector<bool> held_points(const curve::Curve& c, AssistantHold hold, std::si
   return held;
 }
 
-// The residual vector r of a curve (its squared norm approximates ∫κ'² ds).
+// The residuals of a curve (Σ r_q² approximates ∫κ'² ds): sqrt(w_q (h/2) |C'(t_q)|) κ'(t_q) at the
+// Gauss–Legendre nodes of every knot span.
 class Residuals {
  public:
   explicit Residuals(const nurbs::NurbsCurve& reference)
       : scale_(diffgeom::frenet_scale(reference, options_.tolerance)) {}
 
-  void operator()(const nurbs::NurbsCurve& c, Eigen::VectorXd& out) const {
+  /// The number of residuals of a curve with the knot spans of `c`.
+  [[nodiscard]] static std::size_t count(const nurbs::NurbsCurve& c) {
+    return (c.knots().breakpoints().size() - 1) * gauss5().nodes.size();
+  }
+
+  /// Writes the residuals of c into out; false when c has another number of spans than out has room for.
+  bool operator()(const nurbs::NurbsCurve& c, std::span<double> out) const {
     const std::vector<double> bp = c.knots().breakpoints();
-    out.resize(static_cast<Eigen::Index>((bp.size() - 1) * kNodes.size()));
-    Eigen::Index row = 0;
+    const GaussRule& rule = gauss5();
+    if ((bp.size() - 1) * rule.nodes.size() != out.size()) return false;
+    std::size_t row = 0;
     std::array<Vec3, 4> d;
     for (std::size_t i = 0; i + 1 < bp.size(); ++i) {
       const double half = 0.5 * (bp[i + 1] - bp[i]), mid = 0.5 * (bp[i + 1] + bp[i]);
-      for (std::size_t q = 0; q < kNodes.size(); ++q) {
-        const double t = mid + half * kNodes[q];
+      for (std::size_t q = 0; q < rule.nodes.size(); ++q) {
+        const double t = mid + half * rule.nodes[q];
         c.derivatives(t, 3, d, {});
         const diffgeom::FrenetPoint p = diffgeom::frenet_from_derivatives(t, d, scale_, options_);
         // Where the frame is undefined the energy code counts 0 (diffgeom/energy.hpp); so does the proxy.
         const double k1 = p.frame_defined && std::isfinite(p.curvature_derivative) ? p.curvature_derivative : 0.0;
-        out[row++] = std::sqrt(kWeights[q] * half * p.speed) * k1;
+        out[row++] = std::sqrt(rule.weights[q] * half * p.speed) * k1;
       }
     }
+    return true;
   }
 
  private:
@@ -178,15 +209,24 @@ std::vector<Vec3> move_axes(const curve::Curve& c) {
   return {u, cross(n, u)};
 }
 
-// Min-variation: Levenberg–Marquardt on x (the points' moves along their axes) with every
-// point projected into its tolerance ball.
+// Min-variation: the moved points' residuals as a least-squares problem solved by Ceres's
+// Levenberg–Marquardt (refine_levenberg_marquardt, the hybrid's solver). The variables are, for every
+// data point that is not held, u in the cube [-1, 1]^d (d = 2 or 3 move axes: Ceres's box bounds), and the
+// point moves by R s(u) along the axes (R = the tolerance shrunk by kBallMargin), where s maps the cube onto
+// the unit ball (Nowell's cube-to-sphere map, in 2-D the elliptical grid map):
+//   s_i(u) = u_i sqrt(1 − Σ_{j≠i} u_j²/2 + Π_{j≠i} u_j²/3)   (3-D; 2-D: u_i sqrt(1 − u_j²/2)),
+// with |s(u)|² = 1 − Π_j (1 − u_j²) ≤ 1, s(u) = u to first order at 0, and the box's faces on the sphere. So
+// no point Ceres tries leaves its tolerance (no projection step), and where the optimum sits on the
+// tolerance (as it does, docs/studies.md) the variable sits on a bound with the move still differentiable,
+// which a smooth map of all of R^d into the ball would not allow.
 struct MinVariation {
   curve::Curve input;  // the curve rebuilt from moved points (prepared for the held ends)
   const AssistantOptions& options;
   std::vector<Vec3> q0;
-  std::vector<bool> held;  // data points that stay exactly at q0
-  std::vector<Vec3> axes;  // orthonormal move directions, the same for every point
-  int dim;                 // axes.size()
+  std::vector<std::size_t> free;  // the data points that move (the held ones stay exactly at q0)
+  std::vector<Vec3> axes;         // orthonormal move directions, the same for every point
+  std::size_t dim;                // axes.size()
+  double radius;                  // R
   Residuals residuals;
   Clock::time_point t0;
 
@@ -194,103 +234,85 @@ struct MinVariation {
       : input(prepared(c, o.hold)),
         options(o),
         q0(data_points_of(c)),
-        held(held_points(c, o.hold, q0.size())),
         axes(move_axes(c)),
-        dim(static_cast<int>(axes.size())),
+        dim(axes.size()),
+        radius(o.tolerance * (1.0 - kBallMargin)),
         residuals(c.nurbs()),
-        t0(start) {}
+        t0(start) {
+    const std::vector<bool> held = held_points(c, o.hold, q0.size());
+    for (std::size_t k = 0; k < q0.size(); ++k)
+      if (!held[k]) free.push_back(k);
+  }
 
-  [[nodiscard]] std::vector<Vec3> points_of(const Eigen::VectorXd& x) const {
+  [[nodiscard]] std::vector<Vec3> points_of(std::span<const double> x) const {
     std::vector<Vec3> q = q0;
-    for (std::size_t k = 0; k < q.size(); ++k) {
-      if (held[k]) continue;  // exactly q0, not q0 + 0 · axes
-      for (int j = 0; j < dim; ++j)
-        q[k] = q[k] + axes[static_cast<std::size_t>(j)] * x[static_cast<Eigen::Index>(k) * dim + j];
+    for (std::size_t f = 0; f < free.size(); ++f) {
+      const std::span<const double> u = x.subspan(f * dim, dim);
+      for (std::size_t i = 0; i < dim; ++i) {
+        double sum = 0.0, product = 1.0;
+        for (std::size_t j = 0; j < dim; ++j) {
+          if (j == i) continue;
+          sum += 0.5 * u[j] * u[j];
+          product *= u[j] * u[j];
+        }
+        const double inside = dim == 3 ? 1.0 - sum + product / 3.0 : 1.0 - sum;
+        q[free[f]] = q[free[f]] + axes[i] * (radius * u[i] * std::sqrt(std::max(inside, 0.0)));
+      }
     }
     return q;
   }
 
-  // Moves every point of x back into its ball of radius tolerance (1 − kBallMargin) about q0
-  // (the axes are orthonormal: the move's length is the norm of its coefficients).
-  void project(Eigen::VectorXd& x) const {
-    const double radius = options.tolerance * (1.0 - kBallMargin);
-    for (std::size_t k = 0; k < q0.size(); ++k) {
-      auto move = x.segment(static_cast<Eigen::Index>(k) * dim, dim);
-      if (held[k]) {
-        move.setZero();
-        continue;
-      }
-      const double n = move.norm();
-      if (n > radius) move *= radius / n;
-    }
-  }
-
   // r(x); false when the moved points do not make a curve (e.g. two coincide).
-  bool evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& r) const {
+  bool evaluate(std::span<const double> x, std::span<double> r) const {
     try {
-      residuals(rebuild(input, points_of(x)).nurbs(), r);
+      if (!residuals(rebuild(input, points_of(x)).nurbs(), r)) return false;
     } catch (const Error&) {
       return false;
     }
-    return r.allFinite();
+    return std::all_of(r.begin(), r.end(), [](double v) { return std::isfinite(v); });
   }
 
-  [[nodiscard]] bool out_of_time() const { return seconds_since(t0) >= options.time_budget_seconds; }
-
   AssistantResult run() {
-    const auto n = static_cast<Eigen::Index>(q0.size()) * dim;
-    Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
-    Eigen::VectorXd r, r_try, r_h;
-    if (!evaluate(x, r))
+    LeastSquaresProblem problem;
+    for (std::size_t f = 0; f < free.size(); ++f)
+      for (std::size_t j = 0; j < dim; ++j)
+        problem.variables.push_back(
+            {.name = "point " + std::to_string(free[f]) + " move " + std::to_string(j), .lower = -1.0, .upper = 1.0});
+    problem.residual_count = Residuals::count(input.nurbs());
+    problem.residuals = [this](std::span<const double> x, std::span<double> r) { return evaluate(x, r); };
+    const std::vector<double> start(problem.variables.size(), 0.0);
+    std::vector<double> r0(problem.residual_count);
+    if (!evaluate(start, r0))
       throw Error(Errc::NumericalFailure, "the curve's curvature variation is not finite at its own data points",
                   ErrorWhere{.field = "curve"});
-    double energy = r.squaredNorm();
-    const double h = 1e-7 * std::max(1.0, input.nurbs().model_size());
-    Eigen::MatrixXd J(r.size(), n);
-    double mu = 1e-3;
     AssistantResult out{.curve = input};
-    for (std::size_t it = 0; it < options.max_iterations; ++it) {
-      if (it > 0 && out_of_time()) {  // the first step always runs: a ghost that is not fairer is no ghost
-        out.stopped = true;
-        break;
-      }
-      for (Eigen::Index c = 0; c < n; ++c) {
-        if (held[static_cast<std::size_t>(c / dim)]) {  // no step: A(c, c) = g(c) = 0
-          J.col(c).setZero();
-          continue;
-        }
-        Eigen::VectorXd xh = x;
-        xh[c] += h;
-        if (!evaluate(xh, r_h)) r_h = r;  // a column that cannot move is left out of the step
-        J.col(c) = (r_h - r) / h;
-      }
-      const Eigen::MatrixXd A = J.transpose() * J;
-      const Eigen::VectorXd g = J.transpose() * r;
-      const double floor = 1e-12 * std::max(A.diagonal().maxCoeff(), 1e-300);
-      bool accepted = false;
-      for (int attempt = 0; attempt < 12 && !accepted; ++attempt) {
-        Eigen::MatrixXd M = A;
-        for (Eigen::Index c = 0; c < n; ++c) M(c, c) += mu * A(c, c) + floor;
-        Eigen::VectorXd x_try = x - M.ldlt().solve(g);
-        project(x_try);
-        if (x_try.allFinite() && evaluate(x_try, r_try) && r_try.squaredNorm() < energy) {
-          const double previous = energy;
-          x = x_try;
-          r = r_try;
-          energy = r.squaredNorm();
-          mu = std::max(mu / 3.0, 1e-9);
-          accepted = true;
-          out.iterations = it + 1;
-          if (previous - energy <= 1e-9 * previous) it = options.max_iterations;  // converged
-        } else {
-          mu *= 10.0;
-        }
-      }
-      if (!accepted) break;
-    }
     out.data_points = q0;
-    out.faired_points = out.iterations > 0 ? points_of(x) : q0;
-    if (out.iterations > 0) out.curve = rebuild(input, out.faired_points);
+    out.faired_points = q0;
+    if (free.empty()) return out;
+    LmOptions lm;
+    // As many accepted steps as options.max_iterations, each after at most 12 tries of the damping.
+    lm.max_accepted_steps = options.max_iterations;
+    lm.max_iterations = 12 * options.max_iterations;
+    lm.target_mean = 0.0;
+    lm.relative_tolerance = 1e-9;
+    // The budget is the call's: what is left of it (the first accepted step always runs).
+    lm.time_budget_seconds = std::max(options.time_budget_seconds - seconds_since(t0), 1e-9);
+    // One-sided differences (n evaluations per Jacobian, not 2n: the ghost has a deadline) with a move of
+    // 1e-7 of the model's size, as far as the steps allow.
+    lm.forward_differences = true;
+    lm.difference_step = std::min(1e-2, 1e-7 * std::max(1.0, input.nurbs().model_size()) / radius);
+    const LmResult fit = refine_levenberg_marquardt(problem, start, lm);
+    out.iterations = fit.iterations;
+    out.stopped = fit.termination == optim::Termination::WallTime;
+    // Kept only when the quadrature proxy of the energy, Σ r², is lower than at the start.
+    std::vector<double> r1(problem.residual_count);
+    const auto squares = [](const std::vector<double>& r) {
+      return std::accumulate(r.begin(), r.end(), 0.0, [](double a, double v) { return a + v * v; });
+    };
+    if (evaluate(fit.variables, r1) && squares(r1) < squares(r0)) {
+      out.faired_points = points_of(fit.variables);
+      out.curve = rebuild(input, out.faired_points);
+    }
     return out;
   }
 };

@@ -6,10 +6,11 @@
 //    points exactly and only their parameters move (fair_knots_deterministic
 //    on the Variation energy, under a time budget);
 //  - minimal curvature variation: the data points themselves move, each by at
-//    most the tolerance, by a Levenberg–Marquardt iteration on the residuals
+//    most the tolerance, to minimise Σ r_q² over the residuals
 //    r_q = sqrt(w_q |r'(t_q)|) κ'(t_q) at Gauss–Legendre nodes of every knot
-//    span (Σ r_q² is a quadrature of ∫κ'² ds), each step projected back into
-//    the tolerance balls and kept only when it lowers the energy. OCCT's
+//    span (a quadrature of ∫κ'² ds), by Ceres's Levenberg–Marquardt
+//    (refine_levenberg_marquardt, the hybrid's solver); every point's move is
+//    a smooth map onto its tolerance ball, so no step leaves it. OCCT's
 //    FairCurve_MinimalVariation (oli/kernel/occt_fairing) minimises the same
 //    energy but only between two ends; this one holds every data point.
 // The "data points" are the curve's construction points: the points of an
@@ -61,9 +62,10 @@ struct AssistantOptions {
   double tolerance = 1.0;
   /// Wall-clock budget of the optimisation, seconds, in (0, 60]. Default 0.1 (the workbench's ghost
   /// must be drawn ≤ 150 ms after the pointer stops). The best curve so far is returned when it runs out;
-  /// the first iteration always runs.
+  /// the first step that lowers the energy always runs.
   double time_budget_seconds = 0.1;
-  /// Most Levenberg–Marquardt iterations (min-variation), 1 … 1000. Default 30.
+  /// Most Levenberg–Marquardt iterations (min-variation: accepted steps, each after at most 12 tries of the
+  /// damping), 1 … 1000. Default 30.
   std::size_t max_iterations = 30;
   /// What stays at the ends. Default Free. Points: the first and last data points are not moved (an
   /// interpolated or Hermite curve passes through them; a NURBS or Bézier curve must be clamped, its end
@@ -90,7 +92,7 @@ struct AssistantResult {
   std::vector<Vec3> faired_points{};
   /// max_k |faired_points[k] − data_points[k]| ≤ tolerance, model units.
   double max_deviation = 0.0;
-  /// Iterations (LM) or energy evaluations (knots).
+  /// Levenberg–Marquardt steps tried (min-variation) or energy evaluations (knots).
   std::size_t iterations = 0;
   /// True when the time budget ended the optimisation (the ghost is the best so far).
   bool stopped = false;
@@ -108,8 +110,8 @@ struct AssistantResult {
 /// @throws hula::Error(Errc::InvalidArgument) naming "hold" for held ends of an unclamped NURBS curve
 ///   (its end points are not control points)
 /// @throws as fair_knots_deterministic (knots)
-/// Complexity per iteration (min-variation): n + 1 curve constructions and residual evaluations for
-/// n free coordinates, plus an n × n solve.
+/// Complexity per iteration (min-variation): 2n + 1 curve constructions and residual evaluations for
+/// n free coordinates (central differences), plus a dense QR solve of the m × n Jacobian.
 [[nodiscard]] AssistantResult fair_within_tolerance(const curve::Curve& curve, const AssistantOptions& options = {});
 
 }  // namespace hula::studies

@@ -16,22 +16,37 @@ namespace hula::studies {
 
 namespace {
 
+double elapsed_seconds(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 void check_range(bool ok, const char* field, double value, const char* range) {
   if (!ok)
     throw Error(Errc::InvalidOption, std::string("lm.") + field + " = " + format_number(value) + " must be " + range,
                 {.field = std::string("lm.") + field});
 }
 
-// Central-difference Jacobian column j at x (one-sided where a bound is within the step), false if the residuals
-// are undefined on both sides.
+// Jacobian column j at x by central differences (one-sided where a bound is within the step), or, given the
+// residuals r_at of x (LmOptions::forward_differences), by a one-sided difference to the side that is inside
+// the bounds; false if the residuals are undefined there.
 template <class Eval>
 bool difference_column(const std::vector<optim::Variable>& vars, std::span<const double> x, std::size_t j, double step,
                        std::vector<double>& x_fd, Eigen::VectorXd& r_plus, Eigen::VectorXd& r_minus, Eval&& eval,
-                       Eigen::Ref<Eigen::VectorXd> column) {
+                       Eigen::Ref<Eigen::VectorXd> column, const Eigen::VectorXd* r_at = nullptr) {
   const double h = step * std::max(1.0, std::fabs(x[j]));
   const double hi = std::min(x[j] + h, vars[j].upper);
   const double lo = std::max(x[j] - h, vars[j].lower);
   x_fd.assign(x.begin(), x.end());
+  if (r_at != nullptr) {
+    const double to = hi > x[j] ? hi : lo;
+    x_fd[j] = to;
+    if (!(to != x[j]) || !eval(x_fd, r_plus)) {
+      column.setZero();
+      return false;
+    }
+    column = (r_plus - *r_at) / (to - x[j]);
+    return true;
+  }
   x_fd[j] = hi;
   const bool ok_hi = eval(x_fd, r_plus);
   x_fd[j] = lo;
@@ -48,8 +63,8 @@ bool difference_column(const std::vector<optim::Variable>& vars, std::span<const
 // difference_column (Ceres's own numeric differentiation would step outside the bounds).
 class CeresResiduals final : public ceres::CostFunction {
  public:
-  CeresResiduals(const LeastSquaresProblem& problem, double step, std::size_t& evaluations)
-      : problem_(problem), step_(step), evaluations_(evaluations) {
+  CeresResiduals(const LeastSquaresProblem& problem, double step, bool forward, std::size_t& evaluations)
+      : problem_(problem), step_(step), forward_(forward), evaluations_(evaluations) {
     set_num_residuals(static_cast<int>(problem.residual_count));
     mutable_parameter_block_sizes()->push_back(static_cast<std::int32_t>(problem.variables.size()));
   }
@@ -77,7 +92,8 @@ class CeresResiduals final : public ceres::CostFunction {
     Eigen::VectorXd r_plus(r.size()), r_minus(r.size()), column(r.size());
     std::vector<double> x_fd;
     for (std::size_t j = 0; j < n; ++j) {
-      (void)difference_column(problem_.variables, x, j, step_, x_fd, r_plus, r_minus, eval, column);
+      (void)difference_column(problem_.variables, x, j, step_, x_fd, r_plus, r_minus, eval, column,
+                              forward_ ? &r : nullptr);
       J.col(static_cast<Eigen::Index>(j)) = column;
     }
     return true;
@@ -86,19 +102,41 @@ class CeresResiduals final : public ceres::CostFunction {
  private:
   const LeastSquaresProblem& problem_;
   double step_;
+  bool forward_;
   std::size_t& evaluations_;
 };
 
-// Stops Ceres once the mean |r| reaches the target (Ceres's own tolerances are relative).
+// Stops Ceres once the mean |r| reaches the target (Ceres's own tolerances are relative), or once the time
+// budget (0 = none) has run out after an accepted step.
 class TargetCallback final : public ceres::IterationCallback {
  public:
-  explicit TargetCallback(double cost_target) : cost_target_(cost_target) {}
+  TargetCallback(double cost_target, double budget_seconds, std::size_t max_accepted,
+                 std::chrono::steady_clock::time_point start)
+      : cost_target_(cost_target), budget_seconds_(budget_seconds), max_accepted_(max_accepted), start_(start) {}
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& summary) override {
-    return summary.cost <= cost_target_ ? ceres::SOLVER_TERMINATE_SUCCESSFULLY : ceres::SOLVER_CONTINUE;
+    if (summary.cost <= cost_target_) return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
+    if (summary.iteration > 0 && summary.step_is_successful) ++accepted_;
+    if (accepted_ > 0 && budget_seconds_ > 0.0 && elapsed_seconds(start_) >= budget_seconds_) {
+      out_of_time_ = true;
+      return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
+    }
+    if (max_accepted_ > 0 && accepted_ >= max_accepted_) {
+      out_of_steps_ = true;
+      return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
+    }
+    return ceres::SOLVER_CONTINUE;
   }
+  [[nodiscard]] bool out_of_time() const noexcept { return out_of_time_; }
+  [[nodiscard]] bool out_of_steps() const noexcept { return out_of_steps_; }
 
  private:
   double cost_target_;
+  double budget_seconds_;
+  std::size_t max_accepted_;
+  std::chrono::steady_clock::time_point start_;
+  std::size_t accepted_ = 0;
+  bool out_of_time_ = false;
+  bool out_of_steps_ = false;
 };
 
 }  // namespace
@@ -121,6 +159,8 @@ void LmOptions::validate() const {
   check_range(std::isfinite(initial_lambda) && initial_lambda > 0.0, "initial_lambda", initial_lambda,
               "finite and > 0");
   check_range(difference_step > 0.0 && difference_step <= 1e-2, "difference_step", difference_step, "in (0, 1e-2]");
+  check_range(std::isfinite(time_budget_seconds) && time_budget_seconds >= 0.0, "time_budget_seconds",
+              time_budget_seconds, "finite and >= 0");
 }
 
 LmResult refine_levenberg_marquardt(const LeastSquaresProblem& problem, std::span<const double> start,
@@ -177,6 +217,7 @@ LmResult refine_levenberg_marquardt(const LeastSquaresProblem& problem, std::spa
     double cost = r.squaredNorm();
     double lambda = options.initial_lambda;
     bool need_jacobian = true;
+    std::size_t accepted = 0;
     for (std::size_t step = 0; step < budget; ++step) {
       if (mean_abs(r) <= target) return end_with(Termination::TargetReached, "target_mean reached");
       if (need_jacobian) {
@@ -190,7 +231,7 @@ LmResult refine_levenberg_marquardt(const LeastSquaresProblem& problem, std::spa
         } else {
           for (std::size_t j = 0; j < n; ++j)
             (void)difference_column(vars, x, j, options.difference_step, x_fd, r_plus, r_minus, eval,
-                                    J.col(static_cast<Eigen::Index>(j)));
+                                    J.col(static_cast<Eigen::Index>(j)), options.forward_differences ? &r : nullptr);
         }
         need_jacobian = false;
       }
@@ -218,6 +259,11 @@ LmResult refine_levenberg_marquardt(const LeastSquaresProblem& problem, std::spa
         need_jacobian = true;
         if (reduction < options.relative_tolerance)
           return end_with(Termination::Converged, "a step lowered the cost by less than relative_tolerance");
+        if (options.time_budget_seconds > 0.0 && elapsed_seconds(clock_start) >= options.time_budget_seconds)
+          return end_with(Termination::WallTime, "time_budget_seconds ran out");
+        if (options.max_accepted_steps > 0 && ++accepted >= options.max_accepted_steps)
+          return end_with(Termination::MaxGenerations,
+                          "max_accepted_steps = " + std::to_string(options.max_accepted_steps) + " steps accepted");
       } else {
         lambda *= 4.0;
         if (lambda > 1e16) return end_with(Termination::Stagnation, "damping overflow: no step lowers the cost");
@@ -234,7 +280,9 @@ LmResult refine_levenberg_marquardt(const LeastSquaresProblem& problem, std::spa
     ceres::Problem::Options problem_options;
     problem_options.cost_function_ownership = ceres::TAKE_OWNERSHIP;
     ceres::Problem cp(problem_options);
-    cp.AddResidualBlock(new CeresResiduals(problem, options.difference_step, result.evaluations), nullptr, x.data());
+    cp.AddResidualBlock(
+        new CeresResiduals(problem, options.difference_step, options.forward_differences, result.evaluations), nullptr,
+        x.data());
     std::vector<int> fixed;
     for (std::size_t j = 0; j < n; ++j) {
       // Ceres wants lower < upper; a zero-width box is a fixed coordinate.
@@ -264,7 +312,8 @@ LmResult refine_levenberg_marquardt(const LeastSquaresProblem& problem, std::spa
       so.num_threads = 1;
       // mean |r| <= rms |r| = √(‖r‖² / m): a cost ½‖r‖² <= ½ m t² guarantees the target; the true mean is reported.
       const double t = options.target_mean;
-      TargetCallback stop(0.5 * static_cast<double>(m) * t * t);
+      TargetCallback stop(0.5 * static_cast<double>(m) * t * t, options.time_budget_seconds, options.max_accepted_steps,
+                          clock_start);
       so.callbacks.push_back(&stop);
       ceres::Solver::Summary summary;
       ceres::Solve(so, &cp, &summary);
@@ -273,6 +322,11 @@ LmResult refine_levenberg_marquardt(const LeastSquaresProblem& problem, std::spa
         throw Error(Errc::NumericalFailure, "the residuals are undefined at the solver's result", {.field = "start"});
       if (mean_abs(r) <= t)
         end_with(Termination::TargetReached, "target_mean reached");
+      else if (stop.out_of_time())
+        end_with(Termination::WallTime, "time_budget_seconds ran out");
+      else if (stop.out_of_steps())
+        end_with(Termination::MaxGenerations,
+                 "max_accepted_steps = " + std::to_string(options.max_accepted_steps) + " steps accepted");
       else if (summary.termination_type == ceres::CONVERGENCE)
         end_with(Termination::Converged, summary.message);
       else if (summary.termination_type == ceres::NO_CONVERGENCE)
@@ -282,7 +336,7 @@ LmResult refine_levenberg_marquardt(const LeastSquaresProblem& problem, std::spa
     }
   }
   result.mean_after = mean_abs(r);
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
+  result.seconds = elapsed_seconds(clock_start);
   return result;
 }
 

@@ -70,6 +70,9 @@ struct LmOptions {
   bool direct_start = true;
   /// Steps (accepted or rejected) at most; >= 1. Default 200.
   std::size_t max_iterations = 200;
+  /// Accepted steps at most (each one recomputes the Jacobian); 0 = no limit but max_iterations (default).
+  /// A solve it ends reports Termination::MaxGenerations.
+  std::size_t max_accepted_steps = 0;
   /// Stop once the mean curvature distance is <= this; >= 0, finite. Default 1e-10.
   double target_mean = 1e-10;
   /// Stop when an accepted step lowers ‖r‖² by less than this fraction of it; >= 0. Default 1e-14.
@@ -82,6 +85,14 @@ struct LmOptions {
   bool exact_jacobian = true;
   /// Finite-difference step relative to max(1, |x_j|); in (0, 1e-2]. Default 1e-6.
   double difference_step = 1e-6;
+  /// Without an exact Jacobian: one-sided (forward, or backward at an upper bound) differences from the
+  /// residuals at x, n residual evaluations per Jacobian instead of 2n, accurate to O(step) instead of
+  /// O(step²) (for a caller with a deadline: the fairing assistant's ghost). Default false (central).
+  bool forward_differences = false;
+  /// Wall-clock budget of the solve, seconds; 0 = none (default), otherwise finite and > 0. Checked after
+  /// every step once a step has been accepted (the first accepted step always runs); a solve it ends reports
+  /// Termination::WallTime and keeps its best point. Not part of the study files (a caller's limit).
+  double time_budget_seconds = 0.0;
 
   /// @throws hula::Error(Errc::InvalidOption) naming the field and its value when outside the ranges above
   void validate() const;
@@ -99,7 +110,8 @@ struct LmResult {
   std::size_t evaluations = 0;
   /// Why it stopped: TargetReached, Converged (an accepted step lowered ‖r‖² by less than relative_tolerance,
   /// or Ceres's CONVERGENCE), MaxGenerations (max_iterations steps), Stagnation (the damping overflowed: no
-  /// step lowers the cost; Ceres's FAILURE), with a message (Ceres's own for its solver).
+  /// step lowers the cost; Ceres's FAILURE), WallTime (LmOptions::time_budget_seconds ran out), with a
+  /// message (Ceres's own for its solver).
   optim::Termination termination = optim::Termination::MaxGenerations;
   std::string message{};
   /// Wall time in seconds.
