@@ -3,6 +3,20 @@
 // replies and document events; the page draws, picks and snaps.
 
 import { ApiError, Client } from './api/client';
+import { Editor } from './editor/editor';
+import { createCurve } from './commands/create-curve';
+import { replaceCurve } from './commands/replace-curve';
+import { patchEntity } from './commands/patch-entity';
+import { setHidden, setLocked } from './commands/set-attributes';
+import { movePoint } from './commands/move-point';
+import { undo } from './commands/undo';
+import { redo } from './commands/redo';
+import { insertKnot } from './commands/insert-knot';
+import { elevate } from './commands/elevate';
+import { reverse } from './commands/reverse';
+import { split } from './commands/split';
+import { deleteSelected } from './commands/delete';
+import { importFile } from './commands/import-file';
 import { analysisFromServer, entityFromServer, finLines, withHandles } from './api/adapt';
 import type {
   Analysis,
@@ -19,9 +33,6 @@ import { DocumentStore } from './store/store';
 import { snapTargets } from './controller/snap';
 import { SPACE_FINS, combescureSize, handlesOf, type ViewSettings } from './store/curves';
 import {
-  curveColour,
-  freshColour,
-  hex,
   loadViewState,
   saveViewState,
   type ViewState,
@@ -44,7 +55,6 @@ import {
   ControlPointTool,
   HermiteTool,
   SplineTool,
-  midSpan,
   type Tool,
   type ToolHost,
   type ToolName,
@@ -115,38 +125,21 @@ export class App {
   readonly exportMenu: ExportMenu;
   /** The hover readout at the cursor on the curve (s or t, κ, R, τ). */
   private readonly curveReadout: HTMLElement;
-  selected: string | null = null;
-  /** Whether a curve is hidden: the document's `visible` attribute (oli), set in the object list. */
+  /** The client, the selection, the status and the commands' shared helpers. */
+  readonly editor: Editor;
+
+  get selected(): string | null {
+    return this.editor.selected;
+  }
+
   isHidden(label: string): boolean {
-    const pending = this.pendingAttributes.get(label);
-    if (pending && 'visible' in pending) return pending['visible'] === false;
-    return this.store.entities.get(label)?.attributes['visible'] === false;
+    return this.editor.isHidden(label);
   }
 
-  /** Whether a curve is locked: the document's `locked` attribute (oli), set in the object list. */
   isLocked(label: string): boolean {
-    const pending = this.pendingAttributes.get(label);
-    if (pending && 'locked' in pending) return pending['locked'] === true;
-    return this.store.entities.get(label)?.attributes['locked'] === true;
+    return this.editor.isLocked(label);
   }
 
-  /**
-   * Attributes asked of the server and not yet answered: a hide or lock shows
-   * at once (a click just after "hide" must not pick the curve), and the
-   * stored value comes back if the server refuses.
-   */
-  private readonly pendingAttributes = new Map<string, Record<string, unknown>>();
-
-  private async patchAttributes(label: string, attributes: Record<string, unknown>): Promise<void> {
-    this.pendingAttributes.set(label, { ...this.pendingAttributes.get(label), ...attributes });
-    this.redrawCurve(label);
-    try {
-      await this.patch(label, { attributes });
-    } finally {
-      this.pendingAttributes.delete(label);
-      if (this.store.entities.has(label)) this.redrawCurve(label);
-    }
-  }
   /** Result curves of the studies run from this page: curve label → study label. */
   readonly studyOf = new Map<string, string>();
   /** Set while a stored view state is applied: nothing is saved back meanwhile. */
@@ -172,7 +165,6 @@ export class App {
   private events: EventSource | null = null;
   private offline = false;
   private navigating: { view: ViewName; x: number; y: number; mode: 'pan' | 'orbit' } | null = null;
-  private hoverIndex: number | null = null;
   /**
    * The ghost: the selected curve's analysis before the last drag or rebuild,
    * drawn faintly in the views and overlaid on the graphs until another curve
@@ -203,6 +195,14 @@ export class App {
     docName: string,
   ) {
     this.store = new DocumentStore(docName);
+    this.editor = new Editor(client, this.store);
+    this.editor.deferFetch = (label) => {
+      // A curve being dragged is fetched once, when its last move is answered (dragSettled):
+      // the page sent every position, and a fetch per move doubled the drag's requests.
+      if (label !== this.settling) return false;
+      this.panelsStale = true;
+      return true;
+    };
     this.viewports = new Viewports(document.getElementById('viewports')!);
     this.curveReadout = document.createElement('div');
     this.curveReadout.className = 'readout curve-readout';
@@ -217,6 +217,22 @@ export class App {
     this.makeGraphs();
     this.bindViews();
     this.bindToolbar();
+    this.editor.subscribe((e) => {
+      switch (e.type) {
+        case 'selection':
+          this.selectionChanged(e.previous);
+          break;
+        case 'status':
+          this.showStatus(e.text, e.error);
+          break;
+        case 'toast':
+          this.showToast(e.error);
+          break;
+        case 'pending':
+          this.redrawCurve(e.label);
+          break;
+      }
+    });
     this.store.subscribe((e) => {
       switch (e.type) {
         case 'document':
@@ -443,20 +459,14 @@ export class App {
     this.viewStateChanged();
   }
 
-  /**
-   * Show or hide a curve (object list): the entity's `visible` attribute, so
-   * the document and every client agree (one "edit attributes" step); a
-   * hidden curve is neither drawn nor picked.
-   */
+  /** Show or hide a curve (object list): commands/set-attributes. */
   async setHidden(label: string, hidden: boolean): Promise<void> {
-    await this.patchAttributes(label, { visible: !hidden });
-    this.setStatus(`${this.nameOf(label)} ${hidden ? 'hidden' : 'shown'}`);
+    await setHidden(this.editor, label, hidden);
   }
 
-  /** Lock or unlock a curve (the `locked` attribute): a locked curve is not picked nor dragged. */
+  /** Lock or unlock a curve (object list): commands/set-attributes. */
   async setLocked(label: string, locked: boolean): Promise<void> {
-    await this.patchAttributes(label, { locked });
-    this.setStatus(`${this.nameOf(label)} ${locked ? 'locked' : 'unlocked'}`);
+    await setLocked(this.editor, label, locked);
   }
 
   /**
@@ -561,6 +571,10 @@ export class App {
   }
 
   setStatus(text: string, error = false): void {
+    this.editor.setStatus(text, error);
+  }
+
+  private showStatus(text: string, error: boolean): void {
     const el = document.getElementById('status')!;
     el.textContent = text;
     el.classList.toggle('offline', error);
@@ -568,6 +582,10 @@ export class App {
 
   /** An error toast carrying the server's code, message and field. */
   toast(e: unknown): void {
+    this.editor.toast(e);
+  }
+
+  private showToast(e: unknown): void {
     const box = document.getElementById('toasts')!;
     const t = document.createElement('div');
     t.className = 'toast';
@@ -590,196 +608,76 @@ export class App {
     }, 8000);
   }
 
-  /**
-   * Run a server call, turning a failure into a toast; with `what` (the
-   * command's name) the status line says it failed, so it never keeps the
-   * previous command's message.
-   */
-  async run<T>(f: () => Promise<T>, what?: string): Promise<T | undefined> {
-    try {
-      return await f();
-    } catch (e) {
-      if (!(e instanceof ApiError && e.offline)) this.toast(e);
-      if (what)
-        this.setStatus(
-          `${what} failed: ${e instanceof ApiError ? (e.offline ? 'the server is unreachable' : e.body.message) : String(e)}`,
-          true,
-        );
-      return undefined;
-    }
-  }
-
-  /** The selected curve, or null with the status saying that `what` needs one. */
-  private needSelection(what: string): string | null {
-    if (this.selected) return this.selected;
-    this.setStatus(`${what}: nothing is selected; click a curve first (V)`, true);
-    return null;
+  /** Run a server call, turning a failure into a toast (and the status, with `what`). */
+  run<T>(f: () => Promise<T>, what?: string): Promise<T | undefined> {
+    return this.editor.run(f, what);
   }
 
   /** A curve's name for messages: its name, else its label. */
   nameOf(label: string): string {
-    const e = this.store.entities.get(label);
-    return e?.name ? `${e.name} (${label})` : label;
+    return this.editor.nameOf(label);
   }
 
   // ---- editing ---------------------------------------------------------------
 
   /** A curve's drawn colour (its colour attribute, else its label's palette colour). */
   colourOf(label: string): number {
-    return curveColour(label, this.store.entities.get(label)?.attributes);
+    return this.editor.colourOf(label);
   }
 
-  async createCurve(name: string, curve: CurveFile): Promise<string | undefined> {
-    // A colour no visible curve has, stored with the curve so it stays across reloads and tabs.
-    const visible = [...this.store.entities.values()]
-      .filter((e) => e.curve !== undefined && !this.isHidden(String(e.label)))
-      .map((e) => this.colourOf(String(e.label)));
-    const colour = hex(freshColour(visible));
-    const reply = await this.run(
-      () => this.client.createEntity(this.store.name, name, curve, { colour }),
-      `Create ${curve.kind} curve`,
-    );
-    if (!reply) return undefined;
-    this.applyReply(reply);
-    const made = reply.label ?? reply.changes.added?.[0];
-    const label = made === undefined ? undefined : String(made);
-    if (label) {
-      this.select(label);
-      this.setStatus(
-        `Created ${curve.kind} curve ${name} (${label})${this.tool ? `; ${this.tool.hint}` : ''}`,
-      );
-    }
-    return label;
+  // The undoable actions are commands (src/commands/, one per file) on the editor.
+
+  createCurve(name: string, curve: CurveFile): Promise<string | undefined> {
+    return createCurve(this.editor, name, curve, this.tool?.hint);
   }
 
   /** Apply a change reply; entities named by label only are fetched. */
   applyReply(reply: ChangeReply): void {
-    this.fetchStale(this.store.applyReply(reply));
+    this.editor.applyReply(reply);
   }
 
   applyChanges(changes: ChangeSet): void {
-    this.fetchStale(this.store.apply(changes));
+    this.editor.fetchStale(this.store.apply(changes));
   }
 
-  private fetchStale(labels: string[]): void {
-    for (const label of labels) {
-      // A curve being dragged is fetched once, when its last move is answered (dragSettled):
-      // the page sent every position, and a fetch per move doubled the drag's requests.
-      if (label === this.settling) {
-        this.panelsStale = true;
-        continue;
-      }
-      void this.client
-        .getEntity(this.store.name, label)
-        .then((e) => {
-          this.store.put(e);
-        })
-        .catch((e: unknown) => {
-          if (e instanceof ApiError && e.status === 404) this.store.remove(label);
-          else if (!(e instanceof ApiError && e.offline)) this.toast(e);
-        });
-    }
+  replaceCurve(label: string, curve: CurveFile): Promise<void> {
+    return replaceCurve(this.editor, label, curve);
   }
 
-  async replaceCurve(label: string, curve: CurveFile): Promise<void> {
-    const reply = await this.run(() => this.client.putEntity(this.store.name, label, curve));
-    if (reply) this.applyReply(reply);
+  patch(label: string, body: Record<string, unknown>): Promise<void> {
+    return patchEntity(this.editor, label, body);
   }
 
-  async patch(label: string, body: Record<string, unknown>): Promise<void> {
-    const reply = await this.run(() => this.client.patchEntity(this.store.name, label, body));
-    if (reply) this.applyReply(reply);
+  movePoint(label: string, index: number, to: Vec3): Promise<void> {
+    return movePoint(this.editor, label, index, to);
   }
 
-  async movePoint(label: string, index: number, to: Vec3): Promise<void> {
-    const reply = await this.run(() =>
-      this.client.movePoints(this.store.name, label, [{ index, to: [...to] }], false),
-    );
-    if (reply) this.applyReply(reply);
+  undo(): Promise<void> {
+    return undo(this.editor);
   }
 
-  async undo(): Promise<void> {
-    const reply = await this.run(() => this.client.undo(this.store.name), 'Undo');
-    if (!reply) return;
-    this.applyReply(reply);
-    this.setStatus(`Undone: ${reply.changes.name ?? 'last step'} (revision ${reply.revision})`);
+  redo(): Promise<void> {
+    return redo(this.editor);
   }
 
-  async redo(): Promise<void> {
-    const reply = await this.run(() => this.client.redo(this.store.name), 'Redo');
-    if (!reply) return;
-    this.applyReply(reply);
-    this.setStatus(`Redone: ${reply.changes.name ?? 'step'} (revision ${reply.revision})`);
+  insertKnotSelected(): Promise<void> {
+    return insertKnot(this.editor);
   }
 
-  /** Insert a knot into the selected curve at the hovered sample's parameter, else mid-span. */
-  async insertKnotSelected(): Promise<void> {
-    const label = this.needSelection('Insert knot');
-    if (!label) return;
-    const a = this.store.analyses.get(label);
-    const hovered = this.hoverIndex !== null && a ? a.t[this.hoverIndex] : undefined;
-    const c = this.store.entities.get(label)?.curve;
-    const t = a?.t ?? [];
-    const u =
-      hovered ??
-      (c?.kind === 'nurbs' ? midSpan(c.knots) : 0.5 * ((t[0] ?? 0) + (t[t.length - 1] ?? 1)));
-    const reply = await this.run(
-      () => this.client.insertKnot(this.store.name, label, u),
-      'Insert knot',
-    );
-    if (!reply) return;
-    this.applyReply(reply);
-    this.setStatus(`Inserted a knot at t = ${Number(u.toPrecision(6))} into ${this.nameOf(label)}`);
+  elevateSelected(): Promise<void> {
+    return elevate(this.editor);
   }
 
-  /** Raise the degree of the selected curve by one. */
-  async elevateSelected(): Promise<void> {
-    const label = this.needSelection('Elevate degree');
-    if (!label) return;
-    const reply = await this.run(
-      () => this.client.elevate(this.store.name, label),
-      'Elevate degree',
-    );
-    if (!reply) return;
-    this.applyReply(reply);
-    this.setStatus(`Raised the degree of ${this.nameOf(label)} by one`);
+  reverseSelected(): Promise<void> {
+    return reverse(this.editor);
   }
 
-  /** Reverse the direction of the selected curve (its graphs run the other way). */
-  async reverseSelected(): Promise<void> {
-    const label = this.needSelection('Reverse');
-    if (!label) return;
-    const reply = await this.run(() => this.client.reverse(this.store.name, label), 'Reverse');
-    if (!reply) return;
-    this.applyReply(reply);
-    this.setStatus(`Reversed ${this.nameOf(label)}`);
+  splitSelected(): Promise<void> {
+    return split(this.editor);
   }
 
-  /** Split the selected curve at the hovered sample's parameter, else mid-domain; select the first piece. */
-  async splitSelected(): Promise<void> {
-    const label = this.needSelection('Split');
-    if (!label) return;
-    const t = this.store.analyses.get(label)?.t ?? [];
-    const hovered = this.hoverIndex !== null ? t[this.hoverIndex] : undefined;
-    const at = hovered ?? 0.5 * ((t[0] ?? 0) + (t[t.length - 1] ?? 1));
-    const reply = await this.run(() => this.client.split(this.store.name, label, at), 'Split');
-    if (!reply) return;
-    this.applyReply(reply);
-    const first = reply.labels[0];
-    if (first !== undefined) this.select(String(first));
-    this.setStatus(
-      `Split ${this.nameOf(label)} at t = ${Number(at.toPrecision(6))} into ${reply.labels.join(' and ')}`,
-    );
-  }
-
-  async deleteSelected(): Promise<void> {
-    const label = this.needSelection('Delete');
-    if (!label) return;
-    const name = this.nameOf(label);
-    const reply = await this.run(() => this.client.deleteEntity(this.store.name, label), 'Delete');
-    if (!reply) return;
-    this.applyReply(reply);
-    this.setStatus(`Deleted ${name} (Ctrl+Z undoes)`);
+  deleteSelected(): Promise<void> {
+    return deleteSelected(this.editor);
   }
 
   refreshHistory(): void {
@@ -913,8 +811,12 @@ export class App {
   }
 
   select(label: string | null): void {
-    const previous = this.selected;
-    this.selected = label;
+    this.editor.select(label);
+  }
+
+  /** The selection changed (editor event): views, graphs, panels and the stored view state follow. */
+  private selectionChanged(previous: string | null): void {
+    const label = this.selected;
     if (this.ghost && this.ghost.label !== label) this.setGhost(null);
     if (previous !== label) this.fairing.edited(label);
     if (previous) this.redrawCurve(previous);
@@ -925,7 +827,7 @@ export class App {
   }
 
   get selectedEntity(): Entity | undefined {
-    return this.selected ? this.store.entities.get(this.selected) : undefined;
+    return this.editor.selectedEntity;
   }
 
   // ---- graphs ----------------------------------------------------------------
@@ -999,7 +901,7 @@ export class App {
 
   /** Linked hover: a sample index from a graph or the curve highlights both. */
   hoverSample(index: number | null, from?: Graph): void {
-    this.hoverIndex = index;
+    this.editor.hovered = index;
     const a = this.selected ? this.store.analyses.get(this.selected) : undefined;
     const p = index !== null && a ? a.points[index] : undefined;
     this.viewports.setMarker(p ? toVec3(p) : null);
@@ -1010,7 +912,7 @@ export class App {
   }
 
   get hovered(): number | null {
-    return this.hoverIndex;
+    return this.editor.hovered;
   }
 
   // ---- viewport input ----------------------------------------------------
@@ -1202,7 +1104,7 @@ export class App {
     const [x, y] = this.local(view, ev);
     const { w, h } = this.viewports.size(view);
     const hit = pickPolyline([x, y], a.points.map(toVec3), this.viewports.viewProj(view), w, h, 8);
-    if ((hit?.index ?? null) !== this.hoverIndex) this.hoverSample(hit?.index ?? null);
+    if ((hit?.index ?? null) !== this.editor.hovered) this.hoverSample(hit?.index ?? null);
     // The readout follows the cursor on the curve.
     const box = this.viewports.root.getBoundingClientRect();
     this.readoutAt = hit ? [ev.clientX - box.left + 14, ev.clientY - box.top + 10] : null;
@@ -1215,7 +1117,7 @@ export class App {
   private placeReadout(): void {
     const el = this.curveReadout;
     const a = this.selected ? this.store.analyses.get(this.selected) : undefined;
-    const i = this.hoverIndex;
+    const i = this.editor.hovered;
     if (!this.readoutAt || !a || i === null || i >= a.t.length) {
       el.hidden = true;
       return;
@@ -1316,7 +1218,7 @@ export class App {
       .then((reply) => {
         this.serverLatencies.push(performance.now() - stamp);
         d.lastReply = reply;
-        this.fetchStale(this.store.applyReply(reply, d.label));
+        this.editor.applyReply(reply, d.label);
         // A curve the page cannot evaluate follows through the server's analysis of each move.
         if (!d.local) this.settleFrom(d, false);
       })
@@ -1564,33 +1466,12 @@ export class App {
   }
 
   async importFile(file: File): Promise<void> {
-    const text = await file.text();
-    if (/\.(step|stp|iges|igs)$/i.test(file.name)) {
-      // STEP/IGES are read by the server's isolated Open CASCADE helper.
-      const reply = await this.run(() => this.client.importFile(this.store.name, file.name, text));
-      if (!reply) return;
-      this.applyReply(reply);
-      const first = reply.labels[0];
-      if (first !== undefined) this.select(String(first));
-      this.fitAll();
-      return;
-    }
-    let curve: CurveFile;
-    try {
-      curve = JSON.parse(text) as CurveFile;
-    } catch (e) {
-      this.toast(
-        new Error(`${file.name}: not JSON (${e instanceof Error ? e.message : String(e)})`),
-      );
-      return;
-    }
-    await this.createCurve(file.name.replace(/\.[^.]*$/, ''), curve);
-    this.fitAll();
+    if (await importFile(this.editor, file.name, await file.text(), this.tool?.hint)) this.fitAll();
   }
 
   /** Writes the selected curve in `format` through the server and offers the file as a download. */
   async exportSelected(format: MenuFormat): Promise<void> {
-    const label = this.needSelection('Export');
+    const label = this.editor.needSelection('Export');
     if (label === null) return;
     const what = `Export ${format.toUpperCase()}`;
     const reply = await this.run(
