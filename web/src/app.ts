@@ -17,7 +17,7 @@ import { reverse } from './commands/reverse';
 import { split } from './commands/split';
 import { deleteSelected } from './commands/delete';
 import { importFile } from './commands/import-file';
-import { analysisFromServer, entityFromServer, finLines, withHandles } from './api/adapt';
+import { finLines } from './api/adapt';
 import type {
   Analysis,
   AnalysisRequest,
@@ -31,14 +31,12 @@ import type {
 } from './api/types';
 import { DocumentStore } from './store/store';
 import { snapTargets } from './controller/snap';
+import { DragController } from './controller/drag';
+import { AnalysisScheduler } from './controller/analysis';
 import { SPACE_FINS, combescureSize, handlesOf, type ViewSettings } from './store/curves';
-import {
-  loadViewState,
-  saveViewState,
-  type ViewState,
-} from './store/viewstate';
+import { loadViewState, saveViewState, type ViewState } from './store/viewstate';
 import { Graph, readout, type Abscissa, type Quantity } from './graphs/graph';
-import { boxDiagonal, nearestIndex } from './graphs/scale';
+import { boxDiagonal } from './graphs/scale';
 import { Viewports, toVec3 } from './viewport/viewports';
 import {
   dragPlane,
@@ -60,8 +58,6 @@ import {
   type ToolName,
 } from './tools/tools';
 import { Panels } from './panels/panels';
-import { NurbsEvaluator } from './geometry/nurbs';
-import { analyseNurbs } from './geometry/analysis';
 import { DesignByCurvature } from './panels/design';
 import { OptimisePanel } from './panels/optimise';
 import { FairingAssistant } from './tools/fairing';
@@ -72,47 +68,6 @@ import {
   exportFileName,
   type MenuFormat,
 } from './panels/export';
-
-interface Drag {
-  label: string;
-  index: number;
-  view: ViewName;
-  first: boolean;
-  inFlight: boolean;
-  pending: Vec3 | null;
-  pendingStamp: number;
-  handles: Vec3[];
-  /** A NURBS or Bézier curve: drawn from the page's own evaluation while dragged. */
-  local: boolean;
-  /** Moved since the last frame drew it. */
-  dirty: boolean;
-  /** A move was not stored (the server is unreachable): the drag is over and reverted. */
-  failed: boolean;
-  /**
-   * The handle minus the pointer's point where the drag started: the handle
-   * moves by what the pointer moved (a 2 px nudge moves it 2 px worth), it
-   * does not jump to the pointer.
-   */
-  grab: Vec3;
-  /**
-   * The reply to the latest move: the dragged entity as the server stores it
-   * and its analysis (asked for with the move), applied once the drag
-   * settles, so a drag costs one request per stored move and nothing after.
-   */
-  lastReply?: ChangeReply;
-}
-
-/**
- * The dragged curve as the page computes it (geometry/analysis.ts), drawn
- * instead of the server's analysis from the first move until the server's
- * analysis of the final position arrives (request number `until` or later).
- */
-interface Preview {
-  label: string;
-  analysis: Analysis;
-  handles: Vec3[];
-  until: number;
-}
 
 export class App {
   readonly store: DocumentStore;
@@ -148,20 +103,10 @@ export class App {
   toolName: ToolName = 'select';
   abscissa: Abscissa = 's';
   readonly settings = new Map<string, ViewSettings>();
-  private readonly analysisBusy = new Set<string>();
-  private readonly analysisDirty = new Set<string>();
-  private drag: Drag | null = null;
-  /** The handles of the last drag, until the store holds the curve with its final position. */
-  private moved: { label: string; handles: Vec3[] } | null = null;
-  private preview: Preview | null = null;
-  /** The curve of the last drag until the server has answered all its moves. */
-  private settling: string | null = null;
-  /** Curves whose entity comes with its analysis (a drag's reply): not asked for again. */
-  private readonly fresh = new Set<string>();
-  /** Analysis requests started so far (Preview.until counts in them). */
-  private analysisSeq = 0;
-  /** Panels and history wait for the end of a drag (rebuilding them per move cost whole frames). */
-  private panelsStale = false;
+  /** The drag of a handle: its moves, its PATCHes, its preview and its counters. */
+  readonly drags: DragController;
+  /** The server's analyses of the curves, one request per curve in flight. */
+  readonly analyses: AnalysisScheduler;
   private events: EventSource | null = null;
   private offline = false;
   private navigating: { view: ViewName; x: number; y: number; mode: 'pan' | 'orbit' } | null = null;
@@ -171,24 +116,20 @@ export class App {
    * is selected or Escape clears it.
    */
   ghost: { label: string; analysis: Analysis } | null = null;
-  /**
-   * Benchmarks of the current drag (ms): from a pointer event (its timeStamp)
-   * to the end of the frame that draws the curve moved there (the earliest
-   * event not yet drawn, when several come in one frame) …
-   */
-  readonly latencies: number[] = [];
-  /** … and from a pointer event to the server's reply to the move it sent. */
-  readonly serverLatencies: number[] = [];
-  private pointerStamp = 0;
-  /**
-   * The honest drag counters (read by e2e/bench.spec.ts), reset when a drag
-   * starts: pointer moves that changed the dragged point, and frames that drew
-   * the curve, its fins and (when it is the selected curve) the graphs at a
-   * new position of it, with the times of the first and last such move.
-   */
-  readonly dragStats = { moves: 0, redraws: 0, firstMove: 0, lastMove: 0 };
-  /** The current frame draws a new drag position (set by drawDrag, counted after the frame). */
-  private drewDrag = false;
+  /** Pointer-to-frame latencies of the current drag (ms; DragController). */
+  get latencies(): readonly number[] {
+    return this.drags.latencies;
+  }
+
+  /** Pointer-to-reply latencies of the current drag's moves (ms). */
+  get serverLatencies(): readonly number[] {
+    return this.drags.serverLatencies;
+  }
+
+  /** The honest drag counters (read by e2e/bench.spec.ts; DragController.dragStats). */
+  get dragStats(): DragController['dragStats'] {
+    return this.drags.dragStats;
+  }
 
   constructor(
     readonly client: Client,
@@ -196,11 +137,25 @@ export class App {
   ) {
     this.store = new DocumentStore(docName);
     this.editor = new Editor(client, this.store);
+    this.drags = new DragController(this);
+    this.analyses = new AnalysisScheduler(
+      this.editor,
+      (label) => this.analysisRequest(label),
+      (label, seq) => {
+        this.drags.analysisArrived(label, seq);
+      },
+      () => {
+        if (this.fitPending && !this.analysisPending) {
+          this.fitPending = false;
+          this.fitAll();
+        }
+      },
+    );
     this.editor.deferFetch = (label) => {
       // A curve being dragged is fetched once, when its last move is answered (dragSettled):
       // the page sent every position, and a fetch per move doubled the drag's requests.
-      if (label !== this.settling) return false;
-      this.panelsStale = true;
+      if (label !== this.drags.settling) return false;
+      this.drags.panelsStale = true;
       return true;
     };
     this.viewports = new Viewports(document.getElementById('viewports')!);
@@ -236,25 +191,25 @@ export class App {
     this.store.subscribe((e) => {
       switch (e.type) {
         case 'document':
-          if (!this.drag && this.settling === null) this.moved = null;
+          this.drags.documentLoaded();
           for (const label of this.store.entities.keys()) this.refreshAnalysis(label);
           this.redrawAll();
           this.refreshHistory();
           this.fairing.edited(this.selected);
           break;
         case 'entity':
-          if (this.drag?.label === e.label) {
+          if (this.drags.drag?.label === e.label) {
             // The server's echo of a drag move: analysed and listed once the drag ends
             // (a curve the page cannot evaluate is still analysed as it moves).
-            if (!this.drag.local) this.refreshAnalysis(e.label);
-            this.panelsStale = true;
+            if (!this.drags.drag.local) this.refreshAnalysis(e.label);
+            this.drags.panelsStale = true;
             return;
           }
           // The store now has the curve as the server holds it, a drag's last move included.
-          if (this.moved?.label === e.label && this.settling !== e.label) this.moved = null;
+          this.drags.entityStored(e.label);
           this.redrawCurve(e.label);
           // A drag's reply brought the analysis and the history step with the curve.
-          if (!this.fresh.delete(e.label)) {
+          if (!this.drags.takeFresh(e.label)) {
             this.refreshAnalysis(e.label);
             this.refreshHistory();
           }
@@ -272,7 +227,7 @@ export class App {
         case 'history':
           break;
       }
-      if (this.drag) this.panelsStale = true;
+      if (this.drags.dragging) this.drags.panelsStale = true;
       else this.panels.update();
     });
     client.onOffline = () => {
@@ -285,18 +240,10 @@ export class App {
       this.panels.reopenDialog();
     });
     this.viewports.beforeFrame.add(() => {
-      this.drawDrag();
+      this.drags.frame();
     });
     this.viewports.afterFrame.add(() => {
-      const now = performance.now();
-      if (this.drewDrag) {
-        this.drewDrag = false;
-        this.dragStats.redraws++;
-      }
-      if (this.pointerStamp) {
-        this.latencies.push(now - this.pointerStamp);
-        this.pointerStamp = 0;
-      }
+      this.drags.frameDrawn(performance.now());
     });
     this.setTool('select');
     this.panels.update();
@@ -734,41 +681,20 @@ export class App {
 
   /** What the views and graphs draw for a curve: the drag's preview, else the server's analysis. */
   analysisOf(label: string): Analysis | undefined {
-    return this.preview?.label === label ? this.preview.analysis : this.store.analyses.get(label);
+    return this.drags.analysisOf(label);
   }
 
   /** Ask the server for what the views draw; one request per curve in flight, the latest wins. */
   refreshAnalysis(label: string): void {
-    // Only curves have an analysis (a study entity is refused by the route).
-    if (!this.store.entities.get(label)?.curve) return;
-    if (this.analysisBusy.has(label)) {
-      this.analysisDirty.add(label);
-      return;
-    }
-    this.analysisBusy.add(label);
-    const seq = ++this.analysisSeq;
-    void this.client
-      .analysis(this.store.name, label, this.analysisRequest(label))
-      .then((a) => {
-        const p = this.preview;
-        if (p?.label === label && this.drag?.label !== label && seq >= p.until) this.preview = null;
-        this.store.setAnalysis(label, a);
-      })
-      .catch((e: unknown) => {
-        if (!(e instanceof ApiError && (e.offline || e.status === 404))) this.toast(e);
-      })
-      .finally(() => {
-        this.analysisBusy.delete(label);
-        if (this.analysisDirty.delete(label)) this.refreshAnalysis(label);
-        if (this.fitPending && !this.analysisPending) {
-          this.fitPending = false;
-          this.fitAll();
-        }
-      });
+    this.analyses.refresh(label);
   }
 
   get analysisPending(): boolean {
-    return this.analysisBusy.size > 0;
+    return this.analyses.pending;
+  }
+
+  get analysisSeq(): number {
+    return this.analyses.seq;
   }
 
   /** The fins drawn for a curve: planar curves show only the meaningful ones (8.4, 8.6). */
@@ -785,13 +711,7 @@ export class App {
     const s = this.settingsOf(label);
     this.viewports.drawCurve(label, {
       analysis: this.drawnAnalysis(label),
-      handles:
-        handlesOverride ??
-        (this.drag?.label === label
-          ? this.drag.handles
-          : this.preview?.label === label
-            ? this.preview.handles
-            : handlesOf(e.curve)),
+      handles: handlesOverride ?? this.drags.handlesOf(label) ?? handlesOf(e.curve),
       polygon:
         e.curve?.kind === 'nurbs' || e.curve?.kind === 'bezier' || e.curve?.kind === 'hermite',
       selected: label === this.selected,
@@ -992,7 +912,7 @@ export class App {
           return;
         }
         this.selectOrDrag(v.name, ev);
-        if (this.drag) el.setPointerCapture(ev.pointerId);
+        if (this.drags.dragging) el.setPointerCapture(ev.pointerId);
       });
       el.addEventListener('pointermove', (ev) => {
         if (this.navigating) {
@@ -1005,7 +925,7 @@ export class App {
           else this.viewports.pan(v.name, dx, dy);
           return;
         }
-        if (this.drag) {
+        if (this.drags.dragging) {
           this.dragTo(v.name, ev);
           return;
         }
@@ -1020,7 +940,7 @@ export class App {
           this.navigating = null;
           return;
         }
-        if (this.drag && ev.button === 0) this.endDrag();
+        if (this.drags.dragging && ev.button === 0) this.drags.end();
       };
       el.addEventListener('pointerup', up);
       el.addEventListener('pointercancel', up);
@@ -1045,8 +965,8 @@ export class App {
     if (this.selected && !this.isHidden(this.selected)) {
       // The last drag's points until the server's copy of the curve is back.
       const handles =
-        this.preview?.label === this.selected
-          ? this.preview.handles
+        this.drags.preview?.label === this.selected
+          ? this.drags.preview.handles
           : handlesOf(this.store.entities.get(this.selected)?.curve);
       const hit = pickNearest([x, y], handles, vp, w, h, 8);
       if (hit && this.isLocked(this.selected)) {
@@ -1057,33 +977,10 @@ export class App {
         return;
       }
       if (hit) {
-        const curve = this.store.entities.get(this.selected)?.curve;
-        this.drag = {
-          label: this.selected,
-          index: hit.index,
-          view,
-          first: true,
-          inFlight: false,
-          pending: null,
-          pendingStamp: 0,
-          handles: handles.slice(),
-          // Combescure fins are the server's alone: such a drag follows its analysis.
-          local:
-            curve !== undefined &&
-            NurbsEvaluator.of(curve) !== null &&
-            !this.settingsOf(this.selected).fins.includes('combescure'),
-          dirty: false,
-          failed: false,
-          grab: [0, 0, 0],
-        };
         const h0 = handles[hit.index]!;
         const at = this.viewports.pointOn(view, x, y, dragPlane(view, h0), false);
-        if (at) this.drag.grab = [h0[0] - at[0], h0[1] - at[1], h0[2] - at[2]];
-        this.settling = this.selected;
-        this.latencies.length = 0;
-        this.serverLatencies.length = 0;
-        Object.assign(this.dragStats, { moves: 0, redraws: 0, firstMove: 0, lastMove: 0 });
-        this.setGhost(this.selected);
+        const grab: Vec3 = at ? [h0[0] - at[0], h0[1] - at[1], h0[2] - at[2]] : [0, 0, 0];
+        this.drags.start(this.selected, hit.index, handles, grab);
         this.setStatus(`Dragging point ${hit.index}`);
         return;
       }
@@ -1133,7 +1030,7 @@ export class App {
    * next frame draws it (drawDrag); the server hears of it through flushDrag.
    */
   private dragTo(view: ViewName, ev: PointerEvent): void {
-    const d = this.drag!;
+    const d = this.drags.drag!;
     const [x, y] = this.local(view, ev);
     const start = d.handles[d.index]!;
     const plane = dragPlane(view, start);
@@ -1145,173 +1042,7 @@ export class App {
           index: d.index,
         })
       : null;
-    // A pointer event that does not move the point (the one a release may bring, or a move
-    // within a snapped grid cell) is no move: nothing to send, and the pointer has not moved.
-    if (!p || p.every((v, k) => v === start[k])) return;
-    d.handles[d.index] = p;
-    this.dragStats.moves++;
-    this.dragStats.firstMove ||= ev.timeStamp;
-    this.dragStats.lastMove = ev.timeStamp;
-    this.moved = { label: d.label, handles: d.handles };
-    this.fairing.pointerMoved();
-    // The event's own time: the latency includes the wait for the page to take the event.
-    if (!this.pointerStamp) this.pointerStamp = ev.timeStamp;
-    d.pendingStamp = ev.timeStamp;
-    d.dirty = true;
-    this.viewports.requestRender();
-    d.pending = p;
-    this.flushDrag();
-  }
-
-  /**
-   * Once per frame during a drag: the curve with the moved point, its fins and
-   * graphs, evaluated in the page for a NURBS or Bézier curve (the server's
-   * analysis for other kinds follows as it arrives).
-   */
-  private drawDrag(): void {
-    const d = this.drag;
-    if (!d?.dirty) return;
-    d.dirty = false;
-    const e = this.store.entities.get(d.label);
-    const evaluator = d.local && e?.curve ? NurbsEvaluator.of(e.curve, d.handles) : null;
-    if (evaluator) {
-      const s = this.settingsOf(d.label);
-      const analysis = analyseNurbs(evaluator, {
-        samples: s.samples,
-        by: this.abscissa === 's' ? 'arclength' : 'parameter',
-        fins: s.fins,
-        scale: s.scale,
-      });
-      // Knots stay where they are in t; inflections and extrema wait for the server.
-      const before = this.store.analyses.get(d.label) ?? this.preview?.analysis;
-      for (const f of before?.features ?? []) {
-        if (f.kind !== 'knot') continue;
-        const best = nearestIndex(analysis.t, f.t);
-        analysis.features.push(analysis.s.length ? { ...f, s: analysis.s[best]! } : { ...f });
-      }
-      this.preview = { label: d.label, analysis, handles: d.handles, until: Infinity };
-      if (d.label === this.selected) this.updateGraphs();
-    }
-    this.redrawCurve(d.label, d.handles);
-    // Curve, fins and graphs now hold the new position: the frame about to be drawn shows it.
-    if (evaluator) this.drewDrag = true;
-  }
-
-  /** Send the latest drag position; one PATCH in flight, `continue` after the first. */
-  private flushDrag(): void {
-    const d = this.drag;
-    if (!d || d.inFlight || !d.pending) return;
-    const to = d.pending;
-    d.pending = null;
-    const stamp = d.pendingStamp;
-    d.inFlight = true;
-    const continued = !d.first;
-    d.first = false;
-    this.client
-      .movePoints(
-        this.store.name,
-        d.label,
-        [{ index: d.index, to: [...to] }],
-        continued,
-        this.analysisRequest(d.label),
-      )
-      .then((reply) => {
-        this.serverLatencies.push(performance.now() - stamp);
-        d.lastReply = reply;
-        this.editor.applyReply(reply, d.label);
-        // A curve the page cannot evaluate follows through the server's analysis of each move.
-        if (!d.local) this.settleFrom(d, false);
-      })
-      .catch((e: unknown) => {
-        this.toast(e);
-        d.failed = true;
-        d.pending = null;
-      })
-      .finally(() => {
-        d.inFlight = false;
-        if (d.failed) this.revertDrag(d);
-        else if (this.drag === d) this.flushDrag();
-        else if (d.pending) {
-          this.drag = d;
-          this.flushDrag();
-          this.drag = null;
-        } else this.dragSettled(d);
-      });
-  }
-
-  /**
-   * A move of the drag was not stored: the drag ends here and the curve, its
-   * fins and graphs go back to what the server holds (the last stored move of
-   * this drag, else the curve before it), visibly, with the status saying so.
-   * A later reconnection reloads the document and changes nothing more.
-   */
-  private revertDrag(d: Drag): void {
-    if (this.drag === d) this.drag = null;
-    if (this.settling === d.label) this.settling = null;
-    if (this.moved?.label === d.label) this.moved = null;
-    if (this.preview?.label === d.label) this.preview = null;
-    this.pointerStamp = 0;
-    // The stored shape: the entity of the last answered move, else the store's (never replaced by the drag).
-    if (d.lastReply) this.settleFrom(d, true);
-    this.redrawCurve(d.label);
-    if (d.label === this.selected) this.updateGraphs();
-    this.setStatus(
-      `Point ${d.index} was not moved: the server did not answer; the curve is back as stored`,
-      true,
-    );
-    if (this.panelsStale) {
-      this.panelsStale = false;
-      this.panels.update();
-    }
-  }
-
-  /**
-   * The drag's last move is answered: the curve is fetched as the server holds
-   * it (refused moves included) and its analysis, with features, replaces the
-   * preview; panels and history catch up.
-   */
-  private dragSettled(d: Drag): void {
-    if (this.settling === d.label) this.settling = null;
-    if (!d.first) {
-      if (this.preview?.label === d.label) this.preview.until = this.analysisSeq + 1;
-      // The stored curve, its analysis with features and the history step, from the last move's
-      // reply (no request), once the fairing assistant's ghost of the final position is on screen.
-      this.fairing.afterGhost(() => {
-        this.settleFrom(d, true);
-      });
-    }
-    if (this.panelsStale) {
-      this.panelsStale = false;
-      this.panels.update();
-    }
-  }
-
-  /**
-   * The dragged curve as the last move's reply has it: the entity as the
-   * server stores it (refused moves included), its analysis (features and
-   * all), and, when the drag is over, its one "move points" history step.
-   */
-  private settleFrom(d: Drag, over: boolean): void {
-    const reply = d.lastReply;
-    const raw = reply?.changes.entities?.find((e) => String(e['label']) === d.label);
-    if (!reply || !raw) return;
-    if (reply.analysis) this.fresh.add(d.label);
-    this.store.put(entityFromServer(raw));
-    if (reply.analysis) {
-      const by = this.abscissa === 's' ? 'arclength' : 'parameter';
-      if (this.preview?.label === d.label && this.drag?.label !== d.label) this.preview = null;
-      this.store.setAnalysis(d.label, analysisFromServer(reply.analysis, by));
-    }
-    if (over && this.store.history) {
-      // The drag is one undo step (PATCH "continue"): undone steps go, the step is the last one.
-      const steps = this.store.history.steps.filter((h) => h.applied !== false);
-      steps.push({
-        revision: reply.revision,
-        name: reply.changes.name ?? 'move points',
-        applied: true,
-      });
-      this.store.setHistory({ steps });
-    }
+    this.drags.moveTo(p, ev.timeStamp);
   }
 
   /** The analysis the views and graphs ask for a curve (its view settings). */
@@ -1325,42 +1056,26 @@ export class App {
     };
   }
 
-  private endDrag(): void {
-    const d = this.drag;
-    if (!d) return;
-    // The fairing assistant's ghost of the final position is asked for first, the page's own
-    // redrawing and storing of that position after.
-    this.fairing.dragEnded();
-    // The last position is drawn even when no frame came between it and the release.
-    this.drawDrag();
-    this.drag = null;
-    if (d.failed) return; // reverted already
-    if (d.pending && !d.inFlight) {
-      this.drag = d;
-      this.flushDrag();
-      this.drag = null;
-    } else if (!d.inFlight) this.dragSettled(d);
-    this.setStatus(`Moved point ${d.index}`);
-    this.redrawCurve(d.label);
-  }
-
   get dragging(): boolean {
-    return this.drag !== null;
+    return this.drags.dragging;
   }
 
-  /**
-   * The curve `label` as the page holds it: the store's, with the handles of a
-   * drag whose final position the store has not fetched yet (the fairing
-   * assistant asks for the ghost of this, beside the drag's PATCH).
-   */
+  updatePanels(): void {
+    this.panels.update();
+  }
+
+  requestRender(): void {
+    this.viewports.requestRender();
+  }
+
+  /** The curve `label` as the page holds it (DragController.heldCurve). */
   heldCurve(label: string): CurveFile | undefined {
-    const curve = this.store.entities.get(label)?.curve;
-    return curve && this.moved?.label === label ? withHandles(curve, this.moved.handles) : curve;
+    return this.drags.heldCurve(label);
   }
 
   /** A drag position not yet answered by the server. */
   get dragPending(): boolean {
-    return this.drag !== null && (this.drag.inFlight || this.drag.pending !== null);
+    return this.drags.pending;
   }
 
   fitAll(): void {
@@ -1563,7 +1278,7 @@ export class App {
       this.client.pending === 0 &&
       !this.analysisPending &&
       !this.viewports.renderPending &&
-      !this.drag &&
+      !this.drags.dragging &&
       !this.design.busy &&
       !this.fairing.busy &&
       !this.optimise.running

@@ -85,3 +85,30 @@ export function lastStatus(events: EditorEvent[]): { text: string; error: boolea
   }
   return undefined;
 }
+
+/** POST …/analysis's answer for the segment from (0,0,0) to (n−1,0,0) sampled at n points (κ = 0). */
+export function lineAnalysis(n: number): Api.Analysis {
+  const t = Array.from({ length: n }, (_, i) => i / (n - 1));
+  const none = t.map(() => null);
+  return {
+    t,
+    s: t.map((_, i) => i),
+    points: t.map((_, i) => [i, 0, 0]),
+    frames: { T: t.map(() => [1, 0, 0]), N: none, B: none },
+    curvature: t.map(() => 0),
+    torsion: none,
+    curvature_derivative: none,
+    speed: t.map(() => n - 1),
+    fins: [],
+    planarity: { planar: true, normal: null, max_deviation: 0, tolerance: 1e-10 },
+    features: {
+      inflections: [],
+      curvature_extrema: [],
+      torsion_extrema: [],
+      knots: [],
+      curvature_monotonicity: { monotone: true, pieces: [], violations: [] },
+      maximum_curvature: { value: 0, t: 0 },
+      self_intersections: { tolerance: 1e-9, points: [], overlaps: [] },
+    },
+  };
+}
