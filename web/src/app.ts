@@ -30,25 +30,15 @@ import type {
   Job,
 } from './api/types';
 import { DocumentStore } from './store/store';
-import { snapTargets } from './controller/snap';
 import { DragController } from './controller/drag';
 import { AnalysisScheduler } from './controller/analysis';
+import { ViewportController } from './controller/viewport-input';
 import { SPACE_FINS, combescureSize, handlesOf, type ViewSettings } from './store/curves';
 import { loadViewState, saveViewState, type ViewState } from './store/viewstate';
-import { Graph, readout, type Abscissa, type Quantity } from './graphs/graph';
+import { Graph, type Abscissa, type Quantity } from './graphs/graph';
 import { boxDiagonal } from './graphs/scale';
 import { Viewports, toVec3 } from './viewport/viewports';
-import {
-  dragPlane,
-  pickNearest,
-  pickPolyline,
-  projectToScreen,
-  snapToObjects,
-  workingPlane,
-  type WorkingPlane,
-  type Vec3,
-  type ViewName,
-} from './viewport/math';
+import type { Vec3, ViewName } from './viewport/math';
 import {
   ControlPointTool,
   HermiteTool,
@@ -78,8 +68,8 @@ export class App {
   readonly optimise: OptimisePanel;
   readonly fairing: FairingAssistant;
   readonly exportMenu: ExportMenu;
-  /** The hover readout at the cursor on the curve (s or t, κ, R, τ). */
-  private readonly curveReadout: HTMLElement;
+  /** The pointer in the views: picking, snapping, navigation, the drag's start. */
+  readonly input: ViewportController;
   /** The client, the selection, the status and the commands' shared helpers. */
   readonly editor: Editor;
 
@@ -109,7 +99,6 @@ export class App {
   readonly analyses: AnalysisScheduler;
   private events: EventSource | null = null;
   private offline = false;
-  private navigating: { view: ViewName; x: number; y: number; mode: 'pan' | 'orbit' } | null = null;
   /**
    * The ghost: the selected curve's analysis before the last drag or rebuild,
    * drawn faintly in the views and overlaid on the graphs until another curve
@@ -159,18 +148,14 @@ export class App {
       return true;
     };
     this.viewports = new Viewports(document.getElementById('viewports')!);
-    this.curveReadout = document.createElement('div');
-    this.curveReadout.className = 'readout curve-readout';
-    this.curveReadout.dataset['readout'] = 'curve';
-    this.curveReadout.hidden = true;
-    this.viewports.root.appendChild(this.curveReadout);
     this.panels = new Panels(this, document.getElementById('side')!);
     this.design = new DesignByCurvature(this);
     this.optimise = new OptimisePanel(this);
     this.fairing = new FairingAssistant(this, document.getElementById('side')!);
     this.exportMenu = new ExportMenu((format) => void this.exportSelected(format));
     this.makeGraphs();
-    this.bindViews();
+    this.input = new ViewportController(this);
+    this.input.bind();
     this.bindToolbar();
     this.editor.subscribe((e) => {
       switch (e.type) {
@@ -344,50 +329,19 @@ export class App {
   }
 
   /** Snap to existing points and curves (toggle "Objects", Shift+G). */
-  objectSnap = false;
+  get objectSnap(): boolean {
+    return this.input.objectSnap;
+  }
+
   /** What the last snapped point landed on, for the status line and tests. */
-  lastSnap: { kind: 'point' | 'curve' | 'grid'; label?: string } | null = null;
+  get lastSnap(): ViewportController['lastSnap'] {
+    return this.input.lastSnap;
+  }
 
   setObjectSnap(on: boolean): void {
     (document.getElementById('osnap') as HTMLInputElement).checked = on;
-    this.objectSnap = on;
+    this.input.objectSnap = on;
     this.viewStateChanged();
-  }
-
-  /**
-   * A point of `plane` (the pointer's, or a dragged handle's) snapped as the toggles ask: with object
-   * snap, onto the nearest handle of a visible curve, else the nearest point of a visible curve as
-   * drawn, within 8 pixels (`exclude`: the handle being dragged and its curve's polyline, which move
-   * with it); else onto the grid when grid snap is on; else as it is.
-   */
-  snapPoint(
-    view: ViewName,
-    p: Vec3,
-    plane: WorkingPlane,
-    exclude?: { label: string; index: number },
-  ): Vec3 {
-    this.lastSnap = null;
-    if (this.objectSnap) {
-      const { w, h } = this.viewports.size(view);
-      const m = this.viewports.viewProj(view);
-      const at = projectToScreen(p, m, w, h);
-      if (at) {
-        const targets = snapTargets(
-          this.store.entities,
-          (l) => this.isHidden(l),
-          (l) => this.analysisOf(l)?.points,
-          exclude,
-        );
-        const hit = snapToObjects(at, targets, m, w, h, 8);
-        if (hit) {
-          const owner = (hit.kind === 'point' ? targets.pointOwner : targets.lineOwner)[hit.index]!;
-          this.lastSnap = { kind: hit.kind, label: owner };
-          return hit.point;
-        }
-      }
-    }
-    if (this.viewports.snap) this.lastSnap = { kind: 'grid' };
-    return this.viewports.snapped(view, p, plane);
   }
 
   setSnap(on: boolean): void {
@@ -827,8 +781,7 @@ export class App {
     this.viewports.setMarker(p ? toVec3(p) : null);
     for (const g of this.graphs) if (g !== from) g.highlight(index);
     this.viewports.root.dataset['hover'] = index === null ? '' : String(index);
-    if (from) this.readoutAt = null;
-    this.placeReadout();
+    this.input.placeReadout(from !== undefined);
   }
 
   get hovered(): number | null {
@@ -870,179 +823,8 @@ export class App {
     }
   }
 
-  private local(view: ViewName, ev: PointerEvent | MouseEvent): [number, number] {
-    const r = this.viewports.view(view).el.getBoundingClientRect();
-    return [ev.clientX - r.left, ev.clientY - r.top];
-  }
-
   pointAt(view: ViewName, ev: PointerEvent): Vec3 | null {
-    const [x, y] = this.local(view, ev);
-    const plane = workingPlane(view);
-    const p = this.viewports.pointOn(view, x, y, plane, false);
-    return p && this.snapPoint(view, p, plane);
-  }
-
-  private bindViews(): void {
-    for (const v of this.viewports.views) {
-      const el = v.el;
-      el.addEventListener('contextmenu', (ev) => {
-        ev.preventDefault();
-      });
-      el.addEventListener('pointerdown', (ev) => {
-        el.focus();
-        this.viewports.active = v.name;
-        if (
-          ev.button === 1 ||
-          (ev.button === 0 && (ev.shiftKey || ev.altKey)) ||
-          (ev.button === 0 && this.navMode)
-        ) {
-          const mode = ev.altKey || this.navMode === 'orbit' ? 'orbit' : 'pan';
-          this.navigating = { view: v.name, x: ev.clientX, y: ev.clientY, mode };
-          el.setPointerCapture(ev.pointerId);
-          return;
-        }
-        if (ev.button === 2) {
-          this.tool?.rightClick(v.name, ev);
-          if (!this.tool && this.navMode) this.navMode = null;
-          return;
-        }
-        if (ev.button !== 0) return;
-        if (this.tool) {
-          this.tool.click(v.name, ev);
-          return;
-        }
-        this.selectOrDrag(v.name, ev);
-        if (this.drags.dragging) el.setPointerCapture(ev.pointerId);
-      });
-      el.addEventListener('pointermove', (ev) => {
-        if (this.navigating) {
-          const dx = ev.clientX - this.navigating.x;
-          const dy = ev.clientY - this.navigating.y;
-          this.navigating.x = ev.clientX;
-          this.navigating.y = ev.clientY;
-          if (this.navigating.mode === 'orbit' && v.name === 'persp')
-            this.viewports.orbit(v.name, dx, dy);
-          else this.viewports.pan(v.name, dx, dy);
-          return;
-        }
-        if (this.drags.dragging) {
-          this.dragTo(v.name, ev);
-          return;
-        }
-        if (this.tool) {
-          this.tool.move(v.name, ev);
-          return;
-        }
-        this.hoverCurve(v.name, ev);
-      });
-      const up = (ev: PointerEvent): void => {
-        if (this.navigating) {
-          this.navigating = null;
-          return;
-        }
-        if (this.drags.dragging && ev.button === 0) this.drags.end();
-      };
-      el.addEventListener('pointerup', up);
-      el.addEventListener('pointercancel', up);
-      el.addEventListener(
-        'wheel',
-        (ev) => {
-          ev.preventDefault();
-          this.viewports.zoom(v.name, Math.exp(ev.deltaY * 0.0015));
-        },
-        { passive: false },
-      );
-    }
-  }
-
-  navMode: 'pan' | 'orbit' | null = null;
-
-  private selectOrDrag(view: ViewName, ev: PointerEvent): void {
-    const [x, y] = this.local(view, ev);
-    const { w, h } = this.viewports.size(view);
-    const vp = this.viewports.viewProj(view);
-    // A handle of the selected curve first (drag), then any curve (select).
-    if (this.selected && !this.isHidden(this.selected)) {
-      // The last drag's points until the server's copy of the curve is back.
-      const handles =
-        this.drags.preview?.label === this.selected
-          ? this.drags.preview.handles
-          : handlesOf(this.store.entities.get(this.selected)?.curve);
-      const hit = pickNearest([x, y], handles, vp, w, h, 8);
-      if (hit && this.isLocked(this.selected)) {
-        this.setStatus(
-          `${this.nameOf(this.selected)} is locked: unlock it in the object list`,
-          true,
-        );
-        return;
-      }
-      if (hit) {
-        const h0 = handles[hit.index]!;
-        const at = this.viewports.pointOn(view, x, y, dragPlane(view, h0), false);
-        const grab: Vec3 = at ? [h0[0] - at[0], h0[1] - at[1], h0[2] - at[2]] : [0, 0, 0];
-        this.drags.start(this.selected, hit.index, handles, grab);
-        this.setStatus(`Dragging point ${hit.index}`);
-        return;
-      }
-    }
-    let best: { label: string; d: number } | null = null;
-    for (const [label, a] of this.store.analyses) {
-      if (this.isHidden(label) || this.isLocked(label)) continue;
-      const hit = pickPolyline([x, y], a.points.map(toVec3), vp, w, h, 6);
-      if (hit && (!best || hit.distance < best.d)) best = { label, d: hit.distance };
-    }
-    this.select(best?.label ?? null);
-  }
-
-  private hoverCurve(view: ViewName, ev: PointerEvent): void {
-    if (!this.selected) return;
-    const a = this.store.analyses.get(this.selected);
-    if (!a) return;
-    const [x, y] = this.local(view, ev);
-    const { w, h } = this.viewports.size(view);
-    const hit = pickPolyline([x, y], a.points.map(toVec3), this.viewports.viewProj(view), w, h, 8);
-    if ((hit?.index ?? null) !== this.editor.hovered) this.hoverSample(hit?.index ?? null);
-    // The readout follows the cursor on the curve.
-    const box = this.viewports.root.getBoundingClientRect();
-    this.readoutAt = hit ? [ev.clientX - box.left + 14, ev.clientY - box.top + 10] : null;
-    this.placeReadout();
-  }
-
-  /** Where the curve's hover readout is drawn (view-root pixels), or null off the curve. */
-  private readoutAt: [number, number] | null = null;
-
-  private placeReadout(): void {
-    const el = this.curveReadout;
-    const a = this.selected ? this.store.analyses.get(this.selected) : undefined;
-    const i = this.editor.hovered;
-    if (!this.readoutAt || !a || i === null || i >= a.t.length) {
-      el.hidden = true;
-      return;
-    }
-    el.hidden = false;
-    el.textContent = readout(a, i, this.abscissa);
-    el.style.left = `${this.readoutAt[0]}px`;
-    el.style.top = `${this.readoutAt[1]}px`;
-  }
-
-  /**
-   * Move the dragged point on the plane through it parallel to the view. The
-   * next frame draws it (drawDrag); the server hears of it through flushDrag.
-   */
-  private dragTo(view: ViewName, ev: PointerEvent): void {
-    const d = this.drags.drag!;
-    const [x, y] = this.local(view, ev);
-    const start = d.handles[d.index]!;
-    const plane = dragPlane(view, start);
-    const at = this.viewports.pointOn(view, x, y, plane, false);
-    const g = d.grab;
-    const p = at
-      ? this.snapPoint(view, [at[0] + g[0], at[1] + g[1], at[2] + g[2]], plane, {
-          label: d.label,
-          index: d.index,
-        })
-      : null;
-    this.drags.moveTo(p, ev.timeStamp);
+    return this.input.pointAt(view, ev);
   }
 
   /** The analysis the views and graphs ask for a curve (its view settings). */
@@ -1262,10 +1044,10 @@ export class App {
     } else if (k === 'g') {
       this.setSnap(!this.viewports.snap);
       this.setStatus(`Grid snap ${this.viewports.snap ? 'on' : 'off'} (G)`);
-    } else if (k === 'p') this.navMode = this.navMode === 'pan' ? null : 'pan';
-    else if (k === 'r') this.navMode = this.navMode === 'orbit' ? null : 'orbit';
+    } else if (k === 'p') this.input.navMode = this.input.navMode === 'pan' ? null : 'pan';
+    else if (k === 'r') this.input.navMode = this.input.navMode === 'orbit' ? null : 'orbit';
     else if (k === 'escape') {
-      this.navMode = null;
+      this.input.navMode = null;
       if (this.ghost) this.setGhost(null);
       else this.select(null);
     } else return;
