@@ -33,6 +33,7 @@ import { DocumentStore } from './store/store';
 import { DragController } from './controller/drag';
 import { AnalysisScheduler } from './controller/analysis';
 import { ViewportController } from './controller/viewport-input';
+import { keyCommand } from './controller/keys';
 import { SPACE_FINS, combescureSize, handlesOf, type ViewSettings } from './store/curves';
 import { loadViewState, saveViewState, type ViewState } from './store/viewstate';
 import { Graph, type Abscissa, type Quantity } from './graphs/graph';
@@ -188,7 +189,7 @@ export class App {
             // (a curve the page cannot evaluate is still analysed as it moves).
             if (!this.drags.drag.local) this.refreshAnalysis(e.label);
             this.drags.panelsStale = true;
-            return;
+            break;
           }
           // The store now has the curve as the server holds it, a drag's last move included.
           this.drags.entityStored(e.label);
@@ -212,9 +213,8 @@ export class App {
         case 'history':
           break;
       }
-      if (this.drags.dragging) this.drags.panelsStale = true;
-      else this.panels.update();
     });
+    this.panels.listen();
     client.onOffline = () => {
       this.goOffline();
     };
@@ -696,7 +696,6 @@ export class App {
     if (previous) this.redrawCurve(previous);
     if (label) this.redrawCurve(label);
     this.updateGraphs();
-    this.panels.update();
     this.viewStateChanged();
   }
 
@@ -998,60 +997,42 @@ export class App {
       ev.preventDefault();
       return;
     }
-    const k = ev.key.toLowerCase();
-    if ((ev.ctrlKey || ev.metaKey) && k === 'z') {
-      ev.preventDefault();
-      void (ev.shiftKey ? this.redo() : this.undo());
-      return;
-    }
-    if ((ev.ctrlKey || ev.metaKey) && k === 'y') {
-      ev.preventDefault();
-      void this.redo();
-      return;
-    }
-    if (ev.ctrlKey || ev.metaKey || ev.altKey) return;
-    const tools: Record<string, ToolName> = {
-      v: 'select',
-      s: 'spline',
-      b: 'bezier',
-      n: 'nurbs',
-      h: 'hermite',
-    };
-    const actions: Record<string, string> = {
-      l: 'law',
-      k: 'natural',
-      i: 'import',
-      f: 'fit',
-      q: 'layout',
-      o: 'open',
-      e: 'export',
-      '?': 'help',
-      delete: 'delete',
-      backspace: 'delete',
-      u: 'insert-knot',
-      d: 'elevate',
-      x: 'split',
-      w: 'reverse',
-      a: 'accept-fairing',
-    };
-    const views: Record<string, ViewName> = { '1': 'top', '2': 'front', '3': 'side', '4': 'persp' };
-    if (tools[k]) this.setTool(tools[k]);
-    else if (actions[k]) this.action(actions[k]);
-    else if (views[k]) this.setLayout('single', views[k]);
-    else if (k === 'g' && ev.shiftKey) {
-      this.setObjectSnap(!this.objectSnap);
-      this.setStatus(`Object snap ${this.objectSnap ? 'on' : 'off'} (Shift+G)`);
-    } else if (k === 'g') {
-      this.setSnap(!this.viewports.snap);
-      this.setStatus(`Grid snap ${this.viewports.snap ? 'on' : 'off'} (G)`);
-    } else if (k === 'p') this.input.navMode = this.input.navMode === 'pan' ? null : 'pan';
-    else if (k === 'r') this.input.navMode = this.input.navMode === 'orbit' ? null : 'orbit';
-    else if (k === 'escape') {
-      this.input.navMode = null;
-      if (this.ghost) this.setGhost(null);
-      else this.select(null);
-    } else return;
+    const c = keyCommand(ev);
+    if (!c) return;
     ev.preventDefault();
+    switch (c.kind) {
+      case 'undo':
+        void this.undo();
+        break;
+      case 'redo':
+        void this.redo();
+        break;
+      case 'tool':
+        this.setTool(c.tool);
+        break;
+      case 'action':
+        this.action(c.action);
+        break;
+      case 'view':
+        this.setLayout('single', c.view);
+        break;
+      case 'object-snap':
+        this.setObjectSnap(!this.objectSnap);
+        this.setStatus(`Object snap ${this.objectSnap ? 'on' : 'off'} (Shift+G)`);
+        break;
+      case 'grid-snap':
+        this.setSnap(!this.viewports.snap);
+        this.setStatus(`Grid snap ${this.viewports.snap ? 'on' : 'off'} (G)`);
+        break;
+      case 'navigate':
+        this.input.navMode = this.input.navMode === c.mode ? null : c.mode;
+        break;
+      case 'escape':
+        this.input.navMode = null;
+        if (this.ghost) this.setGhost(null);
+        else this.select(null);
+        break;
+    }
   }
 
   /** Quiet: no request in flight, no analysis queued, no frame scheduled, no drag. */
