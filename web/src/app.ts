@@ -34,10 +34,9 @@ import { DragController } from './controller/drag';
 import { AnalysisScheduler } from './controller/analysis';
 import { ViewportController } from './controller/viewport-input';
 import { keyCommand } from './controller/keys';
-import { SPACE_FINS, combescureSize, handlesOf, type ViewSettings } from './store/curves';
+import { SPACE_FINS, fixFinBase, handlesOf, type ViewSettings } from './store/curves';
 import { loadViewState, saveViewState, type ViewState } from './store/viewstate';
 import { Graph, type Abscissa, type Quantity } from './graphs/graph';
-import { boxDiagonal } from './graphs/scale';
 import { Viewports, toVec3 } from './viewport/viewports';
 import type { Vec3, ViewName } from './viewport/math';
 import {
@@ -600,26 +599,7 @@ export class App {
 
   /** The drawing factors of a curve's fins (ViewSettings.finBase), from its analysis. */
   finBase(label: string, a: Analysis): Partial<Record<FinKind, number>> {
-    const s = this.settingsOf(label);
-    s.finBase ??= {};
-    const extent = boxDiagonal(a.points) || 1;
-    const largest = (v: (number | null)[]): number =>
-      Math.max(0, ...v.map((x) => (x !== null && Number.isFinite(x) ? Math.abs(x) : 0)));
-    for (const kind of Object.keys(a.combs) as FinKind[]) {
-      if (s.finBase[kind] !== undefined) continue;
-      const m =
-        kind === 'curvature'
-          ? largest(a.kappa)
-          : kind === 'torsion'
-            ? largest(a.tau)
-            : kind === 'combescure'
-              ? combescureSize(a.combs[kind]!, s.scale)
-              : 1;
-      if (m === 0) continue; // a zero comb: fix the factor once it has a size
-      const quantity = kind === 'curvature' || kind === 'torsion' || kind === 'combescure';
-      s.finBase[kind] = (quantity ? 0.15 : 0.1) * (extent / m);
-    }
-    return s.finBase;
+    return fixFinBase(this.settingsOf(label), a);
   }
 
   /** The analysis as drawn: its combs scaled by the fin factors. */
