@@ -34,6 +34,7 @@ import { DragController } from './controller/drag';
 import { AnalysisScheduler } from './controller/analysis';
 import { ViewportController } from './controller/viewport-input';
 import { keyCommand } from './controller/keys';
+import { Connection } from './controller/connection';
 import { SPACE_FINS, fixFinBase, handlesOf, type ViewSettings } from './store/curves';
 import { loadViewState, saveViewState, type ViewState } from './store/viewstate';
 import { Graph, type Abscissa, type Quantity } from './graphs/graph';
@@ -97,8 +98,8 @@ export class App {
   readonly drags: DragController;
   /** The server's analyses of the curves, one request per curve in flight. */
   readonly analyses: AnalysisScheduler;
-  private events: EventSource | null = null;
-  private offline = false;
+  /** The event stream and what happens when the server goes away or refuses the token. */
+  readonly connection: Connection;
   /**
    * The ghost: the selected curve's analysis before the last drag or rebuild,
    * drawn faintly in the views and overlaid on the graphs until another curve
@@ -214,12 +215,17 @@ export class App {
       }
     });
     this.panels.listen();
-    client.onOffline = () => {
-      this.goOffline();
-    };
-    client.onUnauthorized = () => {
-      this.unauthorized();
-    };
+    this.connection = new Connection({
+      editor: this.editor,
+      reload: () => this.reload(),
+      applyChanges: (changes) => {
+        this.applyChanges(changes);
+      },
+      offerReopen: (show) => {
+        document.getElementById('reopen')!.hidden = !show;
+      },
+      openEvents: (url) => new EventSource(url, { withCredentials: true }),
+    });
     document.getElementById('reopen')!.addEventListener('click', () => {
       this.panels.reopenDialog();
     });
@@ -237,8 +243,7 @@ export class App {
 
   /** Open a document; `prefetched` is its GET already under way (started before the views were built). */
   async open(name: string, prefetched?: Promise<DocumentState>): Promise<void> {
-    this.events?.close();
-    this.events = null;
+    this.connection.close();
     this.select(null);
     this.settings.clear();
     this.studyOf.clear();
@@ -257,33 +262,13 @@ export class App {
     this.restoreViewState();
     document.getElementById('doc-name')!.textContent = name;
     location.hash = `doc=${encodeURIComponent(name)}`;
-    this.subscribe();
+    this.connection.subscribe();
     this.fitAll();
     // Fit again once the curves' analyses are in (law and natural curves have no handles).
     this.fitPending = this.store.entities.size > 0;
   }
 
   private fitPending = false;
-
-  /** Follow the document's change sets (other tabs, other clients, jobs). */
-  private subscribe(): void {
-    const es = new EventSource(this.client.documentEventsUrl(this.store.name), {
-      withCredentials: true,
-    });
-    const onChange = (ev: MessageEvent<string>): void => {
-      try {
-        this.applyChanges(JSON.parse(ev.data) as ChangeSet);
-      } catch (e) {
-        this.toast(e);
-      }
-    };
-    es.addEventListener('change', onChange);
-    es.onmessage = onChange;
-    es.onerror = () => {
-      if (es.readyState === EventSource.CLOSED || !this.offline) void this.checkServer();
-    };
-    this.events = es;
-  }
 
   /** The page's state of this document as stored (selection, fins, layout, snap, objects). */
   get viewState(): ViewState {
@@ -399,75 +384,9 @@ export class App {
     this.store.load(doc);
   }
 
-  private goOffline(): void {
-    if (this.offline) return;
-    this.offline = true;
-    this.setStatus(
-      'Server unreachable: reconnecting… (if it restarted on another port, Re-open with its new address)',
-      true,
-    );
-    void this.reconnect();
-  }
-
-  /**
-   * The event stream failed: is the server down (health fails), or up but
-   * refusing the page's token (a restart with a new one: 401 on a route that
-   * needs it)?
-   */
-  private async checkServer(): Promise<void> {
-    try {
-      await this.client.health();
-      await this.client.listDocuments();
-    } catch (e) {
-      if (!(e instanceof ApiError && e.status === 401)) this.goOffline();
-    }
-  }
-
   /** Whether the server has refused the page's token (it restarted with a new one). */
-  refused = false;
-
-  /**
-   * The server answers but refuses the token this page was opened with: it
-   * was restarted with a new token (or on a new port). Say so, stop polling,
-   * and offer to re-open the page with the address the server printed.
-   */
-  private unauthorized(): void {
-    if (this.refused) return;
-    this.refused = true;
-    this.events?.close();
-    this.events = null;
-    this.setStatus(
-      "The server refused this page's token: it was restarted with a new one. Re-open with the address it printed",
-      true,
-    );
-    document.getElementById('reopen')!.hidden = false;
-  }
-
-  /** Poll the health route until the server is back, then reload the document's revision. */
-  private async reconnect(): Promise<void> {
-    this.events?.close();
-    this.events = null;
-    for (let attempt = 0; attempt < 600; attempt++) {
-      await new Promise((r) => setTimeout(r, Math.min(2000, 200 + attempt * 100)));
-      // A server that moved to another port never answers here: offer the new address.
-      if (attempt === 10) document.getElementById('reopen')!.hidden = false;
-      try {
-        await this.client.health();
-        await this.reload();
-        this.offline = false;
-        document.getElementById('reopen')!.hidden = true;
-        this.subscribe();
-        this.setStatus(`Reconnected at revision ${this.store.revision}`);
-        return;
-      } catch (e) {
-        // Up but refusing the token (unauthorized() has said so), else still down.
-        if (e instanceof ApiError && e.status === 401) {
-          this.offline = false;
-          return;
-        }
-      }
-    }
-    this.setStatus('Server unreachable: reload the page once it runs again', true);
+  get refused(): boolean {
+    return this.connection.refused;
   }
 
   setStatus(text: string, error = false): void {
