@@ -14,8 +14,6 @@ import {
   dragPlane,
   pickNearest,
   pickPolyline,
-  projectToScreen,
-  snapToObjects,
   workingPlane,
   type Vec3,
   type ViewName,
@@ -23,7 +21,7 @@ import {
 } from '../viewport/math';
 import { toVec3, type Viewports } from '../viewport/viewports';
 import type { DragController } from './drag';
-import { snapTargets } from './snap';
+import { snapPoint, snapTargets, type SnapHit } from './snap';
 
 /** What the controller asks of the page around it (the App). */
 export interface ViewportHost {
@@ -91,7 +89,7 @@ export class ViewportController {
   /** Snap to existing points and curves (toggle "Objects", Shift+G). */
   objectSnap = false;
   /** What the last snapped point landed on, for the status line and tests. */
-  lastSnap: { kind: 'point' | 'curve' | 'grid'; label?: string } | null = null;
+  lastSnap: SnapHit = null;
 
   /**
    * A point of `plane` (the pointer's, or a dragged handle's) snapped as the toggles ask: with object
@@ -105,28 +103,27 @@ export class ViewportController {
     plane: WorkingPlane,
     exclude?: { label: string; index: number },
   ): Vec3 {
-    this.lastSnap = null;
-    if (this.objectSnap) {
-      const { w, h } = this.viewports.size(view);
-      const m = this.viewports.viewProj(view);
-      const at = projectToScreen(p, m, w, h);
-      if (at) {
-        const targets = snapTargets(
+    const { w, h } = this.viewports.size(view);
+    const { point, hit } = snapPoint(
+      p,
+      {
+        w,
+        h,
+        viewProj: this.viewports.viewProj(view),
+        grid: this.viewports.snap,
+        onPlane: (q) => this.viewports.snapped(view, q, plane),
+      },
+      this.objectSnap,
+      () =>
+        snapTargets(
           this.store.entities,
           (l) => this.isHidden(l),
           (l) => this.analysisOf(l)?.points,
           exclude,
-        );
-        const hit = snapToObjects(at, targets, m, w, h, 8);
-        if (hit) {
-          const owner = (hit.kind === 'point' ? targets.pointOwner : targets.lineOwner)[hit.index]!;
-          this.lastSnap = { kind: hit.kind, label: owner };
-          return hit.point;
-        }
-      }
-    }
-    if (this.viewports.snap) this.lastSnap = { kind: 'grid' };
-    return this.viewports.snapped(view, p, plane);
+        ),
+    );
+    this.lastSnap = hit;
+    return point;
   }
 
   private local(view: ViewName, ev: PointerEvent | MouseEvent): [number, number] {
