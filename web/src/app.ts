@@ -33,7 +33,6 @@ import { DocumentStore } from './store/store';
 import { DragController } from './controller/drag';
 import { AnalysisScheduler } from './controller/analysis';
 import { ViewportController } from './controller/viewport-input';
-import { keyCommand } from './controller/keys';
 import { Connection } from './controller/connection';
 import { SPACE_FINS, fixFinBase, handlesOf, type ViewSettings } from './store/curves';
 import { loadViewState, saveViewState, type ViewState } from './store/viewstate';
@@ -49,6 +48,7 @@ import {
   type ToolName,
 } from './tools/tools';
 import { Panels } from './panels/panels';
+import { Toolbar } from './panels/toolbar';
 import { DesignByCurvature } from './panels/design';
 import { OptimisePanel } from './panels/optimise';
 import { FairingAssistant } from './tools/fairing';
@@ -69,6 +69,8 @@ export class App {
   readonly optimise: OptimisePanel;
   readonly fairing: FairingAssistant;
   readonly exportMenu: ExportMenu;
+  /** The toolbar's buttons and the keyboard. */
+  readonly toolbar: Toolbar;
   /** The pointer in the views: picking, snapping, navigation, the drag's start. */
   readonly input: ViewportController;
   /** The client, the selection, the status and the commands' shared helpers. */
@@ -157,7 +159,8 @@ export class App {
     this.makeGraphs();
     this.input = new ViewportController(this);
     this.input.bind();
-    this.bindToolbar();
+    this.toolbar = new Toolbar(this);
+    this.toolbar.bind();
     this.editor.subscribe((e) => {
       switch (e.type) {
         case 'selection':
@@ -769,95 +772,11 @@ export class App {
     this.viewports.fit(pts);
   }
 
-  // ---- toolbar and keys ----------------------------------------------------
+  // ---- toolbar actions ------------------------------------------------------
 
-  private bindToolbar(): void {
-    for (const b of document.querySelectorAll<HTMLButtonElement>('[data-tool]')) {
-      b.addEventListener('click', () => {
-        this.setTool(b.dataset['tool'] as ToolName);
-      });
-    }
-    for (const b of document.querySelectorAll<HTMLButtonElement>('[data-action]')) {
-      b.addEventListener('click', () => {
-        this.action(b.dataset['action']!);
-      });
-    }
-    const snap = document.getElementById('snap') as HTMLInputElement;
-    snap.addEventListener('change', () => {
-      this.setSnap(snap.checked);
-    });
-    const osnap = document.getElementById('osnap') as HTMLInputElement;
-    osnap.addEventListener('change', () => {
-      this.setObjectSnap(osnap.checked);
-    });
-    document.getElementById('import-file')!.addEventListener('change', (ev) => {
-      const input = ev.target as HTMLInputElement;
-      const file = input.files?.[0];
-      input.value = '';
-      if (file) void this.importFile(file);
-    });
-    window.addEventListener('keydown', (ev) => {
-      this.key(ev);
-    });
-  }
-
+  /** A toolbar action by name (the buttons' data-action, the keys' map): panels/toolbar.ts. */
   action(name: string): void {
-    switch (name) {
-      case 'undo':
-        void this.undo();
-        break;
-      case 'redo':
-        void this.redo();
-        break;
-      case 'delete':
-        void this.deleteSelected();
-        break;
-      case 'insert-knot':
-        void this.insertKnotSelected();
-        break;
-      case 'elevate':
-        void this.elevateSelected();
-        break;
-      case 'split':
-        void this.splitSelected();
-        break;
-      case 'reverse':
-        void this.reverseSelected();
-        break;
-      case 'fit':
-        this.fitAll();
-        break;
-      case 'layout':
-        this.setLayout(this.viewports.layout === 'quad' ? 'single' : 'quad');
-        break;
-      case 'law':
-        this.panels.lawDialog();
-        break;
-      case 'natural':
-        this.panels.naturalDialog();
-        break;
-      case 'import':
-        document.getElementById('import-file')!.click();
-        break;
-      case 'open':
-        void this.panels.openDialog();
-        break;
-      case 'export':
-        this.exportMenu.toggle();
-        break;
-      case 'export-json':
-      case 'export-step':
-      case 'export-iges':
-      case 'export-dxf':
-        this.exportMenu.pick(name.slice('export-'.length) as MenuFormat);
-        break;
-      case 'help':
-        this.panels.helpDialog();
-        break;
-      case 'accept-fairing':
-        void this.fairing.accept();
-        break;
-    }
+    this.toolbar.action(name);
   }
 
   async importFile(file: File): Promise<void> {
@@ -881,57 +800,6 @@ export class App {
         ? ` (NURBS approximation within ${reply.max_deviation.toExponential(1)})`
         : '';
     this.setStatus(`Exported ${this.nameOf(label)} as ${filename}${deviation}`);
-  }
-
-  private key(ev: KeyboardEvent): void {
-    // A dialog owns the keyboard (Escape closes it natively).
-    if ((document.getElementById('dialog') as HTMLDialogElement).open) return;
-    const target = ev.target as HTMLElement | null;
-    if (
-      target &&
-      (target.tagName === 'INPUT' || target.tagName === 'TEXTAREA' || target.tagName === 'SELECT')
-    )
-      return;
-    if (this.tool?.key(ev)) {
-      ev.preventDefault();
-      return;
-    }
-    const c = keyCommand(ev);
-    if (!c) return;
-    ev.preventDefault();
-    switch (c.kind) {
-      case 'undo':
-        void this.undo();
-        break;
-      case 'redo':
-        void this.redo();
-        break;
-      case 'tool':
-        this.setTool(c.tool);
-        break;
-      case 'action':
-        this.action(c.action);
-        break;
-      case 'view':
-        this.setLayout('single', c.view);
-        break;
-      case 'object-snap':
-        this.setObjectSnap(!this.objectSnap);
-        this.setStatus(`Object snap ${this.objectSnap ? 'on' : 'off'} (Shift+G)`);
-        break;
-      case 'grid-snap':
-        this.setSnap(!this.viewports.snap);
-        this.setStatus(`Grid snap ${this.viewports.snap ? 'on' : 'off'} (G)`);
-        break;
-      case 'navigate':
-        this.input.navMode = this.input.navMode === c.mode ? null : c.mode;
-        break;
-      case 'escape':
-        this.input.navMode = null;
-        if (this.ghost) this.setGhost(null);
-        else this.select(null);
-        break;
-    }
   }
 
   /** Quiet: no request in flight, no analysis queued, no frame scheduled, no drag. */
