@@ -30,6 +30,7 @@ import type {
   Job,
 } from './api/types';
 import { DocumentStore } from './store/store';
+import { ViewStore, type ViewToggles } from './store/view';
 import { DragController } from './controller/drag';
 import { AnalysisScheduler } from './controller/analysis';
 import { ViewportController } from './controller/viewport-input';
@@ -89,13 +90,20 @@ export class App {
   }
 
   /** Result curves of the studies run from this page: curve label → study label. */
-  readonly studyOf = new Map<string, string>();
+  get studyOf(): Map<string, string> {
+    return this.view.studyOf;
+  }
   /** Set while a stored view state is applied: nothing is saved back meanwhile. */
   private restoring = false;
   tool: Tool | null = null;
   toolName: ToolName = 'select';
-  abscissa: Abscissa = 's';
-  readonly settings = new Map<string, ViewSettings>();
+  /** The snap toggles, the graphs' abscissa, the curves' view settings: store/view.ts. */
+  readonly view = new ViewStore();
+
+  get abscissa(): Abscissa {
+    return this.view.abscissa;
+  }
+
   /** The drag of a handle: its moves, its PATCHes, its preview and its counters. */
   readonly drags: DragController;
   /** The server's analyses of the curves, one request per curve in flight. */
@@ -177,6 +185,9 @@ export class App {
           break;
       }
     });
+    this.view.subscribe((e) => {
+      this.togglesChanged(e.changed);
+    });
     this.store.subscribe((e) => {
       switch (e.type) {
         case 'document':
@@ -248,8 +259,7 @@ export class App {
   async open(name: string, prefetched?: Promise<DocumentState>): Promise<void> {
     this.connection.close();
     this.select(null);
-    this.settings.clear();
-    this.studyOf.clear();
+    this.view.clearCurves();
     for (const label of this.store.entities.keys()) this.viewports.removeCurve(label);
     this.store.entities.clear();
     this.store.revision = -1;
@@ -276,15 +286,15 @@ export class App {
   /** The page's state of this document as stored (selection, fins, layout, snap, objects). */
   get viewState(): ViewState {
     const curves: ViewState['curves'] = {};
-    for (const [label, s] of this.settings)
+    for (const [label, s] of this.view.settings)
       if (this.store.entities.has(label))
         curves[label] = { fins: s.fins, scale: s.scale, samples: s.samples, frames: s.frames };
     return {
       selected: this.selected,
       layout: this.viewports.layout,
       active: this.viewports.active,
-      snap: this.viewports.snap,
-      objectSnap: this.objectSnap,
+      snap: this.view.snap,
+      objectSnap: this.view.objectSnap,
       abscissa: this.abscissa,
       curves,
       studyOf: Object.fromEntries(this.studyOf),
@@ -302,11 +312,9 @@ export class App {
     this.restoring = true;
     try {
       for (const [label, c] of Object.entries(v.curves))
-        this.settings.set(label, { ...c, fins: [...c.fins] });
+        this.view.settings.set(label, { ...c, fins: [...c.fins] });
       for (const [c, st] of Object.entries(v.studyOf)) this.studyOf.set(c, st);
-      this.setSnap(v.snap);
-      this.setObjectSnap(v.objectSnap);
-      this.setAbscissa(v.abscissa);
+      this.view.set({ snap: v.snap, objectSnap: v.objectSnap, abscissa: v.abscissa });
       this.viewports.setLayout(v.layout, v.active);
       if (v.selected !== null && this.store.entities.has(v.selected)) this.select(v.selected);
       this.redrawAll();
@@ -317,7 +325,7 @@ export class App {
 
   /** Snap to existing points and curves (toggle "Objects", Shift+G). */
   get objectSnap(): boolean {
-    return this.input.objectSnap;
+    return this.view.objectSnap;
   }
 
   /** What the last snapped point landed on, for the status line and tests. */
@@ -326,24 +334,32 @@ export class App {
   }
 
   setObjectSnap(on: boolean): void {
-    (document.getElementById('osnap') as HTMLInputElement).checked = on;
-    this.input.objectSnap = on;
-    this.viewStateChanged();
+    this.view.set({ objectSnap: on });
   }
 
   setSnap(on: boolean): void {
-    (document.getElementById('snap') as HTMLInputElement).checked = on;
-    this.viewports.snap = on;
-    this.viewStateChanged();
+    this.view.set({ snap: on });
   }
 
   setAbscissa(a: Abscissa): void {
-    if (a === this.abscissa) return;
-    this.abscissa = a;
-    const sel = document.getElementById('abscissa') as HTMLSelectElement | null;
-    if (sel) sel.value = a;
-    for (const g of this.graphs) g.abscissa = a;
-    for (const label of this.store.entities.keys()) this.refreshAnalysis(label);
+    this.view.set({ abscissa: a });
+  }
+
+  /** The toggles changed (view store event): checkboxes, views and graphs follow, and are stored. */
+  private togglesChanged(changed: readonly (keyof ViewToggles)[]): void {
+    const v = this.view;
+    if (changed.includes('snap')) {
+      (document.getElementById('snap') as HTMLInputElement).checked = v.snap;
+      this.viewports.snap = v.snap;
+    }
+    if (changed.includes('objectSnap'))
+      (document.getElementById('osnap') as HTMLInputElement).checked = v.objectSnap;
+    if (changed.includes('abscissa')) {
+      const sel = document.getElementById('abscissa') as HTMLSelectElement | null;
+      if (sel) sel.value = v.abscissa;
+      for (const g of this.graphs) g.abscissa = v.abscissa;
+      for (const label of this.store.entities.keys()) this.refreshAnalysis(label);
+    }
     this.viewStateChanged();
   }
 
@@ -511,12 +527,7 @@ export class App {
   // ---- interrogation -------------------------------------------------------
 
   settingsOf(label: string): ViewSettings {
-    let s = this.settings.get(label);
-    if (!s) {
-      s = { fins: [], scale: 1, samples: 200, frames: false };
-      this.settings.set(label, s);
-    }
-    return s;
+    return this.view.settingsOf(label);
   }
 
   /** The drawing factors of a curve's fins (ViewSettings.finBase), from its analysis. */

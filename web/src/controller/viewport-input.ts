@@ -9,6 +9,7 @@ import type { Analysis } from '../api/types';
 import type { Editor } from '../editor/editor';
 import { readout, type Abscissa } from '../graphs/graph';
 import { handlesOf } from '../store/curves';
+import type { ViewStore } from '../store/view';
 import type { Tool } from '../tools/tools';
 import {
   dragPlane,
@@ -31,6 +32,8 @@ export interface ViewportHost {
   /** The drawing tool in use, or null for select. */
   readonly tool: Tool | null;
   readonly abscissa: Abscissa;
+  /** The snap toggles. */
+  readonly view: ViewStore;
   select(label: string | null): void;
   /** A sample of the selected curve is hovered on it (the graphs follow). */
   hoverSample(index: number | null): void;
@@ -86,8 +89,11 @@ export class ViewportController {
     return this.editor.nameOf(label);
   }
 
-  /** Snap to existing points and curves (toggle "Objects", Shift+G). */
-  objectSnap = false;
+  /** Snap to existing points and curves (toggle "Objects", Shift+G): the view store's. */
+  get objectSnap(): boolean {
+    return this.host.view.objectSnap;
+  }
+
   /** What the last snapped point landed on, for the status line and tests. */
   lastSnap: SnapHit = null;
 
@@ -110,7 +116,7 @@ export class ViewportController {
         w,
         h,
         viewProj: this.viewports.viewProj(view),
-        grid: this.viewports.snap,
+        grid: this.host.view.snap,
         onPlane: (q) => this.viewports.snapped(view, q, plane),
       },
       this.objectSnap,
