@@ -3,7 +3,21 @@
 // replies and document events; the page draws, picks and snaps.
 
 import { ApiError, Client } from './api/client';
-import { analysisFromServer, entityFromServer, finLines, withHandles } from './api/adapt';
+import { Editor } from './editor/editor';
+import { createCurve } from './commands/create-curve';
+import { replaceCurve } from './commands/replace-curve';
+import { patchEntity } from './commands/patch-entity';
+import { setHidden, setLocked } from './commands/set-attributes';
+import { movePoint } from './commands/move-point';
+import { undo } from './commands/undo';
+import { redo } from './commands/redo';
+import { insertKnot } from './commands/insert-knot';
+import { elevate } from './commands/elevate';
+import { reverse } from './commands/reverse';
+import { split } from './commands/split';
+import { deleteSelected } from './commands/delete';
+import { importFile } from './commands/import-file';
+import { finLines } from './api/adapt';
 import type {
   Analysis,
   AnalysisRequest,
@@ -16,42 +30,26 @@ import type {
   Job,
 } from './api/types';
 import { DocumentStore } from './store/store';
-import { snapTargets } from './controller/snap';
-import { SPACE_FINS, combescureSize, handlesOf, type ViewSettings } from './store/curves';
-import {
-  curveColour,
-  freshColour,
-  hex,
-  loadViewState,
-  saveViewState,
-  type ViewState,
-} from './store/viewstate';
-import { Graph, readout, type Abscissa, type Quantity } from './graphs/graph';
-import { boxDiagonal, nearestIndex } from './graphs/scale';
+import { ViewStore, type ViewToggles } from './store/view';
+import { DragController } from './controller/drag';
+import { AnalysisScheduler } from './controller/analysis';
+import { ViewportController } from './controller/viewport-input';
+import { Connection } from './controller/connection';
+import { SPACE_FINS, fixFinBase, handlesOf, type ViewSettings } from './store/curves';
+import { loadViewState, saveViewState, type ViewState } from './store/viewstate';
+import { Graph, type Abscissa, type Quantity } from './graphs/graph';
 import { Viewports, toVec3 } from './viewport/viewports';
-import {
-  dragPlane,
-  pickNearest,
-  pickPolyline,
-  projectToScreen,
-  snapToObjects,
-  workingPlane,
-  type WorkingPlane,
-  type Vec3,
-  type ViewName,
-} from './viewport/math';
+import type { Vec3, ViewName } from './viewport/math';
 import {
   ControlPointTool,
   HermiteTool,
   SplineTool,
-  midSpan,
   type Tool,
   type ToolHost,
   type ToolName,
 } from './tools/tools';
 import { Panels } from './panels/panels';
-import { NurbsEvaluator } from './geometry/nurbs';
-import { analyseNurbs } from './geometry/analysis';
+import { Toolbar } from './panels/toolbar';
 import { DesignByCurvature } from './panels/design';
 import { OptimisePanel } from './panels/optimise';
 import { FairingAssistant } from './tools/fairing';
@@ -63,47 +61,6 @@ import {
   type MenuFormat,
 } from './panels/export';
 
-interface Drag {
-  label: string;
-  index: number;
-  view: ViewName;
-  first: boolean;
-  inFlight: boolean;
-  pending: Vec3 | null;
-  pendingStamp: number;
-  handles: Vec3[];
-  /** A NURBS or Bézier curve: drawn from the page's own evaluation while dragged. */
-  local: boolean;
-  /** Moved since the last frame drew it. */
-  dirty: boolean;
-  /** A move was not stored (the server is unreachable): the drag is over and reverted. */
-  failed: boolean;
-  /**
-   * The handle minus the pointer's point where the drag started: the handle
-   * moves by what the pointer moved (a 2 px nudge moves it 2 px worth), it
-   * does not jump to the pointer.
-   */
-  grab: Vec3;
-  /**
-   * The reply to the latest move: the dragged entity as the server stores it
-   * and its analysis (asked for with the move), applied once the drag
-   * settles, so a drag costs one request per stored move and nothing after.
-   */
-  lastReply?: ChangeReply;
-}
-
-/**
- * The dragged curve as the page computes it (geometry/analysis.ts), drawn
- * instead of the server's analysis from the first move until the server's
- * analysis of the final position arrives (request number `until` or later).
- */
-interface Preview {
-  label: string;
-  analysis: Analysis;
-  handles: Vec3[];
-  until: number;
-}
-
 export class App {
   readonly store: DocumentStore;
   readonly viewports: Viewports;
@@ -113,132 +70,146 @@ export class App {
   readonly optimise: OptimisePanel;
   readonly fairing: FairingAssistant;
   readonly exportMenu: ExportMenu;
-  /** The hover readout at the cursor on the curve (s or t, κ, R, τ). */
-  private readonly curveReadout: HTMLElement;
-  selected: string | null = null;
-  /** Whether a curve is hidden: the document's `visible` attribute (oli), set in the object list. */
+  /** The toolbar's buttons and the keyboard. */
+  readonly toolbar: Toolbar;
+  /** The pointer in the views: picking, snapping, navigation, the drag's start. */
+  readonly input: ViewportController;
+  /** The client, the selection, the status and the commands' shared helpers. */
+  readonly editor: Editor;
+
+  get selected(): string | null {
+    return this.editor.selected;
+  }
+
   isHidden(label: string): boolean {
-    const pending = this.pendingAttributes.get(label);
-    if (pending && 'visible' in pending) return pending['visible'] === false;
-    return this.store.entities.get(label)?.attributes['visible'] === false;
+    return this.editor.isHidden(label);
   }
 
-  /** Whether a curve is locked: the document's `locked` attribute (oli), set in the object list. */
   isLocked(label: string): boolean {
-    const pending = this.pendingAttributes.get(label);
-    if (pending && 'locked' in pending) return pending['locked'] === true;
-    return this.store.entities.get(label)?.attributes['locked'] === true;
+    return this.editor.isLocked(label);
   }
 
-  /**
-   * Attributes asked of the server and not yet answered: a hide or lock shows
-   * at once (a click just after "hide" must not pick the curve), and the
-   * stored value comes back if the server refuses.
-   */
-  private readonly pendingAttributes = new Map<string, Record<string, unknown>>();
-
-  private async patchAttributes(label: string, attributes: Record<string, unknown>): Promise<void> {
-    this.pendingAttributes.set(label, { ...this.pendingAttributes.get(label), ...attributes });
-    this.redrawCurve(label);
-    try {
-      await this.patch(label, { attributes });
-    } finally {
-      this.pendingAttributes.delete(label);
-      if (this.store.entities.has(label)) this.redrawCurve(label);
-    }
-  }
   /** Result curves of the studies run from this page: curve label → study label. */
-  readonly studyOf = new Map<string, string>();
+  get studyOf(): Map<string, string> {
+    return this.view.studyOf;
+  }
   /** Set while a stored view state is applied: nothing is saved back meanwhile. */
   private restoring = false;
   tool: Tool | null = null;
   toolName: ToolName = 'select';
-  abscissa: Abscissa = 's';
-  readonly settings = new Map<string, ViewSettings>();
-  private readonly analysisBusy = new Set<string>();
-  private readonly analysisDirty = new Set<string>();
-  private drag: Drag | null = null;
-  /** The handles of the last drag, until the store holds the curve with its final position. */
-  private moved: { label: string; handles: Vec3[] } | null = null;
-  private preview: Preview | null = null;
-  /** The curve of the last drag until the server has answered all its moves. */
-  private settling: string | null = null;
-  /** Curves whose entity comes with its analysis (a drag's reply): not asked for again. */
-  private readonly fresh = new Set<string>();
-  /** Analysis requests started so far (Preview.until counts in them). */
-  private analysisSeq = 0;
-  /** Panels and history wait for the end of a drag (rebuilding them per move cost whole frames). */
-  private panelsStale = false;
-  private events: EventSource | null = null;
-  private offline = false;
-  private navigating: { view: ViewName; x: number; y: number; mode: 'pan' | 'orbit' } | null = null;
-  private hoverIndex: number | null = null;
+  /** The snap toggles, the graphs' abscissa, the curves' view settings: store/view.ts. */
+  readonly view = new ViewStore();
+
+  get abscissa(): Abscissa {
+    return this.view.abscissa;
+  }
+
+  /** The drag of a handle: its moves, its PATCHes, its preview and its counters. */
+  readonly drags: DragController;
+  /** The server's analyses of the curves, one request per curve in flight. */
+  readonly analyses: AnalysisScheduler;
+  /** The event stream and what happens when the server goes away or refuses the token. */
+  readonly connection: Connection;
   /**
    * The ghost: the selected curve's analysis before the last drag or rebuild,
    * drawn faintly in the views and overlaid on the graphs until another curve
    * is selected or Escape clears it.
    */
   ghost: { label: string; analysis: Analysis } | null = null;
-  /**
-   * Benchmarks of the current drag (ms): from a pointer event (its timeStamp)
-   * to the end of the frame that draws the curve moved there (the earliest
-   * event not yet drawn, when several come in one frame) …
-   */
-  readonly latencies: number[] = [];
-  /** … and from a pointer event to the server's reply to the move it sent. */
-  readonly serverLatencies: number[] = [];
-  private pointerStamp = 0;
-  /**
-   * The honest drag counters (read by e2e/bench.spec.ts), reset when a drag
-   * starts: pointer moves that changed the dragged point, and frames that drew
-   * the curve, its fins and (when it is the selected curve) the graphs at a
-   * new position of it, with the times of the first and last such move.
-   */
-  readonly dragStats = { moves: 0, redraws: 0, firstMove: 0, lastMove: 0 };
-  /** The current frame draws a new drag position (set by drawDrag, counted after the frame). */
-  private drewDrag = false;
+  /** Pointer-to-frame latencies of the current drag (ms; DragController). */
+  get latencies(): readonly number[] {
+    return this.drags.latencies;
+  }
+
+  /** Pointer-to-reply latencies of the current drag's moves (ms). */
+  get serverLatencies(): readonly number[] {
+    return this.drags.serverLatencies;
+  }
+
+  /** The honest drag counters (read by e2e/bench.spec.ts; DragController.dragStats). */
+  get dragStats(): DragController['dragStats'] {
+    return this.drags.dragStats;
+  }
 
   constructor(
     readonly client: Client,
     docName: string,
   ) {
     this.store = new DocumentStore(docName);
+    this.editor = new Editor(client, this.store);
+    this.drags = new DragController(this);
+    this.analyses = new AnalysisScheduler(
+      this.editor,
+      (label) => this.analysisRequest(label),
+      (label, seq) => {
+        this.drags.analysisArrived(label, seq);
+      },
+      () => {
+        if (this.fitPending && !this.analysisPending) {
+          this.fitPending = false;
+          this.fitAll();
+        }
+      },
+    );
+    this.editor.deferFetch = (label) => {
+      // A curve being dragged is fetched once, when its last move is answered (dragSettled):
+      // the page sent every position, and a fetch per move doubled the drag's requests.
+      if (label !== this.drags.settling) return false;
+      this.drags.panelsStale = true;
+      return true;
+    };
     this.viewports = new Viewports(document.getElementById('viewports')!);
-    this.curveReadout = document.createElement('div');
-    this.curveReadout.className = 'readout curve-readout';
-    this.curveReadout.dataset['readout'] = 'curve';
-    this.curveReadout.hidden = true;
-    this.viewports.root.appendChild(this.curveReadout);
     this.panels = new Panels(this, document.getElementById('side')!);
     this.design = new DesignByCurvature(this);
     this.optimise = new OptimisePanel(this);
     this.fairing = new FairingAssistant(this, document.getElementById('side')!);
     this.exportMenu = new ExportMenu((format) => void this.exportSelected(format));
     this.makeGraphs();
-    this.bindViews();
-    this.bindToolbar();
+    this.input = new ViewportController(this);
+    this.input.bind();
+    this.toolbar = new Toolbar(this);
+    this.toolbar.bind();
+    this.editor.subscribe((e) => {
+      switch (e.type) {
+        case 'selection':
+          this.selectionChanged(e.previous);
+          break;
+        case 'status':
+          this.showStatus(e.text, e.error);
+          break;
+        case 'toast':
+          this.showToast(e.error);
+          break;
+        case 'pending':
+          this.redrawCurve(e.label);
+          break;
+      }
+    });
+    this.view.subscribe((e) => {
+      this.togglesChanged(e.changed);
+    });
     this.store.subscribe((e) => {
       switch (e.type) {
         case 'document':
-          if (!this.drag && this.settling === null) this.moved = null;
+          this.drags.documentLoaded();
           for (const label of this.store.entities.keys()) this.refreshAnalysis(label);
           this.redrawAll();
           this.refreshHistory();
           this.fairing.edited(this.selected);
           break;
         case 'entity':
-          if (this.drag?.label === e.label) {
+          if (this.drags.drag?.label === e.label) {
             // The server's echo of a drag move: analysed and listed once the drag ends
             // (a curve the page cannot evaluate is still analysed as it moves).
-            if (!this.drag.local) this.refreshAnalysis(e.label);
-            this.panelsStale = true;
-            return;
+            if (!this.drags.drag.local) this.refreshAnalysis(e.label);
+            this.drags.panelsStale = true;
+            break;
           }
           // The store now has the curve as the server holds it, a drag's last move included.
-          if (this.moved?.label === e.label && this.settling !== e.label) this.moved = null;
+          this.drags.entityStored(e.label);
           this.redrawCurve(e.label);
           // A drag's reply brought the analysis and the history step with the curve.
-          if (!this.fresh.delete(e.label)) {
+          if (!this.drags.takeFresh(e.label)) {
             this.refreshAnalysis(e.label);
             this.refreshHistory();
           }
@@ -256,31 +227,27 @@ export class App {
         case 'history':
           break;
       }
-      if (this.drag) this.panelsStale = true;
-      else this.panels.update();
     });
-    client.onOffline = () => {
-      this.goOffline();
-    };
-    client.onUnauthorized = () => {
-      this.unauthorized();
-    };
+    this.panels.listen();
+    this.connection = new Connection({
+      editor: this.editor,
+      reload: () => this.reload(),
+      applyChanges: (changes) => {
+        this.applyChanges(changes);
+      },
+      offerReopen: (show) => {
+        document.getElementById('reopen')!.hidden = !show;
+      },
+      openEvents: (url) => new EventSource(url, { withCredentials: true }),
+    });
     document.getElementById('reopen')!.addEventListener('click', () => {
       this.panels.reopenDialog();
     });
     this.viewports.beforeFrame.add(() => {
-      this.drawDrag();
+      this.drags.frame();
     });
     this.viewports.afterFrame.add(() => {
-      const now = performance.now();
-      if (this.drewDrag) {
-        this.drewDrag = false;
-        this.dragStats.redraws++;
-      }
-      if (this.pointerStamp) {
-        this.latencies.push(now - this.pointerStamp);
-        this.pointerStamp = 0;
-      }
+      this.drags.frameDrawn(performance.now());
     });
     this.setTool('select');
     this.panels.update();
@@ -290,11 +257,9 @@ export class App {
 
   /** Open a document; `prefetched` is its GET already under way (started before the views were built). */
   async open(name: string, prefetched?: Promise<DocumentState>): Promise<void> {
-    this.events?.close();
-    this.events = null;
+    this.connection.close();
     this.select(null);
-    this.settings.clear();
-    this.studyOf.clear();
+    this.view.clearCurves();
     for (const label of this.store.entities.keys()) this.viewports.removeCurve(label);
     this.store.entities.clear();
     this.store.revision = -1;
@@ -310,7 +275,7 @@ export class App {
     this.restoreViewState();
     document.getElementById('doc-name')!.textContent = name;
     location.hash = `doc=${encodeURIComponent(name)}`;
-    this.subscribe();
+    this.connection.subscribe();
     this.fitAll();
     // Fit again once the curves' analyses are in (law and natural curves have no handles).
     this.fitPending = this.store.entities.size > 0;
@@ -318,38 +283,18 @@ export class App {
 
   private fitPending = false;
 
-  /** Follow the document's change sets (other tabs, other clients, jobs). */
-  private subscribe(): void {
-    const es = new EventSource(this.client.documentEventsUrl(this.store.name), {
-      withCredentials: true,
-    });
-    const onChange = (ev: MessageEvent<string>): void => {
-      try {
-        this.applyChanges(JSON.parse(ev.data) as ChangeSet);
-      } catch (e) {
-        this.toast(e);
-      }
-    };
-    es.addEventListener('change', onChange);
-    es.onmessage = onChange;
-    es.onerror = () => {
-      if (es.readyState === EventSource.CLOSED || !this.offline) void this.checkServer();
-    };
-    this.events = es;
-  }
-
   /** The page's state of this document as stored (selection, fins, layout, snap, objects). */
   get viewState(): ViewState {
     const curves: ViewState['curves'] = {};
-    for (const [label, s] of this.settings)
+    for (const [label, s] of this.view.settings)
       if (this.store.entities.has(label))
         curves[label] = { fins: s.fins, scale: s.scale, samples: s.samples, frames: s.frames };
     return {
       selected: this.selected,
       layout: this.viewports.layout,
       active: this.viewports.active,
-      snap: this.viewports.snap,
-      objectSnap: this.objectSnap,
+      snap: this.view.snap,
+      objectSnap: this.view.objectSnap,
       abscissa: this.abscissa,
       curves,
       studyOf: Object.fromEntries(this.studyOf),
@@ -367,11 +312,9 @@ export class App {
     this.restoring = true;
     try {
       for (const [label, c] of Object.entries(v.curves))
-        this.settings.set(label, { ...c, fins: [...c.fins] });
+        this.view.settings.set(label, { ...c, fins: [...c.fins] });
       for (const [c, st] of Object.entries(v.studyOf)) this.studyOf.set(c, st);
-      this.setSnap(v.snap);
-      this.setObjectSnap(v.objectSnap);
-      this.setAbscissa(v.abscissa);
+      this.view.set({ snap: v.snap, objectSnap: v.objectSnap, abscissa: v.abscissa });
       this.viewports.setLayout(v.layout, v.active);
       if (v.selected !== null && this.store.entities.has(v.selected)) this.select(v.selected);
       this.redrawAll();
@@ -381,82 +324,53 @@ export class App {
   }
 
   /** Snap to existing points and curves (toggle "Objects", Shift+G). */
-  objectSnap = false;
-  /** What the last snapped point landed on, for the status line and tests. */
-  lastSnap: { kind: 'point' | 'curve' | 'grid'; label?: string } | null = null;
-
-  setObjectSnap(on: boolean): void {
-    (document.getElementById('osnap') as HTMLInputElement).checked = on;
-    this.objectSnap = on;
-    this.viewStateChanged();
+  get objectSnap(): boolean {
+    return this.view.objectSnap;
   }
 
-  /**
-   * A point of `plane` (the pointer's, or a dragged handle's) snapped as the toggles ask: with object
-   * snap, onto the nearest handle of a visible curve, else the nearest point of a visible curve as
-   * drawn, within 8 pixels (`exclude`: the handle being dragged and its curve's polyline, which move
-   * with it); else onto the grid when grid snap is on; else as it is.
-   */
-  snapPoint(
-    view: ViewName,
-    p: Vec3,
-    plane: WorkingPlane,
-    exclude?: { label: string; index: number },
-  ): Vec3 {
-    this.lastSnap = null;
-    if (this.objectSnap) {
-      const { w, h } = this.viewports.size(view);
-      const m = this.viewports.viewProj(view);
-      const at = projectToScreen(p, m, w, h);
-      if (at) {
-        const targets = snapTargets(
-          this.store.entities,
-          (l) => this.isHidden(l),
-          (l) => this.analysisOf(l)?.points,
-          exclude,
-        );
-        const hit = snapToObjects(at, targets, m, w, h, 8);
-        if (hit) {
-          const owner = (hit.kind === 'point' ? targets.pointOwner : targets.lineOwner)[hit.index]!;
-          this.lastSnap = { kind: hit.kind, label: owner };
-          return hit.point;
-        }
-      }
-    }
-    if (this.viewports.snap) this.lastSnap = { kind: 'grid' };
-    return this.viewports.snapped(view, p, plane);
+  /** What the last snapped point landed on, for the status line and tests. */
+  get lastSnap(): ViewportController['lastSnap'] {
+    return this.input.lastSnap;
+  }
+
+  setObjectSnap(on: boolean): void {
+    this.view.set({ objectSnap: on });
   }
 
   setSnap(on: boolean): void {
-    (document.getElementById('snap') as HTMLInputElement).checked = on;
-    this.viewports.snap = on;
-    this.viewStateChanged();
+    this.view.set({ snap: on });
   }
 
   setAbscissa(a: Abscissa): void {
-    if (a === this.abscissa) return;
-    this.abscissa = a;
-    const sel = document.getElementById('abscissa') as HTMLSelectElement | null;
-    if (sel) sel.value = a;
-    for (const g of this.graphs) g.abscissa = a;
-    for (const label of this.store.entities.keys()) this.refreshAnalysis(label);
+    this.view.set({ abscissa: a });
+  }
+
+  /** The toggles changed (view store event): checkboxes, views and graphs follow, and are stored. */
+  private togglesChanged(changed: readonly (keyof ViewToggles)[]): void {
+    const v = this.view;
+    if (changed.includes('snap')) {
+      (document.getElementById('snap') as HTMLInputElement).checked = v.snap;
+      this.viewports.snap = v.snap;
+    }
+    if (changed.includes('objectSnap'))
+      (document.getElementById('osnap') as HTMLInputElement).checked = v.objectSnap;
+    if (changed.includes('abscissa')) {
+      const sel = document.getElementById('abscissa') as HTMLSelectElement | null;
+      if (sel) sel.value = v.abscissa;
+      for (const g of this.graphs) g.abscissa = v.abscissa;
+      for (const label of this.store.entities.keys()) this.refreshAnalysis(label);
+    }
     this.viewStateChanged();
   }
 
-  /**
-   * Show or hide a curve (object list): the entity's `visible` attribute, so
-   * the document and every client agree (one "edit attributes" step); a
-   * hidden curve is neither drawn nor picked.
-   */
+  /** Show or hide a curve (object list): commands/set-attributes. */
   async setHidden(label: string, hidden: boolean): Promise<void> {
-    await this.patchAttributes(label, { visible: !hidden });
-    this.setStatus(`${this.nameOf(label)} ${hidden ? 'hidden' : 'shown'}`);
+    await setHidden(this.editor, label, hidden);
   }
 
-  /** Lock or unlock a curve (the `locked` attribute): a locked curve is not picked nor dragged. */
+  /** Lock or unlock a curve (object list): commands/set-attributes. */
   async setLocked(label: string, locked: boolean): Promise<void> {
-    await this.patchAttributes(label, { locked });
-    this.setStatus(`${this.nameOf(label)} ${locked ? 'locked' : 'unlocked'}`);
+    await setLocked(this.editor, label, locked);
   }
 
   /**
@@ -489,78 +403,16 @@ export class App {
     this.store.load(doc);
   }
 
-  private goOffline(): void {
-    if (this.offline) return;
-    this.offline = true;
-    this.setStatus(
-      'Server unreachable: reconnecting… (if it restarted on another port, Re-open with its new address)',
-      true,
-    );
-    void this.reconnect();
-  }
-
-  /**
-   * The event stream failed: is the server down (health fails), or up but
-   * refusing the page's token (a restart with a new one: 401 on a route that
-   * needs it)?
-   */
-  private async checkServer(): Promise<void> {
-    try {
-      await this.client.health();
-      await this.client.listDocuments();
-    } catch (e) {
-      if (!(e instanceof ApiError && e.status === 401)) this.goOffline();
-    }
-  }
-
   /** Whether the server has refused the page's token (it restarted with a new one). */
-  refused = false;
-
-  /**
-   * The server answers but refuses the token this page was opened with: it
-   * was restarted with a new token (or on a new port). Say so, stop polling,
-   * and offer to re-open the page with the address the server printed.
-   */
-  private unauthorized(): void {
-    if (this.refused) return;
-    this.refused = true;
-    this.events?.close();
-    this.events = null;
-    this.setStatus(
-      "The server refused this page's token: it was restarted with a new one. Re-open with the address it printed",
-      true,
-    );
-    document.getElementById('reopen')!.hidden = false;
-  }
-
-  /** Poll the health route until the server is back, then reload the document's revision. */
-  private async reconnect(): Promise<void> {
-    this.events?.close();
-    this.events = null;
-    for (let attempt = 0; attempt < 600; attempt++) {
-      await new Promise((r) => setTimeout(r, Math.min(2000, 200 + attempt * 100)));
-      // A server that moved to another port never answers here: offer the new address.
-      if (attempt === 10) document.getElementById('reopen')!.hidden = false;
-      try {
-        await this.client.health();
-        await this.reload();
-        this.offline = false;
-        document.getElementById('reopen')!.hidden = true;
-        this.subscribe();
-        this.setStatus(`Reconnected at revision ${this.store.revision}`);
-        return;
-      } catch (e) {
-        // Up but refusing the token (unauthorized() has said so), else still down.
-        if (e instanceof ApiError && e.status === 401) {
-          this.offline = false;
-          return;
-        }
-      }
-    }
-    this.setStatus('Server unreachable: reload the page once it runs again', true);
+  get refused(): boolean {
+    return this.connection.refused;
   }
 
   setStatus(text: string, error = false): void {
+    this.editor.setStatus(text, error);
+  }
+
+  private showStatus(text: string, error: boolean): void {
     const el = document.getElementById('status')!;
     el.textContent = text;
     el.classList.toggle('offline', error);
@@ -568,6 +420,10 @@ export class App {
 
   /** An error toast carrying the server's code, message and field. */
   toast(e: unknown): void {
+    this.editor.toast(e);
+  }
+
+  private showToast(e: unknown): void {
     const box = document.getElementById('toasts')!;
     const t = document.createElement('div');
     t.className = 'toast';
@@ -590,196 +446,76 @@ export class App {
     }, 8000);
   }
 
-  /**
-   * Run a server call, turning a failure into a toast; with `what` (the
-   * command's name) the status line says it failed, so it never keeps the
-   * previous command's message.
-   */
-  async run<T>(f: () => Promise<T>, what?: string): Promise<T | undefined> {
-    try {
-      return await f();
-    } catch (e) {
-      if (!(e instanceof ApiError && e.offline)) this.toast(e);
-      if (what)
-        this.setStatus(
-          `${what} failed: ${e instanceof ApiError ? (e.offline ? 'the server is unreachable' : e.body.message) : String(e)}`,
-          true,
-        );
-      return undefined;
-    }
-  }
-
-  /** The selected curve, or null with the status saying that `what` needs one. */
-  private needSelection(what: string): string | null {
-    if (this.selected) return this.selected;
-    this.setStatus(`${what}: nothing is selected; click a curve first (V)`, true);
-    return null;
+  /** Run a server call, turning a failure into a toast (and the status, with `what`). */
+  run<T>(f: () => Promise<T>, what?: string): Promise<T | undefined> {
+    return this.editor.run(f, what);
   }
 
   /** A curve's name for messages: its name, else its label. */
   nameOf(label: string): string {
-    const e = this.store.entities.get(label);
-    return e?.name ? `${e.name} (${label})` : label;
+    return this.editor.nameOf(label);
   }
 
   // ---- editing ---------------------------------------------------------------
 
   /** A curve's drawn colour (its colour attribute, else its label's palette colour). */
   colourOf(label: string): number {
-    return curveColour(label, this.store.entities.get(label)?.attributes);
+    return this.editor.colourOf(label);
   }
 
-  async createCurve(name: string, curve: CurveFile): Promise<string | undefined> {
-    // A colour no visible curve has, stored with the curve so it stays across reloads and tabs.
-    const visible = [...this.store.entities.values()]
-      .filter((e) => e.curve !== undefined && !this.isHidden(String(e.label)))
-      .map((e) => this.colourOf(String(e.label)));
-    const colour = hex(freshColour(visible));
-    const reply = await this.run(
-      () => this.client.createEntity(this.store.name, name, curve, { colour }),
-      `Create ${curve.kind} curve`,
-    );
-    if (!reply) return undefined;
-    this.applyReply(reply);
-    const made = reply.label ?? reply.changes.added?.[0];
-    const label = made === undefined ? undefined : String(made);
-    if (label) {
-      this.select(label);
-      this.setStatus(
-        `Created ${curve.kind} curve ${name} (${label})${this.tool ? `; ${this.tool.hint}` : ''}`,
-      );
-    }
-    return label;
+  // The undoable actions are commands (src/commands/, one per file) on the editor.
+
+  createCurve(name: string, curve: CurveFile): Promise<string | undefined> {
+    return createCurve(this.editor, name, curve, this.tool?.hint);
   }
 
   /** Apply a change reply; entities named by label only are fetched. */
   applyReply(reply: ChangeReply): void {
-    this.fetchStale(this.store.applyReply(reply));
+    this.editor.applyReply(reply);
   }
 
   applyChanges(changes: ChangeSet): void {
-    this.fetchStale(this.store.apply(changes));
+    this.editor.fetchStale(this.store.apply(changes));
   }
 
-  private fetchStale(labels: string[]): void {
-    for (const label of labels) {
-      // A curve being dragged is fetched once, when its last move is answered (dragSettled):
-      // the page sent every position, and a fetch per move doubled the drag's requests.
-      if (label === this.settling) {
-        this.panelsStale = true;
-        continue;
-      }
-      void this.client
-        .getEntity(this.store.name, label)
-        .then((e) => {
-          this.store.put(e);
-        })
-        .catch((e: unknown) => {
-          if (e instanceof ApiError && e.status === 404) this.store.remove(label);
-          else if (!(e instanceof ApiError && e.offline)) this.toast(e);
-        });
-    }
+  replaceCurve(label: string, curve: CurveFile): Promise<void> {
+    return replaceCurve(this.editor, label, curve);
   }
 
-  async replaceCurve(label: string, curve: CurveFile): Promise<void> {
-    const reply = await this.run(() => this.client.putEntity(this.store.name, label, curve));
-    if (reply) this.applyReply(reply);
+  patch(label: string, body: Record<string, unknown>): Promise<void> {
+    return patchEntity(this.editor, label, body);
   }
 
-  async patch(label: string, body: Record<string, unknown>): Promise<void> {
-    const reply = await this.run(() => this.client.patchEntity(this.store.name, label, body));
-    if (reply) this.applyReply(reply);
+  movePoint(label: string, index: number, to: Vec3): Promise<void> {
+    return movePoint(this.editor, label, index, to);
   }
 
-  async movePoint(label: string, index: number, to: Vec3): Promise<void> {
-    const reply = await this.run(() =>
-      this.client.movePoints(this.store.name, label, [{ index, to: [...to] }], false),
-    );
-    if (reply) this.applyReply(reply);
+  undo(): Promise<void> {
+    return undo(this.editor);
   }
 
-  async undo(): Promise<void> {
-    const reply = await this.run(() => this.client.undo(this.store.name), 'Undo');
-    if (!reply) return;
-    this.applyReply(reply);
-    this.setStatus(`Undone: ${reply.changes.name ?? 'last step'} (revision ${reply.revision})`);
+  redo(): Promise<void> {
+    return redo(this.editor);
   }
 
-  async redo(): Promise<void> {
-    const reply = await this.run(() => this.client.redo(this.store.name), 'Redo');
-    if (!reply) return;
-    this.applyReply(reply);
-    this.setStatus(`Redone: ${reply.changes.name ?? 'step'} (revision ${reply.revision})`);
+  insertKnotSelected(): Promise<void> {
+    return insertKnot(this.editor);
   }
 
-  /** Insert a knot into the selected curve at the hovered sample's parameter, else mid-span. */
-  async insertKnotSelected(): Promise<void> {
-    const label = this.needSelection('Insert knot');
-    if (!label) return;
-    const a = this.store.analyses.get(label);
-    const hovered = this.hoverIndex !== null && a ? a.t[this.hoverIndex] : undefined;
-    const c = this.store.entities.get(label)?.curve;
-    const t = a?.t ?? [];
-    const u =
-      hovered ??
-      (c?.kind === 'nurbs' ? midSpan(c.knots) : 0.5 * ((t[0] ?? 0) + (t[t.length - 1] ?? 1)));
-    const reply = await this.run(
-      () => this.client.insertKnot(this.store.name, label, u),
-      'Insert knot',
-    );
-    if (!reply) return;
-    this.applyReply(reply);
-    this.setStatus(`Inserted a knot at t = ${Number(u.toPrecision(6))} into ${this.nameOf(label)}`);
+  elevateSelected(): Promise<void> {
+    return elevate(this.editor);
   }
 
-  /** Raise the degree of the selected curve by one. */
-  async elevateSelected(): Promise<void> {
-    const label = this.needSelection('Elevate degree');
-    if (!label) return;
-    const reply = await this.run(
-      () => this.client.elevate(this.store.name, label),
-      'Elevate degree',
-    );
-    if (!reply) return;
-    this.applyReply(reply);
-    this.setStatus(`Raised the degree of ${this.nameOf(label)} by one`);
+  reverseSelected(): Promise<void> {
+    return reverse(this.editor);
   }
 
-  /** Reverse the direction of the selected curve (its graphs run the other way). */
-  async reverseSelected(): Promise<void> {
-    const label = this.needSelection('Reverse');
-    if (!label) return;
-    const reply = await this.run(() => this.client.reverse(this.store.name, label), 'Reverse');
-    if (!reply) return;
-    this.applyReply(reply);
-    this.setStatus(`Reversed ${this.nameOf(label)}`);
+  splitSelected(): Promise<void> {
+    return split(this.editor);
   }
 
-  /** Split the selected curve at the hovered sample's parameter, else mid-domain; select the first piece. */
-  async splitSelected(): Promise<void> {
-    const label = this.needSelection('Split');
-    if (!label) return;
-    const t = this.store.analyses.get(label)?.t ?? [];
-    const hovered = this.hoverIndex !== null ? t[this.hoverIndex] : undefined;
-    const at = hovered ?? 0.5 * ((t[0] ?? 0) + (t[t.length - 1] ?? 1));
-    const reply = await this.run(() => this.client.split(this.store.name, label, at), 'Split');
-    if (!reply) return;
-    this.applyReply(reply);
-    const first = reply.labels[0];
-    if (first !== undefined) this.select(String(first));
-    this.setStatus(
-      `Split ${this.nameOf(label)} at t = ${Number(at.toPrecision(6))} into ${reply.labels.join(' and ')}`,
-    );
-  }
-
-  async deleteSelected(): Promise<void> {
-    const label = this.needSelection('Delete');
-    if (!label) return;
-    const name = this.nameOf(label);
-    const reply = await this.run(() => this.client.deleteEntity(this.store.name, label), 'Delete');
-    if (!reply) return;
-    this.applyReply(reply);
-    this.setStatus(`Deleted ${name} (Ctrl+Z undoes)`);
+  deleteSelected(): Promise<void> {
+    return deleteSelected(this.editor);
   }
 
   refreshHistory(): void {
@@ -791,36 +527,12 @@ export class App {
   // ---- interrogation -------------------------------------------------------
 
   settingsOf(label: string): ViewSettings {
-    let s = this.settings.get(label);
-    if (!s) {
-      s = { fins: [], scale: 1, samples: 200, frames: false };
-      this.settings.set(label, s);
-    }
-    return s;
+    return this.view.settingsOf(label);
   }
 
   /** The drawing factors of a curve's fins (ViewSettings.finBase), from its analysis. */
   finBase(label: string, a: Analysis): Partial<Record<FinKind, number>> {
-    const s = this.settingsOf(label);
-    s.finBase ??= {};
-    const extent = boxDiagonal(a.points) || 1;
-    const largest = (v: (number | null)[]): number =>
-      Math.max(0, ...v.map((x) => (x !== null && Number.isFinite(x) ? Math.abs(x) : 0)));
-    for (const kind of Object.keys(a.combs) as FinKind[]) {
-      if (s.finBase[kind] !== undefined) continue;
-      const m =
-        kind === 'curvature'
-          ? largest(a.kappa)
-          : kind === 'torsion'
-            ? largest(a.tau)
-            : kind === 'combescure'
-              ? combescureSize(a.combs[kind]!, s.scale)
-              : 1;
-      if (m === 0) continue; // a zero comb: fix the factor once it has a size
-      const quantity = kind === 'curvature' || kind === 'torsion' || kind === 'combescure';
-      s.finBase[kind] = (quantity ? 0.15 : 0.1) * (extent / m);
-    }
-    return s.finBase;
+    return fixFinBase(this.settingsOf(label), a);
   }
 
   /** The analysis as drawn: its combs scaled by the fin factors. */
@@ -836,41 +548,20 @@ export class App {
 
   /** What the views and graphs draw for a curve: the drag's preview, else the server's analysis. */
   analysisOf(label: string): Analysis | undefined {
-    return this.preview?.label === label ? this.preview.analysis : this.store.analyses.get(label);
+    return this.drags.analysisOf(label);
   }
 
   /** Ask the server for what the views draw; one request per curve in flight, the latest wins. */
   refreshAnalysis(label: string): void {
-    // Only curves have an analysis (a study entity is refused by the route).
-    if (!this.store.entities.get(label)?.curve) return;
-    if (this.analysisBusy.has(label)) {
-      this.analysisDirty.add(label);
-      return;
-    }
-    this.analysisBusy.add(label);
-    const seq = ++this.analysisSeq;
-    void this.client
-      .analysis(this.store.name, label, this.analysisRequest(label))
-      .then((a) => {
-        const p = this.preview;
-        if (p?.label === label && this.drag?.label !== label && seq >= p.until) this.preview = null;
-        this.store.setAnalysis(label, a);
-      })
-      .catch((e: unknown) => {
-        if (!(e instanceof ApiError && (e.offline || e.status === 404))) this.toast(e);
-      })
-      .finally(() => {
-        this.analysisBusy.delete(label);
-        if (this.analysisDirty.delete(label)) this.refreshAnalysis(label);
-        if (this.fitPending && !this.analysisPending) {
-          this.fitPending = false;
-          this.fitAll();
-        }
-      });
+    this.analyses.refresh(label);
   }
 
   get analysisPending(): boolean {
-    return this.analysisBusy.size > 0;
+    return this.analyses.pending;
+  }
+
+  get analysisSeq(): number {
+    return this.analyses.seq;
   }
 
   /** The fins drawn for a curve: planar curves show only the meaningful ones (8.4, 8.6). */
@@ -887,13 +578,7 @@ export class App {
     const s = this.settingsOf(label);
     this.viewports.drawCurve(label, {
       analysis: this.drawnAnalysis(label),
-      handles:
-        handlesOverride ??
-        (this.drag?.label === label
-          ? this.drag.handles
-          : this.preview?.label === label
-            ? this.preview.handles
-            : handlesOf(e.curve)),
+      handles: handlesOverride ?? this.drags.handlesOf(label) ?? handlesOf(e.curve),
       polygon:
         e.curve?.kind === 'nurbs' || e.curve?.kind === 'bezier' || e.curve?.kind === 'hermite',
       selected: label === this.selected,
@@ -913,19 +598,22 @@ export class App {
   }
 
   select(label: string | null): void {
-    const previous = this.selected;
-    this.selected = label;
+    this.editor.select(label);
+  }
+
+  /** The selection changed (editor event): views, graphs, panels and the stored view state follow. */
+  private selectionChanged(previous: string | null): void {
+    const label = this.selected;
     if (this.ghost && this.ghost.label !== label) this.setGhost(null);
     if (previous !== label) this.fairing.edited(label);
     if (previous) this.redrawCurve(previous);
     if (label) this.redrawCurve(label);
     this.updateGraphs();
-    this.panels.update();
     this.viewStateChanged();
   }
 
   get selectedEntity(): Entity | undefined {
-    return this.selected ? this.store.entities.get(this.selected) : undefined;
+    return this.editor.selectedEntity;
   }
 
   // ---- graphs ----------------------------------------------------------------
@@ -999,18 +687,17 @@ export class App {
 
   /** Linked hover: a sample index from a graph or the curve highlights both. */
   hoverSample(index: number | null, from?: Graph): void {
-    this.hoverIndex = index;
+    this.editor.hovered = index;
     const a = this.selected ? this.store.analyses.get(this.selected) : undefined;
     const p = index !== null && a ? a.points[index] : undefined;
     this.viewports.setMarker(p ? toVec3(p) : null);
     for (const g of this.graphs) if (g !== from) g.highlight(index);
     this.viewports.root.dataset['hover'] = index === null ? '' : String(index);
-    if (from) this.readoutAt = null;
-    this.placeReadout();
+    this.input.placeReadout(from !== undefined);
   }
 
   get hovered(): number | null {
-    return this.hoverIndex;
+    return this.editor.hovered;
   }
 
   // ---- viewport input ----------------------------------------------------
@@ -1048,368 +735,8 @@ export class App {
     }
   }
 
-  private local(view: ViewName, ev: PointerEvent | MouseEvent): [number, number] {
-    const r = this.viewports.view(view).el.getBoundingClientRect();
-    return [ev.clientX - r.left, ev.clientY - r.top];
-  }
-
   pointAt(view: ViewName, ev: PointerEvent): Vec3 | null {
-    const [x, y] = this.local(view, ev);
-    const plane = workingPlane(view);
-    const p = this.viewports.pointOn(view, x, y, plane, false);
-    return p && this.snapPoint(view, p, plane);
-  }
-
-  private bindViews(): void {
-    for (const v of this.viewports.views) {
-      const el = v.el;
-      el.addEventListener('contextmenu', (ev) => {
-        ev.preventDefault();
-      });
-      el.addEventListener('pointerdown', (ev) => {
-        el.focus();
-        this.viewports.active = v.name;
-        if (
-          ev.button === 1 ||
-          (ev.button === 0 && (ev.shiftKey || ev.altKey)) ||
-          (ev.button === 0 && this.navMode)
-        ) {
-          const mode = ev.altKey || this.navMode === 'orbit' ? 'orbit' : 'pan';
-          this.navigating = { view: v.name, x: ev.clientX, y: ev.clientY, mode };
-          el.setPointerCapture(ev.pointerId);
-          return;
-        }
-        if (ev.button === 2) {
-          this.tool?.rightClick(v.name, ev);
-          if (!this.tool && this.navMode) this.navMode = null;
-          return;
-        }
-        if (ev.button !== 0) return;
-        if (this.tool) {
-          this.tool.click(v.name, ev);
-          return;
-        }
-        this.selectOrDrag(v.name, ev);
-        if (this.drag) el.setPointerCapture(ev.pointerId);
-      });
-      el.addEventListener('pointermove', (ev) => {
-        if (this.navigating) {
-          const dx = ev.clientX - this.navigating.x;
-          const dy = ev.clientY - this.navigating.y;
-          this.navigating.x = ev.clientX;
-          this.navigating.y = ev.clientY;
-          if (this.navigating.mode === 'orbit' && v.name === 'persp')
-            this.viewports.orbit(v.name, dx, dy);
-          else this.viewports.pan(v.name, dx, dy);
-          return;
-        }
-        if (this.drag) {
-          this.dragTo(v.name, ev);
-          return;
-        }
-        if (this.tool) {
-          this.tool.move(v.name, ev);
-          return;
-        }
-        this.hoverCurve(v.name, ev);
-      });
-      const up = (ev: PointerEvent): void => {
-        if (this.navigating) {
-          this.navigating = null;
-          return;
-        }
-        if (this.drag && ev.button === 0) this.endDrag();
-      };
-      el.addEventListener('pointerup', up);
-      el.addEventListener('pointercancel', up);
-      el.addEventListener(
-        'wheel',
-        (ev) => {
-          ev.preventDefault();
-          this.viewports.zoom(v.name, Math.exp(ev.deltaY * 0.0015));
-        },
-        { passive: false },
-      );
-    }
-  }
-
-  navMode: 'pan' | 'orbit' | null = null;
-
-  private selectOrDrag(view: ViewName, ev: PointerEvent): void {
-    const [x, y] = this.local(view, ev);
-    const { w, h } = this.viewports.size(view);
-    const vp = this.viewports.viewProj(view);
-    // A handle of the selected curve first (drag), then any curve (select).
-    if (this.selected && !this.isHidden(this.selected)) {
-      // The last drag's points until the server's copy of the curve is back.
-      const handles =
-        this.preview?.label === this.selected
-          ? this.preview.handles
-          : handlesOf(this.store.entities.get(this.selected)?.curve);
-      const hit = pickNearest([x, y], handles, vp, w, h, 8);
-      if (hit && this.isLocked(this.selected)) {
-        this.setStatus(
-          `${this.nameOf(this.selected)} is locked: unlock it in the object list`,
-          true,
-        );
-        return;
-      }
-      if (hit) {
-        const curve = this.store.entities.get(this.selected)?.curve;
-        this.drag = {
-          label: this.selected,
-          index: hit.index,
-          view,
-          first: true,
-          inFlight: false,
-          pending: null,
-          pendingStamp: 0,
-          handles: handles.slice(),
-          // Combescure fins are the server's alone: such a drag follows its analysis.
-          local:
-            curve !== undefined &&
-            NurbsEvaluator.of(curve) !== null &&
-            !this.settingsOf(this.selected).fins.includes('combescure'),
-          dirty: false,
-          failed: false,
-          grab: [0, 0, 0],
-        };
-        const h0 = handles[hit.index]!;
-        const at = this.viewports.pointOn(view, x, y, dragPlane(view, h0), false);
-        if (at) this.drag.grab = [h0[0] - at[0], h0[1] - at[1], h0[2] - at[2]];
-        this.settling = this.selected;
-        this.latencies.length = 0;
-        this.serverLatencies.length = 0;
-        Object.assign(this.dragStats, { moves: 0, redraws: 0, firstMove: 0, lastMove: 0 });
-        this.setGhost(this.selected);
-        this.setStatus(`Dragging point ${hit.index}`);
-        return;
-      }
-    }
-    let best: { label: string; d: number } | null = null;
-    for (const [label, a] of this.store.analyses) {
-      if (this.isHidden(label) || this.isLocked(label)) continue;
-      const hit = pickPolyline([x, y], a.points.map(toVec3), vp, w, h, 6);
-      if (hit && (!best || hit.distance < best.d)) best = { label, d: hit.distance };
-    }
-    this.select(best?.label ?? null);
-  }
-
-  private hoverCurve(view: ViewName, ev: PointerEvent): void {
-    if (!this.selected) return;
-    const a = this.store.analyses.get(this.selected);
-    if (!a) return;
-    const [x, y] = this.local(view, ev);
-    const { w, h } = this.viewports.size(view);
-    const hit = pickPolyline([x, y], a.points.map(toVec3), this.viewports.viewProj(view), w, h, 8);
-    if ((hit?.index ?? null) !== this.hoverIndex) this.hoverSample(hit?.index ?? null);
-    // The readout follows the cursor on the curve.
-    const box = this.viewports.root.getBoundingClientRect();
-    this.readoutAt = hit ? [ev.clientX - box.left + 14, ev.clientY - box.top + 10] : null;
-    this.placeReadout();
-  }
-
-  /** Where the curve's hover readout is drawn (view-root pixels), or null off the curve. */
-  private readoutAt: [number, number] | null = null;
-
-  private placeReadout(): void {
-    const el = this.curveReadout;
-    const a = this.selected ? this.store.analyses.get(this.selected) : undefined;
-    const i = this.hoverIndex;
-    if (!this.readoutAt || !a || i === null || i >= a.t.length) {
-      el.hidden = true;
-      return;
-    }
-    el.hidden = false;
-    el.textContent = readout(a, i, this.abscissa);
-    el.style.left = `${this.readoutAt[0]}px`;
-    el.style.top = `${this.readoutAt[1]}px`;
-  }
-
-  /**
-   * Move the dragged point on the plane through it parallel to the view. The
-   * next frame draws it (drawDrag); the server hears of it through flushDrag.
-   */
-  private dragTo(view: ViewName, ev: PointerEvent): void {
-    const d = this.drag!;
-    const [x, y] = this.local(view, ev);
-    const start = d.handles[d.index]!;
-    const plane = dragPlane(view, start);
-    const at = this.viewports.pointOn(view, x, y, plane, false);
-    const g = d.grab;
-    const p = at
-      ? this.snapPoint(view, [at[0] + g[0], at[1] + g[1], at[2] + g[2]], plane, {
-          label: d.label,
-          index: d.index,
-        })
-      : null;
-    // A pointer event that does not move the point (the one a release may bring, or a move
-    // within a snapped grid cell) is no move: nothing to send, and the pointer has not moved.
-    if (!p || p.every((v, k) => v === start[k])) return;
-    d.handles[d.index] = p;
-    this.dragStats.moves++;
-    this.dragStats.firstMove ||= ev.timeStamp;
-    this.dragStats.lastMove = ev.timeStamp;
-    this.moved = { label: d.label, handles: d.handles };
-    this.fairing.pointerMoved();
-    // The event's own time: the latency includes the wait for the page to take the event.
-    if (!this.pointerStamp) this.pointerStamp = ev.timeStamp;
-    d.pendingStamp = ev.timeStamp;
-    d.dirty = true;
-    this.viewports.requestRender();
-    d.pending = p;
-    this.flushDrag();
-  }
-
-  /**
-   * Once per frame during a drag: the curve with the moved point, its fins and
-   * graphs, evaluated in the page for a NURBS or Bézier curve (the server's
-   * analysis for other kinds follows as it arrives).
-   */
-  private drawDrag(): void {
-    const d = this.drag;
-    if (!d?.dirty) return;
-    d.dirty = false;
-    const e = this.store.entities.get(d.label);
-    const evaluator = d.local && e?.curve ? NurbsEvaluator.of(e.curve, d.handles) : null;
-    if (evaluator) {
-      const s = this.settingsOf(d.label);
-      const analysis = analyseNurbs(evaluator, {
-        samples: s.samples,
-        by: this.abscissa === 's' ? 'arclength' : 'parameter',
-        fins: s.fins,
-        scale: s.scale,
-      });
-      // Knots stay where they are in t; inflections and extrema wait for the server.
-      const before = this.store.analyses.get(d.label) ?? this.preview?.analysis;
-      for (const f of before?.features ?? []) {
-        if (f.kind !== 'knot') continue;
-        const best = nearestIndex(analysis.t, f.t);
-        analysis.features.push(analysis.s.length ? { ...f, s: analysis.s[best]! } : { ...f });
-      }
-      this.preview = { label: d.label, analysis, handles: d.handles, until: Infinity };
-      if (d.label === this.selected) this.updateGraphs();
-    }
-    this.redrawCurve(d.label, d.handles);
-    // Curve, fins and graphs now hold the new position: the frame about to be drawn shows it.
-    if (evaluator) this.drewDrag = true;
-  }
-
-  /** Send the latest drag position; one PATCH in flight, `continue` after the first. */
-  private flushDrag(): void {
-    const d = this.drag;
-    if (!d || d.inFlight || !d.pending) return;
-    const to = d.pending;
-    d.pending = null;
-    const stamp = d.pendingStamp;
-    d.inFlight = true;
-    const continued = !d.first;
-    d.first = false;
-    this.client
-      .movePoints(
-        this.store.name,
-        d.label,
-        [{ index: d.index, to: [...to] }],
-        continued,
-        this.analysisRequest(d.label),
-      )
-      .then((reply) => {
-        this.serverLatencies.push(performance.now() - stamp);
-        d.lastReply = reply;
-        this.fetchStale(this.store.applyReply(reply, d.label));
-        // A curve the page cannot evaluate follows through the server's analysis of each move.
-        if (!d.local) this.settleFrom(d, false);
-      })
-      .catch((e: unknown) => {
-        this.toast(e);
-        d.failed = true;
-        d.pending = null;
-      })
-      .finally(() => {
-        d.inFlight = false;
-        if (d.failed) this.revertDrag(d);
-        else if (this.drag === d) this.flushDrag();
-        else if (d.pending) {
-          this.drag = d;
-          this.flushDrag();
-          this.drag = null;
-        } else this.dragSettled(d);
-      });
-  }
-
-  /**
-   * A move of the drag was not stored: the drag ends here and the curve, its
-   * fins and graphs go back to what the server holds (the last stored move of
-   * this drag, else the curve before it), visibly, with the status saying so.
-   * A later reconnection reloads the document and changes nothing more.
-   */
-  private revertDrag(d: Drag): void {
-    if (this.drag === d) this.drag = null;
-    if (this.settling === d.label) this.settling = null;
-    if (this.moved?.label === d.label) this.moved = null;
-    if (this.preview?.label === d.label) this.preview = null;
-    this.pointerStamp = 0;
-    // The stored shape: the entity of the last answered move, else the store's (never replaced by the drag).
-    if (d.lastReply) this.settleFrom(d, true);
-    this.redrawCurve(d.label);
-    if (d.label === this.selected) this.updateGraphs();
-    this.setStatus(
-      `Point ${d.index} was not moved: the server did not answer; the curve is back as stored`,
-      true,
-    );
-    if (this.panelsStale) {
-      this.panelsStale = false;
-      this.panels.update();
-    }
-  }
-
-  /**
-   * The drag's last move is answered: the curve is fetched as the server holds
-   * it (refused moves included) and its analysis, with features, replaces the
-   * preview; panels and history catch up.
-   */
-  private dragSettled(d: Drag): void {
-    if (this.settling === d.label) this.settling = null;
-    if (!d.first) {
-      if (this.preview?.label === d.label) this.preview.until = this.analysisSeq + 1;
-      // The stored curve, its analysis with features and the history step, from the last move's
-      // reply (no request), once the fairing assistant's ghost of the final position is on screen.
-      this.fairing.afterGhost(() => {
-        this.settleFrom(d, true);
-      });
-    }
-    if (this.panelsStale) {
-      this.panelsStale = false;
-      this.panels.update();
-    }
-  }
-
-  /**
-   * The dragged curve as the last move's reply has it: the entity as the
-   * server stores it (refused moves included), its analysis (features and
-   * all), and, when the drag is over, its one "move points" history step.
-   */
-  private settleFrom(d: Drag, over: boolean): void {
-    const reply = d.lastReply;
-    const raw = reply?.changes.entities?.find((e) => String(e['label']) === d.label);
-    if (!reply || !raw) return;
-    if (reply.analysis) this.fresh.add(d.label);
-    this.store.put(entityFromServer(raw));
-    if (reply.analysis) {
-      const by = this.abscissa === 's' ? 'arclength' : 'parameter';
-      if (this.preview?.label === d.label && this.drag?.label !== d.label) this.preview = null;
-      this.store.setAnalysis(d.label, analysisFromServer(reply.analysis, by));
-    }
-    if (over && this.store.history) {
-      // The drag is one undo step (PATCH "continue"): undone steps go, the step is the last one.
-      const steps = this.store.history.steps.filter((h) => h.applied !== false);
-      steps.push({
-        revision: reply.revision,
-        name: reply.changes.name ?? 'move points',
-        applied: true,
-      });
-      this.store.setHistory({ steps });
-    }
+    return this.input.pointAt(view, ev);
   }
 
   /** The analysis the views and graphs ask for a curve (its view settings). */
@@ -1423,42 +750,26 @@ export class App {
     };
   }
 
-  private endDrag(): void {
-    const d = this.drag;
-    if (!d) return;
-    // The fairing assistant's ghost of the final position is asked for first, the page's own
-    // redrawing and storing of that position after.
-    this.fairing.dragEnded();
-    // The last position is drawn even when no frame came between it and the release.
-    this.drawDrag();
-    this.drag = null;
-    if (d.failed) return; // reverted already
-    if (d.pending && !d.inFlight) {
-      this.drag = d;
-      this.flushDrag();
-      this.drag = null;
-    } else if (!d.inFlight) this.dragSettled(d);
-    this.setStatus(`Moved point ${d.index}`);
-    this.redrawCurve(d.label);
-  }
-
   get dragging(): boolean {
-    return this.drag !== null;
+    return this.drags.dragging;
   }
 
-  /**
-   * The curve `label` as the page holds it: the store's, with the handles of a
-   * drag whose final position the store has not fetched yet (the fairing
-   * assistant asks for the ghost of this, beside the drag's PATCH).
-   */
+  updatePanels(): void {
+    this.panels.update();
+  }
+
+  requestRender(): void {
+    this.viewports.requestRender();
+  }
+
+  /** The curve `label` as the page holds it (DragController.heldCurve). */
   heldCurve(label: string): CurveFile | undefined {
-    const curve = this.store.entities.get(label)?.curve;
-    return curve && this.moved?.label === label ? withHandles(curve, this.moved.handles) : curve;
+    return this.drags.heldCurve(label);
   }
 
   /** A drag position not yet answered by the server. */
   get dragPending(): boolean {
-    return this.drag !== null && (this.drag.inFlight || this.drag.pending !== null);
+    return this.drags.pending;
   }
 
   fitAll(): void {
@@ -1472,125 +783,20 @@ export class App {
     this.viewports.fit(pts);
   }
 
-  // ---- toolbar and keys ----------------------------------------------------
+  // ---- toolbar actions ------------------------------------------------------
 
-  private bindToolbar(): void {
-    for (const b of document.querySelectorAll<HTMLButtonElement>('[data-tool]')) {
-      b.addEventListener('click', () => {
-        this.setTool(b.dataset['tool'] as ToolName);
-      });
-    }
-    for (const b of document.querySelectorAll<HTMLButtonElement>('[data-action]')) {
-      b.addEventListener('click', () => {
-        this.action(b.dataset['action']!);
-      });
-    }
-    const snap = document.getElementById('snap') as HTMLInputElement;
-    snap.addEventListener('change', () => {
-      this.setSnap(snap.checked);
-    });
-    const osnap = document.getElementById('osnap') as HTMLInputElement;
-    osnap.addEventListener('change', () => {
-      this.setObjectSnap(osnap.checked);
-    });
-    document.getElementById('import-file')!.addEventListener('change', (ev) => {
-      const input = ev.target as HTMLInputElement;
-      const file = input.files?.[0];
-      input.value = '';
-      if (file) void this.importFile(file);
-    });
-    window.addEventListener('keydown', (ev) => {
-      this.key(ev);
-    });
-  }
-
+  /** A toolbar action by name (the buttons' data-action, the keys' map): panels/toolbar.ts. */
   action(name: string): void {
-    switch (name) {
-      case 'undo':
-        void this.undo();
-        break;
-      case 'redo':
-        void this.redo();
-        break;
-      case 'delete':
-        void this.deleteSelected();
-        break;
-      case 'insert-knot':
-        void this.insertKnotSelected();
-        break;
-      case 'elevate':
-        void this.elevateSelected();
-        break;
-      case 'split':
-        void this.splitSelected();
-        break;
-      case 'reverse':
-        void this.reverseSelected();
-        break;
-      case 'fit':
-        this.fitAll();
-        break;
-      case 'layout':
-        this.setLayout(this.viewports.layout === 'quad' ? 'single' : 'quad');
-        break;
-      case 'law':
-        this.panels.lawDialog();
-        break;
-      case 'natural':
-        this.panels.naturalDialog();
-        break;
-      case 'import':
-        document.getElementById('import-file')!.click();
-        break;
-      case 'open':
-        void this.panels.openDialog();
-        break;
-      case 'export':
-        this.exportMenu.toggle();
-        break;
-      case 'export-json':
-      case 'export-step':
-      case 'export-iges':
-      case 'export-dxf':
-        this.exportMenu.pick(name.slice('export-'.length) as MenuFormat);
-        break;
-      case 'help':
-        this.panels.helpDialog();
-        break;
-      case 'accept-fairing':
-        void this.fairing.accept();
-        break;
-    }
+    this.toolbar.action(name);
   }
 
   async importFile(file: File): Promise<void> {
-    const text = await file.text();
-    if (/\.(step|stp|iges|igs)$/i.test(file.name)) {
-      // STEP/IGES are read by the server's isolated Open CASCADE helper.
-      const reply = await this.run(() => this.client.importFile(this.store.name, file.name, text));
-      if (!reply) return;
-      this.applyReply(reply);
-      const first = reply.labels[0];
-      if (first !== undefined) this.select(String(first));
-      this.fitAll();
-      return;
-    }
-    let curve: CurveFile;
-    try {
-      curve = JSON.parse(text) as CurveFile;
-    } catch (e) {
-      this.toast(
-        new Error(`${file.name}: not JSON (${e instanceof Error ? e.message : String(e)})`),
-      );
-      return;
-    }
-    await this.createCurve(file.name.replace(/\.[^.]*$/, ''), curve);
-    this.fitAll();
+    if (await importFile(this.editor, file.name, await file.text(), this.tool?.hint)) this.fitAll();
   }
 
   /** Writes the selected curve in `format` through the server and offers the file as a download. */
   async exportSelected(format: MenuFormat): Promise<void> {
-    const label = this.needSelection('Export');
+    const label = this.editor.needSelection('Export');
     if (label === null) return;
     const what = `Export ${format.toUpperCase()}`;
     const reply = await this.run(
@@ -1607,82 +813,13 @@ export class App {
     this.setStatus(`Exported ${this.nameOf(label)} as ${filename}${deviation}`);
   }
 
-  private key(ev: KeyboardEvent): void {
-    // A dialog owns the keyboard (Escape closes it natively).
-    if ((document.getElementById('dialog') as HTMLDialogElement).open) return;
-    const target = ev.target as HTMLElement | null;
-    if (
-      target &&
-      (target.tagName === 'INPUT' || target.tagName === 'TEXTAREA' || target.tagName === 'SELECT')
-    )
-      return;
-    if (this.tool?.key(ev)) {
-      ev.preventDefault();
-      return;
-    }
-    const k = ev.key.toLowerCase();
-    if ((ev.ctrlKey || ev.metaKey) && k === 'z') {
-      ev.preventDefault();
-      void (ev.shiftKey ? this.redo() : this.undo());
-      return;
-    }
-    if ((ev.ctrlKey || ev.metaKey) && k === 'y') {
-      ev.preventDefault();
-      void this.redo();
-      return;
-    }
-    if (ev.ctrlKey || ev.metaKey || ev.altKey) return;
-    const tools: Record<string, ToolName> = {
-      v: 'select',
-      s: 'spline',
-      b: 'bezier',
-      n: 'nurbs',
-      h: 'hermite',
-    };
-    const actions: Record<string, string> = {
-      l: 'law',
-      k: 'natural',
-      i: 'import',
-      f: 'fit',
-      q: 'layout',
-      o: 'open',
-      e: 'export',
-      '?': 'help',
-      delete: 'delete',
-      backspace: 'delete',
-      u: 'insert-knot',
-      d: 'elevate',
-      x: 'split',
-      w: 'reverse',
-      a: 'accept-fairing',
-    };
-    const views: Record<string, ViewName> = { '1': 'top', '2': 'front', '3': 'side', '4': 'persp' };
-    if (tools[k]) this.setTool(tools[k]);
-    else if (actions[k]) this.action(actions[k]);
-    else if (views[k]) this.setLayout('single', views[k]);
-    else if (k === 'g' && ev.shiftKey) {
-      this.setObjectSnap(!this.objectSnap);
-      this.setStatus(`Object snap ${this.objectSnap ? 'on' : 'off'} (Shift+G)`);
-    } else if (k === 'g') {
-      this.setSnap(!this.viewports.snap);
-      this.setStatus(`Grid snap ${this.viewports.snap ? 'on' : 'off'} (G)`);
-    } else if (k === 'p') this.navMode = this.navMode === 'pan' ? null : 'pan';
-    else if (k === 'r') this.navMode = this.navMode === 'orbit' ? null : 'orbit';
-    else if (k === 'escape') {
-      this.navMode = null;
-      if (this.ghost) this.setGhost(null);
-      else this.select(null);
-    } else return;
-    ev.preventDefault();
-  }
-
   /** Quiet: no request in flight, no analysis queued, no frame scheduled, no drag. */
   isIdle(): boolean {
     return (
       this.client.pending === 0 &&
       !this.analysisPending &&
       !this.viewports.renderPending &&
-      !this.drag &&
+      !this.drags.dragging &&
       !this.design.busy &&
       !this.fairing.busy &&
       !this.optimise.running

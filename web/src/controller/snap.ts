@@ -7,7 +7,13 @@
 
 import type { Entity } from '../api/types';
 import { handlesOf } from '../store/curves';
-import type { SnapTargets, Vec3 } from '../viewport/math';
+import {
+  projectToScreen,
+  snapToObjects,
+  type Mat4,
+  type SnapTargets,
+  type Vec3,
+} from '../viewport/math';
 import { toVec3 } from '../viewport/viewports';
 
 export interface OwnedSnapTargets extends SnapTargets {
@@ -44,4 +50,44 @@ export function snapTargets(
     }
   }
   return { points, polylines, pointOwner, lineOwner };
+}
+
+/** What a snapped point landed on (the status line and the tests read it), or null: nothing. */
+export type SnapHit = { kind: 'point' | 'curve' | 'grid'; label?: string } | null;
+
+/** The view a point is snapped in: its size in pixels, its view-projection, its grid. */
+export interface SnapView {
+  readonly w: number;
+  readonly h: number;
+  readonly viewProj: Mat4;
+  /** Whether grid snap is on. */
+  readonly grid: boolean;
+  /** The point on the view's plane, on its grid when grid snap is on. */
+  onPlane(p: Vec3): Vec3;
+}
+
+/**
+ * A point snapped as the toggles ask: with object snap, onto the nearest
+ * target (a handle or end point first, else a curve as drawn) within 8 pixels
+ * on screen; else onto the grid when grid snap is on; else onto the plane as
+ * it is. `targets` is asked only when object snap is on.
+ */
+export function snapPoint(
+  p: Vec3,
+  view: SnapView,
+  objectSnap: boolean,
+  targets: () => OwnedSnapTargets,
+): { point: Vec3; hit: SnapHit } {
+  if (objectSnap) {
+    const at = projectToScreen(p, view.viewProj, view.w, view.h);
+    if (at) {
+      const t = targets();
+      const hit = snapToObjects(at, t, view.viewProj, view.w, view.h, 8);
+      if (hit) {
+        const owner = (hit.kind === 'point' ? t.pointOwner : t.lineOwner)[hit.index]!;
+        return { point: hit.point, hit: { kind: hit.kind, label: owner } };
+      }
+    }
+  }
+  return { point: view.onPlane(p), hit: view.grid ? { kind: 'grid' } : null };
 }

@@ -71,6 +71,21 @@ export class Panels {
     this.buildInterrogate();
   }
 
+  /**
+   * Follow the document and the selection (called after the App has
+   * subscribed, so the views are drawn before the panels): a change during a
+   * drag waits for its end (rebuilding the panels per move cost whole frames).
+   */
+  listen(): void {
+    this.app.store.subscribe(() => {
+      if (this.app.drags.dragging) this.app.drags.panelsStale = true;
+      else this.update();
+    });
+    this.app.editor.subscribe((e) => {
+      if (e.type === 'selection') this.update();
+    });
+  }
+
   update(): void {
     this.updateObjects();
     this.updateProps();

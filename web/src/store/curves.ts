@@ -3,7 +3,8 @@
 // its handles and which fins carry nothing on a planar curve. Below the App,
 // the panels and the tools, so they share it without importing app.ts.
 
-import type { CurveFile, FinKind } from '../api/types';
+import type { Analysis, CurveFile, FinKind } from '../api/types';
+import { boxDiagonal } from '../graphs/scale';
 import { toVec3 } from '../viewport/viewports';
 import type { Vec3 } from '../viewport/math';
 
@@ -53,6 +54,34 @@ export function combescureSize(
     if (q && b) m = Math.max(m, Math.hypot(...[0, 1, 2].map((k) => (q[k] ?? 0) - (b[k] ?? 0))));
   });
   return scale > 0 ? m / scale : 0;
+}
+
+/**
+ * Fix the drawing factors (ViewSettings.finBase) of the fin kinds `a` carries
+ * that have none yet, from this analysis: the longest curvature, torsion or
+ * Combescure fin 15 % of the curve's extent, unit fins 10 %. A comb that is
+ * zero everywhere gets its factor once it has a size. Returns the factors.
+ */
+export function fixFinBase(s: ViewSettings, a: Analysis): Partial<Record<FinKind, number>> {
+  s.finBase ??= {};
+  const extent = boxDiagonal(a.points) || 1;
+  const largest = (v: (number | null)[]): number =>
+    Math.max(0, ...v.map((x) => (x !== null && Number.isFinite(x) ? Math.abs(x) : 0)));
+  for (const kind of Object.keys(a.combs) as FinKind[]) {
+    if (s.finBase[kind] !== undefined) continue;
+    const m =
+      kind === 'curvature'
+        ? largest(a.kappa)
+        : kind === 'torsion'
+          ? largest(a.tau)
+          : kind === 'combescure'
+            ? combescureSize(a.combs[kind]!, s.scale)
+            : 1;
+    if (m === 0) continue; // a zero comb: fix the factor once it has a size
+    const quantity = kind === 'curvature' || kind === 'torsion' || kind === 'combescure';
+    s.finBase[kind] = (quantity ? 0.15 : 0.1) * (extent / m);
+  }
+  return s.finBase;
 }
 
 /** Handles (control points or data points) of a curve file: what a drag moves. */
