@@ -41,7 +41,6 @@
 #include "hula/io/problem_file.hpp"
 #include "hula/io/run_report_json.hpp"
 #include "hula/oli/process_ranks.hpp"
-#include "hula/optim/solve.hpp"
 
 namespace hula::cli {
 
@@ -258,7 +257,7 @@ Command add_optimise(CLI::App& app) {
       ->excludes(file);
   set_choices(sub->add_option("--algorithm", a->algorithm,
                               "ga-binary | ga-real | nsga2 | nelder-mead | pagmo-<cmaes|de|sade|pso|sga|moead|nsga2>"),
-              optim::solver_names())
+              io::algorithm_names())
       ->required();
   add_integer_option(sub, "--population", a->population, 1, kMaxPopulation,
                      "Individuals per generation (default: the algorithm's own; even for the Flexo algorithms; at "

@@ -44,6 +44,8 @@ void fill_run(Options& o, const SolverRequest& q) {
 
 }  // namespace
 
+std::vector<std::string> algorithm_names() { return optim::solver_names(); }
+
 optim::SolverOptions solver_options(const SolverRequest& q) {
   optim::SolverOptions named = optim::solver_from_name(q.algorithm);
   if (!std::holds_alternative<optim::BinaryGaOptions>(named)) refuse(q.boost.has_value(), "boost", q.algorithm);
