@@ -16,12 +16,17 @@
 // A closed standard descriptor (`>&-`) is reserved with /dev/null opened
 // read-only, so that no file hula opens can take its number (output meant for
 // stdout must never land in a curve file) and writes to it fail with EBADF.
+//
+// Under an MPI launcher (mpirun -np K and the like), a command that does not
+// use MPI — every command of a build without MPI — would run K times with
+// interleaved output: it is refused instead (Unsupported, exit 3).
 #include <fcntl.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <cctype>
 #include <csignal>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <iostream>
@@ -29,6 +34,7 @@
 #include <sstream>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "commands/common.hpp"
@@ -143,6 +149,44 @@ int print_exit_text(const CLI::App& app, const CLI::Error& e) {
   return code;
 }
 
+// How many copies an MPI launcher started, from its environment (Open MPI's OMPI_COMM_WORLD_SIZE, PMI_SIZE of
+// MPICH and Slurm, PMIX_SIZE; a rank variable above 0 means at least two), with the variable that says so; 1 and
+// "" outside a launcher.
+std::pair<long, std::string> launcher_copies() {
+  const auto number = [](const char* name) -> long {
+    const char* v = std::getenv(name);
+    if (v == nullptr) return -1;
+    char* end = nullptr;
+    const long n = std::strtol(v, &end, 10);
+    return end != v ? n : -1;
+  };
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE"})
+    if (const long n = number(name); n > 1) return {n, std::string(name) + "=" + std::to_string(n)};
+  for (const char* name : {"OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK"})
+    if (const long n = number(name); n > 0) return {2, std::string(name) + "=" + std::to_string(n)};
+  return {1, ""};
+}
+
+// Refuses to run `command` as one of several copies an MPI launcher started, unless it uses MPI (batch, and
+// optimise with --islands, in a build with MPI).
+void refuse_copies_under_mpi_launcher(const CLI::App& command) {
+  const auto [copies, variable] = launcher_copies();
+  if (copies <= 1) return;
+  const std::string name = command.get_name();
+#if defined(HULA_WITH_MPI)
+  if (name == "batch" || (name == "optimise" && command.count("--islands") > 0)) return;
+  const std::string why = "hula " + name + " does not use MPI";
+  const std::string fix = "run it once, without the launcher";
+#else
+  const std::string why = "this hula was built without MPI (HULA_MPI=OFF)";
+  const std::string fix = "run it without the launcher, or use a hula built with -DHULA_MPI=ON";
+#endif
+  throw hula::Error(hula::Errc::Unsupported,
+                    why + ", but an MPI launcher started it as one of several copies (" + variable +
+                        "): each would run the whole command on its own, with interleaved output; " + fix,
+                    hula::ErrorWhere{.field = "mpi"});
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -220,6 +264,7 @@ int main(int argc, char** argv) {
     for (const auto& command : commands)
       if (command.app->parsed()) {
         hula::io::set_pipe_inputs(command.app->get_name() != "serve");
+        refuse_copies_under_mpi_launcher(*command.app);
         return command.run();
       }
     return print_help(app);

@@ -1,7 +1,10 @@
 # SPDX-License-Identifier: MIT
-# Shared fixtures of the hulahoops tests: the `hula` CLI as the independent
-# C++ path the binding's results are compared with bit for bit (its JSON
-# prints doubles in shortest round-trip form), and the thesis's example curves.
+# Shared fixtures of the hulahoops tests: the `hula` CLI, the other door to the
+# same C++ libraries, whose results the binding's must equal bit for bit (its
+# JSON prints doubles in shortest round-trip form): a check that both doors
+# give one answer, not an independent reference (closed forms, Open CASCADE and
+# published values are, in the tests that use them); and the thesis's example
+# curves.
 import json
 import os
 import pathlib

@@ -86,6 +86,21 @@ check_writer reconstruct reconstruct --kappa 1 --tau 0 --length 1.57079632679489
 check_writer hermite hermite "$examples/studies/hermite-direction.json" -o OUT
 check_writer fin-compound fin-compound "$examples/studies/fin-compound-edit.json" -o OUT
 check_writer edit-projection edit-projection "$examples/studies/edit-projection.json" -o OUT
+check_writer reduce-degree edit reduce-degree "$work/elevate.json" --tolerance 1e-9 -o OUT
+# The plane-curve writers: offsets and the mappings of thesis 6.3.2.
+printf '0,0\n1,2\n3,3\n4,1\n6,0\n' > "$work/plane.csv"
+"$hula" interpolate --points "$work/plane.csv" -o "$work/plane.json" > /dev/null
+check_writer offset offset "$work/plane.json" --distance 0.25 -o OUT
+check_writer helical-offset helical-offset "$work/plane.json" --distance 0.1 --twist 2*t --frame bishop -o OUT
+check_writer orthotomic orthotomic "$work/plane.json" --pole 0,20 -o OUT
+check_writer polar polar "$work/plane.json" --centre 0,50 --radius 10 -o OUT
+cat > "$work/handles.json" <<'JSON'
+{"handles": [{"point": [2, 0], "tangent": [0, 6.283], "normal": [-1, 0], "curvature": 0.5},
+             {"point": [0, 2], "tangent": [-6.283, 0], "normal": [0, -1], "curvature": 0.5, "torsion": 0}],
+ "parameters": [0, 1]}
+JSON
+check_writer hermite-frenet hermite-frenet "$work/handles.json" -o OUT
+check_writer convert convert "$c1" --format json -o OUT
 "$hula" doc new "$work/d.hula" > /dev/null
 "$hula" doc add "$work/d.hula" --curve "$c1" --name spine > /dev/null
 check_writer doc-export doc export "$work/d.hula" 1 --format json -o OUT
@@ -99,6 +114,21 @@ check_writer doc-export doc export "$work/d.hula" 1 --format json -o OUT
 "$hula" edit reverse "$work/e.json" -o "$work/er.json" > /dev/null
 "$hula" info "$work/er.json" | grep -v '"file":' | cmp -s - "$work/chain.json" \
   || { echo "pipe_test: interpolate | edit elevate | edit reverse | info differs from files" >&2; exit 1; }
+# convert writes DXF on stdout and reads it from stdin: the curve comes back bit for bit, as through files.
+"$hula" convert "$c1" --format dxf -o "$work/c1.dxf" > /dev/null
+"$hula" convert "$work/c1.dxf" -o "$work/c1-back.json" > /dev/null
+"$hula" convert "$c1" --format dxf -o - | cmp -s - "$work/c1.dxf" \
+  || { echo "pipe_test: convert --format dxf -o - differs from the file it writes" >&2; exit 1; }
+"$hula" convert "$c1" --format dxf -o - | "$hula" convert - --from dxf --format json -o - | cmp -s - "$work/c1-back.json" \
+  || { echo "pipe_test: convert - --from dxf -o - differs from the file round trip" >&2; exit 1; }
+# fit --save-study - is a "fit" study that `hula fit --study -` reads back.
+"$hula" fit --points "$examples/cli/scan.csv" -o "$work/fit-a.json" --save-study "$work/fit-study.json" > /dev/null
+"$hula" fit --points "$examples/cli/scan.csv" -o "$work/fit-b.json" --save-study - > "$work/fit-study.piped"
+cmp -s "$work/fit-study.json" "$work/fit-study.piped" \
+  || { echo "pipe_test: fit --save-study - differs from the file it writes" >&2; exit 1; }
+"$hula" fit --points "$examples/cli/scan.csv" -o "$work/fit-b.json" --save-study - \
+  | "$hula" fit - -o - | cmp -s - "$work/fit-a.json" \
+  || { echo "pipe_test: fit --save-study - | fit - -o - differs from fitting the points" >&2; exit 1; }
 # Two outputs of one command cannot share stdout.
 if "$hula" edit split "$c1" --at 0.4 -o - --second - > /dev/null 2>&1; then
   echo "pipe_test: edit split -o - --second - was accepted" >&2

@@ -129,3 +129,50 @@ def test_finished_line_means_recorded_and_kills_leave_nothing(tmp_path):
     assert summary["ok"] == 6 and summary["skipped"] >= len(recorded)
     assert not list(tmp_path.glob(".hula-batch-*")), list(tmp_path.glob(".hula-batch-*"))
     assert not list(tmpdir.iterdir()), list(tmpdir.iterdir())
+
+
+def fault_kills(default):
+    # kills per fault test: HULA_FAULT_KILLS (the nightly mode, docs/testing.md) or the quick default of ctest
+    return max(default, int(os.environ.get("HULA_FAULT_KILLS", default)))
+
+
+def test_kills_at_random_moments_lose_no_record(tmp_path):
+    # checks SIGKILL of a campaign at seeded random moments of its run (10 in ctest, HULA_FAULT_KILLS nightly):
+    # after each, the results file is absent or whole JSON holding every record an earlier run had written
+    # (no acknowledged record is lost), no item of the killed campaign runs on 5 s later, and the run to the end
+    # completes every item and leaves no study copy and no scratch folder
+    import random
+    tmpdir = tmp_path / "tmp"
+    tmpdir.mkdir()
+    env = dict(os.environ, TMPDIR=str(tmpdir))
+    c = campaign(tmp_path, list(range(1, 7)), generations=10)
+    results = tmp_path / "c.results.json"
+    t0 = time.monotonic()
+    r = run([c, "--jobs", "2", "--results", tmp_path / "full.json"], env=env)
+    span = time.monotonic() - t0
+    assert r.returncode == 0, r.stderr
+    rng = random.Random(20261207)
+    recorded = set()
+    for kill in range(fault_kills(10)):
+        proc = subprocess.Popen([HULA, "batch", c, "--jobs", "2"], stdout=subprocess.DEVNULL,
+                                stderr=subprocess.DEVNULL, env=env)
+        time.sleep(rng.uniform(0, span * 1.1))
+        proc.kill()
+        proc.wait()
+        if results.exists():
+            items = json.loads(results.read_text())["items"]  # whole JSON, or this raises
+            assert recorded <= set(items), f"kill {kill}: lost {recorded - set(items)}"
+            recorded = set(items)
+        copy = f".hula-batch-{proc.pid}-"
+        deadline = time.monotonic() + 5
+        while live_processes_mentioning(copy) and time.monotonic() < deadline:
+            time.sleep(0.05)
+        assert not live_processes_mentioning(copy), f"kill {kill}: an item of the killed campaign still runs"
+        if len(recorded) == 6:  # finished: start again from nothing, so later kills land mid-run too
+            results.unlink()
+            recorded = set()
+    r = run([c, "--jobs", "2"], env=env)
+    assert r.returncode == 0, r.stderr
+    assert json.loads(r.stdout)["ok"] == 6
+    assert not list(tmp_path.glob(".hula-batch-*")), list(tmp_path.glob(".hula-batch-*"))
+    assert not list(tmpdir.iterdir()), list(tmpdir.iterdir())

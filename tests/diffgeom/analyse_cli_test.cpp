@@ -96,7 +96,8 @@ TEST(AnalyseCli, ByArcLength) {
 }
 
 // checks --features on the planar S-curve (x, x³ − x) as a cubic Bézier split at a double knot: one inflection
-// at t = 0.5, and the knot table at the double knot (4 left and 4 right derivatives; one cubic, so C3).
+// at t = 0.5, the knot table at the double knot (4 left and 4 right derivatives; one cubic, so C3), and the
+// curvature extrema and monotonicity against the closed form.
 TEST(AnalyseCli, Features) {
   const testing::TempDir dir;
   const std::string f = write(dir, "s.json",
@@ -115,7 +116,6 @@ TEST(AnalyseCli, Features) {
   EXPECT_EQ(ft["knots"][0]["geometric"], 3);
   EXPECT_EQ(ft["knots"][0]["left"].size(), 4U);
   EXPECT_EQ(ft["knots"][0]["right"].size(), 4U);
-  EXPECT_TRUE(ft["curvature_extrema"].is_array());
   EXPECT_TRUE(ft["torsion_extrema"].empty());  // planar: τ = 0 is never a strict extremum
   // Curvature monotonicity against the closed form: the signed κ = 6x / (1 + (3x² − 1)²)^{3/2} (x = 2t − 1) has its
   // extrema where 5u² + 6u − 1 = 0, u = 3x² − 1, i.e. x = ±0.618688 (t = 0.190656, 0.809344); the inflection at
@@ -126,6 +126,18 @@ TEST(AnalyseCli, Features) {
   ASSERT_EQ(m["violations"].size(), 2U);
   EXPECT_NEAR(m["violations"][0]["t"].get<double>(), (1.0 - x_ext) / 2.0, 1e-6);
   EXPECT_NEAR(m["violations"][1]["t"].get<double>(), (1.0 + x_ext) / 2.0, 1e-6);
+  // The same two points are the maxima of |κ|, with |κ| = 6|x| / (1 + (3x² − 1)²)^{3/2} at (x, x³ − x).
+  const json& extrema = ft["curvature_extrema"];
+  ASSERT_EQ(extrema.size(), 2U) << extrema.dump();
+  for (std::size_t i = 0; i < 2; ++i) {
+    const double x = i == 0 ? -x_ext : x_ext;
+    const double u = 3.0 * x * x - 1.0;
+    EXPECT_EQ(extrema[i]["kind"], "maximum");
+    EXPECT_NEAR(extrema[i]["t"].get<double>(), (1.0 + x) / 2.0, 1e-6);
+    EXPECT_NEAR(extrema[i]["curvature"].get<double>(), 6.0 * std::abs(x) / std::pow(1.0 + u * u, 1.5), 1e-9);
+    EXPECT_NEAR(extrema[i]["point"][0].get<double>(), x, 1e-6);
+    EXPECT_NEAR(extrema[i]["point"][1].get<double>(), x * x * x - x, 1e-6);
+  }
   ASSERT_EQ(m["pieces"].size(), 3U);
   EXPECT_EQ(m["pieces"][0]["trend"], "decreasing");
   EXPECT_EQ(m["pieces"][1]["trend"], "increasing");

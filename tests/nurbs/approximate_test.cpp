@@ -97,7 +97,9 @@ TEST(Approximate, MoreControlPointsFitBetterUpToInterpolation) {
   EXPECT_LT(previous, 1e-10);
 }
 
-// checks: a degree-1 fit with 2 control points is the chord; a planar fit stays planar.
+// checks: a degree-1 fit with 2 control points is the chord; a planar fit stays planar: points in z = 0 fitted in
+// 3-D give control points with z = 0 exactly (the least-squares solution of zero data is zero), and fitted in 2-D
+// the same x and y.
 TEST(Approximate, EdgeCases) {
   const auto pts = noisy_curve_points(10, 2);
   const ApproximationResult line = approximate(pts, {.control_points = 2, .degree = 1});
@@ -107,6 +109,13 @@ TEST(Approximate, EdgeCases) {
   for (auto& p : flat) p.z = 0.0;
   const ApproximationResult r = approximate(flat, {.control_points = 5, .dimension = 2});
   EXPECT_EQ(r.curve.dimension(), 2);
+  const ApproximationResult r3 = approximate(flat, {.control_points = 5});
+  ASSERT_EQ(r3.curve.control_points().size(), r.curve.control_points().size());
+  for (std::size_t i = 0; i < r3.curve.control_points().size(); ++i) {
+    EXPECT_EQ(r3.curve.control_points()[i].z, 0.0) << i;
+    EXPECT_NEAR(r3.curve.control_points()[i].x, r.curve.control_points()[i].x, 1e-12) << i;
+    EXPECT_NEAR(r3.curve.control_points()[i].y, r.curve.control_points()[i].y, 1e-12) << i;
+  }
 }
 
 // checks: extreme scales fit without NaN and with deviations that scale with the data.

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -48,6 +49,14 @@ inline std::vector<std::string> temporaries(const fs::path& dir) {
   for (const auto& e : fs::directory_iterator(dir))
     if (e.path().filename().string().find(".tmp-") != std::string::npos) out.push_back(e.path().filename().string());
   return out;
+}
+
+/// How many SIGKILLs a fault test sends: `quick` in ctest, or HULA_FAULT_KILLS when that is larger (the nightly
+/// mode, docs/testing.md: HULA_FAULT_KILLS=100).
+inline int fault_kills(int quick) {
+  const char* v = std::getenv("HULA_FAULT_KILLS");
+  const int asked = v != nullptr ? std::atoi(v) : 0;  // NOLINT(cert-err34-c): not a number is 0, the quick mode
+  return asked > quick ? asked : quick;
 }
 
 /// A small 3-D point set as CSV.

@@ -117,7 +117,7 @@ TEST(Issue10Faults, KilledOutputWriteIsOldOrNew) {
   for (int i = 0; i < 20000; ++i) points += std::to_string(i) + "," + std::to_string((i * 7) % 13) + ",0\n";
   write(dir / "points.csv", points);
   kill_at_random_moments({"interpolate", "--points", (dir / "points.csv").string(), "-o", (dir / "c.json").string()},
-                         dir.path(), {dir / "c.json"}, 12);
+                         dir.path(), {dir / "c.json"}, fault_kills(12));
 }
 
 // checks: SIGKILL during an optimise run streaming its --log leaves the old or the complete new log.
@@ -125,7 +125,7 @@ TEST(Issue10Faults, KilledLogWriteIsOldOrNew) {
   TempDir dir;
   kill_at_random_moments({"optimise", "--problem", "sphere", "--algorithm", "ga-real", "--dimension", "10",
                           "--population", "100", "--generations", "100", "--log", (dir / "log.csv").string()},
-                         dir.path(), {dir / "log.csv"}, 12);
+                         dir.path(), {dir / "log.csv"}, fault_kills(12));
 }
 
 // checks: SIGKILL during analyse --svg leaves each figure old or new, never a mix.
@@ -139,7 +139,7 @@ TEST(Issue10Faults, KilledSvgWriteIsOldOrNew) {
   for (const char* name : {"curve", "kappa", "tau", "radius", "speed", "logcurvature"})
     figures.push_back(dir / "fig" / (std::string(name) + ".svg"));
   kill_at_random_moments({"analyse", (dir / "c.json").string(), "--samples", "20000", "--svg", (dir / "fig").string()},
-                         dir / "fig", figures, 12);
+                         dir / "fig", figures, fault_kills(12));
 }
 
 }  // namespace

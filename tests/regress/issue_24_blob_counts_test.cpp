@@ -2,11 +2,14 @@
 // Issue 24, item 6: a 278-byte hostile entity blob (an array count of
 // 150,000,000) made `doc check` allocate 3.5 GB for 9 s, and with 0xFFFFFFFF
 // every `doc` command exited 6 (out of memory). Every count read from a blob is
-// now bounded by the bytes that remain before anything is allocated.
+// now bounded by the bytes that remain before anything is allocated. The same
+// holds for the counts a DXF or an IGES file states before its arrays.
 #include <sqlite3.h>
 
 #include <cstdint>
 #include <cstring>
+#include <sstream>
+#include <utility>
 
 #include "cli.hpp"
 
@@ -70,6 +73,98 @@ TEST(Issue24BlobCounts, HostileArrayCountIsRefusedBeforeAllocating) {
     EXPECT_NE(message_of(list).find("array count"), std::string::npos) << list.err.substr(0, 300);
   }
 }
+
+// `hula ARGS...` under a 1 GB address-space limit (the exchange helper inherits it).
+ProcessResult limited(const std::vector<std::string>& args) {
+  std::vector<std::string> all{"-c", "ulimit -v 1000000 && exec \"$@\"", "sh", HULA_CLI_PATH};
+  all.insert(all.end(), args.begin(), args.end());
+  return testing::run_process("/bin/sh", all);
+}
+
+// `text` with the value of the first group `code` of its SPLINE entity replaced by `value` (DXF: a group code
+// line, then its value line).
+std::string with_spline_group(const std::string& text, const std::string& code, const std::string& value) {
+  std::istringstream in(text);
+  std::string out, line;
+  bool spline = false, done = false, replace_next = false;
+  while (std::getline(in, line)) {
+    if (replace_next) {
+      line = value;
+      replace_next = false;
+      done = true;
+    } else if (line == "SPLINE") {
+      spline = true;
+    } else if (spline && !done && line.find_first_not_of(' ') != std::string::npos &&
+               line.substr(line.find_first_not_of(' ')) == code) {
+      replace_next = true;
+    }
+    out += line + "\n";
+  }
+  EXPECT_TRUE(done) << "no SPLINE group " << code;
+  return out;
+}
+
+// checks: a DXF SPLINE stating 150,000,000 or 0xFFFFFFFF knots (group code 72) or control points (73) — dxflib
+// allocated and zeroed that many before reading them: exit 6 under 1 GB — is refused with exit 3, ParseError
+// naming the file, the line and the count, and no output is written.
+TEST(Issue24BlobCounts, HostileDxfCountIsRefusedBeforeAllocating) {
+  TempDir dir;
+  write(dir / "points.csv", kPointsCsv);
+  ASSERT_EQ(hula({"interpolate", "--points", (dir / "points.csv").string(), "-o", (dir / "c.json").string()}).exit_code,
+            0);
+  ASSERT_EQ(hula({"convert", (dir / "c.json").string(), "-o", (dir / "c.dxf").string()}).exit_code, 0);
+  const std::string dxf = io::read_text_file(dir / "c.dxf");
+  for (const std::string count : {"150000000", "4294967295"}) {
+    for (const auto& [code, what] : {std::pair<std::string, std::string>{"72", "knots"}, {"73", "control points"}}) {
+      const fs::path bad = dir / ("bad-" + code + ".dxf");
+      write(bad, with_spline_group(dxf, code, count));
+      const ProcessResult r = limited({"convert", bad.string(), "-o", (dir / "out.json").string()});
+      EXPECT_EQ(r.exit_code, 3) << code << " = " << count << ": " << r.err.substr(0, 300);
+      EXPECT_EQ(error_of(r)["error"]["code"], "ParseError");
+      EXPECT_NE(message_of(r).find("states " + count + " " + what + " (group code " + code + ")"), std::string::npos)
+          << message_of(r);
+      EXPECT_NE(message_of(r).find(bad.filename().string()), std::string::npos) << message_of(r);
+      EXPECT_FALSE(fs::exists(dir / "out.json"));
+    }
+  }
+}
+
+#ifdef HULA_WITH_OCCT
+// checks: an IGES rational B-spline curve (entity 126) stating K = 150,000,000 or 0xFFFFFFFF — the exchange
+// helper allocated and filled arrays of that size (3.5 GB for 32 s, then a crash) — is refused before the helper
+// runs: exit 3, ParseError naming the file, the entity's directory entry and K, no output.
+TEST(Issue24BlobCounts, HostileIgesCountIsRefusedBeforeTheHelperRuns) {
+  TempDir dir;
+  write(dir / "points.csv", kPointsCsv);
+  ASSERT_EQ(hula({"interpolate", "--points", (dir / "points.csv").string(), "-o", (dir / "c.json").string()}).exit_code,
+            0);
+  ASSERT_EQ(hula({"convert", (dir / "c.json").string(), "-o", (dir / "c.igs").string()}).exit_code, 0);
+  const std::string iges = io::read_text_file(dir / "c.igs");
+  const std::size_t at = iges.find("\n126,");
+  ASSERT_NE(at, std::string::npos);
+  const std::size_t k_end = iges.find(',', at + 5);
+  for (const std::string count : {"150000000", "4294967295"}) {
+    // The parameter data keeps its 64 columns: the longer K takes the place of the shortest reals after it.
+    std::string line = iges.substr(at + 1, iges.find('\n', at + 1) - at - 1);
+    std::string data = "126," + count + line.substr(k_end - at - 1, 64 - (k_end - at - 1));
+    for (std::size_t z; data.size() > 64 && (z = data.find("0.0000000000000000E+00")) != std::string::npos;)
+      data.replace(z, 22, "0.0");
+    ASSERT_LE(data.size(), 64U) << data;
+    data.resize(64, ' ');
+    std::string text = iges;
+    text.replace(at + 1, 64, data);
+    write(dir / "bad.igs", text);
+    const ProcessResult r = limited({"convert", (dir / "bad.igs").string(), "-o", (dir / "out.json").string()});
+    EXPECT_EQ(r.exit_code, 3) << count << ": " << r.err.substr(0, 300);
+    EXPECT_EQ(error_of(r)["error"]["code"], "ParseError");
+    EXPECT_NE(message_of(r).find("(type 126) states K = " + count), std::string::npos) << message_of(r);
+    EXPECT_NE(message_of(r).find("bad.igs"), std::string::npos) << message_of(r);
+    EXPECT_FALSE(fs::exists(dir / "out.json"));
+  }
+  // The file as written reads back (the check refuses only counts above what an entity holds).
+  EXPECT_EQ(limited({"convert", (dir / "c.igs").string(), "-o", (dir / "back.json").string()}).exit_code, 0);
+}
+#endif
 
 }  // namespace
 }  // namespace hula::regress

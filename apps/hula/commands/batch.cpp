@@ -99,8 +99,11 @@ Running start_item(const std::vector<io::CampaignItem>& items, std::size_t index
     if (out < 0 || err < 0) ::_exit(127);
     ::dup2(out, 1);
     ::dup2(err, 2);
-    // Open MPI's environment must not make the child think it is a rank of the campaign's job.
-    for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE"}) ::unsetenv(v);
+    // The launcher's environment must not make the child think it is a rank of the campaign's job (main.cpp
+    // refuses a command that does not use MPI under a launcher).
+    for (const char* v :
+         {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE", "OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK"})
+      ::unsetenv(v);
     ::execl(exe.c_str(), exe.c_str(), kind.c_str(), r.study_copy.c_str(), static_cast<char*>(nullptr));
     ::_exit(127);
   }

@@ -51,7 +51,7 @@ int run_offset(const OffsetArgs& args) {
     }
     doc["output"] = args.output;
   }
-  print_json(doc);
+  print_result(doc, args.output);
   return kExitOk;
 }
 

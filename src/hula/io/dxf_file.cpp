@@ -10,6 +10,7 @@
 #include <charconv>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <optional>
 #include <set>
@@ -352,6 +353,78 @@ void write_dxf_file(const std::filesystem::path& path, std::span<const DxfCurve>
   write_file_atomically(path, dxf_text(curves));
 }
 
+// dxflib allocates (and zeroes) an array for the count an entity states before reading its elements: a SPLINE's
+// knots (group code 72), control points with their weights (73) and fit points (74), a LWPOLYLINE's vertices
+// (90), a LEADER's vertices (76). A count above the elements that follow in the entity is refused here, before
+// dxflib sees it: a few hostile bytes must not make it allocate gigabytes.
+void check_counts(std::string_view text, std::string_view name) {
+  struct Count {
+    const char* entity;
+    int count_code;
+    int element_code;
+    const char* what;
+  };
+  static constexpr Count kCounts[] = {{"SPLINE", 72, 40, "knots"},
+                                      {"SPLINE", 73, 10, "control points"},
+                                      {"SPLINE", 74, 11, "fit points"},
+                                      {"LWPOLYLINE", 90, 10, "vertices"},
+                                      {"LEADER", 76, 10, "vertices"}};
+  struct Claim {
+    const Count* count;
+    long long value;
+    std::size_t line;
+  };
+  std::string entity;
+  std::vector<Claim> claims;
+  std::map<int, long long> elements;
+  const auto settle = [&] {
+    for (const Claim& c : claims)
+      if (c.value > elements[c.count->element_code])
+        refuse(name, "line " + std::to_string(c.line) + ": the " + std::string(c.count->entity) + " states " +
+                         std::to_string(c.value) + " " + c.count->what + " (group code " +
+                         std::to_string(c.count->count_code) + ") but holds " +
+                         std::to_string(elements[c.count->element_code]));
+    claims.clear();
+    elements.clear();
+  };
+  const auto trimmed = [](std::string_view line) {
+    while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '\t')) line.remove_suffix(1);
+    while (!line.empty() && (line.front() == ' ' || line.front() == '\t')) line.remove_prefix(1);
+    return line;
+  };
+  std::size_t at = 0, line = 0;
+  const auto next_line = [&]() -> std::optional<std::string_view> {
+    if (at >= text.size()) return std::nullopt;
+    const std::size_t end = std::min(text.find('\n', at), text.size());
+    const std::string_view l = text.substr(at, end - at);
+    at = end + 1;
+    ++line;
+    return l;
+  };
+  while (const auto code_line = next_line()) {
+    const auto value_line = next_line();
+    if (!value_line) break;
+    const std::string code_text(trimmed(*code_line));
+    char* end = nullptr;
+    const long code = std::strtol(code_text.c_str(), &end, 10);
+    if (end == code_text.c_str()) continue;  // not a group code: dxflib's to judge
+    if (code == 0) {
+      settle();
+      entity = std::string(trimmed(*value_line));
+      continue;
+    }
+    for (const Count& c : kCounts) {
+      if (entity != c.entity) continue;
+      if (code == c.element_code) ++elements[code];
+      if (code == c.count_code) {
+        const std::string value(trimmed(*value_line));
+        claims.push_back({&c, std::strtoll(value.c_str(), nullptr, 10), line});
+      }
+    }
+  }
+  settle();
+}
+
 DxfReadReport parse_dxf(std::string_view text, std::string_view name) {
   if (text.rfind("AutoCAD Binary DXF", 0) == 0) refuse(name, "a binary DXF file (only ASCII DXF is read)");
   const auto first = last_lines(text.substr(0, std::min<std::size_t>(text.size(), 4096)), SIZE_MAX);
@@ -361,6 +434,7 @@ DxfReadReport parse_dxf(std::string_view text, std::string_view name) {
   const auto tail = last_lines(text, 2);
   if (tail.size() < 2 || tail[0] != "EOF" || tail[1] != "0")
     refuse(name, "the file is cut short (it does not end with the record 0 EOF)");
+  check_counts(text, name);
   Reader reader{std::string(name)};
   DL_Dxf dxf;
   std::istringstream stream{std::string(text)};

@@ -77,22 +77,32 @@ struct Writer {
 struct Reader {
   const std::vector<char>& bytes;
   std::size_t at = 0;
+  [[noreturn]] static void truncated(const std::string& why) {
+    throw Error(Errc::IoError, "truncated island report: " + why, {.field = "mpi"});
+  }
   template <class T>
   T get() {
-    if (at + sizeof(T) > bytes.size()) throw Error(Errc::IoError, "truncated island report", {.field = "mpi"});
+    if (sizeof(T) > bytes.size() - at) truncated("it ends at byte " + std::to_string(bytes.size()));
     T v;
     std::memcpy(&v, bytes.data() + at, sizeof(T));
     at += sizeof(T);
     return v;
   }
+  // A count of elements of at least `each` bytes, bounded by the bytes that remain (before anything is allocated).
+  std::size_t count(std::size_t each) {
+    const auto n = get<std::uint64_t>();
+    if (n > (bytes.size() - at) / each)
+      truncated("it states " + std::to_string(n) + " elements of at least " + std::to_string(each) + " bytes at byte " +
+                std::to_string(at) + ", but " + std::to_string(bytes.size() - at) + " bytes remain");
+    return static_cast<std::size_t>(n);
+  }
   std::vector<double> get_doubles() {
-    std::vector<double> v(get<std::uint64_t>());
+    std::vector<double> v(count(sizeof(double)));
     for (double& x : v) x = get<double>();
     return v;
   }
   std::string get_string() {
-    const auto n = get<std::uint64_t>();
-    if (at + n > bytes.size()) throw Error(Errc::IoError, "truncated island report", {.field = "mpi"});
+    const std::size_t n = count(1);
     std::string s(bytes.data() + at, n);
     at += n;
     return s;
@@ -153,9 +163,11 @@ IslandReport deserialise(const std::vector<char>& bytes) {
   out.island = r.get<std::uint64_t>();
   out.seed = r.get<std::uint64_t>();
   out.best = r.get_solution();
-  out.population.resize(r.get<std::uint64_t>());
+  // A solution is at least its two counts and its violation; a migration event five numbers.
+  constexpr std::size_t kSolutionBytes = 3 * 8, kMigrationBytes = 5 * 8;
+  out.population.resize(r.count(kSolutionBytes));
   for (Solution& s : out.population) s = r.get_solution();
-  out.archive.resize(r.get<std::uint64_t>());
+  out.archive.resize(r.count(kSolutionBytes));
   for (Solution& s : out.archive) s = r.get_solution();
   out.report.termination = static_cast<Termination>(r.get<std::uint8_t>());
   out.report.message = r.get_string();
@@ -166,7 +178,7 @@ IslandReport deserialise(const std::vector<char>& bytes) {
   out.sent = r.get<std::uint64_t>();
   out.received = r.get<std::uint64_t>();
   out.accepted = r.get<std::uint64_t>();
-  out.migrations.resize(r.get<std::uint64_t>());
+  out.migrations.resize(r.count(kMigrationBytes));
   for (MigrationEvent& e : out.migrations) {
     e.generation = r.get<std::uint64_t>();
     e.from = r.get<std::uint64_t>();

@@ -26,12 +26,12 @@ bool is_capture(const std::string& segment) noexcept {
 
 }  // namespace
 
-void Router::add(std::string method, std::string pattern, Handler handler) {
+void Router::add(std::string method, std::string pattern, Handler handler, Runs runs) {
   std::vector<std::string> segments = split_path(pattern);
-  routes_.push_back({std::move(method), std::move(pattern), std::move(segments), std::move(handler)});
+  routes_.push_back({std::move(method), std::move(pattern), std::move(segments), std::move(handler), runs});
 }
 
-Response Router::dispatch(Request& request, std::string& pattern) const {
+Router::Match Router::match(Request& request, std::string& pattern) const {
   const std::vector<std::string> segments = split_path(request.path);
   bool other_method = false;
   for (const Route& r : routes_) {
@@ -51,7 +51,7 @@ Response Router::dispatch(Request& request, std::string& pattern) const {
     }
     pattern = r.pattern;
     request.params = std::move(params);
-    return r.handler(request);
+    return Match{&r.handler, r.runs};
   }
   pattern.clear();
   if (other_method) throw HttpError(405, "MethodNotAllowed", request.method + " is not allowed on " + request.path);

@@ -5,7 +5,9 @@
 // reading, the middleware refuses a too-large Content-Length before), route,
 // write, and go on reading while the client keeps the connection alive. A
 // route that answers with an EventLog turns the connection into an SSE
-// stream fed by EventLog wake-ups, without a thread of its own.
+// stream fed by EventLog wake-ups, without a thread of its own. A route that
+// runs on the request workers (Runs::Worker) is handed to them with the
+// request; its response comes back to the connection's strand to be written.
 #include "hula/server/server.hpp"
 
 #include <atomic>
@@ -13,6 +15,7 @@
 #include <boost/asio/signal_set.hpp>
 #include <boost/asio/steady_timer.hpp>
 #include <boost/asio/strand.hpp>
+#include <boost/asio/thread_pool.hpp>
 #include <boost/beast/core.hpp>
 #include <boost/beast/http.hpp>
 #include <chrono>
@@ -66,6 +69,7 @@ void ServerOptions::validate() const {
   require(jobs >= 1, "jobs", "must be at least 1");
   require(queue_limit >= 1, "queue_limit", "must be at least 1");
   require(io_threads >= 1, "io_threads", "must be at least 1");
+  require(request_workers >= 1, "request_workers", "must be at least 1");
   require(max_connections >= 1, "max_connections", "must be at least 1");
   require(max_body >= 1, "max_body", "must be at least 1 byte");
   require(max_header >= 1024, "max_header", "must be at least 1024 bytes");
@@ -94,18 +98,42 @@ struct Server::Impl {
   DocumentRegistry documents;
   Router router;
   net::steady_timer drain{ioc};
+  // Declared last: destroyed (stopped and joined) first, while the routes its threads run still exist.
+  net::thread_pool workers;
 
   explicit Impl(ServerOptions o)
       : options(std::move(o)),
         jobs(JobPoolOptions{.workers = options.jobs, .queue_limit = options.queue_limit}),
-        documents(options.workspace) {}
+        documents(options.workspace),
+        workers(options.request_workers) {}
 
   void accept();
   void stop();
   void stop_when_drained(std::chrono::steady_clock::time_point deadline);
   void log(std::string_view method, std::string_view route, unsigned status, double ms);
-  Response handle(Request& request, std::string& route);
+  // A static file or the ?token= redirect (the paths outside /api/).
+  Response handle_static(Request& request, std::string& route);
 };
+
+namespace {
+
+// What a request gets from `produce`, its errors turned into error responses.
+template <class F>
+Response answer(F&& produce) {
+  try {
+    return produce();
+  } catch (const HttpError& e) {
+    return error_response(e);
+  } catch (const Error& e) {
+    return error_response(e);
+  } catch (const std::bad_alloc& e) {
+    return error_response(out_of_memory_error(e));
+  } catch (const std::exception& e) {
+    return error_response(HttpError(500, "InternalError", e.what()));
+  }
+}
+
+}  // namespace
 
 class Session : public std::enable_shared_from_this<Session> {
  public:
@@ -214,26 +242,42 @@ class Session : public std::enable_shared_from_this<Session> {
     r.path = std::string(target.substr(0, q));
     r.body = std::move(req.body());
     r.json_depth_limit = server_.options.json_depth;
+    const bool keep_alive = req.keep_alive();
     std::string route;
-    Response response;
-    try {
+    const Handler* offloaded = nullptr;
+    Response response = answer([&] {
       if (q != std::string_view::npos) r.query = parse_query(target.substr(q + 1));
-      response = server_.handle(r, route);
-    } catch (const HttpError& e) {
-      response = error_response(e);
-    } catch (const Error& e) {
-      response = error_response(e);
-    } catch (const std::bad_alloc& e) {
-      response = error_response(out_of_memory_error(e));
-    } catch (const std::exception& e) {
-      response = error_response(HttpError(500, "InternalError", e.what()));
-    }
-    if (route.empty()) route = r.path.starts_with("/api/") ? std::string("-") : std::string("static");
+      if (!r.path.starts_with("/api/")) return server_.handle_static(r, route);
+      const Router::Match m = server_.router.match(r, route);
+      if (m.runs == Runs::Worker) {
+        offloaded = m.handler;
+        return Response{};
+      }
+      return (*m.handler)(r);
+    });
+    if (offloaded != nullptr) return hand_to_workers(std::move(r), *offloaded, std::move(route), keep_alive);
+    finish(std::move(response), keep_alive, std::move(route), r.path);
+  }
+
+  // Runs a Worker route's handler on the request workers; its response is written from this connection's strand.
+  void hand_to_workers(Request request, const Handler& handler, std::string route, bool keep_alive) {
+    stream_.expires_never();  // the request is read; the write sets its own deadline
+    net::post(server_.workers, [self = shared_from_this(), request = std::move(request), &handler,
+                                route = std::move(route), keep_alive]() mutable {
+      Response response = answer([&] { return handler(request); });
+      net::post(self->stream_.get_executor(),
+                [self, response = std::move(response), route = std::move(route), path = std::move(request.path),
+                 keep_alive]() mutable { self->finish(std::move(response), keep_alive, std::move(route), path); });
+    });
+  }
+
+  void finish(Response response, bool keep_alive, std::string route, const std::string& path) {
+    if (route.empty()) route = path.starts_with("/api/") ? std::string("-") : std::string("static");
     if (response.events) {
       next_event_ = response.events_from;
       return start_events(std::move(response.events), route);
     }
-    respond(std::move(response), req.keep_alive(), route);
+    respond(std::move(response), keep_alive, route);
   }
 
   void respond(Response response, bool keep_alive, std::string_view route) {
@@ -326,8 +370,7 @@ void Server::Impl::log(std::string_view method, std::string_view route, unsigned
   std::cerr.flush();
 }
 
-Response Server::Impl::handle(Request& request, std::string& route) {
-  if (request.path.starts_with("/api/")) return router.dispatch(request, route);
+Response Server::Impl::handle_static(Request& request, std::string& route) {
   if (request.method != "GET" && request.method != "HEAD")
     throw HttpError(405, "MethodNotAllowed", request.method + " is not allowed on static files");
   route = "static";

@@ -3,7 +3,8 @@
 // Boost.Asio: a few I/O threads serve every connection asynchronously, so
 // thousands of idle or streaming (SSE) connections cost sockets and buffers,
 // not threads, and interrogation requests stay fast while optimisation jobs
-// run on their own bounded pool (jobs.hpp). Every request passes the
+// run on their own bounded pool (jobs.hpp) and imports, exports and
+// intersections on the request workers. Every request passes the
 // security middleware (security.hpp) before any route; requests are logged
 // as JSON lines on stderr.
 #pragma once
@@ -34,6 +35,10 @@ struct ServerOptions {
   /// Threads serving HTTP, ≥ 1; each request runs on one to its end. Two on a 2-core machine: four did not shorten
   /// the fairing ghost's wait (docs/benchmarks.md, "Fairing ghost before the page's own catching up").
   std::size_t io_threads = 2;
+  /// Threads running the routes that can take seconds (imports and exports, which wait for the exchange
+  /// helper; intersections of curves of any size: Runs::Worker in router.hpp), so the I/O threads stay free
+  /// for every other request. ≥ 1; more requests of that kind wait for one.
+  std::size_t request_workers = 4;
   /// Open connections at most; one more is answered 503 and closed. ≥ 1.
   std::size_t max_connections = 16384;
   /// Largest request body in bytes (413 past it, refused before the body is read).

@@ -18,6 +18,7 @@
 
 #include "hula/core/error.hpp"
 #include "hula/io/atomic_file.hpp"
+#include "hula/io/iges_counts.hpp"
 #include "hula/io/json_read.hpp"
 #include "hula/io/owned_files.hpp"
 #include "hula/oli/exchange/detail/helper_process.hpp"
@@ -206,7 +207,8 @@ ExportReport export_curves(const std::filesystem::path& path, std::span<const Ex
 }
 
 ImportReport import_curves(const std::filesystem::path& path, const ExchangeOptions& options) {
-  (void)exchange_format_for_path(path);  // refuse an unknown extension before starting a process
+  // Refuse an unknown extension, and an IGES file whose counts exceed its data, before starting a process.
+  if (exchange_format_for_path(path) == ExchangeFormat::Iges) io::check_iges_file_counts(path);
   const detail::ImportRequest request{fs::absolute(path)};
   const ScratchDir scratch;
   return detail::import_answer_from_json(exchange(request, path, "importing", options, scratch));

@@ -11,7 +11,8 @@
 // file's text in the body, as new entities, in one "import" step.
 // POST /api/documents/{name}/export {"labels", "format"} (json, dxf, step…, iges): the entities
 // written as a JSON, STEP or IGES file, its text in the reply (the document is
-// only read).
+// only read). Import and export run on the server's request workers (Runs::Worker): the exchange helper
+// can take seconds.
 #include "hula/server/documents.hpp"
 
 #include <stdlib.h>  // mkstemps, mkdtemp
@@ -237,99 +238,108 @@ void add_documents(Router& router, const Context& context) {
     out["trash"] = trash.filename().string();
     return json_response(200, out);
   });
-  router.add("POST", "/api/documents/{name}/import", [&docs, workspace = context.workspace](const Request& request) {
-    const Json body = request.json();
-    json::reject_unknown_members(body, json::JsonPath(), {"file", "filename", "content"});
-    const auto doc = docs.get(request.params.at(0));
-    const ImportFile file(workspace, body);
-    std::vector<oli::Label> labels;
-    Change outcome;
-    Json cad = Json::object();  // a CAD file's "skipped" and "warnings" (what the reader could not read)
-    if (file.points()) {
-      io::PointSet points;
-      try {
-        points = io::parse_points(file.text());
-      } catch (const Error& e) {
-        throw Error(e.code(), file.name() + ": " + e.message(), e.where());
-      }
-      outcome = doc->change([&](oli::Document& d) {
-        return d.transact("import",
-                          [&](oli::Edit& e) { labels = {oli::import_points(e, std::move(points), file.name())}; });
-      });
-    } else if (file.dxf()) {
-      // DXF SPLINE entities (io/dxf_file.hpp, dxflib): read here, no helper process.
-      const io::DxfReadReport report = io::parse_dxf(file.text(), file.name());
-      outcome = doc->change([&](oli::Document& d) {
-        return d.transact("import", [&](oli::Edit& e) { labels = oli::add_dxf_imported(e, report, file.name()); });
-      });
-      cad["skipped"] = report.skipped;
-      cad["warnings"] = report.warnings;
-    } else if (file.json()) {
-      const Json input = io::json::parse_json_text(file.text(), file.name());
-      outcome = doc->change([&](oli::Document& d) {
-        return d.transact("import", [&](oli::Edit& e) { labels = oli::import_json(e, input, file.name()); });
-      });
-    } else {
+  router.add(
+      "POST", "/api/documents/{name}/import",
+      [&docs, workspace = context.workspace](const Request& request) {
+        const Json body = request.json();
+        json::reject_unknown_members(body, json::JsonPath(), {"file", "filename", "content"});
+        const auto doc = docs.get(request.params.at(0));
+        const ImportFile file(workspace, body);
+        std::vector<oli::Label> labels;
+        Change outcome;
+        Json cad = Json::object();  // a CAD file's "skipped" and "warnings" (what the reader could not read)
+        if (file.points()) {
+          io::PointSet points;
+          try {
+            points = io::parse_points(file.text());
+          } catch (const Error& e) {
+            throw Error(e.code(), file.name() + ": " + e.message(), e.where());
+          }
+          outcome = doc->change([&](oli::Document& d) {
+            return d.transact("import",
+                              [&](oli::Edit& e) { labels = {oli::import_points(e, std::move(points), file.name())}; });
+          });
+        } else if (file.dxf()) {
+          // DXF SPLINE entities (io/dxf_file.hpp, dxflib): read here, no helper process.
+          const io::DxfReadReport report = io::parse_dxf(file.text(), file.name());
+          outcome = doc->change([&](oli::Document& d) {
+            return d.transact("import", [&](oli::Edit& e) { labels = oli::add_dxf_imported(e, report, file.name()); });
+          });
+          cad["skipped"] = report.skipped;
+          cad["warnings"] = report.warnings;
+        } else if (file.json()) {
+          const Json input = io::json::parse_json_text(file.text(), file.name());
+          outcome = doc->change([&](oli::Document& d) {
+            return d.transact("import", [&](oli::Edit& e) { labels = oli::import_json(e, input, file.name()); });
+          });
+        } else {
 #ifdef HULA_WITH_OCCT
-      // Read in the isolated helper process before taking the document: a crash or hang of the
-      // reader is an error naming the file, and the document is untouched.
-      const oli::ImportReport report = oli::import_curves(file.path());
-      outcome = doc->change([&](oli::Document& d) {
-        return d.transact("import", [&](oli::Edit& e) { labels = oli::add_imported(e, report, file.name()); });
-      });
-      cad["skipped"] = report.skipped;
-      cad["warnings"] = report.warnings;
+          // Read in the isolated helper process before taking the document: a crash or hang of the
+          // reader is an error naming the file, and the document is untouched.
+          const oli::ImportReport report = oli::import_curves(file.path());
+          outcome = doc->change([&](oli::Document& d) {
+            return d.transact("import", [&](oli::Edit& e) { labels = oli::add_imported(e, report, file.name()); });
+          });
+          cad["skipped"] = report.skipped;
+          cad["warnings"] = report.warnings;
 #else
-      throw Error(Errc::Unsupported, "importing '" + file.name() + "' needs Open CASCADE, and this hula was built without it",
-                  ErrorWhere{.field = "file"});
+          throw Error(Errc::Unsupported,
+                      "importing '" + file.name() + "' needs Open CASCADE, and this hula was built without it",
+                      ErrorWhere{.field = "file"});
 #endif
-    }
-    Json out = change_json(outcome);
-    Json list = Json::array();
-    for (const oli::Label l : labels) list.push_back(l.value);
-    out["labels"] = std::move(list);
-    for (auto& [key, value] : cad.items()) out[key] = std::move(value);
-    return json_response(201, out);
-  });
-  router.add("POST", "/api/documents/{name}/export", [&docs](const Request& request) {
-    const Json body = request.json();
-    json::reject_unknown_members(body, json::JsonPath(), {"labels", "format"});
-    const std::vector<oli::Label> labels = export_labels(body);
-    const std::string format =
-        json::get_string(json::require_member(body, json::JsonPath(), "format"), json::root_path("format"));
-    const auto doc = docs.get(request.params.at(0));
-    Json out = Json::object();
-    Json list = Json::array();
-    for (const oli::Label l : labels) list.push_back(l.value);
-    out["labels"] = std::move(list);
-    if (format == "json") {
-      out["format"] = format;
-      out["content"] = io::to_file_text(doc->read([&](const oli::Document& d) { return oli::export_json(d, labels); }));
-      return json_response(200, out);
-    }
-    if (format == "dxf") {  // dxflib, in this process: no helper, no temporary file
-      oli::DxfExport dxf = doc->read([&](const oli::Document& d) { return oli::dxf_export(d, labels); });
-      out["format"] = format;
-      out["content"] = std::move(dxf.text);
-      out["max_deviation"] = dxf.max_deviation;
-      return json_response(200, out);
-    }
+        }
+        Json out = change_json(outcome);
+        Json list = Json::array();
+        for (const oli::Label l : labels) list.push_back(l.value);
+        out["labels"] = std::move(list);
+        for (auto& [key, value] : cad.items()) out[key] = std::move(value);
+        return json_response(201, out);
+      },
+      Runs::Worker);
+  router.add(
+      "POST", "/api/documents/{name}/export",
+      [&docs](const Request& request) {
+        const Json body = request.json();
+        json::reject_unknown_members(body, json::JsonPath(), {"labels", "format"});
+        const std::vector<oli::Label> labels = export_labels(body);
+        const std::string format =
+            json::get_string(json::require_member(body, json::JsonPath(), "format"), json::root_path("format"));
+        const auto doc = docs.get(request.params.at(0));
+        Json out = Json::object();
+        Json list = Json::array();
+        for (const oli::Label l : labels) list.push_back(l.value);
+        out["labels"] = std::move(list);
+        if (format == "json") {
+          out["format"] = format;
+          out["content"] =
+              io::to_file_text(doc->read([&](const oli::Document& d) { return oli::export_json(d, labels); }));
+          return json_response(200, out);
+        }
+        if (format == "dxf") {  // dxflib, in this process: no helper, no temporary file
+          oli::DxfExport dxf = doc->read([&](const oli::Document& d) { return oli::dxf_export(d, labels); });
+          out["format"] = format;
+          out["content"] = std::move(dxf.text);
+          out["max_deviation"] = dxf.max_deviation;
+          return json_response(200, out);
+        }
 #ifdef HULA_WITH_OCCT
-    const oli::ExchangeFormat exchange = oli::exchange_format_from_name(format);
-    // The curves are read under the document's lock; the helper process runs after it is released.
-    const auto items = doc->read([&](const oli::Document& d) { return oli::export_items(d, labels); });
-    const ExportDirectory dir;
-    const auto report = oli::export_curves(
-        dir.path() / (exchange == oli::ExchangeFormat::Iges ? "out.igs" : "out.step"), items, exchange);
-    out["format"] = std::string(oli::exchange_format_name(report.format));
-    out["content"] = io::read_text_file(report.path);
-    out["max_deviation"] = report.max_deviation;
-    return json_response(200, out);
+        const oli::ExchangeFormat exchange = oli::exchange_format_from_name(format);
+        // The curves are read under the document's lock; the helper process runs after it is released.
+        const auto items = doc->read([&](const oli::Document& d) { return oli::export_items(d, labels); });
+        const ExportDirectory dir;
+        const auto report = oli::export_curves(
+            dir.path() / (exchange == oli::ExchangeFormat::Iges ? "out.igs" : "out.step"), items, exchange);
+        out["format"] = std::string(oli::exchange_format_name(report.format));
+        out["content"] = io::read_text_file(report.path);
+        out["max_deviation"] = report.max_deviation;
+        return json_response(200, out);
 #else
-    throw Error(Errc::Unsupported, "exporting " + format + " needs Open CASCADE, and this hula was built without it",
-                ErrorWhere{.field = "format"});
+        throw Error(Errc::Unsupported,
+                    "exporting " + format + " needs Open CASCADE, and this hula was built without it",
+                    ErrorWhere{.field = "format"});
 #endif
-  });
+      },
+      Runs::Worker);
   router.add("POST", "/api/documents/{name}/undo", [&docs](const Request& request) {
     const auto doc = docs.get(request.params.at(0));
     return change_response(doc->change([](oli::Document& d) { return d.undo(); }), 200);

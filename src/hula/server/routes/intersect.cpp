@@ -64,8 +64,9 @@ curve::Curve read_curve_member(const Json& body, const char* field) {
 }
 
 void add_intersect(Router& router, const Context&) {
-  router.add("POST", "/api/intersect", intersect);
-  router.add("POST", "/api/distance", distance);
+  // Their work grows with the curves sent (up to the body limit): on the request workers.
+  router.add("POST", "/api/intersect", intersect, Runs::Worker);
+  router.add("POST", "/api/distance", distance, Runs::Worker);
 }
 
 }  // namespace hula::server::routes
