@@ -24,6 +24,7 @@
 #include "hula/diffgeom/analysis.hpp"
 #include "hula/intrinsic/natural_equations.hpp"
 #include "hula/io/curve_analysis_json.hpp"
+#include "hula/io/curve_edits.hpp"
 #include "hula/io/intersection_json.hpp"
 #include "hula/io/json_curve.hpp"
 #include "hula/io/points_file.hpp"
@@ -558,6 +559,29 @@ void register_geometry(py::module_& m) {
       "start/end: \"natural\", \"bessel\", \"not-a-knot\", \"occt\", or a tangent vector dC/dt (t in [0, 1]).\n"
       "parameterisation: \"chord\", \"uniform\", \"centripetal\" or \"foley\".\n"
       "parameters: explicit data parameters (increasing, from 0 to 1) instead of the parameterisation.");
+
+  m.def(
+      "approximate",
+      [](py::handle points, std::optional<double> tolerance, std::optional<std::size_t> control_points, int degree,
+         const std::string& parameterisation) {
+        const Points p = as_points(points, "points", 2);
+        const nurbs::Parameterisation rule = io::parameterisation_from_name(parameterisation, "parameterisation");
+        const io::ApproximationAnswer a = [&] {
+          const py::gil_scoped_release release;
+          return io::approximation_answer(
+              io::PointSet{p.points, p.dimension},
+              {.tolerance = tolerance, .control_points = control_points, .degree = degree, .parameterisation = rule});
+        }();
+        return py::make_tuple(a.curve, to_python(a.report));
+      },
+      py::arg("points"), py::kw_only(), py::arg("tolerance") = py::none(), py::arg("control_points") = py::none(),
+      py::arg("degree") = 3, py::arg("parameterisation") = "chord",
+      "A B-spline approximating (n, 2) or (n, 3) points, as `hula approximate` makes it: with `tolerance`\n"
+      "(model units) the compact fair curve with the fewest control points through the first and last point\n"
+      "keeping every point within it; with `control_points` the plain least-squares fit (The NURBS Book 9.4.1).\n"
+      "Give exactly one. Returns (curve, report), report = {degree, control_points, max_deviation,\n"
+      "max_deviation_index, fits} (+ tolerance, fit_max_deviation, smoothing with a tolerance).\n"
+      "parameterisation: \"chord\", \"uniform\", \"centripetal\" or \"foley\".");
 
   m.def("analyse", &analyse, py::arg("curve"), py::arg("samples") = 100, py::kw_only(), py::arg("at") = py::none(),
         py::arg("by") = "parameter", py::arg("arc_lengths") = false, py::arg("bishop") = false,
