@@ -7,6 +7,7 @@ Geometry:
                       split, arc length, closest point, JSON load/save.
     interpolate       cubic spline through points (thesis 5.5, 7.1).
     approximate       B-spline within a tolerance of points, or least squares with n control points.
+    clothoid_g1, clothoid_g2   clothoids between end points with tangent angles (and curvatures).
     Law               law expressions: parse, evaluate, derive, integrate, roots.
     analyse           κ, τ, T, N, B, speed, fins along a curve (thesis ch. 6).
     reconstruct       a curve from its natural equations κ(s), τ(s) (thesis 8.2.2).
@@ -48,6 +49,8 @@ NurbsFit = _core.NurbsFit
 Law = _core.Law
 interpolate = _core.interpolate
 approximate = _core.approximate
+clothoid_g1 = _core.clothoid_g1
+clothoid_g2 = _core.clothoid_g2
 read_points = _core.read_points
 analyse = _core.analyse
 reconstruct = _core.reconstruct
@@ -62,7 +65,8 @@ read = _core.read
 write = _core.write
 
 __all__ = [
-    "NurbsCurve", "ClosestPoint", "IntrinsicCurve", "NurbsFit", "Law", "interpolate", "approximate", "read_points",
+    "NurbsCurve", "ClosestPoint", "IntrinsicCurve", "NurbsFit", "Law", "interpolate", "approximate", "clothoid_g1",
+    "clothoid_g2", "read_points",
     "analyse",
     "reconstruct", "intersect", "distance", "offset", "helical_offset", "orthotomic", "polar_map", "hermite_frenet",
     "read", "write",

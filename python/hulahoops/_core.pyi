@@ -249,6 +249,19 @@ def approximate(points: Any, *, tolerance: Optional[float] = ..., control_points
 def builtin_problem(name: str, dimension: int = ..., objectives: int = ...) -> dict:
     ...
 
+def clothoid_g1(p0: Any, theta0: float, p1: Any, theta1: float) -> dict:
+    """The clothoid from p0 with tangent angle theta0 to p1 with theta1 (radians from +x, counter-clockwise),
+    turning by less than 2 pi (Bertolazzi-Frego G1 Hermite), as `hula clothoid` gives it: a dict with the
+    segment's start, theta0, kappa0, dkappa (dkappa/ds), length and end values (docs/formats.md "Clothoid
+    result"), and the iterations used. Points (x, y) or (x, y, z), z ignored.
+    """
+
+def clothoid_g2(p0: Any, theta0: float, kappa0: float, p1: Any, theta1: float, kappa1: float) -> dict:
+    """Three clothoid arcs joined with G2 continuity from (p0, theta0, kappa0) to (p1, theta1, kappa1)
+    (Bertolazzi-Frego 2018), as `hula clothoid` gives them: {"segments": [3 segment dicts as clothoid_g1's],
+    "length", "iterations"}. Curvatures in 1/model units (> 0 turns left).
+    """
+
 def distance(a: NurbsCurve, b: NurbsCurve, *, tolerance: Optional[float] = ...) -> object:
     """The smallest distance between curves a and b: {'distance', 's', 't', 'point_a', 'point_b'}."""
 

@@ -102,3 +102,27 @@ def test_approximate_collinear_points_is_the_line():
     with pytest.raises(hh.InvalidArgumentError) as e:
         hh.approximate(np.column_stack([x, x]))
     assert e.value.where["field"] == "tolerance"
+
+
+def test_clothoid_g1_closed_forms():
+    # checks G1 Hermite data of a quarter of the unit circle gives that arc (kappa 1, dkappa 0, length pi/2)
+    # and collinear data the segment (kappa 0, length 2)
+    arc = hh.clothoid_g1([0, 0], 0.0, [1, 1], np.pi / 2)
+    assert arc["kappa0"] == pytest.approx(1, abs=1e-12) and arc["dkappa"] == pytest.approx(0, abs=1e-12)
+    assert arc["length"] == pytest.approx(np.pi / 2, rel=1e-13)
+    line = hh.clothoid_g1([0, 0], 0.0, [2, 0], 0.0)
+    assert line["kappa0"] == 0 and line["dkappa"] == 0 and line["length"] == pytest.approx(2, rel=1e-15)
+
+
+def test_clothoid_g2_reproduces_a_circle_and_is_g2():
+    # checks G2 data taken from a circle of radius 2 (kappa 0.5 at both ends, a quarter turn) gives three
+    # arcs of curvature 0.5 summing to the quarter circle's length pi, joined with equal angle and curvature
+    r = hh.clothoid_g2([2, 0], np.pi / 2, 0.5, [0, 2], np.pi, 0.5)
+    segs = r["segments"]
+    assert len(segs) == 3
+    assert r["length"] == pytest.approx(np.pi, rel=1e-9)
+    for s in segs:
+        assert s["kappa0"] == pytest.approx(0.5, abs=1e-9) and s["dkappa"] == pytest.approx(0, abs=1e-9)
+    for a, b in zip(segs, segs[1:]):
+        assert a["theta1"] == pytest.approx(b["theta0"], abs=1e-12)
+        assert a["kappa1"] == pytest.approx(b["kappa0"], abs=1e-12)
