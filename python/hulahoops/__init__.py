@@ -22,7 +22,7 @@ Exchange:
 Optimisation:
     optimise, Problem, from_pygmo   Flexo GAs and NSGA-II with NumPy objectives.
 Studies:
-    fair_knots, match_curvature     the thesis's curve studies from study dicts.
+    fair_knots, match_curvature, fit   the thesis's curve studies from study dicts.
 Errors:
     Error and its subclasses (errors.py), with code, message and where.
 
@@ -39,7 +39,7 @@ from .errors import (CoincidentPointsError, Error, InvalidArgumentError, Invalid
 from .errors import DocumentCorruptError, DocumentLockedError, HelperFailureError, StorageFullError, UnsupportedError
 from .document import Document
 from .optimise import OptimiseResult, Problem, builtin_problem, evaluate_builtin, from_pygmo, optimise
-from .studies import StudyResult, fair_knots, match_curvature
+from .studies import StudyResult, fair_knots, fit, match_curvature
 
 __version__: str = _core.__version__
 NurbsCurve = _core.NurbsCurve
@@ -71,7 +71,7 @@ __all__ = [
     "reconstruct", "intersect", "distance", "offset", "helical_offset", "orthotomic", "polar_map", "hermite_frenet",
     "read", "write",
     "optimise", "Problem", "OptimiseResult", "from_pygmo", "builtin_problem", "evaluate_builtin",
-    "fair_knots", "match_curvature", "StudyResult", "Document",
+    "fair_knots", "fit", "match_curvature", "StudyResult", "Document",
     "Error", "InvalidArgumentError", "NonFiniteInputError", "TooFewPointsError", "CoincidentPointsError",
     "InvalidKnotsError", "InvalidDegreeError", "InvalidWeightError", "OutOfDomainError", "InvalidOptionError",
     "ParseError", "IoError", "NumericalFailureError", "ScaleOutOfRangeError", "UnsupportedError",

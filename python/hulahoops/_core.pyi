@@ -271,6 +271,11 @@ def evaluate_builtin(name: str, dimension: int, objectives: int, points: Any) ->
 def fair_knots(setup: Any, progress: object = ...) -> dict:
     ...
 
+def fit(setup: Any, base: str) -> dict:
+    """The result of `hula fit` for a "fit" study dict (docs/formats.md): scanned points to a class-A curve
+    (thesis ch. 3), with the faired NurbsCurve under "curve".
+    """
+
 def helical_offset(curve: object, distance: str, *, twist: str = ..., frame: str = ..., tolerance: Optional[float] = ...) -> object:
     """Helical offset C + d (cos θ U + sin θ V) in the Frenet or Bishop frame, d and θ law texts of the curve parameter: {'frame', 'distance', 'twist', 'tolerance', 'exact', 'deviation', 'plane_normal'?, 'curve'}."""
 

@@ -107,6 +107,19 @@ def fair_knots(setup: Any, *, callback: Callable[[int, float, int], Any] | None 
     return raise_if_interrupted(interrupt, StudyResult(raw))
 
 
+def fit(setup: Any, *, base: str | None = None) -> StudyResult:
+    """Scanned points to a class-A curve (thesis ch. 3; ``hula fit``): a "fit" study dict or file, e.g.
+    ``{"format": "hula-study", "version": 1, "study": "fit", "points": [[x, y], ...], "class": "A"}``.
+
+    Returns the fields ``hula fit`` prints (``tolerance``, ``strays``, ``before`` and ``after`` with their
+    deviations, control points, inflections, curvature extrema and energies ...) and ``curve``, the
+    faired :class:`~hulahoops.NurbsCurve` (the curve ``hula fit -o`` writes). ``base``: where a points file
+    named in the setup is read from (default: the study file's directory, or the working directory).
+    """
+    data, where = _load(setup)
+    return StudyResult(_core.fit(data, base or where))
+
+
 def match_curvature(setup: Any, *, method: str | None = None, base: str | None = None,
                     callback: Callable[[int, float, int], Any] | None = None, verbose: bool = False) -> StudyResult:
     """Curvature-profile matching (thesis 8.2.1): moves the free data points

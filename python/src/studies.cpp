@@ -22,6 +22,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "hula/core/error.hpp"
+#include "hula/io/fit_study_file.hpp"
 #include "hula/io/json_text.hpp"
 #include "hula/io/path_resolver.hpp"
 #include "hula/io/study_file.hpp"
@@ -112,10 +113,27 @@ py::dict match_curvature(const py::handle& setup, const std::string& base, std::
   return with_interrupt(to_python(ran.result), job);
 }
 
+// The result `hula fit` prints for a "fit" study (studies::fit_scan, io::fit_result_to_json), with the faired
+// curve as a NurbsCurve under "curve". Points files named in the setup resolve against `base`.
+py::dict fit(const py::handle& setup, const std::string& base) {
+  const io::FitStudy study =
+      io::fit_study_from_json(io::study_from_json(setup_value(setup), "fit"), io::relative_to(base));
+  const studies::ScanFitResult r = [&] {
+    const py::gil_scoped_release release;
+    return studies::fit_scan(study.points, study.options);
+  }();
+  py::dict out = to_python(io::fit_result_to_json(r, study.options));
+  out["curve"] = py::cast(r.faired);
+  return out;
+}
+
 }  // namespace
 
 void register_studies(py::module_& m) {
   m.def("fair_knots", &fair_knots, py::arg("setup"), py::arg("progress") = py::none());
+  m.def("fit", &fit, py::arg("setup"), py::arg("base"),
+        "The result of `hula fit` for a \"fit\" study dict (docs/formats.md): scanned points to a class-A curve\n"
+        "(thesis ch. 3), with the faired NurbsCurve under \"curve\".");
   m.def("match_curvature", &match_curvature, py::arg("setup"), py::arg("base"), py::arg("method") = py::none(),
         py::arg("progress") = py::none());
 }

@@ -126,3 +126,21 @@ def test_clothoid_g2_reproduces_a_circle_and_is_g2():
     for a, b in zip(segs, segs[1:]):
         assert a["theta1"] == pytest.approx(b["theta0"], abs=1e-12)
         assert a["kappa1"] == pytest.approx(b["kappa0"], abs=1e-12)
+
+
+def test_fit_is_the_cli_fit(tmp_path):
+    # checks fit on a noisy sine (seeded) gives the curve and figures `hula fit --class A` gives, bit for bit,
+    # with every kept point within the class-A tolerance 0.3
+    rng = np.random.default_rng(5)
+    x = np.linspace(0, 100, 80)
+    pts = np.column_stack([x, 10 * np.sin(x / 15) + rng.normal(0, 0.05, x.size)])
+    csv = tmp_path / "wave.csv"
+    np.savetxt(csv, pts, delimiter=",", fmt="%.17g")  # 17 significant digits: the same doubles
+    cli = hula("fit", "--points", csv, "--class", "A", "-o", tmp_path / "out.json")
+    r = hh.fit({"format": "hula-study", "version": 1, "study": "fit", "points": pts.tolist(), "class": "A"})
+    written = json.loads((tmp_path / "out.json").read_text())
+    assert r.curve.control_points.tolist() == written["control_points"]
+    assert r.curve.knots.tolist() == written["knots"]
+    for key in ("max_deviation", "mean_deviation", "control_points", "inflections", "bending"):
+        assert r.after[key] == cli["after"][key], key
+    assert r.tolerance == 0.3 and r.after.max_deviation <= 0.3
