@@ -18,12 +18,21 @@ A problem is one of
 The C++ loops run with the GIL released; the objective is called once per
 generation with the whole batch. An exception raised by the objective stops
 the run and propagates unchanged (same type, same traceback).
+
+Ctrl-C (SIGINT, a notebook's interrupt) stops a run between generations:
+:func:`optimise` raises ``KeyboardInterrupt`` whose ``result`` attribute is
+the :class:`OptimiseResult` of the best so far (termination ``"Cancelled"``).
+The run goes on a worker thread while the calling thread checks Python's
+signals every 20 ms, so the interrupt arrives as soon as the generation under
+way ends (with a Python objective: once its call returns).
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
 from typing import Any, Callable
+
+import sys
 
 import numpy as np
 
@@ -125,6 +134,11 @@ class OptimiseResult:
         front_x, front_f: the final non-dominated set (NSGA-II), shapes
             ``(n, d)`` and ``(n, objectives)``; None for the GAs.
         population_x, population_f: NSGA-II's final population.
+        hypervolume: the hypervolume of the front's feasible members against
+            ``reference`` (several objectives: built-in problems 1.1 per
+            objective, as ``hula optimise`` reports it; a Problem's with the
+            ``reference`` option); None otherwise.
+        reference: that reference point, shape ``(objectives,)``.
         best_per_generation, mean_per_generation: the convergence graph, one
             value per generation (generation 0 = the initial population);
             None for island runs.
@@ -151,21 +165,57 @@ class OptimiseResult:
     front_f: np.ndarray | None = None
     population_x: np.ndarray | None = None
     population_f: np.ndarray | None = None
+    hypervolume: float | None = None
+    reference: np.ndarray | None = None
     extra: dict[str, Any] = field(default_factory=dict)
 
 
+def progress_function(callback: Callable[..., Any] | None, verbose: bool,
+                      label: str) -> Callable[[int, Any, int], bool] | None:
+    """The per-generation function given to the C++ loops: prints the progress line of ``verbose`` to
+    stderr (``label: generation G, evaluations E, best B``), then calls ``callback(generation, best,
+    evaluations)``; a true return from the callback stops the run. None when neither is asked for."""
+    if callback is None and not verbose:
+        return None
+
+    def progress(generation: int, best: Any, evaluations: int) -> bool:
+        if verbose:
+            b = np.array2string(np.asarray(best), precision=6) if np.ndim(best) else f"{best:.6g}"
+            print(f"{label}: generation {generation}, evaluations {evaluations}, best {b}", file=sys.stderr,
+                  flush=True)
+        return bool(callback(generation, best, evaluations)) if callback is not None else False
+
+    return progress
+
+
+def raise_if_interrupted(interrupt: BaseException | None, result: Any) -> Any:
+    """Raises the signal handler's exception (KeyboardInterrupt) a run was stopped by, with ``result``
+    (the best so far) as its ``result`` attribute; otherwise returns ``result``."""
+    if interrupt is not None:
+        interrupt.result = result
+        raise interrupt
+    return result
+
+
 def optimise(problem: Any, algorithm: str = "ga-real", *, dimension: int = 0, objectives: int = 0,
-             precision: Any = None, **options: Any) -> OptimiseResult:
+             precision: Any = None, callback: Callable[[int, Any, int], Any] | None = None, verbose: bool = False,
+             **options: Any) -> OptimiseResult:
     """Minimises a problem with a Flexo algorithm.
 
     Args:
         problem: a :class:`Problem`, a pygmo UDP, or a built-in problem name.
         algorithm: ``"ga-real"`` (SBX + polynomial mutation), ``"ga-binary"``
-            (the thesis's binary GA: roulette, power boosting), ``"nsga2"`` or
+            (the thesis's binary GA: roulette, power boosting), ``"nsga2"``,
             ``"nelder-mead"`` (the deterministic downhill simplex from
             ``start``, default the centre of the bounds; one objective, no
-            constraints; points outside the bounds rank worst). All run through
-            the same C++ entry as ``hula optimise`` (``optim::solve``).
+            constraints; points outside the bounds rank worst) or one of
+            pagmo2's through the adapter, ``"pagmo-<name>"`` with name
+            ``cmaes``, ``de``, ``sade``, ``pso``, ``sga``, ``moead`` or
+            ``nsga2`` (options ``population``, ``generations``, ``seed`` only,
+            read as ``hula optimise --algorithm pagmo-<name>`` reads them;
+            pagmo runs its own loop, which Ctrl-C interrupts only at its end).
+            All run through the same C++ entry as ``hula optimise``
+            (``optim::solve``).
         dimension, objectives: for built-in problems (0 = the problem's default).
         precision: binary coding resolution in the variables' units (one number
             or one per variable); required by ``"ga-binary"``.
@@ -185,12 +235,26 @@ def optimise(problem: Any, algorithm: str = "ga-real", *, dimension: int = 0, ob
             ``"nelder-mead"`` takes ``start``, ``initial_step`` (0.1),
             ``x_tolerance`` (1e-10), ``f_tolerance`` (1e-14),
             ``max_evaluations`` (20000), ``restarts`` (3) and ``wall_time``.
+            ``reference``: the hypervolume's reference point for a Problem with
+            several objectives (one value per objective).
             Unknown options raise :class:`~hulahoops.InvalidOptionError` naming them.
+        callback: ``callback(generation, best, evaluations)`` after every generation (0 = the initial
+            population): ``best`` is the smallest feasible objective (a float, NaN if none) or, for several
+            objectives, an array of each objective's smallest feasible value; ``evaluations`` counts so
+            far. Returning True stops the run with its best so far (termination ``"Cancelled"``, no
+            exception); an exception it raises ends the run and propagates. Not with islands,
+            ``"nelder-mead"`` or pagmo's algorithms (InvalidOptionError).
+        verbose: print one progress line per generation to ``sys.stderr``
+            (``optimise: generation 12, evaluations 1300, best 0.0123``).
 
     The same seed gives the same result on every run and thread count.
+
+    Raises:
+        KeyboardInterrupt: on Ctrl-C, with ``.result`` the :class:`OptimiseResult` of the best so far.
     """
+    progress = progress_function(callback, verbose, "optimise")
     if isinstance(problem, str):
-        raw = _core.optimise_builtin(problem, dimension, objectives, precision, algorithm, options)
+        raw = _core.optimise_builtin(problem, dimension, objectives, precision, algorithm, options, progress)
     else:
         if not isinstance(problem, Problem):
             if not (hasattr(problem, "fitness") and hasattr(problem, "get_bounds")):
@@ -202,9 +266,10 @@ def optimise(problem: Any, algorithm: str = "ga-real", *, dimension: int = 0, ob
             problem = from_pygmo(problem)
         raw = _core.optimise_callable(problem.objective, problem.lower, problem.upper, problem.objectives,
                                       problem.inequality, problem.equality, precision, problem.name, algorithm,
-                                      options)
+                                      options, progress)
+    interrupt = raw.pop("interrupt", None)
     known = {k: raw.pop(k) for k in list(raw) if k in OptimiseResult.__dataclass_fields__}
-    return OptimiseResult(**known, extra=raw)
+    return raise_if_interrupted(interrupt, OptimiseResult(**known, extra=raw))
 
 
 def builtin_problem(name: str, dimension: int = 0, objectives: int = 0) -> dict[str, Any]:

@@ -7,17 +7,25 @@ A setup is the dict a study file holds (docs/formats.md "Study files"), e.g.
 study file works too. The result is a :class:`StudyResult`: attribute access
 to the same fields ``hula fair-knots`` / ``hula match-curvature`` print, with
 numeric lists as NumPy arrays and curves as :class:`~hulahoops.NurbsCurve`.
+
+Both studies take ``callback(generation, best, evaluations)`` (``best`` the
+generation's smallest energy or distance, ``evaluations`` counted across the
+study's optimiser runs; returning True stops the study with its best so far)
+and ``verbose`` (one progress line per generation on ``sys.stderr``). Ctrl-C
+stops a study between generations and raises ``KeyboardInterrupt`` whose
+``result`` attribute is the :class:`StudyResult` of the best so far.
 """
 
 from __future__ import annotations
 
 import json
 import os
-from typing import Any
+from typing import Any, Callable
 
 import numpy as np
 
 from . import _core
+from .optimise import progress_function, raise_if_interrupted
 
 
 class StudyResult:
@@ -74,7 +82,8 @@ def _load(setup: Any) -> tuple[Any, str]:
     return setup, os.getcwd()
 
 
-def fair_knots(setup: Any) -> StudyResult:
+def fair_knots(setup: Any, *, callback: Callable[[int, float, int], Any] | None = None,
+               verbose: bool = False) -> StudyResult:
     """Knot-vector fairing (thesis 7.2-7.4): the parameters of the data points
     minimising the fairness energy of the interpolating cubic.
 
@@ -86,12 +95,33 @@ def fair_knots(setup: Any) -> StudyResult:
     ``curve``, and for optimisers ``improvement`` (1 - E/E_chord),
     ``evaluations``, ``convergence``; ``map`` with ``k1``, ``k2`` and the
     ``energy`` grid (NaN outside k1 < k2) when the setup asks for one.
+
+    ``callback`` and ``verbose`` as the module says (each optimiser starts again at generation 0).
+
+    Raises:
+        KeyboardInterrupt: on Ctrl-C, with ``.result`` the StudyResult of the best so far.
     """
     data, _ = _load(setup)
-    return StudyResult(_core.fair_knots(data))
+    raw = _core.fair_knots(data, progress_function(callback, verbose, "fair-knots"))
+    interrupt = raw.pop("interrupt", None)
+    return raise_if_interrupted(interrupt, StudyResult(raw))
 
 
-def match_curvature(setup: Any, *, method: str | None = None, base: str | None = None) -> StudyResult:
+def fit(setup: Any, *, base: str | None = None) -> StudyResult:
+    """Scanned points to a class-A curve (thesis ch. 3; ``hula fit``): a "fit" study dict or file, e.g.
+    ``{"format": "hula-study", "version": 1, "study": "fit", "points": [[x, y], ...], "class": "A"}``.
+
+    Returns the fields ``hula fit`` prints (``tolerance``, ``strays``, ``before`` and ``after`` with their
+    deviations, control points, inflections, curvature extrema and energies ...) and ``curve``, the
+    faired :class:`~hulahoops.NurbsCurve` (the curve ``hula fit -o`` writes). ``base``: where a points file
+    named in the setup is read from (default: the study file's directory, or the working directory).
+    """
+    data, where = _load(setup)
+    return StudyResult(_core.fit(data, base or where))
+
+
+def match_curvature(setup: Any, *, method: str | None = None, base: str | None = None,
+                    callback: Callable[[int, float, int], Any] | None = None, verbose: bool = False) -> StudyResult:
     """Curvature-profile matching (thesis 8.2.1): moves the free data points
     so the interpolating curve's curvature follows a target profile.
 
@@ -100,9 +130,15 @@ def match_curvature(setup: Any, *, method: str | None = None, base: str | None =
         method: ``"ga"``, ``"hybrid"`` or ``"direct"``, overriding the setup's.
         base: directory relative file names in the setup resolve against
             (default: the study file's directory, or the working directory).
+        callback, verbose: as the module says (re-centred rounds start again at generation 0).
 
     Returns the fields of ``hula match-curvature``'s JSON (``best``,
     ``distances``, ``curve`` ...), numeric lists as arrays.
+
+    Raises:
+        KeyboardInterrupt: on Ctrl-C, with ``.result`` the StudyResult of the best so far.
     """
     data, where = _load(setup)
-    return StudyResult(_core.match_curvature(data, base or where, method))
+    raw = _core.match_curvature(data, base or where, method, progress_function(callback, verbose, "match-curvature"))
+    interrupt = raw.pop("interrupt", None)
+    return raise_if_interrupted(interrupt, StudyResult(raw))

@@ -3,11 +3,17 @@
 // of its code (InvalidArgumentError, ParseError, ...), all subclasses of
 // hulahoops.Error, carrying `code` (the Errc name), `message` and `where` (a
 // dict with the set fields of hula::ErrorWhere), the same triple the CLI and
-// the HTTP API report (docs/errors.md).
+// the HTTP API report (docs/errors.md). The message and the field are given
+// their Python spelling at this boundary: the C++ enumerators a message
+// names become the keyword argument that asks for them (Domain::Extrapolate:
+// domain="extrapolate") and a command-line option that names a file becomes
+// the argument's name (--output: path).
 #include <pybind11/pybind11.h>
 
 #include <exception>
 #include <string>
+#include <string_view>
+#include <utility>
 
 #include "bindings.hpp"
 #include "hula/core/error.hpp"
@@ -28,6 +34,36 @@ py::dict where_to_dict(const ErrorWhere& w) {
   return d;
 }
 
+// C++ spellings engine messages use, and the Python spelling of the same choice.
+constexpr std::pair<std::string_view, std::string_view> kSpellings[] = {
+    {"Domain::Extrapolate", "domain=\"extrapolate\""},
+    {"Domain::Clamp", "domain=\"clamp\""},
+    {"Domain::Strict", "domain=\"strict\""},
+    {"Side::Left", "side=\"left\""},
+    {"Side::Right", "side=\"right\""},
+    {"an EndCondition::Kind value", "an end condition"},
+};
+
+// Command-line options (ErrorWhere.field holds them without their dashes) that name a Python argument of
+// another name.
+constexpr std::pair<std::string_view, std::string_view> kArguments[] = {{"output", "path"}, {"input", "path"}};
+
+void replace_all(std::string& text, std::string_view from, std::string_view to) {
+  for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+    text.replace(at, from.size(), to);
+}
+
+// An engine message and field in their Python spelling: "--output 'x': ..." with field "output" becomes
+// "path 'x': ..." with field "path".
+std::pair<std::string, std::string> python_spelling(std::string message, std::string field) {
+  for (const auto& [cpp, python] : kSpellings) replace_all(message, cpp, python);
+  for (const auto& [option, argument] : kArguments) {
+    replace_all(message, "--" + std::string(option), argument);
+    if (field == option) field = argument;
+  }
+  return {std::move(message), std::move(field)};
+}
+
 }  // namespace
 
 void register_errors(py::module_& m) {
@@ -38,7 +74,10 @@ void register_errors(py::module_& m) {
     } catch (const Error& e) {
       const std::string code(errc_name(e.code()));
       const py::object cls = py::module_::import("hulahoops.errors").attr("error_class")(code);
-      const py::object instance = cls(code, e.message(), where_to_dict(e.where()));
+      const auto [message, field] = python_spelling(e.message(), e.where().field);
+      py::dict where = where_to_dict(e.where());
+      if (!field.empty()) where["field"] = field;
+      const py::object instance = cls(code, message, where);
       PyErr_SetObject(cls.ptr(), instance.ptr());
     }
   });

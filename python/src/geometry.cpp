@@ -22,7 +22,9 @@
 #include "bindings.hpp"
 #include "hula/core/error.hpp"
 #include "hula/diffgeom/analysis.hpp"
+#include "hula/intrinsic/clothoid.hpp"
 #include "hula/intrinsic/natural_equations.hpp"
+#include "hula/io/clothoid_json.hpp"
 #include "hula/io/curve_analysis_json.hpp"
 #include "hula/io/curve_edits.hpp"
 #include "hula/io/intersection_json.hpp"
@@ -576,6 +578,59 @@ void register_geometry(py::module_& m) {
       "start/end: \"natural\", \"bessel\", \"not-a-knot\", \"occt\", or a tangent vector dC/dt (t in [0, 1]).\n"
       "parameterisation: \"chord\", \"uniform\", \"centripetal\" or \"foley\".\n"
       "parameters: explicit data parameters (increasing, from 0 to 1) instead of the parameterisation.");
+
+  m.def(
+      "approximate",
+      [](py::handle points, std::optional<double> tolerance, std::optional<std::size_t> control_points, int degree,
+         const std::string& parameterisation) {
+        const Points p = as_points(points, "points", 2);
+        const nurbs::Parameterisation rule = io::parameterisation_from_name(parameterisation, "parameterisation");
+        const io::ApproximationAnswer a = [&] {
+          const py::gil_scoped_release release;
+          return io::approximation_answer(
+              io::PointSet{p.points, p.dimension},
+              {.tolerance = tolerance, .control_points = control_points, .degree = degree, .parameterisation = rule});
+        }();
+        return py::make_tuple(a.curve, to_python(a.report));
+      },
+      py::arg("points"), py::kw_only(), py::arg("tolerance") = py::none(), py::arg("control_points") = py::none(),
+      py::arg("degree") = 3, py::arg("parameterisation") = "chord",
+      "A B-spline approximating (n, 2) or (n, 3) points, as `hula approximate` makes it: with `tolerance`\n"
+      "(model units) the compact fair curve with the fewest control points through the first and last point\n"
+      "keeping every point within it; with `control_points` the plain least-squares fit (The NURBS Book 9.4.1).\n"
+      "Give exactly one. Returns (curve, report), report = {degree, control_points, max_deviation,\n"
+      "max_deviation_index, fits} (+ tolerance, fit_max_deviation, smoothing with a tolerance).\n"
+      "parameterisation: \"chord\", \"uniform\", \"centripetal\" or \"foley\".");
+
+  m.def(
+      "clothoid_g1",
+      [](py::handle p0, double theta0, py::handle p1, double theta1) {
+        const Vec3 a = as_point(p0, "p0");
+        const Vec3 b = as_point(p1, "p1");
+        const intrinsic::ClothoidG1Result r = intrinsic::fit_clothoid_g1(a, theta0, b, theta1);
+        py::dict d = to_python(io::clothoid_segment_to_json(r.segment));
+        d["iterations"] = r.iterations;
+        return d;
+      },
+      py::arg("p0"), py::arg("theta0"), py::arg("p1"), py::arg("theta1"),
+      "The clothoid from p0 with tangent angle theta0 to p1 with theta1 (radians from +x, counter-clockwise),\n"
+      "turning by less than 2 pi (Bertolazzi-Frego G1 Hermite), as `hula clothoid` gives it: a dict with the\n"
+      "segment's start, theta0, kappa0, dkappa (dkappa/ds), length and end values (docs/formats.md \"Clothoid\n"
+      "result\"), and the iterations used. Points (x, y) or (x, y, z), z ignored.");
+  m.def(
+      "clothoid_g2",
+      [](py::handle p0, double theta0, double kappa0, py::handle p1, double theta1, double kappa1) {
+        const Vec3 a = as_point(p0, "p0");
+        const Vec3 b = as_point(p1, "p1");
+        const intrinsic::ClothoidG2Result r = intrinsic::fit_clothoid_g2(a, theta0, kappa0, b, theta1, kappa1);
+        py::dict d = to_python(io::clothoid_spline_to_json(r.segments));
+        d["iterations"] = r.iterations;
+        return d;
+      },
+      py::arg("p0"), py::arg("theta0"), py::arg("kappa0"), py::arg("p1"), py::arg("theta1"), py::arg("kappa1"),
+      "Three clothoid arcs joined with G2 continuity from (p0, theta0, kappa0) to (p1, theta1, kappa1)\n"
+      "(Bertolazzi-Frego 2018), as `hula clothoid` gives them: {\"segments\": [3 segment dicts as clothoid_g1's],\n"
+      "\"length\", \"iterations\"}. Curvatures in 1/model units (> 0 turns left).");
 
   m.def("analyse", &analyse, py::arg("curve"), py::arg("samples") = 100, py::kw_only(), py::arg("at") = py::none(),
         py::arg("by") = "parameter", py::arg("arc_lengths") = false, py::arg("bishop") = false,

@@ -15,4 +15,5 @@ PYBIND11_MODULE(_core, m) {
   hula::python::register_document(m);
   hula::python::register_intersect(m);
   hula::python::register_offset(m);
+  hula::python::register_exchange(m);
 }

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <set>
 #include <string>
@@ -20,10 +21,13 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "hula/core/error.hpp"
+#include "hula/io/optimise_request.hpp"
 #include "hula/io/run_report_json.hpp"
+#include "hula/optim/pareto.hpp"
 #include "hula/optim/run_log.hpp"
 #include "hula/optim/solve.hpp"
 #include "hula/optim/test_problems.hpp"
+#include "interrupt.hpp"
 
 namespace hula::python {
 
@@ -145,8 +149,8 @@ optim::SolverOptions solver_options(const std::string& algorithm, Options& o, co
   }
   throw Error(Errc::InvalidArgument,
               "algorithm = \"" + algorithm +
-                  "\" is not an algorithm the binding runs (expected \"ga-real\", \"ga-binary\", \"nsga2\" or "
-                  "\"nelder-mead\")",
+                  "\" is not an algorithm the binding runs (expected \"ga-real\", \"ga-binary\", \"nsga2\", "
+                  "\"nelder-mead\" or \"pagmo-<name>\")",
               {.field = "algorithm"});
 }
 
@@ -169,36 +173,83 @@ py::object report_object(const optim::RunReport& r, const optim::Problem& proble
       io::run_report_to_json(r, {.seed = seed, .threads = threads, .algorithm = algorithm, .problem = problem.name}));
 }
 
-py::dict run(const optim::Problem& problem, const std::string& algorithm, const py::dict& options) {
+// A generation's best: the smallest feasible objective (one objective, NaN if none), else each objective's
+// smallest value among the feasible, successful individuals (NaN where none).
+py::object generation_best(const optim::GenerationLog& g) {
+  if (g.objectives == 1) return py::float_(optim::statistics(g).best);
+  std::vector<double> best(g.objectives, std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t i = 0; i < g.size(); ++i) {
+    if (g.failed[i] != 0 || !(g.violation[i] == 0.0)) continue;
+    for (std::size_t j = 0; j < g.objectives; ++j) {
+      const double v = g.objective_values[i * g.objectives + j];
+      if (std::isfinite(v) && !(v >= best[j])) best[j] = v;
+    }
+  }
+  return to_array(best);
+}
+
+py::dict run(const optim::Problem& problem, const std::string& algorithm, const py::dict& options,
+             const py::object& progress, std::optional<std::vector<double>> reference) {
   Options o(options);
+  if (const auto given = o.get<std::vector<double>>("reference")) {
+    if (given->size() != problem.objectives)
+      throw Error(Errc::InvalidOption,
+                  "reference has " + std::to_string(given->size()) + " values for " +
+                      std::to_string(problem.objectives) + " objectives",
+                  {.field = "reference"});
+    reference = given;
+  }
+  Interruptible job;
   optim::SolveOptions solve;
   std::uint64_t seed = 0;
   std::size_t threads = 1;
   std::vector<double> best_per_generation, mean_per_generation;
-  if (algorithm == "nelder-mead") {
-    solve.algorithm = nelder_mead_options(o);
+  if (algorithm.starts_with("pagmo-")) {
+    // pagmo's algorithms through the reader `hula optimise --algorithm pagmo-<name>` uses: population,
+    // generations and seed; pagmo runs its own loop, which no callback or cancellation reaches.
+    io::SolverRequest q;
+    q.algorithm = algorithm;
+    q.population = o.get<std::size_t>("population");
+    q.generations = o.get<std::size_t>("generations");
+    q.seed = o.get<std::uint64_t>("seed");
+    seed = q.seed.value_or(0);
+    solve.algorithm = io::solver_options(q);
+    if (!progress.is_none())
+      throw Error(Errc::InvalidOption, "callback and verbose are not supported by pagmo's algorithms",
+                  {.field = "callback"});
+  } else if (algorithm == "nelder-mead") {
+    optim::NelderMeadOptions nm = nelder_mead_options(o);
+    nm.cancel = job.token();
+    solve.algorithm = nm;
     if (const auto start = o.get<std::vector<double>>("start")) solve.start = *start;
+    if (!progress.is_none())
+      throw Error(Errc::InvalidOption, "callback and verbose are not supported by algorithm \"nelder-mead\"",
+                  {.field = "callback"});
   } else {
     optim::RunSettings settings = run_settings(o);
+    settings.stop.cancel = job.token();
     seed = settings.seed;
     threads = settings.threads;
     solve.islands = island_options(o);
     // The convergence graph of a single population; islands report per-island statistics instead.
-    if (!solve.islands)
+    if (!solve.islands) {
       settings.on_generation = [&](const optim::GenerationLog& g) {
         const optim::GenerationStatistics s = optim::statistics(g);
         best_per_generation.push_back(s.best);
         mean_per_generation.push_back(s.mean);
+        if (progress.is_none()) return;
+        const py::gil_scoped_acquire gil;
+        if (py::bool_(progress(g.generation, generation_best(g), g.evaluations))) job.stop();
       };
+    } else if (!progress.is_none()) {
+      throw Error(Errc::InvalidOption, "callback and verbose are not supported with islands", {.field = "callback"});
+    }
     solve.algorithm = solver_options(algorithm, o, settings);
   }
   o.check_all_used(algorithm);
-  optim::SolveResult r;
-  {
-    const py::gil_scoped_release release;
-    r = optim::solve(problem, solve);
-  }
+  const optim::SolveResult r = job.run([&] { return optim::solve(problem, solve); });
   py::dict out;
+  if (!job.interrupt().is_none()) out["interrupt"] = job.interrupt();
   const bool front = problem.objectives > 1 || std::holds_alternative<optim::Nsga2Options>(solve.algorithm);
   if (!front) {
     const optim::Solution& best = r.solutions.front();
@@ -208,6 +259,14 @@ py::dict run(const optim::Problem& problem, const std::string& algorithm, const 
   } else {
     out["front_x"] = rows(r.solutions, true, problem.dimension());
     out["front_f"] = rows(r.solutions, false, problem.objectives);
+    // The hypervolume of the feasible members (io::solve_result_to_json's rule) against the reference point.
+    if (reference) {
+      std::vector<double> points;
+      for (const optim::Solution& x : r.solutions)
+        if (x.violation == 0.0) points.insert(points.end(), x.objectives.begin(), x.objectives.end());
+      out["hypervolume"] = optim::hypervolume(points, problem.objectives, *reference);
+      out["reference"] = to_array(*reference);
+    }
   }
   if (!r.population.empty()) {
     out["population_x"] = rows(r.population, true, problem.dimension());
@@ -275,7 +334,7 @@ void register_optimise(py::module_& m) {
       "optimise_callable",
       [](py::function fn, py::handle lower, py::handle upper, std::size_t objectives, std::size_t inequality,
          std::size_t equality, py::handle precision, const std::string& name, const std::string& algorithm,
-         const py::dict& options) {
+         const py::dict& options, const py::object& progress) {
         const std::vector<double> lo = as_vector(lower, "lower");
         const std::vector<double> hi = as_vector(upper, "upper");
         if (lo.size() != hi.size()) {
@@ -302,24 +361,25 @@ void register_optimise(py::module_& m) {
         p.inequality_constraints = inequality;
         p.equality_constraints = equality;
         p.evaluate_many = python_batch(std::move(fn), lo.size(), p.values_per_point());
-        return run(p, algorithm, options);
+        return run(p, algorithm, options, progress, std::nullopt);
       },
       py::arg("objective"), py::arg("lower"), py::arg("upper"), py::arg("objectives"), py::arg("inequality"),
-      py::arg("equality"), py::arg("precision"), py::arg("name"), py::arg("algorithm"), py::arg("options"));
+      py::arg("equality"), py::arg("precision"), py::arg("name"), py::arg("algorithm"), py::arg("options"),
+      py::arg("progress") = py::none());
 
   m.def(
       "optimise_builtin",
       [](const std::string& name, std::size_t dimension, std::size_t objectives, py::handle precision,
-         const std::string& algorithm, const py::dict& options) {
-        optim::Problem p = optim::test_problem(name, dimension, objectives);
+         const std::string& algorithm, const py::dict& options, const py::object& progress) {
+        auto [p, reference] = io::builtin_problem(name, dimension, objectives);
         if (!precision.is_none()) {
           const auto q = precision.cast<double>();
           for (optim::Variable& v : p.variables) v.precision = q;
         }
-        return run(p, algorithm, options);
+        return run(p, algorithm, options, progress, std::move(reference));
       },
       py::arg("name"), py::arg("dimension"), py::arg("objectives"), py::arg("precision"), py::arg("algorithm"),
-      py::arg("options"));
+      py::arg("options"), py::arg("progress") = py::none());
 
   m.def(
       "evaluate_builtin",

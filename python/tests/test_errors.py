@@ -4,6 +4,8 @@
 # hulahoops.Error subclass, exported by the package.
 import re
 
+import pytest
+
 import hulahoops as hh
 from hulahoops import errors
 
@@ -36,3 +38,14 @@ def test_unsupported_and_helper_failure_carry_code_message_where():
     assert isinstance(e, hh.UnsupportedError) and e.code == "Unsupported" and e.where == {"field": "torsion"}
     e = errors.error_class("HelperFailure")("HelperFailure", "hula-exchange crashed", {"field": "path"})
     assert isinstance(e, hh.HelperFailureError) and str(e) == "HelperFailure: hula-exchange crashed"
+
+
+def test_messages_speak_python(quarter_circle, tmp_path):
+    # checks an out-of-domain evaluation names the keyword that allows it, not the C++ enumerator, and a
+    # write to a missing folder names the argument `path`, not the CLI's --output
+    with pytest.raises(hh.OutOfDomainError) as e:
+        quarter_circle(1.5)
+    assert 'domain="extrapolate"' in e.value.message and "::" not in str(e.value)
+    with pytest.raises(hh.Error) as e:
+        hh.write(quarter_circle, tmp_path / "no" / "such" / "c.json")
+    assert e.value.where["field"] == "path" and "--output" not in str(e.value)

@@ -158,22 +158,33 @@ FileFormat file_format_for_path(const fs::path& path) {
               {.field = "path"});
 }
 
-ConvertReport convert_file(const fs::path& input, const fs::path& output, const ConvertOptions& options) {
-  ConvertReport report;
-  report.input_format = options.input_format ? *options.input_format : file_format_for_path(input);
-  report.output_format = options.output_format ? *options.output_format : file_format_for_path(output);
+namespace {
+
+// The format of a file: the given one or its extension's; STEP and IGES refused without Open CASCADE.
+FileFormat resolve_format(const std::optional<FileFormat>& given, const fs::path& path) {
+  const FileFormat f = given ? *given : file_format_for_path(path);
+#ifndef HULA_WITH_OCCT
+  if (is_step_or_iges(f)) no_occt(f);
+#endif
+  return f;
+}
+
+}  // namespace
+
+std::vector<Label> read_curve_file(Document& document, const fs::path& input, const ConvertOptions& options,
+                                   ConvertReport& report) {
+  report.input_format = resolve_format(options.input_format, input);
+  return read_into(document, input, report.input_format, report);
+}
+
+void write_curve_file(const Document& document, std::span<const Label> all, const fs::path& output,
+                      const ConvertOptions& options, ConvertReport& report) {
+  report.output_format = resolve_format(options.output_format, output);
   if (!std::isfinite(options.svg_tolerance) || !(options.svg_tolerance > 0.0))
     throw Error(Errc::InvalidArgument,
                 "tolerance = " + format_number(options.svg_tolerance) + " must be finite and > 0",
                 {.field = "tolerance"});
-#ifndef HULA_WITH_OCCT
-  if (is_step_or_iges(report.input_format)) no_occt(report.input_format);
-  if (is_step_or_iges(report.output_format)) no_occt(report.output_format);
-#endif
-  // The output-path policy before anything is read or computed.
   io::check_output_path(output, "--output");
-  Document document;
-  const std::vector<Label> all = read_into(document, input, report.input_format, report);
   std::vector<Label> labels;
   for (Label l : all)
     if (report.output_format == FileFormat::JsonFile || document.get(l).kind() == EntityKind::Curve)
@@ -182,7 +193,7 @@ ConvertReport convert_file(const fs::path& input, const fs::path& output, const 
   if (labels.empty())
     throw Error(
         Errc::InvalidArgument,
-        "'" + input.string() + "' holds no curve to write as " + std::string(file_format_name(report.output_format)),
+        "no curve to write as " + std::string(file_format_name(report.output_format)) + " to '" + output.string() + "'",
         {.field = "input"});
   for (Label l : labels)
     if (document.get(l).kind() == EntityKind::Curve) {
@@ -219,6 +230,28 @@ ConvertReport convert_file(const fs::path& input, const fs::path& output, const 
 #endif
     }
   }
+}
+
+ConvertReport convert_file(const fs::path& input, const fs::path& output, const ConvertOptions& options) {
+  ConvertReport report;
+  // Both formats, the tolerance and the output-path policy are checked before anything is read.
+  report.input_format = resolve_format(options.input_format, input);
+  report.output_format = resolve_format(options.output_format, output);
+  if (!std::isfinite(options.svg_tolerance) || !(options.svg_tolerance > 0.0))
+    throw Error(Errc::InvalidArgument,
+                "tolerance = " + format_number(options.svg_tolerance) + " must be finite and > 0",
+                {.field = "tolerance"});
+  io::check_output_path(output, "--output");
+  Document document;
+  const std::vector<Label> all = read_into(document, input, report.input_format, report);
+  bool any_curve = report.output_format == FileFormat::JsonFile && !all.empty();
+  for (Label l : all) any_curve = any_curve || document.get(l).kind() == EntityKind::Curve;
+  if (!any_curve)
+    throw Error(
+        Errc::InvalidArgument,
+        "'" + input.string() + "' holds no curve to write as " + std::string(file_format_name(report.output_format)),
+        {.field = "input"});
+  write_curve_file(document, all, output, options, report);
   return report;
 }
 

@@ -79,6 +79,20 @@ struct ConvertReport {
 ConvertReport convert_file(const std::filesystem::path& input, const std::filesystem::path& output,
                            const ConvertOptions& options = {});
 
+/// convert_file's reading half: the entities of `input` added to `document` (names, colours and layers as
+/// the file gives them; a curve file's curves named after the file), in file order; sets report.input_format
+/// and report.warnings. hulahoops.read uses it.
+/// @throws as convert_file for the input
+std::vector<Label> read_curve_file(Document& document, const std::filesystem::path& input,
+                                   const ConvertOptions& options, ConvertReport& report);
+
+/// convert_file's writing half: the entities of `labels` written to `output` (JSON: every entity; the other
+/// formats: the curves, the rest counted in report.skipped); sets report.output_format, curves, skipped,
+/// max_deviation and warnings. hulahoops.write uses it.
+/// @throws hula::Error(Errc::InvalidArgument) when no curve is left to write; as convert_file for the output
+void write_curve_file(const Document& document, std::span<const Label> labels, const std::filesystem::path& output,
+                      const ConvertOptions& options, ConvertReport& report);
+
 /// The curves of `labels` as DXF SPLINE items: each curve's NURBS (a law or natural-equation curve's
 /// NURBS approximation) with the entity's name, colour and layer.
 /// @throws hula::Error(Errc::InvalidArgument) naming a label that is missing or not a curve, or for no labels

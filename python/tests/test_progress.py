@@ -1,0 +1,120 @@
+# SPDX-License-Identifier: MIT
+# callback= and verbose= on optimise and the studies: the callback sees every
+# generation of real runs with the values the result reports, a true return
+# stops the run with its best so far, verbose prints one line per generation.
+import json
+import re
+
+import numpy as np
+import pytest
+
+import hulahoops as hh
+from conftest import SOURCE
+
+STUDIES = SOURCE / "examples" / "studies"
+
+
+def test_callback_sees_every_generation_with_the_reported_best():
+    # checks the callback runs for generations 0..G in order with the result's best_per_generation, and
+    # evaluations growing by one population per generation
+    calls = []
+    r = hh.optimise("rastrigin", dimension=4, population=30, generations=20, seed=7,
+                    callback=lambda g, best, ev: calls.append((g, best, ev)))
+    assert [c[0] for c in calls] == list(range(21))
+    assert np.array_equal([c[1] for c in calls], r.best_per_generation)
+    assert [c[2] for c in calls] == [30 * (g + 1) for g in range(21)]
+    assert r.report["evaluations"] == calls[-1][2]
+
+
+def test_callback_returning_true_stops_with_the_best_so_far():
+    # checks True at generation 5 ends the run there (termination Cancelled, 5 generations), with the same
+    # generations as an uninterrupted run of the same seed up to that point
+    full = hh.optimise("sphere", dimension=3, population=20, generations=30, seed=4)
+    r = hh.optimise("sphere", dimension=3, population=20, generations=30, seed=4, callback=lambda g, b, e: g == 5)
+    assert r.report["termination"] == "Cancelled"
+    assert r.report["generations"] == 5
+    assert np.array_equal(r.best_per_generation, full.best_per_generation[:6])
+    assert r.f[0] == r.best_per_generation[-1]
+
+
+def test_callback_with_a_python_objective_and_constraints():
+    # checks a Python objective with one inequality constraint: best is the smallest feasible objective
+    # (x0 + x1 >= 1 cuts off the unconstrained minimum at 0; the optimum is 0.5 at x = (0.5, 0.5))
+    def objective(X):
+        return np.column_stack([np.sum(X * X, axis=1), 1 - X[:, 0] - X[:, 1]])
+
+    bests = []
+    r = hh.optimise(hh.Problem(objective, [-2, -2], [2, 2], inequality=1), population=40, generations=60, seed=1,
+                    callback=lambda g, b, e: bests.append(b))
+    assert np.array_equal(bests, r.best_per_generation)
+    assert all(b >= 0.5 - 1e-12 for b in bests if np.isfinite(b))
+    assert bests[-1] == pytest.approx(0.5, abs=1e-2)
+
+
+def test_nsga2_callback_gets_each_objectives_minimum():
+    # checks NSGA-II's best is an array of each objective's smallest value, equal at the last generation to
+    # the final population's column minima (ZDT1 has no constraints: all feasible)
+    seen = []
+    r = hh.optimise("zdt1", "nsga2", dimension=6, population=24, generations=15, seed=3,
+                    callback=lambda g, b, e: seen.append(np.array(b)))
+    assert len(seen) == 16 and all(b.shape == (2,) for b in seen)
+    assert np.array_equal(seen[-1], r.population_f.min(axis=0))
+
+
+def test_callback_exception_propagates():
+    # checks an exception raised by the callback ends the run and reaches the caller unchanged
+    class Stop(Exception):
+        pass
+
+    def callback(g, b, e):
+        if g == 3:
+            raise Stop("from the callback")
+
+    with pytest.raises(Stop, match="from the callback"):
+        hh.optimise("sphere", dimension=2, population=10, generations=50, callback=callback)
+
+
+def test_callback_refused_where_there_are_no_generations():
+    # checks Nelder-Mead and island runs refuse callback (InvalidOption naming it) rather than ignore it
+    with pytest.raises(hh.InvalidOptionError) as e:
+        hh.optimise("sphere", "nelder-mead", dimension=2, callback=lambda *a: None)
+    assert e.value.where["field"] == "callback"
+    with pytest.raises(hh.InvalidOptionError):
+        hh.optimise("sphere", dimension=2, islands=2, generations=3, verbose=True)
+
+
+def test_verbose_prints_one_line_per_generation(capsys):
+    # checks verbose writes generation, evaluations and best to stderr, the last line's best being f
+    r = hh.optimise("sphere", dimension=2, population=10, generations=8, seed=2, verbose=True)
+    lines = capsys.readouterr().err.strip().splitlines()
+    assert len(lines) == 9
+    m = re.fullmatch(r"optimise: generation (\d+), evaluations (\d+), best (\S+)", lines[-1])
+    assert m and int(m[1]) == 8 and int(m[2]) == 90
+    assert float(m[3]) == pytest.approx(r.f[0], rel=1e-5)
+
+
+def test_study_callback_and_stop():
+    # checks match-curvature's GA (thesis 8.2.1 example 1: 50 generations) calls back 51 times with
+    # evaluations growing, and a True return at generation 10 stops it there (termination Cancelled) with
+    # best points inside their offsets that fit the target better than the start
+    setup = json.loads((STUDIES / "match-curvature-example1.json").read_text())
+    calls = []
+    hh.match_curvature(setup, callback=lambda g, b, e: calls.append((g, b, e)))
+    assert [c[0] for c in calls] == list(range(51))
+    assert all(a[2] < b[2] for a, b in zip(calls, calls[1:]))
+    stopped = hh.match_curvature(setup, callback=lambda g, b, e: g == 10)
+    assert stopped.ga.termination == "Cancelled" and stopped.ga.generations == 10
+    assert stopped.evaluations == calls[10][2]  # 11 generations of 50
+    # the free point within its offsets (x 5 - 30 ... 5 + 35, y 20 +- 30; the binary grid's step 0.001 over)
+    p = np.asarray(stopped.best_points)
+    assert -25 - 1e-3 <= p[1][0] <= 40 + 1e-3 and -10 - 1e-3 <= p[1][1] <= 50 + 1e-3
+    assert stopped.after.mean < stopped.before.mean
+
+
+def test_fair_knots_verbose(capsys):
+    # checks fair-knots prints progress lines labelled with the study for its GA (thesis 7.4 example 1)
+    setup = json.loads((STUDIES / "fair-knots-7.4-example1.json").read_text())
+    setup["method"] = "ga"
+    hh.fair_knots(setup, verbose=True)
+    lines = capsys.readouterr().err.strip().splitlines()
+    assert lines and all(line.startswith("fair-knots: generation ") for line in lines)
