@@ -9,6 +9,7 @@
 
 #include <Eigen/Dense>
 #include <array>
+#include <boost/math/quadrature/gauss.hpp>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -29,11 +30,9 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-// 5-point Gauss–Legendre nodes and weights on [-1, 1] (Abramowitz & Stegun 25.4.30).
-constexpr std::array<double, 5> kNodes{-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831,
-                                       0.9061798459386640};
-constexpr std::array<double, 5> kWeights{0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665,
-                                         0.2369268850561891};
+// 5-point Gauss–Legendre rule on [-1, 1]: Boost.Math's non-negative nodes (0 first, used ±) and their weights.
+constexpr int kGaussPoints = 5;
+using Gauss = boost::math::quadrature::gauss<double, kGaussPoints>;
 
 // A tolerance ball is shrunk by this relative amount before projecting into it, so that the
 // rounding of q0 + d never puts a point outside the user's tolerance.
@@ -140,18 +139,22 @@ class Residuals {
 
   void operator()(const nurbs::NurbsCurve& c, Eigen::VectorXd& out) const {
     const std::vector<double> bp = c.knots().breakpoints();
-    out.resize(static_cast<Eigen::Index>((bp.size() - 1) * kNodes.size()));
+    const auto& nodes = Gauss::abscissa();
+    const auto& weights = Gauss::weights();
+    out.resize(static_cast<Eigen::Index>((bp.size() - 1) * static_cast<std::size_t>(kGaussPoints)));
     Eigen::Index row = 0;
     std::array<Vec3, 4> d;
     for (std::size_t i = 0; i + 1 < bp.size(); ++i) {
       const double half = 0.5 * (bp[i + 1] - bp[i]), mid = 0.5 * (bp[i + 1] + bp[i]);
-      for (std::size_t q = 0; q < kNodes.size(); ++q) {
-        const double t = mid + half * kNodes[q];
+      // Nodes from −1 to 1: index |q| of the tables, signed.
+      for (int q = -kGaussPoints / 2; q <= kGaussPoints / 2; ++q) {
+        const auto k = static_cast<std::size_t>(std::abs(q));
+        const double t = mid + (q < 0 ? -half : half) * nodes[k];
         c.derivatives(t, 3, d, {});
         const diffgeom::FrenetPoint p = diffgeom::frenet_from_derivatives(t, d, scale_, options_);
         // Where the frame is undefined the energy code counts 0 (diffgeom/energy.hpp); so does the proxy.
         const double k1 = p.frame_defined && std::isfinite(p.curvature_derivative) ? p.curvature_derivative : 0.0;
-        out[row++] = std::sqrt(kWeights[q] * half * p.speed) * k1;
+        out[row++] = std::sqrt(weights[k] * half * p.speed) * k1;
       }
     }
   }
