@@ -305,7 +305,9 @@ bool SplineProfileSampler::sample(std::span<const Vec3> points, Workspace& ws, s
         ++k;
         w_base = g_base = 0.0;
       }
-      // Newton on g_base + ∫_{w_base}^{w} |C'| = s - S[k], safeguarded to the span.
+      // Newton on g_base + ∫_{w_base}^{w} |C'| = s - S[k], safeguarded to the span. Not Boost.Math's
+      // newton_raphson_iterate: this is the fitness's inner loop, warm-started a step or two from the root,
+      // and Boost's stop is relative to w, never met at a span start (w = 0), where this one is relative to h.
       const double goal = s - S[k];
       const double span_len = S[k + 1] - S[k];
       // Start from the last sample, one explicit step along the speed there (or proportionally if it vanishes).
