@@ -6,8 +6,10 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <boost/math/tools/roots.hpp>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <mutex>
 #include <optional>
 #include <utility>
@@ -320,27 +322,28 @@ double Curve::parameter_at_length(double s) const {
   if (!(s >= 0.0 && s <= total))
     throw Error(Errc::OutOfDomain, "s = " + format_number(s) + " is outside [0, " + format_number(total) + "]",
                 {.field = "s"});
-  // Newton on L(t) − s with |C'(t)| as the derivative, kept inside the bracket [lo, hi] (bisection
-  // when a step leaves it); the stand-in NURBS, parameterised like the law, gives the start where s is
-  // also a parameter value of it.
-  double lo = d.start, hi = d.end;
-  double t = state_->curve.domain().contains(s) ? nurbs::parameter_at_length(state_->curve, s) : d.start;
+  // Newton on L(t) − s with |C'(t)| as the derivative, kept inside the bracket [lo, hi] by Boost.Math's
+  // newton_raphson_iterate (bisection when a step leaves it); the stand-in NURBS, parameterised like the
+  // law, gives the start where s is also a parameter value of it. Converged when the Newton step is at
+  // most 1e-15 (1 + |t|), reported to Boost as a zero residual (its own test, relative to |t|, never
+  // passes at t = 0).
+  const double guess = state_->curve.domain().contains(s) ? nurbs::parameter_at_length(state_->curve, s) : d.start;
   const auto speed_of = law_evaluator(1);
   std::array<Vec3, 2> der;
-  for (int it = 0; it < 60; ++it) {
+  auto residual = [&](double t) {
     const double f = length_to(t) - s;
-    if (f > 0)
-      hi = t;
-    else
-      lo = t;
     speed_of->derivatives(t, der);
     const double v = norm(der[1]);
-    double next = v > 0 ? t - f / v : 0.5 * (lo + hi);
-    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    if (std::fabs(next - t) <= 1e-15 * (1.0 + std::fabs(t))) return next;
-    t = next;
+    return std::pair{v > 0 && std::fabs(f) <= 1e-15 * (1.0 + std::fabs(t)) * v ? 0.0 : f, v};
+  };
+  std::uintmax_t iterations = 60;
+  try {
+    return boost::math::tools::newton_raphson_iterate(residual, guess, d.start, d.end,
+                                                      std::numeric_limits<double>::digits, iterations);
+  } catch (const boost::math::evaluation_error&) {
+    throw Error(Errc::NumericalFailure, "parameter_at_length: no convergence for s = " + format_number(s),
+                {.field = "s"});
   }
-  return t;
 }
 
 namespace {

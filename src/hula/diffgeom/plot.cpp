@@ -3,6 +3,7 @@
 #include "hula/diffgeom/plot.hpp"
 
 #include <array>
+#include <boost/math/quadrature/gauss.hpp>
 #include <cmath>
 
 #include "hula/core/error.hpp"
@@ -139,11 +140,11 @@ Plot plot(const law::Law& curve, std::string_view parameter, nurbs::Interval dom
                                      options.frenet);
   std::vector<double> s(n, 0.0);
   if (options.abscissa == PlotAbscissa::ArcLength) {
-    // ∫ |r'| dt between samples by 8-point Gauss–Legendre (smooth laws: rounding-level per step).
-    static constexpr std::array<double, 4> kX = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
-                                                 0.9602898564975363};
-    static constexpr std::array<double, 4> kW = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
-                                                 0.1012285362903763};
+    // ∫ |r'| dt between samples by 8-point Gauss–Legendre (smooth laws: rounding-level per step), Boost.Math's
+    // positive nodes and their weights.
+    using Gauss8 = boost::math::quadrature::gauss<double, 8>;
+    const auto& nodes = Gauss8::abscissa();
+    const auto& weights = Gauss8::weights();
     std::array<Vec3, 5> d;
     auto speed = [&](double t) {
       eval.derivatives(t, d);
@@ -152,8 +153,8 @@ Plot plot(const law::Law& curve, std::string_view parameter, nurbs::Interval dom
     for (std::size_t i = 1; i < n; ++i) {
       const double mid = 0.5 * (out.t[i - 1] + out.t[i]), half = 0.5 * (out.t[i] - out.t[i - 1]);
       double sum = 0.0;
-      for (std::size_t k = 0; k < kX.size(); ++k)
-        sum += kW[k] * (speed(mid - half * kX[k]) + speed(mid + half * kX[k]));
+      for (std::size_t k = 0; k < nodes.size(); ++k)
+        sum += weights[k] * (speed(mid - half * nodes[k]) + speed(mid + half * nodes[k]));
       s[i] = s[i - 1] + half * sum;
     }
   }

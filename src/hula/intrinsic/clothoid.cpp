@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <boost/math/quadrature/gauss.hpp>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -16,11 +17,9 @@
 namespace hula::intrinsic {
 namespace {
 
-// 10-point Gauss–Legendre rule on [−1, 1]: the positive nodes and their weights (exact for degree 19).
-constexpr std::array<double, 5> kNodes{0.1488743389816312, 0.4333953941292472, 0.6794095682990244, 0.8650633666889845,
-                                       0.9739065285171717};
-constexpr std::array<double, 5> kWeights{0.2955242247147529, 0.2692667193099963, 0.2190863625159820, 0.1494513491505806,
-                                         0.0666713443086881};
+// 10-point Gauss–Legendre rule on [−1, 1] (exact for degree 19): Boost.Math's positive nodes and
+// their weights, references to static arrays (no allocation on the panel loops).
+using Gauss10 = boost::math::quadrature::gauss<double, 10>;
 
 // Largest turning of the phase over one quadrature panel, radians. With the phase quadratic, the
 // 20th derivative of cos(phase) on a panel is at most about this to the 20th power, and the 10-point
@@ -35,17 +34,19 @@ int panels_for(double rate, double h) {
 
 // ∫₀ʰ (cos θ(t), sin θ(t)) dt for θ(t) = c + b t + a t² / 2 (h of any sign).
 std::array<double, 2> integrate_phase(double a, double b, double c, double h) {
+  const auto& nodes = Gauss10::abscissa();
+  const auto& weights = Gauss10::weights();
   const int n = panels_for(std::max(std::abs(b), std::abs(b + a * h)), h);
   const double w = h / n;
   double sx = 0.0, sy = 0.0;
   for (int p = 0; p < n; ++p) {
     const double mid = (p + 0.5) * w;
-    for (std::size_t k = 0; k < kNodes.size(); ++k) {
+    for (std::size_t k = 0; k < nodes.size(); ++k) {
       for (const double sign : {-1.0, 1.0}) {
-        const double t = mid + sign * kNodes[k] * 0.5 * w;
+        const double t = mid + sign * nodes[k] * 0.5 * w;
         const double th = c + t * (b + 0.5 * a * t);
-        sx += kWeights[k] * std::cos(th);
-        sy += kWeights[k] * std::sin(th);
+        sx += weights[k] * std::cos(th);
+        sy += weights[k] * std::sin(th);
       }
     }
   }
@@ -60,17 +61,19 @@ struct G1Integrals {
 };
 
 G1Integrals g1_integrals(double big_a, double delta, double phi0) {
+  const auto& nodes = Gauss10::abscissa();
+  const auto& weights = Gauss10::weights();
   const double b = delta - big_a;
   const int n = panels_for(std::max(std::abs(b), std::abs(b + 2.0 * big_a)), 1.0);
   const double w = 1.0 / n;
   G1Integrals r;
   for (int p = 0; p < n; ++p) {
     const double mid = (p + 0.5) * w;
-    for (std::size_t k = 0; k < kNodes.size(); ++k) {
+    for (std::size_t k = 0; k < nodes.size(); ++k) {
       for (const double sign : {-1.0, 1.0}) {
-        const double t = mid + sign * kNodes[k] * 0.5 * w;
+        const double t = mid + sign * nodes[k] * 0.5 * w;
         const double ph = phi0 + t * (b + big_a * t);
-        const double cs = kWeights[k] * std::cos(ph), sn = kWeights[k] * std::sin(ph);
+        const double cs = weights[k] * std::cos(ph), sn = weights[k] * std::sin(ph);
         const double dw = t * t - t;
         r.x += cs;
         r.y += sn;
@@ -97,17 +100,19 @@ struct PhaseMoments {
 };
 
 PhaseMoments phase_moments(double a, double b, double c, double lo, double hi) {
+  const auto& nodes = Gauss10::abscissa();
+  const auto& weights = Gauss10::weights();
   const double h = hi - lo;
   const int n = panels_for(std::max(std::abs(b + a * lo), std::abs(b + a * hi)), h);
   const double w = h / n;
   PhaseMoments m;
   for (int p = 0; p < n; ++p) {
     const double mid = lo + (p + 0.5) * w;
-    for (std::size_t k = 0; k < kNodes.size(); ++k) {
+    for (std::size_t k = 0; k < nodes.size(); ++k) {
       for (const double sign : {-1.0, 1.0}) {
-        const double t = mid + sign * kNodes[k] * 0.5 * w;
+        const double t = mid + sign * nodes[k] * 0.5 * w;
         const double th = c + t * (b + 0.5 * a * t);
-        const double cs = kWeights[k] * std::cos(th), sn = kWeights[k] * std::sin(th);
+        const double cs = weights[k] * std::cos(th), sn = weights[k] * std::sin(th);
         m.x[0] += cs;
         m.y[0] += sn;
         m.x[1] += t * cs;
@@ -329,6 +334,9 @@ ClothoidG1Result fit_clothoid_g1(const Vec3& p0, double theta0, const Vec3& p1, 
   // Bertolazzi–Frego's guess, then Halley's method on g(A) = Y(A) (their proof: the relevant root is
   // the unique one in the bracket their guess starts in, where g is monotone enough for Newton; Halley's
   // cubic correction falls back to the Newton step where it would more than halve or double it).
+  // Not Boost.Math's halley_iterate: it wants a bracket, which this iteration has no use for, and stops on
+  // the step relative to A, one evaluation after the cubic test below; that evaluation (the whole cost of a
+  // step) would be a quarter to a third of a typical fit, and the last one's X, X′, X″ give the length here.
   double big_a = 3.0 * (phi0 + phi1);
   int it = 0;
   bool converged = false;

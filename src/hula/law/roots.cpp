@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: MIT
-// Root isolation by derivative splitting and safeguarded Newton (see roots.hpp).
+// Root isolation by derivative splitting and TOMS 748 (see roots.hpp).
 #include "hula/law/roots.hpp"
 
 #include <algorithm>
+#include <boost/math/tools/toms748_solve.hpp>
 #include <cmath>
+#include <cstdint>
 #include <string>
 
 #include "hula/core/error.hpp"
@@ -25,6 +27,9 @@ void RootOptions::validate() const {
 }
 
 namespace {
+
+/// Evaluations of f^(k) per sign change: TOMS 748 needs a few tens; 200 bound a bisection to the tolerance.
+constexpr std::uintmax_t kMaxEvaluations = 200;
 
 /// f and its derivatives compiled once; value(k, t) = f^(k)(t) (NaN where undefined).
 class Derivs {
@@ -52,27 +57,19 @@ class Derivs {
   double last_t_ = std::numeric_limits<double>::quiet_NaN();
 };
 
-/// Safeguarded Newton for f^(k) on [lo, hi] with f(lo), f(hi) of opposite signs.
-double refine(Derivs& d, int k, double lo, double hi, double flo, double tol) {
-  double x = 0.5 * (lo + hi);
-  for (int it = 0; it < 200; ++it) {
-    const double fx = d.value(k, x);
-    if (fx == 0.0 || std::isnan(fx)) return x;
-    if ((fx < 0) == (flo < 0)) {
-      lo = x;
-      flo = fx;
-    } else {
-      hi = x;
-    }
-    if (hi - lo <= tol * std::max(1.0, std::fabs(x))) return 0.5 * (lo + hi);
-    const double dfx = d.value(k + 1, x);
-    double next = x - fx / dfx;
-    // Newton only while it stays strictly inside the bracket; else bisect.
-    if (!(next > lo && next < hi) || !std::isfinite(next)) next = 0.5 * (lo + hi);
-    if (std::fabs(next - x) <= 0.25 * tol * std::max(1.0, std::fabs(x))) return next;
-    x = next;
-  }
-  return 0.5 * (lo + hi);
+/// The sign change of f^(k) on [lo, hi] (f(lo), f(hi) of opposite signs) by Boost.Math's TOMS 748
+/// (Alefeld–Potra–Shi): a true bracket kept by sign alone, so a pole or a jump is closed in on like a
+/// root and find() tells them apart by |f| afterwards. A point where f^(k) is undefined is reported
+/// to the solver as a zero, which stops it there (find() then sees NaN and keeps no root).
+double refine(Derivs& d, int k, double lo, double hi, double flo, double fhi, double tol) {
+  auto f = [&](double x) {
+    const double v = d.value(k, x);
+    return std::isnan(v) ? 0.0 : v;
+  };
+  auto narrow = [tol](double a, double b) { return b - a <= tol * std::max({1.0, std::fabs(a), std::fabs(b)}); };
+  std::uintmax_t evaluations = kMaxEvaluations;
+  const auto [a, b] = boost::math::tools::toms748_solve(f, lo, hi, flo, fhi, narrow, evaluations);
+  return 0.5 * (a + b);
 }
 
 void add_root(std::vector<double>& out, double t) { out.push_back(t); }
@@ -125,7 +122,7 @@ std::vector<double> find(Derivs& d, int k, int levels, double a, double b, const
     }
     if (std::isnan(fc) || std::isnan(fn) || fc == 0.0 || fn == 0.0) continue;
     if ((fc < 0) != (fn < 0)) {
-      const double x = refine(d, k, c, n, fc, o.tolerance);
+      const double x = refine(d, k, c, n, fc, fn, o.tolerance);
       const double fx = std::fabs(d.value(k, x));
       // A root makes |f| fall: to the value tolerance, or well below both bracket ends. A pole
       // (|f| grows) or a jump (|f| stays) keeps a sign change without a root. Inner levels keep

@@ -3,8 +3,8 @@
 // Roots use the exact symbolic derivatives: the critical points of f (roots
 // of f', found the same way, recursively down to `derivative_levels`) cut the
 // interval into pieces on which f is monotone, so each piece holds at most
-// one root, bracketed and refined by safeguarded Newton (Newton steps with
-// the exact f', bisection whenever a step leaves the bracket). Roots of even
+// one root, bracketed and refined by TOMS 748 (Boost.Math; Alefeld, Potra
+// and Shi's bracketing interpolation with bisection steps). Roots of even
 // multiplicity are the critical points where |f| is below the value
 // tolerance. The lowest level is found by dense sampling of the derivative.
 #pragma once

@@ -2,7 +2,8 @@
 // Arc length by adaptive Gauss–Kronrod quadrature (the 7/15-point pair of
 // QUADPACK's qk15; Piessens et al. 1983) on every non-empty knot span, where
 // the speed |C'(t)| is smooth (analytic except where C' vanishes), and its
-// inverse by Newton's method on s(t) - s with a bisection safeguard.
+// inverse by Newton's method on s(t) - s, bracketed and safeguarded by
+// bisection (Boost.Math's newton_raphson_iterate).
 //
 // Error control: on [x0, x1] of width h the estimate |K15 - G7| must be at
 // most tolerance × L0 × h / (b - a), L0 being a first estimate of the length
@@ -16,9 +17,14 @@
 
 #include <algorithm>
 #include <array>
+#include <boost/math/quadrature/gauss.hpp>
+#include <boost/math/quadrature/gauss_kronrod.hpp>
+#include <boost/math/tools/roots.hpp>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "hula/core/error.hpp"
@@ -27,20 +33,15 @@ namespace hula::nurbs {
 
 namespace {
 
-// Kronrod nodes (non-negative half, decreasing); the odd indices are the Gauss 7-point nodes.
-constexpr std::array<double, 8> kXgk = {0.991455371120812639206854697526329, 0.949107912342758524526189684047851,
-                                        0.864864423359769072789712788640926, 0.741531185599394439863864773280788,
-                                        0.586087235467691130294144845693013, 0.405845151377397166906606412076961,
-                                        0.207784955007898467600689403773245, 0.000000000000000000000000000000000};
-constexpr std::array<double, 8> kWgk = {0.022935322010529224963732008058970, 0.063092092629978553290700663189204,
-                                        0.104790010322250183839876322541518, 0.140653259715525918745189590510238,
-                                        0.169004726639267902826583426598550, 0.190350578064785409913256402421014,
-                                        0.204432940075298892414161999234649, 0.209482141084727828012999174891714};
-// Gauss weights for the nodes kXgk[1], kXgk[3], kXgk[5], kXgk[7].
-constexpr std::array<double, 4> kWg = {0.129484966168869693270611432679082, 0.279705391489276667901467771423780,
-                                       0.381830050505118944950369775488975, 0.417959183673469387755102040816327};
+// QUADPACK's qk15 pair from Boost.Math's tables: the non-negative Kronrod nodes of [-1, 1], increasing
+// from 0, the even indices being the Gauss 7-point nodes (gauss<double, 7> holds their weights at
+// index / 2). Both are references to static arrays, so a rule costs no allocation.
+using Kronrod15 = boost::math::quadrature::gauss_kronrod<double, 15>;
+using Gauss7 = boost::math::quadrature::gauss<double, 7>;
 
 constexpr int kMaxDepth = 48;
+// Newton iterations of parameter_at_length (bisections included): 100 halvings exhaust any bracket.
+constexpr std::uintmax_t kMaxNewtonIterations = 100;
 constexpr long kMaxEvaluations = 2'000'000;
 // 32 GK15 rules per span: a smooth span needs one to a few.
 constexpr long kEvaluationsPerSpan = 32 * 15;
@@ -67,16 +68,19 @@ class SpeedIntegrator {
   }
 
   GkResult gk15(double x0, double x1) {
+    const auto& x = Kronrod15::abscissa();
+    const auto& wk = Kronrod15::weights();
+    const auto& wg = Gauss7::weights();
     const double c = 0.5 * (x0 + x1);
     const double h = 0.5 * (x1 - x0);
     const double fc = speed(c);
-    double k = fc * kWgk[7];
-    double g = fc * kWg[3];
-    for (std::size_t j = 0; j < 7; ++j) {
-      const double dx = h * kXgk[j];
+    double k = fc * wk[0];
+    double g = fc * wg[0];
+    for (std::size_t j = 1; j < x.size(); ++j) {
+      const double dx = h * x[j];
       const double f = speed(c - dx) + speed(c + dx);
-      k += kWgk[j] * f;
-      if (j % 2 == 1) g += kWg[j / 2] * f;
+      k += wk[j] * f;
+      if (j % 2 == 0) g += wg[j / 2] * f;
     }
     return {k * h, std::fabs((k - g) * h)};
   }
@@ -191,31 +195,37 @@ double parameter_at_length(const NurbsCurve& curve, double s, const ArcLengthOpt
   if (s == 0.0) return d.start;
   const auto it = std::upper_bound(cumulative.begin(), cumulative.end(), s);
   const auto span = static_cast<std::size_t>(std::max<std::ptrdiff_t>(1, it - cumulative.begin())) - 1;
-  double lo = breaks[span];
-  double hi = breaks[std::min(span + 1, breaks.size() - 1)];
+  const double lo = breaks[span];
+  const double hi = breaks[std::min(span + 1, breaks.size() - 1)];
   const double base = cumulative[span];
   const double target = s - base;
   const double span_length = cumulative[span + 1] - base;
   if (!(span_length > 0.0)) return lo;
   // Initial guess: linear in the span's length.
-  double t = lo + (hi - lo) * std::clamp(target / span_length, 0.0, 1.0);
+  const double guess = lo + (hi - lo) * std::clamp(target / span_length, 0.0, 1.0);
   const double goal = options.tolerance * std::max(total, std::numeric_limits<double>::min());
-  for (int iter = 0; iter < 100; ++iter) {
+  // Newton on s(t) − s by Boost.Math's bracketed newton_raphson_iterate (a step leaving the bracket, or
+  // two steps that do not halve, become bisections). Convergence is |s(t) − s| ≤ goal, reported to Boost
+  // as a zero residual: its own test is on the step relative to t, which never passes at t = 0, and
+  // serves only as the rounding-level stop (full double digits).
+  bool converged = false;
+  auto residual = [&](double t) {
     const double f = integrator.integrate(breaks[span], t) - target;
-    if (std::fabs(f) <= goal) return t;
-    if (f > 0.0)
-      hi = t;
-    else
-      lo = t;
-    const double speed = integrator.speed(t);
-    double next = speed > 0.0 ? t - f / speed : 0.5 * (lo + hi);
-    // Safeguard: Newton must stay strictly inside the bracket, else bisect.
-    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    if (next == t || !(hi > lo)) return t;
-    t = next;
+    converged = std::fabs(f) <= goal;
+    return std::pair{converged ? 0.0 : f, integrator.speed(t)};
+  };
+  std::uintmax_t iterations = kMaxNewtonIterations;
+  double t = guess;
+  try {
+    t = boost::math::tools::newton_raphson_iterate(residual, guess, lo, hi, std::numeric_limits<double>::digits,
+                                                   iterations);
+  } catch (const boost::math::evaluation_error&) {
+    converged = false;  // the bracket lost its sign change (rounding in the integral): reported below
   }
-  throw Error(Errc::NumericalFailure, "parameter_at_length: no convergence for s = " + format_number(s),
-              {.field = "s"});
+  if (!converged && iterations >= kMaxNewtonIterations)
+    throw Error(Errc::NumericalFailure, "parameter_at_length: no convergence for s = " + format_number(s),
+                {.field = "s"});
+  return t;
 }
 
 }  // namespace hula::nurbs

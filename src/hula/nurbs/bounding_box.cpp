@@ -8,7 +8,9 @@
 
 #include <algorithm>
 #include <array>
+#include <boost/math/tools/toms748_solve.hpp>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -16,29 +18,24 @@ namespace hula::nurbs {
 
 namespace {
 
-// Root of x'_c in (lo, hi) where x'_c(lo) and x'_c(hi) have opposite signs:
-// Newton with x'' kept inside the shrinking bracket, bisection otherwise.
-double polish_root(const NurbsCurve& curve, std::size_t c, double lo, double hi, double g_lo) {
-  std::array<Vec3, 3> d;
-  double t = 0.5 * (lo + hi);
-  for (int it = 0; it < 200; ++it) {
-    curve.derivatives(t, 2, d);
-    const double g = d[1][c];
-    if (g == 0.0) return t;
-    if ((g < 0.0) == (g_lo < 0.0))
-      lo = t;
-    else
-      hi = t;
-    double next = t - g / d[2][c];
-    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    // Converged when the step is below rounding of t (the extremal value's
-    // error is then O(x'' δt²), far below model resolution).
-    if (std::fabs(next - t) <= 4.0 * std::numeric_limits<double>::epsilon() * std::fmax(std::fabs(t), hi - lo) ||
-        !(hi > lo))
-      return next;
-    t = next;
-  }
-  return t;
+// Root of x'_c in (lo, hi), where the samples g_lo = x'_c(lo) and g_hi = x'_c(hi) have opposite signs,
+// by Boost.Math's TOMS 748 (Alefeld–Potra–Shi): a true bracket, kept by the sign of x' alone, so a
+// piece on which x' is not monotone still converges. Stops when the bracket is at rounding of t on the
+// bracket's scale (the extremal value's error is then O(x'' δt²), far below model resolution).
+double polish_root(const NurbsCurve& curve, std::size_t c, double lo, double hi, double g_lo, double g_hi) {
+  const double width = hi - lo;
+  std::array<Vec3, 2> d;
+  auto slope = [&](double t) {
+    curve.derivatives(t, 1, d);
+    return d[1][c];
+  };
+  auto rounding = [width](double a, double b) {
+    return b - a <=
+           4.0 * std::numeric_limits<double>::epsilon() * std::fmax(std::fmax(std::fabs(a), std::fabs(b)), width);
+  };
+  std::uintmax_t iterations = 200;
+  const auto [a, b] = boost::math::tools::toms748_solve(slope, lo, hi, g_lo, g_hi, rounding, iterations);
+  return 0.5 * (a + b);
 }
 
 }  // namespace
@@ -65,7 +62,7 @@ Box3 bounding_box(const NurbsCurve& curve) {
         const double g0 = samples[j][1][c];
         const double g1 = samples[j + 1][1][c];
         if (!((g0 < 0.0 && g1 > 0.0) || (g0 > 0.0 && g1 < 0.0))) continue;
-        const double t = polish_root(curve, c, ts[j], ts[j + 1], g0);
+        const double t = polish_root(curve, c, ts[j], ts[j + 1], g0, g1);
         box.add(curve.evaluate(t));
       }
     }

@@ -4,7 +4,7 @@
 // the span ends or at roots of the coordinate's derivative x'(t) (for a
 // rational curve the derivative of the quotient X/W, from the curve's own
 // derivative evaluator, eq. 4.8 of The NURBS Book). Roots are bracketed by
-// sampling and polished by safeguarded Newton (bisection fallback).
+// sampling and polished by TOMS 748 (Boost.Math), a bracketing root finder.
 #pragma once
 
 #include "hula/core/vec.hpp"

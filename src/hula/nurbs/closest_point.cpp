@@ -56,7 +56,9 @@ struct Search {
   // > 0 where it rises, so its sign shrinks the bracket; a Newton step that
   // leaves the bracket or has f' ≤ 0 (C''·D can dominate |C'|² on strongly
   // rational pieces) is replaced by bisection. Offers its final iterate
-  // (converged) or, after max_iterations, its best iterate (not converged).
+  // (converged) or, after max_iterations, its best iterate (not converged). Not Boost.Math's
+  // newton_raphson_iterate: it keeps its bracket by the sign of f / f', which f' ≤ 0 breaks, and stops on
+  // the step relative to t, where The NURBS Book's tests are on the distance vector (eqs. 6.4–6.5).
   void newton(double t0, double lo, double hi) {
     double t = t0;
     std::array<Vec3, 3> d;

@@ -3,6 +3,7 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <boost/math/quadrature/gauss.hpp>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -243,13 +244,15 @@ bool SplineProfileSampler::sample(std::span<const Vec3> points, Workspace& ws, s
     }
     return std::sqrt(v2);
   };
-  // ∫_a^b |C'(t_k + v)| dv by 8-point Gauss–Legendre (nodes and weights on [-1, 1]).
-  static constexpr double kGx[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
-  static constexpr double kGw[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
+  // ∫_a^b |C'(t_k + v)| dv by 8-point Gauss–Legendre (Boost.Math's positive nodes on [-1, 1] and their weights).
+  using Gauss8 = boost::math::quadrature::gauss<double, 8>;
+  const auto& gauss_nodes = Gauss8::abscissa();
+  const auto& gauss_weights = Gauss8::weights();
   auto integral = [&](std::size_t span, double a, double b) {
     const double mid = 0.5 * (a + b), half = 0.5 * (b - a);
     double sum = 0.0;
-    for (int j = 0; j < 4; ++j) sum += kGw[j] * (speed(span, mid - half * kGx[j]) + speed(span, mid + half * kGx[j]));
+    for (std::size_t j = 0; j < gauss_nodes.size(); ++j)
+      sum += gauss_weights[j] * (speed(span, mid - half * gauss_nodes[j]) + speed(span, mid + half * gauss_nodes[j]));
     return half * sum;
   };
   // Span lengths on kPanels panels (the speed of a clamped end span can vary by orders of magnitude); between
@@ -302,7 +305,9 @@ bool SplineProfileSampler::sample(std::span<const Vec3> points, Workspace& ws, s
         ++k;
         w_base = g_base = 0.0;
       }
-      // Newton on g_base + ∫_{w_base}^{w} |C'| = s - S[k], safeguarded to the span.
+      // Newton on g_base + ∫_{w_base}^{w} |C'| = s - S[k], safeguarded to the span. Not Boost.Math's
+      // newton_raphson_iterate: this is the fitness's inner loop, warm-started a step or two from the root,
+      // and Boost's stop is relative to w, never met at a span start (w = 0), where this one is relative to h.
       const double goal = s - S[k];
       const double span_len = S[k + 1] - S[k];
       // Start from the last sample, one explicit step along the speed there (or proportionally if it vanishes).

@@ -9,6 +9,7 @@
 #include <Eigen/QR>
 #include <algorithm>
 #include <array>
+#include <boost/math/quadrature/gauss.hpp>
 #include <chrono>
 #include <cmath>
 #include <string>
@@ -23,11 +24,8 @@ namespace {
 using Matrix = Eigen::MatrixXd;
 using Vector = Eigen::VectorXd;
 
-// 8-point Gauss–Legendre rule on [−1, 1] (nodes ± and weights).
-constexpr std::array<double, 4> kGaussNodes{0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
-                                            0.9602898564975363};
-constexpr std::array<double, 4> kGaussWeights{0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
-                                              0.1012285362903763};
+// 8-point Gauss–Legendre rule on [−1, 1]: Boost.Math's positive nodes (used ±) and their weights.
+using Gauss8 = boost::math::quadrature::gauss<double, 8>;
 // Quadrature panels are at most L / kMinPanels long, so the Jacobian integrals of the
 // polynomial corrections are resolved even where the integrator took one long step.
 constexpr double kMinPanels = 32.0;
@@ -100,13 +98,15 @@ bool all_zero(std::span<const double> c) {
 
 // ∫₀¹ e(u)² B_i B_j du by Gauss–Legendre on kGramPanels panels.
 Matrix envelope_gram(int n, const Profile& envelope) {
+  const auto& gauss_nodes = Gauss8::abscissa();
+  const auto& gauss_weights = Gauss8::weights();
   std::vector<double> u, w;
   for (int panel = 0; panel < kGramPanels; ++panel) {
     const double h = 1.0 / kGramPanels, mid = (panel + 0.5) * h;
-    for (std::size_t g = 0; g < kGaussNodes.size(); ++g)
+    for (std::size_t g = 0; g < gauss_nodes.size(); ++g)
       for (const double sign : {-1.0, 1.0}) {
-        u.push_back(mid + sign * kGaussNodes[g] * 0.5 * h);
-        w.push_back(kGaussWeights[g] * 0.5 * h);
+        u.push_back(mid + sign * gauss_nodes[g] * 0.5 * h);
+        w.push_back(gauss_weights[g] * 0.5 * h);
       }
   }
   std::vector<double> e(u.size());
@@ -294,6 +294,8 @@ class Solver {
     const double length = e.length;
     // Panels: the integration nodes, each split into pieces no longer than L / kMinPanels.
     const std::span<const double> nodes = curve.nodes();
+    const auto& gauss_nodes = Gauss8::abscissa();
+    const auto& gauss_weights = Gauss8::weights();
     std::vector<double> s_points, weights;
     for (std::size_t i = 0; i + 1 < nodes.size(); ++i) {
       const double a = nodes[i], b = nodes[i + 1];
@@ -301,10 +303,10 @@ class Solver {
       const double h = (b - a) / pieces;
       for (int piece = 0; piece < pieces; ++piece) {
         const double mid = a + (piece + 0.5) * h;
-        for (std::size_t g = 0; g < kGaussNodes.size(); ++g) {
+        for (std::size_t g = 0; g < gauss_nodes.size(); ++g) {
           for (const double sign : {-1.0, 1.0}) {
-            s_points.push_back(std::clamp(mid + sign * kGaussNodes[g] * 0.5 * h, 0.0, length));
-            weights.push_back(kGaussWeights[g] * 0.5 * h);
+            s_points.push_back(std::clamp(mid + sign * gauss_nodes[g] * 0.5 * h, 0.0, length));
+            weights.push_back(gauss_weights[g] * 0.5 * h);
           }
         }
       }
