@@ -510,3 +510,76 @@ export type StudySeedRequest = {
   population?: number;
   generations?: number;
 };
+
+export type OffsetRequest = {
+  curve: CurveFile;
+  distance: number;
+  tolerance?: number;
+  trim?: boolean;
+};
+
+export type OffsetResult = {
+  distance: number;
+  tolerance: number;
+  exact: boolean;
+  deviation: number;
+  raw: CurveFile;
+  cusps: number[];
+  loops: {
+    s: number;
+    t: number;
+    point: number[];
+    angle: number;
+    [key: string]: unknown;
+  }[];
+  trimmed: {
+    spans: number[][];
+    closed: boolean;
+    curve: CurveFile;
+  }[];
+};
+
+export type HelicalOffsetRequest = {
+  curve: CurveFile;
+  distance: string | number;
+  twist?: string | number;
+  frame?: "frenet" | "bishop";
+  tolerance?: number;
+};
+
+export type HelicalOffsetResult = {
+  frame: string;
+  distance: string;
+  twist: string;
+  tolerance: number;
+  exact: boolean;
+  deviation: number;
+  plane_normal?: number[];
+  curve: CurveFile;
+};
+
+export type OrthotomicRequest = {
+  curve: CurveFile;
+  pole: number[];
+  k?: number;
+  tolerance?: number;
+};
+
+export type PolarRequest = {
+  curve: CurveFile;
+  centre: number[];
+  radius?: number;
+  tolerance?: number;
+};
+
+export type MappedCurve = {
+  mapping: "orthotomic" | "polar";
+  exact: boolean;
+  deviation: number;
+  tolerance: number;
+  curve: CurveFile;
+  pole?: number[];
+  k?: number;
+  centre?: number[];
+  radius?: number;
+};
