@@ -179,8 +179,14 @@ class NurbsCurve:
         """The same curve with degree + times (The NURBS Book A5.9)."""
     def reduce_degree(self, tolerance: float) -> dict:
         """The curve one degree lower while it moves by at most `tolerance` (model units, >= 0): a dict
-        {"curve", "error_bound" (a guaranteed bound of the change), "bezier_bound"}. Non-rational
-        curves only; raises when no such curve is within the tolerance.
+        {"curve", "error_bound" (a guaranteed bound of the change), "bezier_bound", "tolerance"}
+        (`hula edit reduce-degree`'s report). Non-rational curves only; raises when no such curve is within
+        the tolerance.
+        """
+    def to_law(self) -> dict:
+        """The curve written out as an exact law of t (a rational polynomial per knot span, `hula edit to-law`):
+        a dict {"law" (a Law), "expression", "spans", "degree", "max_difference" (max |law(t) - C(t)|
+        over 1,001 samples), "expression_length"}.
         """
     def split(self, t: float) -> tuple:
         """The pieces on [a, t] and [t, b], each clamped at t."""
