@@ -295,6 +295,36 @@ TEST(HelicalOffset, PlaneCurveBishopWithoutTwistIsThePlanarOffset) {
   EXPECT_THROW((void)helical_offset(s, "0.2", "0"), Error);  // Frenet: undefined at the inflection
 }
 
+// Checks the Bishop frame of a C2 cubic space NURBS, whose torsion jumps at every interior knot: the offset
+// is found (it used to refine its quadrature without end across the jumps) and, with no twist, H − C is d U with
+// U a unit normal that only turns with the tangent (U' has no part along T × U: rotation-minimising), to the
+// accuracy the options ask, at 200 parameters.
+TEST(HelicalOffset, BishopOfCubicSpaceNurbsIsRotationMinimisingAcrossKnots) {
+  const nurbs::NurbsCurve c(3, {0, 0, 0, 0, 0.25, 0.5, 0.75, 1, 1, 1, 1},
+                            {{0, 0, 0}, {1, 2, 0.5}, {2, 1, 2}, {3, -1, 1}, {4, 0, -1}, {5, 2, 0}, {6, 1, 1}});
+  HelicalOffsetOptions o;
+  o.frame = OffsetFrame::Bishop;
+  o.tolerance = 1e-6;
+  const double d = 0.1;
+  const HelicalOffset h = helical_offset(curve::Curve(c), "0.1", "0", o);
+  double worst_distance = 0.0, worst_normal = 0.0, worst_turn = 0.0;
+  for (int i = 1; i < 200; ++i) {
+    const double t = i / 200.0;
+    const auto dc = c.derivatives(t, 1);
+    const auto dh = h.curve.nurbs().derivatives(t, 1);
+    const Vec3 T = normalized(dc[1]);
+    const Vec3 U = (dh[0] - dc[0]) / d;
+    const Vec3 dU = (dh[1] - dc[1]) / d;
+    worst_distance = std::max(worst_distance, std::abs(norm(dh[0] - dc[0]) - d));
+    worst_normal = std::max(worst_normal, std::abs(dot(U, T)));
+    worst_turn = std::max(worst_turn, std::abs(dot(dU, cross(T, U))) / norm(dc[1]));
+  }
+  EXPECT_LE(worst_distance, 2 * o.tolerance);
+  EXPECT_LE(worst_normal, 2 * o.tolerance / d);
+  // The Frenet frame of this curve turns about T at |τ| up to ~1: a rotation-minimising frame does not.
+  EXPECT_LE(worst_turn, 1e-3);
+}
+
 // Checks bad laws are refused naming the option.
 TEST(HelicalOffset, BadLawsNameTheOption) {
   const curve::Curve c = curve::Curve::from_law("vec(2*cos(t), 2*sin(t))", "t", {0.0, 1.0});

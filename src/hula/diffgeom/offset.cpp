@@ -274,12 +274,19 @@ std::array<double, 2> scalar_values(const law::CurveEvaluator& e, double t) {
 
 // The Bishop angle φ(t) = −∫_a^t τ|C'| as a quintic Hermite NURBS (x = φ) on dom, with exact φ' and φ'' at its
 // breakpoints and φ from adaptive quadrature; segments double until φ at every segment's midpoint agrees with
-// the quadrature within `tol`. Returns the curve and the largest disagreement.
+// the quadrature within `tol`. The torsion of a NURBS jumps at its knots of continuity below C3 (`breaks`):
+// φ is fitted piece by piece between them, with one-sided derivatives at their ends, and the pieces are joined
+// C0 — integrated across a jump, the quadrature and the Hermite fit would refine without end. Returns the curve
+// and the largest disagreement.
 std::pair<nurbs::NurbsCurve, double> bishop_angle(const law::Law& dphi, const std::string& parameter, Interval dom,
-                                                  double tol) {
+                                                  std::span<const double> breaks, double tol) {
   const law::CurveEvaluator e(dphi, parameter, 1);
+  // τ|C'| of a NURBS carries rounding noise near 1e-12 of its size, so a tighter relative target (or one
+  // relative to a piece whose angle nearly cancels) cannot be met and Gauss–Kronrod would bisect 2^20 times;
+  // the depth cap bounds the work, and φ is checked against `tol` below in any case.
   law::IntegrationOptions io;
-  io.relative_tolerance = 1e-13;
+  io.relative_tolerance = 1e-11;
+  io.max_depth = 8;
   auto integral = [&](double a, double b) {
     const law::IntegrationResult r = law::integrate(dphi, parameter, a, b, io);
     if (r.divergent || !std::isfinite(r.value))
@@ -289,37 +296,53 @@ std::pair<nurbs::NurbsCurve, double> bishop_angle(const law::Law& dphi, const st
                   {.field = "frame"});
     return r.value;
   };
-  const double L = dom.end - dom.start;
-  for (std::size_t m = 32; m <= 4096; m *= 2) {
-    std::vector<double> ts(m + 1), us(m + 1);
-    std::vector<Vec3> P(m + 1), D1(m + 1), D2(m + 1);
-    double phi = 0.0;
-    for (std::size_t i = 0; i <= m; ++i) {
-      ts[i] = i == m ? dom.end : dom.start + L * static_cast<double>(i) / static_cast<double>(m);
-      us[i] = static_cast<double>(i) / static_cast<double>(m);
-      if (i > 0) phi += integral(ts[i - 1], ts[i]);
-      const std::array<double, 2> v = scalar_values(e, ts[i]);
-      if (!std::isfinite(v[0]) || !std::isfinite(v[1]))
-        throw Error(Errc::NumericalFailure,
-                    "the Bishop frame of this space curve is undefined at " + parameter + " = " + format_number(ts[i]) +
-                        " (κ = 0 or C' = 0 there)",
-                    {.field = "frame"});
-      // Hermite data in u = (t − a) / L: dφ/du = L φ', d²φ/du² = L² φ''.
-      P[i] = {phi, 0.0, 0.0};
-      D1[i] = {L * v[0], 0.0, 0.0};
-      D2[i] = {L * L * v[1], 0.0, 0.0};
+  // One piece [a, b] starting at angle phi0: φ', φ'' taken inside the piece at its ends.
+  auto piece = [&](double a, double b, double phi0) -> std::pair<nurbs::NurbsCurve, double> {
+    const double L = b - a;
+    for (std::size_t m = 8; m <= 4096; m *= 2) {
+      std::vector<double> ts(m + 1), us(m + 1);
+      std::vector<Vec3> P(m + 1), D1(m + 1), D2(m + 1);
+      double phi = phi0;
+      for (std::size_t i = 0; i <= m; ++i) {
+        ts[i] = i == m ? b : a + L * static_cast<double>(i) / static_cast<double>(m);
+        us[i] = static_cast<double>(i) / static_cast<double>(m);
+        if (i > 0) phi += integral(ts[i - 1], ts[i]);
+        const double at = i == m ? std::nextafter(b, a) : ts[i];
+        const std::array<double, 2> v = scalar_values(e, at);
+        if (!std::isfinite(v[0]) || !std::isfinite(v[1]))
+          throw Error(Errc::NumericalFailure,
+                      "the Bishop frame of this space curve is undefined at " + parameter + " = " +
+                          format_number(ts[i]) + " (κ = 0 or C' = 0 there)",
+                      {.field = "frame"});
+        // Hermite data in u = (t − a) / L: dφ/du = L φ', d²φ/du² = L² φ''.
+        P[i] = {phi, 0.0, 0.0};
+        D1[i] = {L * v[0], 0.0, 0.0};
+        D2[i] = {L * L * v[1], 0.0, 0.0};
+      }
+      const nurbs::NurbsCurve c = nurbs::reparameterise(nurbs::hermite_quintic(P, D1, D2, us, 2), {a, b});
+      double err = 0.0;
+      for (std::size_t i = 1; i <= m; ++i) {
+        const double mid = 0.5 * (ts[i - 1] + ts[i]);
+        err = std::max(err, std::abs(c.evaluate(mid).x - (P[i - 1].x + integral(ts[i - 1], mid))));
+      }
+      if (err <= tol) return {c, err};
     }
-    const nurbs::NurbsCurve c = nurbs::reparameterise(nurbs::hermite_quintic(P, D1, D2, us, 2), dom);
-    double err = 0.0;
-    for (std::size_t i = 1; i <= m; ++i) {
-      const double mid = 0.5 * (ts[i - 1] + ts[i]);
-      err = std::max(err, std::abs(c.evaluate(mid).x - (P[i - 1].x + integral(ts[i - 1], mid))));
-    }
-    if (err <= tol) return {c, err};
+    throw Error(Errc::NumericalFailure,
+                "the Bishop angle did not reach " + format_number(tol) + " radians with 4096 segments on [" +
+                    format_number(a) + ", " + format_number(b) + "]",
+                {.field = "tolerance"});
+  };
+  std::vector<double> cuts{dom.start};
+  for (const double t : breaks)
+    if (t > cuts.back() && t < dom.end) cuts.push_back(t);
+  cuts.push_back(dom.end);
+  auto [curve, err] = piece(cuts[0], cuts[1], 0.0);
+  for (std::size_t k = 1; k + 1 < cuts.size(); ++k) {
+    auto [next, e_k] = piece(cuts[k], cuts[k + 1], curve.evaluate(cuts[k]).x);
+    curve = nurbs::join(curve, next, 1e-9 * (1.0 + std::abs(curve.evaluate(cuts[k]).x)));
+    err = std::max(err, e_k);
   }
-  throw Error(Errc::NumericalFailure,
-              "the Bishop angle did not reach " + format_number(tol) + " radians with 4096 segments",
-              {.field = "tolerance"});
+  return {std::move(curve), err};
 }
 
 }  // namespace
@@ -395,7 +418,9 @@ HelicalOffset helical_offset(const curve::Curve& curve, std::string_view distanc
       (void)de.derivatives(dom.start + (dom.end - dom.start) * i / 200.0, o);
       dmax = std::max(dmax, std::abs(o[0].x));
     }
-    auto [phi_curve, err] = bishop_angle(dphi, p.parameter, dom, 0.1 * options.tolerance / std::max(1.0, dmax));
+    const std::vector<double> breaks =
+        p.printable ? std::vector<double>{} : detail::low_continuity_knots(curve.nurbs(), 3);
+    auto [phi_curve, err] = bishop_angle(dphi, p.parameter, dom, breaks, 0.1 * options.tolerance / std::max(1.0, dmax));
     angle_error = err * dmax;
     const law::Law phi = law::term(p.context.curve(phi_curve, p.context.parameter(p.parameter), "bishop_angle"), 1);
     u = law::cos(phi) * f.normal + law::sin(phi) * f.binormal;
