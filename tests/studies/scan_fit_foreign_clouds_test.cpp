@@ -100,7 +100,9 @@ KnownCurve bezier_curve(double size, bool s_shape, bool planar, std::mt19937_64&
     const double s = 1.0 - t;
     return (p[1] - p[0]) * (3.0 * s * s) + (p[2] - p[1]) * (6.0 * s * t) + (p[3] - p[2]) * (3.0 * t * t);
   };
-  c.d2 = [p](double t) { return (p[2] - p[1] * 2.0 + p[0]) * (6.0 * (1.0 - t)) + (p[3] - p[2] * 2.0 + p[1]) * (6.0 * t); };
+  c.d2 = [p](double t) {
+    return (p[2] - p[1] * 2.0 + p[0]) * (6.0 * (1.0 - t)) + (p[3] - p[2] * 2.0 + p[1]) * (6.0 * t);
+  };
   return c;
 }
 
@@ -112,9 +114,7 @@ KnownCurve wave_curve(double size, bool planar, std::mt19937_64& rng) {
   c.planar = planar;
   const double zc = planar ? 0.0 : 1.0;
   c.at = [=](double t) { return Vec3{size * t, a * std::sin(w * t + phase), zc * a * std::cos(w * t + phase)}; };
-  c.d1 = [=](double t) {
-    return Vec3{size, a * w * std::cos(w * t + phase), -zc * a * w * std::sin(w * t + phase)};
-  };
+  c.d1 = [=](double t) { return Vec3{size, a * w * std::cos(w * t + phase), -zc * a * w * std::sin(w * t + phase)}; };
   c.d2 = [=](double t) {
     return Vec3{0.0, -a * w * w * std::sin(w * t + phase), -zc * a * w * w * std::cos(w * t + phase)};
   };
@@ -221,9 +221,9 @@ std::vector<Case> cases() {
 std::string describe(const Case& c) {
   static const char* orders[] = {"in order", "shuffled", "reversed"};
   return std::string(c.generator == Generator::BezierGaussian ? "Bézier/Gaussian" : "wave/Laplace") +
-         (c.planar ? " planar" : " space") + (c.s_shape && c.generator == Generator::BezierGaussian ? " S" : "") + ", " + orders[static_cast<int>(c.order)] +
-         ", size " + std::to_string(c.size) + ", " + std::to_string(c.points) + " points, σ/tol " +
-         std::to_string(c.sigma_over_tolerance);
+         (c.planar ? " planar" : " space") + (c.s_shape && c.generator == Generator::BezierGaussian ? " S" : "") +
+         ", " + orders[static_cast<int>(c.order)] + ", size " + std::to_string(c.size) + ", " +
+         std::to_string(c.points) + " points, σ/tol " + std::to_string(c.sigma_over_tolerance);
 }
 
 // Checks on each cloud: every generated stray is found; no point within 0.25 / 0.3 of the tolerance
@@ -240,7 +240,8 @@ void check_cloud(std::size_t index) {
   for (const std::size_t s : cloud.strays)
     EXPECT_TRUE(std::binary_search(r.strays.begin(), r.strays.end(), s)) << "stray " << s << " kept";
   for (const std::size_t s : r.strays)
-    EXPECT_GE(foot(cloud.curve, cloud.points[s]).distance, 0.25 / 0.3 * tolerance) << "point " << s << " called a stray";
+    EXPECT_GE(foot(cloud.curve, cloud.points[s]).distance, 0.25 / 0.3 * tolerance)
+        << "point " << s << " called a stray";
   for (std::size_t i = 0; i < cloud.points.size(); i += 7)
     if (!std::binary_search(r.strays.begin(), r.strays.end(), i)) {
       EXPECT_LE(nurbs::closest_point(r.faired, cloud.points[i]).distance, tolerance * (1.0 + 1e-9)) << "point " << i;
