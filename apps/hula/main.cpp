@@ -43,6 +43,7 @@
 #include "hula/io/atomic_file.hpp"
 #include "hula/io/error_json.hpp"
 #include "hula/io/json_write.hpp"
+#include "hula/oli/process_ranks.hpp"
 
 namespace hula::cli {
 /// `hula fit` (commands/fit.cpp): scanned points or a "fit" study -> faired class-A curve, strays, figures.
@@ -173,14 +174,11 @@ void refuse_copies_under_mpi_launcher(const CLI::App& command) {
   const auto [copies, variable] = launcher_copies();
   if (copies <= 1) return;
   const std::string name = command.get_name();
-#if defined(HULA_WITH_MPI)
-  if (name == "batch" || (name == "optimise" && command.count("--islands") > 0)) return;
-  const std::string why = "hula " + name + " does not use MPI";
-  const std::string fix = "run it once, without the launcher";
-#else
-  const std::string why = "this hula was built without MPI (HULA_MPI=OFF)";
-  const std::string fix = "run it without the launcher, or use a hula built with -DHULA_MPI=ON";
-#endif
+  const bool mpi = hula::oli::runs_mpi();
+  if (mpi && (name == "batch" || (name == "optimise" && command.count("--islands") > 0))) return;
+  const std::string why = mpi ? "hula " + name + " does not use MPI" : "this hula was built without MPI (HULA_MPI=OFF)";
+  const std::string fix =
+      mpi ? "run it once, without the launcher" : "run it without the launcher, or use a hula built with -DHULA_MPI=ON";
   throw hula::Error(hula::Errc::Unsupported,
                     why + ", but an MPI launcher started it as one of several copies (" + variable +
                         "): each would run the whole command on its own, with interleaved output; " + fix,

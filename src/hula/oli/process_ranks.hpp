@@ -22,6 +22,9 @@ struct RankedSolve {
   std::string transport = "threads";  ///< "threads" (this process) or "mpi" (one island per rank)
 };
 
+/// True in HULA_MPI builds: campaigns and islands can run one per rank under an MPI launcher.
+[[nodiscard]] bool runs_mpi() noexcept;
+
 /// True when this process is one rank of an mpirun job with more than one rank and the build runs MPI
 /// (optim::launched_by_mpi in HULA_MPI builds; false otherwise).
 [[nodiscard]] bool launched_by_mpi() noexcept;

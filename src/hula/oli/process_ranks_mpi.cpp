@@ -14,6 +14,8 @@ constexpr int kTagItem = 12;    // 0 -> worker: an item index, or -1 = stop
 
 }  // namespace
 
+bool runs_mpi() noexcept { return true; }
+
 bool launched_by_mpi() noexcept { return optim::launched_by_mpi(); }
 
 std::optional<RankedSolve> solve_on_ranks(const optim::Problem& problem, const optim::SolveOptions& options) {

@@ -13,6 +13,8 @@ namespace {
 
 }  // namespace
 
+bool runs_mpi() noexcept { return false; }
+
 bool launched_by_mpi() noexcept { return false; }
 
 std::optional<RankedSolve> solve_on_ranks(const optim::Problem& problem, const optim::SolveOptions& options) {
