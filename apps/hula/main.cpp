@@ -244,6 +244,8 @@ int main(int argc, char** argv) {
         hula::cli::add_deviation(app),
         hula::cli::add_continuity(app),
         hula::cli::add_energy(app),
+        hula::cli::add_match(app),
+        hula::cli::add_blend(app),
         hula::cli::add_serve(app),
         hula::cli::add_batch(app),
     };

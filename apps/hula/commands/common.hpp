@@ -158,6 +158,10 @@ struct Command {
 [[nodiscard]] Command add_continuity(CLI::App& app);
 /// `hula energy`: bending and curvature-variation energies.
 [[nodiscard]] Command add_energy(CLI::App& app);
+/// `hula match`: A's end made G0-G3 to B.
+[[nodiscard]] Command add_match(CLI::App& app);
+/// `hula blend`: a fair G1-G3 blend between two curve ends.
+[[nodiscard]] Command add_blend(CLI::App& app);
 /// `hula convert`: curves between JSON, STEP, IGES, DXF and SVG.
 [[nodiscard]] Command add_convert(CLI::App& app);
 /// `hula completion bash|man`: the completion script and the man pages, generated from the registered commands.

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "hula/core/error.hpp"
@@ -145,6 +146,57 @@ Json join_continuity_answer(const curve::Curve& a, const curve::Curve& b) {
   doc["left"] = std::move(left);
   doc["right"] = std::move(right);
   return doc;
+}
+
+int continuity_order_from_name(std::string_view text, int lowest, std::string_view field) {
+  std::string_view digits = text;
+  if (!digits.empty() && (digits.front() == 'G' || digits.front() == 'g')) digits.remove_prefix(1);
+  if (digits.size() == 1 && digits.front() >= '0' && digits.front() <= '3') {
+    const int k = digits.front() - '0';
+    if (k >= lowest) return k;
+  }
+  throw Error(
+      Errc::InvalidOption,
+      std::string(field) + " must be one of G" + std::to_string(lowest) + " … G3, got '" + std::string(text) + "'",
+      {.field = std::string(field)});
+}
+
+CurveJoinAnswer match_answer(const curve::Curve& a, const curve::Curve& b, const diffgeom::MatchOptions& options) {
+  diffgeom::MatchResult r = diffgeom::match_end(a.nurbs(), b.nurbs(), options);
+  Json doc = Json::object();
+  doc["requested"] = order_name('G', options.continuity);
+  doc["geometric"] = order_name('G', r.continuity.geometric);
+  doc["parametric"] = order_name('C', r.continuity.parametric);
+  doc["tangent_angle"] = number_or_null(r.continuity.tangent_angle);
+  doc["curvature_left"] = number_or_null(r.continuity.curvature_left);
+  doc["curvature_right"] = number_or_null(r.continuity.curvature_right);
+  doc["moved"] = r.moved;
+  doc["inserted_knots"] = r.inserted_knots;
+  doc["degree_elevation"] = r.degree_elevation;
+  doc["target_parameter"] = r.target_parameter;
+  doc["degree"] = r.curve.degree();
+  doc["control_points"] = r.curve.control_points().size();
+  return {std::move(r.curve), std::move(doc)};
+}
+
+CurveJoinAnswer blend_answer(const curve::Curve& a, const curve::Curve& b, const diffgeom::BlendOptions& options) {
+  diffgeom::BlendResult r = diffgeom::blend(a.nurbs(), b.nurbs(), options);
+  auto side = [](const diffgeom::Continuity& c) {
+    Json j = Json::object();
+    j["geometric"] = order_name('G', c.geometric);
+    j["parametric"] = order_name('C', c.parametric);
+    return j;
+  };
+  Json doc = Json::object();
+  doc["requested"] = order_name('G', options.continuity);
+  doc["start"] = side(r.start);
+  doc["end"] = side(r.end);
+  doc["scale"] = r.scale;
+  doc["curvature_variation"] = energy_json(r.curvature_variation);
+  doc["curvature_extrema"] = r.curvature_extrema;
+  doc["degree"] = r.curve.degree();
+  doc["control_points"] = r.curve.control_points().size();
+  return {std::move(r.curve), std::move(doc)};
 }
 
 Json energy_answer(const curve::Curve& curve) {

@@ -10,8 +10,10 @@
 #pragma once
 
 #include <span>
+#include <string_view>
 
 #include "hula/curve/curve.hpp"
+#include "hula/diffgeom/match_blend.hpp"
 #include "hula/io/json_curve.hpp"
 #include "hula/nurbs/deviation.hpp"
 
@@ -47,6 +49,31 @@ namespace hula::io {
 /// The fairness energies of a curve (diffgeom::bending_energy and curvature_variation_energy of its NURBS):
 /// {"bending": {"value", "error_estimate", "converged"}, "curvature_variation": {...}}.
 [[nodiscard]] Json energy_answer(const curve::Curve& curve);
+
+/// A curve made from two curves (`hula match`, `hula blend`) and the members that report it.
+struct CurveJoinAnswer {
+  nurbs::NurbsCurve curve;
+  Json report = Json::object();
+};
+
+/// "G0" … "G3" (or "0" … "3") as k, for a --continuity option between `lowest` and G3.
+/// @throws hula::Error(Errc::InvalidOption) naming `field` for any other text
+[[nodiscard]] int continuity_order_from_name(std::string_view text, int lowest, std::string_view field);
+
+/// A's end matched to B (diffgeom::match_end): the new A and {"requested": "G<k>", "geometric": "G<k>" or null
+/// (the continuity reached, diffgeom::compare_sides), "parametric", "tangent_angle", "curvature_left",
+/// "curvature_right", "moved" (pole indices), "inserted_knots", "degree_elevation", "target_parameter" (on B),
+/// "degree", "control_points" (count)}.
+/// @throws as diffgeom::match_end
+[[nodiscard]] CurveJoinAnswer match_answer(const curve::Curve& a, const curve::Curve& b,
+                                           const diffgeom::MatchOptions& options);
+
+/// The blend from A's end to B's start (diffgeom::blend): the curve and {"requested": "G<k>", "start", "end"
+/// (each {"geometric", "parametric"} reached), "scale", "curvature_variation" {"value", "error_estimate",
+/// "converged"} (∫(dκ/ds)² ds), "curvature_extrema" (count), "degree", "control_points" (count)}.
+/// @throws as diffgeom::blend
+[[nodiscard]] CurveJoinAnswer blend_answer(const curve::Curve& a, const curve::Curve& b,
+                                           const diffgeom::BlendOptions& options);
 
 /// The thesis's example curves of `hula demo` (7.1.2, Table 3) and their descriptions.
 [[nodiscard]] Json thesis_examples_json();
