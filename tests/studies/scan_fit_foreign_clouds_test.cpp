@@ -280,6 +280,9 @@ TEST_P(ScanFitForeignClouds, StraysFoundCurveWithinThreeSigmaInflectionsKept) { 
 
 INSTANTIATE_TEST_SUITE_P(Clouds, ScanFitForeignClouds, ::testing::ValuesIn(checked_clouds()));
 
+// Disabled until issue 21 is done: on this shuffled 300-point wavy helix the fitted curve stops 0.34 short of
+// the good end point (0.001 from the known curve), which is then called a stray; the ordering must keep a lone
+// end point.
 TEST(ScanFitForeignCloudsKnownFailure, DISABLED_ShuffledWavyHelixKeepsItsEndPoint) { check_cloud(kKnownFailure); }
 
 // Checks the generators themselves: the Bézier S has one inflection and the C none, the planar wave
