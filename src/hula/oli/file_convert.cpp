@@ -169,6 +169,15 @@ FileFormat resolve_format(const std::optional<FileFormat>& given, const fs::path
   return f;
 }
 
+// What a write needs that can be refused before anything is read: the SVG tolerance and the output path.
+void check_output_options(const ConvertOptions& options, const fs::path& output) {
+  if (!std::isfinite(options.svg_tolerance) || !(options.svg_tolerance > 0.0))
+    throw Error(Errc::InvalidArgument,
+                "tolerance = " + format_number(options.svg_tolerance) + " must be finite and > 0",
+                {.field = "tolerance"});
+  io::check_output_path(output, "--output");
+}
+
 }  // namespace
 
 std::vector<Label> read_curve_file(Document& document, const fs::path& input, const ConvertOptions& options,
@@ -180,11 +189,7 @@ std::vector<Label> read_curve_file(Document& document, const fs::path& input, co
 void write_curve_file(const Document& document, std::span<const Label> all, const fs::path& output,
                       const ConvertOptions& options, ConvertReport& report) {
   report.output_format = resolve_format(options.output_format, output);
-  if (!std::isfinite(options.svg_tolerance) || !(options.svg_tolerance > 0.0))
-    throw Error(Errc::InvalidArgument,
-                "tolerance = " + format_number(options.svg_tolerance) + " must be finite and > 0",
-                {.field = "tolerance"});
-  io::check_output_path(output, "--output");
+  check_output_options(options, output);
   std::vector<Label> labels;
   for (Label l : all)
     if (report.output_format == FileFormat::JsonFile || document.get(l).kind() == EntityKind::Curve)
@@ -237,11 +242,7 @@ ConvertReport convert_file(const fs::path& input, const fs::path& output, const 
   // Both formats, the tolerance and the output-path policy are checked before anything is read.
   report.input_format = resolve_format(options.input_format, input);
   report.output_format = resolve_format(options.output_format, output);
-  if (!std::isfinite(options.svg_tolerance) || !(options.svg_tolerance > 0.0))
-    throw Error(Errc::InvalidArgument,
-                "tolerance = " + format_number(options.svg_tolerance) + " must be finite and > 0",
-                {.field = "tolerance"});
-  io::check_output_path(output, "--output");
+  check_output_options(options, output);
   Document document;
   const std::vector<Label> all = read_into(document, input, report.input_format, report);
   bool any_curve = report.output_format == FileFormat::JsonFile && !all.empty();
