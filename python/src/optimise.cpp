@@ -23,7 +23,6 @@
 #include "hula/core/error.hpp"
 #include "hula/io/optimise_request.hpp"
 #include "hula/io/run_report_json.hpp"
-#include "hula/optim/pareto.hpp"
 #include "hula/optim/run_log.hpp"
 #include "hula/optim/solve.hpp"
 #include "hula/optim/test_problems.hpp"
@@ -259,12 +258,8 @@ py::dict run(const optim::Problem& problem, const std::string& algorithm, const 
   } else {
     out["front_x"] = rows(r.solutions, true, problem.dimension());
     out["front_f"] = rows(r.solutions, false, problem.objectives);
-    // The hypervolume of the feasible members (io::solve_result_to_json's rule) against the reference point.
     if (reference) {
-      std::vector<double> points;
-      for (const optim::Solution& x : r.solutions)
-        if (x.violation == 0.0) points.insert(points.end(), x.objectives.begin(), x.objectives.end());
-      out["hypervolume"] = optim::hypervolume(points, problem.objectives, *reference);
+      out["hypervolume"] = io::feasible_hypervolume(r.solutions, problem.objectives, *reference);
       out["reference"] = to_array(*reference);
     }
   }

@@ -121,6 +121,14 @@ const optim::Solution& best_of(const std::vector<optim::Solution>& solutions) {
 
 }  // namespace
 
+double feasible_hypervolume(std::span<const optim::Solution> solutions, std::size_t objectives,
+                            std::span<const double> reference) {
+  std::vector<double> points;
+  for (const optim::Solution& s : solutions)
+    if (s.violation == 0.0) points.insert(points.end(), s.objectives.begin(), s.objectives.end());
+  return optim::hypervolume(points, objectives, reference);
+}
+
 Json solve_result_to_json(const optim::SolveResult& result, const optim::Problem& problem,
                           const std::optional<std::vector<double>>& reference) {
   const bool constrained = problem.inequality_constraints + problem.equality_constraints > 0;
@@ -134,14 +142,10 @@ Json solve_result_to_json(const optim::SolveResult& result, const optim::Problem
   std::stable_sort(front.begin(), front.end(),
                    [](const optim::Solution& x, const optim::Solution& y) { return x.objectives < y.objectives; });
   Json list = Json::array();
-  std::vector<double> points;
-  for (const optim::Solution& s : front) {
-    list.push_back(solution_to_json(s, constrained));
-    if (s.violation == 0.0) points.insert(points.end(), s.objectives.begin(), s.objectives.end());
-  }
+  for (const optim::Solution& s : front) list.push_back(solution_to_json(s, constrained));
   doc["front"] = std::move(list);
   if (reference) {
-    doc["hypervolume"] = optim::hypervolume(points, problem.objectives, *reference);
+    doc["hypervolume"] = feasible_hypervolume(front, problem.objectives, *reference);
     doc["reference"] = *reference;
   } else {
     doc["hypervolume"] = nullptr;

@@ -87,6 +87,11 @@ struct GenerationProgress {
 };
 /// The largest population whose front a progress report sorts.
 inline constexpr std::size_t kMaxProgressFrontSort = 10'000;
+/// The hypervolume of the feasible members of `solutions` (violation 0) w.r.t. `reference`: the "hypervolume"
+/// member of solve_result_to_json, and Python's OptimiseResult.hypervolume.
+[[nodiscard]] double feasible_hypervolume(std::span<const optim::Solution> solutions, std::size_t objectives,
+                                          std::span<const double> reference);
+
 /// The most objectives whose hypervolume a progress report measures (optim::hypervolume is meant for <= 5).
 inline constexpr std::size_t kMaxProgressHypervolumeObjectives = 5;
 
