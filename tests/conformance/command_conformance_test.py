@@ -20,6 +20,9 @@ door calls the same io entry):
 - an optimisation problem run with an algorithm named as every door names it:
   `hula optimise --problem-file` and a problem job of `hula serve` (io::solver_options,
   the one reader of solver settings; the best solution and the run report);
+- two curves joined: `hula match` and `hula blend`, POST /api/match and /api/blend
+  (io::match_answer, io::blend_answer; the commands write the made curve to -o, read
+  back here, where the routes answer it as "curve");
 - a closed interpolating spline and a degree reduction: `hula interpolate --closed` and
   hulahoops.interpolate(closed=True) (io::closed_cubic_curve), `hula edit reduce-degree`
   and NurbsCurve.reduce_degree (io::edit_curve); the server answers neither. The written
@@ -61,6 +64,15 @@ OFFSETS = [("random_planar_nurbs_0", -0.4), ("planar_bezier_s", 0.3), ("rational
 HELICAL = [("law_helix", "0.3", "4*t", "frenet"), ("random_space_nurbs_0", "0.1 + 0.05*t", "2*t", "frenet"),
            ("law_helix", "0.3", "0", "bishop"), ("planar_bezier_s", "0.2", "3*t", "bishop")]
 MAPPINGS = [("planar_bezier_s", "orthotomic", [0.5, -1.0], 2.0), ("rational_circle", "polar", [0.1, 0.2], 1.5)]
+# Match (A, B, continuity, options) and Blend (A, B, continuity, A's end, B's end): planar and space NURBS, a Bézier,
+# an interpolated curve, to B's start, end and a parameter; blends from and to either end.
+MATCHES = [("random_planar_nurbs_0", "random_planar_nurbs_1", "G3", []),
+           ("random_space_nurbs_0", "random_space_nurbs_1", "G2", ["--end", "start", "--to-end", "end"]),
+           ("planar_bezier_s", "random_planar_nurbs_0", "G1", ["--at", "0.3"]),
+           ("random_interpolated", "planar_bezier_s", "G0", ["--tangent-scale", "1.5"])]
+BLENDS = [("random_planar_nurbs_0", "random_planar_nurbs_1", "G2", "end", "start"),
+          ("random_space_nurbs_0", "random_space_nurbs_1", "G3", "start", "end"),
+          ("planar_bezier_s", "random_interpolated", "G1", "end", "end")]
 # A constrained two-objective problem file's single-objective cousin and a plain one.
 PROBLEMS = [
     ({"name": "shifted-sphere", "variables": [{"name": "x", "lower": -2, "upper": 2},
@@ -209,6 +221,34 @@ def constructions(hula, server, failures, folder):
     return len(OFFSETS) + len(HELICAL) + len(MAPPINGS)
 
 
+def joins(hula, server, failures, folder):
+    out = str(pathlib.Path(folder) / "joined.json")
+    for a, b, k, options in MATCHES:
+        cli = run(hula, "match", str(curve_file(a)), str(curve_file(b)), "--continuity", k, *options, "-o", out)
+        del cli["a"], cli["b"], cli["output"]
+        cli["curve"] = json.loads(pathlib.Path(out).read_text())
+        body = {"a": curve_json(a), "b": curve_json(b), "continuity": k}
+        for flag, value in zip(options[::2], options[1::2]):
+            body[flag[2:].replace("-", "_")] = float(value) if flag in ("--at", "--tangent-scale") else value
+        http = post(server, "/api/match", body)
+        compare(failures, f"match {a} {b} {k} {options}", [("CLI", cli), ("HTTP", http)])
+        if cli["geometric"] is None or int(cli["geometric"][1]) < int(k[1]):
+            failures.append(f"match {a} {b}: asked {k}, reached {cli['geometric']}")
+    for a, b, k, end, to_end in BLENDS:
+        cli = run(hula, "blend", str(curve_file(a)), str(curve_file(b)), "--continuity", k, "--end", end,
+                  "--to-end", to_end, "-o", out)
+        del cli["a"], cli["b"], cli["output"]
+        cli["curve"] = json.loads(pathlib.Path(out).read_text())
+        http = post(server, "/api/blend", {"a": curve_json(a), "b": curve_json(b), "continuity": k, "end": end,
+                                           "to_end": to_end})
+        compare(failures, f"blend {a} {b} {k} {end} {to_end}", [("CLI", cli), ("HTTP", http)])
+        # Independent fact: the blend is a Hermite curve of degree 2k + 1 reaching at least Gk at both ends.
+        reached = [cli[side]["geometric"] for side in ("start", "end")]
+        if cli["curve"]["degree"] != 2 * int(k[1]) + 1 or any(g is None or g[1] < k[1] for g in reached):
+            failures.append(f"blend {a} {b}: degree {cli['curve']['degree']}, ends {cli['start']} {cli['end']}")
+    return len(MATCHES) + len(BLENDS)
+
+
 def job(server, body):
     status, _, text = server.request("POST", "/api/jobs", body)
     assert status == 202, text
@@ -306,6 +346,7 @@ def main():
         checked += laws(hula, server, failures)
         checked += reconstructions(hula, server, failures)
         checked += constructions(hula, server, failures, folder)
+        checked += joins(hula, server, failures, folder)
         checked += optimisations(hula, server, failures, folder)
         checked += edits(hula, failures, folder)
     for f in failures:

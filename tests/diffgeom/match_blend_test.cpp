@@ -14,10 +14,12 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "hula/core/error.hpp"
 #include "hula/core/rng.hpp"
 #include "hula/nurbs/interpolate.hpp"
+#include "hula/nurbs/reparam.hpp"
 #include "hula/testing/curve_generators.hpp"
 
 namespace hula::diffgeom {
@@ -226,6 +228,47 @@ TEST(Blend, BothEndsAndFairness) {
           EXPECT_GE(r.curvature_extrema, std::min(sampled, 1)) << what;
         }
       }
+    }
+  }
+}
+
+// checks a blend from A's start or to B's end is the blend of the reversed curves, bit for bit, and that it leaves
+// A's start outwards (its start tangent against A's) and reaches B's end inwards (its end tangent along B's).
+TEST(Blend, EitherEndOfEachCurve) {
+  const nurbs::NurbsCurve a(3, {0, 0, 0, 0, 1, 1, 1, 1}, {{0, 0, 0}, {1, 1, 0}, {2, 1, 0}, {3, 0, 0}});
+  const nurbs::NurbsCurve b(3, {0, 0, 0, 0, 0.5, 1, 1, 1, 1}, {{6, 3, 0}, {7, 4, 0}, {8, 3, 1}, {9, 2, 0}, {9, 1, 0}});
+  for (const CurveEnd from : {CurveEnd::Start, CurveEnd::End}) {
+    for (const CurveEnd to : {CurveEnd::Start, CurveEnd::End}) {
+      BlendOptions o;
+      o.continuity = 3;
+      o.iterations = 12;
+      o.end = from;
+      o.target_end = to;
+      const BlendResult r = blend(a, b, o);
+      const nurbs::NurbsCurve ra = from == CurveEnd::Start ? nurbs::reverse(a) : a;
+      const nurbs::NurbsCurve rb = to == CurveEnd::End ? nurbs::reverse(b) : b;
+      BlendOptions forward = o;
+      forward.end = CurveEnd::End;
+      forward.target_end = CurveEnd::Start;
+      const BlendResult f = blend(ra, rb, forward);
+      const auto poles = [](const nurbs::NurbsCurve& c) {
+        return std::vector<Vec3>(c.control_points().begin(), c.control_points().end());
+      };
+      EXPECT_EQ(poles(r.curve), poles(f.curve));
+      EXPECT_EQ(r.scale, f.scale);
+      EXPECT_GE(r.start.geometric, 3);
+      EXPECT_GE(r.end.geometric, 3);
+      const double ta = from == CurveEnd::Start ? a.domain().start : a.domain().end;
+      const double tb = to == CurveEnd::Start ? b.domain().start : b.domain().end;
+      const auto da = a.derivatives(ta, 1);
+      const auto db = b.derivatives(tb, 1);
+      const auto d0 = r.curve.derivatives(0.0, 1);
+      const auto d1 = r.curve.derivatives(1.0, 1);
+      EXPECT_LT(distance(d0[0], da[0]), 1e-12);
+      EXPECT_LT(distance(d1[0], db[0]), 1e-12);
+      // Leaving A: along A' at its end, against it at its start; reaching B: along B' at its start.
+      EXPECT_GT(dot(d0[1], da[1]) * (from == CurveEnd::End ? 1.0 : -1.0), 0.0);
+      EXPECT_GT(dot(d1[1], db[1]) * (to == CurveEnd::Start ? 1.0 : -1.0), 0.0);
     }
   }
 }

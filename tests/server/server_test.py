@@ -244,6 +244,93 @@ class ApiTest(unittest.TestCase):
         e = self.call("POST", "/api/polar", {"curve": bad, "centre": [0, 0]}, expect=422)
         self.assertTrue(e["error"]["where"]["field"].startswith("curve"), e)
 
+    # checks Match and Blend over HTTP against the document's own continuity analysis: A's end matched G2 and G3 to
+    # B's start is Gk at the join knot of the one NURBS made of A and B (features.knots of the analysis route), with
+    # A's first pole kept and B's first pole reached (closed form); the G2 and G3 blends from A's end to B's start,
+    # and from A's start to B's end, are Gk at both joins of A + blend + B (A and B raised to the blend's degree by
+    # the elevate route), start and end on the chosen end poles, and their reported curvature extrema count is the
+    # analysis route's; bad options, coincident ends, a rational A and a parameter outside B are refused by name
+    def test_match_and_blend(self):
+        self.call("POST", "/api/documents", {"name": "joins.hula"}, expect=201)
+        base = "/api/documents/joins.hula"
+        a = {"kind": "nurbs", "degree": 3, "knots": [0, 0, 0, 0, 0.5, 1, 1, 1, 1],
+             "control_points": [[0, 0], [1, 2], [3, 2], [4, 1], [5, 0]]}
+        b = {"kind": "nurbs", "degree": 3, "knots": [0, 0, 0, 0, 0.4, 1, 1, 1, 1],
+             "control_points": [[6, -1], [7, -3], [9, -2], [10, 1], [11, 0]]}
+
+        def store(curve):
+            return self.call("POST", base + "/entities", {"curve": curve}, expect=201)["label"]
+
+        def nurbs_of(label, degree):
+            e = self.call("GET", f"{base}/entities/{label}")
+            while e["degree"] < degree:
+                self.call("POST", f"{base}/entities/{label}/elevate", {"times": degree - e["degree"]})
+                e = self.call("GET", f"{base}/entities/{label}")
+            return {"kind": "nurbs", "degree": e["degree"], "knots": e["knots"], "control_points": e["control_points"]}
+
+        def joined(*curves):
+            """One clamped NURBS of same-degree curves laid end to end (each starts where the last ends)."""
+            p = curves[0]["degree"]
+            knots, points, at = list(curves[0]["knots"][:-1]), list(curves[0]["control_points"]), []
+            for c in curves[1:]:
+                at.append(knots[-1])
+                shift = knots[-1] - c["knots"][0]
+                knots += [u + shift for u in c["knots"][p + 1:-1]]
+                points += c["control_points"][1:]
+            knots.append(knots[-1])
+            return {"kind": "nurbs", "degree": p, "knots": knots, "control_points": points}, at
+
+        def join_orders(curve, at):
+            label = store(curve)
+            knots = self.call("POST", f"{base}/entities/{label}/analysis", {"samples": 3})["features"]["knots"]
+            return [next(k["geometric"] for k in knots if abs(k["t"] - u) < 1e-12) for u in at]
+
+        for k in (2, 3):
+            r = self.call("POST", "/api/match", {"a": a, "b": b, "continuity": f"G{k}"})
+            self.assertEqual((r["requested"], r["geometric"]), (f"G{k}", f"G{k}"))
+            m = r["curve"]
+            self.assertEqual(m["control_points"][0], [0, 0])
+            self.assertLess(math.dist(m["control_points"][-1], [6, -1]), 1e-12)
+            self.assertEqual(r["moved"], list(range(r["control_points"] - k - 1, r["control_points"])))
+            whole, at = joined(m, b)
+            self.assertGreaterEqual(join_orders(whole, at)[0], k, (k, r))
+        # Matched to B at a parameter: the matched end lies on B there.
+        r = self.call("POST", "/api/match", {"a": a, "b": b, "continuity": "G1", "at": 0.4})
+        self.assertEqual((r["geometric"], r["target_parameter"]), ("G1", 0.4))
+        for k, ends in ((2, ("end", "start")), (3, ("end", "start")), (3, ("start", "end"))):
+            r = self.call("POST", "/api/blend", {"a": a, "b": b, "continuity": f"G{k}", "end": ends[0],
+                                                 "to_end": ends[1]})
+            self.assertEqual(r["requested"], f"G{k}")
+            for side in ("start", "end"):
+                self.assertGreaterEqual(int(r[side]["geometric"][1]), k, (k, ends, r[side]))
+            blend = r["curve"]
+            self.assertEqual(blend["degree"], 2 * k + 1)
+            first = a["control_points"][-1 if ends[0] == "end" else 0]
+            last = b["control_points"][0 if ends[1] == "start" else -1]
+            self.assertLess(math.dist(blend["control_points"][0], first), 1e-12)
+            self.assertLess(math.dist(blend["control_points"][-1], last), 1e-12)
+            label = store(blend)
+            features = self.call("POST", f"{base}/entities/{label}/analysis", {"samples": 3})["features"]
+            self.assertEqual(len(features["curvature_extrema"]), r["curvature_extrema"])
+            self.assertGreater(r["curvature_variation"]["value"], 0)
+            if ends == ("end", "start"):
+                ea, eb = nurbs_of(store(a), 2 * k + 1), nurbs_of(store(b), 2 * k + 1)
+                whole, at = joined(ea, blend, eb)
+                self.assertTrue(all(g >= k for g in join_orders(whole, at)), (k, join_orders(whole, at)))
+        for path, body, status, field in [
+                ("/api/match", {"a": a, "b": b, "continuity": "G4"}, 400, "continuity"),
+                ("/api/match", {"a": a, "b": b, "end": "middle"}, 400, "end"),
+                ("/api/match", {"a": a, "b": b, "at": 0.5, "to_end": "end"}, 400, "at"),
+                ("/api/match", {"a": a, "b": b, "at": 1.5}, 422, "at"),
+                ("/api/match", {"a": dict(a, weights=[1, 2, 1, 1, 1]), "b": b}, 501, "a"),
+                ("/api/match", {"a": a, "b": b, "colour": "red"}, 400, "colour"),
+                ("/api/blend", {"a": a, "b": b, "continuity": "G0"}, 400, "continuity"),
+                ("/api/blend", {"a": a, "b": b, "to_end": "both"}, 400, "to_end"),
+                ("/api/blend", {"a": a, "b": dict(b, control_points=[[5, 0]] + b["control_points"][1:])}, 400, "b"),
+                ("/api/blend", {"a": a}, 400, "b")]:
+            e = self.call("POST", path, body, expect=status)
+            self.assertEqual(e["error"]["where"].get("field"), field, (path, body, e))
+
     # checks reconstruction against the closed form circle of kappa = 1 (radius 1, quarter turn at s = pi/2), the fit
     # within the default 1e-6 of the size (the half circle's box is 2 by 1: diagonal sqrt(5))
     def test_reconstruct(self):

@@ -17,6 +17,9 @@ import { reverse } from './commands/reverse';
 import { split } from './commands/split';
 import { deleteSelected } from './commands/delete';
 import { importFile } from './commands/import-file';
+import { matchCurves } from './commands/match';
+import { blendCurves } from './commands/blend';
+import { JoinTool, type JoinHost } from './tools/join';
 import { finLines } from './api/adapt';
 import type {
   Analysis,
@@ -36,8 +39,10 @@ import { AnalysisScheduler } from './controller/analysis';
 import { ViewportController } from './controller/viewport-input';
 import { Connection } from './controller/connection';
 import { SPACE_FINS, fixFinBase, handlesOf, type ViewSettings } from './store/curves';
-import { loadViewState, saveViewState, type ViewState } from './store/viewstate';
-import { Graph, type Abscissa, type Quantity } from './graphs/graph';
+import type { ViewState } from './store/viewstate';
+import { DocumentSession } from './controller/document-session';
+import type { Abscissa, Graph } from './graphs/graph';
+import { GraphPanel } from './panels/graph-panel';
 import { Viewports, toVec3 } from './viewport/viewports';
 import type { Vec3, ViewName } from './viewport/math';
 import {
@@ -64,7 +69,11 @@ import {
 export class App {
   readonly store: DocumentStore;
   readonly viewports: Viewports;
-  readonly graphs: Graph[] = [];
+  /** The linked graphs under the views. */
+  readonly graphPanel: GraphPanel;
+  get graphs(): readonly Graph[] {
+    return this.graphPanel.graphs;
+  }
   readonly panels: Panels;
   readonly design: DesignByCurvature;
   readonly optimise: OptimisePanel;
@@ -93,8 +102,6 @@ export class App {
   get studyOf(): Map<string, string> {
     return this.view.studyOf;
   }
-  /** Set while a stored view state is applied: nothing is saved back meanwhile. */
-  private restoring = false;
   tool: Tool | null = null;
   toolName: ToolName = 'select';
   /** The snap toggles, the graphs' abscissa, the curves' view settings: store/view.ts. */
@@ -137,6 +144,7 @@ export class App {
   ) {
     this.store = new DocumentStore(docName);
     this.editor = new Editor(client, this.store);
+    this.session = new DocumentSession(this);
     this.drags = new DragController(this);
     this.analyses = new AnalysisScheduler(
       this.editor,
@@ -145,8 +153,8 @@ export class App {
         this.drags.analysisArrived(label, seq);
       },
       () => {
-        if (this.fitPending && !this.analysisPending) {
-          this.fitPending = false;
+        if (this.session.fitPending && !this.analysisPending) {
+          this.session.fitPending = false;
           this.fitAll();
         }
       },
@@ -164,7 +172,18 @@ export class App {
     this.optimise = new OptimisePanel(this);
     this.fairing = new FairingAssistant(this, document.getElementById('side')!);
     this.exportMenu = new ExportMenu((format) => void this.exportSelected(format));
-    this.makeGraphs();
+    this.graphPanel = new GraphPanel(document.getElementById('graphs')!, {
+      setAbscissa: (a) => {
+        this.setAbscissa(a);
+      },
+      updateGraphs: () => {
+        this.updateGraphs();
+      },
+      hoverSample: (index, from) => {
+        this.hoverSample(index, from);
+      },
+    });
+    this.design.attach(this.graphs[0]!);
     this.input = new ViewportController(this);
     this.input.bind();
     this.toolbar = new Toolbar(this);
@@ -255,72 +274,22 @@ export class App {
 
   // ---- document ------------------------------------------------------------
 
-  /** Open a document; `prefetched` is its GET already under way (started before the views were built). */
-  async open(name: string, prefetched?: Promise<DocumentState>): Promise<void> {
-    this.connection.close();
-    this.select(null);
-    this.view.clearCurves();
-    for (const label of this.store.entities.keys()) this.viewports.removeCurve(label);
-    this.store.entities.clear();
-    this.store.revision = -1;
-    this.store.name = name;
-    let doc;
-    try {
-      doc = await (prefetched ?? this.client.getDocument(name));
-    } catch (e) {
-      if (e instanceof ApiError && e.status === 404) doc = await this.client.createDocument(name);
-      else throw e;
-    }
-    this.store.load(doc);
-    this.restoreViewState();
-    document.getElementById('doc-name')!.textContent = name;
-    location.hash = `doc=${encodeURIComponent(name)}`;
-    this.connection.subscribe();
-    this.fitAll();
-    // Fit again once the curves' analyses are in (law and natural curves have no handles).
-    this.fitPending = this.store.entities.size > 0;
-  }
+  /** Opening documents and the page's stored view of each: controller/document-session.ts. */
+  readonly session: DocumentSession;
 
-  private fitPending = false;
+  /** Open a document; `prefetched` is its GET already under way (started before the views were built). */
+  open(name: string, prefetched?: Promise<DocumentState>): Promise<void> {
+    return this.session.open(name, prefetched);
+  }
 
   /** The page's state of this document as stored (selection, fins, layout, snap, objects). */
   get viewState(): ViewState {
-    const curves: ViewState['curves'] = {};
-    for (const [label, s] of this.view.settings)
-      if (this.store.entities.has(label))
-        curves[label] = { fins: s.fins, scale: s.scale, samples: s.samples, frames: s.frames };
-    return {
-      selected: this.selected,
-      layout: this.viewports.layout,
-      active: this.viewports.active,
-      snap: this.view.snap,
-      objectSnap: this.view.objectSnap,
-      abscissa: this.abscissa,
-      curves,
-      studyOf: Object.fromEntries(this.studyOf),
-    };
+    return this.session.viewState;
   }
 
   /** Store the page's state of this document (localStorage, one key per document). */
   viewStateChanged(): void {
-    if (this.restoring || this.store.revision < 0) return;
-    saveViewState(localStorage, this.store.name, this.viewState);
-  }
-
-  private restoreViewState(): void {
-    const v = loadViewState(localStorage, this.store.name);
-    this.restoring = true;
-    try {
-      for (const [label, c] of Object.entries(v.curves))
-        this.view.settings.set(label, { ...c, fins: [...c.fins] });
-      for (const [c, st] of Object.entries(v.studyOf)) this.studyOf.set(c, st);
-      this.view.set({ snap: v.snap, objectSnap: v.objectSnap, abscissa: v.abscissa });
-      this.viewports.setLayout(v.layout, v.active);
-      if (v.selected !== null && this.store.entities.has(v.selected)) this.select(v.selected);
-      this.redrawAll();
-    } finally {
-      this.restoring = false;
-    }
+    this.session.save();
   }
 
   /** Snap to existing points and curves (toggle "Objects", Shift+G). */
@@ -355,9 +324,7 @@ export class App {
     if (changed.includes('objectSnap'))
       (document.getElementById('osnap') as HTMLInputElement).checked = v.objectSnap;
     if (changed.includes('abscissa')) {
-      const sel = document.getElementById('abscissa') as HTMLSelectElement | null;
-      if (sel) sel.value = v.abscissa;
-      for (const g of this.graphs) g.abscissa = v.abscissa;
+      this.graphPanel.setAbscissa(v.abscissa);
       for (const label of this.store.entities.keys()) this.refreshAnalysis(label);
     }
     this.viewStateChanged();
@@ -618,63 +585,12 @@ export class App {
 
   // ---- graphs ----------------------------------------------------------------
 
-  private makeGraphs(): void {
-    const root = document.getElementById('graphs')!;
-    const defaults: Quantity[] = ['kappa', 'tau'];
-    defaults.forEach((q, i) => {
-      const box = document.createElement('div');
-      box.className = 'graph-box';
-      const row = document.createElement('div');
-      row.className = 'row';
-      const sel = document.createElement('select');
-      sel.setAttribute('aria-label', `Quantity of graph ${i + 1}`);
-      for (const [value, text] of Object.entries({
-        kappa: 'κ curvature',
-        radius: 'radius of curvature',
-        tau: 'τ torsion',
-        speed: 'speed',
-        logkappa: 'log curvature',
-        logtau: 'log torsion',
-      })) {
-        const o = document.createElement('option');
-        o.value = value;
-        o.textContent = text;
-        sel.appendChild(o);
-      }
-      sel.value = q;
-      row.appendChild(sel);
-      if (i === 0) {
-        const ab = document.createElement('select');
-        ab.id = 'abscissa';
-        ab.setAttribute('aria-label', 'Graph abscissa');
-        ab.innerHTML =
-          '<option value="s">against arc length s</option><option value="t">against parameter t</option>';
-        ab.addEventListener('change', () => {
-          this.setAbscissa(ab.value as Abscissa);
-        });
-        row.appendChild(ab);
-      }
-      box.appendChild(row);
-      root.appendChild(box);
-      const g = new Graph(box, q, `g${i}`);
-      sel.addEventListener('change', () => {
-        g.quantity = sel.value as Quantity;
-        this.updateGraphs();
-      });
-      g.onHover = (index) => {
-        this.hoverSample(index, g);
-      };
-      this.graphs.push(g);
-    });
-    this.design.attach(this.graphs[0]!);
-  }
-
   updateGraphs(): void {
     const a = this.selected ? this.analysisOf(this.selected) : undefined;
     // The fairing assistant's ghost, when there is one, else the curve before the last edit.
     const faired = this.fairing.analysis;
     const before = this.ghost?.label === this.selected ? this.ghost.analysis : undefined;
-    for (const g of this.graphs) g.show(a, faired ?? before, faired ? 'faired' : 'before');
+    this.graphPanel.show(a, faired ?? before, faired ? 'faired' : 'before');
   }
 
   /** Keep the curve's current analysis as the ghost (before an edit), or clear it. */
@@ -691,7 +607,7 @@ export class App {
     const a = this.selected ? this.store.analyses.get(this.selected) : undefined;
     const p = index !== null && a ? a.points[index] : undefined;
     this.viewports.setMarker(p ? toVec3(p) : null);
-    for (const g of this.graphs) if (g !== from) g.highlight(index);
+    this.graphPanel.highlight(index, from);
     this.viewports.root.dataset['hover'] = index === null ? '' : String(index);
     this.input.placeReadout(from !== undefined);
   }
@@ -724,7 +640,16 @@ export class App {
           ? new ControlPointTool(name, host)
           : name === 'hermite'
             ? new HermiteTool(host)
-            : null;
+            : name === 'match' || name === 'blend'
+              ? new JoinTool(name, this.joinHost(), this.joinContinuity)
+              : null;
+    const continuity = document.getElementById('join-continuity') as HTMLSelectElement | null;
+    if (continuity) {
+      continuity.hidden = name !== 'match' && name !== 'blend';
+      // G0 is Match's only.
+      const g0 = continuity.querySelector<HTMLOptionElement>('option[value="0"]');
+      if (g0) g0.disabled = name === 'blend';
+    }
     this.setStatus(
       this.tool?.hint ??
         'Select: click a curve; drag its points; wheel zooms, middle drag pans, Alt-drag orbits',
@@ -737,6 +662,43 @@ export class App {
 
   pointAt(view: ViewName, ev: PointerEvent): Vec3 | null {
     return this.input.pointAt(view, ev);
+  }
+
+  /** The continuity Match and Blend ask (k of Gk), kept between uses of the tools. */
+  private joinContinuity = 2;
+
+  /** Set the continuity of the Match or Blend tool in use (the toolbar's menu). */
+  setJoinContinuity(k: number): void {
+    if (this.tool instanceof JoinTool) this.tool.setContinuity(k);
+  }
+
+  private joinHost(): JoinHost {
+    return {
+      pick: (view, ev) => this.input.pickCurve(view, ev),
+      mark: (points) => {
+        this.viewports.setPreview([], points);
+      },
+      status: (t, error) => {
+        this.setStatus(t, error);
+      },
+      run: async (kind, request) => {
+        if (kind === 'blend') {
+          await blendCurves(this.editor, request);
+          return;
+        }
+        // A as it was is the ghost (drawn faintly, overlaid on the graphs) once the match is stored.
+        const before = this.store.analyses.get(request.a);
+        if (!(await matchCurves(this.editor, request)) || !before) return;
+        this.ghost = { label: request.a, analysis: before };
+        this.viewports.setGhost(before.points);
+        this.updateGraphs();
+      },
+      continuityChanged: (k) => {
+        this.joinContinuity = k;
+        const sel = document.getElementById('join-continuity') as HTMLSelectElement | null;
+        if (sel) sel.value = String(k);
+      },
+    };
   }
 
   /** The analysis the views and graphs ask for a curve (its view settings). */

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // `hula match A B --continuity G2 [--end start|end] [--to-end start|end | --at t] -o OUT`: A's end made G0–G3
 // to B's end or to B at a parameter, moving A's last k + 1 poles (io::match_answer); `hula blend A B
-// --continuity G3 -o OUT`: the fair Hermite blend from A's end to B's start (io::blend_answer). Both write the
+// --continuity G3 [--end start|end] [--to-end start|end] -o OUT`: the fair Hermite blend from A's end to B's
+// start, or from and to the ends named (io::blend_answer). Both write the
 // new curve and print the report with the continuity reached.
 #include <memory>
 #include <optional>
@@ -26,13 +27,6 @@ struct JoinArgs {
   std::string output;
 };
 
-diffgeom::CurveEnd end_from_name(const std::string& text, const char* field) {
-  if (text == "start") return diffgeom::CurveEnd::Start;
-  if (text == "end") return diffgeom::CurveEnd::End;
-  throw Error(Errc::InvalidOption, std::string("--") + field + " must be start or end, got '" + text + "'",
-              {.field = field});
-}
-
 int finish(const JoinArgs& args, io::CurveJoinAnswer answer) {
   io::write_curve_file(args.output, answer.curve);
   Json doc = Json::object();
@@ -48,8 +42,8 @@ int run_match(const JoinArgs& args) {
   io::check_output_path(args.output, "--output");
   diffgeom::MatchOptions options;
   options.continuity = io::continuity_order_from_name(args.continuity, 0, "continuity");
-  options.end = end_from_name(args.end, "end");
-  options.target_end = end_from_name(args.to_end, "to-end");
+  options.end = io::curve_end_from_name(args.end, "end");
+  options.target_end = io::curve_end_from_name(args.to_end, "to-end");
   if (args.at) {
     options.use_parameter = true;
     options.at = *args.at;
@@ -64,6 +58,8 @@ int run_blend(const JoinArgs& args) {
   io::check_output_path(args.output, "--output");
   diffgeom::BlendOptions options;
   options.continuity = io::continuity_order_from_name(args.continuity, 1, "continuity");
+  options.end = io::curve_end_from_name(args.end, "end");
+  options.target_end = io::curve_end_from_name(args.to_end, "to-end");
   const curve::Curve a = io::read_curve_file(args.a);
   const curve::Curve b = io::read_curve_file(args.b);
   return finish(args, io::blend_answer(a, b, options));
@@ -88,9 +84,11 @@ Command add_match(CLI::App& app) {
 Command add_blend(CLI::App& app) {
   auto args = std::make_shared<JoinArgs>();
   CLI::App* sub = app.add_subcommand("blend", "Fair G1-G3 Hermite blend curve from A's end to B's start");
-  sub->add_option("a", args->a, "Curve file (its end)")->required();
-  sub->add_option("b", args->b, "Curve file (its start)")->required();
+  sub->add_option("a", args->a, "Curve file the blend leaves")->required();
+  sub->add_option("b", args->b, "Curve file the blend reaches")->required();
   sub->add_option("--continuity", args->continuity, "G1, G2 or G3 (default G2)");
+  sub->add_option("--end", args->end, "End of A the blend leaves: start or end (default end)");
+  sub->add_option("--to-end", args->to_end, "End of B the blend reaches: start or end (default start)");
   sub->add_option("-o,--output", args->output, "Output curve file (JSON)")->required();
   return {sub, [args] { return run_blend(*args); }};
 }

@@ -158,6 +158,14 @@ void BlendOptions::validate() const {
 
 BlendResult blend(const nurbs::NurbsCurve& a, const nurbs::NurbsCurve& b, const BlendOptions& options) {
   options.validate();
+  if (options.end == CurveEnd::Start || options.target_end == CurveEnd::End) {
+    // The blend leaves the chosen end outwards and reaches the other inwards: the reversed curves' end and start.
+    BlendOptions forward = options;
+    forward.end = CurveEnd::End;
+    forward.target_end = CurveEnd::Start;
+    return blend(options.end == CurveEnd::Start ? nurbs::reverse(a) : a,
+                 options.target_end == CurveEnd::End ? nurbs::reverse(b) : b, forward);
+  }
   const Table ad = table(a, a.domain().end, nurbs::Side::Left);
   const Table bd = table(b, b.domain().start, nurbs::Side::Right);
   const double va = norm(ad[1]);

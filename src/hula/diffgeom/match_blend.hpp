@@ -10,9 +10,9 @@
 //    more pole). A gets knots inserted first when it has fewer than k + 2 poles
 //    (so its other end stays), and its degree raised when it is below k.
 //  - blend builds the Hermite curve (cubic G1, quintic G2, septic G3) from A's end
-//    to B's start whose end derivatives are the curves' own, scaled by one common
-//    factor m of the chord over the end speeds; m is chosen by golden-section
-//    search to minimise ∫(dκ/ds)² ds (curvature_variation_energy).
+//    to B's start (either end of each: a start is the end of the reversed curve) whose end derivatives are the curves'
+//    own, scaled by one common factor m of the chord over the end speeds; m is chosen by golden-section search to
+//    minimise ∫(dκ/ds)² ds (curvature_variation_energy).
 // Both report the continuity reached, measured by compare_sides (continuity.hpp).
 #pragma once
 #include <vector>
@@ -57,8 +57,10 @@ struct MatchResult {
 
 /// The blend options.
 struct BlendOptions {
-  int continuity = 2;      ///< 1 … 3 (cubic, quintic, septic Hermite)
-  double min_scale = 0.2;  ///< golden-section bracket of the common scale m; valid 0 < min < max ≤ 10
+  int continuity = 2;                     ///< 1 … 3 (cubic, quintic, septic Hermite)
+  CurveEnd end = CurveEnd::End;           ///< the end of A the blend leaves (Start: A is reversed first)
+  CurveEnd target_end = CurveEnd::Start;  ///< the end of B the blend reaches (End: B is reversed first)
+  double min_scale = 0.2;                 ///< golden-section bracket of the common scale m; valid 0 < min < max ≤ 10
   double max_scale = 3.0;
   int iterations = 30;  ///< golden-section steps; valid 1 … 200
   /// Throws hula::Error(Errc::InvalidOption) naming the bad field.
@@ -71,11 +73,12 @@ struct BlendResult {
   double scale = 1.0;                  ///< the chosen m
   EnergyResult curvature_variation{};  ///< ∫(dκ/ds)² ds of the blend
   int curvature_extrema = 0;           ///< curvature_extrema(curve).size()
-  Continuity start{};                  ///< A's end against the blend's start
-  Continuity end{};                    ///< the blend's end against B's start
+  Continuity start{};                  ///< A's chosen end against the blend's start
+  Continuity end{};                    ///< the blend's end against B's chosen end
 };
 
-/// Blends A's end with B's start (see the file comment).
+/// Blends A's chosen end with B's chosen end (see the file comment); A's start and B's end are blended as the
+/// end of reverse(A) and the start of reverse(B), bit for bit.
 /// @throws hula::Error(Errc::InvalidOption) for bad options; Errc::InvalidArgument naming "a" or "b" for zero
 ///   end speed, naming "b" when the ends coincide; as nurbs::hermite_cubic/quintic/septic
 [[nodiscard]] BlendResult blend(const nurbs::NurbsCurve& a, const nurbs::NurbsCurve& b,

@@ -161,6 +161,13 @@ int continuity_order_from_name(std::string_view text, int lowest, std::string_vi
       {.field = std::string(field)});
 }
 
+diffgeom::CurveEnd curve_end_from_name(std::string_view text, std::string_view field) {
+  if (text == "start") return diffgeom::CurveEnd::Start;
+  if (text == "end") return diffgeom::CurveEnd::End;
+  throw Error(Errc::InvalidOption, std::string(field) + " must be start or end, got '" + std::string(text) + "'",
+              {.field = std::string(field)});
+}
+
 CurveJoinAnswer match_answer(const curve::Curve& a, const curve::Curve& b, const diffgeom::MatchOptions& options) {
   diffgeom::MatchResult r = diffgeom::match_end(a.nurbs(), b.nurbs(), options);
   Json doc = Json::object();

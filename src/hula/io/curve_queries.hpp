@@ -60,6 +60,11 @@ struct CurveJoinAnswer {
 /// @throws hula::Error(Errc::InvalidOption) naming `field` for any other text
 [[nodiscard]] int continuity_order_from_name(std::string_view text, int lowest, std::string_view field);
 
+/// "start" or "end" as a curve end, for the end options of match and blend (`field` as the door names it:
+/// "to-end" for the command line's --to-end, "to_end" in a request body).
+/// @throws hula::Error(Errc::InvalidOption) naming `field` for any other text
+[[nodiscard]] diffgeom::CurveEnd curve_end_from_name(std::string_view text, std::string_view field);
+
 /// A's end matched to B (diffgeom::match_end): the new A and {"requested": "G<k>", "geometric": "G<k>" or null
 /// (the continuity reached, diffgeom::compare_sides), "parametric", "tangent_angle", "curvature_left",
 /// "curvature_right", "moved" (pole indices), "inserted_knots", "degree_elevation", "target_parameter" (on B),

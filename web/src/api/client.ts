@@ -25,6 +25,10 @@ import type {
   LawResponse,
   ReconstructRequest,
   ReconstructResponse,
+  MatchRequest,
+  MatchResult,
+  BlendRequest,
+  BlendResult,
 } from './types';
 import type * as Api from './openapi';
 import { analysisFromServer, entityFromServer, historyFromServer, isCurveKind } from './adapt';
@@ -323,6 +327,15 @@ export class Client {
   }
   reconstruct(req: ReconstructRequest): Promise<ReconstructResponse> {
     return this.request('POST', '/api/reconstruct', req);
+  }
+
+  /** A's end made G0–G3 to B (`hula match`); the document is not changed. */
+  match(req: MatchRequest): Promise<MatchResult> {
+    return this.request('POST', '/api/match', req);
+  }
+  /** The fair G1–G3 blend between two curve ends (`hula blend`); the document is not changed. */
+  blend(req: BlendRequest): Promise<BlendResult> {
+    return this.request('POST', '/api/blend', req);
   }
 
   startJob(body: Record<string, unknown>): Promise<Job> {

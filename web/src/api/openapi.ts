@@ -583,3 +583,59 @@ export type MappedCurve = {
   centre?: number[];
   radius?: number;
 };
+
+export type MatchRequest = {
+  a: CurveFile;
+  b: CurveFile;
+  continuity?: string;
+  end?: "start" | "end";
+  to_end?: "start" | "end";
+  at?: number;
+  tangent_scale?: number;
+};
+
+export type MatchResult = {
+  curve: CurveFile;
+  requested: string;
+  geometric: string | null;
+  parametric: string | null;
+  tangent_angle: number | null;
+  curvature_left: number | null;
+  curvature_right: number | null;
+  moved: number[];
+  inserted_knots: number;
+  degree_elevation: number;
+  target_parameter: number;
+  degree: number;
+  control_points: number;
+};
+
+export type BlendRequest = {
+  a: CurveFile;
+  b: CurveFile;
+  continuity?: string;
+  end?: "start" | "end";
+  to_end?: "start" | "end";
+};
+
+export type BlendResult = {
+  curve: CurveFile;
+  requested: string;
+  start: {
+    geometric: string | null;
+    parametric: string | null;
+  };
+  end: {
+    geometric: string | null;
+    parametric: string | null;
+  };
+  scale: number;
+  curvature_variation: {
+    value: number;
+    error_estimate: number;
+    converged: boolean;
+  };
+  curvature_extrema: number;
+  degree: number;
+  control_points: number;
+};

@@ -200,6 +200,13 @@ export type FairPreview = Omit<Api.FairPreview, 'curve' | 'analysis'> & {
 export type ExportFormat = Api.ExportRequest['format'];
 export type ExportResult = Api.ExportResult;
 
+/** POST /api/match and /api/blend (docs/server.md): two curves joined; the document is not changed. */
+export type CurveEndName = 'start' | 'end';
+export type MatchRequest = Omit<Api.MatchRequest, 'a' | 'b'> & { a: CurveFile; b: CurveFile };
+export type MatchResult = Omit<Api.MatchResult, 'curve'> & { curve: CurveFile };
+export type BlendRequest = Omit<Api.BlendRequest, 'a' | 'b'> & { a: CurveFile; b: CurveFile };
+export type BlendResult = Omit<Api.BlendResult, 'curve'> & { curve: CurveFile };
+
 export interface LawRequest {
   expression: string;
   parameter?: string;
@@ -367,7 +374,15 @@ export const CONTRACT: [
   Within<DocumentSummary, Api.DocumentList['documents'][number]>,
   Within<CurvatureEditRequest, Api.CurvatureEditRequest>,
   Within<CurvatureEditReport, Api.CurvatureEditResult['edit']>,
+  Within<MatchRequest, Api.MatchRequest>,
+  Within<MatchResult, Api.MatchResult>,
+  Within<BlendRequest, Api.BlendRequest>,
+  Within<BlendResult, Api.BlendResult>,
 ] = [
+  true,
+  true,
+  true,
+  true,
   true,
   true,
   true,

@@ -1,6 +1,6 @@
-import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import { ApiError } from '../api/client';
-import { FetchDouble, settle } from '../testing/fetch-double';
+import { useFetchDouble, settle } from '../testing/fetch-double';
 import {
   attributes,
   change,
@@ -28,14 +28,7 @@ import type { Analysis } from '../api/types';
 // Each command against the page's real Client, store and editor; only fetch is replaced
 // (testing/fetch-double.ts), with answers typed by the server's OpenAPI document.
 
-let http: FetchDouble;
-beforeEach(() => {
-  http = new FetchDouble();
-  vi.stubGlobal('fetch', http.fetch);
-});
-afterEach(() => {
-  vi.unstubAllGlobals();
-});
+const http = useFetchDouble();
 
 const nurbs = {
   kind: 'nurbs' as const,

@@ -1,19 +1,12 @@
-import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
-import { FetchDouble, settle } from '../testing/fetch-double';
+import { describe, expect, it } from 'vitest';
+import { useFetchDouble, settle } from '../testing/fetch-double';
 import { cubic, editorWith, lineAnalysis, serverEntity } from '../testing/documents';
 import type { AnalysisRequest } from '../api/types';
 import { AnalysisScheduler } from './analysis';
 
 // The analysis scheduling against the real Client and store (fetch replaced: testing/fetch-double.ts).
 
-let http: FetchDouble;
-beforeEach(() => {
-  http = new FetchDouble();
-  vi.stubGlobal('fetch', http.fetch);
-});
-afterEach(() => {
-  vi.unstubAllGlobals();
-});
+const http = useFetchDouble();
 
 const request: AnalysisRequest = { samples: 5, by: 'parameter', fins: [], scale: 1 };
 

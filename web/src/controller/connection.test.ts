@@ -1,5 +1,5 @@
 import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
-import { FetchDouble, type Call } from '../testing/fetch-double';
+import { useFetchDouble, type Call } from '../testing/fetch-double';
 import { cubic, editorWith, lastStatus, serverEntity } from '../testing/documents';
 import type { ChangeSet } from '../api/types';
 import { Connection, type EventStream } from './connection';
@@ -7,15 +7,12 @@ import { Connection, type EventStream } from './connection';
 // The reconnection logic against the real Client and editor (fetch replaced:
 // testing/fetch-double.ts; timers faked, so the polling runs without waiting).
 
-let http: FetchDouble;
+const http = useFetchDouble();
 beforeEach(() => {
-  http = new FetchDouble();
-  vi.stubGlobal('fetch', http.fetch);
   vi.useFakeTimers();
 });
 afterEach(() => {
   vi.useRealTimers();
-  vi.unstubAllGlobals();
 });
 
 class Stream implements EventStream {

@@ -1,5 +1,5 @@
-import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
-import { FetchDouble, settle, type Call } from '../testing/fetch-double';
+import { describe, expect, it } from 'vitest';
+import { useFetchDouble, settle, type Call } from '../testing/fetch-double';
 import {
   change,
   cubic,
@@ -16,14 +16,7 @@ import { DragController, type DragHost } from './drag';
 // The drag's logic against the page's real Client, store and editor (only fetch is replaced:
 // testing/fetch-double.ts); the host records what the views, graphs and panels were asked to do.
 
-let http: FetchDouble;
-beforeEach(() => {
-  http = new FetchDouble();
-  vi.stubGlobal('fetch', http.fetch);
-});
-afterEach(() => {
-  vi.unstubAllGlobals();
-});
+const http = useFetchDouble();
 
 const law: CurveFile = {
   kind: 'law',

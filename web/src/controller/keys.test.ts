@@ -36,7 +36,9 @@ describe('the keyboard map', () => {
     expect(keyCommand(press('G', { shiftKey: true }))).toEqual({ kind: 'object-snap' });
     expect(keyCommand(press('r'))).toEqual({ kind: 'navigate', mode: 'orbit' });
     expect(keyCommand(press('Escape'))).toEqual({ kind: 'escape' });
-    expect(keyCommand(press('j'))).toBeNull();
+    expect(keyCommand(press('M'))).toEqual({ kind: 'tool', tool: 'match' });
+    expect(keyCommand(press('j'))).toEqual({ kind: 'tool', tool: 'blend' });
+    expect(keyCommand(press('t'))).toBeNull();
     expect(keyCommand(press('F5'))).toBeNull();
   });
 });

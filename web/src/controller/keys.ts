@@ -34,6 +34,8 @@ const TOOLS: Record<string, ToolName> = {
   b: 'bezier',
   n: 'nurbs',
   h: 'hermite',
+  m: 'match',
+  j: 'blend',
 };
 const ACTIONS: Record<string, string> = {
   l: 'law',

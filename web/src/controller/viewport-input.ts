@@ -11,6 +11,7 @@ import { readout, type Abscissa } from '../graphs/graph';
 import { handlesOf } from '../store/curves';
 import type { ViewStore } from '../store/view';
 import type { Tool } from '../tools/tools';
+import type { CurvePick } from '../tools/join';
 import {
   dragPlane,
   pickNearest,
@@ -255,6 +256,37 @@ export class ViewportController {
       if (hit && (!best || hit.distance < best.d)) best = { label, d: hit.distance };
     }
     this.host.select(best?.label ?? null);
+  }
+
+  /**
+   * The visible curve nearest the pointer within 8 pixels (Match and Blend pick ends with it): its nearest
+   * sample, and the end whose drawn point is within 12 pixels of the pointer, if one is.
+   */
+  pickCurve(view: ViewName, ev: PointerEvent): CurvePick | null {
+    const [x, y] = this.local(view, ev);
+    const { w, h } = this.viewports.size(view);
+    const vp = this.viewports.viewProj(view);
+    let best: { label: string; a: Analysis; index: number; d: number } | null = null;
+    for (const [label, a] of this.store.analyses) {
+      if (this.isHidden(label) || !this.store.entities.has(label)) continue;
+      const hit = pickPolyline([x, y], a.points.map(toVec3), vp, w, h, 8);
+      if (hit && (!best || hit.distance < best.d))
+        best = { label, a, index: hit.index, d: hit.distance };
+    }
+    if (!best) return null;
+    const points = best.a.points.map(toVec3);
+    const last = points.length - 1;
+    const ends = pickNearest([x, y], [points[0]!, points[last]!], vp, w, h, 12);
+    const nearerEnd = best.index * 2 < last ? 'start' : 'end';
+    const end = ends === null ? null : ends.index === 0 ? 'start' : 'end';
+    return {
+      label: best.label,
+      t: best.a.t[best.index]!,
+      point: points[best.index]!,
+      end,
+      endPoint: points[(end ?? nearerEnd) === 'start' ? 0 : last]!,
+      nearerEnd,
+    };
   }
 
   private hoverCurve(view: ViewName, ev: PointerEvent): void {

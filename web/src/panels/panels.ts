@@ -35,6 +35,12 @@ export const SHORTCUTS: [string, string][] = [
   ['D', 'raise the degree of the selected curve by one'],
   ['X', 'split the selected curve in two (at the hovered point, else mid-domain)'],
   ['W', 'reverse the direction of the selected curve'],
+  [
+    'M',
+    "match: click curve A near the end to move, then B near an end or on it (A's end made Gk to it; one undo step)",
+  ],
+  ['J', 'blend: click two curve ends; a fair curve joins them Gk at both ends (one undo step)'],
+  ['0 1 2 3', 'while matching or blending: the continuity G0 … G3 (Blend: G1 … G3)'],
   ['A', "accept the fairing assistant's ghost (one undo step; turn the assistant on in its panel)"],
   ['F', 'fit all'],
   ['Q', 'single / four views'],

@@ -25,6 +25,10 @@ export class Toolbar {
     snap.addEventListener('change', () => {
       this.app.setSnap(snap.checked);
     });
+    const continuity = document.getElementById('join-continuity') as HTMLSelectElement;
+    continuity.addEventListener('change', () => {
+      this.app.setJoinContinuity(Number(continuity.value));
+    });
     const osnap = document.getElementById('osnap') as HTMLInputElement;
     osnap.addEventListener('change', () => {
       this.app.setObjectSnap(osnap.checked);

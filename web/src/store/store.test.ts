@@ -46,6 +46,30 @@ describe('DocumentStore', () => {
     expect(s.apply({ revision: 3, changed: [7] })).toEqual(['7']);
   });
 
+  // Undo lowers the revision, so a later change reuses an earlier reply's revision: that reply is stored,
+  // whether the earlier change's event came before its reply or after it.
+  it('stores a reply whose revision an earlier reply had (after an undo)', () => {
+    for (const eventFirst of [true, false]) {
+      const s = new DocumentStore('a.hula');
+      s.load({ name: 'a.hula', revision: 2, entities: [] });
+      const made = (label: number) => ({
+        revision: 3,
+        changes: { revision: 3, added: [label], entities: [{ label, attributes: {}, ...curve }] },
+      });
+      if (eventFirst) s.apply({ revision: 3, added: [3] });
+      s.applyReply(made(3));
+      if (!eventFirst) expect(s.apply({ revision: 3, added: [3] })).toEqual([]);
+      s.applyReply({ revision: 2, changes: { revision: 2, removed: [3], cause: 'undo' } });
+      s.apply({ revision: 2, removed: [3], cause: 'undo' });
+      s.applyReply(made(4));
+      expect([...s.entities.keys()]).toEqual(['4']);
+      expect(s.revision).toBe(3);
+      // Its own event is skipped; another tab's change of the next revision is not.
+      expect(s.apply({ revision: 3, added: [4] })).toEqual([]);
+      expect(s.apply({ revision: 4, added: [9] })).toEqual(['9']);
+    }
+  });
+
   // Oli-style change sets name labels only: they come back to be fetched.
   it('returns the labels to fetch for label-only change sets', () => {
     const s = new DocumentStore('a.hula');

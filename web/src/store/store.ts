@@ -86,10 +86,12 @@ export class DocumentStore {
    * with the reply of a change) are stored, but `defer`'s (a drag in
    * progress: its entity is stored once, when the drag settles); labels that
    * changed without their entity are returned for the caller to fetch. An
-   * event whose revision a reply has already brought is skipped.
+   * event whose revision a reply has already brought is skipped; a reply
+   * (`reply`) never is: undo lowers the revision, so the next change reuses
+   * a revision number an earlier reply had.
    */
-  apply(changes: ChangeSet, defer?: string): string[] {
-    if (this.replied.delete(changes.revision)) return [];
+  apply(changes: ChangeSet, defer?: string, reply = false): string[] {
+    if (!reply && this.replied.delete(changes.revision)) return [];
     const whole = new Set<string>();
     for (const raw of changes.entities ?? []) {
       const e = entityFromServer(raw);
@@ -110,8 +112,11 @@ export class DocumentStore {
 
   /** Apply the reply of a change: its change set, whose event is then skipped. */
   applyReply(reply: ChangeReply, defer?: string): string[] {
-    const stale = this.apply({ ...reply.changes, revision: reply.revision }, defer);
-    this.replied.add(reply.revision);
+    // When the change's event came first (the store is at its revision already), no event is to come.
+    const eventFirst = this.revision === reply.revision;
+    const stale = this.apply({ ...reply.changes, revision: reply.revision }, defer, true);
+    if (eventFirst) this.replied.delete(reply.revision);
+    else this.replied.add(reply.revision);
     return stale;
   }
 

@@ -5,6 +5,8 @@
 // error does). Everything above fetch is the page's own code; the e2e specs
 // run the same code against the real `hula serve`.
 
+import { afterEach, beforeEach, vi } from 'vitest';
+
 export interface Call {
   readonly method: string;
   /** The path and query, without the origin. */
@@ -55,6 +57,12 @@ export class FetchDouble {
       this.auto?.(call);
     });
 
+  /** Forget the requests and the automatic answer (a new test). */
+  reset(): void {
+    this.calls.length = 0;
+    this.auto = null;
+  }
+
   /** The requests not answered yet. */
   get open(): Call[] {
     return this.calls.filter((c) => !c.answered);
@@ -65,4 +73,20 @@ export class FetchDouble {
 export async function settle(): Promise<void> {
   for (let i = 0; i < 20; i++) await Promise.resolve();
   await new Promise((r) => setTimeout(r, 0));
+}
+
+/**
+ * The global fetch replaced by one FetchDouble for every test of the calling file: emptied and
+ * installed before each test, the real fetch restored after it.
+ */
+export function useFetchDouble(): FetchDouble {
+  const http = new FetchDouble();
+  beforeEach(() => {
+    http.reset();
+    vi.stubGlobal('fetch', http.fetch);
+  });
+  afterEach(() => {
+    vi.unstubAllGlobals();
+  });
+  return http;
 }
