@@ -22,6 +22,7 @@ import re
 import shutil
 import subprocess
 import sys
+import zipfile
 
 source, build, work = (pathlib.Path(a).resolve() for a in sys.argv[1:4])
 shutil.rmtree(work, ignore_errors=True)
@@ -93,6 +94,11 @@ run(v1 / "bin" / "pip", "wheel", "--no-index", "--no-build-isolation", "--no-dep
 wheels = sorted((work / "dist").glob("hulahoops-*.whl"))
 assert len(wheels) == 1, wheels
 assert re.match(rf"hulahoops-{re.escape(version)}-cp3\d+-cp3\d+-linux_\w+\.whl$", wheels[0].name), wheels[0].name
+# The plugins (pagmo; Open CASCADE) and the STEP/IGES helper travel in the wheel, beside the module.
+shipped = set(zipfile.ZipFile(wheels[0]).namelist())
+expected = {"hulahoops/libhula_pagmo.so"} | ({"hulahoops/libhula_occt.so", "hulahoops/hula-exchange"}
+                                            if (build / "apps" / "hula" / "hula-exchange").exists() else set())
+assert expected <= shipped, expected - shipped
 v2 = venv("v2")
 run(v2 / "bin" / "pip", "install", "--no-index", wheels[0])
 run(v2 / "bin" / "python", "-c", CHECK, v2, version)
