@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: MIT
 """The setuptools side of pyproject.toml: the version from CMakeLists.txt's project(VERSION), and a
 build_ext step that builds the compiled module hulahoops._core with the project's CMake build and
-copies it into the package.
+copies it into the package, with the plugins (libhula_pagmo.so, libhula_occt.so) and, in builds with Open
+CASCADE, the STEP/IGES helper hula-exchange beside it.
 
 The CMake build directory is build/pip-cmake (configured Release with HULA_PYTHON=ON for the running
 interpreter, no tests, no MPI), kept between installs so a second install only rebuilds what changed.
@@ -53,7 +54,11 @@ class CMakeBuild(build_ext):
             configure += shlex.split(os.environ.get("HULA_CMAKE_ARGS", ""))
             self.announce("hulahoops: " + " ".join(configure), level=2)
             subprocess.run(configure, check=True)
-        subprocess.run(["cmake", "--build", str(build_dir), "--target", "hulahoops_core"], check=True)
+        # With Open CASCADE the STEP/IGES helper is built too and shipped in the package, beside the
+        # module, where oli::default_exchange_helper finds it (hulahoops.exchange_helper()).
+        occt = re.search(r"^HULA_WITH_OCCT:BOOL=(ON|TRUE|1)$", (build_dir / "CMakeCache.txt").read_text(), re.M)
+        targets = ["hulahoops_core"] + (["hula_exchange_helper"] if occt else [])
+        subprocess.run(["cmake", "--build", str(build_dir), "--target", *targets], check=True)
         built = sorted((build_dir / "python" / "hulahoops").glob("_core*.so"))
         if len(built) != 1:
             raise RuntimeError(f"hulahoops: expected one _core*.so in {build_dir / 'python' / 'hulahoops'}, "
@@ -61,6 +66,13 @@ class CMakeBuild(build_ext):
         target = pathlib.Path(self.get_ext_fullpath(ext.name))
         target.parent.mkdir(parents=True, exist_ok=True)
         shutil.copyfile(built[0], target)
+        # The plugins (pagmo, Open CASCADE) beside the module too, where hula::plugin_symbol looks for them.
+        for plugin in sorted((build_dir / "lib" / "hulahoops").glob("libhula_*.so")):
+            shutil.copyfile(plugin, target.parent / plugin.name)
+        if occt:
+            helper = target.parent / "hula-exchange"
+            shutil.copyfile(build_dir / "apps" / "hula" / "hula-exchange", helper)
+            helper.chmod(0o755)
 
 
 build_base = pathlib.Path(os.environ.get("HULA_PIP_BUILD_BASE", ROOT / "build" / "pip"))

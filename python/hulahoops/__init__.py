@@ -19,6 +19,7 @@ Geometry:
 Exchange:
     read, write       curve files by extension: JSON, STEP, IGES, DXF (SVG written only), as
                       ``hula convert`` reads and writes them.
+    exchange_helper   the STEP/IGES helper used (the one the package ships, in a wheel).
 Optimisation:
     optimise, Problem, from_pygmo   Flexo GAs and NSGA-II with NumPy objectives.
 Studies:
@@ -63,13 +64,14 @@ polar_map = _core.polar_map
 hermite_frenet = _core.hermite_frenet
 read = _core.read
 write = _core.write
+exchange_helper = _core.exchange_helper
 
 __all__ = [
     "NurbsCurve", "ClosestPoint", "IntrinsicCurve", "NurbsFit", "Law", "interpolate", "approximate", "clothoid_g1",
     "clothoid_g2", "read_points",
     "analyse",
     "reconstruct", "intersect", "distance", "offset", "helical_offset", "orthotomic", "polar_map", "hermite_frenet",
-    "read", "write",
+    "read", "write", "exchange_helper",
     "optimise", "Problem", "OptimiseResult", "from_pygmo", "builtin_problem", "evaluate_builtin",
     "fair_knots", "fit", "match_curvature", "StudyResult", "Document",
     "Error", "InvalidArgumentError", "NonFiniteInputError", "TooFewPointsError", "CoincidentPointsError",

@@ -15,9 +15,12 @@ from __future__ import annotations
 
 import json
 import os
-from typing import Any
+from typing import Any, Callable, Sequence
+
+import numpy as np
 
 from . import _core
+from .optimise import progress_function, raise_if_interrupted
 
 
 def _curve_value(curve: Any) -> Any:
@@ -131,15 +134,85 @@ class Document:
         """The undo steps: ``[{"revision", "name", "time", "changed": [labels], "applied"}]``."""
         return self._doc.history()
 
-    def run(self, study: Any, *, base: str | os.PathLike[str] | None = None) -> dict[str, Any]:
+    def run(self, study: Any, *, base: str | os.PathLike[str] | None = None,
+            callback: Callable[[int, Any, int], Any] | None = None, verbose: bool = False) -> dict[str, Any]:
         """Runs a study (a study-file dict, or a study file's path) whose curves may name entity labels,
-        stores it with its result curves, and returns ``hula doc run``'s result (with ``study_label``,
-        ``result_labels``, ``revision``). Relative file names in the study are read from ``base``
-        (default: the study file's directory, or the current directory for a dict)."""
+        stores it with its result curves, and returns ``hula doc run``'s result (with ``cancelled``,
+        ``study_label``, ``result_labels``, ``revision``). Relative file names in the study are read from
+        ``base`` (default: the study file's directory, or the current directory for a dict).
+
+        ``callback(generation, best, evaluations)`` is called after each generation of the study's
+        optimisers (a true return stops the run with its best so far); ``verbose`` prints one progress
+        line per generation on stderr. Ctrl-C stops the run between generations, stores the best so far
+        as ``hula doc run`` does (``cancelled`` True) and raises ``KeyboardInterrupt`` whose ``result`` is
+        that stored run's result."""
         if isinstance(study, (str, os.PathLike)):
             with open(study, encoding="utf-8") as f:
                 setup = json.load(f)
             where = os.path.dirname(os.path.abspath(study))
         else:
             setup, where = study, os.getcwd()
-        return self._doc.run(setup, os.fspath(base) if base is not None else where)
+        result = self._doc.run(setup, os.fspath(base) if base is not None else where,
+                               progress_function(callback, verbose, "doc run"))
+        return raise_if_interrupted(result.pop("interrupt", None), result)
+
+    def export(self, labels: int | Sequence[int], path: str | os.PathLike[str], *,
+               format: str | None = None) -> dict[str, Any]:
+        """Writes entities to a file as ``hula doc export`` and ``hula convert`` write it, the format from
+        the extension or ``format`` ("json", "step", "step-ap214", "step-ap242", "iges", "dxf", "svg"):
+        JSON keeps every entity, the others the curves with their names, colours and layers (point sets
+        and studies counted in ``skipped``). Returns ``{"format", "curves", "skipped", "max_deviation",
+        "warnings"}``. STEP and IGES are written by the ``hula-exchange`` helper (Open CASCADE)."""
+        ls = [labels] if isinstance(labels, int) else list(labels)
+        return self._doc.export_file(ls, os.fspath(path), format)
+
+    def import_(self, path: str | os.PathLike[str], *, format: str | None = None) -> dict[str, Any]:
+        """Adds the entities of a file (JSON curve or document file, STEP, IGES, DXF; the format from the
+        extension or ``format``) with the names, colours and layers it gives, as ``hula convert`` reads
+        it. Returns ``{"labels", "format", "warnings", "revision"}``."""
+        return self._doc.import_file(os.fspath(path), format)
+
+    # Constraints stored with a curve (docs/modules/oli.md "Constraints"): dicts in the form `hula doc
+    # show` prints under "constraints", e.g. {"kind": "pass-through", "point": [x, y, z], "tolerance": 1e-6},
+    # {"kind": "end-tangent", "end": "start", "direction": [1, 0, 0]}, {"kind": "end-curvature", "end":
+    # "end", "value": 0.1}, {"kind": "fixed-length", "value": 50}.
+
+    def constraints(self, label: int) -> list[dict[str, Any]]:
+        """The constraints stored with curve ``label``, in order (as ``show(label)["constraints"]``)."""
+        return self._doc.constraints(label)
+
+    def add_constraint(self, label: int, constraint: dict[str, Any]) -> int:
+        """Appends one constraint to curve ``label``; returns the new revision. Raises ParseError naming
+        the member for a malformed dict, InvalidArgumentError for a zero direction, a negative curvature,
+        a length or tolerance <= 0, or an entity that is not a curve (the document is then unchanged)."""
+        return self._doc.add_constraint(label, constraint)
+
+    def remove_constraint(self, label: int, index: int) -> int:
+        """Removes constraint ``index`` of curve ``label``; returns the new revision."""
+        return self._doc.remove_constraint(label, index)
+
+    def set_constraints(self, label: int, constraints: Sequence[dict[str, Any]]) -> int:
+        """Replaces every constraint of curve ``label`` (``[]`` removes them all); returns the new revision."""
+        return self._doc.set_constraints(label, list(constraints))
+
+    def check_constraints(self, label: int) -> list[dict[str, Any]]:
+        """Each stored constraint's residual on the curve: ``[{"index", "kind", "residual", "satisfied"}]``
+        (residual NaN and not satisfied where it is undefined)."""
+        return self._doc.check_constraints(label)
+
+    # Design variables (docs/modules/oli.md "Variables"): a list of selections, each a dict
+    # {"label": L, "kind": "control-points" | "weights" | "interior-knots" | "data-points" |
+    # "end-tangents" | "law-constants", "indices": [...] (default all), "axes": "xyz" (points and
+    # tangents), "bounds": {"mode": "relative" | "absolute", "lower": -1, "upper": 1}}.
+
+    def variables(self, selections: Sequence[dict[str, Any]]) -> dict[str, Any]:
+        """The selected parameters' ``names`` ("3.control-points[2].y"), current ``values`` and resolved
+        ``lower`` / ``upper`` bounds (float64 arrays). Raises InvalidArgumentError naming selections[i] for
+        a missing label, a kind the entity lacks, an index out of range, bad axes or bounds."""
+        return self._doc.variables(list(selections))
+
+    def set_variables(self, selections: Sequence[dict[str, Any]], values: Any) -> int:
+        """Writes ``values`` (one per variable, in ``variables(selections)["names"]`` order) into the
+        entities in one transaction; returns the new revision. A value that makes a curve invalid (knots
+        out of order, a weight <= 0) raises and leaves the document unchanged."""
+        return self._doc.set_variables(list(selections), np.asarray(values, dtype=np.float64))

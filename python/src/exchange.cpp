@@ -17,6 +17,9 @@
 #include "bindings.hpp"
 #include "hula/core/error.hpp"
 #include "hula/oli/file_convert.hpp"
+#ifdef HULA_WITH_OCCT
+#include "hula/oli/exchange/exchange.hpp"
+#endif
 
 namespace hula::python {
 
@@ -127,6 +130,20 @@ Returns ``{"format", "curves", "max_deviation", "warnings"}``.
 Raises:
     InvalidArgumentError: unknown extension or format, names of the wrong length.
     IoError: the file cannot be written (nothing is).)doc");
+  m.def(
+      "exchange_helper",
+      []() -> std::optional<std::string> {
+#ifdef HULA_WITH_OCCT
+        return oli::default_exchange_helper().string();
+#else
+        return std::nullopt;
+#endif
+      },
+      R"doc(The path of the ``hula-exchange`` helper that writes and reads STEP and IGES
+(Open CASCADE, in a process of its own): $HULA_EXCHANGE_HELPER if set, else
+the one installed beside this module (a wheel ships it in the package), else
+beside the running executable, else the build tree's. None in a build without
+Open CASCADE.)doc");
 }
 
 }  // namespace hula::python

@@ -13,7 +13,7 @@ import time
 import numpy as np
 import pytest
 
-from conftest import SOURCE
+from conftest import SOURCE, hula
 
 CHILD = r"""
 import json, sys, time
@@ -34,6 +34,14 @@ try:
         setup = json.loads(open(sys.argv[2]).read())
         setup["ga"]["generations"] = 10**6
         hh.match_curvature(setup)
+    elif kind == "docrun":
+        setup = json.loads(open(sys.argv[2]).read())
+        setup["ga"]["generations"] = 10**6
+        doc = hh.Document.create(sys.argv[3])
+        doc.add_points(setup["points"], name="data")
+        setup["points"] = {"entity": 1}
+        generations = []
+        doc.run(setup, callback=lambda g, best, evaluations: generations.append(time.monotonic()))
     print(json.dumps({"finished": True}), flush=True)
 except KeyboardInterrupt as e:
     caught = time.monotonic()
@@ -44,6 +52,11 @@ except KeyboardInterrupt as e:
                    best=r.best_per_generation.tolist())
     elif kind == "nsga2":
         out.update(termination=r.report["termination"], front=r.front_f.tolist())
+    elif kind == "docrun":
+        out.update(last_generation=generations[-1], generations=len(generations),
+                   cancelled=r["cancelled"], labels=r["result_labels"], revision=r["revision"],
+                   best_points=r["best_points"], history=doc.history()[-1]["name"])
+        doc.close()
     else:
         out.update(best_points=np.asarray(r.best_points).tolist(), termination=r.ga.termination,
                    after=r.after.mean, before=r.before.mean)
@@ -110,3 +123,25 @@ def test_sigint_stops_a_study_with_its_best_points():
     assert p[0].tolist() == [0, 0] and p[2].tolist() == [40, 0]
     assert -25 - 1e-3 <= p[1][0] <= 40 + 1e-3 and -10 - 1e-3 <= p[1][1] <= 50 + 1e-3
     assert r["termination"] == "Cancelled" and r["after"] < r["before"]
+
+
+def test_sigint_stops_a_document_run_and_stores_the_best_so_far(tmp_path):
+    # checks SIGINT stops Document.run of a match-curvature GA of a million generations within 0.5 s (its last
+    # generation ends < 0.5 s after the signal), the run is then stored as `hula doc run` stores an interrupted
+    # one ("cancelled", the best so far as a result curve, one "run study" step) before KeyboardInterrupt is
+    # raised, the free point lies within its offsets, and `hula doc show` reads the result curve with the
+    # study as its provenance. Storing the run stores its log (every individual of every generation), which
+    # takes about as long again as computing it: the exception comes after that, bounded here at 5 s.
+    path = tmp_path / "run.hula"
+    latency, r = interrupt("docrun", SOURCE / "examples" / "studies" / "match-curvature-example1.json", path)
+    stopped = r["last_generation"] - (r["caught"] - latency)
+    assert stopped < 0.5, stopped
+    assert 0 <= latency < 5, latency
+    assert r["generations"] > 2 and r["cancelled"] is True and r["history"] == "run study" and r["revision"] == 2
+    p = np.array(r["best_points"])
+    assert p[0].tolist() == [0, 0] and p[2].tolist() == [40, 0]
+    assert -25 - 1e-3 <= p[1][0] <= 40 + 1e-3 and -10 - 1e-3 <= p[1][1] <= 50 + 1e-3
+    shown = hula("doc", "show", path, r["labels"][0])
+    provenance = shown["provenance"]
+    assert provenance["operation"] == "study:match-curvature" and provenance["inputs"] == [2, 1], provenance
+    assert provenance["details"]["cancelled"] is True, provenance

@@ -182,8 +182,9 @@ TEST(ConvertCli, StepRoundTripCheckedByOpenCascade) {
   expect_back_to_json(dir, step, list, true);
 }
 
-// checks: JSON → IGES writes each B-spline exactly with its name and colour, as Open CASCADE's XCAF reader reads
-// them; IGES → JSON gives them back (IGES carries no layer names: levels are numbers).
+// checks: JSON → IGES writes each B-spline exactly with its name, colour and layer, as Open CASCADE's XCAF reader
+// reads them (a layer is an IGES level, a number: curves on one layer share it, curves on two do not); IGES → JSON
+// gives them back, layer names included (the level's Level Function property).
 TEST(ConvertCli, IgesRoundTripCheckedByOpenCascade) {
   testing::TempDir dir;
   const auto list = items();
@@ -197,12 +198,15 @@ TEST(ConvertCli, IgesRoundTripCheckedByOpenCascade) {
     const std::string what = "Open CASCADE IGES, " + list[i].name;
     EXPECT_EQ(s["name"], list[i].name) << what;
     EXPECT_EQ(s["colour"], list[i].colour) << what;
+    ASSERT_TRUE(s["layer"].is_string()) << what;
+    for (std::size_t k = 0; k < list.size(); ++k)
+      EXPECT_EQ(s["layer"] == read["shapes"][k]["layer"], list[i].layer == list[k].layer) << what << ", " << k;
     ASSERT_EQ(s["edges"].size(), 1u) << what;
     const json& c = s["edges"][0];
     ASSERT_FALSE(c.is_null()) << what;
     expect_curve(c["knots"], c["poles"], c["weights"], c["degree"].get<int>(), list[i].curve, what);
   }
-  expect_back_to_json(dir, iges, list, false);
+  expect_back_to_json(dir, iges, list, true);
 }
 #endif
 

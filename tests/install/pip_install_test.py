@@ -8,7 +8,9 @@
    `--no-index` into a second venv V2;
 3. in each venv, from a directory outside the source tree, `import hulahoops` loads the venv's copy,
    `hulahoops.__version__` is CMake's project version and the installed distribution's version, the
-   compiled module carries docstrings, and a quadratic Bézier evaluates to its closed-form point.
+   compiled module carries docstrings, a quadratic Bézier evaluates to its closed-form point, and (in
+   builds with Open CASCADE) the hula-exchange helper the package ships beside its module writes STEP
+   and IGES that read back to the same control points and knots (hh.write, hh.read, Document.export).
 
 The backend builds the compiled module in the existing build directory given as BUILD_DIR
 (HULA_CMAKE_BUILD_DIR), so the test packages the tree ctest runs in instead of compiling a second one.
@@ -20,6 +22,7 @@ import re
 import shutil
 import subprocess
 import sys
+import zipfile
 
 source, build, work = (pathlib.Path(a).resolve() for a in sys.argv[1:4])
 shutil.rmtree(work, ignore_errors=True)
@@ -28,6 +31,7 @@ version = re.search(r"project\(\s*hulahoops\s+VERSION\s+([0-9.]+)", (source / "C
 env = dict(os.environ, HULA_CMAKE_BUILD_DIR=str(build), HULA_PIP_BUILD_BASE=str(work / "setuptools"),
            PIP_NO_INDEX="1", PIP_DISABLE_PIP_VERSION_CHECK="1", PIP_NO_CACHE_DIR="1", PYTHONDONTWRITEBYTECODE="1")
 env.pop("PYTHONPATH", None)
+env.pop("HULA_EXCHANGE_HELPER", None)
 
 CHECK = r"""
 import importlib.metadata, pathlib, sys
@@ -44,6 +48,26 @@ c = hh.NurbsCurve(2, [0, 0, 0, 1, 1, 1], np.array([[0.0, 0.0], [2.0, 4.0], [4.0,
 p = c(0.25)
 assert np.allclose(p, [1.0, 1.5], rtol=0, atol=1e-15), p
 print(f"hulahoops {hh.__version__} from {where.parent}: B(1/4) = {p.tolist()}")
+# STEP and IGES through the hula-exchange helper the package ships beside the module (no
+# HULA_EXCHANGE_HELPER): written by hh.write and Document.export, read back exactly by hh.read.
+helper = hh.exchange_helper()
+if helper is not None:
+    helper = pathlib.Path(helper)
+    assert helper.parent == where.parent and helper.name == "hula-exchange", (helper, where)
+    cubic = hh.NurbsCurve(3, [0, 0, 0, 0, 0.4, 1, 1, 1, 1],
+                          np.array([[0.0, 0, 0], [1, 2, 0.5], [3, 2.5, 1], [4, 0, 2], [6, 1, 0]]))
+    for ext in ("step", "iges"):
+        hh.write(cubic, f"c.{ext}", names=["spine"])
+        back = hh.read(f"c.{ext}")
+        assert len(back) == 1 and back[0].degree == 3, back
+        assert np.array_equal(back[0].control_points, cubic.control_points), back[0].control_points
+        assert np.array_equal(back[0].knots, cubic.knots), back[0].knots
+    with hh.Document.create("d.hula", force=True) as doc:
+        doc.add(cubic, name="spine")
+        assert doc.export(1, "d.step")["curves"] == 1
+        assert doc.import_("d.step")["labels"] == [2]
+        assert np.array_equal(np.asarray(doc.show(2)["control_points"]), cubic.control_points)
+    print(f"STEP and IGES written and read through {helper}")
 """
 
 
@@ -70,6 +94,11 @@ run(v1 / "bin" / "pip", "wheel", "--no-index", "--no-build-isolation", "--no-dep
 wheels = sorted((work / "dist").glob("hulahoops-*.whl"))
 assert len(wheels) == 1, wheels
 assert re.match(rf"hulahoops-{re.escape(version)}-cp3\d+-cp3\d+-linux_\w+\.whl$", wheels[0].name), wheels[0].name
+# The plugins (pagmo; Open CASCADE) and the STEP/IGES helper travel in the wheel, beside the module.
+shipped = set(zipfile.ZipFile(wheels[0]).namelist())
+expected = {"hulahoops/libhula_pagmo.so"} | ({"hulahoops/libhula_occt.so", "hulahoops/hula-exchange"}
+                                            if (build / "apps" / "hula" / "hula-exchange").exists() else set())
+assert expected <= shipped, expected - shipped
 v2 = venv("v2")
 run(v2 / "bin" / "pip", "install", "--no-index", wheels[0])
 run(v2 / "bin" / "python", "-c", CHECK, v2, version)

@@ -39,7 +39,10 @@ std::vector<std::filesystem::path> plugin_dirs() {
     std::error_code ec;
     const std::filesystem::path object =
         std::filesystem::canonical(executable ? std::filesystem::path("/proc/self/exe") : map->l_name, ec);
-    if (!ec) dirs.push_back(object.parent_path() / HULA_PLUGIN_RELATIVE_DIR);
+    if (!ec) {
+      dirs.push_back(object.parent_path() / HULA_PLUGIN_RELATIVE_DIR);
+      if (!executable) dirs.push_back(object.parent_path());  // a wheel's plugins lie beside its module
+    }
   }
   if (*HULA_PLUGIN_INSTALL_DIR != '\0') dirs.emplace_back(HULA_PLUGIN_INSTALL_DIR);
   if (*HULA_PLUGIN_BUILD_DIR != '\0') dirs.emplace_back(HULA_PLUGIN_BUILD_DIR);

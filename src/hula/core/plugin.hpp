@@ -7,7 +7,8 @@
 // A plugin `name` is the file libhula_<name>.so, looked for, in order, in:
 //   1. $HULA_PLUGIN_DIR, when set;
 //   2. the plugin directory of an installation, relative to the binary or shared object holding
-//      this code (bin/../lib/hulahoops for the installed `hula`);
+//      this code (bin/../lib/hulahoops for the installed `hula`), then, for a shared object, its own
+//      directory (the Python package of a wheel ships its plugins beside the module);
 //   3. the plugin directory of the configured installation prefix;
 //   4. the plugin directory of the build tree (tests and uninstalled binaries).
 // A plugin is loaded at most once per process and never unloaded.

@@ -4,6 +4,7 @@
 // into an answer or a hula::Error naming the file.
 #include "hula/oli/exchange/exchange.hpp"
 
+#include <dlfcn.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -171,6 +172,14 @@ void ExchangeOptions::validate() const {
 std::filesystem::path default_exchange_helper() {
   if (const char* env = std::getenv("HULA_EXCHANGE_HELPER"); env != nullptr && *env != '\0') return env;
   std::error_code ec;
+  // Beside the binary this code was loaded from: the Python extension module of an installed wheel
+  // (which ships the helper in its package directory), or a shared library installed beside it.
+  Dl_info image{};
+  if (dladdr(reinterpret_cast<const void*>(&default_exchange_helper), &image) != 0 && image.dli_fname != nullptr &&
+      *image.dli_fname == '/') {
+    const auto sibling = fs::path(image.dli_fname).parent_path() / "hula-exchange";
+    if (fs::exists(sibling, ec)) return sibling;
+  }
   const auto self = fs::read_symlink("/proc/self/exe", ec);
   if (!ec) {
     const auto sibling = self.parent_path() / "hula-exchange";

@@ -73,7 +73,8 @@ struct ExportCurve {
   /// The curve's colour "#rrggbb", written as its XCAF colour (STEP styled item, IGES colour
   /// definition), or empty for none.
   std::string colour{};
-  /// The curve's layer, written as its XCAF layer (STEP presentation layer, IGES level), or empty.
+  /// The curve's layer, written as its XCAF layer (STEP presentation layer; IGES level, numbered in order
+  /// of first use, with the name in a Level Function property), or empty.
   std::string layer{};
 };
 
@@ -114,7 +115,8 @@ struct ImportedCurve {
   nurbs::NurbsCurve curve;
   /// The colour the file gives the curve (XCAF), "#rrggbb", or empty.
   std::string colour{};
-  /// The layer the file puts the curve on (XCAF), or empty.
+  /// The layer the file puts the curve on (STEP: XCAF; IGES: the Level Function's name, else the level
+  /// number), or empty.
   std::string layer{};
 };
 
@@ -141,7 +143,9 @@ class ExchangeOutOfMemory : public std::bad_alloc {
 };
 
 /// The helper used when ExchangeOptions::helper is empty: $HULA_EXCHANGE_HELPER if set, else
-/// `hula-exchange` next to the running executable if it exists, else the build tree's helper.
+/// `hula-exchange` next to the binary this code was loaded from (the Python extension module of a
+/// wheel, which ships it in the package) if it exists, else next to the running executable if it
+/// exists, else the build tree's helper.
 [[nodiscard]] std::filesystem::path default_exchange_helper();
 
 /// Writes curves to a STEP or IGES file (replaced atomically: the helper writes a temporary file

@@ -29,6 +29,7 @@
 #include <Geom_Line.hxx>
 #include <Geom_Parabola.hxx>
 #include <Geom_TrimmedCurve.hxx>
+#include <IGESAppli_LevelFunction.hxx>
 #include <IGESBasic_Name.hxx>
 #include <IGESControl_Controller.hxx>
 #include <IGESControl_Reader.hxx>
@@ -37,10 +38,12 @@
 #include <IGESData_IGESEntity.hxx>
 #include <IGESData_IGESModel.hxx>
 #include <IGESData_IGESWriter.hxx>
+#include <IGESData_LevelListEntity.hxx>
 #include <IGESGraph_Color.hxx>
 #include <IGESSelect_WorkLibrary.hxx>
 #include <Interface_Check.hxx>
 #include <Interface_CheckIterator.hxx>
+#include <Interface_EntityIterator.hxx>
 #include <Interface_HArray1OfHAsciiString.hxx>
 #include <Interface_Static.hxx>
 #include <Quantity_Color.hxx>
@@ -78,6 +81,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -250,6 +254,7 @@ void write_iges(const ExportRequest& r, io::OutputFile& file, double max_deviati
   model->AddStartLine(deviation_note(max_deviation).c_str());
   GeomToIGES_GeomCurve translator;
   translator.SetModel(model);
+  std::map<std::string, int> levels;
   for (const auto& c : r.curves) {
     const auto occt = to_occt(c.curve);
     const Handle(IGESData_IGESEntity) entity =
@@ -269,6 +274,15 @@ void write_iges(const ExportRequest& r, io::OutputFile& file, double max_deviati
       Handle(IGESGraph_Color) definition = new IGESGraph_Color;
       definition->Init(red * 100.0, green * 100.0, blue * 100.0, new TCollection_HAsciiString(c.colour.c_str()));
       entity->InitColor(definition);
+    }
+    if (!c.layer.empty()) {
+      // IGES levels are numbers: each distinct layer is a level (1, 2, ... in order of first use), which
+      // other systems show as the layer, and its name a Level Function property (406 form 3) of the entity.
+      const int level = levels.try_emplace(c.layer, static_cast<int>(levels.size()) + 1).first->second;
+      entity->InitLevel(Handle(IGESData_LevelListEntity)(), level);
+      Handle(IGESAppli_LevelFunction) function = new IGESAppli_LevelFunction;
+      function->Init(2, 0, new TCollection_HAsciiString(c.layer.c_str()));
+      entity->AddProperty(function);
     }
     writer.AddEntity(entity);
   }
@@ -429,6 +443,17 @@ std::string iges_colour(const Handle(IGESData_IGESEntity) & entity) {
   return entity->DefColor() == IGESData_DefValue && rank >= 1 && rank <= 8 ? kNumbered[rank - 1] : std::string();
 }
 
+// The layer of an IGES entity: the name its Level Function property (406 form 3) gives, else its level
+// number as text (as Open CASCADE's XCAF reader names IGES layers), or empty on no level.
+std::string iges_layer(const Handle(IGESData_IGESEntity) & entity) {
+  for (Interface_EntityIterator it = entity->Properties(); it.More(); it.Next()) {
+    const auto function = Handle(IGESAppli_LevelFunction)::DownCast(it.Value());
+    if (!function.IsNull() && !function->FuncDescription().IsNull() && function->FuncDescription()->Length() > 0)
+      return function->FuncDescription()->ToCString();
+  }
+  return entity->DefLevel() == IGESData_DefOne && entity->Level() > 0 ? std::to_string(entity->Level()) : std::string();
+}
+
 ImportReport read_iges(const fs::path& path) {
   IGESControl_Controller::Init();
   // Keep each B-spline whole: by default the reader splits curves at C0 knots into several edges.
@@ -458,7 +483,10 @@ ImportReport read_iges(const fs::path& path) {
         !entity.IsNull() && entity->HasName() ? std::string(entity->NameValue()->ToCString()) : std::string();
     const int number = entity.IsNull() ? 0 : model->Number(entity);
     report.curves.push_back(edge_curve(edge, name, number > 0 ? "DE " + std::to_string(2 * number - 1) : "", kind));
-    if (!entity.IsNull()) report.curves.back().colour = iges_colour(entity);
+    if (!entity.IsNull()) {
+      report.curves.back().colour = iges_colour(entity);
+      report.curves.back().layer = iges_layer(entity);
+    }
   }
   return report;
 }
