@@ -401,6 +401,12 @@ TEST(ClothoidSpline, RefusesBadInputNamingIt) {
   o.continuity = 3;
   HULA_EXPECT_ERROR((void)fit_clothoid_spline(three, o), Errc::InvalidOption, "continuity");
   HULA_EXPECT_ERROR((void)fit_biarc({1, 1, 0}, 0.0, {1, 1, 0}, 1.0), Errc::CoincidentPoints, "p1");
+  // A G2 iteration cut short is a NumericalFailure naming the points and the curvature jump left.
+  const std::vector<Vec3> loop{{2, 0, 0}, {1, 1.6, 0}, {-1, 1.9, 0}, {-2.2, 0.2, 0}, {-1, -1.7, 0}, {1.2, -1.5, 0}};
+  o = {};
+  o.closed = true;
+  o.max_iterations = 1;
+  HULA_EXPECT_ERROR((void)fit_clothoid_spline(loop, o), Errc::NumericalFailure, "curvature jump");
 }
 
 // checks: biarcs against closed forms over seeded end angles in (−π, π): the joint lies on the chord's
