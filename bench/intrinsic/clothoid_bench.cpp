@@ -73,6 +73,44 @@ void BM_intrinsic_clothoid_g2_fit(benchmark::State& state) {
 }
 BENCHMARK(BM_intrinsic_clothoid_g2_fit);
 
+// Splines through N points of a seeded closed loop (the three-lobed r = 1 + 0.25 cos 3t at angles jittered by
+// ±0.3 of the spacing; noise of the order of the spacing makes zigzag data, on which G2 Newton may fail): the time
+// per segment is the reported time divided by N (items = segments). G2 is Newton on the N tangent angles (each
+// iteration N G1 fits and their end-curvature derivatives, one cyclic tridiagonal solve); G1 is the N
+// three-point-circle angles and N G1 fits; biarcs the same angles and 2N arcs in closed form.
+std::vector<Vec3> loop(int n) {
+  std::mt19937 rng(26);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<Vec3> p;
+  for (int i = 0; i < n; ++i) {
+    const double t = 2 * std::numbers::pi * (i + 0.3 * u(rng)) / n, rho = 1.0 + 0.25 * std::cos(3 * t);
+    p.push_back({rho * std::cos(t), rho * std::sin(t), 0.0});
+  }
+  return p;
+}
+
+void spline_bench(benchmark::State& state, int continuity, bool biarc) {
+  const std::vector<Vec3> pts = loop(static_cast<int>(state.range(0)));
+  hula::intrinsic::ClothoidSplineOptions o;
+  o.closed = true;
+  o.continuity = continuity;
+  int iterations = 0;
+  for (auto _ : state) {
+    const hula::intrinsic::ClothoidSplineResult r = biarc ? fit_biarc_spline(pts, o) : fit_clothoid_spline(pts, o);
+    iterations = r.iterations;
+    benchmark::DoNotOptimize(r.segments.data());
+  }
+  state.counters["newton"] = iterations;
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * state.range(0));
+}
+
+void BM_intrinsic_clothoid_spline_g2_closed(benchmark::State& state) { spline_bench(state, 2, false); }
+BENCHMARK(BM_intrinsic_clothoid_spline_g2_closed)->Arg(16)->Arg(128)->Arg(1024);
+void BM_intrinsic_clothoid_spline_g1_closed(benchmark::State& state) { spline_bench(state, 1, false); }
+BENCHMARK(BM_intrinsic_clothoid_spline_g1_closed)->Arg(128);
+void BM_intrinsic_biarc_spline_closed(benchmark::State& state) { spline_bench(state, 1, true); }
+BENCHMARK(BM_intrinsic_biarc_spline_closed)->Arg(128);
+
 void BM_intrinsic_fresnel(benchmark::State& state) {
   double x = 0.0;
   for (auto _ : state) {

@@ -8,6 +8,7 @@ Geometry:
     interpolate       cubic spline through points (thesis 5.5, 7.1).
     approximate       B-spline within a tolerance of points, or least squares with n control points.
     clothoid_g1, clothoid_g2   clothoids between end points with tangent angles (and curvatures).
+    clothoid_spline, biarc     G1 / G2 clothoid and biarc splines through points (open or closed); one biarc.
     Law               law expressions: parse, evaluate, derive, integrate, roots.
     analyse           κ, τ, T, N, B, speed, fins along a curve (thesis ch. 6).
     reconstruct       a curve from its natural equations κ(s), τ(s) (thesis 8.2.2).
@@ -52,6 +53,8 @@ interpolate = _core.interpolate
 approximate = _core.approximate
 clothoid_g1 = _core.clothoid_g1
 clothoid_g2 = _core.clothoid_g2
+clothoid_spline = _core.clothoid_spline
+biarc = _core.biarc
 read_points = _core.read_points
 analyse = _core.analyse
 reconstruct = _core.reconstruct
@@ -68,7 +71,7 @@ exchange_helper = _core.exchange_helper
 
 __all__ = [
     "NurbsCurve", "ClosestPoint", "IntrinsicCurve", "NurbsFit", "Law", "interpolate", "approximate", "clothoid_g1",
-    "clothoid_g2", "read_points",
+    "clothoid_g2", "clothoid_spline", "biarc", "read_points",
     "analyse",
     "reconstruct", "intersect", "distance", "offset", "helical_offset", "orthotomic", "polar_map", "hermite_frenet",
     "read", "write", "exchange_helper",

@@ -270,6 +270,12 @@ def approximate(points: Any, *, tolerance: Optional[float] = ..., control_points
     parameterisation: "chord", "uniform", "centripetal" or "foley".
     """
 
+def biarc(p0: Any, theta0: float, p1: Any, theta1: float) -> object:
+    """The equal-chord biarc from p0 with tangent angle theta0 to p1 with theta1 (radians): two circular arcs
+    joined with G1 continuity, as `hula clothoid --biarc` gives it: {"segments": [2 segment dicts as
+    clothoid_g1's, dkappa 0], "length"}.
+    """
+
 def builtin_problem(name: str, dimension: int = ..., objectives: int = ...) -> dict:
     ...
 
@@ -284,6 +290,14 @@ def clothoid_g2(p0: Any, theta0: float, kappa0: float, p1: Any, theta1: float, k
     """Three clothoid arcs joined with G2 continuity from (p0, theta0, kappa0) to (p1, theta1, kappa1)
     (Bertolazzi-Frego 2018), as `hula clothoid` gives them: {"segments": [3 segment dicts as clothoid_g1's],
     "length", "iterations"}. Curvatures in 1/model units (> 0 turns left).
+    """
+
+def clothoid_spline(points: Any, *, closed: bool = ..., continuity: int = ..., start_angle: Optional[float] = ..., end_angle: Optional[float] = ..., biarc: bool = ...) -> object:
+    """A clothoid spline through (n, 2) points, as `hula clothoid --points` makes it: G2 (curvature continuous,
+    continuity=2) or G1 (continuity=1), open or closed; with biarc=True a G1 spline of biarcs (two arcs per
+    interval). Open splines take optional end tangent angles (both or neither; free ends are circular end
+    segments for G2). Returns {"kind", "segments", "length", "iterations", "through", "closed",
+    "curve"}: "curve" is the curve file (a natural curve held by its curvature law, docs/formats.md).
     """
 
 def distance(a: NurbsCurve, b: NurbsCurve, *, tolerance: Optional[float] = ...) -> object:

@@ -10,6 +10,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -27,6 +28,7 @@
 #include "hula/io/clothoid_json.hpp"
 #include "hula/io/curve_analysis_json.hpp"
 #include "hula/io/curve_edits.hpp"
+#include "hula/io/exact_curves.hpp"
 #include "hula/io/intersection_json.hpp"
 #include "hula/io/json_curve.hpp"
 #include "hula/io/points_file.hpp"
@@ -631,6 +633,44 @@ void register_geometry(py::module_& m) {
       "Three clothoid arcs joined with G2 continuity from (p0, theta0, kappa0) to (p1, theta1, kappa1)\n"
       "(Bertolazzi-Frego 2018), as `hula clothoid` gives them: {\"segments\": [3 segment dicts as clothoid_g1's],\n"
       "\"length\", \"iterations\"}. Curvatures in 1/model units (> 0 turns left).");
+
+  m.def(
+      "clothoid_spline",
+      [](py::handle points, bool closed, int continuity, std::optional<double> start_angle,
+         std::optional<double> end_angle, bool biarc) {
+        io::ClothoidRequest q;
+        q.points = as_points(points, "points", 2).points;
+        q.closed = closed;
+        q.biarc = biarc;
+        if (!biarc) q.continuity = continuity;
+        if (start_angle.has_value() != end_angle.has_value())
+          throw Error(Errc::InvalidArgument, "start_angle and end_angle go together",
+                      ErrorWhere{.field = start_angle ? "end_angle" : "start_angle"});
+        q.end_angles = start_angle.has_value();
+        q.start_angle = start_angle.value_or(0.0);
+        q.end_angle = end_angle.value_or(0.0);
+        io::ClothoidAnswer a = io::clothoid_answer(q);
+        a.json["curve"] = io::curve_to_json(io::clothoid_curve(a.segments, curve::kNaturalTolerance));
+        return to_python(a.json);
+      },
+      py::arg("points"), py::kw_only(), py::arg("closed") = false, py::arg("continuity") = 2,
+      py::arg("start_angle") = py::none(), py::arg("end_angle") = py::none(), py::arg("biarc") = false,
+      "A clothoid spline through (n, 2) points, as `hula clothoid --points` makes it: G2 (curvature continuous,\n"
+      "continuity=2) or G1 (continuity=1), open or closed; with biarc=True a G1 spline of biarcs (two arcs per\n"
+      "interval). Open splines take optional end tangent angles (both or neither; free ends are circular end\n"
+      "segments for G2). Returns {\"kind\", \"segments\", \"length\", \"iterations\", \"through\", \"closed\",\n"
+      "\"curve\"}: \"curve\" is the curve file (a natural curve held by its curvature law, docs/formats.md).");
+  m.def(
+      "biarc",
+      [](py::handle p0, double theta0, py::handle p1, double theta1) {
+        const std::array<intrinsic::ClothoidSegment, 2> b =
+            intrinsic::fit_biarc(as_point(p0, "p0"), theta0, as_point(p1, "p1"), theta1);
+        return to_python(io::clothoid_spline_to_json(b));
+      },
+      py::arg("p0"), py::arg("theta0"), py::arg("p1"), py::arg("theta1"),
+      "The equal-chord biarc from p0 with tangent angle theta0 to p1 with theta1 (radians): two circular arcs\n"
+      "joined with G1 continuity, as `hula clothoid --biarc` gives it: {\"segments\": [2 segment dicts as\n"
+      "clothoid_g1's, dkappa 0], \"length\"}.");
 
   m.def("analyse", &analyse, py::arg("curve"), py::arg("samples") = 100, py::kw_only(), py::arg("at") = py::none(),
         py::arg("by") = "parameter", py::arg("arc_lengths") = false, py::arg("bishop") = false,

@@ -128,6 +128,47 @@ def test_clothoid_g2_reproduces_a_circle_and_is_g2():
         assert a["kappa1"] == pytest.approx(b["kappa0"], abs=1e-12)
 
 
+def test_clothoid_spline_closed_g2_and_biarcs(tmp_path):
+    # checks a closed G2 spline through a seeded loop joins with position, angle and curvature equal to 1e-9 at every
+    # point (the closing one too) and ends on each point; its "curve" is the natural curve file `hula clothoid -o`
+    # writes for the same points (same JSON); points on a circle of radius 3 give kappa 1/3 everywhere; biarcs of the
+    # loop are G1 with dkappa 0; the biarc of symmetric data is one circle (kappa = -2 sin(phi0) / d)
+    rng = np.random.default_rng(26)
+    t = np.sort(rng.uniform(0, 2 * np.pi, 7))
+    rho = 1 + 0.3 * rng.uniform(-1, 1, 7)
+    pts = np.column_stack([rho * np.cos(t), rho * np.sin(t)])
+    r = hh.clothoid_spline(pts, closed=True)
+    segs = r["segments"]
+    assert (r["kind"], r["through"], r["closed"], len(segs)) == ("g2", 7, True, 7)
+    for i, a in enumerate(segs):
+        b = segs[(i + 1) % 7]
+        assert np.hypot(a["end"][0] - b["start"][0], a["end"][1] - b["start"][1]) < 1e-9
+        assert abs(np.remainder(a["theta1"] - b["theta0"] + np.pi, 2 * np.pi) - np.pi) < 1e-9
+        assert abs(a["kappa1"] - b["kappa0"]) < 1e-9
+        assert np.hypot(*(np.array(a["end"]) - pts[(i + 1) % 7])) < 1e-9
+    path = tmp_path / "pts.json"
+    path.write_text(json.dumps(pts.tolist()))
+    out = tmp_path / "loop.json"
+    hula("clothoid", "--points", str(path), "--closed", "-o", str(out))
+    assert json.loads(out.read_text()) == r["curve"]
+    circle = [[3 * np.cos(a), 3 * np.sin(a)] for a in (0.2, 0.9, 1.5, 2.6, 3.1)]
+    for c in (1, 2):
+        for s in hh.clothoid_spline(circle, continuity=c)["segments"]:
+            assert s["kappa0"] == pytest.approx(1 / 3, abs=1e-10) and s["dkappa"] == pytest.approx(0, abs=1e-10)
+    b = hh.clothoid_spline(pts, closed=True, biarc=True)
+    assert b["kind"] == "biarc" and len(b["segments"]) == 14
+    for i, a in enumerate(b["segments"]):
+        n = b["segments"][(i + 1) % 14]
+        assert a["dkappa"] == 0
+        assert np.hypot(a["end"][0] - n["start"][0], a["end"][1] - n["start"][1]) < 1e-9
+        assert abs(np.remainder(a["theta1"] - n["theta0"] + np.pi, 2 * np.pi) - np.pi) < 1e-9
+    one = hh.biarc([0, 0], 0.4, [2, 0], -0.4)
+    assert [s["kappa0"] for s in one["segments"]] == pytest.approx([-np.sin(0.4)] * 2, abs=1e-15)
+    with pytest.raises(hh.InvalidArgumentError) as e:
+        hh.clothoid_spline(pts, start_angle=0.3)
+    assert e.value.where["field"] == "end_angle"
+
+
 def test_fit_is_the_cli_fit(tmp_path):
     # checks fit on a noisy sine (seeded) gives the curve and figures `hula fit --class A` gives, bit for bit,
     # with every kept point within the class-A tolerance 0.3

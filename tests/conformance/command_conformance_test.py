@@ -14,6 +14,10 @@ door calls the same io entry):
   hulahoops.offset, helical_offset, orthotomic, polar_map (io::offset_answer,
   helical_offset_answer, orthotomic_answer, polar_answer; the commands write the made
   curve to -o, read back here, where the route and the binding answer it as "curve");
+- clothoid and biarc splines through points, open and closed: `hula clothoid --points`,
+  POST /api/clothoid and hulahoops.clothoid_spline (io::clothoid_answer; the command
+  writes the curve to -o, read back here, where the route and the binding answer it
+  as "curve");
 - a curve from its natural equations: `hula reconstruct` and POST /api/reconstruct
   (io::reconstruction_answer; the CLI prints the points, integration and fit members
   the route answers, the route adds the fitted curve);
@@ -247,6 +251,31 @@ def joins(hula, server, failures, folder):
         if cli["curve"]["degree"] != 2 * int(k[1]) + 1 or any(g is None or g[1] < k[1] for g in reached):
             failures.append(f"blend {a} {b}: degree {cli['curve']['degree']}, ends {cli['start']} {cli['end']}")
     return len(MATCHES) + len(BLENDS)
+# Clothoid splines: an open walk (G2, G1) and a seeded loop (closed G2, closed biarcs).
+WALK = [[0, 0], [1.2, 0.4], [2.0, 1.5], [3.1, 1.7], [3.9, 0.8], [5.2, 0.6]]
+
+
+def clothoids(hula, server, failures, folder):
+    out = str(pathlib.Path(folder) / "clothoid.json")
+    loop = seeded_points(26, 7, 2)
+    cases = [("walk", WALK, False, "g2"), ("walk", WALK, False, "g1"), ("loop", loop, True, "g2"),
+             ("loop", loop, True, "biarc")]
+    for name, points, closed, fit in cases:
+        source = pathlib.Path(folder) / f"{name}.clothoid-points.json"
+        source.write_text(json.dumps(points))
+        cli = run(hula, "clothoid", "--points", str(source), f"--{fit}", *(["--closed"] if closed else []), "-o", out)
+        del cli["output"]
+        cli["curve"] = json.loads(pathlib.Path(out).read_text())
+        http = post(server, "/api/clothoid", {"points": points, "closed": closed, "fit": fit})
+        py = plain(hh.clothoid_spline(points, closed=closed, biarc=fit == "biarc",
+                                      continuity=1 if fit == "g1" else 2))
+        compare(failures, f"clothoid {name} {fit}", [("CLI", cli), ("HTTP", http), ("Python", py)])
+        # Independent fact: every segment ends on its data point.
+        per = 2 if fit == "biarc" else 1
+        for i, seg in enumerate(http["segments"][per - 1::per]):
+            if math.dist(seg["end"], points[(i + 1) % len(points)]) > 1e-9:
+                failures.append(f"clothoid {name} {fit}: segment {i} ends at {seg['end']}, not on its point")
+    return len(cases)
 
 
 def job(server, body):
@@ -347,6 +376,7 @@ def main():
         checked += reconstructions(hula, server, failures)
         checked += constructions(hula, server, failures, folder)
         checked += joins(hula, server, failures, folder)
+        checked += clothoids(hula, server, failures, folder)
         checked += optimisations(hula, server, failures, folder)
         checked += edits(hula, failures, folder)
     for f in failures:

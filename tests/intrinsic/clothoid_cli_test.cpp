@@ -5,12 +5,16 @@
 // `--at` sampling, and exit codes 2/3 with the error JSON naming the input.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <string>
 #include <vector>
 
+#include "hula/core/vec.hpp"
 #include "hula/curve/curve.hpp"
 #include "hula/io/json_curve.hpp"
 #include "hula/testing/process_json.hpp"
@@ -152,6 +156,119 @@ TEST(ClothoidCli, ErrorsNameTheInput) {
     EXPECT_EQ(r.exit_code, 2) << r.err;
     EXPECT_EQ(testing::stderr_error(r)["code"], "UsageError");
   }
+}
+
+// Writes points "x y" lines to `path`.
+void write_points(const std::filesystem::path& path, const std::vector<std::array<double, 2>>& pts) {
+  std::ofstream out(path);
+  out.precision(17);
+  for (const auto& p : pts) out << p[0] << ' ' << p[1] << '\n';
+}
+
+// checks: --points --closed (G2 by default) through six points of a loop: "through" 6, six segments, each segment's
+// printed end equal to the next one's start, angle (mod 2π) and curvature to 1e-9, the closing joint included,
+// every segment ending on its data point; the -o curve file is a natural curve of the same length through the
+// points (evaluated exactly, to 1e-9); --g1 gives the same positions and angles but not the curvatures; --biarc gives
+// 12 arcs (dkappa 0) with G1 joints.
+TEST(ClothoidCli, ClosedSplineThroughPoints) {
+  testing::TempDir dir;
+  const std::vector<std::array<double, 2>> pts{{2, 0}, {1, 1.6}, {-1, 1.9}, {-2.2, 0.2}, {-1, -1.7}, {1.2, -1.5}};
+  write_points(dir.path() / "loop.txt", pts);
+  const std::string file = (dir.path() / "loop.txt").string(), out = (dir.path() / "loop.json").string();
+  const auto check = [&](const json& j, std::size_t per, bool g2) {
+    const json& s = j["segments"];
+    EXPECT_EQ(j["through"], 6);
+    EXPECT_EQ(j["closed"], true);
+    ASSERT_EQ(s.size(), 6 * per);
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      const json& a = s[i];
+      const json& b = s[(i + 1) % s.size()];
+      for (std::size_t k = 0; k < 2; ++k) EXPECT_NEAR(a["end"][k].get<double>(), b["start"][k].get<double>(), 1e-9);
+      EXPECT_NEAR(std::remainder(a["theta1"].get<double>() - b["theta0"].get<double>(), 2 * std::numbers::pi), 0.0,
+                  1e-9);
+      if (g2) {
+        EXPECT_NEAR(a["kappa1"].get<double>(), b["kappa0"].get<double>(), 1e-9) << i;
+      }
+      if ((i + 1) % per == 0) {
+        const auto& p = pts[((i + 1) / per) % pts.size()];
+        EXPECT_NEAR(a["end"][0].get<double>(), p[0], 1e-9);
+        EXPECT_NEAR(a["end"][1].get<double>(), p[1], 1e-9);
+      }
+    }
+  };
+  const ProcessResult r = hula({"clothoid", "--points", file, "--closed", "-o", out});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_EQ(j["kind"], "g2");
+  check(j, 1, true);
+  const curve::Curve c = io::read_curve_file(out);
+  ASSERT_EQ(c.kind(), curve::Kind::Natural);
+  EXPECT_NEAR(c.length(), j["length"].get<double>(), 1e-12);
+  double at = 0.0;
+  for (std::size_t i = 0; i < 6; ++i) {
+    at += j["segments"][i]["length"].get<double>();
+    const auto& p = pts[(i + 1) % 6];
+    EXPECT_LT(distance(c.point(std::min(at, c.length())), Vec3{p[0], p[1], 0}), 1e-9) << i;
+  }
+  const ProcessResult g1 = hula({"clothoid", "--points", file, "--closed", "--g1"});
+  ASSERT_EQ(g1.exit_code, 0) << g1.err;
+  const json k = json::parse(g1.out);
+  EXPECT_EQ(k["kind"], "g1");
+  check(k, 1, false);
+  double jump = 0.0;
+  for (std::size_t i = 0; i < 6; ++i)
+    jump = std::max(
+        jump, std::abs(k["segments"][i]["kappa1"].get<double>() - k["segments"][(i + 1) % 6]["kappa0"].get<double>()));
+  EXPECT_GT(jump, 1e-3);
+  const ProcessResult b = hula({"clothoid", "--points", file, "--closed", "--biarc"});
+  ASSERT_EQ(b.exit_code, 0) << b.err;
+  const json bj = json::parse(b.out);
+  EXPECT_EQ(bj["kind"], "biarc");
+  check(bj, 2, false);
+  for (const json& seg : bj["segments"]) EXPECT_EQ(seg["dkappa"].get<double>(), 0.0);
+}
+
+// checks: an open spline with given end angles starts and ends with them (mod 2π, 1e-12); points on a circle of
+// radius 2 give κ = 0.5 on every segment (1e-10); the usage errors of the new options exit 2 and bad points exit 3
+// naming "points" and the index.
+TEST(ClothoidCli, OpenSplineEndAnglesCircleAndErrors) {
+  testing::TempDir dir;
+  std::vector<std::array<double, 2>> circle;
+  for (const double t : {0.0, 0.5, 1.3, 1.9, 2.8}) circle.push_back({2 * std::cos(t), 2 * std::sin(t)});
+  write_points(dir.path() / "arc.txt", circle);
+  const std::string file = (dir.path() / "arc.txt").string();
+  const ProcessResult r = hula({"clothoid", "--points", file});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_EQ(j["closed"], false);
+  for (const json& seg : j["segments"]) {
+    EXPECT_NEAR(seg["kappa0"].get<double>(), 0.5, 1e-10);
+    EXPECT_NEAR(seg["dkappa"].get<double>(), 0.0, 1e-10);
+  }
+  EXPECT_NEAR(j["length"].get<double>(), 2 * 2.8, 1e-10);
+  const ProcessResult e = hula({"clothoid", "--points", file, "--start-angle", "0.1", "--end-angle", "3"});
+  ASSERT_EQ(e.exit_code, 0) << e.err;
+  const json ej = json::parse(e.out);
+  EXPECT_NEAR(ej["segments"][0]["theta0"].get<double>(), 0.1, 1e-15);
+  EXPECT_NEAR(std::remainder(ej["segments"][3]["theta1"].get<double>() - 3.0, 2 * std::numbers::pi), 0.0, 1e-12);
+  for (const auto& args : {std::vector<std::string>{"clothoid", "--points", file, "--start-angle", "1"},
+                           std::vector<std::string>{"clothoid", "--points", file, "--g1", "--g2"},
+                           std::vector<std::string>{"clothoid", "--points", file, "--end-point", "1,1"},
+                           std::vector<std::string>{"clothoid", "--start-point", "0,0", "--start-angle", "0",
+                                                    "--end-point", "1,0", "--end-angle", "0", "--closed"}}) {
+    const ProcessResult u = hula(args);
+    EXPECT_EQ(u.exit_code, 2) << u.err;
+    EXPECT_EQ(testing::stderr_error(u)["code"], "UsageError") << u.err;
+  }
+  write_points(dir.path() / "dup.txt", {{0, 0}, {1, 0}, {1, 0}, {2, 1}});
+  const ProcessResult d = hula({"clothoid", "--points", (dir.path() / "dup.txt").string()});
+  EXPECT_EQ(d.exit_code, 3) << d.err;
+  EXPECT_EQ(testing::stderr_error(d)["where"]["field"], "points");
+  EXPECT_EQ(testing::stderr_error(d)["where"]["index"], 2);
+  write_points(dir.path() / "two.txt", {{0, 0}, {1, 0}});
+  const ProcessResult t = hula({"clothoid", "--points", (dir.path() / "two.txt").string(), "--closed"});
+  EXPECT_EQ(t.exit_code, 3) << t.err;
+  EXPECT_EQ(testing::stderr_error(t)["code"], "TooFewPoints") << t.err;
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include <limits>
 #include <numbers>
 #include <random>
+#include <vector>
 
 #include "hula/testing/clothoid_check.hpp"
 #include "hula/testing/expect_error.hpp"
@@ -247,6 +248,225 @@ TEST(ClothoidG2, RefusesBadInputNamingIt) {
   o = {};
   o.max_iterations = 1;
   HULA_EXPECT_ERROR(fit_clothoid_g2({0, 0, 0}, 0.0, 0.5, {1, 0, 0}, 1.0, -40.0, o), Errc::NumericalFailure, "kappa1");
+}
+
+// --- Splines through N points and biarcs ----------------------------------------------------------------
+
+// Largest mismatch at the joints of a spline (and its closing joint): end position of segment i by the closed
+// form (not point()'s quadrature) against the start of segment i + 1 and against the data point, tangent angle
+// modulo 2π, curvature; with `g2` false the curvature is not compared.
+struct JointGaps {
+  double position = 0.0, angle = 0.0, curvature = 0.0, interpolation = 0.0;
+};
+
+JointGaps joint_gaps(const ClothoidSplineResult& r, const std::vector<Vec3>& points, bool closed, int per_interval) {
+  JointGaps g;
+  const std::size_t m = r.segments.size();
+  for (std::size_t i = 0; i < m; ++i) {
+    const ClothoidSegment& a = r.segments[i];
+    const Vec3 end = testing::closed_form_end(a);
+    if ((i + 1) % static_cast<std::size_t>(per_interval) == 0) {
+      const std::size_t k = (i + 1) / static_cast<std::size_t>(per_interval);
+      g.interpolation = std::max(g.interpolation, distance(end, points[k % points.size()]));
+    }
+    if (i + 1 == m && !closed) break;
+    const ClothoidSegment& b = r.segments[(i + 1) % m];
+    g.position = std::max(g.position, distance(end, b.start));
+    g.angle = std::max(g.angle, std::abs(std::remainder(a.angle(a.length) - b.theta0, 2 * kPi)));
+    g.curvature = std::max(g.curvature, std::abs(a.curvature(a.length) - b.kappa0));
+  }
+  return g;
+}
+
+// Two seeded generators: a closed star-shaped loop (radius 1 ± 0.3 at angles with jitter) and an open random walk
+// (steps 0.5–1.5 long, turns within ±1 rad).
+std::vector<Vec3> loop_points(std::mt19937& rng, int n) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<Vec3> p;
+  for (int i = 0; i < n; ++i) {
+    const double t = 2 * kPi * (i + 0.3 * u(rng)) / n, rho = 1.0 + 0.3 * u(rng);
+    p.push_back({rho * std::cos(t), rho * std::sin(t), 0.0});
+  }
+  return p;
+}
+
+std::vector<Vec3> walk_points(std::mt19937& rng, int n) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<Vec3> p{{0, 0, 0}};
+  double heading = kPi * u(rng);
+  for (int i = 1; i < n; ++i) {
+    heading += u(rng);
+    const double step = 1.0 + 0.5 * u(rng);
+    p.push_back(p.back() + step * Vec3{std::cos(heading), std::sin(heading), 0.0});
+  }
+  return p;
+}
+
+// checks: G2 splines through seeded open walks and closed loops interpolate every point and join with position,
+// tangent and curvature equal to 1e-9 (the closing joint of a closed one included), positions by the Fresnel closed
+// form; G1 splines join in position and tangent but not in curvature.
+TEST(ClothoidSpline, G2JointsAgreeOnTwoGenerators) {
+  std::mt19937 rng(2611);
+  for (int trial = 0; trial < 12; ++trial) {
+    const bool closed = trial % 2 == 0;
+    const int n = 4 + trial;
+    const std::vector<Vec3> pts = closed ? loop_points(rng, n) : walk_points(rng, n);
+    ClothoidSplineOptions o;
+    o.closed = closed;
+    const ClothoidSplineResult r = fit_clothoid_spline(pts, o);
+    ASSERT_EQ(r.segments.size(), static_cast<std::size_t>(closed ? n : n - 1));
+    const JointGaps g = joint_gaps(r, pts, closed, 1);
+    EXPECT_LT(g.position, 1e-9) << trial;
+    EXPECT_LT(g.angle, 1e-9) << trial;
+    EXPECT_LT(g.curvature, 1e-9) << trial;
+    EXPECT_LT(g.interpolation, 1e-9) << trial;
+    EXPECT_LE(r.iterations, 20) << trial;
+    if (!closed) {  // free ends: circular end segments
+      EXPECT_LT(std::abs(r.segments.front().dkappa) * r.segments.front().length, 1e-9);
+      EXPECT_LT(std::abs(r.segments.back().dkappa) * r.segments.back().length, 1e-9);
+    }
+    o.continuity = 1;
+    const ClothoidSplineResult g1 = fit_clothoid_spline(pts, o);
+    const JointGaps h = joint_gaps(g1, pts, closed, 1);
+    EXPECT_LT(std::max({h.position, h.angle, h.interpolation}), 1e-9) << trial;
+    EXPECT_GT(h.curvature, 1e-3) << trial;  // G1 only: the curvature jumps somewhere
+    EXPECT_EQ(g1.iterations, 0);
+  }
+}
+
+// checks: points on one circle (uneven spacing) give that circle, G1 and G2, open and closed: κ = 1/R and κ′ = 0 on
+// every segment, total length R times the angle swept.
+TEST(ClothoidSpline, PointsOnACircleGiveTheCircle) {
+  const double radius = 2.5;
+  const std::vector<double> at{0.0, 0.7, 1.1, 2.0, 2.9, 3.3, 4.4, 5.2};
+  std::vector<Vec3> pts;
+  for (const double t : at) pts.push_back({1.0 + radius * std::cos(t), -2.0 + radius * std::sin(t), 0.0});
+  for (const bool closed : {false, true})
+    for (const int continuity : {1, 2}) {
+      ClothoidSplineOptions o;
+      o.closed = closed;
+      o.continuity = continuity;
+      const ClothoidSplineResult r = fit_clothoid_spline(pts, o);
+      for (const ClothoidSegment& s : r.segments) {
+        EXPECT_NEAR(s.kappa0, 1.0 / radius, 1e-11) << closed << continuity;
+        EXPECT_NEAR(s.dkappa, 0.0, 1e-11) << closed << continuity;
+      }
+      EXPECT_NEAR(r.length(), radius * (closed ? 2 * kPi : at.back()), 1e-10) << closed << continuity;
+    }
+}
+
+// checks: given end angles are kept (open), the spline still G2 inside; the closed list given with its first point
+// repeated is the same spline as without it.
+TEST(ClothoidSpline, GivenEndAnglesAndAClosedListRepeatingItsStart) {
+  std::mt19937 rng(77);
+  const std::vector<Vec3> pts = walk_points(rng, 7);
+  ClothoidSplineOptions o;
+  o.start_angle = 0.3;
+  o.end_angle = -2.0;
+  const ClothoidSplineResult r = fit_clothoid_spline(pts, o);
+  EXPECT_DOUBLE_EQ(r.segments.front().theta0, 0.3);
+  const ClothoidSegment& last = r.segments.back();
+  EXPECT_LT(std::abs(std::remainder(last.angle(last.length) + 2.0, 2 * kPi)), 1e-12);
+  const JointGaps g = joint_gaps(r, pts, false, 1);
+  EXPECT_LT(std::max({g.position, g.angle, g.curvature, g.interpolation}), 1e-9);
+
+  std::vector<Vec3> loop = loop_points(rng, 6);
+  ClothoidSplineOptions c;
+  c.closed = true;
+  const ClothoidSplineResult a = fit_clothoid_spline(loop, c);
+  loop.push_back(loop.front());
+  const ClothoidSplineResult b = fit_clothoid_spline(loop, c);
+  ASSERT_EQ(a.segments.size(), b.segments.size());
+  EXPECT_NEAR(a.length(), b.length(), 1e-14);
+}
+
+TEST(ClothoidSpline, RefusesBadInputNamingIt) {
+  const std::vector<Vec3> one{{0, 0, 0}};
+  HULA_EXPECT_ERROR((void)fit_clothoid_spline(one), Errc::TooFewPoints, "points");
+  const std::vector<Vec3> twice{{0, 0, 0}, {1, 0, 0}, {1, 0, 0}, {2, 1, 0}};
+  HULA_EXPECT_ERROR((void)fit_clothoid_spline(twice), Errc::CoincidentPoints, "points[2]");
+  const std::vector<Vec3> nan{{0, 0, 0}, {std::nan(""), 0, 0}, {2, 1, 0}};
+  HULA_EXPECT_ERROR((void)fit_clothoid_spline(nan), Errc::NonFiniteInput, "points[1]");
+  const std::vector<Vec3> two{{0, 0, 0}, {1, 0, 0}, {0, 0, 0}};
+  ClothoidSplineOptions o;
+  o.closed = true;
+  HULA_EXPECT_ERROR((void)fit_clothoid_spline(two, o), Errc::TooFewPoints, "closed spline needs at least 3");
+  const std::vector<Vec3> three{{0, 0, 0}, {1, 0, 0}, {2, 1, 0}};
+  o = {};
+  o.start_angle = 1.0;
+  HULA_EXPECT_ERROR((void)fit_clothoid_spline(three, o), Errc::InvalidArgument, "start_angle");
+  o.end_angle = 1.0;
+  o.closed = true;
+  HULA_EXPECT_ERROR((void)fit_biarc_spline(three, o), Errc::InvalidArgument, "closed spline");
+  o.continuity = 3;
+  HULA_EXPECT_ERROR((void)fit_clothoid_spline(three, o), Errc::InvalidOption, "continuity");
+  HULA_EXPECT_ERROR((void)fit_biarc({1, 1, 0}, 0.0, {1, 1, 0}, 1.0), Errc::CoincidentPoints, "p1");
+  // A G2 iteration cut short is a NumericalFailure naming the points and the curvature jump left.
+  const std::vector<Vec3> loop{{2, 0, 0}, {1, 1.6, 0}, {-1, 1.9, 0}, {-2.2, 0.2, 0}, {-1, -1.7, 0}, {1.2, -1.5, 0}};
+  o = {};
+  o.closed = true;
+  o.max_iterations = 1;
+  HULA_EXPECT_ERROR((void)fit_clothoid_spline(loop, o), Errc::NumericalFailure, "curvature jump");
+}
+
+// checks: biarcs against closed forms over seeded end angles in (−π, π): the joint lies on the chord's
+// perpendicular bisector at distance a = d / (2 cos((φ1 − φ0)/4)) from both ends; each arc's centre (start point
+// plus the normal over κ) is 1/|κ| from both of its ends; the arc ends (by the circle formula) meet at the joint
+// and at p1; the joint tangent is −(φ0 + φ1)/2 from the chord and perpendicular to both radii there.
+TEST(Biarc, ClosedFormsOfTheEqualChordBiarc) {
+  std::mt19937 rng(404);
+  std::uniform_real_distribution<double> ang(-0.95 * kPi, 0.95 * kPi), pos(-3.0, 3.0);
+  for (int trial = 0; trial < 200; ++trial) {
+    const Vec3 p0{pos(rng), pos(rng), 0.0}, p1{pos(rng), pos(rng), 0.0};
+    const double t0 = ang(rng), t1 = ang(rng);
+    const std::array<ClothoidSegment, 2> b = fit_biarc(p0, t0, p1, t1);
+    const double d = distance(p0, p1), chord = std::atan2(p1.y - p0.y, p1.x - p0.x);
+    const double phi0 = std::remainder(t0 - chord, 2 * kPi), phi1 = std::remainder(t1 - chord, 2 * kPi);
+    const double a = d / (2 * std::cos((phi1 - phi0) / 4));
+    const Vec3 joint = b[1].start;
+    EXPECT_NEAR(distance(joint, p0), a, 1e-12 * (1 + a)) << trial;
+    EXPECT_NEAR(distance(joint, p1), a, 1e-12 * (1 + a)) << trial;
+    EXPECT_NEAR(std::remainder(b[1].theta0 - chord + (phi0 + phi1) / 2, 2 * kPi), 0.0, 1e-12) << trial;
+    for (int k = 0; k < 2; ++k) {
+      const ClothoidSegment& s = b[k];
+      EXPECT_EQ(s.dkappa, 0.0);
+      const Vec3 end = testing::closed_form_end(s);
+      EXPECT_LT(distance(end, k == 0 ? joint : p1), 1e-11 * (1 + a)) << trial << k;
+      if (std::abs(s.kappa0) * a > 1e-6) {
+        const Vec3 centre = s.start + Vec3{-std::sin(s.theta0), std::cos(s.theta0), 0.0} / s.kappa0;
+        EXPECT_NEAR(distance(centre, end) * std::abs(s.kappa0), 1.0, 1e-11) << trial << k;
+        // radius perpendicular to the end tangent
+        const double te = s.angle(s.length);
+        const Vec3 radial = end - centre;
+        EXPECT_NEAR((radial.x * std::cos(te) + radial.y * std::sin(te)) * std::abs(s.kappa0), 0.0, 1e-10) << trial;
+      }
+    }
+    EXPECT_NEAR(std::remainder(b[0].angle(b[0].length) - b[1].theta0, 2 * kPi), 0.0, 1e-14);
+    EXPECT_NEAR(std::remainder(b[1].angle(b[1].length) - t1, 2 * kPi), 0.0, 1e-12);
+  }
+  // On one circle (φ1 = −φ0) both arcs have κ = −2 sin φ0 / d; φ0 = φ1 = 0 is the chord.
+  const std::array<ClothoidSegment, 2> c = fit_biarc({0, 0, 0}, 0.4, {2, 0, 0}, -0.4);
+  EXPECT_NEAR(c[0].kappa0, -std::sin(0.4), 1e-15);
+  EXPECT_NEAR(c[1].kappa0, -std::sin(0.4), 1e-15);
+  const std::array<ClothoidSegment, 2> line = fit_biarc({0, 0, 0}, 0.0, {3, 0, 0}, 0.0);
+  EXPECT_EQ(line[0].kappa0, 0.0);
+  EXPECT_DOUBLE_EQ(line[0].length + line[1].length, 3.0);
+}
+
+// checks: biarc splines through both generators interpolate every point with G1 joints (position by the circle
+// formula, tangent angle) to 1e-10, closed ones closing with G1, two arcs per interval.
+TEST(Biarc, SplinesAreG1ThroughThePoints) {
+  std::mt19937 rng(5150);
+  for (int trial = 0; trial < 8; ++trial) {
+    const bool closed = trial % 2 == 1;
+    const std::vector<Vec3> pts = closed ? loop_points(rng, 5 + trial) : walk_points(rng, 5 + trial);
+    ClothoidSplineOptions o;
+    o.closed = closed;
+    const ClothoidSplineResult r = fit_biarc_spline(pts, o);
+    ASSERT_EQ(r.segments.size(), 2 * (closed ? pts.size() : pts.size() - 1));
+    const JointGaps g = joint_gaps(r, pts, closed, 2);
+    EXPECT_LT(std::max({g.position, g.angle, g.interpolation}), 1e-10) << trial;
+  }
 }
 
 }  // namespace

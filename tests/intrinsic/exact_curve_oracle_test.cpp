@@ -13,6 +13,7 @@
 #include <complex>
 #include <numbers>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "hula/diffgeom/features.hpp"
@@ -195,39 +196,54 @@ TEST(ExactCurve, ClothoidSplineArcsMatchFresnel) {
   EXPECT_LT(distance(c.point(c.length()), Vec3{4, 1, 0}), 1e-11);
 }
 
-// checks: κ = 0.8, τ = 0.4 (radius 1, pitch 0.5): the analysis' frame equals the helix's closed-form frame to
-// 1e-10 at the default integration tolerance, κ and τ to rounding, and Curve::derivatives of order 0 … 6 the
-// closed-form derivatives to 1e-9.
+// checks: κ = 0.8, τ = 0.4 (radius 1, pitch 0.5), and a left-handed tight helix and a near-circle (two more
+// generators of the same closed form: radius a = κ/(κ² + τ²), pitch b = τ/(κ² + τ²)): the analysis' frame equals
+// the helix's closed-form frame to 1e-10 at the default integration tolerance, κ and τ to rounding, and
+// Curve::derivatives of order 0 … 6 the closed-form derivatives to 1e-9.
 TEST(ExactCurve, HelixFrameAndDerivatives) {
+  struct Helix {
+    const char* kappa;
+    const char* tau;
+    double k, t;
+  };
+  for (const Helix& h :
+       {Helix{"0.8", "0.4", 0.8, 0.4}, Helix{"1.5", "-0.9", 1.5, -0.9}, Helix{"0.3", "0.02", 0.3, 0.02}}) {
+    SCOPED_TRACE(std::string("kappa ") + h.kappa + " tau " + h.tau);
+    curve::NaturalData d;
+    d.curvature = h.kappa;
+    d.torsion = h.tau;
+    d.length = 20.0;
+    const curve::Curve c = natural_curve(d, curve::kApproximationTolerance);
+    const double w = h.k * h.k + h.t * h.t, a = h.k / w, b = h.t / w, k = std::sqrt(a * a + b * b);
+    // The standard helix (a cos φ, a sin φ, bφ), φ = s/k, seen in its start frame (T0, N0, B0) = (X, Y, Z).
+    const Vec3 T0{0, a / k, b / k}, N0{-1, 0, 0}, B0{0, -b / k, a / k};
+    const auto local = [&](const Vec3& v) { return Vec3{dot(T0, v), dot(N0, v), dot(B0, v)}; };
+    std::vector<double> ts(81);
+    for (std::size_t i = 0; i < ts.size(); ++i) ts[i] = 20.0 * static_cast<double>(i) / 80.0;
+    std::vector<diffgeom::FrenetPoint> f(ts.size());
+    diffgeom::frenet(c, ts, f);
+    for (std::size_t i = 0; i < ts.size(); ++i) {
+      const double phi = ts[i] / k;
+      SCOPED_TRACE("s = " + std::to_string(ts[i]));
+      EXPECT_LT(distance(f[i].tangent, local(Vec3{-a * std::sin(phi), a * std::cos(phi), b} / k)), 1e-10);
+      EXPECT_LT(distance(f[i].normal, local(Vec3{-std::cos(phi), -std::sin(phi), 0})), 1e-10);
+      EXPECT_LT(distance(f[i].binormal, local(Vec3{b * std::sin(phi), -b * std::cos(phi), a} / k)), 1e-10);
+      EXPECT_NEAR(f[i].curvature, h.k, 1e-15);
+      EXPECT_NEAR(f[i].torsion, h.t, 1e-14);
+      const std::vector<Vec3> r = c.derivatives(ts[i], 6);
+      for (int order = 1; order <= 6; ++order) {
+        // d^k/ds^k of (a cos φ, a sin φ, bφ): a/k^k (cos(φ + kπ/2), sin(φ + kπ/2), 0), plus (0, 0, b/k) for k = 1.
+        const double g = a / std::pow(k, order), q = phi + order * kPi / 2;
+        const Vec3 want = local(Vec3{g * std::cos(q), g * std::sin(q), order == 1 ? b / k : 0.0});
+        EXPECT_LT(distance(r[static_cast<std::size_t>(order)], want), 1e-9) << "order " << order;
+      }
+    }
+  }
   curve::NaturalData d;
   d.curvature = "0.8";
   d.torsion = "0.4";
   d.length = 20.0;
   const curve::Curve c = natural_curve(d, curve::kApproximationTolerance);
-  const double a = 1.0, b = 0.5, k = std::sqrt(a * a + b * b);
-  // The standard helix (a cos φ, a sin φ, bφ), φ = s/k, seen in its start frame (T0, N0, B0) = (X, Y, Z).
-  const Vec3 T0{0, a / k, b / k}, N0{-1, 0, 0}, B0{0, -b / k, a / k};
-  const auto local = [&](const Vec3& v) { return Vec3{dot(T0, v), dot(N0, v), dot(B0, v)}; };
-  std::vector<double> ts(81);
-  for (std::size_t i = 0; i < ts.size(); ++i) ts[i] = 20.0 * static_cast<double>(i) / 80.0;
-  std::vector<diffgeom::FrenetPoint> f(ts.size());
-  diffgeom::frenet(c, ts, f);
-  for (std::size_t i = 0; i < ts.size(); ++i) {
-    const double phi = ts[i] / k;
-    SCOPED_TRACE("s = " + std::to_string(ts[i]));
-    EXPECT_LT(distance(f[i].tangent, local(Vec3{-a * std::sin(phi), a * std::cos(phi), b} / k)), 1e-10);
-    EXPECT_LT(distance(f[i].normal, local(Vec3{-std::cos(phi), -std::sin(phi), 0})), 1e-10);
-    EXPECT_LT(distance(f[i].binormal, local(Vec3{b * std::sin(phi), -b * std::cos(phi), a} / k)), 1e-10);
-    EXPECT_NEAR(f[i].curvature, 0.8, 1e-15);
-    EXPECT_NEAR(f[i].torsion, 0.4, 1e-14);
-    const std::vector<Vec3> r = c.derivatives(ts[i], 6);
-    for (int order = 1; order <= 6; ++order) {
-      // d^k/ds^k of (a cos φ, a sin φ, bφ): a/k^k (cos(φ + kπ/2), sin(φ + kπ/2), 0), plus (0, 0, b/k) for k = 1.
-      const double g = a / std::pow(k, order), q = phi + order * kPi / 2;
-      const Vec3 want = local(Vec3{g * std::cos(q), g * std::sin(q), order == 1 ? b / k : 0.0});
-      EXPECT_LT(distance(r[static_cast<std::size_t>(order)], want), 1e-9) << "order " << order;
-    }
-  }
   EXPECT_EQ(c.length(), 20.0);
   EXPECT_EQ(c.length_to(7.5), 7.5);
   EXPECT_EQ(c.parameter_at_length(7.5), 7.5);

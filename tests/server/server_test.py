@@ -330,6 +330,51 @@ class ApiTest(unittest.TestCase):
                 ("/api/blend", {"a": a}, 400, "b")]:
             e = self.call("POST", path, body, expect=status)
             self.assertEqual(e["error"]["where"].get("field"), field, (path, body, e))
+    # checks POST /api/clothoid: a closed G2 spline through points on a circle of radius 2 is that circle (kappa 0.5 and
+    # dkappa 0 on every segment, length 4 pi, every joint G2 in the printed values) with its natural curve file; a G2
+    # spline through a seeded walk joins with G2 to 1e-9; the biarc of a symmetric Hermite problem is one circle
+    # (kappa = -2 sin(phi0) / d); bad requests are 400 naming the member, coincident points 422 naming "points"
+    def test_clothoid_splines(self):
+        import random
+        pts = [[2 * math.cos(t), 2 * math.sin(t)] for t in (0.0, 1.1, 2.0, 3.3, 4.1, 5.5)]
+        body = self.call("POST", "/api/clothoid", {"points": pts, "closed": True})
+        self.assertEqual((body["kind"], body["through"], body["closed"]), ("g2", 6, True))
+        self.assertAlmostEqual(body["length"], 4 * math.pi, places=10)
+        for seg in body["segments"]:
+            self.assertAlmostEqual(seg["kappa0"], 0.5, places=10)
+            self.assertAlmostEqual(seg["dkappa"], 0.0, places=10)
+        self.assertEqual(body["curve"]["kind"], "natural")
+        rng = random.Random(26)
+        walk, heading = [[0.0, 0.0]], 0.3
+        for _ in range(7):
+            heading += rng.uniform(-1, 1)
+            step = rng.uniform(0.5, 1.5)
+            walk.append([walk[-1][0] + step * math.cos(heading), walk[-1][1] + step * math.sin(heading)])
+        body = self.call("POST", "/api/clothoid", {"points": walk, "fit": "g2"})
+        segs = body["segments"]
+        self.assertEqual(len(segs), 7)
+        for a, b in zip(segs, segs[1:]):
+            self.assertLess(math.dist(a["end"], b["start"]), 1e-9)
+            self.assertLess(abs(math.remainder(a["theta1"] - b["theta0"], 2 * math.pi)), 1e-9)
+            self.assertLess(abs(a["kappa1"] - b["kappa0"]), 1e-9)
+        for seg, p in zip(segs, walk[1:]):
+            self.assertLess(math.dist(seg["end"], p), 1e-9)
+        body = self.call("POST", "/api/clothoid", {"start_point": [0, 0], "start_angle": 0.4, "end_point": [2, 0],
+                                                   "end_angle": -0.4, "fit": "biarc"})
+        self.assertEqual(body["kind"], "biarc")
+        for seg in body["segments"]:
+            self.assertAlmostEqual(seg["kappa0"], -math.sin(0.4), places=14)
+        body = self.call("POST", "/api/clothoid", {"start_point": [0, 0], "start_angle": 0, "end_point": [1, 1],
+                                                   "end_angle": math.pi / 2})
+        self.assertEqual(body["kind"], "g1")
+        self.assertAlmostEqual(body["length"], math.pi / 2, places=12)
+        e = self.call("POST", "/api/clothoid", {"points": pts, "fit": "g3"}, expect=400)
+        self.assertEqual(e["error"]["where"]["field"], "fit")
+        e = self.call("POST", "/api/clothoid", {"points": pts, "start_point": [0, 0]}, expect=400)
+        self.assertEqual(e["error"]["where"]["field"], "start_point")
+        e = self.call("POST", "/api/clothoid", {"points": pts, "splines": 2}, expect=400)
+        e = self.call("POST", "/api/clothoid", {"points": [[0, 0], [1, 0], [1, 0]]}, expect=422)
+        self.assertEqual((e["error"]["code"], e["error"]["where"]["field"]), ("CoincidentPoints", "points"))
 
     # checks reconstruction against the closed form circle of kappa = 1 (radius 1, quarter turn at s = pi/2), the fit
     # within the default 1e-6 of the size (the half circle's box is 2 by 1: diagonal sqrt(5))

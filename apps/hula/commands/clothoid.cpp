@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
-// `hula clothoid`: Hermite interpolation by clothoids (intrinsic/clothoid.hpp). With end points and
+// `hula clothoid`: interpolation by clothoids (intrinsic/clothoid.hpp). With end points and
 // tangent angles only, the G1 clothoid (Bertolazzi–Frego 2015, one segment); with the end curvatures
-// as well, the G2 spline of three clothoids (Bertolazzi–Frego 2018). JSON out:
-// {"kind": "g1" | "g2", "segments": [...], "length", "iterations"} (io::clothoid_spline_to_json),
+// as well, the G2 spline of three clothoids (Bertolazzi–Frego 2018); with --points FILE a G1 or G2
+// clothoid spline through the points, open or --closed; --biarc gives biarcs instead. JSON out:
+// {"kind": "g1" | "g2" | "biarc", "segments": [...], "length", "iterations"} (io::clothoid_spline_to_json),
 // and with --at the points, angles and curvatures at given arc lengths along the whole result.
 // -o writes the result as a curve file by its curvature law (a natural curve, evaluated exactly:
 // intrinsic::clothoid_natural_data), or with --to-nurbs TOL as its NURBS within TOL. The answer is
@@ -17,15 +18,17 @@
 #include "hula/core/error.hpp"
 #include "hula/io/atomic_file.hpp"
 #include "hula/io/exact_curves.hpp"
+#include "hula/io/points_file.hpp"
 
 namespace hula::cli {
 
 namespace {
 
 struct ClothoidArgs {
-  std::string start_point, end_point, at, output;
+  std::string start_point, end_point, at, output, points;
   std::optional<double> start_angle, end_angle, start_curvature, end_curvature, to_nurbs;
   double tolerance = curve::kNaturalTolerance;
+  bool closed = false, g1 = false, g2 = false, biarc = false;
 };
 
 // A planar point x,y given as --<field>.
@@ -40,12 +43,29 @@ Vec3 parse_xy(const std::string& text, const char* field) {
 
 int run_clothoid(const ClothoidArgs& a) {
   io::ClothoidRequest q;
-  q.start_point = parse_xy(a.start_point, "start-point");
-  q.end_point = parse_xy(a.end_point, "end-point");
-  q.start_angle = *a.start_angle;
-  q.end_angle = *a.end_angle;
+  if (!a.points.empty()) {
+    // A spline through points: the end angles are optional (both or neither, open splines only).
+    if (a.start_angle.has_value() != a.end_angle.has_value())
+      throw CLI::ValidationError(a.start_angle ? "--end-angle" : "--start-angle",
+                                 "with --points, --start-angle and --end-angle go together");
+    q.points = io::read_points_file(a.points).points;
+    q.closed = a.closed;
+    q.end_angles = a.start_angle.has_value();
+  } else {
+    for (const auto& [given, name] :
+         {std::pair{!a.start_point.empty(), "--start-point"}, std::pair{a.start_angle.has_value(), "--start-angle"},
+          std::pair{!a.end_point.empty(), "--end-point"}, std::pair{a.end_angle.has_value(), "--end-angle"}})
+      if (!given) throw CLI::RequiredError(std::string(name) + " (or --points FILE)");
+    if (a.closed) throw CLI::ValidationError("--closed", "needs --points (a Hermite problem is open)");
+    q.start_point = parse_xy(a.start_point, "start-point");
+    q.end_point = parse_xy(a.end_point, "end-point");
+  }
+  q.start_angle = a.start_angle.value_or(0.0);
+  q.end_angle = a.end_angle.value_or(0.0);
   q.start_curvature = a.start_curvature;
   q.end_curvature = a.end_curvature;
+  q.biarc = a.biarc;
+  if (a.g1 || a.g2) q.continuity = a.g1 ? 1 : 2;
   if (!a.at.empty()) q.at = parse_number_list(a.at, "at");
   io::ClothoidAnswer answer = io::clothoid_answer(q);
   Json doc = std::move(answer.json);
@@ -60,20 +80,37 @@ int run_clothoid(const ClothoidArgs& a) {
 Command add_clothoid(CLI::App& app) {
   auto a = std::make_shared<ClothoidArgs>();
   CLI::App* sub = app.add_subcommand(
-      "clothoid", "Hermite interpolation by clothoids: G1 (one segment) or, with both curvatures, G2 (three)");
+      "clothoid",
+      "Interpolation by clothoids or biarcs: Hermite G1 (one segment), G2 (three) or, with --points, a G1 / G2 "
+      "spline through N points, open or closed");
   constexpr double kMax = std::numeric_limits<double>::max();
-  sub->add_option("--start-point", a->start_point, "Start point x,y")->required();
+  CLI::Option* p0 = sub->add_option("--start-point", a->start_point, "Start point x,y (Hermite problem)");
   add_real_option(sub, "--start-angle", a->start_angle, -kMax, kMax, false,
-                  "Start tangent angle, radians from +x, counter-clockwise")
-      ->required();
-  sub->add_option("--end-point", a->end_point, "End point x,y")->required();
-  add_real_option(sub, "--end-angle", a->end_angle, -kMax, kMax, false, "End tangent angle, radians")->required();
+                  "Start tangent angle, radians from +x, counter-clockwise (with --points: optional, open splines)");
+  CLI::Option* p1 = sub->add_option("--end-point", a->end_point, "End point x,y (Hermite problem)");
+  add_real_option(sub, "--end-angle", a->end_angle, -kMax, kMax, false, "End tangent angle, radians");
+  CLI::Option* pts = sub->add_option(
+      "--points", a->points,
+      "Points file (JSON [[x,y],...] or lines x y): a spline through them instead of the Hermite problem");
+  pts->excludes(p0);
+  pts->excludes(p1);
+  sub->add_flag("--closed", a->closed, "With --points: a closed spline (through the first point again)");
+  CLI::Option* g1 = sub->add_flag("--g1", a->g1, "With --points: G1 (angles from three-point circles)");
+  CLI::Option* g2 = sub->add_flag("--g2", a->g2, "With --points: G2, curvature continuous (the default)");
+  CLI::Option* biarc =
+      sub->add_flag("--biarc", a->biarc, "Biarcs (two circular arcs per interval, G1) instead of clothoids");
+  g1->excludes(g2);
+  biarc->excludes(g1);
+  biarc->excludes(g2);
   CLI::Option* k0 = add_real_option(sub, "--start-curvature", a->start_curvature, -kMax, kMax, false,
                                     "Start curvature (> 0 turns left): asks for the G2 spline");
   CLI::Option* k1 = add_real_option(sub, "--end-curvature", a->end_curvature, -kMax, kMax, false,
                                     "End curvature: asks for the G2 spline");
   k0->needs(k1);
   k1->needs(k0);
+  k0->excludes(pts);
+  k0->excludes(biarc);
+  k1->excludes(pts);
   sub->add_option("--at", a->at, "Arc lengths s0,s1,... along the result at which to print point, angle, curvature");
   add_exact_output_options(sub, a->output, a->to_nurbs, a->tolerance);
   return {sub, [a] {

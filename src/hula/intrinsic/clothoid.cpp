@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "hula/core/banded.hpp"
 #include "hula/core/error.hpp"
 #include "hula/law/parser.hpp"
 
@@ -445,6 +446,339 @@ ClothoidG2Result fit_clothoid_g2(const Vec3& p0, double theta0, double kappa0, c
                   " / |p1 - p0| away from the G1 clothoid's end curvature; phi0 = " + format_number(d.th0) +
                   ", phi1 = " + format_number(d.th1) + ")",
               ErrorWhere{.field = first ? "kappa0" : "kappa1"});
+}
+
+double ClothoidSplineResult::length() const noexcept {
+  double total = 0.0;
+  for (const ClothoidSegment& s : segments) total += s.length;
+  return total;
+}
+
+void ClothoidSplineOptions::validate() const {
+  if (continuity != 1 && continuity != 2)
+    throw Error(Errc::InvalidOption,
+                "ClothoidSplineOptions.continuity = " + std::to_string(continuity) + " is not 1 (G1) or 2 (G2)",
+                ErrorWhere{.field = "continuity"});
+  if (!(tolerance >= 1e-15 && tolerance <= 1e-6))
+    throw Error(Errc::InvalidOption,
+                "ClothoidSplineOptions.tolerance = " + format_number(tolerance) + " is outside [1e-15, 1e-6]",
+                ErrorWhere{.field = "tolerance"});
+  if (max_iterations < 1 || max_iterations > 1000)
+    throw Error(Errc::InvalidOption,
+                "ClothoidSplineOptions.max_iterations = " + std::to_string(max_iterations) + " is outside [1, 1000]",
+                ErrorWhere{.field = "max_iterations"});
+}
+
+namespace {
+
+// The points of a spline, checked (finite, enough, no point equal to the one before; a closed list's repeated
+// first point dropped), and the options' end angles checked against them.
+std::vector<Vec3> spline_points(std::span<const Vec3> points, const ClothoidSplineOptions& options) {
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (!std::isfinite(points[i].x) || !std::isfinite(points[i].y))
+      throw Error(Errc::NonFiniteInput, "points[" + std::to_string(i) + "] is not finite",
+                  ErrorWhere{.field = "points", .index = i});
+  std::vector<Vec3> p(points.begin(), points.end());
+  if (options.closed && p.size() > 1 && p.back().x == p.front().x && p.back().y == p.front().y) p.pop_back();
+  const std::size_t needed = options.closed ? 3 : 2;
+  if (p.size() < needed)
+    throw Error(Errc::TooFewPoints,
+                "points has " + std::to_string(p.size()) + (options.closed ? " distinct" : "") + " point(s): " +
+                    (options.closed ? "a closed" : "an open") + " spline needs at least " + std::to_string(needed),
+                ErrorWhere{.field = "points"});
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const std::size_t prev = i == 0 ? p.size() - 1 : i - 1;
+    if ((i > 0 || options.closed) && p[i].x == p[prev].x && p[i].y == p[prev].y)
+      throw Error(Errc::CoincidentPoints,
+                  "points[" + std::to_string(i) + "] coincides with points[" + std::to_string(prev) +
+                      "]: consecutive points must differ",
+                  ErrorWhere{.field = "points", .index = i});
+  }
+  if (options.start_angle.has_value() != options.end_angle.has_value() ||
+      (options.closed && options.start_angle.has_value())) {
+    const char* field = options.start_angle ? "start_angle" : "end_angle";
+    throw Error(Errc::InvalidArgument,
+                std::string(field) + (options.closed ? " is given for a closed spline (it has no ends)"
+                                                     : " is given alone: give both end angles or neither"),
+                ErrorWhere{.field = field});
+  }
+  if (options.start_angle) {
+    check_finite(*options.start_angle, "start_angle");
+    check_finite(*options.end_angle, "end_angle");
+  }
+  for (Vec3& q : p) q.z = points.front().z;
+  return p;
+}
+
+double chord_angle(const Vec3& a, const Vec3& b) { return std::atan2(b.y - a.y, b.x - a.x); }
+
+// Signed angle from the direction of u to that of v.
+double turn(double ux, double uy, double vx, double vy) { return std::atan2(ux * vy - uy * vx, ux * vx + uy * vy); }
+
+// The tangent angle at b of the circle through a, b, c: the chord b → c turned back by the inscribed angle at a
+// (tangent–chord theorem); the chord itself for collinear points.
+double circle_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
+  return chord_angle(b, c) - turn(b.x - a.x, b.y - a.y, c.x - a.x, c.y - a.y);
+}
+
+// The start angles of a spline: three-point circles, the circle of the end triple at an open end (its tangent
+// there is the end chord's direction mirrored about the neighbour's circle tangent), given end angles kept.
+std::vector<double> guess_angles(const std::vector<Vec3>& p, const ClothoidSplineOptions& options) {
+  const std::size_t n = p.size();
+  std::vector<double> th(n, 0.0);
+  if (!options.closed && n == 2) {
+    th[0] = th[1] = chord_angle(p[0], p[1]);
+  } else {
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!options.closed && (i == 0 || i + 1 == n)) continue;
+      th[i] = circle_angle(p[(i + n - 1) % n], p[i], p[(i + 1) % n]);
+    }
+    if (!options.closed) {
+      th[0] = 2.0 * chord_angle(p[0], p[1]) - th[1];
+      th[n - 1] = 2.0 * chord_angle(p[n - 2], p[n - 1]) - th[n - 2];
+    }
+  }
+  if (options.start_angle) {
+    th[0] = *options.start_angle;
+    th[n - 1] = *options.end_angle;
+  }
+  return th;
+}
+
+// Each segment's tangent angle continued from the one before (a G1 fit keeps the angle it is given, which may
+// differ from the previous segment's end angle by a multiple of 2π).
+void unwrap_angles(std::vector<ClothoidSegment>& segments) {
+  const double two_pi = 2.0 * std::numbers::pi;
+  for (std::size_t i = 1; i < segments.size(); ++i) {
+    const ClothoidSegment& prev = segments[i - 1];
+    const double end = prev.angle(prev.length);
+    segments[i].theta0 += two_pi * std::round((end - segments[i].theta0) / two_pi);
+  }
+}
+
+// A G1 clothoid's end curvatures and their derivatives with respect to its end angles: with the scaled angle
+// φ(τ) = φ0 + (δ − A) τ + A τ² and g(A; φ0, φ1) = ∫₀¹ sin φ = 0, dA/dφj = −g_φj / g_A; X = ∫₀¹ cos φ = r / L;
+// κ0 = (δ − A) X / r, κ1 = (δ + A) X / r, δ = φ1 − φ0.
+struct G1Ends {
+  double k0 = 0.0, k1 = 0.0;
+  double dk0[2]{}, dk1[2]{};  ///< ∂κ/∂θ0, ∂κ/∂θ1
+};
+
+G1Ends g1_ends(const ClothoidSegment& seg, const Vec3& p0, const Vec3& p1) {
+  const double r = std::hypot(p1.x - p0.x, p1.y - p0.y), len = seg.length;
+  const double big_a = 0.5 * seg.dkappa * len * len, b = seg.kappa0 * len, delta = b + big_a;
+  const double phi0 = seg.theta0 - chord_angle(p0, p1);
+  const PhaseMoments m = phase_moments(2.0 * big_a, b, phi0, 0.0, 1.0);
+  const double x = m.x[0];
+  const double g_a = m.x[2] - m.x[1];
+  const double g_phi[2] = {m.x[0] - m.x[1], m.x[1]};
+  const double d_delta[2] = {-1.0, 1.0};
+  G1Ends e;
+  e.k0 = seg.kappa0;
+  e.k1 = seg.curvature(len);
+  for (int j = 0; j < 2; ++j) {
+    const double da = -g_phi[j] / g_a;
+    const double dphi_sin = j == 0 ? m.y[0] - m.y[1] : m.y[1];
+    const double dx = -(dphi_sin + da * (m.y[2] - m.y[1]));
+    e.dk0[j] = ((d_delta[j] - da) * x + (delta - big_a) * dx) / r;
+    e.dk1[j] = ((d_delta[j] + da) * x + (delta + big_a) * dx) / r;
+  }
+  return e;
+}
+
+// The G1 segments of a spline for the angles th.
+std::vector<ClothoidSegment> g1_segments(const std::vector<Vec3>& p, const std::vector<double>& th, bool closed) {
+  const std::size_t n = p.size(), m = closed ? n : n - 1;
+  std::vector<ClothoidSegment> segs(m);
+  for (std::size_t i = 0; i < m; ++i) segs[i] = fit_clothoid_g1(p[i], th[i], p[(i + 1) % n], th[(i + 1) % n]).segment;
+  return segs;
+}
+
+// The G2 residual: rows in curvature units (an end condition "given angle" in radians divided by the mean chord,
+// so that every row times the mean chord is dimensionless), with the tridiagonal Jacobian rows
+// (lower, diagonal, upper; cyclic when closed).
+struct G2System {
+  std::vector<double> f, lower, diag, upper;
+  double norm = 0.0;  ///< max |f_i| · mean chord
+};
+
+G2System g2_system(const std::vector<Vec3>& p, const std::vector<ClothoidSegment>& segs,
+                   const ClothoidSplineOptions& options, double mean_chord) {
+  const std::size_t n = p.size(), m = segs.size();
+  std::vector<G1Ends> ends(m);
+  for (std::size_t i = 0; i < m; ++i) ends[i] = g1_ends(segs[i], p[i], p[(i + 1) % n]);
+  G2System s;
+  s.f.assign(n, 0.0);
+  s.lower.assign(n, 0.0);
+  s.diag.assign(n, 0.0);
+  s.upper.assign(n, 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool first = !options.closed && i == 0, last = !options.closed && i + 1 == n;
+    if ((first || last) && options.start_angle) {
+      s.diag[i] = 1.0 / mean_chord;  // the given angle is held: a zero residual, a zero step
+    } else if (first) {              // κ′ = 0 on the first segment: κ1 − κ0 of segment 0
+      s.f[i] = ends[0].k1 - ends[0].k0;
+      s.diag[i] = ends[0].dk1[0] - ends[0].dk0[0];
+      s.upper[i] = ends[0].dk1[1] - ends[0].dk0[1];
+    } else if (last) {
+      s.f[i] = ends[m - 1].k1 - ends[m - 1].k0;
+      s.lower[i] = ends[m - 1].dk1[0] - ends[m - 1].dk0[0];
+      s.diag[i] = ends[m - 1].dk1[1] - ends[m - 1].dk0[1];
+    } else {  // κ at the start of segment i − κ at the end of segment i − 1
+      const G1Ends& in = ends[(i + m - 1) % m];
+      const G1Ends& out = ends[i % m];
+      s.f[i] = out.k0 - in.k1;
+      s.lower[i] = -in.dk1[0];
+      s.diag[i] = out.dk0[0] - in.dk1[1];
+      s.upper[i] = out.dk0[1];
+    }
+    s.norm = std::max(s.norm, std::abs(s.f[i]) * mean_chord);
+  }
+  return s;
+}
+
+// Solves the (cyclic when closed) tridiagonal system for the Newton step; false when singular.
+bool solve_g2_step(const G2System& s, bool closed, std::vector<double>& step) {
+  const std::size_t n = s.f.size();
+  // Columns: −f, and when closed e0 and e_{n−1} for the corner terms (Woodbury, rank 2).
+  const std::size_t cols = closed ? 3 : 1;
+  BandedMatrix t(n, 1, 1);
+  std::vector<double> rhs(n * cols, 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    t.at(i, i) = s.diag[i];
+    if (i > 0) t.at(i, i - 1) = s.lower[i];
+    if (i + 1 < n) t.at(i, i + 1) = s.upper[i];
+    rhs[i * cols] = -s.f[i];
+  }
+  if (closed) {
+    rhs[0 * cols + 1] = 1.0;
+    rhs[(n - 1) * cols + 2] = 1.0;
+  }
+  if (!t.solve(rhs, cols)) {
+    if (!closed) return false;
+    // The cyclic matrix without its corners is singular: the whole matrix, dense (rare, O(n³)).
+    BandedMatrix full(n, n - 1, n - 1);
+    std::vector<double> f(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      full.at(i, (i + n - 1) % n) += s.lower[i];
+      full.at(i, i) += s.diag[i];
+      full.at(i, (i + 1) % n) += s.upper[i];
+      f[i] = -s.f[i];
+    }
+    if (!full.solve(f, 1)) return false;
+    step = std::move(f);
+    return true;
+  }
+  step.assign(n, 0.0);
+  for (std::size_t i = 0; i < n; ++i) step[i] = rhs[i * cols];
+  if (!closed) return true;
+  // J = T + e0 (b e_{n−1})ᵀ + e_{n−1} (c e0)ᵀ with b = J[0][n−1] = lower[0], c = J[n−1][0] = upper[n−1].
+  const double b = s.lower[0], c = s.upper[n - 1];
+  const auto z0 = [&](std::size_t i) { return rhs[i * cols + 1]; };
+  const auto z1 = [&](std::size_t i) { return rhs[i * cols + 2]; };
+  // (I + Vᵀ Z) w = Vᵀ y, Vᵀ v = (b v_{n−1}, c v_0).
+  const double m11 = 1.0 + b * z0(n - 1), m12 = b * z1(n - 1), m21 = c * z0(0), m22 = 1.0 + c * z1(0);
+  const double v1 = b * step[n - 1], v2 = c * step[0];
+  const double det = m11 * m22 - m12 * m21;
+  if (!(std::abs(det) > 0.0) || !std::isfinite(det)) return false;
+  const double w1 = (v1 * m22 - m12 * v2) / det, w2 = (m11 * v2 - m21 * v1) / det;
+  for (std::size_t i = 0; i < n; ++i) step[i] -= z0(i) * w1 + z1(i) * w2;
+  return true;
+}
+
+}  // namespace
+
+ClothoidSplineResult fit_clothoid_spline(std::span<const Vec3> points, const ClothoidSplineOptions& options) {
+  options.validate();
+  const std::vector<Vec3> p = spline_points(points, options);
+  const std::size_t n = p.size();
+  std::vector<double> th = guess_angles(p, options);
+  ClothoidSplineResult out;
+  out.segments = g1_segments(p, th, options.closed);
+  if (options.continuity == 1 || (!options.closed && n == 2)) {
+    unwrap_angles(out.segments);
+    return out;
+  }
+  double mean_chord = 0.0;
+  for (std::size_t i = 0; i + 1 < n || (options.closed && i < n); ++i)
+    mean_chord += std::hypot(p[(i + 1) % n].x - p[i].x, p[(i + 1) % n].y - p[i].y);
+  mean_chord /= static_cast<double>(options.closed ? n : n - 1);
+  // Halvings of the Newton step before giving up (2^-30 of a step is below any useful move).
+  constexpr int kMaxHalvings = 30;
+  G2System sys = g2_system(p, out.segments, options, mean_chord);
+  std::vector<double> step;
+  while (sys.norm > options.tolerance) {
+    if (out.iterations >= options.max_iterations || !solve_g2_step(sys, options.closed, step)) break;
+    ++out.iterations;
+    bool accepted = false;
+    double lambda = 1.0;
+    for (int k = 0; k <= kMaxHalvings && !accepted; ++k, lambda *= 0.5) {
+      std::vector<double> trial(th);
+      for (std::size_t i = 0; i < n; ++i) trial[i] += lambda * step[i];
+      std::vector<ClothoidSegment> segs;
+      try {
+        segs = g1_segments(p, trial, options.closed);
+      } catch (const Error&) {
+        continue;  // a trial step whose G1 fit fails is too long
+      }
+      G2System next = g2_system(p, segs, options, mean_chord);
+      if (next.norm < (1.0 - 1e-4 * lambda) * sys.norm) {
+        th = std::move(trial);
+        out.segments = std::move(segs);
+        sys = std::move(next);
+        accepted = true;
+      }
+    }
+    if (!accepted) break;
+  }
+  if (sys.norm > options.tolerance)
+    throw Error(Errc::NumericalFailure,
+                "G2 clothoid spline: Newton stopped after " + std::to_string(out.iterations) +
+                    " iterations with a curvature jump of " + format_number(sys.norm / mean_chord) +
+                    " (times the mean chord " + format_number(sys.norm) + ", tolerance " +
+                    format_number(options.tolerance) + ")",
+                ErrorWhere{.field = "points"});
+  unwrap_angles(out.segments);
+  return out;
+}
+
+std::array<ClothoidSegment, 2> fit_biarc(const Vec3& p0, double theta0, const Vec3& p1, double theta1) {
+  const Chord chord = hermite_chord(p0, theta0, p1, theta1, "a biarc");
+  const double phi0 = reduce_angle(theta0 - chord.angle), phi1 = reduce_angle(theta1 - chord.angle);
+  const double omega = -0.5 * (phi0 + phi1);
+  const double a = chord.length / (2.0 * std::cos(0.25 * (phi1 - phi0)));
+  // An arc of chord a turning by Δ: κ = 2 sin(Δ/2) / a, L = a (Δ/2) / sin(Δ/2).
+  const auto arc = [a](double turning, ClothoidSegment& s) {
+    const double h = 0.5 * turning;
+    const double sinc = std::abs(h) < 1e-8 ? 1.0 - h * h / 6.0 : std::sin(h) / h;
+    s.length = a / sinc;
+    s.kappa0 = turning / s.length;
+    s.dkappa = 0.0;
+  };
+  std::array<ClothoidSegment, 2> out{};
+  out[0].start = {p0.x, p0.y, p0.z};
+  out[0].theta0 = theta0;
+  arc(omega - phi0, out[0]);
+  out[1].theta0 = theta0 + (omega - phi0);
+  arc(phi1 - omega, out[1]);
+  // The joint on the chord's perpendicular bisector: the first arc's chord at angle (φ0 + ω)/2.
+  const double alpha = chord.angle + 0.5 * (phi0 + omega);
+  out[1].start = {p0.x + a * std::cos(alpha), p0.y + a * std::sin(alpha), p0.z};
+  return out;
+}
+
+ClothoidSplineResult fit_biarc_spline(std::span<const Vec3> points, const ClothoidSplineOptions& options) {
+  const std::vector<Vec3> p = spline_points(points, options);
+  const std::vector<double> th = guess_angles(p, options);
+  const std::size_t n = p.size(), m = options.closed ? n : n - 1;
+  ClothoidSplineResult out;
+  out.segments.reserve(2 * m);
+  for (std::size_t i = 0; i < m; ++i) {
+    const std::array<ClothoidSegment, 2> b = fit_biarc(p[i], th[i], p[(i + 1) % n], th[(i + 1) % n]);
+    out.segments.insert(out.segments.end(), b.begin(), b.end());
+  }
+  unwrap_angles(out.segments);
+  return out;
 }
 
 curve::NaturalData clothoid_natural_data(std::span<const ClothoidSegment> segments, double tolerance) {

@@ -18,8 +18,10 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <span>
 #include <string_view>
+#include <vector>
 
 #include "hula/core/vec.hpp"
 #include "hula/curve/curve.hpp"
@@ -195,6 +197,84 @@ struct ClothoidG2Result {
 /// Complexity: O(iterations × 3 arcs × panels × 10) sine/cosine pairs, plus one fit_clothoid_g1().
 [[nodiscard]] ClothoidG2Result fit_clothoid_g2(const Vec3& p0, double theta0, double kappa0, const Vec3& p1,
                                                double theta1, double kappa1, const ClothoidG2Options& options = {});
+
+/// Options of fit_clothoid_spline().
+struct ClothoidSplineOptions {
+  /// Continuity at the interior points: 1 (G1: tangent angles from the three-point circles, one G1 clothoid
+  /// per interval), 2 (G2: angles solved so that the curvature is continuous too). Default 2; valid 1 or 2.
+  int continuity = 2;
+  /// A closed spline: one more segment from the last point back to the first, with the same continuity
+  /// there. A last point equal to the first is dropped (the list may be given closed).
+  bool closed = false;
+  /// Tangent angles at the first and last point (radians from +x), open splines only, both or neither.
+  /// Without them the end angles are free: G1 takes them from the circle through the three end points,
+  /// G2 asks for circular end segments (κ′ = 0 on the first and last segment).
+  std::optional<double> start_angle{}, end_angle{};
+  /// G2 Newton stops when every joint's curvature jump times the mean chord, and every end condition
+  /// (angle in radians, or end-segment curvature change times the mean chord), is at most this.
+  /// Default 1e-12; valid [1e-15, 1e-6].
+  double tolerance = 1e-12;
+  /// Largest number of G2 Newton iterations (each with its own line search). Default 100; valid 1 … 1000.
+  int max_iterations = 100;
+  /// @throws hula::Error(Errc::InvalidOption) naming the field, its value and the valid range
+  void validate() const;
+};
+
+/// Result of fit_clothoid_spline() and fit_biarc_spline(): the segments in order, each starting where the
+/// one before ends with its tangent angle (unwrapped: a segment's theta0 is the previous one's end angle).
+struct ClothoidSplineResult {
+  std::vector<ClothoidSegment> segments;
+  /// G2 Newton iterations (0 for G1 and biarcs).
+  int iterations = 0;
+  /// Total length.
+  [[nodiscard]] double length() const noexcept;
+};
+
+/// A clothoid spline through N planar points (the Clothoids library's ClothoidList / ClothoidSplineG2
+/// problems, Bertolazzi–Frego, "Interpolating clothoid splines with curvature continuity", Math. Meth. Appl.
+/// Sci. 41 (2018)): one clothoid per interval, G1 Hermite (fit_clothoid_g1) between consecutive points with
+/// tangent angles θ_i at the points.
+///
+/// Method. The start angles are the tangents of the circles through each point and its two neighbours
+/// (at an open end, the circle through the three end points; two points give the chord). G1 stops there.
+/// G2 solves for the angles θ_i the equations "curvature at the end of segment i−1 = curvature at the start
+/// of segment i" at every interior point (at every point when closed), plus at an open end either the given
+/// angle or κ′ = 0 on the end segment, by Newton with a backtracking line search on the largest scaled
+/// residual. The Jacobian is tridiagonal (cyclic when closed: two corner entries, by the Woodbury formula
+/// on the banded solve); its entries are the exact derivatives of a G1 clothoid's end curvatures with
+/// respect to its end angles (implicit function theorem on the G1 equation, moments ∫ τᵏ (cos φ, sin φ)).
+/// Points on one circle give that circle (every segment κ′ = 0, κ = 1/R) when the ends are free.
+/// @param points ≥ 2 points (≥ 3 distinct when closed), z ignored (copied from the first point)
+/// @param options continuity, closure, end angles, Newton tolerance and budget
+/// @throws hula::Error(Errc::TooFewPoints) naming "points" for too few; hula::Error(Errc::InvalidArgument)
+///   naming "start_angle" / "end_angle" given alone or with a closed spline; hula::Error(Errc::NonFiniteInput) naming
+///   "points" (with the index) or the angle; hula::Error(Errc::CoincidentPoints) naming "points" and the index of a
+///   point equal to the one before; hula::Error(Errc::InvalidOption) from options.validate();
+///   hula::Error(Errc::NumericalFailure) naming "points" when the G2 Newton fails (the residual left): none on
+///   the tests' seeded walks and loops, but data that zigzag at the scale of their spacing (a 1024-point loop
+///   with radial noise 50 times the spacing) can stall it
+/// Complexity: G1 O(N) fits; G2 O(iterations × N) fits plus a banded solve.
+[[nodiscard]] ClothoidSplineResult fit_clothoid_spline(std::span<const Vec3> points,
+                                                       const ClothoidSplineOptions& options = {});
+
+/// The biarc from p0 with tangent angle θ0 to p1 with θ1: two circular arcs (clothoid segments with
+/// κ′ = 0) joined with G1 continuity. Of the one-parameter family, the equal-chord biarc: in the frame of the
+/// chord (length d, angles φ0, φ1 relative to it in (−π, π]) the joint J lies on the chord's perpendicular
+/// bisector, the joint tangent angle is ω = −(φ0 + φ1)/2, both arcs have chord a = d / (2 cos((φ1 − φ0)/4))
+/// (never singular: |φ1 − φ0| < 2π), arc i turns by Δ_i (Δ0 = ω − φ0, Δ1 = φ1 − ω), has curvature
+/// 2 sin(Δ_i/2) / a and length a Δ_i / (2 sin(Δ_i/2)) (a for Δ_i = 0). Data on one circle (φ1 = −φ0) give
+/// that circle's arc in two halves; φ0 = φ1 = 0 gives the straight chord.
+/// @throws hula::Error(Errc::NonFiniteInput) naming "p0", "p1", "theta0" or "theta1";
+///   hula::Error(Errc::CoincidentPoints) naming "p1" when p1 = p0
+[[nodiscard]] std::array<ClothoidSegment, 2> fit_biarc(const Vec3& p0, double theta0, const Vec3& p1, double theta1);
+
+/// A G1 spline of biarcs through N points (Bertolazzi, Frego, Biral, "Interpolating splines of biarcs from
+/// a sequence of planar points", CAD&A 2020, the problem; here with the three-point-circle tangent angles of
+/// fit_clothoid_spline()'s G1 start and one fit_biarc() per interval). `options.continuity` is ignored;
+/// `closed`, `start_angle` and `end_angle` are as for fit_clothoid_spline().
+/// @throws as fit_clothoid_spline() for the points and the angles
+[[nodiscard]] ClothoidSplineResult fit_biarc_spline(std::span<const Vec3> points,
+                                                    const ClothoidSplineOptions& options = {});
 
 /// Consecutive clothoid segments (one G1 segment, or the three arcs of a G2 spline) as natural-equation data:
 /// κ(s) = κ0,i + κ′i (s − s_i) on the i-th arc as one piecewise law (printed exactly), τ = 0, the start frame

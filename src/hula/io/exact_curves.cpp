@@ -11,6 +11,7 @@
 #include "hula/intrinsic/log_aesthetic.hpp"
 #include "hula/intrinsic/natural_curve.hpp"
 #include "hula/io/clothoid_json.hpp"
+#include "hula/io/json_read.hpp"
 
 namespace hula::io {
 
@@ -62,20 +63,60 @@ Json clothoid_sample(const std::vector<intrinsic::ClothoidSegment>& segments, do
 ClothoidAnswer clothoid_answer(const ClothoidRequest& q) {
   ClothoidAnswer out;
   out.json = Json::object();
-  if (q.start_curvature && q.end_curvature) {
-    const intrinsic::ClothoidG2Result r = intrinsic::fit_clothoid_g2(q.start_point, q.start_angle, *q.start_curvature,
-                                                                     q.end_point, q.end_angle, *q.end_curvature);
-    out.segments.assign(r.segments.begin(), r.segments.end());
-    out.json["kind"] = "g2";
+  const bool curvatures = q.start_curvature && q.end_curvature;
+  if (q.biarc && q.continuity)
+    throw Error(Errc::InvalidArgument, "a biarc is G1 by construction: give no continuity with it",
+                ErrorWhere{.field = "continuity"});
+  if (!q.points.empty()) {
+    intrinsic::ClothoidSplineOptions o;
+    o.closed = q.closed;
+    o.continuity = q.continuity.value_or(2);
+    if (q.end_angles) {
+      o.start_angle = q.start_angle;
+      o.end_angle = q.end_angle;
+    }
+    const intrinsic::ClothoidSplineResult r =
+        q.biarc ? intrinsic::fit_biarc_spline(q.points, o) : intrinsic::fit_clothoid_spline(q.points, o);
+    out.segments = r.segments;
+    out.json["kind"] = q.biarc ? "biarc" : (o.continuity == 1 ? "g1" : "g2");
     out.json.update(clothoid_spline_to_json(out.segments));
     out.json["iterations"] = r.iterations;
+    out.json["through"] = q.points.size();
+    out.json["closed"] = q.closed;
   } else {
-    const intrinsic::ClothoidG1Result r =
-        intrinsic::fit_clothoid_g1(q.start_point, q.start_angle, q.end_point, q.end_angle);
-    out.segments.push_back(r.segment);
-    out.json["kind"] = "g1";
-    out.json.update(clothoid_spline_to_json(out.segments));
-    out.json["iterations"] = r.iterations;
+    if (q.closed)
+      throw Error(Errc::InvalidArgument, "closed needs points: a Hermite problem between two points is open",
+                  ErrorWhere{.field = "closed"});
+    if (q.continuity && *q.continuity != (curvatures ? 2 : 1))
+      throw Error(Errc::InvalidArgument,
+                  curvatures ? std::string("both end curvatures ask for the G2 spline: continuity 1 is not possible")
+                             : std::string("continuity 2 between two points needs both end curvatures"),
+                  ErrorWhere{.field = "continuity"});
+    if (q.biarc) {
+      if (curvatures)
+        throw Error(Errc::InvalidArgument, "a biarc takes no end curvatures (its arcs' curvatures follow)",
+                    ErrorWhere{.field = "start_curvature"});
+      const std::array<intrinsic::ClothoidSegment, 2> b =
+          intrinsic::fit_biarc(q.start_point, q.start_angle, q.end_point, q.end_angle);
+      out.segments.assign(b.begin(), b.end());
+      out.json["kind"] = "biarc";
+      out.json.update(clothoid_spline_to_json(out.segments));
+      out.json["iterations"] = 0;
+    } else if (curvatures) {
+      const intrinsic::ClothoidG2Result r = intrinsic::fit_clothoid_g2(q.start_point, q.start_angle, *q.start_curvature,
+                                                                       q.end_point, q.end_angle, *q.end_curvature);
+      out.segments.assign(r.segments.begin(), r.segments.end());
+      out.json["kind"] = "g2";
+      out.json.update(clothoid_spline_to_json(out.segments));
+      out.json["iterations"] = r.iterations;
+    } else {
+      const intrinsic::ClothoidG1Result r =
+          intrinsic::fit_clothoid_g1(q.start_point, q.start_angle, q.end_point, q.end_angle);
+      out.segments.push_back(r.segment);
+      out.json["kind"] = "g1";
+      out.json.update(clothoid_spline_to_json(out.segments));
+      out.json["iterations"] = r.iterations;
+    }
   }
   if (!q.at.empty()) {
     Json points = Json::array();
@@ -83,6 +124,63 @@ ClothoidAnswer clothoid_answer(const ClothoidRequest& q) {
     out.json["points"] = std::move(points);
   }
   return out;
+}
+
+ClothoidRequest clothoid_request_from_json(const Json& body) {
+  namespace json = io::json;
+  const json::JsonPath root;
+  json::reject_unknown_members(body, root,
+                               {"points", "closed", "fit", "start_point", "start_angle", "end_point", "end_angle",
+                                "start_curvature", "end_curvature", "at"});
+  ClothoidRequest q;
+  const auto number = [&](const char* field) -> std::optional<double> {
+    const Json* v = json::optional_member(body, field);
+    if (v == nullptr) return std::nullopt;
+    return json::get_number(*v, json::root_path(field));
+  };
+  const auto point = [&](const char* field) {
+    return json::get_point(json::require_member(body, root, field), json::root_path(field)).first;
+  };
+  if (const Json* f = json::optional_member(body, "fit")) {
+    const std::string fit = json::get_string(*f, json::root_path("fit"));
+    if (fit == "biarc")
+      q.biarc = true;
+    else if (fit == "g1" || fit == "g2")
+      q.continuity = fit == "g1" ? 1 : 2;
+    else
+      throw Error(Errc::ParseError, "fit = \"" + fit + "\" must be \"g1\", \"g2\" or \"biarc\"",
+                  ErrorWhere{.field = "fit"});
+  }
+  if (const Json* c = json::optional_member(body, "closed")) {
+    if (!c->is_boolean()) json::type_error(*c, json::root_path("closed"), "true or false");
+    q.closed = c->get<bool>();
+  }
+  const std::optional<double> a0 = number("start_angle"), a1 = number("end_angle");
+  if (const Json* pts = json::optional_member(body, "points")) {
+    q.points = json::get_points(*pts, json::root_path("points")).points;
+    for (const char* field : {"start_point", "end_point", "start_curvature", "end_curvature"})
+      if (json::optional_member(body, field) != nullptr)
+        throw Error(Errc::ParseError, std::string(field) + " is for the Hermite problem: not with points",
+                    ErrorWhere{.field = field});
+    if (a0.has_value() != a1.has_value())
+      throw Error(Errc::ParseError, "start_angle and end_angle go together",
+                  ErrorWhere{.field = a0 ? "end_angle" : "start_angle"});
+    q.end_angles = a0.has_value();
+  } else {
+    q.start_point = point("start_point");
+    q.end_point = point("end_point");
+    if (!a0) (void)json::require_member(body, root, "start_angle");
+    if (!a1) (void)json::require_member(body, root, "end_angle");
+    q.start_curvature = number("start_curvature");
+    q.end_curvature = number("end_curvature");
+    if (q.start_curvature.has_value() != q.end_curvature.has_value())
+      throw Error(Errc::ParseError, "start_curvature and end_curvature go together",
+                  ErrorWhere{.field = q.start_curvature ? "end_curvature" : "start_curvature"});
+  }
+  q.start_angle = a0.value_or(0.0);
+  q.end_angle = a1.value_or(0.0);
+  if (const Json* at = json::optional_member(body, "at")) q.at = json::get_number_array(*at, json::root_path("at"));
+  return q;
 }
 
 curve::Curve clothoid_curve(const std::vector<intrinsic::ClothoidSegment>& segments, double tolerance) {

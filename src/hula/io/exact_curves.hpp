@@ -41,19 +41,37 @@ struct ClothoidRequest {
   std::optional<double> start_curvature{};  ///< with end_curvature: the G2 spline
   std::optional<double> end_curvature{};
   std::vector<double> at{};  ///< arc lengths along the whole result to sample (none: no "points")
+  /// ≥ 2 points: a spline through them (intrinsic::fit_clothoid_spline or fit_biarc_spline) instead of the
+  /// Hermite problem; start_point, end_point and the curvatures are then unused, and start_angle / end_angle
+  /// are the end angles of an open spline only with `end_angles`.
+  std::vector<Vec3> points{};
+  bool closed = false;              ///< spline: closed (G1 or G2 at the first point too)
+  bool end_angles = false;          ///< spline: start_angle and end_angle are given
+  bool biarc = false;               ///< biarcs (two arcs per interval, G1) instead of clothoids
+  std::optional<int> continuity{};  ///< spline: 1 or 2 (default 2); Hermite: 2 needs both curvatures
 };
 
 /// The segments of a clothoid interpolation and its JSON.
 struct ClothoidAnswer {
   std::vector<intrinsic::ClothoidSegment> segments;
-  /// {"kind": "g1" | "g2", "segments", "length" (clothoid_spline_to_json), "iterations", "points"?: [{"s",
-  /// "point", "theta", "kappa"}] at `at`}.
+  /// {"kind": "g1" | "g2" | "biarc", "segments", "length" (clothoid_spline_to_json), "iterations", "points"?:
+  /// [{"s", "point", "theta", "kappa"}] at `at`}, and for a spline through points "through": N, "closed".
   Json json;
 };
 
-/// intrinsic::fit_clothoid_g1 or fit_clothoid_g2 of the request, sampled at its arc lengths.
-/// @throws as the fits; hula::Error(Errc::OutOfDomain) naming at[i] outside [0, length]
+/// intrinsic::fit_clothoid_g1, fit_clothoid_g2, fit_biarc, fit_clothoid_spline or fit_biarc_spline of the
+/// request, sampled at its arc lengths.
+/// @throws as the fits; hula::Error(Errc::OutOfDomain) naming at[i] outside [0, length];
+///   hula::Error(Errc::InvalidArgument) naming "continuity" for a biarc with a continuity, or 2 for a Hermite
+///   problem without curvatures (1 with them), and naming "closed" for a closed Hermite problem
 [[nodiscard]] ClothoidAnswer clothoid_answer(const ClothoidRequest& request);
+
+/// The request of POST /api/clothoid: {"points"?: [[x, y], ...], "closed"?, "fit"?: "g1" | "g2" | "biarc",
+/// "start_point"?, "start_angle"?, "end_point"?, "end_angle"?, "start_curvature"?, "end_curvature"?,
+/// "at"?: [s, ...]} — with "points" a spline (the end angles optional, both or neither), else the Hermite
+/// problem (start and end point and angle required). Unknown members are refused by name.
+/// @throws hula::Error(Errc::ParseError) naming the member at fault
+[[nodiscard]] ClothoidRequest clothoid_request_from_json(const Json& body);
 
 /// The exact curve of consecutive clothoid segments (a natural curve: its curvature law, position integrated
 /// to `tolerance`).

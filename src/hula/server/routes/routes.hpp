@@ -39,6 +39,8 @@ void add_intersect(Router& router, const Context& context);
 void add_constructions(Router& router, const Context& context);
 /// POST /api/match, /api/blend (two curves joined: io::match_answer, io::blend_answer).
 void add_joins(Router& router, const Context& context);
+/// POST /api/clothoid (clothoid and biarc interpolation, through two points or N).
+void add_clothoid(Router& router, const Context& context);
 /// The curve file under `field` of a request body, errors naming it ("a.control_points[2]: ...").
 [[nodiscard]] curve::Curve read_curve_member(const Json& body, const char* field);
 /// POST /api/jobs, GET /api/jobs/{id}, GET /api/jobs/{id}/events, DELETE /api/jobs/{id}.
