@@ -583,3 +583,70 @@ export type MappedCurve = {
   centre?: number[];
   radius?: number;
 };
+
+export type RebuildRequest = {
+  curve: CurveFile;
+  control_points: number;
+  degree?: number;
+  samples?: number;
+};
+
+export type RebuildResult = {
+  operation: "rebuild";
+  degree: number;
+  control_points: number;
+  samples: number;
+  max_deviation: number;
+  mean_deviation: number;
+  at: number;
+  curve: CurveFile;
+};
+
+export type ReduceDegreeRequest = {
+  curve: CurveFile;
+  tolerance: number;
+};
+
+export type DegreeReduction = {
+  operation: "reduce-degree";
+  error_bound: number;
+  bezier_bound: number;
+  tolerance: number;
+  curve: CurveFile;
+};
+
+export type ClosedInterpolationRequest = {
+  points: number[][];
+  parameterisation?: "uniform" | "chord" | "centripetal" | "foley";
+  parameters?: number[];
+};
+
+export type ClosedInterpolation = {
+  kind: "nurbs";
+  method: "closed";
+  points: number;
+  dimension: 2 | 3;
+  degree: number;
+  control_points: number;
+  domain: number[];
+  parameterisation: "uniform" | "chord" | "centripetal" | "foley" | "given";
+  curve: CurveFile;
+};
+
+export type FrenetHandles = {
+  handles: {
+    point: number[];
+    tangent: number[];
+    normal?: number[];
+    curvature?: number;
+    torsion?: number;
+  }[];
+  parameters?: number[];
+};
+
+export type FrenetHermite = {
+  degree: number;
+  control_points: number;
+  domain: number[];
+  curve: CurveFile;
+};
