@@ -142,13 +142,7 @@ ApproximationResult approximate(std::span<const Vec3> points, const Approximatio
                 "control_points = " + std::to_string(options.control_points) + " exceeds the number of points " +
                     std::to_string(points.size()),
                 {.field = "control_points"});
-  for (std::size_t i = 0; i < points.size(); ++i)
-    if (options.dimension == 2 && std::isfinite(points[i].z) && points[i].z != 0.0)
-      throw Error(Errc::InvalidArgument,
-                  "points[" + std::to_string(i) + "] has z = " + format_number(points[i].z) +
-                      " but dimension = 2 (z must be 0)",
-                  {.field = "points", .index = i, .component = 2});
-
+  // (A point off the plane of a 2-D fit is refused by least_squares_fit.)
   std::vector<double> t = parameterise(points, options.parameterisation);
   const std::size_t m = points.size() - 1;
   const std::size_t n = options.control_points - 1;

@@ -66,6 +66,7 @@ struct ApproximationResult {
 /// @throws hula::Error(Errc::InvalidArgument) naming "parameters" (count, order, outside the domain) or "knots"
 ///   (not clamped, more control points than points)
 /// @throws hula::Error(Errc::NonFiniteInput) naming the point or parameter
+/// @throws hula::Error(Errc::TooFewPoints) if fewer than 2 points; InvalidOption if dimension is not 2 or 3
 /// @throws hula::Error(Errc::NumericalFailure) naming "knots" if the normal equations are singular (a knot span
 ///   holds too few parameters: the Schoenberg–Whitney condition fails)
 /// Complexity O(m p²).

@@ -8,9 +8,10 @@
 // /api/hermite-frenet, a Frenet handle file as the body →
 // io::hermite_frenet_answer (`hula hermite-frenet`). The made curve is in the
 // answer as a curve file ("curve"; the commands write it to -o instead).
+#include "hula/io/curve_edits.hpp"
+
 #include <string>
 
-#include "hula/io/curve_edits.hpp"
 #include "hula/io/json_read.hpp"
 #include "hula/server/routes/routes.hpp"
 
@@ -75,8 +76,8 @@ Response interpolate_closed(const Request& request) {
   std::string rule = "chord";
   if (const Json* p = json::optional_member(body, "parameterisation"))
     rule = json::get_string(*p, json::root_path("parameterisation"));
-  return made_response(io::closed_interpolation_answer({.points = std::move(points.points), .dimension = points.dimension},
-                                                       parameters, rule));
+  return made_response(io::closed_interpolation_answer(
+      {.points = std::move(points.points), .dimension = points.dimension}, parameters, rule));
 }
 
 Response hermite_frenet(const Request& request) { return made_response(io::hermite_frenet_answer(request.json())); }
