@@ -198,8 +198,15 @@ class NurbsCurve:
     def reduce_degree(self, tolerance: float) -> dict:
         """The curve one degree lower while it moves by at most `tolerance` (model units, >= 0): a dict
         {"curve", "error_bound" (a guaranteed bound of the change), "bezier_bound", "tolerance"}
-        (`hula edit reduce-degree`'s report). Non-rational curves only; raises when no such curve is within
-        the tolerance.
+        (`hula edit reduce-degree`'s report). A rational curve is reduced on its homogeneous points, its bound
+        taken in Euclidean space; raises when no such curve is within the tolerance or a reduced weight is not
+        positive.
+        """
+    def rebuild(self, control_points: int, *, degree: int = ..., samples: int = ...) -> dict:
+        """The curve refitted with `degree` and `control_points` (same ends and domain, least squares at the
+        curve's own parameters on uniform knots; samples=0: max(201, 10 x control_points)): a dict {"curve",
+        "degree", "control_points", "samples", "max_deviation" (largest distance of 1,001 samples of the
+        new curve to the original, measured by closest points), "mean_deviation", "at"} (`hula edit rebuild`).
         """
     def to_law(self) -> dict:
         """The curve written out as an exact law of t (a rational polynomial per knot span, `hula edit to-law`):

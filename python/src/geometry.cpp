@@ -450,8 +450,27 @@ void register_geometry(py::module_& m) {
           py::arg("tolerance"),
           "The curve one degree lower while it moves by at most `tolerance` (model units, >= 0): a dict\n"
           "{\"curve\", \"error_bound\" (a guaranteed bound of the change), \"bezier_bound\", \"tolerance\"}\n"
-          "(`hula edit reduce-degree`'s report). Non-rational curves only; raises when no such curve is within\n"
-          "the tolerance.")
+          "(`hula edit reduce-degree`'s report). A rational curve is reduced on its homogeneous points, its bound\n"
+          "taken in Euclidean space; raises when no such curve is within the tolerance or a reduced weight is not\n"
+          "positive.")
+      .def(
+          "rebuild",
+          [](const NurbsCurve& c, std::size_t control_points, int degree, std::size_t samples) {
+            // `hula edit rebuild`'s edit and report (io::edit_curve), so both give the same bytes.
+            io::CurveEditAnswer answer = io::edit_curve(curve::Curve(c), "curve",
+                                                        {.edit = io::CurveEdit::Rebuild,
+                                                         .degree = degree,
+                                                         .control_points = control_points,
+                                                         .samples = samples});
+            py::dict d = to_python(answer.report);
+            d["curve"] = std::move(answer.curves.front());
+            return d;
+          },
+          py::arg("control_points"), py::kw_only(), py::arg("degree") = 3, py::arg("samples") = 0,
+          "The curve refitted with `degree` and `control_points` (same ends and domain, least squares at the\n"
+          "curve's own parameters on uniform knots; samples=0: max(201, 10 x control_points)): a dict {\"curve\",\n"
+          "\"degree\", \"control_points\", \"samples\", \"max_deviation\" (largest distance of 1,001 samples of the\n"
+          "new curve to the original, measured by closest points), \"mean_deviation\", \"at\"} (`hula edit rebuild`).")
       .def(
           "to_law",
           [](const NurbsCurve& c) {

@@ -144,3 +144,49 @@ def test_closed_interpolation_and_degree_reduction_are_the_cli_answers(tmp_path)
     cli = hula("edit", "reduce-degree", tmp_path / "q.json", "--tolerance", "0", "-o", tmp_path / "c.json")
     assert cli["error_bound"] == back["error_bound"]
     assert json.loads(back["curve"].to_json()) == json.loads((tmp_path / "c.json").read_text())
+
+
+def full_circle(r):
+    # The circle of radius r as four rational quadratic arcs (The NURBS Book ex. 7.2).
+    w = math.sqrt(0.5)
+    pts = [[r, 0], [r, r], [0, r], [-r, r], [-r, 0], [-r, -r], [0, -r], [r, -r], [r, 0]]
+    return hh.NurbsCurve(2, [0, 0, 0, .25, .25, .5, .5, .75, .75, 1, 1, 1], pts, weights=[1, w, 1, w, 1, w, 1, w, 1])
+
+
+def test_rebuild_is_the_cli_answer_and_measures_its_deviation(tmp_path):
+    # checks NurbsCurve.rebuild against `hula edit rebuild` (report and curve bit for bit); a cubic rebuilt with more
+    # control points is reproduced (1e-12), and a circle's reported deviation is the closed form ||C(s)| - R| at the
+    # same 1,001 samples (to 1e-9)
+    import json
+    cubic = hh.NurbsCurve(3, [0, 0, 0, 0, 1, 1, 1, 1], [[0, 0, 0], [1, 2, 0], [3, 2, 1], [4, 0, 0]])
+    r = cubic.rebuild(9)
+    assert r["curve"].degree == 3 and len(r["curve"].control_points) == 9
+    assert r["max_deviation"] < 1e-12 * 5
+    for t in (0.0, 0.1, 0.37, 0.5, 0.93, 1.0):
+        assert list(r["curve"](t)) == pytest.approx(list(cubic(t)), abs=1e-12)
+    ring = full_circle(2.0)
+    ours = ring.rebuild(14, degree=3)
+    s = [i / 1000 for i in range(1001)]
+    worst = max(abs(math.hypot(*ours["curve"](t)) - 2.0) for t in s)
+    assert ours["max_deviation"] == pytest.approx(worst, abs=2e-9)
+    ring.save(str(tmp_path / "ring.json"))
+    cli = hula("edit", "rebuild", tmp_path / "ring.json", "--degree", "3", "--control-points", "14",
+               "-o", tmp_path / "out.json")
+    assert {k: v for k, v in ours.items() if k != "curve"} == {k: v for k, v in cli.items()
+                                                             if k not in ("operation", "curve")}
+    assert json.loads(ours["curve"].to_json()) == json.loads((tmp_path / "out.json").read_text())
+    with pytest.raises(hh.InvalidOptionError) as e:
+        cubic.rebuild(3)
+    assert e.value.where["field"] == "control_points"
+
+
+def test_reduce_degree_takes_a_rational_curve():
+    # checks a degree-elevated rational circle reduces back exactly: bound at rounding level, |C(t)| = R (closed
+    # form) at 201 parameters, the weights w_i / w_0 of the original
+    ring = full_circle(1.5)
+    back = ring.elevate(1).reduce_degree(0.0)
+    assert back["curve"].degree == 2 and back["error_bound"] < 1e-11
+    for i in range(201):
+        assert math.hypot(*back["curve"](i / 200)) == pytest.approx(1.5, abs=1e-12)
+    w = list(back["curve"].weights)
+    assert [x / w[0] for x in w] == pytest.approx(list(ring.weights), abs=1e-12)

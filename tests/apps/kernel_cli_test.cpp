@@ -310,5 +310,69 @@ TEST(KernelCli, ToLawWritesTheCurveOutExactly) {
   EXPECT_EQ(testing::stderr_error(again)["where"]["field"], "curve");
 }
 
+// checks `edit rebuild`: a cubic Bézier rebuilt with 9 control points is reproduced (1e-12 of its size at 1,001
+// parameters, max_deviation at that level) and the file equals nurbs::rebuild's curve; a circle rebuilt with 16
+// cubic control points reports the deviation the closed form gives (||C(s_i)| − R| at the same 1,001 samples, to
+// 1e-9); too few control points exit 3 naming control_points, a law curve exit 3 naming curve.
+TEST(KernelCli, RebuildReportsItsDeviation) {
+  const testing::TempDir dir;
+  const std::string in = (dir / "in.json").string();
+  const std::string out = (dir / "out.json").string();
+  const NurbsCurve bezier(3, {0, 0, 0, 0, 1, 1, 1, 1}, std::vector<Vec3>{{0, 0, 0}, {1, 2, 0}, {3, 2, 1}, {4, 0, 0}});
+  io::write_curve_file(in, bezier);
+  const json j = run_ok({"edit", "rebuild", in, "--control-points", "9", "-o", out});
+  EXPECT_EQ(j["operation"], "rebuild");
+  EXPECT_EQ(j["degree"], 3);
+  EXPECT_EQ(j["control_points"], 9);
+  EXPECT_EQ(j["samples"], 201);
+  EXPECT_EQ(j["curve"]["control_points"], 9);
+  EXPECT_LE(j["max_deviation"].get<double>(), 1e-12 * bezier.model_size());
+  const NurbsCurve got = io::read_curve_file(out).nurbs();
+  EXPECT_EQ(got, nurbs::rebuild(bezier, {.control_points = 9}).curve);
+  EXPECT_LE(testing::max_deviation(bezier, got), 1e-12 * bezier.model_size());
+
+  const double R = 3.0;
+  io::write_curve_file(in, testing::rational_circle(R));
+  const json k = run_ok({"edit", "rebuild", in, "--degree", "3", "--control-points", "16", "-o", out});
+  const NurbsCurve ring = io::read_curve_file(out).nurbs();
+  double worst = 0.0;
+  for (int i = 0; i <= 1000; ++i) worst = std::max(worst, std::abs(norm(ring.evaluate(i / 1000.0)) - R));
+  EXPECT_NEAR(k["max_deviation"].get<double>(), worst, 1e-9 * R);
+  EXPECT_GT(worst, 1e-6 * R);
+
+  const ProcessResult few =
+      testing::run_process(HULA_CLI_PATH, {"edit", "rebuild", in, "--degree", "3", "--control-points", "3", "-o", out});
+  EXPECT_EQ(few.exit_code, 3);
+  EXPECT_EQ(testing::stderr_error(few)["where"]["field"], "control_points");
+  (void)run_ok({"edit", "to-law", in, "-o", out});
+  const ProcessResult law =
+      testing::run_process(HULA_CLI_PATH, {"edit", "rebuild", out, "--control-points", "8", "-o", in});
+  EXPECT_EQ(law.exit_code, 3);
+  EXPECT_EQ(testing::stderr_error(law)["where"]["field"], "curve");
+}
+
+// checks `edit reduce-degree` on a rational curve: the circle elevated once comes back to its degree with a bound
+// at rounding level and |C(t)| = R at 1,001 parameters (closed form); a cubic whose reduced weight is negative
+// exits 4 naming the curve.
+TEST(KernelCli, ReduceDegreeTakesRationalCurves) {
+  const testing::TempDir dir;
+  const std::string in = (dir / "in.json").string();
+  const std::string out = (dir / "out.json").string();
+  const double R = 2.5;
+  io::write_curve_file(in, nurbs::elevate_degree(testing::rational_circle(R), 1));
+  const json j = run_ok({"edit", "reduce-degree", in, "--tolerance", "0", "-o", out});
+  EXPECT_EQ(j["curve"]["degree"], 2);
+  EXPECT_LE(j["error_bound"].get<double>(), 1e-12 * 2 * R);
+  const NurbsCurve back = io::read_curve_file(out).nurbs();
+  EXPECT_TRUE(back.is_rational());
+  for (int i = 0; i <= 1000; ++i) EXPECT_NEAR(norm(back.evaluate(i / 1000.0)), R, 1e-12 * R) << i;
+  io::write_curve_file(in, NurbsCurve(3, {0, 0, 0, 0, 1, 1, 1, 1},
+                                      std::vector<Vec3>{{0, 0, 0}, {1, 2, 0}, {3, 2, 0}, {4, 0, 0}}, {1, 0.1, 1, 1}));
+  const ProcessResult bad =
+      testing::run_process(HULA_CLI_PATH, {"edit", "reduce-degree", in, "--tolerance", "100", "-o", out});
+  EXPECT_EQ(bad.exit_code, 4);
+  EXPECT_EQ(testing::stderr_error(bad)["where"]["field"], "curve");
+}
+
 }  // namespace
 }  // namespace hula

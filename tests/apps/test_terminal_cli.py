@@ -224,7 +224,8 @@ def test_completion_nested_commands_and_enum_values(tmp_path):
     run("completion", "bash", "-o", str(script))
     assert complete(script, "hula", "interp") == ["interpolate"]
     assert complete(script, "hula", "doc", "ex") == ["export"]
-    assert complete(script, "hula", "edit", "re") == ["reduce-degree", "refine", "remove-knots", "reparam", "reverse"]
+    assert complete(script, "hula", "edit", "re") == ["rebuild", "reduce-degree", "refine", "remove-knots", "reparam",
+                                                    "reverse"]
     assert complete(script, "hula", "optimise", "--algorithm", "n") == ["nelder-mead", "nsga2"]
     assert complete(script, "hula", "optimise", "--algorithm", "pagmo-n") == ["pagmo-nsga2"]
     assert complete(script, "hula", "eval", "c.json", "--format", "j") == ["json", "jsonl"]

@@ -31,6 +31,13 @@ door calls the same io entry):
   hulahoops.interpolate(closed=True) (io::closed_cubic_curve), `hula edit reduce-degree`
   and NurbsCurve.reduce_degree (io::edit_curve); the server answers neither. The written
   curve files are compared byte for byte.
+- a closed interpolating spline, a degree reduction (rational too), a rebuild and a Frenet
+  Hermite curve: `hula interpolate --closed`, POST /api/interpolate-closed and
+  hulahoops.interpolate(closed=True) (io::closed_interpolation_answer), `hula edit
+  reduce-degree|rebuild`, POST /api/reduce-degree|rebuild and NurbsCurve.reduce_degree|rebuild
+  (io::edit_curve), `hula hermite-frenet`, POST /api/hermite-frenet and
+  hulahoops.hermite_frenet (io::hermite_frenet_answer). The written curve files are compared
+  byte for byte with Python's.
 
 Answers are compared value for value, every double bit for bit; wall-clock members
 ("seconds") are left out. Each case also checks an independent fact so that a door
@@ -322,20 +329,37 @@ def random_generator(seed):
 # A square whose closed spline is known in closed form, a seeded planar and a seeded space set.
 CLOSED = [("square", [[1, 0], [0, 1], [-1, 0], [0, -1]], "uniform"),
           ("planar", seeded_points(5, 9, 2), "chord"), ("space", seeded_points(6, 7, 3), "centripetal")]
-# Degree reduction: corpus curves (planar, space, a Bézier) elevated once, so exactly reducible with tolerance 0.
-REDUCTIONS = ["random_planar_nurbs_0", "random_space_nurbs_0", "planar_bezier_s"]
+# Degree reduction: corpus curves (planar, space, a Bézier, rational ones) elevated once, so exactly reducible with
+# tolerance 0.
+REDUCTIONS = ["random_planar_nurbs_0", "random_space_nurbs_0", "planar_bezier_s", "rational_circle", "random_rational_0"]
+# Rebuild (curve, degree, control points): a circle (its deviation has a closed form), a space curve, a rational one,
+# and a Bézier of degree 3 rebuilt as a quintic (reproduced).
+REBUILDS = [("rational_circle", 3, 12), ("random_space_nurbs_0", 3, 9), ("random_rational_1", 4, 10),
+            ("planar_bezier_s", 5, 8)]
+# Frenet handles: a quarter of the circle of radius 2 (κ = 1/2) and a space pair with torsion.
+FRENET = [{"handles": [{"point": [2, 0], "tangent": [0, 3.14159], "normal": [-1, 0], "curvature": 0.5},
+                       {"point": [0, 2], "tangent": [-3.14159, 0], "normal": [0, -1], "curvature": 0.5}],
+           "parameters": [0, 1]},
+          {"handles": [{"point": [0, 0, 0], "tangent": [1, 0, 0.2], "normal": [0, 1, 0], "curvature": 0.8,
+                        "torsion": 0.3},
+                       {"point": [1, 1, 0.5], "tangent": [0, 1, 0.3], "normal": [-1, 0, 0], "curvature": 0.4},
+                       {"point": [0, 2, 1], "tangent": [-1, 0, 0.1]}]}]
 
 
-def edits(hula, failures, folder):
+def edits(hula, server, failures, folder):
     folder = pathlib.Path(folder)
     checked = 0
     for name, points, rule in CLOSED:
         source = folder / f"{name}.points.json"
         source.write_text(json.dumps(points))
         out = folder / f"{name}.closed.json"
-        run(hula, "interpolate", "--points", str(source), "--closed", "--parameterisation", rule, "-o", str(out))
+        cli = run(hula, "interpolate", "--points", str(source), "--closed", "--parameterisation", rule, "-o", str(out))
+        del cli["output"]
+        cli["curve"] = json.loads(out.read_text())
+        http = post(server, "/api/interpolate-closed", {"points": points, "parameterisation": rule})
         ring = hh.interpolate(points, closed=True, parameterisation=rule)
-        compare(failures, f"interpolate --closed {name}", [("CLI", json.loads(out.read_text())), ("Python", plain(ring))])
+        compare(failures, f"interpolate --closed {name}", [("CLI", cli), ("HTTP", http)])
+        compare(failures, f"interpolate --closed {name}", [("CLI", cli["curve"]), ("Python", plain(ring))])
         ring.save(str(folder / f"{name}.closed.py.json"))
         if out.read_bytes() != (folder / f"{name}.closed.py.json").read_bytes():
             failures.append(f"interpolate --closed {name}: the CLI's and Python's curve files differ")
@@ -352,10 +376,12 @@ def edits(hula, failures, folder):
         elevated.save(str(source))
         out = folder / f"{name}.reduced.json"
         cli = run(hula, "edit", "reduce-degree", str(source), "--tolerance", "0", "-o", str(out))
+        cli["curve"] = json.loads(out.read_text())
+        http = post(server, "/api/reduce-degree", {"curve": json.loads(source.read_text()), "tolerance": 0})
         py = elevated.reduce_degree(0.0)
+        compare(failures, f"edit reduce-degree {name}", [("CLI", cli), ("HTTP", http)])
         compare(failures, f"edit reduce-degree {name}",
-                [("CLI", {"curve": json.loads(out.read_text()), **{k: cli[k] for k in py if k != "curve"}}),
-                 ("Python", plain(py))])
+                [("CLI", {k: cli[k] for k in py}), ("Python", plain(py))])
         py["curve"].save(str(folder / f"{name}.reduced.py.json"))
         if out.read_bytes() != (folder / f"{name}.reduced.py.json").read_bytes():
             failures.append(f"edit reduce-degree {name}: the CLI's and Python's curve files differ")
@@ -363,6 +389,51 @@ def edits(hula, failures, folder):
         original = hh.NurbsCurve.from_json(curve_json(name))
         if py["curve"].degree != original.degree or not py["error_bound"] < 1e-9:
             failures.append(f"edit reduce-degree {name}: degree {py['curve'].degree}, bound {py['error_bound']}")
+        lo, hi = original.domain
+        gap = max(math.dist(original(lo + (hi - lo) * i / 200), py["curve"](lo + (hi - lo) * i / 200))
+                  for i in range(201))
+        if not gap < 1e-9:
+            failures.append(f"edit reduce-degree {name}: the reduced curve is {gap} away from the original")
+        checked += 1
+    for name, degree, count in REBUILDS:
+        out = folder / f"{name}.rebuilt.json"
+        cli = run(hula, "edit", "rebuild", str(curve_file(name)), "--degree", str(degree), "--control-points",
+                  str(count), "-o", str(out))
+        cli["curve"] = json.loads(out.read_text())
+        http = post(server, "/api/rebuild", {"curve": curve_json(name), "degree": degree, "control_points": count})
+        py = hh.NurbsCurve.from_json(curve_json(name)).rebuild(count, degree=degree)
+        compare(failures, f"edit rebuild {name}", [("CLI", cli), ("HTTP", http)])
+        compare(failures, f"edit rebuild {name}", [("CLI", {k: cli[k] for k in py}), ("Python", plain(py))])
+        py["curve"].save(str(folder / f"{name}.rebuilt.py.json"))
+        if out.read_bytes() != (folder / f"{name}.rebuilt.py.json").read_bytes():
+            failures.append(f"edit rebuild {name}: the CLI's and Python's curve files differ")
+        # Independent facts: the circle's deviation is ||C(s)| - R| at the same samples (closed form); a cubic
+        # Bézier rebuilt as a quintic is itself.
+        if name == "rational_circle":
+            lo, hi = py["curve"].domain
+            radius = math.hypot(*hh.NurbsCurve.from_json(curve_json(name))(lo))
+            worst = max(abs(math.hypot(*py["curve"](lo + (hi - lo) * i / 1000)) - radius) for i in range(1001))
+            if abs(worst - py["max_deviation"]) > 1e-9 * radius:
+                failures.append(f"edit rebuild {name}: max_deviation {py['max_deviation']}, closed form {worst}")
+        if name == "planar_bezier_s" and not py["max_deviation"] < 1e-9:
+            failures.append(f"edit rebuild {name}: a cubic rebuilt as a quintic moved by {py['max_deviation']}")
+        checked += 1
+    for k, handles in enumerate(FRENET):
+        source = folder / f"handles{k}.json"
+        source.write_text(json.dumps(handles))
+        out = folder / f"frenet{k}.json"
+        cli = run(hula, "hermite-frenet", str(source), "-o", str(out))
+        del cli["input"], cli["output"]
+        cli["curve"] = json.loads(out.read_text())
+        http = post(server, "/api/hermite-frenet", handles)
+        py = hh.hermite_frenet(handles)
+        compare(failures, f"hermite-frenet {k}", [("CLI", cli), ("HTTP", http)])
+        compare(failures, f"hermite-frenet {k}", [("CLI", cli["curve"]), ("Python", plain(py))])
+        # Independent fact: the curve runs through every handle's point.
+        lo, hi = py.domain
+        if math.dist(py(lo), handles["handles"][0]["point"]) > 1e-12 or \
+                math.dist(py(hi), handles["handles"][-1]["point"]) > 1e-12:
+            failures.append(f"hermite-frenet {k}: the curve misses its end handles")
         checked += 1
     return checked
 
@@ -378,7 +449,7 @@ def main():
         checked += joins(hula, server, failures, folder)
         checked += clothoids(hula, server, failures, folder)
         checked += optimisations(hula, server, failures, folder)
-        checked += edits(hula, failures, folder)
+        checked += edits(hula, server, failures, folder)
     for f in failures:
         print("FAIL:", f)
     print(f"command conformance: {checked} questions through CLI, HTTP (and Python where it answers), "

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Least-squares approximation with fixed end points (The NURBS Book 9.4.1):
 // recovery of a B-spline from its own samples, end-point interpolation, the
-// reported maximum deviation, knots by averaging (eq. 9.69), and option errors.
+// reported maximum deviation, knots by averaging (eq. 9.69), and option errors;
+// the fit on given parameters and knots; rebuild: curves of the new spline
+// space reproduced, the circle's deviation against its closed form.
 #include "hula/nurbs/approximate.hpp"
 
 #include <gtest/gtest.h>
@@ -187,6 +189,119 @@ TEST(ApproximateToTolerance, ErrorsNameTheTolerance) {
   const auto pts = noisy_curve_points(20, 3);
   HULA_EXPECT_ERROR(approximate_to_tolerance(pts, 0.0), Errc::InvalidArgument, "tolerance = 0");
   HULA_EXPECT_ERROR(approximate_to_tolerance(pts, 1e-300), Errc::NumericalFailure, "rounding");
+}
+
+// The full circle of radius R as four rational quadratic arcs (The NURBS Book ex. 7.2), domain [0, 1].
+NurbsCurve circle(double R) {
+  const double h = std::sqrt(0.5);
+  std::vector<Vec3> P{{R, 0, 0},   {R, R, 0},  {0, R, 0},  {-R, R, 0}, {-R, 0, 0},
+                      {-R, -R, 0}, {0, -R, 0}, {R, -R, 0}, {R, 0, 0}};
+  return NurbsCurve(2, {0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1}, std::move(P), {1, h, 1, h, 1, h, 1, h, 1},
+                    2);
+}
+
+// checks: curves of the new spline space come back to rounding — seeded random cubic Béziers on [2, 5] rebuilt
+// as cubics with 4, 7 and 12 control points, a quadratic as a cubic, a cubic with a knot at 1/2 with 5 and 7
+// (uniform knots contain 1/2) — at 1,001 parameters (1e-12 of the size), ends exact, reported deviation at
+// rounding level, same domain and dimension.
+void expect_same_curve(const NurbsCurve& a, const NurbsCurve& b, const char* what) {
+  const double tol = 1e-12 * std::max(1.0, b.model_size());
+  const Interval d = b.domain();
+  ASSERT_EQ(a.domain().start, d.start) << what;
+  ASSERT_EQ(a.domain().end, d.end) << what;
+  for (int i = 0; i <= 1000; ++i) {
+    const double t = d.start + (d.end - d.start) * i / 1000.0;
+    EXPECT_LE(distance(a.evaluate(t), b.evaluate(t)), tol) << what << " t = " << t;
+  }
+}
+
+TEST(Rebuild, ReproducesCurvesOfItsSplineSpace) {
+  Rng rng(26, 11);
+  for (int k = 0; k < 4; ++k) {
+    std::vector<Vec3> cp(4);
+    for (auto& q : cp) q = {rng.uniform(-5, 5), rng.uniform(-5, 5), rng.uniform(-5, 5)};
+    const NurbsCurve bezier(3, {2, 2, 2, 2, 5, 5, 5, 5}, cp);
+    for (std::size_t n : {4u, 7u, 12u}) {
+      const RebuildResult r = rebuild(bezier, {.degree = 3, .control_points = n});
+      ASSERT_EQ(r.curve.degree(), 3);
+      ASSERT_EQ(r.curve.control_points().size(), n);
+      EXPECT_FALSE(r.curve.is_rational());
+      EXPECT_EQ(r.curve.control_points().front(), cp.front());
+      EXPECT_EQ(r.curve.control_points().back(), cp.back());
+      EXPECT_EQ(r.samples, std::max<std::size_t>(201, 10 * n));
+      EXPECT_LE(r.max_deviation, 1e-12 * bezier.model_size()) << k << " " << n;
+      expect_same_curve(r.curve, bezier, "bezier");
+    }
+  }
+  const NurbsCurve quadratic(2, {0, 0, 0, 1, 1, 1}, std::vector<Vec3>{{0, 0, 0}, {1, 2, 0}, {3, 0, 0}}, {}, 2);
+  const RebuildResult q = rebuild(quadratic, {.degree = 3, .control_points = 6});
+  EXPECT_EQ(q.curve.dimension(), 2);
+  expect_same_curve(q.curve, quadratic, "quadratic");
+  const NurbsCurve spline(3, {0, 0, 0, 0, 0.5, 1, 1, 1, 1},
+                          std::vector<Vec3>{{0, 0, 0}, {1, 3, 1}, {2, -1, 0}, {4, 2, -1}, {5, 0, 0}});
+  for (std::size_t n : {5u, 7u}) expect_same_curve(rebuild(spline, {.control_points = n}).curve, spline, "spline");
+}
+
+// checks the reported deviation against the circle's closed form: the distance of a point X to the circle of
+// radius R about the origin is ||X| − R|, so at the deviation samples (1,001, uniform in the new curve's
+// parameter) max ||C_new(s_i)| − R| must equal max_deviation (closest-point projection onto the rational original)
+// to 1e-9 R; and more control points give a closer curve (12, 20, 40 cubic control points; 2 and 5 in degree).
+TEST(Rebuild, CircleDeviationMatchesClosedForm) {
+  for (double R : {1.0, 40.0}) {
+    const NurbsCurve c = circle(R);
+    double previous = std::numeric_limits<double>::infinity();
+    for (std::size_t n : {12u, 20u, 40u}) {
+      for (int degree : {3, 5}) {
+        const RebuildResult r = rebuild(c, {.degree = degree, .control_points = n});
+        double worst = 0.0;
+        double at = 0.0;
+        for (int i = 0; i <= 1000; ++i) {
+          const double s = i == 1000 ? 1.0 : i / 1000.0;
+          const double e = std::abs(norm(r.curve.evaluate(s)) - R);
+          if (e > worst) worst = e, at = s;
+        }
+        EXPECT_NEAR(r.max_deviation, worst, 1e-9 * R) << R << " " << n << " " << degree;
+        EXPECT_NEAR(r.at, at, 1e-12) << R << " " << n << " " << degree;
+        EXPECT_GT(r.max_deviation, 1e-9 * R);  // a circle is not a polynomial curve
+        if (degree == 3) {
+          EXPECT_LT(r.max_deviation, previous);
+          previous = r.max_deviation;
+        }
+      }
+    }
+    EXPECT_LT(previous, 1e-4 * R);
+  }
+}
+
+// checks least_squares_fit's errors name the input, and the Schoenberg–Whitney failure (every parameter in one
+// knot span) is a NumericalFailure naming the knots; rebuild's options name the field.
+TEST(Rebuild, ErrorsNameTheInput) {
+  const std::vector<Vec3> pts{{0, 0, 0}, {1, 1, 0}, {2, 0, 0}, {3, 1, 0}, {4, 0, 0}, {5, 1, 0}};
+  const std::vector<double> t{0, 0.2, 0.4, 0.6, 0.8, 1};
+  const KnotVector kv = KnotVector::uniform_clamped(4, 2);
+  EXPECT_EQ(least_squares_fit(pts, t, kv).control_points().size(), 4U);
+  HULA_EXPECT_ERROR((void)least_squares_fit(pts, std::vector<double>{0, 1}, kv), Errc::InvalidArgument,
+                    "2 parameters for 6 points");
+  HULA_EXPECT_ERROR((void)least_squares_fit(pts, std::vector<double>{0, 0.2, 0.5, 0.4, 0.8, 1}, kv),
+                    Errc::InvalidArgument, "parameters[3] = 0.4");
+  HULA_EXPECT_ERROR((void)least_squares_fit(pts, std::vector<double>{0, 0.2, 0.4, 0.6, 0.8, 1.5}, kv),
+                    Errc::InvalidArgument, "parameters[5] = 1.5");
+  HULA_EXPECT_ERROR((void)least_squares_fit(pts, t, KnotVector({0, 1, 2, 3, 4, 5, 6}, 2)), Errc::InvalidArgument,
+                    "clamped");
+  HULA_EXPECT_ERROR((void)least_squares_fit(pts, t, KnotVector::uniform_clamped(7, 2)), Errc::InvalidArgument,
+                    "7 control points");
+  std::vector<Vec3> lifted = pts;
+  lifted[2].z = 1.0;
+  HULA_EXPECT_ERROR((void)least_squares_fit(lifted, t, kv, 2), Errc::InvalidArgument, "points[2] has z = 1");
+  HULA_EXPECT_ERROR(
+      (void)least_squares_fit(pts, std::vector<double>{0, 0.1, 0.1, 0.2, 0.2, 1}, KnotVector::uniform_clamped(6, 2)),
+      Errc::NumericalFailure, "singular");
+  const NurbsCurve c(3, {0, 0, 0, 0, 1, 1, 1, 1}, std::vector<Vec3>{{0, 0, 0}, {1, 2, 0}, {3, 2, 1}, {4, 0, 0}});
+  HULA_EXPECT_ERROR((void)rebuild(c, {.degree = 3, .control_points = 3}), Errc::InvalidOption, "control_points = 3");
+  HULA_EXPECT_ERROR((void)rebuild(c, {.degree = 0, .control_points = 5}), Errc::InvalidOption, "degree = 0");
+  HULA_EXPECT_ERROR((void)rebuild(c, {.control_points = 9, .samples = 8}), Errc::InvalidOption, "samples = 8");
+  HULA_EXPECT_ERROR((void)rebuild(c, {.control_points = 9, .deviation_samples = 1}), Errc::InvalidOption,
+                    "deviation_samples = 1");
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Degree elevation: a line and a circle by hand / closed form, and errors;
 // degree reduction: elevated curves back, the cubic Bézier closed form, the
-// bound on random quartics.
+// bound on random quartics; rational reduction: an elevated conic back, the
+// Euclidean bound on random rational curves, a negative reduced weight refused.
 // Shape invariance on random curves: elevate_property_test.cpp.
 #include "hula/nurbs/elevate.hpp"
 
@@ -93,7 +94,7 @@ TEST(ReduceDegree, CubicBezierClosedForm) {
 }
 
 // checks the bound holds on seeded random quartics (measured at 2,000 samples), with C0 joints healed where the
-// tolerance allows, and a tolerance below the reachable bound is refused naming it; rational and degree 1 too.
+// tolerance allows, and a tolerance below the reachable bound is refused naming it; degree 1 and a bad tolerance too.
 TEST(ReduceDegree, BoundHoldsAndBadInputNamed) {
   Rng rng(27, 3);
   for (int k = 0; k < 10; ++k) {
@@ -111,10 +112,87 @@ TEST(ReduceDegree, BoundHoldsAndBadInputNamed) {
     EXPECT_LE(r.error_bound, 1e3);
     HULA_EXPECT_ERROR((void)reduce_degree(c, 1e-9 * r.bezier_bound), Errc::NumericalFailure, "tolerance");
   }
-  HULA_EXPECT_ERROR((void)reduce_degree(testing::rational_circle(1.0), 1.0), Errc::InvalidArgument, "rational");
   const NurbsCurve line(1, {0, 0, 1, 1}, std::vector<Vec3>{{0, 0, 0}, {1, 0, 0}});
   HULA_EXPECT_ERROR((void)reduce_degree(line, 1.0), Errc::InvalidDegree, "degree 1");
   HULA_EXPECT_ERROR((void)reduce_degree(line, -1.0), Errc::InvalidArgument, "tolerance");
+}
+
+// checks a degree-elevated rational conic reduces back exactly: the circle (four rational quadratic arcs, weights
+// 1, √½, 1) elevated once or twice and reduced as often gives its knots, weights and control points to 1e-12, a
+// bound at rounding level, and |C(t)| = R at 1,001 samples (the closed form).
+TEST(ReduceDegree, ElevatedRationalConicComesBack) {
+  for (double R : {1.0, 7.5}) {
+    const NurbsCurve circle = testing::rational_circle(R, 0.3);
+    for (int times : {1, 2}) {
+      NurbsCurve c = elevate_degree(circle, times);
+      double bound = 0.0;
+      for (int k = 0; k < times; ++k) {
+        const DegreeReductionResult r = reduce_degree(c, 0.0);
+        bound += r.error_bound;
+        c = r.curve;
+      }
+      ASSERT_EQ(c.degree(), 2);
+      ASSERT_TRUE(c.is_rational());
+      ASSERT_EQ(c.knots().values().size(), circle.knots().values().size());
+      for (std::size_t i = 0; i < c.knots().values().size(); ++i)
+        EXPECT_NEAR(c.knots()[i], circle.knots()[i], 1e-15) << i;
+      // A rational curve's weights are defined up to one common factor: compare w_i / w_0.
+      const double scale = c.weights()[0] / circle.weights()[0];
+      for (std::size_t i = 0; i < circle.control_points().size(); ++i) {
+        EXPECT_LE(distance(c.control_points()[i], circle.control_points()[i]), 1e-12 * R) << times << " " << i;
+        EXPECT_NEAR(c.weights()[i] / scale, circle.weights()[i], 1e-12) << times << " " << i;
+      }
+      EXPECT_LE(bound, 1e-12 * std::max(1.0, 2 * R));
+      for (int i = 0; i <= 1000; ++i) EXPECT_NEAR(norm(c.evaluate(i / 1000.0)), R, 1e-12 * R) << i;
+    }
+  }
+}
+
+// checks the Euclidean bound of a rational reduction holds on seeded random rational quartics and quintics
+// (weights in [0.2, 5]): the largest |C_new(t) − C(t)| at 2,001 samples stays within error_bound, or the
+// reduction is refused for a non-positive weight (naming the curve) — both outcomes are counted so the test sees
+// real reductions.
+TEST(ReduceDegree, RationalBoundHoldsOnRandomCurves) {
+  Rng rng(26, 4);
+  int reduced = 0;
+  for (int k = 0; k < 20; ++k) {
+    testing::RandomCurveSpec spec;
+    spec.degree = 4 + k % 2;
+    spec.rational = true;
+    const NurbsCurve c = testing::random_curve(rng, spec);
+    DegreeReductionResult r{c};
+    try {
+      r = reduce_degree(c, 1e6);
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), Errc::NumericalFailure);
+      EXPECT_EQ(e.where().field, "curve") << e.what();
+      continue;
+    }
+    ++reduced;
+    EXPECT_TRUE(r.curve.is_rational());
+    double worst = 0.0;
+    const Interval d = c.domain();
+    for (int i = 0; i <= 2000; ++i) {
+      const double t = d.start + (d.end - d.start) * i / 2000.0;
+      worst = std::max(worst, distance(c.evaluate(t), r.curve.evaluate(t)));
+    }
+    EXPECT_LE(worst, r.error_bound * (1 + 1e-12)) << k;
+    EXPECT_GE(r.error_bound, r.bezier_bound);
+  }
+  EXPECT_GE(reduced, 5);
+}
+
+// checks the weight-positivity check: the cubic Bézier with weights 1, 0.1, 1, 1 has the reduced middle weight
+// (3 w1 − w0) / 2 = −0.35 < 0 (left inversion, The NURBS Book 5.6), refused as NumericalFailure naming the
+// curve and the weight; with weights 1, 2, 2, 1 the reduced weights (1, 2.5, 1) are positive and accepted.
+TEST(ReduceDegree, RationalNegativeWeightIsRefused) {
+  const std::vector<Vec3> P{{0, 0, 0}, {1, 2, 0}, {3, 2, 0}, {4, 0, 0}};
+  const NurbsCurve bad(3, {0, 0, 0, 0, 1, 1, 1, 1}, P, {1, 0.1, 1, 1});
+  HULA_EXPECT_ERROR((void)reduce_degree(bad, 1e6), Errc::NumericalFailure, "reduced weight 1 is -0.3499");
+  const NurbsCurve good(3, {0, 0, 0, 0, 1, 1, 1, 1}, P, {1, 2, 2, 1});
+  const DegreeReductionResult r = reduce_degree(good, 1e6);
+  ASSERT_EQ(r.curve.weights().size(), 3U);
+  EXPECT_NEAR(r.curve.weights()[1] / r.curve.weights()[0], 2.5, 1e-15);
 }
 
 }  // namespace

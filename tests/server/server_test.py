@@ -375,6 +375,92 @@ class ApiTest(unittest.TestCase):
         e = self.call("POST", "/api/clothoid", {"points": pts, "splines": 2}, expect=400)
         e = self.call("POST", "/api/clothoid", {"points": [[0, 0], [1, 0], [1, 0]]}, expect=422)
         self.assertEqual((e["error"]["code"], e["error"]["where"]["field"]), ("CoincidentPoints", "points"))
+    # checks the curve-edit routes against closed forms, from the curve files they answer (evaluated here by de Boor's
+    # algorithm): a line rebuilt as a cubic has its control points at the Greville abscissae; an elevated quadratic
+    # and an elevated rational quarter circle reduce back to their control points and weights; the closed square
+    # has C(1/8) = (11/16, 11/16); a Frenet Hermite curve starts at its first handle with its tangent
+    def test_curve_edits(self):
+        def evaluate(curve, t, order=0):
+            p, U, P = curve["degree"], curve["knots"], curve["control_points"]
+            w = curve.get("weights") or [1.0] * len(P)
+            n = len(P) - 1
+            k = max(i for i in range(p, n + 1) if U[i] <= t) if t < U[n + 1] else n
+            d = [[w[j] * c for c in P[j]] + [w[j]] for j in range(k - p, k + 1)]
+            for r in range(1, p + 1):
+                for j in range(p, r - 1, -1):
+                    i = j + k - p
+                    a = (t - U[i]) / (U[i + p + 1 - r] - U[i])
+                    d[j] = [(1 - a) * x + a * y for x, y in zip(d[j - 1], d[j])]
+            return [c / d[p][-1] for c in d[p][:-1]]
+
+        line = {"kind": "nurbs", "degree": 1, "knots": [0, 0, 1, 1], "control_points": [[0, 0], [3, 0]]}
+        body = self.call("POST", "/api/rebuild", {"curve": line, "degree": 3, "control_points": 6})
+        self.assertEqual((body["operation"], body["degree"], body["control_points"], body["samples"]),
+                         ("rebuild", 3, 6, 201))
+        self.assertLess(body["max_deviation"], 1e-12)
+        U = body["curve"]["knots"]
+        for i, q in enumerate(body["curve"]["control_points"]):
+            greville = sum(U[i + 1:i + 4]) / 3
+            self.assertAlmostEqual(q[0], 3 * greville, places=12)
+            self.assertAlmostEqual(q[1], 0.0, places=12)
+        e = self.call("POST", "/api/rebuild", {"curve": line, "degree": 3, "control_points": 3}, expect=400)
+        self.assertEqual(e["error"]["where"]["field"], "control_points")
+        e = self.call("POST", "/api/rebuild", {"curve": line}, expect=400)
+        self.assertEqual(e["error"]["where"]["field"], "control_points")
+
+        cubic = {"kind": "nurbs", "degree": 3, "knots": [0, 0, 0, 0, 1, 1, 1, 1],
+                 "control_points": [[0, 0], [2 / 3, 4 / 3], [5 / 3, 4 / 3], [3, 0]]}
+        body = self.call("POST", "/api/reduce-degree", {"curve": cubic, "tolerance": 0})
+        self.assertEqual(body["operation"], "reduce-degree")
+        self.assertLess(body["error_bound"], 1e-12)
+        for got, want in zip(body["curve"]["control_points"], [[0, 0], [1, 2], [3, 0]]):
+            self.assertAlmostEqual(math.dist(got, want), 0.0, places=12)
+        # The quarter circle (1, 0), (1, 1), (0, 1), weights 1, h, 1, elevated in homogeneous form (w P, w).
+        h = math.sqrt(0.5)
+        hom = [[1, 0, 1], [(1 + 2 * h) / 3, 2 * h / 3, (1 + 2 * h) / 3], [2 * h / 3, (1 + 2 * h) / 3, (1 + 2 * h) / 3],
+               [0, 1, 1]]
+        quarter = {"kind": "nurbs", "degree": 3, "knots": [0, 0, 0, 0, 1, 1, 1, 1],
+                   "control_points": [[x / w, y / w] for x, y, w in hom], "weights": [w for _, _, w in hom]}
+        body = self.call("POST", "/api/reduce-degree", {"curve": quarter, "tolerance": 0})
+        self.assertLess(body["error_bound"], 1e-12)
+        self.assertEqual(body["curve"]["degree"], 2)
+        for got, want in zip(body["curve"]["weights"], [1, h, 1]):
+            self.assertAlmostEqual(got, want, places=12)
+        for t in (0.1, 0.5, 0.77):
+            self.assertAlmostEqual(math.hypot(*evaluate(body["curve"], t)), 1.0, places=12)
+        bad = dict(cubic, weights=[1, 0.1, 1, 1])
+        e = self.call("POST", "/api/reduce-degree", {"curve": bad, "tolerance": 100}, expect=422)
+        self.assertEqual(e["error"]["where"]["field"], "curve")
+        e = self.call("POST", "/api/reduce-degree", {"curve": cubic}, expect=400)
+        self.assertEqual(e["error"]["where"]["field"], "tolerance")
+
+        square = [[1, 0], [0, 1], [-1, 0], [0, -1]]
+        body = self.call("POST", "/api/interpolate-closed", {"points": square, "parameterisation": "uniform"})
+        self.assertEqual((body["method"], body["points"], body["dimension"], body["parameterisation"]),
+                         ("closed", 4, 2, "uniform"))
+        self.assertEqual(evaluate(body["curve"], 0.0), [1.0, 0.0])
+        for got, want in zip(evaluate(body["curve"], 0.125), [11 / 16, 11 / 16]):
+            self.assertAlmostEqual(got, want, places=14)
+        e = self.call("POST", "/api/interpolate-closed", {"points": square, "parameterisation": "zigzag"},
+                      expect=400)
+        self.assertEqual(e["error"]["where"]["field"], "parameterisation")
+
+        handles = {"handles": [{"point": [2, 0], "tangent": [0, 3], "normal": [-1, 0], "curvature": 0.5},
+                               {"point": [0, 2], "tangent": [-3, 0], "normal": [0, -1], "curvature": 0.5}],
+                   "parameters": [0, 1]}
+        body = self.call("POST", "/api/hermite-frenet", handles)
+        curve = body["curve"]
+        self.assertEqual((body["degree"], curve["degree"]), (7, 7))
+        self.assertEqual(evaluate(curve, 0.0), [2.0, 0.0])
+        for got, want in zip(evaluate(curve, 1.0), [0.0, 2.0]):
+            self.assertAlmostEqual(got, want, places=14)
+        P, U = curve["control_points"], curve["knots"]
+        start_tangent = [7 / (U[8] - U[1]) * (b - a) for a, b in zip(P[0], P[1])]
+        for got, want in zip(start_tangent, [0, 3]):
+            self.assertAlmostEqual(got, want, places=12)
+        e = self.call("POST", "/api/hermite-frenet", {"handles": [{"point": [0, 0], "tangent": [1, 0], "twist": 1}]},
+                      expect=400)
+        self.assertIn("twist", e["error"]["message"])
 
     # checks reconstruction against the closed form circle of kappa = 1 (radius 1, quarter turn at s = pi/2), the fit
     # within the default 1e-6 of the size (the half circle's box is 2 by 1: diagonal sqrt(5))

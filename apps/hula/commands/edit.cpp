@@ -3,6 +3,7 @@
 // splitting operations on a NURBS curve file (thesis 5.5, The NURBS Book ch. 5):
 // insert-knot (Boehm, A5.1), refine (A5.4), remove-knots (A5.8, within a
 // tolerance), elevate (degree elevation), reduce-degree (within a tolerance),
+// rebuild (a chosen degree and number of control points, deviation measured),
 // split (knot insertion to
 // multiplicity p), reverse and reparam (affine map of the knots), and to-nurbs (a law or natural curve
 // converted to a NURBS within a tolerance, intrinsic::to_nurbs) and to-law (a NURBS written out as an exact law
@@ -22,12 +23,15 @@ namespace {
 struct EditArgs {
   std::string curve;
   std::string output;
-  std::string second;      // split: the curve after the split point
-  double at = 0.0;         // insert-knot, split, remove-knots
-  int times = 1;           // insert-knot, elevate, remove-knots
-  double tolerance = 0.0;  // remove-knots, to-nurbs
-  std::string knots;       // refine
-  std::string domain;      // reparam
+  std::string second;              // split: the curve after the split point
+  double at = 0.0;                 // insert-knot, split, remove-knots
+  int times = 1;                   // insert-knot, elevate, remove-knots
+  double tolerance = 0.0;          // remove-knots, to-nurbs
+  std::string knots;               // refine
+  std::string domain;              // reparam
+  int degree = 3;                  // rebuild
+  std::size_t control_points = 0;  // rebuild
+  std::size_t samples = 0;         // rebuild
 };
 
 // Runs the edit on the curve file and writes its curve(s): -o, and --second for split.
@@ -86,6 +90,12 @@ int run_reduce_degree(const EditArgs& a) {
   return run_edit(a, {.edit = io::CurveEdit::ReduceDegree, .tolerance = a.tolerance}, "reduce-degree");
 }
 
+int run_rebuild(const EditArgs& a) {
+  return run_edit(
+      a, {.edit = io::CurveEdit::Rebuild, .degree = a.degree, .control_points = a.control_points, .samples = a.samples},
+      "rebuild");
+}
+
 int run_reverse(const EditArgs& a) { return run_edit(a, {.edit = io::CurveEdit::Reverse}, "reverse"); }
 
 int run_reparam(const EditArgs& a) {
@@ -133,8 +143,8 @@ Command add_edit(CLI::App& app) {
   auto a = std::make_shared<EditArgs>();
   CLI::App* edit = app.add_subcommand(
       "edit",
-      "Edit a NURBS curve: insert-knot, refine, remove-knots, elevate, reduce-degree, split, reverse, reparam, "
-      "to-nurbs, to-law");
+      "Edit a NURBS curve: insert-knot, refine, remove-knots, elevate, reduce-degree, rebuild, split, reverse, "
+      "reparam, to-nurbs, to-law");
   edit->require_subcommand(1);
   const char* out = "Curve file to write (atomically)";
   CLI::App* insert = operation(edit, "insert-knot", "Insert a knot (the curve is unchanged)", *a, out);
@@ -158,6 +168,14 @@ Command add_edit(CLI::App& app) {
       operation(edit, "reduce-degree", "Lower the degree by one while the curve moves by at most --tolerance", *a, out);
   reduce->add_option("--tolerance", a->tolerance, "Largest change of the curve allowed, model units (>= 0)")
       ->required();
+  CLI::App* rebuild =
+      operation(edit, "rebuild",
+                "Refit the curve with a chosen degree and number of control points (same ends and domain)", *a, out);
+  rebuild->add_option("--degree", a->degree, "Degree of the new curve (default 3)")->check(CLI::Range(1, 64));
+  rebuild->add_option("--control-points", a->control_points, "Control points of the new curve (>= degree + 1)")
+      ->required();
+  rebuild->add_option("--samples", a->samples,
+                      "Samples of the curve fitted (default max(201, 10 x control points); >= control points)");
   CLI::App* split =
       operation(edit, "split", "Split at a parameter into two curve files", *a, "Curve file of the part before --at");
   split->add_option("--at", a->at, "Parameter strictly inside the domain")->required();
@@ -170,7 +188,8 @@ Command add_edit(CLI::App& app) {
   to_nurbs->add_option("--tolerance", a->tolerance, "Largest distance NURBS-curve, model units, in (0, 1]")->required();
   CLI::App* to_law = operation(
       edit, "to-law", "Write a NURBS curve out as an exact law curve (a rational polynomial per knot span)", *a, out);
-  return {edit, [a, insert, refine, remove, remove_at, elevate, reduce, split, reverse, reparam, to_nurbs, to_law] {
+  return {edit,
+          [a, insert, refine, remove, remove_at, elevate, reduce, rebuild, split, reverse, reparam, to_nurbs, to_law] {
             check_outputs(*a, split->parsed());
             if (to_nurbs->parsed()) return run_to_nurbs(*a);
             if (to_law->parsed()) return run_to_law(*a);
@@ -179,6 +198,7 @@ Command add_edit(CLI::App& app) {
             if (remove->parsed()) return run_remove_knots(*a, remove_at->count() > 0);
             if (elevate->parsed()) return run_elevate(*a);
             if (reduce->parsed()) return run_reduce_degree(*a);
+            if (rebuild->parsed()) return run_rebuild(*a);
             if (split->parsed()) return run_split(*a);
             if (reverse->parsed()) return run_reverse(*a);
             return reparam->parsed() ? run_reparam(*a) : kExitUsage;

@@ -14,7 +14,7 @@
 #include "commands/common.hpp"
 #include "commands/study_common.hpp"
 #include "hula/io/atomic_file.hpp"
-#include "hula/io/frenet_handles_json.hpp"
+#include "hula/io/curve_edits.hpp"
 #include "hula/io/json_curve.hpp"
 #include "hula/io/json_read.hpp"
 
@@ -44,15 +44,13 @@ struct FrenetArgs {
 
 int run_hermite_frenet(const FrenetArgs& a) {
   io::check_output_path(a.output, "--output");
-  const nurbs::NurbsCurve c =
-      io::hermite_frenet_curve(io::json::parse_json_text(io::read_text_file(a.handles), "handles file"));
-  io::write_curve_file(a.output, c);
+  const io::MadeCurveAnswer answer =
+      io::hermite_frenet_answer(io::json::parse_json_text(io::read_text_file(a.handles), "handles file"));
+  io::write_curve_file(a.output, answer.curve);
   Json doc = Json::object();
   doc["input"] = a.handles;
   doc["output"] = a.output;
-  doc["degree"] = c.degree();
-  doc["control_points"] = c.control_points().size();
-  doc["domain"] = Json::array({c.domain().start, c.domain().end});
+  doc.update(answer.report);
   print_result(doc, a.output);
   return kExitOk;
 }

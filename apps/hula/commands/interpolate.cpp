@@ -47,23 +47,14 @@ int run_lagrange(const InterpolateArgs& a, const io::PointSet& set) {
   return kExitOk;
 }
 
-// --closed: the periodic C2 cubic back to the first point (io::closed_cubic_curve), no end conditions.
+// --closed: the periodic C2 cubic back to the first point (io::closed_interpolation_answer), no end conditions.
 int run_closed(const InterpolateArgs& a, const io::PointSet& set) {
   const std::vector<double> given = a.knots.empty() ? std::vector<double>{} : parse_number_list(a.knots, "knots");
-  const nurbs::NurbsCurve curve =
-      io::closed_cubic_curve(set, given, io::parameterisation_from_name(a.parameterisation, "parameterisation"));
-  io::write_curve_file(a.output, curve);
-  const nurbs::Interval dom = curve.domain();
+  const io::MadeCurveAnswer answer = io::closed_interpolation_answer(set, given, a.parameterisation);
+  io::write_curve_file(a.output, answer.curve);
   Json summary = Json::object();
   summary["output"] = a.output;
-  summary["kind"] = "nurbs";
-  summary["method"] = "closed";
-  summary["points"] = set.points.size();
-  summary["dimension"] = curve.dimension();
-  summary["degree"] = curve.degree();
-  summary["control_points"] = curve.control_points().size();
-  summary["domain"] = Json::array({dom.start, dom.end});
-  summary["parameterisation"] = a.knots.empty() ? a.parameterisation : std::string("given");
+  summary.update(answer.report);
   print_result(summary, a.output);
   return kExitOk;
 }

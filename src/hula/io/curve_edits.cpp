@@ -7,6 +7,7 @@
 
 #include "hula/core/error.hpp"
 #include "hula/intrinsic/natural_curve.hpp"
+#include "hula/io/frenet_handles_json.hpp"
 #include "hula/law/convert.hpp"
 #include "hula/law/parser.hpp"
 #include "hula/law/tape.hpp"
@@ -63,6 +64,18 @@ CurveEditAnswer edit_curve(const curve::Curve& c, const std::string& path, const
       out.report["error_bound"] = r.error_bound;
       out.report["bezier_bound"] = r.bezier_bound;
       out.report["tolerance"] = q.tolerance;
+      out.curves.push_back(std::move(r.curve));
+      break;
+    }
+    case CurveEdit::Rebuild: {
+      nurbs::RebuildResult r = nurbs::rebuild(
+          nurbs_of(c, path), {.degree = q.degree, .control_points = q.control_points, .samples = q.samples});
+      out.report["degree"] = q.degree;
+      out.report["control_points"] = q.control_points;
+      out.report["samples"] = r.samples;
+      out.report["max_deviation"] = r.max_deviation;
+      out.report["mean_deviation"] = r.mean_deviation;
+      out.report["at"] = r.at;
       out.curves.push_back(std::move(r.curve));
       break;
     }
@@ -158,6 +171,26 @@ nurbs::NurbsCurve closed_cubic_curve(const PointSet& set, std::span<const double
   o.parameterisation = rule;
   if (!parameters.empty()) o.parameters = std::vector<double>(parameters.begin(), parameters.end());
   return nurbs::interpolate_closed_cubic(set.points, o);
+}
+
+MadeCurveAnswer closed_interpolation_answer(const PointSet& set, std::span<const double> parameters,
+                                            std::string_view parameterisation) {
+  const nurbs::Parameterisation rule = parameterisation_from_name(parameterisation, "parameterisation");
+  MadeCurveAnswer out{closed_cubic_curve(set, parameters, rule)};
+  out.report["kind"] = "nurbs";
+  out.report["method"] = "closed";
+  out.report["points"] = set.points.size();
+  out.report.update(curve_shape_summary(out.curve));
+  out.report["parameterisation"] = parameters.empty() ? std::string(parameterisation) : std::string("given");
+  return out;
+}
+
+MadeCurveAnswer hermite_frenet_answer(const Json& handles) {
+  MadeCurveAnswer out{hermite_frenet_curve(handles)};
+  out.report["degree"] = out.curve.degree();
+  out.report["control_points"] = out.curve.control_points().size();
+  out.report["domain"] = Json::array({out.curve.domain().start, out.curve.domain().end});
+  return out;
 }
 
 ApproximationAnswer approximation_answer(const PointSet& set, const ApproximationRequest& q) {

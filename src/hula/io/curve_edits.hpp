@@ -13,6 +13,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "hula/curve/curve.hpp"
@@ -29,6 +30,7 @@ enum class CurveEdit {
   RemoveKnots,
   Elevate,
   ReduceDegree,
+  Rebuild,
   Split,
   Reverse,
   Reparam,
@@ -38,16 +40,20 @@ enum class CurveEdit {
 /// What an edit needs; each edit reads its own members.
 struct CurveEditRequest {
   CurveEdit edit = CurveEdit::Reverse;
-  double at = 0.0;               ///< InsertKnot, RemoveKnot, Split
-  int times = 1;                 ///< InsertKnot, RemoveKnot, Elevate
-  double tolerance = 0.0;        ///< RemoveKnot, RemoveKnots, ReduceDegree, ToNurbs
-  std::vector<double> knots{};   ///< Refine
-  nurbs::Interval domain{0, 1};  ///< Reparam
+  double at = 0.0;                 ///< InsertKnot, RemoveKnot, Split
+  int times = 1;                   ///< InsertKnot, RemoveKnot, Elevate
+  double tolerance = 0.0;          ///< RemoveKnot, RemoveKnots, ReduceDegree, ToNurbs
+  std::vector<double> knots{};     ///< Refine
+  nurbs::Interval domain{0, 1};    ///< Reparam
+  int degree = 3;                  ///< Rebuild
+  std::size_t control_points = 0;  ///< Rebuild (required)
+  std::size_t samples = 0;         ///< Rebuild (0: automatic, nurbs::RebuildOptions::samples)
 };
 
 /// The curves an edit made (two for Split, one otherwise) and its report members: {"removed", "error_bound",
-/// "tolerance"} (remove-knots), {"error_bound", "bezier_bound", "tolerance"} (reduce-degree), {"at"} (split), {"from",
-/// "tolerance", "max_deviation"} (to-nurbs), none else.
+/// "tolerance"} (remove-knots), {"error_bound", "bezier_bound", "tolerance"} (reduce-degree), {"degree",
+/// "control_points", "samples", "max_deviation", "mean_deviation", "at"} (rebuild: nurbs::rebuild's measured
+/// deviation from the original), {"at"} (split), {"from", "tolerance", "max_deviation"} (to-nurbs), none else.
 struct CurveEditAnswer {
   std::vector<nurbs::NurbsCurve> curves;
   Json report = Json::object();
@@ -87,6 +93,25 @@ struct LawConversionAnswer {
 /// @throws as nurbs::interpolate_lagrange
 [[nodiscard]] nurbs::NurbsCurve lagrange_curve(const PointSet& points, std::span<const double> parameters,
                                                nurbs::Parameterisation rule);
+
+/// A made curve and the members that describe it.
+struct MadeCurveAnswer {
+  nurbs::NurbsCurve curve;
+  Json report = Json::object();
+};
+
+/// `hula interpolate --closed`'s curve and summary (without the file name), POST /api/interpolate-closed's answer:
+/// closed_cubic_curve with {"kind": "nurbs", "method": "closed", "points" (count), "dimension", "degree",
+/// "control_points" (count), "domain", "parameterisation" (the rule's name, or "given" with parameters)}.
+/// @param parameterisation the rule's name (io::parameterisation_from_name), used when `parameters` is empty
+/// @throws hula::Error(Errc::ParseError) naming "parameterisation" for an unknown name; as closed_cubic_curve
+[[nodiscard]] MadeCurveAnswer closed_interpolation_answer(const PointSet& points, std::span<const double> parameters,
+                                                          std::string_view parameterisation);
+
+/// `hula hermite-frenet`'s curve and summary (without the file names), POST /api/hermite-frenet's answer:
+/// hermite_frenet_curve with {"degree", "control_points" (count), "domain"}.
+/// @throws as hermite_frenet_curve
+[[nodiscard]] MadeCurveAnswer hermite_frenet_answer(const Json& handles);
 
 /// The closed (periodic, C2) cubic spline through the points and back to the first
 /// (nurbs::interpolate_closed_cubic) at `parameters`, or when empty at the parameters of `rule`.

@@ -13,6 +13,8 @@
 // consecutive basis functions), solved with hula::BandedMatrix in O(m p²).
 // When n = m (as many control points as points) the fit is an interpolation
 // and the knots are those of eq. 9.8 (averaging), see approximate().
+// least_squares_fit is the solve on given t and U; rebuild samples a curve at
+// its own parameters and fits them on uniform knots of its domain.
 #include "hula/nurbs/approximate.hpp"
 
 #include <algorithm>
@@ -23,8 +25,17 @@
 #include "hula/core/error.hpp"
 #include "hula/nurbs/basis.hpp"
 #include "hula/nurbs/detail/option_checks.hpp"
+#include "hula/nurbs/deviation.hpp"
 
 namespace hula::nurbs {
+
+namespace {
+
+// Fewest samples rebuild fits by default: enough that a curve with a few control points is fitted on a dense
+// sampling of its shape, not only on as many samples as unknowns.
+constexpr std::size_t kRebuildMinSamples = 201;
+
+}  // namespace
 
 void ApproximationOptions::validate() const {
   if (degree < 1 || degree > kMaxDegree)
@@ -40,6 +51,87 @@ void ApproximationOptions::validate() const {
   detail::check_parameterisation_option(parameterisation);
 }
 
+NurbsCurve least_squares_fit(std::span<const Vec3> points, std::span<const double> parameters, const KnotVector& kv,
+                             int dimension) {
+  detail::check_dimension_option(dimension);
+  if (points.size() < 2)
+    throw Error(Errc::TooFewPoints, "a least-squares fit needs at least 2 points, got " + std::to_string(points.size()),
+                {.field = "points"});
+  if (parameters.size() != points.size())
+    throw Error(Errc::InvalidArgument,
+                std::to_string(parameters.size()) + " parameters for " + std::to_string(points.size()) + " points",
+                {.field = "parameters"});
+  if (!kv.is_clamped())
+    throw Error(Errc::InvalidArgument, "the knot vector must be clamped (end multiplicity degree + 1)",
+                {.field = "knots"});
+  const std::size_t m = points.size() - 1;
+  const std::size_t n = kv.control_point_count() - 1;
+  const auto p = static_cast<std::size_t>(kv.degree());
+  if (n > m)
+    throw Error(Errc::InvalidArgument,
+                "the knots carry " + std::to_string(n + 1) + " control points, more than the " + std::to_string(m + 1) +
+                    " points",
+                {.field = "knots"});
+  const Interval dom = kv.domain();
+  for (std::size_t k = 0; k <= m; ++k) {
+    for (std::size_t c = 0; c < 3; ++c)
+      if (!std::isfinite(points[k][c]))
+        throw Error(Errc::NonFiniteInput, "points[" + std::to_string(k) + "] is not finite",
+                    {.field = "points", .index = k, .component = c});
+    if (dimension == 2 && points[k].z != 0.0)
+      throw Error(Errc::InvalidArgument,
+                  "points[" + std::to_string(k) + "] has z = " + format_number(points[k].z) +
+                      " but dimension = 2 (z must be 0)",
+                  {.field = "points", .index = k, .component = 2});
+    const double tk = parameters[k];
+    if (!std::isfinite(tk))
+      throw Error(Errc::NonFiniteInput, "parameters[" + std::to_string(k) + "] is not finite",
+                  {.field = "parameters", .index = k});
+    if (tk < dom.start || tk > dom.end || (k > 0 && tk < parameters[k - 1]))
+      throw Error(Errc::InvalidArgument,
+                  "parameters[" + std::to_string(k) + "] = " + format_number(tk) +
+                      " is outside the knots' domain or below the parameter before it",
+                  {.field = "parameters", .index = k});
+  }
+
+  std::vector<Vec3> P(n + 1);
+  P.front() = points.front();
+  P.back() = points.back();
+  if (n >= 2) {
+    const std::size_t unknowns = n - 1;
+    BandedMatrix A(unknowns, p, p);
+    std::vector<double> rhs(3 * unknowns, 0.0);
+    std::vector<double> b(p + 1);
+    for (std::size_t k = 1; k < m; ++k) {
+      const std::size_t span = kv.find_span(parameters[k]);
+      basis_functions(kv, span, parameters[k], b);
+      const std::size_t first = span - p;  // b[j] = N_{first + j, p}(t_k)
+      Vec3 R = points[k];
+      if (first == 0) R -= b[0] * points.front();
+      if (first + p == n) R -= b[p] * points.back();
+      for (std::size_t a = 0; a <= p; ++a) {
+        const std::size_t ia = first + a;
+        if (ia == 0 || ia == n || b[a] == 0.0) continue;
+        for (std::size_t c = 0; c < 3; ++c) rhs[(ia - 1) * 3 + c] += b[a] * R[c];
+        for (std::size_t e = 0; e <= p; ++e) {
+          const std::size_t ie = first + e;
+          if (ie == 0 || ie == n) continue;
+          A.at(ia - 1, ie - 1) += b[a] * b[e];
+        }
+      }
+    }
+    if (!A.solve(rhs, 3))
+      throw Error(Errc::NumericalFailure,
+                  "the least-squares normal equations are singular (" + std::to_string(n + 1) + " control points for " +
+                      std::to_string(points.size()) + " points)",
+                  {.field = "knots"});
+    for (std::size_t i = 1; i < n; ++i) P[i] = {rhs[3 * (i - 1)], rhs[3 * (i - 1) + 1], rhs[3 * (i - 1) + 2]};
+  }
+  if (dimension == 2)
+    for (Vec3& q : P) q.z = 0.0;
+  return NurbsCurve(kv, std::move(P), {}, dimension);
+}
+
 ApproximationResult approximate(std::span<const Vec3> points, const ApproximationOptions& options) {
   options.validate();
   if (points.size() < 2)
@@ -50,13 +142,7 @@ ApproximationResult approximate(std::span<const Vec3> points, const Approximatio
                 "control_points = " + std::to_string(options.control_points) + " exceeds the number of points " +
                     std::to_string(points.size()),
                 {.field = "control_points"});
-  for (std::size_t i = 0; i < points.size(); ++i)
-    if (options.dimension == 2 && std::isfinite(points[i].z) && points[i].z != 0.0)
-      throw Error(Errc::InvalidArgument,
-                  "points[" + std::to_string(i) + "] has z = " + format_number(points[i].z) +
-                      " but dimension = 2 (z must be 0)",
-                  {.field = "points", .index = i, .component = 2});
-
+  // (A point off the plane of a 2-D fit is refused by least_squares_fit.)
   std::vector<double> t = parameterise(points, options.parameterisation);
   const std::size_t m = points.size() - 1;
   const std::size_t n = options.control_points - 1;
@@ -84,43 +170,7 @@ ApproximationResult approximate(std::span<const Vec3> points, const Approximatio
   }
   U.insert(U.end(), p + 1, 1.0);
   const KnotVector kv(std::move(U), options.degree);
-
-  std::vector<Vec3> P(n + 1);
-  P.front() = points.front();
-  P.back() = points.back();
-  if (n >= 2) {
-    const std::size_t unknowns = n - 1;
-    BandedMatrix A(unknowns, p, p);
-    std::vector<double> rhs(3 * unknowns, 0.0);
-    std::vector<double> b(p + 1);
-    for (std::size_t k = 1; k < m; ++k) {
-      const std::size_t span = kv.find_span(t[k]);
-      basis_functions(kv, span, t[k], b);
-      const std::size_t first = span - p;  // b[j] = N_{first + j, p}(t_k)
-      Vec3 R = points[k];
-      if (first == 0) R -= b[0] * points.front();
-      if (first + p == n) R -= b[p] * points.back();
-      for (std::size_t a = 0; a <= p; ++a) {
-        const std::size_t ia = first + a;
-        if (ia == 0 || ia == n || b[a] == 0.0) continue;
-        for (std::size_t c = 0; c < 3; ++c) rhs[(ia - 1) * 3 + c] += b[a] * R[c];
-        for (std::size_t e = 0; e <= p; ++e) {
-          const std::size_t ie = first + e;
-          if (ie == 0 || ie == n) continue;
-          A.at(ia - 1, ie - 1) += b[a] * b[e];
-        }
-      }
-    }
-    if (!A.solve(rhs, 3))
-      throw Error(Errc::NumericalFailure,
-                  "the least-squares normal equations are singular (" + std::to_string(options.control_points) +
-                      " control points for " + std::to_string(points.size()) + " points)",
-                  {.field = "control_points"});
-    for (std::size_t i = 1; i < n; ++i) P[i] = {rhs[3 * (i - 1)], rhs[3 * (i - 1) + 1], rhs[3 * (i - 1) + 2]};
-  }
-  if (options.dimension == 2)
-    for (Vec3& q : P) q.z = 0.0;
-  ApproximationResult result{.curve = NurbsCurve(kv, std::move(P), {}, options.dimension), .parameters = std::move(t)};
+  ApproximationResult result{.curve = least_squares_fit(points, t, kv, options.dimension), .parameters = std::move(t)};
 
   std::vector<Vec3> on_curve(points.size());
   result.curve.evaluate(result.parameters, on_curve);
@@ -132,6 +182,49 @@ ApproximationResult approximate(std::span<const Vec3> points, const Approximatio
     }
   }
   return result;
+}
+
+void RebuildOptions::validate() const {
+  if (degree < 1 || degree > kMaxDegree)
+    throw Error(Errc::InvalidOption,
+                "degree = " + std::to_string(degree) + " must be in [1, " + std::to_string(kMaxDegree) + "]",
+                {.field = "degree"});
+  if (control_points < static_cast<std::size_t>(degree) + 1)
+    throw Error(Errc::InvalidOption,
+                "control_points = " + std::to_string(control_points) +
+                    " must be at least degree + 1 = " + std::to_string(degree + 1),
+                {.field = "control_points"});
+  if (samples != 0 && samples < control_points)
+    throw Error(Errc::InvalidOption,
+                "samples = " + std::to_string(samples) +
+                    " must be 0 (automatic) or at least control_points = " + std::to_string(control_points),
+                {.field = "samples"});
+  if (deviation_samples < 2)
+    throw Error(Errc::InvalidOption, "deviation_samples = " + std::to_string(deviation_samples) + " must be >= 2",
+                {.field = "deviation_samples"});
+}
+
+RebuildResult rebuild(const NurbsCurve& curve, const RebuildOptions& options) {
+  options.validate();
+  const std::size_t count =
+      options.samples != 0 ? options.samples : std::max<std::size_t>(kRebuildMinSamples, 10 * options.control_points);
+  const Interval dom = curve.domain();
+  std::vector<double> t(count);
+  for (std::size_t k = 0; k < count; ++k)
+    t[k] = k + 1 == count
+               ? dom.end
+               : dom.start + (dom.end - dom.start) * (static_cast<double>(k) / static_cast<double>(count - 1));
+  std::vector<Vec3> points(count);
+  curve.evaluate(t, points);
+  const KnotVector kv = KnotVector::uniform_clamped(options.control_points, options.degree, dom);
+  RebuildResult out{.curve = least_squares_fit(points, t, kv, curve.dimension()), .samples = count};
+  // Measured, not bounded: each sample of the new curve against its closest point on the original.
+  const DeviationResult d =
+      deviation(out.curve, curve, {.samples = options.deviation_samples, .mode = DeviationMode::Closest});
+  out.max_deviation = d.max;
+  out.mean_deviation = d.mean;
+  out.at = dom.start + d.at * (dom.end - dom.start);
+  return out;
 }
 
 ToleranceFitResult approximate_to_tolerance(std::span<const Vec3> points, double tolerance,

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -90,9 +91,7 @@ DegreeReductionResult reduce_degree(const NurbsCurve& curve, double tolerance) {
                 {.field = "tolerance"});
   const int p = curve.degree();
   if (p < 2) throw Error(Errc::InvalidDegree, "degree 1 cannot be reduced", {.field = "curve"});
-  if (curve.is_rational())
-    throw Error(Errc::InvalidArgument, "degree reduction takes a non-rational curve; this one is rational",
-                {.field = "curve"});
+  const bool rational = curve.is_rational();
   // Rounding floor: a curve that is exactly an elevated one reduces with a bound of a few ulps of its size.
   const double floor = 1e-12 * std::max(1.0, curve.model_size());
   const int q = p - 1;
@@ -101,31 +100,64 @@ DegreeReductionResult reduce_degree(const NurbsCurve& curve, double tolerance) {
   double worst_at = curve.domain().start;
   std::optional<NurbsCurve> joined;
   for (const NurbsCurve& piece : decompose_to_bezier(curve)) {
-    const std::span<const Vec3> P = piece.control_points();
-    std::vector<Vec3> Q(static_cast<std::size_t>(p));
+    // Homogeneous points (w P, w): the inversion is linear in them, so a rational piece is reduced in 4-D.
+    const std::vector<detail::Hpoint> P = detail::to_homogeneous(piece);
+    std::vector<detail::Hpoint> Q(static_cast<std::size_t>(p));
     // From the left: Q_i = (P_i − α_i Q_{i−1}) / (1 − α_i), α_i = i/p, i = 0 … r.
     for (int i = 0; i <= r; ++i) {
       const double a = static_cast<double>(i) / p;
       const auto ui = static_cast<std::size_t>(i);
-      Q[ui] = i == 0 ? P[0] : (P[ui] - a * Q[ui - 1]) / (1.0 - a);
+      if (i == 0)
+        Q[ui] = P[0];
+      else
+        for (std::size_t c = 0; c < 4; ++c) Q[ui][c] = (P[ui][c] - a * Q[ui - 1][c]) / (1.0 - a);
     }
     // From the right: Q_{i−1} = (P_i − (1 − α_i) Q_i) / α_i, i = p … r + 2.
     for (int i = p; i >= r + 2; --i) {
       const double a = static_cast<double>(i) / p;
       const auto ui = static_cast<std::size_t>(i);
-      Q[ui - 1] = i == p ? P[ui] : (P[ui] - (1.0 - a) * Q[ui]) / a;
+      if (i == p)
+        Q[ui - 1] = P[ui];
+      else
+        for (std::size_t c = 0; c < 4; ++c) Q[ui - 1][c] = (P[ui][c] - (1.0 - a) * Q[ui][c]) / a;
     }
+    const Interval d = piece.domain();
+    // The reduced weights must stay positive, else no rational curve of degree p − 1 with this inversion exists.
+    double min_weight = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < Q.size(); ++i) {
+      if (!(Q[i][3] > 0.0) || !std::isfinite(Q[i][3]))
+        throw Error(Errc::NumericalFailure,
+                    "the degree cannot be reduced: on [" + format_number(d.start) + ", " + format_number(d.end) +
+                        "] the reduced weight " + std::to_string(i) + " is " + format_number(Q[i][3]) +
+                        " (weights must stay positive)",
+                    {.field = "curve"});
+      min_weight = std::min(min_weight, Q[i][3]);
+    }
+    // The piece minus its reduction (degree-elevated back) is B_{r+1,p}(t) Δ in homogeneous space, with
+    // Δ = (ΔA, Δw) = P_{r+1} − (a Q_r + (1 − a) Q_{r+1}). In Euclidean space, with A, w the piece's numerator
+    // and weight and w̃ = w − B Δw the reduction's weight:
+    //   C̃ − C = −B (ΔA − C Δw) / w̃,  so |C̃ − C| ≤ (|ΔA − c Δw| + |Δw| R) / min w̃_i
+    // for any point c and R = max |P_i − c| (C lies in the convex hull of the P_i), B ≤ 1, and w̃ at least
+    // the least reduced weight (w̃ is their Bernstein combination). Non-rational: Δw = 0, w̃ = 1, the bound is |ΔP|.
     const double a = static_cast<double>(r + 1) / p;
     const auto ur = static_cast<std::size_t>(r);
-    const double e = norm(P[ur + 1] - (a * Q[ur] + (1.0 - a) * Q[ur + 1]));
-    const Interval d = piece.domain();
+    const detail::Hpoint delta = detail::combine(1.0, P[ur + 1], -1.0, detail::combine(a, Q[ur], 1.0 - a, Q[ur + 1]));
+    const std::span<const Vec3> points = piece.control_points();
+    Vec3 c{};
+    for (const Vec3& x : points) c += x;
+    c = c / static_cast<double>(points.size());
+    double R = 0.0;
+    for (const Vec3& x : points) R = std::max(R, norm(x - c));
+    const Vec3 dA{delta[0], delta[1], delta[2]};
+    const double e = rational ? (norm(dA - delta[3] * c) + std::abs(delta[3]) * R) / min_weight : norm(dA);
     if (e > worst) {
       worst = e;
       worst_at = 0.5 * (d.start + d.end);
     }
     std::vector<double> U(static_cast<std::size_t>(q) + 1, d.start);
     U.insert(U.end(), static_cast<std::size_t>(q) + 1, d.end);
-    NurbsCurve reduced(q, std::move(U), std::move(Q), {}, curve.dimension());
+    const NurbsCurve reduced =
+        detail::from_homogeneous(KnotVector(std::move(U), q), Q, rational, curve.dimension(), "reduce_degree");
     joined = joined ? join(*joined, reduced, floor) : reduced;
   }
   if (worst > std::max(tolerance, floor))

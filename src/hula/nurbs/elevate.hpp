@@ -15,9 +15,12 @@
 // (i ≥ r + 2), r = ⌊(p − 1)/2⌋; only P_{r+1} is then not reproduced, and the
 // difference of the piece and its reduction is a Bézier curve with the single
 // non-zero control point P_{r+1} − ((r+1)/p Q_r + (1 − (r+1)/p) Q_{r+1}), whose
-// length bounds the error (convex hull). The pieces join C0 (their end points
-// are kept); knots are then removed within what is left of the tolerance
-// (remove_knots), restoring the continuity the curve allows.
+// length bounds the error (convex hull). A rational piece is reduced the same
+// way on its homogeneous points (w P, w); its reduced weights must stay
+// positive, and its bound is taken in Euclidean space (see reduce_degree). The
+// pieces join C0 (their end points are kept); knots are then removed within
+// what is left of the tolerance (remove_knots), restoring the continuity the
+// curve allows.
 #pragma once
 
 #include "hula/nurbs/nurbs_curve.hpp"
@@ -44,19 +47,23 @@ struct DegreeReductionResult {
   double bezier_bound = 0.0;  ///< the part of the bound from the per-piece reduction (before knot removal)
 };
 
-/// Lowers the degree of a polynomial curve by one within a tolerance.
-/// @param curve a non-rational curve of degree p ≥ 2 (an unclamped curve is clamped first)
+/// Lowers the degree of a curve by one within a tolerance.
+/// @param curve a curve of degree p ≥ 2, rational or not (an unclamped curve is clamped first). A rational piece
+///   is reduced on its homogeneous points; the Euclidean change of a piece is then at most
+///   (|ΔA − c Δw| + |Δw| R) / min w̃ for the homogeneous mismatch (ΔA, Δw), the centroid c of the piece's control
+///   points, R their largest distance to c and min w̃ the least reduced weight (for a non-rational piece, |ΔP|).
 /// @param tolerance ≥ 0, model units: the largest change allowed (0: only a curve that is an elevated one of
 ///   degree p − 1, to rounding)
 /// @returns the reduced curve with every interior breakpoint of the lowest multiplicity the tolerance allows
 ///   (C0 joints first, then knots removed while the accumulated bound stays within the tolerance) and the bound
 /// @throws hula::Error(Errc::InvalidDegree) naming "curve" for degree 1
-/// @throws hula::Error(Errc::InvalidArgument) naming "curve" for a rational curve, "tolerance" if negative or
-///   not finite
+/// @throws hula::Error(Errc::InvalidArgument) naming "tolerance" if negative or not finite
+/// @throws hula::Error(Errc::NumericalFailure) naming "curve" when a reduced weight is not positive (the message
+///   names the piece's interval and the weight)
 /// @throws hula::Error(Errc::NumericalFailure) naming "tolerance" when some piece's bound exceeds it (the message
 ///   gives the smallest bound reachable)
 /// Complexity O(S p²) for S spans, plus remove_knots.
-/// Example: `reduce_degree(elevate_degree(c, 1), 0).curve` is c (bound at rounding level).
+/// Example: `reduce_degree(elevate_degree(c, 1), 0).curve` is c (bound at rounding level), rational c too.
 [[nodiscard]] DegreeReductionResult reduce_degree(const NurbsCurve& curve, double tolerance);
 
 }  // namespace hula::nurbs

@@ -70,6 +70,11 @@ Trial trial(const Working& w, std::ptrdiff_t r, std::ptrdiff_t s) {
     const double ai = (u - K(i)) / (K(i + p + 1) - K(i));
     t.bound = distance4(P(i), detail::combine(ai, T(ii + 1), 1.0 - ai, T(ii - 1)));
   }
+  // A removal of a rational curve's knot that would give a point a weight ≤ 0 is no removal of this curve:
+  // it is never within any tolerance (its bound is infinite).
+  // (The points apply() writes: temp[i − off] and temp[j − off] for i = first…, j = last… while j > i.)
+  for (std::ptrdiff_t a = t.first, b = t.last; b - a > 0; ++a, --b)
+    if (!(T(a - off)[3] > 0.0) || !(T(b - off)[3] > 0.0)) t.bound = std::numeric_limits<double>::infinity();
   return t;
 }
 

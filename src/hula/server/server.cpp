@@ -471,6 +471,7 @@ Server::Server(ServerOptions options) {
   routes::add_constructions(s.router, context);
   routes::add_joins(s.router, context);
   routes::add_clothoid(s.router, context);
+  routes::add_curve_edits(s.router, context);
   routes::add_jobs(s.router, context);
   routes::add_documents(s.router, context);
   routes::add_entities(s.router, context);
