@@ -17,7 +17,7 @@ namespace hula::io {
 using json::Json;
 namespace {
 
-// The bench's curve: 50 points of a planar-ish wave, interpolated (inflections and extrema).
+// The bench's curve: 50 points of a space wave (z = cos(i / 7): not planar), interpolated.
 nurbs::NurbsCurve wave() {
   std::vector<Vec3> points;
   for (int i = 0; i < 50; ++i) points.push_back({double(i), std::sin(i / 5.0) * 3, std::cos(i / 7.0)});

@@ -1,7 +1,7 @@
 // Shared helpers of the e2e tests: the server's API over HTTP (Node's fetch,
 // with the token) and the page's own hooks (window.__hula).
 import type * as Api from '../src/api/openapi';
-import { expect, test, type Page } from '@playwright/test';
+import { expect, type Page } from '@playwright/test';
 import type { Analysis, CurveFile, DocumentState, Entity, History } from '../src/api/types';
 import type { Vec3, ViewName } from '../src/viewport/math';
 import {
@@ -168,10 +168,13 @@ export async function shot(
 
 export { expect };
 
-/** Skip (reported, by name) a test that needs the document routes when the server has none yet. */
+/**
+ * Marks a test that needs the document routes. global-setup.ts has already refused a server whose
+ * /api/documents does not answer 200, so this fails (never skips) if that check was bypassed: a
+ * missing route must fail the tests that need it, not hide them.
+ */
 export function needsDocuments(): void {
-  test.skip(
-    process.env['HULA_E2E_DOCUMENTS'] === '0',
-    'hula serve has no /api/documents routes yet (issue 12)',
-  );
+  if (process.env['HULA_E2E_DOCUMENTS'] !== '1') {
+    throw new Error('hula serve did not answer GET /api/documents with 200 (global-setup.ts)');
+  }
 }

@@ -15,12 +15,18 @@ export default async function globalSetup(): Promise<void> {
   process.env['HULA_E2E_TOKEN'] = served.token;
   process.env['HULA_E2E_WORKSPACE'] = workspace;
   process.env['HULA_E2E_PID'] = String(served.proc.pid);
-  // Whether this server has the document routes yet (issue 12): the tests
-  // that need them are reported as skipped, by name, when it has not.
+  // The document routes must answer: a 404 (or any other status) fails the run here instead of
+  // letting the tests that need them skip.
   const probe = await fetch(`${served.base}/api/documents`, {
     headers: { Authorization: `Bearer ${served.token}` },
   });
-  process.env['HULA_E2E_DOCUMENTS'] = probe.status === 404 ? '0' : '1';
+  if (probe.status !== 200) {
+    served.proc.kill();
+    throw new Error(
+      `GET /api/documents answered ${probe.status}, not 200: the e2e tests need the document routes`,
+    );
+  }
+  process.env['HULA_E2E_DOCUMENTS'] = '1';
   // The teardown runs in the same process and stops it.
   (globalThis as { __hulaServed?: Served }).__hulaServed = served;
 }

@@ -116,7 +116,9 @@ struct Reader {
   }
 };
 
-std::vector<char> serialise(const IslandReport& r) {
+}  // namespace
+
+std::vector<char> write_island_report(const IslandReport& r) {
   Writer w;
   w.put<std::uint8_t>(0);  // 0 = a report, 1 = an error
   w.put<std::uint64_t>(r.island);
@@ -146,6 +148,8 @@ std::vector<char> serialise(const IslandReport& r) {
   return std::move(w.bytes);
 }
 
+namespace {
+
 std::vector<char> serialise_error(const Error& e, bool peer) {
   Writer w;
   w.put<std::uint8_t>(1);
@@ -156,7 +160,9 @@ std::vector<char> serialise_error(const Error& e, bool peer) {
   return std::move(w.bytes);
 }
 
-IslandReport deserialise(const std::vector<char>& bytes) {
+}  // namespace
+
+IslandReport read_island_report(const std::vector<char>& bytes) {
   Reader r{bytes};
   (void)r.get<std::uint8_t>();
   IslandReport out;
@@ -188,6 +194,8 @@ IslandReport deserialise(const std::vector<char>& bytes) {
   }
   return out;
 }
+
+namespace {
 
 // The exchange of one rank.
 class MpiExchange final : public Exchange {
@@ -345,7 +353,7 @@ std::optional<IslandsResult> solve_islands_mpi(const Problem& problem, const Isl
   MpiExchange exchange(size, options.asynchronous, out_neighbours(options, me), in_neighbours(options, me));
   std::vector<char> mine;
   try {
-    mine = serialise(run_island(problem, algorithm, options, me, exchange));
+    mine = write_island_report(run_island(problem, algorithm, options, me, exchange));
   } catch (const PeerFailedMpi& e) {
     mine = serialise_error(e, true);
   } catch (const Error& e) {
@@ -384,7 +392,7 @@ std::optional<IslandsResult> solve_islands_mpi(const Problem& problem, const Isl
     }
   }
   std::vector<IslandReport> reports;
-  for (const std::vector<char>& bytes : all) reports.push_back(deserialise(bytes));
+  for (const std::vector<char>& bytes : all) reports.push_back(read_island_report(bytes));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return merge_islands(problem, std::move(reports), seconds);
 }

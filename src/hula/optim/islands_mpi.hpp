@@ -17,6 +17,7 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include "hula/optim/islands.hpp"
 
@@ -25,6 +26,15 @@ namespace hula::optim {
 /// True when this process runs under mpirun / mpiexec with more than one rank
 /// (Open MPI's OMPI_COMM_WORLD_SIZE, or PMI_SIZE of other launchers).
 [[nodiscard]] bool launched_by_mpi() noexcept;
+
+/// The bytes of an island's report as its rank sends them to rank 0 at the end of a run.
+[[nodiscard]] std::vector<char> write_island_report(const IslandReport& report);
+
+/// Reads the bytes write_island_report wrote. Every count read is bounded by the bytes that remain before
+/// anything is allocated, so a short or hostile message cannot make rank 0 allocate more than its size.
+/// @throws hula::Error(Errc::IoError) with field "mpi", "truncated island report: …" naming the count and the
+///   byte where the message ends or is too short
+[[nodiscard]] IslandReport read_island_report(const std::vector<char>& bytes);
 
 /// Runs this rank's island of an archipelago of one island per rank.
 /// Initialises and finalises MPI itself (once per process).
