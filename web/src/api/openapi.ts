@@ -639,3 +639,109 @@ export type BlendResult = {
   degree: number;
   control_points: number;
 };
+
+export type ClothoidRequest = {
+  points?: number[][];
+  closed?: boolean;
+  fit?: "g1" | "g2" | "biarc";
+  start_point?: number[];
+  end_point?: number[];
+  start_angle?: number;
+  end_angle?: number;
+  start_curvature?: number;
+  end_curvature?: number;
+  at?: number[];
+};
+
+export type ClothoidAnswer = {
+  kind: "g1" | "g2" | "biarc";
+  segments: {
+    start: number[];
+    theta0: number;
+    kappa0: number;
+    dkappa: number;
+    length: number;
+    end: number[];
+    theta1: number;
+    kappa1: number;
+  }[];
+  length: number;
+  iterations: number;
+  through?: number;
+  closed?: boolean;
+  points?: {
+    s: number;
+    point: number[];
+    theta: number;
+    kappa: number;
+    [key: string]: unknown;
+  }[];
+  curve: CurveFile;
+};
+
+export type RebuildRequest = {
+  curve: CurveFile;
+  control_points: number;
+  degree?: number;
+  samples?: number;
+};
+
+export type RebuildResult = {
+  operation: "rebuild";
+  degree: number;
+  control_points: number;
+  samples: number;
+  max_deviation: number;
+  mean_deviation: number;
+  at: number;
+  curve: CurveFile;
+};
+
+export type ReduceDegreeRequest = {
+  curve: CurveFile;
+  tolerance: number;
+};
+
+export type DegreeReduction = {
+  operation: "reduce-degree";
+  error_bound: number;
+  bezier_bound: number;
+  tolerance: number;
+  curve: CurveFile;
+};
+
+export type ClosedInterpolationRequest = {
+  points: number[][];
+  parameterisation?: "uniform" | "chord" | "centripetal" | "foley";
+  parameters?: number[];
+};
+
+export type ClosedInterpolation = {
+  kind: "nurbs";
+  method: "closed";
+  points: number;
+  dimension: 2 | 3;
+  degree: number;
+  control_points: number;
+  domain: number[];
+  parameterisation: "uniform" | "chord" | "centripetal" | "foley" | "given";
+  curve: CurveFile;
+};
+
+export type FrenetHandles = {
+  handles: {
+    point: number[];
+    tangent: number[];
+    normal?: number[];
+    curvature?: number;
+    torsion?: number;
+  }[];
+  parameters?: number[];
+};
+
+export type FrenetHermite = {
+  degree: number;
+  control_points: number;
+  domain: number[];
+  curve: CurveFile;
+};
