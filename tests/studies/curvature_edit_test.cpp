@@ -312,39 +312,45 @@ curve::Curve s_curve_of_width(double width) {
   return spline({{0, 0, 0}, {40 * k, 40 * k, 0}, {80 * k, -40 * k, 0}, {120 * k, -40 * k, 0}});
 }
 
+// Example 1's corner scaled to `size` units.
+curve::Curve example1_of_size(double size) {
+  const double k = size / 100.0;
+  return spline({{0, 0, 0}, {100 * k, 0, 0}, {100 * k, 100 * k, 0}}, {0.0, 0.5, 1.0});
+}
+
 // checks (what a designer dragging the κ(s) graph sees): after a drag of |κ| by a tenth of its value at the dragged
-// fraction, the new curve's κ at the same fraction of its own length is the target there — at the dragged fraction
-// and across the whole profile — on curves from three generators (interpolated S-splines 1, 100 and 1,000 units
-// across, a rational quarter circle, a space Bézier ~1,000 units across), ends held; measured by re-sampling the
-// result by arc length (analyse_curve), not by the fit. Bounds, as fractions of the drag h: the exact target is out
-// of reach (the bump adds h L / 6 of turning that the held end tangent takes back elsewhere, and the handle budget
-// limits the bump's shape), so the least-squares fit spreads a miss over the profile. With the drag's support weighted
-// 1.5× at its peak (planar curves), measured: |κ| moved 0.57–0.62 h on the S-splines (G1 and G2), 1.04 h on the
-// quarter circle, 0.65–0.71 h on the space Bézier (unweighted: 0.41–0.42 h, 0.73 h, the same); misses 0.04–0.43 h
-// at the drag and 0.40–0.72 h at worst. Bounds: moved ≥ 0.5 h, 0.5 h at the drag, 0.8 h at worst. 0.8 h moved on
-// every curve is not reached: a heavier weight moved the S's spot 0.64–0.81 h but let the fit trade a κ spike
-// elsewhere (worst misses of 7–117 h), and spreading the added turning over the rest of the target moved it less
-// (0.22–0.37 h unweighted). Matched
-// at the original's parameters instead (as first built), the S's κ at the dragged fraction went the wrong way:
-// misses of 6–9 h.
+// fraction, the new curve's |κ| at the same fraction of its own length moved by about the drag h, the way asked, on
+// curves from four generators (interpolated S-splines and Example 1's corner 1, 100 and 1,000 units across, a
+// rational quarter circle, a space Bézier ~1,000 units across), ends held; measured by re-sampling the result by arc
+// length (analyse_curve), not by the fit. A planar drag is fitted to a consistent target (the boundary-value
+// reconstruction of κ + δ with the held ends, its correction fading out under the drag), so the dragged spot keeps
+// what was asked and the rest of the profile takes back the turning the bump adds. Measured (moved / h): S-splines
+// 1.11 (G1) and 1.00 (G2) at every size, Example 1 0.72–0.86 (it bends through one corner: the held ends take
+// back most of the turning near the drag), quarter circle 0.90, space Bézier 0.65–0.71 (fitted to κ + δ as asked:
+// no consistent target for space curves yet). Before the consistent target: 0.57–0.62 on the S, 1.04 on the quarter
+// circle. The worst miss against the raw κ + δ, which the held ends cannot have, is 0.4–1.3 h: bounded by 2 h.
 TEST(CurvatureEdit, DragMatchesTheTargetAtTheNewCurvesOwnArcLengthFractions) {
   struct Case {
     std::string name;
     curve::Curve curve;
     double f0;
     std::vector<EndHold> holds;
+    double low, high;  // band of moved / h
   };
+  const std::vector<EndHold> g1g2 = {EndHold::Tangent, EndHold::Curvature};
   const std::vector<Case> cases = {
-      {"S at 1 unit", s_curve_of_width(1.0), 0.3, {EndHold::Tangent, EndHold::Curvature}},
-      {"S at 100 units", s_curve_of_width(100.0), 0.3, {EndHold::Tangent, EndHold::Curvature}},
-      {"S at 1,000 units", s_curve_of_width(1000.0), 0.3, {EndHold::Tangent, EndHold::Curvature}},
+      {"S at 1 unit", s_curve_of_width(1.0), 0.3, g1g2, 0.9, 1.2},
+      {"S at 100 units", s_curve_of_width(100.0), 0.3, g1g2, 0.9, 1.2},
+      {"S at 1,000 units", s_curve_of_width(1000.0), 0.3, g1g2, 0.9, 1.2},
+      {"Example 1 at 1 unit", example1_of_size(1.0), 0.3, g1g2, 0.65, 1.1},
+      {"Example 1 at 100 units", example1_of_size(100.0), 0.3, g1g2, 0.65, 1.1},
+      {"Example 1 at 1,000 units", example1_of_size(1000.0), 0.3, g1g2, 0.65, 1.1},
       // G2 on a quadratic fixes all of its 6 control points: no freedom left for the bump.
-      {"quarter circle", quarter_circle(50.0), 0.5, {EndHold::Tangent}},
+      {"quarter circle", quarter_circle(50.0), 0.5, {EndHold::Tangent}, 0.85, 1.1},
       {"space Bezier",
        curve::Curve::bezier(
            {.control_points = {{0, 0, 0}, {300, 400, 100}, {700, 400, 300}, {1000, 0, 600}}, .weights = {}}),
-       0.3,
-       {EndHold::Tangent, EndHold::Curvature}},
+       0.3, g1g2, 0.5, 1.1},
   };
   for (const Case& k : cases)
     for (const EndHold hold : k.holds) {
@@ -353,9 +359,10 @@ TEST(CurvatureEdit, DragMatchesTheTargetAtTheNewCurvesOwnArcLengthFractions) {
       const double h = 0.1 * std::abs(p.kappa[0]);
       const FractionMisses m = drag_by_fraction(k.curve, h, k.f0, hold);
       expect_ends(m.result, hold == EndHold::Curvature);
-      EXPECT_LE(m.at_edit, 0.5 * h) << m.at_edit / h;
-      EXPECT_LE(m.worst, 0.8 * h) << m.worst / h;
-      EXPECT_GE(m.moved, 0.5 * h) << m.moved / h;  // the way asked
+      EXPECT_EQ(m.result.inflections_after, m.result.inflections_before);
+      EXPECT_GE(m.moved, k.low * h) << m.moved / h;  // the way and about as far as asked
+      EXPECT_LE(m.moved, k.high * h) << m.moved / h;
+      EXPECT_LE(m.worst, 2.0 * h) << m.worst / h;
       EXPECT_LE(m.result.handles_after, 2 * m.result.handles_before);
     }
 }

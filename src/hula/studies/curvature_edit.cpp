@@ -808,6 +808,56 @@ CurvatureEditResult edit_curvature(const curve::Curve& original, const Curvature
   nurbs::NurbsCurve current = base;
   int iterations = 0;
   double mean_target_deviation = 0.0, max_target_deviation = 0.0;
+  if (edit.target == CurvatureTarget::Change && planar && edit_max > 0.0 && options.hold != EndHold::Free) {
+    // A drag asks for κ* = κ + δ, which the held ends generally cannot have (the bump adds turning the end
+    // tangent takes back): fitted as it is, the miss spreads over the profile, the dragged spot included. The
+    // consistent target is the boundary-value reconstruction of κ* with the held ends whose correction is
+    // relative and fades out under the drag, e(u) = κ*(u) (1 − |δ(u)| / max |δ|): the dragged peak keeps the
+    // asked value, the rest of the curve takes back the turning, and zeros of κ* stay zeros (no inflection).
+    const law::Context ctx;
+    const std::vector<double> knots = profile_knots(base, length);
+    std::vector<double> envelope(count);
+    for (std::size_t i = 0; i < count; ++i)
+      envelope[i] = target[i] * (1.0 - std::abs(target[i] - o.kappa[i]) / edit_max);
+    DirectReconstructionProblem problem{.curvature = fitted_profile(knots, o.u, target, ctx)};
+    problem.length = length;
+    problem.start = {.point = start.point, .tangent = start.tangent, .normal = start.normal};
+    problem.end_point = end.point;
+    problem.end_tangent = end.tangent;
+    if (options.hold == EndHold::Curvature) {
+      problem.start_curvature = start.curvature;
+      problem.end_curvature = end.curvature;
+    }
+    problem.curvature_envelope = fitted_profile(knots, o.u, envelope, ctx);
+    DirectReconstructionOptions ro = options.reconstruction;
+    ro.fit = false;
+    const DirectReconstructionResult rec = reconstruct_direct(problem, ro);
+    iterations = rec.iterations;
+    mean_target_deviation = rec.mean_curvature_deviation;
+    max_target_deviation = rec.max_curvature_deviation;
+    std::vector<double> s_rec(count);
+    for (std::size_t j = 0; j < count; ++j) s_rec[j] = o.u[j] * rec.length;
+    const std::vector<intrinsic::FramePoint> fp = rec.curve.evaluate(s_rec);
+    // A correction that holds the ends only by reversing the bend somewhere (1 + Σ c_k B_k < 0) is no target for a
+    // drag, which never adds an inflection: the drag is then fitted as asked.
+    const auto sign_changes = [&](const auto& kappa_of) {
+      int changes = 0, previous = 0;
+      for (std::size_t j = 0; j < count; ++j) {
+        const double k = kappa_of(j);
+        const int sign = k > kZeroEndCurvature * target_max ? 1 : (k < -kZeroEndCurvature * target_max ? -1 : 0);
+        if (sign != 0 && previous != 0 && sign != previous) ++changes;
+        if (sign != 0) previous = sign;
+      }
+      return changes;
+    };
+    if (sign_changes([&](std::size_t j) { return fp[j].curvature; }) <=
+        sign_changes([&](std::size_t j) { return target[j]; })) {
+      for (std::size_t j = 0; j < count; ++j) targets.kappa[j] = fp[j].curvature;
+    } else {
+      iterations = 0;
+      mean_target_deviation = max_target_deviation = 0.0;
+    }
+  }
   if (edit.target == CurvatureTarget::Curvature) {
     const law::Context ctx = edit.curvature.context();
     const law::Law s_of_u = length * ctx.parameter("u");

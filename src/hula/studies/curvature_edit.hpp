@@ -13,7 +13,12 @@
 //     max(|κ| + δ, 0), σ a smoothed sign (the κ graph shows |κ|: dragging it up
 //     makes the curve bend more on the side it bends to, and never past zero).
 //  2. The start curve. A change (a drag: a small edit) starts from the original
-//     itself. A typed law starts from studies::reconstruct_direct's
+//     itself; a planar drag with held ends is fitted to a consistent target, the
+//     boundary-value reconstruction of κ* with the held ends whose relative
+//     correction fades out under the drag (envelope κ* (1 − |δ| / max |δ|)), so
+//     the dragged spot keeps what was asked and the rest of the profile takes back
+//     the turning the drag adds (κ* itself when that reconstruction would add an
+//     inflection). A typed law starts from studies::reconstruct_direct's
 //     boundary-value solution — the curve closest to κ* from the original's
 //     start frame that meets the held end conditions, with the relative
 //     correction δκ = κ* Σ c_k B_k(u) so the target's zeros (inflections,

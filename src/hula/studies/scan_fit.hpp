@@ -22,7 +22,8 @@
 //
 // A stray is a point farther than the tolerance from the final curve: it cannot
 // be kept. No run of points at an end is dropped: a fit that falls short of an end
-// stretches its parameters along the end tangent.
+// stretches its parameters along the end tangent, and takes back an end point the
+// ordering left out (isolated across a gap) when it lies on the curve's extension.
 #pragma once
 
 #include <cstddef>

@@ -534,11 +534,28 @@ Candidate fit_space(Problem& pb, const Space& s, std::span<const double> t0, std
   return best;
 }
 
+// Distance of q across the second-order Taylor extension x(h) = c0 + h c1 + h² c2 / 2 of a curve
+// beyond an end, at the parameter step h = offset / |c1| (offset signed along the parameter),
+// measured normal to the extension's tangent there.
+double off_extension(const Vec3& c0, const Vec3& c1, const Vec3& c2, const Vec3& q, double offset) {
+  const double h = offset / std::sqrt(norm_squared(c1));
+  const Vec3 x = c0 + h * c1 + (0.5 * h * h) * c2;
+  const Vec3 tangent = c1 + h * c2;
+  const double tn = std::sqrt(norm_squared(tangent));
+  const Vec3 r = q - x;
+  if (!(tn > 0.0)) return std::sqrt(norm_squared(r));
+  const double along = dot(r, tangent) / tn;
+  return std::sqrt(std::max(0.0, norm_squared(r) - along * along));
+}
+
 // Open free ends: kept points at t = 0 or 1 whose offset along the outward end tangent exceeds
 // max(kEndOvershoot × tol, kEndNoise σ̂) (a run of them), or one beyond the end and farther than the
 // tolerance from the curve, lie beyond the curve's end (the fit was started too short); their
-// parameters are extended along the tangent and every parameter rescaled to [0, 1].
-bool stretch_ends(const Problem& pb, const Space& s, const Candidate& c, std::span<const double> weights, double noise,
+// parameters are extended along the tangent and every parameter rescaled to [0, 1]. A point left out
+// (isolated across a gap in the samples, say) that lies beyond an end within the tolerance of the
+// curve's continuation there (its second-order Taylor extension) is an end point the fit has not
+// reached, not a stray: it is taken back in and the end stretched to it.
+bool stretch_ends(const Problem& pb, const Space& s, const Candidate& c, std::vector<double>& weights, double noise,
                   std::vector<double>& params) {
   const SpanPolynomials curve(s.knots, expand(s, c.unknowns));
   // Beyond the end by more than the noise explains, and a run of points, not one noisy point.
@@ -546,18 +563,24 @@ bool stretch_ends(const Problem& pb, const Space& s, const Candidate& c, std::sp
   bool stretched = false;
   std::vector<double> t = c.params;
   for (const double end : {0.0, 1.0}) {
-    const auto [c0, d1, d2] = curve.evaluate(end, 1);
+    const auto [c0, d1, d2] = curve.evaluate(end, 2);
     const double speed = std::sqrt(norm_squared(d1));
     if (!(speed > 0.0)) continue;
     const Vec3 out = (end == 0.0 ? -1.0 : 1.0) / speed * d1;
     std::vector<std::size_t> beyond;
     bool offender = false;  // a point beyond the end farther than the tolerance: stretched for anyway
-    for (std::size_t i = 0; i < t.size(); ++i)
-      if (weights[i] > 0.0 && t[i] == end) {
-        const double e = dot(pb.pts[i] - c0, out);
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      if (t[i] != end) continue;
+      const double e = dot(pb.pts[i] - c0, out);
+      if (weights[i] > 0.0) {
         if (e > threshold || (e > 0.0 && c.dist[i] > pb.tol)) beyond.push_back(i);
         offender = offender || (e > 0.0 && c.dist[i] > pb.tol);
+      } else if (e > 0.0 && c.dist[i] > pb.tol && off_extension(c0, d1, d2, pb.pts[i], end == 0.0 ? -e : e) <= pb.tol) {
+        weights[i] = 1.0;
+        beyond.push_back(i);
+        offender = true;
       }
+    }
     if (beyond.size() < kEndRun && !offender) continue;
     for (const std::size_t i : beyond) {
       const double e = dot(pb.pts[i] - c0, out);
