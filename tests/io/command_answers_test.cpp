@@ -10,15 +10,21 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include "hula/core/error.hpp"
+#include "hula/core/rng.hpp"
 #include "hula/io/campaign_file.hpp"
 #include "hula/io/curve_edits.hpp"
 #include "hula/io/curve_queries.hpp"
 #include "hula/io/exact_curves.hpp"
+#include "hula/io/json_text.hpp"
+#include "hula/io/json_write.hpp"
 #include "hula/io/optimise_request.hpp"
 #include "hula/testing/curve_generators.hpp"
 
@@ -40,6 +46,36 @@ TEST(CurveQueries, CircleHasItsClosedForms) {
   const Json e = energy_answer(curve::Curve(c));
   EXPECT_NEAR(e["bending"]["value"].get<double>(), 2 * kPi / 3.0, 1e-8);
   EXPECT_NEAR(e["curvature_variation"]["value"].get<double>(), 0.0, 1e-12);
+}
+
+// The streamed description (`hula info`'s) is format_json of curve_description_json byte for byte, on the
+// 2-D rational circle, a 2-D polyline with a zero end derivative, and random curves of degrees 1-7,
+// rational or not, clamped or not.
+TEST(CurveQueries, StreamedDescriptionIsTheTreesText) {
+  const auto streamed = [](const nurbs::NurbsCurve& c) {
+    std::string text;
+    JsonText w(text, true);
+    w.begin_object();
+    DescriptionWriter(c).write_members(w);
+    w.end_object();
+    return text + "\n";
+  };
+  std::vector<nurbs::NurbsCurve> curves{
+      testing::rational_circle(3.0), nurbs::NurbsCurve(1, {0, 0, 0.5, 1, 1}, {{0, 0, 0}, {1, 2, 0}, {1, 2, 0}}, {}, 2)};
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    Rng rng(seed, 27);
+    testing::RandomCurveSpec spec;
+    spec.degree = 1 + static_cast<int>(rng.below(7));
+    spec.rational = rng.below(2) == 0;
+    spec.clamped = rng.below(2) == 0;
+    curves.push_back(testing::random_curve(rng, spec));
+  }
+  for (const nurbs::NurbsCurve& c : curves) {
+    const std::string text = streamed(c);
+    EXPECT_EQ(text, format_json(curve_description_json(c)));
+    EXPECT_GT(text.size(), 200u);
+  }
+  EXPECT_NE(streamed(curves[1]).find("\"end\": null"), std::string::npos);  // the zero end derivative
 }
 
 // The nearest point of a circle to (5, 0) is (3, 0) at distance 2; to (0, −6): (0, −3) at 3.

@@ -5,12 +5,16 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cctype>
+#include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 
 #include "hula/core/error.hpp"
+#include "hula/core/rng.hpp"
 #include "hula/testing/expect_error.hpp"
 #include "hula/testing/fpe.hpp"
 #include "hula/testing/temp_dir.hpp"
@@ -195,6 +199,132 @@ TEST(PointsFile, RealAirfoilFilesReadAsShipped) {
     EXPECT_NEAR(s.points.back().x, 1.0, 1e-4);
   }
   EXPECT_GE(files, 10u);
+}
+
+// What a text reader made of a text: the points bit for bit and the dimension, or the error's
+// code, message and location.
+std::string outcome(PointSet (*read)(std::string_view), std::string_view text) {
+  std::string out;
+  try {
+    const PointSet s = read(text);
+    out = "dimension " + std::to_string(s.dimension) + ":";
+    for (const Vec3& p : s.points)
+      for (const double v : {p.x, p.y, p.z}) out += " " + std::to_string(std::bit_cast<std::uint64_t>(v));
+  } catch (const Error& e) {
+    const ErrorWhere& w = e.where();
+    const auto opt = [](const std::optional<std::size_t>& v) { return v ? std::to_string(*v) : std::string("-"); };
+    out = "error " + std::to_string(static_cast<int>(e.code())) + " " + e.message() + " @" + w.field + "/" +
+          opt(w.index) + "/" + opt(w.component) + "/" + opt(w.line) + "/" + opt(w.column);
+  }
+  return out;
+}
+
+// A number as a point file may write it: shortest, fixed, exponent, a leading '+' or '.', or a
+// field that is not a finite double.
+std::string random_field(Rng& rng, bool semicolons) {
+  const double v = rng.uniform(-1.0, 1.0) * std::pow(10.0, static_cast<double>(rng.below(9)) - 4.0);
+  char buffer[64];
+  switch (rng.below(14)) {
+    case 0:
+      std::snprintf(buffer, sizeof buffer, "%.17g", v);
+      break;
+    case 1:
+      std::snprintf(buffer, sizeof buffer, "%.3e", v);
+      break;
+    case 2:
+      std::snprintf(buffer, sizeof buffer, "+%.4f", std::abs(v));
+      break;
+    case 3:
+      return semicolons ? "1,25" : "-.5";
+    case 4: {
+      const char* odd[] = {"x", "1.5.2", "nan", "-inf", "1e999", "1e-400", "-", "", "0x1p3", "5.", "1e", "+", "--1"};
+      return odd[rng.below(std::size(odd))];
+    }
+    default:
+      std::snprintf(buffer, sizeof buffer, "%.9f", v);
+      break;
+  }
+  return buffer;
+}
+
+// A text point file: a separator, perhaps header lines, rows of 2 or 3 fields with blanks around
+// them, comments, blank lines, CRLF, and now and then a row of another width.
+std::string random_points_text(Rng& rng) {
+  const char* seps[] = {" ", "\t", ",", ";", " , ", " ;"};
+  const std::string sep = seps[rng.below(std::size(seps))];
+  const bool semicolons = sep.find(';') != std::string::npos;
+  const std::size_t width = 2 + rng.below(2);
+  std::string text;
+  for (std::uint64_t h = rng.below(3); h > 0; --h) text += rng.below(2) == 0 ? "x y z\n" : "NACA 0012 # name\n";
+  const std::size_t rows = 1 + rng.below(25);
+  for (std::size_t r = 0; r < rows; ++r) {
+    const std::uint64_t kind = rng.below(20);
+    if (kind == 0) {
+      text += rng.below(2) == 0 ? "\n" : "  # comment, 1 2 3\n";
+      continue;
+    }
+    std::size_t n = width;
+    if (kind == 1) n = 1 + rng.below(4);
+    if (rng.below(8) == 0) text += " \t";
+    for (std::size_t c = 0; c < n; ++c) {
+      if (c > 0) text += sep;
+      if (rng.below(12) == 0) {
+        text += random_field(rng, semicolons);
+      } else {
+        char b[32];
+        std::snprintf(b, sizeof b, "%.9f", rng.uniform(-10.0, 10.0));
+        text += b;
+      }
+    }
+    if (rng.below(10) == 0) text += rng.below(2) == 0 ? sep : std::string(" # after");
+    text += rng.below(6) == 0 ? "\r\n" : "\n";
+  }
+  if (rng.below(4) == 0 && !text.empty()) text.pop_back();  // no final newline
+  return text;
+}
+
+// checks: the reader's fast path for plain data lines gives what the general path gives (points bit
+// for bit, or the same error, message and location) on random point texts and on the real airfoil
+// files with random edits.
+TEST(PointsFileProperty, FastPathAgreesWithGeneralPath) {
+  const testing::FpeGuard overflow_is_expected;  // 1e999 overflows inside from_chars
+  std::size_t read = 0, refused = 0;
+  for (std::uint64_t seed = 1; seed <= 1500; ++seed) {
+    Rng rng(seed, 21);
+    const std::string text = random_points_text(rng);
+    const std::string general = outcome(parse_points_csv_general, text);
+    ASSERT_EQ(outcome(parse_points_csv, text), general) << "seed " << seed << ":\n" << text;
+    (general.starts_with("error") ? refused : read) += 1;
+  }
+  EXPECT_GE(read, 300u);
+  EXPECT_GE(refused, 300u);
+
+  const char* root = std::getenv("HULA_TEST_DATA");
+  ASSERT_NE(root, nullptr);
+  const std::string alphabet = "0123456789.,; \t\r\n#+-eEx";
+  std::uint64_t seed = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(root) / "real")) {
+    if (entry.path().extension() != ".dat") continue;
+    std::ifstream in(entry.path());
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    const std::string original = buffer.str();
+    ASSERT_EQ(outcome(parse_points_csv, original), outcome(parse_points_csv_general, original));
+    for (int k = 0; k < 20; ++k) {
+      Rng rng(++seed, 22);
+      std::string text = original;
+      for (std::uint64_t e = 1 + rng.below(3); e > 0; --e) {
+        const std::size_t at = rng.below(text.size());
+        if (rng.below(2) == 0)
+          text.erase(at, 1);
+        else
+          text.insert(at, 1, alphabet[rng.below(alphabet.size())]);
+      }
+      ASSERT_EQ(outcome(parse_points_csv, text), outcome(parse_points_csv_general, text))
+          << entry.path().filename() << " edit seed " << seed;
+    }
+  }
+  EXPECT_GE(seed, 200u);
 }
 
 }  // namespace

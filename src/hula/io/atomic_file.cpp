@@ -162,6 +162,7 @@ std::string read_text_file(const std::filesystem::path& path, std::size_t max_by
   const std::string_view option = "path";
   int fd = STDIN_FILENO;
   std::optional<FdGuard> guard;
+  std::size_t expected = 0;  // a regular file's size: read straight into the result, no copy or regrowth
   if (!is_stdin) {
     // O_NONBLOCK: opening a FIFO without a writer must not hang before the type check. A pipe read as a file
     // (set_pipe_inputs: a named pipe or a process substitution, `<(cat pts.csv)`) is opened blocking, so it
@@ -182,9 +183,23 @@ std::string read_text_file(const std::filesystem::path& path, std::size_t max_by
                "the input is larger than the " + std::to_string(max_bytes) + "-byte limit on an input file:", 0);
     const int flags = ::fcntl(fd, F_GETFL);
     if (flags >= 0) (void)::fcntl(fd, F_SETFL, flags & ~O_NONBLOCK);
+    if (S_ISREG(st.st_mode)) expected = static_cast<std::size_t>(st.st_size);
   }
   const std::filesystem::path shown = is_stdin ? std::filesystem::path("-") : path;
-  std::string contents;
+  std::string contents(expected, '\0');
+  std::size_t got = 0;
+  while (got < expected) {
+    const ssize_t n = ::read(fd, contents.data() + got, expected - got);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      throw_io(shown, option, "cannot read file", errno);
+    }
+    if (n == 0) break;
+    got += static_cast<std::size_t>(n);
+  }
+  contents.resize(got);
+  if (got < expected) return contents;  // the file shrank while it was read
+  // Standard input, a pipe, or a file that grew while it was read: the rest in pieces, within the limit.
   std::vector<char> buffer(std::size_t{1} << 16);
   for (;;) {
     const ssize_t n = ::read(fd, buffer.data(), buffer.size());

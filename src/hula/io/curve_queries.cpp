@@ -2,9 +2,11 @@
 // One-shot answers about curve values (curve_queries.hpp).
 #include "hula/io/curve_queries.hpp"
 
+#include <array>
 #include <cmath>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <vector>
 
 #include "hula/core/error.hpp"
@@ -19,44 +21,86 @@
 
 namespace hula::io {
 
-Json curve_description_json(const nurbs::NurbsCurve& curve) {
-  const int dim = curve.dimension();
+namespace {
+
+using Description = DescriptionWriter::Computed;
+
+Description describe(const nurbs::NurbsCurve& curve) {
   const nurbs::Interval dom = curve.domain();
-  Json o = Json::object();
-  o["degree"] = curve.degree();
-  o["dimension"] = dim;
-  o["rational"] = curve.is_rational();
-  o["domain"] = Json::array({dom.start, dom.end});
-  Json knots = Json::array();
-  for (double u : curve.knots().values()) knots.push_back(u);
-  o["knots"] = std::move(knots);
-  o["control_points"] = points_to_json(curve.control_points(), dim);
-  if (curve.is_rational()) {
-    Json w = Json::array();
-    for (double v : curve.weights()) w.push_back(v);
-    o["weights"] = std::move(w);
-  } else {
-    o["weights"] = nullptr;
-  }
-  o["length"] = nurbs::arc_length(curve);
-  const Vec3 d0 = curve.derivatives(dom.start, 1)[1];
-  const Vec3 d1 = curve.derivatives(dom.end, 1)[1];
-  Json tangents = Json::object();
-  tangents["start"] = point_to_json(d0, dim);
-  tangents["end"] = point_to_json(d1, dim);
-  o["end_derivatives"] = std::move(tangents);
+  Description d;
+  d.length = nurbs::arc_length(curve);
+  d.start_derivative = curve.derivatives(dom.start, 1)[1];
+  d.end_derivative = curve.derivatives(dom.end, 1)[1];
   // Unit tangents where |C'| is above rounding noise relative to the derivative's scale; null otherwise.
-  const auto unit = [&](const Vec3& d) {
-    const double scale = curve.model_size() / dom.length();
-    return norm(d) > 1e-12 * scale ? point_to_json(normalized(d), dim) : Json(nullptr);
+  const double scale = curve.model_size() / dom.length();
+  d.start_unit = norm(d.start_derivative) > 1e-12 * scale;
+  d.end_unit = norm(d.end_derivative) > 1e-12 * scale;
+  d.planarity = planarity_to_json(diffgeom::planarity(curve));
+  return d;
+}
+
+// The description's members, written once for a JSON value (JsonTree) and for streamed text (JsonText).
+template <class W>
+void write_description(W& w, const nurbs::NurbsCurve& curve, const Description& d) {
+  const int dim = curve.dimension();
+  const auto point = [&](const Vec3& p) {
+    w.scalars(dim == 2 ? 2 : 3, [&](std::size_t i) { w.number(i == 0 ? p.x : i == 1 ? p.y : p.z); });
   };
-  Json units = Json::object();
-  units["start"] = unit(d0);
-  units["end"] = unit(d1);
-  o["end_tangents"] = std::move(units);
-  o["planarity"] = planarity_to_json(diffgeom::planarity(curve));
+  const auto numbers = [&](std::span<const double> values) {
+    w.scalars(values.size(), [&](std::size_t i) { w.number(values[i]); });
+  };
+  const nurbs::Interval dom = curve.domain();
+  w.member("degree").integer(curve.degree());
+  w.member("dimension").integer(dim);
+  w.member("rational").boolean(curve.is_rational());
+  const std::array<double, 2> domain{dom.start, dom.end};
+  w.member("domain");
+  numbers(domain);
+  w.member("knots");
+  numbers(curve.knots().values());
+  const std::span<const Vec3> poles = curve.control_points();
+  w.member("control_points").containers(poles.size(), [&](std::size_t i) { point(poles[i]); });
+  if (curve.is_rational()) {
+    w.member("weights");
+    numbers(curve.weights());
+  } else {
+    w.member("weights").null();
+  }
+  w.member("length").number(d.length);
+  w.member("end_derivatives").begin_object();
+  w.member("start");
+  point(d.start_derivative);
+  w.member("end");
+  point(d.end_derivative);
+  w.end_object();
+  w.member("end_tangents").begin_object();
+  for (const auto& [name, v, defined] :
+       {std::tuple{"start", d.start_derivative, d.start_unit}, std::tuple{"end", d.end_derivative, d.end_unit}}) {
+    w.member(name);
+    if (defined)
+      point(normalized(v));
+    else
+      w.null();
+  }
+  w.end_object();
+  w.member("planarity").value(d.planarity);
+}
+
+}  // namespace
+
+Json curve_description_json(const nurbs::NurbsCurve& curve) {
+  const Description d = describe(curve);
+  Json o;
+  JsonTree w(o);
+  w.begin_object();
+  write_description(w, curve, d);
+  w.end_object();
   return o;
 }
+
+DescriptionWriter::DescriptionWriter(const nurbs::NurbsCurve& curve) : curve_(curve), computed_(describe(curve)) {}
+
+void DescriptionWriter::write_members(JsonText& w) const { write_description(w, curve_, computed_); }
 
 namespace {
 

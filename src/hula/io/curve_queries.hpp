@@ -15,6 +15,7 @@
 #include "hula/curve/curve.hpp"
 #include "hula/diffgeom/match_blend.hpp"
 #include "hula/io/json_curve.hpp"
+#include "hula/io/json_text.hpp"
 #include "hula/nurbs/deviation.hpp"
 
 namespace hula::io {
@@ -24,6 +25,30 @@ namespace hula::io {
 /// {"start", "end"}, "end_tangents" {"start", "end"} (null where |C'| is rounding noise), "planarity"}.
 /// @throws hula::Error(Errc::NumericalFailure) if the arc length does not converge
 [[nodiscard]] Json curve_description_json(const nurbs::NurbsCurve& curve);
+
+/// curve_description_json streamed: the constructor computes everything that can fail (the arc length,
+/// the planarity), write_members then writes the same members into an open object of a JsonText, the
+/// same bytes as format_json of the value, without a JSON value of a node per number (`hula info` of a
+/// million-pole curve). The curve must outlive the writer.
+class DescriptionWriter {
+ public:
+  /// @throws as curve_description_json
+  explicit DescriptionWriter(const nurbs::NurbsCurve& curve);
+  /// The members "degree" … "planarity", after the caller's own, in the object `w` has open.
+  void write_members(JsonText& w) const;
+
+  /// What the description adds to the curve's own arrays.
+  struct Computed {
+    double length = 0.0;
+    Vec3 start_derivative, end_derivative;
+    bool start_unit = false, end_unit = false;  ///< whether |C'| is above rounding noise there
+    Json planarity;
+  };
+
+ private:
+  const nurbs::NurbsCurve& curve_;
+  Computed computed_;
+};
 
 /// As curve_description_json, with "maximum_curvature" (diffgeom::analyse_curve's feature) added.
 [[nodiscard]] Json curve_description_with_maximum_curvature_json(const nurbs::NurbsCurve& curve);

@@ -133,6 +133,10 @@ class JsonTree {
     place(json::Json(v));
     return *this;
   }
+  JsonTree& boolean(bool v) {
+    place(json::Json(v));
+    return *this;
+  }
   JsonTree& null() {
     place(json::Json(nullptr));
     return *this;

@@ -2,6 +2,7 @@
 // JSON and text point-file readers (forms in points_file.hpp).
 #include "hula/io/points_file.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <optional>
@@ -101,30 +102,57 @@ Separator separator_of(std::string_view line) {
   return Separator::Whitespace;
 }
 
-// A data line's values.
-struct Row {
-  std::vector<double> values;
+// The points read so far: one Vec3 each (z = 0 for 2-D rows), all rows of the same width.
+struct Rows {
+  std::vector<Vec3> points;
+  std::size_t width = 0;  // 2 or 3 once the first point is read
 };
 
 // The Lednicer form (see points_file.hpp): a header, then a count line of two whole numbers
 // NU, NL ≥ 2 with NU + NL the number of rows after it.
-bool is_lednicer(const std::vector<Row>& rows, std::size_t header_lines) {
-  if (header_lines == 0 || rows.size() < 5 || rows[0].values.size() != 2) return false;
-  const double nu = rows[0].values[0], nl = rows[0].values[1];
+bool is_lednicer(const Rows& rows, std::size_t header_lines) {
+  if (header_lines == 0 || rows.points.size() < 5 || rows.width != 2) return false;
+  const double nu = rows.points[0].x, nl = rows.points[0].y;
   if (!(nu >= 2.0 && nl >= 2.0) || nu != std::floor(nu) || nl != std::floor(nl)) return false;
-  return nu + nl == static_cast<double>(rows.size() - 1);
+  return nu + nl == static_cast<double>(rows.points.size() - 1);
 }
 
-}  // namespace
-
-PointSet parse_points_json(std::string_view text) {
-  const json::Json doc = json::parse_json_text(text, "point file");
-  json::PointArray a = json::get_points(doc, json::root_path("points"));
-  return PointSet{std::move(a.points), a.dimension};
+// The fast path for a data line after the first point: `width` finite numbers in from_chars'
+// grammar, separated by `sep` (blanks around them), read straight into `p`. False for anything
+// else (a '+', a decimal comma, a bad or non-finite field, another count): the general path then
+// reads the line again and gives its value or its error. A number never spans a separator or a
+// blank, so every line this accepts splits into the same fields with the same values.
+bool scan_row(std::string_view line, Separator sep, std::size_t width, Vec3& p) {
+  const char* c = line.data();
+  const char* const end = c + line.size();
+  double v[3] = {0.0, 0.0, 0.0};
+  std::size_t n = 0;
+  for (;;) {
+    while (c != end && is_blank(*c)) ++c;
+    if (sep == Separator::Whitespace && c == end) break;
+    if (n == width) return false;
+    const auto [ptr, ec] = std::from_chars(c, end, v[n]);
+    if (ec != std::errc() || !std::isfinite(v[n])) return false;
+    ++n;
+    c = ptr;
+    if (sep == Separator::Whitespace) {
+      if (c != end && !is_blank(*c)) return false;
+      continue;
+    }
+    while (c != end && is_blank(*c)) ++c;
+    if (c == end) break;
+    if (*c != (sep == Separator::Comma ? ',' : ';')) return false;
+    ++c;
+  }
+  if (n != width) return false;
+  p = Vec3{v[0], v[1], v[2]};
+  return true;
 }
 
-PointSet parse_points_csv(std::string_view text) {
-  std::vector<Row> rows;
+// The text form; `fast` lets scan_row read the plain data lines.
+PointSet parse_csv(std::string_view text, bool fast) {
+  Rows rows;
+  rows.points.reserve(static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1);
   std::optional<Separator> sep;
   std::size_t separator_line = 0;  // the line that set the separator
   std::size_t header_lines = 0;
@@ -140,12 +168,19 @@ PointSet parse_points_csv(std::string_view text) {
     std::size_t first = 0;
     while (first < line.size() && is_blank(line[first])) ++first;
     if (first == line.size()) continue;
+    if (fast && sep) {
+      Vec3 p;
+      if (scan_row(line, *sep, rows.width, p)) {
+        rows.points.push_back(p);
+        continue;
+      }
+    }
 
     const Separator line_sep = sep.value_or(separator_of(line));
     const std::vector<Field> fields = split_fields(line, line_sep);
     const bool decimal_comma = line_sep == Separator::Semicolon;
     // Before the first point, a line whose first field is not a number is a header line.
-    if (rows.empty() && !read_number(fields.front().text, decimal_comma)) {
+    if (rows.points.empty() && !read_number(fields.front().text, decimal_comma)) {
       ++header_lines;
       continue;
     }
@@ -153,22 +188,24 @@ PointSet parse_points_csv(std::string_view text) {
       sep = line_sep;
       separator_line = line_no;
     }
-    const std::size_t index = rows.size();
-    const std::string how =
-        "fields separated by " + separator_text(*sep) +
-        (line_no == separator_line ? std::string() : ", as on line " + std::to_string(separator_line));
-    Row row;
+    const std::size_t index = rows.points.size();
+    const auto how = [&] {
+      return "fields separated by " + separator_text(*sep) +
+             (line_no == separator_line ? std::string() : ", as on line " + std::to_string(separator_line));
+    };
+    double values[3] = {0.0, 0.0, 0.0};
+    std::size_t count = 0;
     for (std::size_t c = 0; c < fields.size(); ++c) {
       const Field& f = fields[c];
       const ErrorWhere where{.field = "points", .index = index, .component = c, .line = line_no, .column = f.column};
       const std::string at = "line " + std::to_string(line_no) + ", column " + std::to_string(f.column);
       if (c == 3)
-        throw Error(Errc::ParseError, at + ": more than 3 numbers on a line (a point is x, y or x, y, z; " + how + ")",
-                    where);
+        throw Error(Errc::ParseError,
+                    at + ": more than 3 numbers on a line (a point is x, y or x, y, z; " + how() + ")", where);
       if (f.text.empty())
-        throw Error(Errc::ParseError, at + ": empty field where a number is expected (" + how + ")", where);
+        throw Error(Errc::ParseError, at + ": empty field where a number is expected (" + how() + ")", where);
       const std::optional<Number> n = read_number(f.text, decimal_comma);
-      if (!n) throw Error(Errc::ParseError, at + ": " + field_text(f.text) + " is not a number (" + how + ")", where);
+      if (!n) throw Error(Errc::ParseError, at + ": " + field_text(f.text) + " is not a number (" + how() + ")", where);
       if (n->out_of_range)
         throw Error(Errc::NonFiniteInput, at + ": " + field_text(f.text) + " is outside the range of a double", where);
       if (!std::isfinite(n->value))
@@ -179,44 +216,56 @@ PointSet parse_points_csv(std::string_view text) {
                                               : "-inf") +
                         " where a finite number is expected",
                     where);
-      row.values.push_back(n->value);
+      values[count++] = n->value;
     }
     const ErrorWhere where{.field = "points", .index = index, .line = line_no, .column = first + 1};
-    if (row.values.size() < 2)
+    if (count < 2)
+      throw Error(
+          Errc::ParseError,
+          "line " + std::to_string(line_no) + ": 1 number; a point needs 2 (x, y) or 3 (x, y, z) (" + how() + ")",
+          where);
+    if (!rows.points.empty() && count != rows.width)
       throw Error(Errc::ParseError,
-                  "line " + std::to_string(line_no) + ": 1 number; a point needs 2 (x, y) or 3 (x, y, z) (" + how + ")",
+                  "line " + std::to_string(line_no) + ": " + std::to_string(count) +
+                      " numbers but the first point has " + std::to_string(rows.width) +
+                      " (all points must be 2-D or all 3-D; " + how() + ")",
                   where);
-    if (!rows.empty() && row.values.size() != rows.front().values.size())
-      throw Error(Errc::ParseError,
-                  "line " + std::to_string(line_no) + ": " + std::to_string(row.values.size()) +
-                      " numbers but the first point has " + std::to_string(rows.front().values.size()) +
-                      " (all points must be 2-D or all 3-D; " + how + ")",
-                  where);
-    rows.push_back(std::move(row));
+    rows.width = count;
+    rows.points.push_back(Vec3{values[0], values[1], values[2]});
   }
-  if (rows.empty() && header_lines > 0)
+  if (rows.points.empty() && header_lines > 0)
     throw Error(Errc::ParseError,
                 "no point: none of the " + std::to_string(header_lines) +
                     " non-blank lines starts with a number (a point is x, y or x, y, z)",
                 ErrorWhere{.field = "points", .line = 1});
 
   PointSet out;
-  auto to_point = [](const Row& r) { return Vec3{r.values[0], r.values[1], r.values.size() == 3 ? r.values[2] : 0.0}; };
+  out.dimension = rows.width == 2 ? 2 : 3;
   if (is_lednicer(rows, header_lines)) {
-    const auto upper = static_cast<std::size_t>(rows[0].values[0]);
-    for (std::size_t i = upper; i >= 1; --i) out.points.push_back(to_point(rows[i]));
-    for (std::size_t i = upper + 1; i < rows.size(); ++i) {
-      const Vec3 p = to_point(rows[i]);
-      if (i == upper + 1 && p == out.points.back()) continue;  // the shared leading-edge point, once
-      out.points.push_back(p);
+    const std::vector<Vec3>& r = rows.points;
+    const auto upper = static_cast<std::size_t>(r[0].x);
+    for (std::size_t i = upper; i >= 1; --i) out.points.push_back(r[i]);
+    for (std::size_t i = upper + 1; i < r.size(); ++i) {
+      if (i == upper + 1 && r[i] == out.points.back()) continue;  // the shared leading-edge point, once
+      out.points.push_back(r[i]);
     }
   } else {
-    out.points.reserve(rows.size());
-    for (const Row& r : rows) out.points.push_back(to_point(r));
+    out.points = std::move(rows.points);
   }
-  out.dimension = !rows.empty() && rows.front().values.size() == 2 ? 2 : 3;
   return out;
 }
+
+}  // namespace
+
+PointSet parse_points_json(std::string_view text) {
+  const json::Json doc = json::parse_json_text(text, "point file");
+  json::PointArray a = json::get_points(doc, json::root_path("points"));
+  return PointSet{std::move(a.points), a.dimension};
+}
+
+PointSet parse_points_csv(std::string_view text) { return parse_csv(text, true); }
+
+PointSet parse_points_csv_general(std::string_view text) { return parse_csv(text, false); }
 
 PointSet parse_points(std::string_view text) {
   std::size_t i = 0;

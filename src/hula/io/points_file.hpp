@@ -58,6 +58,11 @@ struct PointSet {
 /// @throws hula::Error(Errc::NonFiniteInput) for nan, inf or a value that overflows a double
 [[nodiscard]] PointSet parse_points_csv(std::string_view text);
 
+/// parse_points_csv without its fast path (data lines after the first point read by std::from_chars
+/// straight into the points): every line split into fields and read one by one. Same result, same
+/// errors; the reference the fast path is tested against.
+[[nodiscard]] PointSet parse_points_csv_general(std::string_view text);
+
 /// Parses either form (JSON when the first non-blank character is '[').
 [[nodiscard]] PointSet parse_points(std::string_view text);
 
