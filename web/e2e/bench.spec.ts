@@ -137,6 +137,8 @@ test('drag a point of a 100-control-point curve with fins and the κ graph', asy
     };
     requestAnimationFrame(tick);
   });
+  // The load the drag itself ran under (the 1-minute average when it starts), beside the figures.
+  results['drag_load_average'] = loadavg()[0]!;
   const frames0 = await page.evaluate(() => window.__hula.app.viewports.frames);
   expect(await page.evaluate(() => window.__hula.app.viewports.snap)).toBe(false);
   const t0 = Date.now();

@@ -219,6 +219,36 @@ describe('the drag controller', () => {
     await settle();
   });
 
+  it('evaluates a move when its event comes, and draws the latest one when more came before the frame', async () => {
+    const { ctl } = setup();
+    ctl.start('1', 3, handles(cubic));
+    // Evaluated at the event (a raw pointer update); the frame draws what was evaluated.
+    ctl.moveTo([50, 10, 0], 1, true);
+    expect(ctl.analysisOf('1')).toBeUndefined();
+    ctl.frame();
+    ctl.frameDrawn(5);
+    const early = ctl.analysisOf('1')!;
+    expect(early.points[early.points.length - 1]).toEqual([50, 10, 0]);
+    // Two moves before the next frame: the first is evaluated early, the frame draws the second.
+    ctl.moveTo([60, 12, 0], 6, true);
+    ctl.moveTo([70, 14, 0], 7, true);
+    ctl.frame();
+    ctl.frameDrawn(9);
+    const late = ctl.analysisOf('1')!;
+    expect(late.points[late.points.length - 1]).toEqual([70, 14, 0]);
+    expect(ctl.dragStats).toMatchObject({ moves: 3, redraws: 2 });
+    expect(ctl.latencies).toEqual([4, 3]);
+    // The same position evaluated at the frame gives the same analysis as evaluated early.
+    const { ctl: other } = setup();
+    other.start('1', 3, handles(cubic));
+    other.moveTo([70, 14, 0], 7);
+    other.frame();
+    expect(other.analysisOf('1')).toEqual(late);
+    ctl.end();
+    other.end();
+    await settle();
+  });
+
   it('follows the server for a curve the page cannot evaluate (no local preview)', async () => {
     const { ctl } = setup(law);
     ctl.start('1', 0, [[0, 0, 0]]);

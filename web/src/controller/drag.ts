@@ -113,6 +113,12 @@ export class DragController {
   readonly dragStats = { moves: 0, redraws: 0, firstMove: 0, lastMove: 0 };
   /** The current frame draws a new drag position (set by frame(), counted after it). */
   private drewDrag = false;
+  /**
+   * The page's analysis of a drag position computed when its pointer event
+   * came (prepare()), before the frame that draws it: the dragged point it is
+   * of (that Vec3 object; a later move replaces it) and the analysis.
+   */
+  private prepared: { point: Vec3; analysis: Analysis } | null = null;
 
   constructor(private readonly host: DragHost) {}
 
@@ -141,6 +147,7 @@ export class DragController {
       grab,
     };
     this.settling = label;
+    this.prepared = null;
     this.latencies.length = 0;
     this.serverLatencies.length = 0;
     Object.assign(this.dragStats, { moves: 0, redraws: 0, firstMove: 0, lastMove: 0 });
@@ -154,7 +161,7 @@ export class DragController {
    * a move within a snapped grid cell) is no move: nothing is drawn or sent.
    * The next frame draws it; the server hears of it through flush().
    */
-  moveTo(p: Vec3 | null, stamp: number): boolean {
+  moveTo(p: Vec3 | null, stamp: number, early = false): boolean {
     const d = this.drag;
     if (!d) return false;
     const start = d.handles[d.index]!;
@@ -172,7 +179,43 @@ export class DragController {
     this.host.requestRender();
     d.pending = p;
     this.flush();
+    if (early) this.prepare();
     return true;
+  }
+
+  /**
+   * Evaluate the dragged curve at its new position now, between frames (the
+   * pointer's raw event: `pointerrawupdate`), so the frame that shows it only
+   * draws. Once per frame: when more moves come before the frame, the frame
+   * evaluates the last one itself.
+   */
+  prepare(): void {
+    const d = this.drag;
+    if (!d?.dirty || this.prepared) return;
+    const analysis = this.evaluate(d);
+    if (analysis) this.prepared = { point: d.handles[d.index]!, analysis };
+  }
+
+  /** The page's analysis of the dragged curve with its handles as they are (null: not a local drag). */
+  private evaluate(d: Drag): Analysis | null {
+    const e = this.ed.store.entities.get(d.label);
+    const evaluator = d.local && e?.curve ? NurbsEvaluator.of(e.curve, d.handles) : null;
+    if (!evaluator) return null;
+    const s = this.host.settingsOf(d.label);
+    const analysis = analyseNurbs(evaluator, {
+      samples: s.samples,
+      by: this.host.abscissa === 's' ? 'arclength' : 'parameter',
+      fins: s.fins,
+      scale: s.scale,
+    });
+    // Knots stay where they are in t; inflections and extrema wait for the server.
+    const before = this.ed.store.analyses.get(d.label) ?? this.preview?.analysis;
+    for (const f of before?.features ?? []) {
+      if (f.kind !== 'knot') continue;
+      const best = nearestIndex(analysis.t, f.t);
+      analysis.features.push(analysis.s.length ? { ...f, s: analysis.s[best]! } : { ...f });
+    }
+    return analysis;
   }
 
   /**
@@ -184,29 +227,17 @@ export class DragController {
     const d = this.drag;
     if (!d?.dirty) return;
     d.dirty = false;
-    const e = this.ed.store.entities.get(d.label);
-    const evaluator = d.local && e?.curve ? NurbsEvaluator.of(e.curve, d.handles) : null;
-    if (evaluator) {
-      const s = this.host.settingsOf(d.label);
-      const analysis = analyseNurbs(evaluator, {
-        samples: s.samples,
-        by: this.host.abscissa === 's' ? 'arclength' : 'parameter',
-        fins: s.fins,
-        scale: s.scale,
-      });
-      // Knots stay where they are in t; inflections and extrema wait for the server.
-      const before = this.ed.store.analyses.get(d.label) ?? this.preview?.analysis;
-      for (const f of before?.features ?? []) {
-        if (f.kind !== 'knot') continue;
-        const best = nearestIndex(analysis.t, f.t);
-        analysis.features.push(analysis.s.length ? { ...f, s: analysis.s[best]! } : { ...f });
-      }
+    // The position evaluated when its event came, unless the pointer has moved on since.
+    const ready = this.prepared?.point === d.handles[d.index] ? this.prepared!.analysis : null;
+    this.prepared = null;
+    const analysis = ready ?? this.evaluate(d);
+    if (analysis) {
       this.preview = { label: d.label, analysis, handles: d.handles, until: Infinity };
       if (d.label === this.ed.selected) this.host.updateGraphs();
     }
     this.host.redrawCurve(d.label, d.handles);
     // Curve, fins and graphs now hold the new position: the frame about to be drawn shows it.
-    if (evaluator) this.drewDrag = true;
+    if (analysis) this.drewDrag = true;
   }
 
   /** After a frame (at `now`): count a redraw of a new position and the pointer-to-frame latency. */
@@ -231,6 +262,7 @@ export class DragController {
     // The last position is drawn even when no frame came between it and the release.
     this.frame();
     this.drag = null;
+    this.prepared = null;
     if (d.failed) return; // reverted already
     if (d.pending && !d.inFlight) this.flushOf(d);
     else if (!d.inFlight) this.settled(d);

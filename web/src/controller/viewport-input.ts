@@ -190,7 +190,8 @@ export class ViewportController {
           return;
         }
         if (this.drags.dragging) {
-          this.dragTo(v.name, ev);
+          // Where the browser sends raw pointer updates, the drag follows those instead.
+          if (!this.rawUpdates) this.dragTo(v.name, ev);
           return;
         }
         if (this.tool) {
@@ -198,6 +199,13 @@ export class ViewportController {
           return;
         }
         this.hoverCurve(v.name, ev);
+      });
+      // A drag takes each move as it comes (`pointerrawupdate`, not aligned to frames as
+      // `pointermove` is): the moved curve is evaluated before the frame that draws it.
+      el.addEventListener('pointerrawupdate', (ev) => {
+        if (!(ev instanceof PointerEvent) || this.navigating || !this.drags.dragging) return;
+        this.rawUpdates = true;
+        this.dragTo(v.name, ev, true);
       });
       const up = (ev: PointerEvent): void => {
         if (this.navigating) {
@@ -326,7 +334,10 @@ export class ViewportController {
    * Move the dragged point on the plane through it parallel to the view. The
    * next frame draws it, and the server hears of it (DragController.moveTo).
    */
-  private dragTo(view: ViewName, ev: PointerEvent): void {
+  /** The browser sends `pointerrawupdate` (seen once): drags follow those, not `pointermove`. */
+  private rawUpdates = false;
+
+  private dragTo(view: ViewName, ev: PointerEvent, early = false): void {
     const d = this.drags.drag!;
     const [x, y] = this.local(view, ev);
     const start = d.handles[d.index]!;
@@ -339,6 +350,6 @@ export class ViewportController {
           index: d.index,
         })
       : null;
-    this.drags.moveTo(p, ev.timeStamp);
+    this.drags.moveTo(p, ev.timeStamp, early);
   }
 }

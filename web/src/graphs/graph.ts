@@ -151,6 +151,11 @@ export function readout(a: Analysis, i: number, abscissa: Abscissa): string {
 /** What a graph's overlay is: the curve before the last edit, or the fairing assistant's ghost. */
 export type OverlayKind = 'before' | 'faired';
 
+/** Set an attribute unless it already has that value (no style invalidation for nothing). */
+function setAttr(el: HTMLElement, name: string, value: string): void {
+  if (el.getAttribute(name) !== value) el.setAttribute(name, value);
+}
+
 export class Graph {
   readonly el: HTMLElement;
   private plot: uPlot | null = null;
@@ -232,10 +237,11 @@ export class Graph {
       this.overlay = this.xs.map((x) => oy[nearestIndex(ox, ox[0]! + (x - this.xs[0]!) * scaleX)]!);
     }
     this.markers = a ? graphMarkers(a, this.quantity, this.abscissa, this.xs, this.ys) : [];
-    this.el.dataset['markers'] = this.markers.map((m) => m.kind).join(' ');
-    this.el.dataset['overlay'] = this.overlay ? overlayKind : '';
-    this.el.setAttribute('aria-label', `${QUANTITY_LABELS[this.quantity]} against ${this.plotted}`);
-    this.el.dataset['samples'] = String(this.xs.length);
+    // Written only when they change: a drag shows a new analysis every frame, with the same ones.
+    setAttr(this.el, 'data-markers', this.markers.map((m) => m.kind).join(' '));
+    setAttr(this.el, 'data-overlay', this.overlay ? overlayKind : '');
+    setAttr(this.el, 'aria-label', `${QUANTITY_LABELS[this.quantity]} against ${this.plotted}`);
+    setAttr(this.el, 'data-samples', String(this.xs.length));
     this.redraw();
   }
 
@@ -250,7 +256,12 @@ export class Graph {
     // the pointer made each move read a larger value than the last (the edit
     // ran away: a 0.01 pull set κ 0.06 higher). It refits on the next show().
     if (!this.dragging) {
-      const ys = this.overlay ? Float64Array.from([...this.ys, ...this.overlay]) : this.ys;
+      let ys = this.ys;
+      if (this.overlay) {
+        ys = new Float64Array(this.ys.length + this.overlay.length);
+        ys.set(this.ys);
+        ys.set(this.overlay, this.ys.length);
+      }
       this.yRange = paddedRange(ys, 0.05, valueFloor(this.quantity, ys, this.size));
     }
     const data: uPlot.AlignedData = [this.xs, this.ys, ...(this.overlay ? [this.overlay] : [])];
@@ -258,7 +269,12 @@ export class Graph {
     // A new abscissa, quantity or overlay kind rebuilds the plot (its axis label and series styles).
     const shape = `${seriesCount} ${this.plotted} ${this.quantity} ${this.overlayKind}`;
     if (this.plot && this.plotShape === shape) {
-      this.plot.setData(data);
+      // Drawn now, not in uPlot's microtask after the caller's task: a drag's frame shows the
+      // graph with the curve, and the frame's clock (DragController.frameDrawn) includes it.
+      const plot = this.plot;
+      plot.batch(() => {
+        plot.setData(data);
+      });
       return;
     }
     this.plotShape = shape;
