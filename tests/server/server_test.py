@@ -1198,6 +1198,29 @@ class DocumentTest(unittest.TestCase):
         self.call("DELETE", f"{base}/entities/{label}")
         self.call("GET", f"{base}/entities/{label}", expect=404)
 
+    # checks a PATCH that changes nothing (the current name, a point moved to where it is) keeps the
+    # revision and the redo step, as `doc set` does; a real change after it drops the redo step
+    def test_noop_patch_keeps_redo(self):
+        self.new_document("noop.hula")
+        base = "/api/documents/noop.hula"
+        label = self.call("POST", base + "/entities", {"curve": CURVE50, "name": "s"}, expect=201)["label"]
+        entity = f"{base}/entities/{label}"
+        renamed = self.call("PATCH", entity, {"attributes": {"name": "t"}})["revision"]
+        undone = self.call("POST", base + "/undo")["revision"]
+        self.assertEqual(undone, renamed - 1)
+        point = self.call("GET", entity)["points"][2]
+        for body in ({"attributes": {"name": "s"}}, {"move": [{"index": 2, "to": point}]}):
+            r = self.call("PATCH", entity, body)
+            self.assertEqual(r["revision"], undone, body)
+            history = self.call("GET", base + "/history")["history"]
+            self.assertEqual([(h["name"], h["applied"]) for h in history],
+                             [("add curve", True), ("edit attributes", False)], body)
+        self.assertEqual(self.call("POST", base + "/redo")["revision"], renamed)
+        self.assertEqual(self.call("GET", entity)["attributes"]["name"], "t")
+        self.call("POST", base + "/undo")
+        self.call("PATCH", entity, {"attributes": {"name": "u"}})
+        self.call("POST", base + "/redo", expect=400)
+
     # checks the analysis of the exact rational circle of radius 3 (closed form): at each of 100 samples the
     # curvature is 1/3, the torsion 0, the point on the circle, the curvature fin's tip at radius 3 + 2/3 (scale 2),
     # and a circle has no inflection; the interpolated CURVE50 gets one value per sample as well
