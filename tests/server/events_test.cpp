@@ -35,6 +35,37 @@ TEST(EventLog, BatchesInOrderAndWakesOnce) {
   EXPECT_TRUE(log.next(2, [] {}).closed);
 }
 
+// checks a backlog comes in whole events of at most the batch bound (one event even when it alone is
+// larger), in order and none lost, and `closed` only with the batch that reaches the end of the log
+TEST(EventLog, LongBacklogComesInBoundedBatches) {
+  EventLog log;
+  std::string expected;
+  for (int g = 0; g < 1000; ++g) {
+    log.append("generation", Json{{"generation", g}, {"pad", std::string(static_cast<std::size_t>(g % 7) * 20, 'x')}});
+    expected += log.next(
+                       static_cast<std::size_t>(g), [] {}, 1)
+                    .text;
+  }
+  log.append("big", Json{{"pad", std::string(300, 'y')}});
+  log.close();
+  std::string got;
+  std::size_t from = 0, batches = 0;
+  for (;;) {
+    const EventLog::Batch b = log.next(
+        from, [] {}, 256);
+    if (b.count == 0) break;
+    ++batches;
+    EXPECT_TRUE(b.count == 1 || b.text.size() <= 256) << b.text.size();
+    EXPECT_EQ(b.closed, from + b.count == 1001) << from;
+    from += b.count;
+    got += b.text;
+  }
+  EXPECT_EQ(from, 1001U);
+  EXPECT_GT(batches, 100U);
+  EXPECT_EQ(got.substr(0, expected.size()), expected);
+  EXPECT_EQ(got.substr(expected.size()), "event: big\ndata: {\"pad\":\"" + std::string(300, 'y') + "\"}\n\n");
+}
+
 // checks a data payload with a newline stays on one data line (JSON escapes it)
 TEST(EventLog, DataIsOneLine) {
   EventLog log;

@@ -29,12 +29,13 @@ void EventLog::close() {
   wake_all(lock);
 }
 
-EventLog::Batch EventLog::next(std::size_t from, std::function<void()> wake) {
+EventLog::Batch EventLog::next(std::size_t from, std::function<void()> wake, std::size_t max_bytes) {
   std::lock_guard lock(mutex_);
   Batch b;
-  for (std::size_t i = from; i < events_.size(); ++i) b.text += events_[i];
-  b.count = events_.size() > from ? events_.size() - from : 0;
-  b.closed = closed_;
+  std::size_t i = from;
+  for (; i < events_.size() && (i == from || b.text.size() + events_[i].size() <= max_bytes); ++i) b.text += events_[i];
+  b.count = i > from ? i - from : 0;
+  b.closed = closed_ && i >= events_.size();
   if (b.count == 0 && !closed_) waiting_.push_back(std::move(wake));
   return b;
 }

@@ -32,9 +32,15 @@ class EventLog {
     bool closed = false;
   };
 
-  /// The events after `from`; when there are none and the log is open, `wake` is stored and
-  /// called once (on the appending thread) by the next append or close.
-  [[nodiscard]] Batch next(std::size_t from, std::function<void()> wake);
+  /// The events after `from`, whole events up to about `max_bytes` (at least one), so that a
+  /// stream's write timeout measures a stalled client, not the time to drain a long backlog;
+  /// `closed` only when the batch reaches the end of a closed log. When there are none and the
+  /// log is open, `wake` is stored and called once (on the appending thread) by the next append
+  /// or close.
+  [[nodiscard]] Batch next(std::size_t from, std::function<void()> wake, std::size_t max_bytes = kBatchBytes);
+
+  /// The default bound of a batch's text.
+  static constexpr std::size_t kBatchBytes = std::size_t{64} * 1024;
 
   /// Number of events so far.
   [[nodiscard]] std::size_t size() const;
