@@ -22,10 +22,6 @@ using testing::KnownCurve;
 struct CloudCase {
   KnownCurve curve;
   double noise;
-  // Most control points the fit may use: the counts measured on seeds 1–3 are 5 (arc), 6 (S-curve)
-  // and 6–7 (wave); a curve that follows a scan to its noise needs a few more than one that only
-  // stays within the tolerance (Open CASCADE's GeomAPI_PointsToBSpline: 4, 4, 4, 6, 7, 7, seed 1).
-  std::size_t max_control_points;
 };
 
 // Largest distance of the faired curve from the known curve at the feet of the kept points.
@@ -42,7 +38,9 @@ class ScanFitOnKnownCurves : public ::testing::TestWithParam<CloudCase> {};
 // each: every stray (by construction ≥ 2 from the curve) is rejected and no inlier is, every inlier
 // lies within the A-class 0.3 of the faired curve, the faired curve stays within 3 σ of the known
 // curve (the generator's noise is Gaussian per coordinate) and has its inflection count (the sine's
-// / the arc's, by construction), with at most the control points measured when this bound was set.
+// / the arc's, by construction). How many control points the fit may use is checked against an
+// independent reference, Open CASCADE's GeomAPI_PointsToBSpline on the same clouds, in the
+// OCCT-linked scan_fit_occt_test.cpp.
 TEST_P(ScanFitOnKnownCurves, FindsStraysKeepsInliersAndInflections) {
   const CloudCase c = GetParam();
   for (std::uint64_t seed : {1u, 2u, 3u}) {
@@ -62,16 +60,14 @@ TEST_P(ScanFitOnKnownCurves, FindsStraysKeepsInliersAndInflections) {
     EXPECT_LE(r.after.curvature_variation, r.before.curvature_variation * (1.0 + 1e-9));
     EXPECT_EQ(r.faired.dimension(), 2);
     EXPECT_LE(distance_from_known(r, c.curve), 3.0 * c.noise);
-    EXPECT_LE(r.fit.control_points().size(), c.max_control_points);
     EXPECT_EQ(r.faired.control_points().size(), r.fit.control_points().size());
   }
 }
 
 INSTANTIATE_TEST_SUITE_P(Clouds, ScanFitOnKnownCurves,
-                         ::testing::Values(CloudCase{KnownCurve::Arc, 0.05, 6}, CloudCase{KnownCurve::Arc, 0.1, 6},
-                                           CloudCase{KnownCurve::SCurve, 0.05, 7},
-                                           CloudCase{KnownCurve::SCurve, 0.1, 7}, CloudCase{KnownCurve::Wave, 0.05, 8},
-                                           CloudCase{KnownCurve::Wave, 0.1, 8}));
+                         ::testing::Values(CloudCase{KnownCurve::Arc, 0.05}, CloudCase{KnownCurve::Arc, 0.1},
+                                           CloudCase{KnownCurve::SCurve, 0.05}, CloudCase{KnownCurve::SCurve, 0.1},
+                                           CloudCase{KnownCurve::Wave, 0.05}, CloudCase{KnownCurve::Wave, 0.1}));
 
 // Checks that the faired curve stays near the known curve where there are data: at the foot of
 // every kept point its distance to the sampled curve (dense polyline) is within the tolerance (the
