@@ -19,6 +19,9 @@ import { deleteSelected } from './commands/delete';
 import { importFile } from './commands/import-file';
 import { matchCurves } from './commands/match';
 import { blendCurves } from './commands/blend';
+import { rebuildCurve, type RebuildChoice } from './commands/rebuild';
+import { closeCurve } from './commands/close';
+import { offsetCurve } from './commands/offset';
 import { JoinTool, type JoinHost } from './tools/join';
 import { finLines } from './api/adapt';
 import type {
@@ -479,6 +482,19 @@ export class App {
 
   splitSelected(): Promise<void> {
     return split(this.editor);
+  }
+
+  async rebuildCurve(label: string, choice: RebuildChoice): Promise<void> {
+    await rebuildCurve(this.editor, label, choice);
+  }
+
+  async closeSelected(): Promise<void> {
+    const label = this.editor.needSelection('Close');
+    if (label) await closeCurve(this.editor, label);
+  }
+
+  async offsetCurve(label: string, distance: number): Promise<void> {
+    await offsetCurve(this.editor, label, distance);
   }
 
   deleteSelected(): Promise<void> {

@@ -28,6 +28,12 @@ import type {
   MatchRequest,
   MatchResult,
   BlendRequest,
+  ClosedInterpolation,
+  ClosedInterpolationRequest,
+  OffsetRequest,
+  OffsetResult,
+  RebuildRequest,
+  RebuildResult,
   BlendResult,
 } from './types';
 import type * as Api from './openapi';
@@ -336,6 +342,18 @@ export class Client {
   /** The fair G1–G3 blend between two curve ends (`hula blend`); the document is not changed. */
   blend(req: BlendRequest): Promise<BlendResult> {
     return this.request('POST', '/api/blend', req);
+  }
+  /** The curve rebuilt with a chosen degree and control-point count (`hula edit rebuild`); nothing is stored. */
+  rebuild(req: RebuildRequest): Promise<RebuildResult> {
+    return this.request('POST', '/api/rebuild', req);
+  }
+  /** The periodic C2 cubic through the points and back to the first (`hula interpolate --closed`). */
+  interpolateClosed(req: ClosedInterpolationRequest): Promise<ClosedInterpolation> {
+    return this.request('POST', '/api/interpolate-closed', req);
+  }
+  /** A planar curve's offset by a distance, loops trimmed (`hula offset`); nothing is stored. */
+  offset(req: OffsetRequest): Promise<OffsetResult> {
+    return this.request('POST', '/api/offset', req);
   }
 
   startJob(body: Record<string, unknown>): Promise<Job> {

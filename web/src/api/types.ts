@@ -207,6 +207,17 @@ export type MatchResult = Omit<Api.MatchResult, 'curve'> & { curve: CurveFile };
 export type BlendRequest = Omit<Api.BlendRequest, 'a' | 'b'> & { a: CurveFile; b: CurveFile };
 export type BlendResult = Omit<Api.BlendResult, 'curve'> & { curve: CurveFile };
 
+/** POST /api/rebuild, /api/interpolate-closed and /api/offset (docs/server.md): nothing is stored. */
+export type RebuildRequest = Omit<Api.RebuildRequest, 'curve'> & { curve: CurveFile };
+export type RebuildResult = Omit<Api.RebuildResult, 'curve'> & { curve: CurveFile };
+export type ClosedInterpolationRequest = Api.ClosedInterpolationRequest;
+export type ClosedInterpolation = Omit<Api.ClosedInterpolation, 'curve'> & { curve: CurveFile };
+export type OffsetRequest = Omit<Api.OffsetRequest, 'curve'> & { curve: CurveFile };
+export type OffsetResult = Omit<Api.OffsetResult, 'raw' | 'trimmed'> & {
+  raw: CurveFile;
+  trimmed: (Omit<Api.OffsetResult['trimmed'][number], 'curve'> & { curve: CurveFile })[];
+};
+
 export interface LawRequest {
   expression: string;
   parameter?: string;
@@ -378,7 +389,17 @@ export const CONTRACT: [
   Within<MatchResult, Api.MatchResult>,
   Within<BlendRequest, Api.BlendRequest>,
   Within<BlendResult, Api.BlendResult>,
+  Within<RebuildRequest, Api.RebuildRequest>,
+  Within<RebuildResult, Api.RebuildResult>,
+  Within<ClosedInterpolation, Api.ClosedInterpolation>,
+  Within<OffsetRequest, Api.OffsetRequest>,
+  Within<OffsetResult, Api.OffsetResult>,
 ] = [
+  true,
+  true,
+  true,
+  true,
+  true,
   true,
   true,
   true,

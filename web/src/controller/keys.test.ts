@@ -38,6 +38,16 @@ describe('the keyboard map', () => {
     expect(keyCommand(press('Escape'))).toEqual({ kind: 'escape' });
     expect(keyCommand(press('M'))).toEqual({ kind: 'tool', tool: 'match' });
     expect(keyCommand(press('j'))).toEqual({ kind: 'tool', tool: 'blend' });
+    expect(keyCommand(press('c'))).toEqual({ kind: 'action', action: 'close' });
+    expect(keyCommand(press('R', { shiftKey: true }))).toEqual({
+      kind: 'action',
+      action: 'rebuild',
+    });
+    expect(keyCommand(press('O', { shiftKey: true }))).toEqual({
+      kind: 'action',
+      action: 'offset',
+    });
+    expect(keyCommand(press('o'))).toEqual({ kind: 'action', action: 'open' });
     expect(keyCommand(press('t'))).toBeNull();
     expect(keyCommand(press('F5'))).toBeNull();
   });

@@ -52,6 +52,7 @@ const ACTIONS: Record<string, string> = {
   d: 'elevate',
   x: 'split',
   w: 'reverse',
+  c: 'close',
   a: 'accept-fairing',
 };
 const VIEWS: Record<string, ViewName> = { '1': 'top', '2': 'front', '3': 'side', '4': 'persp' };
@@ -63,6 +64,8 @@ export function keyCommand(ev: KeyPress): KeyCommand | null {
   if (ctrl && k === 'z') return { kind: ev.shiftKey ? 'redo' : 'undo' };
   if (ctrl && k === 'y') return { kind: 'redo' };
   if (ctrl || ev.altKey) return null;
+  if (ev.shiftKey && k === 'r') return { kind: 'action', action: 'rebuild' };
+  if (ev.shiftKey && k === 'o') return { kind: 'action', action: 'offset' };
   const tool = TOOLS[k];
   if (tool) return { kind: 'tool', tool };
   const action = ACTIONS[k];

@@ -8,6 +8,7 @@ import type { CurveFile, EndCondition, FinKind, Parameterisation } from '../api/
 import { el } from './dom';
 import { FIN_COLOURS } from '../viewport/viewports';
 import { hex } from '../store/viewstate';
+import { rebuildDefaults } from '../commands/rebuild';
 
 function section(parent: HTMLElement, title: string, id: string): HTMLElement {
   const d = el('details', { id, open: '' });
@@ -35,6 +36,15 @@ export const SHORTCUTS: [string, string][] = [
   ['D', 'raise the degree of the selected curve by one'],
   ['X', 'split the selected curve in two (at the hovered point, else mid-domain)'],
   ['W', 'reverse the direction of the selected curve'],
+  [
+    'Shift+R',
+    'rebuild the selected curve with a chosen degree and control-point count (the status shows the deviation; one undo step)',
+  ],
+  [
+    'C',
+    'close the selected curve: the periodic cubic through its points or control points (one undo step)',
+  ],
+  ['Shift+O', 'offset the selected planar curve by a distance: a new curve (one undo step)'],
   [
     'M',
     "match: click curve A near the end to move, then B near an end or on it (A's end made Gk to it; one undo step)",
@@ -554,6 +564,47 @@ export class Panels {
           .then(() => {
             this.app.fitAll();
           });
+      },
+    );
+  }
+
+  rebuildDialog(): void {
+    const label = this.app.editor.needSelection('Rebuild');
+    if (!label) return;
+    const d = rebuildDefaults(this.app.editor, label);
+    this.dialog(
+      `Rebuild ${this.app.editor.nameOf(label)}`,
+      (f) => {
+        this.field(f, 'Degree', 'degree', String(d.degree));
+        this.field(f, 'Control points', 'control_points', String(d.controlPoints));
+      },
+      (f) => {
+        const v = (n: string): number =>
+          Number((f.elements.namedItem(n) as HTMLInputElement).value);
+        void this.app.rebuildCurve(label, {
+          degree: v('degree'),
+          controlPoints: v('control_points'),
+        });
+      },
+    );
+  }
+
+  offsetDialog(): void {
+    const label = this.app.editor.needSelection('Offset');
+    if (!label) return;
+    this.dialog(
+      `Offset ${this.app.editor.nameOf(label)}`,
+      (f) => {
+        this.field(
+          f,
+          'Distance (positive: to the left of the direction of travel)',
+          'distance',
+          '5',
+        );
+      },
+      (f) => {
+        const v = (f.elements.namedItem('distance') as HTMLInputElement).value;
+        void this.app.offsetCurve(label, Number(v));
       },
     );
   }

@@ -67,6 +67,15 @@ export class Toolbar {
       case 'reverse':
         void this.app.reverseSelected();
         break;
+      case 'rebuild':
+        this.app.panels.rebuildDialog();
+        break;
+      case 'close':
+        void this.app.closeSelected();
+        break;
+      case 'offset':
+        this.app.panels.offsetDialog();
+        break;
       case 'fit':
         this.app.fitAll();
         break;
