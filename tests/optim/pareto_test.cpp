@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "hula/core/rng.hpp"
@@ -63,6 +64,47 @@ TEST(OptimPareto, SortMatchesDefinition) {
       const auto got = sorter.sort(f, m, v);
       const auto want = brute_ranks(f, m, v);
       for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(got[i], want[i]) << "m " << m << " trial " << trial << " i " << i;
+      // feasible(): exactly the points of violation 0, for m <= 2 in lexicographic objective order.
+      const auto feasible = sorter.feasible();
+      ASSERT_EQ(feasible.size(), static_cast<std::size_t>(std::count(v.begin(), v.end(), 0.0)));
+      for (const std::size_t i : feasible) EXPECT_EQ(v[i], 0.0);
+      if (m > 2) continue;
+      for (std::size_t q = 1; q < feasible.size(); ++q) {
+        const double* a = &f[feasible[q - 1] * m];
+        const double* b = &f[feasible[q] * m];
+        const bool before = std::lexicographical_compare(a, a + m, b, b + m) ||
+                            (std::equal(a, a + m, b) && feasible[q - 1] < feasible[q]);
+        EXPECT_TRUE(before) << "m " << m << " trial " << trial << " position " << q;
+      }
+    }
+  }
+}
+
+// checks: crowding distance does not depend on the order the front's members are given in (NSGA-II
+// passes 2-D fronts already sorted by f0; the distances must equal those of a shuffled front), on
+// fronts with repeated points, compared bit for bit
+TEST(OptimPareto, CrowdingDistanceIndependentOfMemberOrder) {
+  Rng rng(77, 1);
+  for (int trial = 0; trial < 40; ++trial) {
+    const std::size_t k = 3 + rng.below(30);
+    std::vector<double> f(2 * k);
+    for (std::size_t i = 0; i < k; ++i) {
+      const double x = static_cast<double>(rng.below(k));  // repeats: equal points share a front
+      f[2 * i] = x;
+      f[2 * i + 1] = 1.0 - std::sqrt(x / static_cast<double>(k));
+    }
+    std::vector<std::size_t> sorted(k);
+    for (std::size_t i = 0; i < k; ++i) sorted[i] = i;
+    std::sort(sorted.begin(), sorted.end(),
+              [&](std::size_t a, std::size_t b) { return f[2 * a] < f[2 * b] || (f[2 * a] == f[2 * b] && a < b); });
+    std::vector<std::size_t> shuffled = sorted;
+    for (std::size_t i = k - 1; i > 0; --i) std::swap(shuffled[i], shuffled[rng.below(i + 1)]);
+    std::vector<double> d_sorted(k), d_shuffled(k);
+    std::vector<std::size_t> scratch(k);
+    crowding_distance(f, 2, sorted, d_sorted, scratch);
+    crowding_distance(f, 2, shuffled, d_shuffled, scratch);
+    for (std::size_t i = 0; i < k; ++i) {
+      EXPECT_EQ(std::memcmp(&d_sorted[i], &d_shuffled[i], sizeof(double)), 0) << "trial " << trial << " i " << i;
     }
   }
 }

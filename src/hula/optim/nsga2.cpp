@@ -83,7 +83,7 @@ Nsga2Result solve_nsga2(const Problem& problem, const Nsga2Options& options) {
   pop.allocate(2 * n, d, problem.values_per_point(), m, length);
   next.allocate(2 * n, d, problem.values_per_point(), m, length);
   std::vector<double> rank(2 * n, 0.0), crowd(2 * n, 0.0), rank_next(2 * n, 0.0), crowd_next(2 * n, 0.0);
-  std::vector<std::size_t> order(2 * n), scratch(2 * n), count(2 * n + 2), chosen(n);
+  std::vector<std::size_t> order(2 * n), scratch(2 * n), count(2 * n + 2), chosen(n), by_f0(2 * n), cursor(2 * n + 2);
   NonDominatedSorter sorter;
   detail::Evaluator evaluator(problem, run);
   detail::RunControl control(run.stop, n);
@@ -102,8 +102,18 @@ Nsga2Result solve_nsga2(const Problem& problem, const Nsga2Options& options) {
       ++count[r[i] + 1];
     }
     for (std::size_t f = 0; f < fronts; ++f) count[f + 1] += count[f];
+    std::copy_n(count.begin(), fronts + 1, cursor.begin());
     for (std::size_t i = 0; i < rows; ++i) order[count[r[i]]++] = i;
-    // count[f] is now the end of front f.
+    // count[f] is now the end of front f. by_f0 holds the same fronts with the feasible ones in the
+    // sorter's objective order, so crowding finds its first objective already sorted; `order` keeps
+    // index order within fronts, which decides the rows of the survivors.
+    const auto feasible = sorter.feasible();
+    for (const std::size_t i : feasible) by_f0[cursor[r[i]]++] = i;
+    std::size_t feasible_fronts = 0;
+    for (const std::size_t i : feasible) feasible_fronts = std::max(feasible_fronts, r[i] + 1);
+    for (std::size_t i = 0; i < rows; ++i) {
+      if (r[i] >= feasible_fronts) by_f0[cursor[r[i]]++] = i;
+    }
     std::size_t begin = 0;
     for (std::size_t f = 0; f < fronts; ++f) {
       const std::size_t end = count[f];
@@ -113,7 +123,7 @@ Nsga2Result solve_nsga2(const Problem& problem, const Nsga2Options& options) {
         begin = end;
         continue;
       }
-      crowding_distance(pop.objectives, m, std::span<const std::size_t>(order).subspan(begin, end - begin), crowd,
+      crowding_distance(pop.objectives, m, std::span<const std::size_t>(by_f0).subspan(begin, end - begin), crowd,
                         scratch);
       begin = end;
     }

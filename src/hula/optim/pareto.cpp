@@ -102,6 +102,7 @@ std::span<const std::size_t> NonDominatedSorter::sort(std::span<const double> ob
   // Reserve every buffer for n points so that later calls of the same size
   // never allocate (NSGA-II sorts 2N points every generation).
   for (auto* buffer : {&order_, &next_, &current_, &last_, &start_, &next_front_, &count_}) buffer->reserve(n + 1);
+  keys_.reserve(n);
   rank_.assign(n, 0);
   order_.clear();    // feasible
   next_.clear();     // infeasible
@@ -121,14 +122,22 @@ std::span<const std::size_t> NonDominatedSorter::sort(std::span<const double> ob
   const double* f = objectives.data();
   std::size_t fronts = 0;
   if (!order_.empty()) {
-    if (m <= 2) {
-      // Lexicographic order: every dominator of a point precedes it.
-      std::sort(order_.begin(), order_.end(), [&](std::size_t a, std::size_t b) {
-        for (std::size_t j = 0; j < m; ++j) {
-          if (f[a * m + j] != f[b * m + j]) return f[a * m + j] < f[b * m + j];
-        }
-        return a < b;
+    if (m == 2) {
+      // Lexicographic order: every dominator of a point precedes it. Sorting the keys themselves rather
+      // than indices into `objectives` keeps the comparisons in cache.
+      keys_.resize(order_.size());
+      for (std::size_t k = 0; k < order_.size(); ++k) keys_[k] = {f[order_[k] * 2], f[order_[k] * 2 + 1], order_[k]};
+      std::sort(keys_.begin(), keys_.end(), [](const Key2& a, const Key2& b) {
+        if (a.f0 != b.f0) return a.f0 < b.f0;
+        if (a.f1 != b.f1) return a.f1 < b.f1;
+        return a.index < b.index;
       });
+      for (std::size_t k = 0; k < order_.size(); ++k) order_[k] = keys_[k].index;
+    } else if (m == 1) {
+      std::sort(order_.begin(), order_.end(),
+                [&](std::size_t a, std::size_t b) { return f[a] < f[b] || (f[a] == f[b] && a < b); });
+    }
+    if (m <= 2) {
       if (m == 1) {
         for (std::size_t k = 0; k < order_.size(); ++k) {
           if (k > 0 && f[order_[k]] > f[order_[k - 1]]) ++fronts;
@@ -251,7 +260,8 @@ void crowding_distance(std::span<const double> objectives, std::size_t m, std::s
         std::reverse(run, end);
         run = end;
       }
-    } else {
+    } else if (!std::is_sorted(first, last, by_objective)) {
+      // NSGA-II hands 2-D fronts over already in f0 order.
       std::sort(first, last, by_objective);
     }
     distance[scratch[0]] = kInf;

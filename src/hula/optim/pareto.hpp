@@ -38,9 +38,17 @@ class NonDominatedSorter {
                                     std::span<const double> violation);
   /// Number of distinct ranks of the last sort.
   [[nodiscard]] std::size_t fronts() const noexcept { return fronts_; }
+  /// The feasible points of the last sort; for m <= 2 in lexicographic order of their objectives (ties
+  /// by index), so that each front read in this order is sorted by its first objective.
+  [[nodiscard]] std::span<const std::size_t> feasible() const noexcept { return order_; }
 
  private:
+  struct Key2 {
+    double f0, f1;
+    std::size_t index;
+  };
   std::vector<std::size_t> rank_, order_, dominated_, count_, start_, current_, next_, last_, next_front_;
+  std::vector<Key2> keys_;
   std::size_t fronts_ = 0;
 };
 
