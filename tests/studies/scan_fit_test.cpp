@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "hula/core/error.hpp"
+#include "hula/core/rng.hpp"
 #include "hula/testing/expect_error.hpp"
 #include "hula/testing/point_clouds.hpp"
 
@@ -132,6 +133,53 @@ TEST(PointOrder, RecoversTheOrderOfAShuffledArc) {
   const bool down = std::is_sorted(xs.rbegin(), xs.rend());
   EXPECT_TRUE(up || down);
   EXPECT_NEAR(o.path_length, 60.0 * 110.0 * std::acos(-1.0) / 180.0, 1e-2);
+}
+
+// A line of 25 units along x ending at the origin, then a quarter of the ellipse
+// (2 sin θ, 1 − cos θ), θ ∈ [0, π/2]: its curvature rises to 2 (radius 0.5) at the end (2, 1),
+// where the tangent is +y and the outward normal +x. `step` is the spacing on the line; the bend
+// is sampled at equal steps of θ, `bend` samples.
+std::vector<Vec3> line_then_bend(double step, std::size_t bend) {
+  std::vector<Vec3> pts;
+  for (double x = -25.0; x < -0.5 * step; x += step) pts.push_back({x, 0.0, 0.0});
+  const double quarter = 0.5 * std::acos(-1.0);
+  for (std::size_t k = 0; k <= bend; ++k) {
+    const double th = quarter * static_cast<double>(k) / static_cast<double>(bend);
+    pts.push_back({2.0 * std::sin(th), 1.0 - std::cos(th), 0.0});
+  }
+  return pts;
+}
+
+// Checks that exact points ending in a tight bend (4.5° of turn per sample, as the end of the real
+// cage's curve 13, whose own test is ExchangeRealFiles.FitOfTheCagesCurve13) are all kept and all within the tolerance
+// 1e-4 of the diagonal: exact design points are never strays, the last one included.
+TEST(ScanFit, ExactPointsEndingInATightBendAreAllKept) {
+  const std::vector<Vec3> pts = line_then_bend(0.25, 20);
+  const double tol = 1e-4 * std::hypot(27.0, 1.0);
+  const ScanFitResult r = fit_scan(pts, ScanFitOptions{.tolerance = tol, .ordered = true});
+  EXPECT_TRUE(r.strays.empty()) << r.strays.size() << " strays";
+  for (std::size_t i = 0; i < pts.size(); ++i) EXPECT_LE(r.deviations[i], tol) << "point " << i;
+}
+
+// Checks that on a dense scan of the same shape (spacing 0.01, Gaussian noise σ = 0.05 tolerance
+// per coordinate, seeded) whose last point is moved 4 tolerances off the bend (along its outward
+// normal), that point is found as the one stray and every other point is kept within the
+// tolerance. (Moved 10 tolerances, the fit still bends its end to it and keeps it: issue 21.)
+TEST(ScanFit, APointMovedOffTheEndOfADenseScanIsTheOneStray) {
+  const double tol = 1e-4 * std::hypot(27.0, 1.0);
+  {
+    const double off = 4.0;
+    std::vector<Vec3> pts = line_then_bend(0.01, 300);
+    Rng rng(21);
+    for (Vec3& q : pts) {
+      q.x += 0.05 * tol * rng.normal();
+      q.y += 0.05 * tol * rng.normal();
+    }
+    pts.back().x += off * tol;
+    const ScanFitResult r = fit_scan(pts, ScanFitOptions{.tolerance = tol, .ordered = true});
+    EXPECT_EQ(r.strays, std::vector<std::size_t>{pts.size() - 1});
+    for (std::size_t i = 0; i + 1 < pts.size(); ++i) EXPECT_LE(r.deviations[i], tol) << "point " << i;
+  }
 }
 
 // Checks the documented errors: too few points, a non-finite point (named by index), bad options.

@@ -89,7 +89,7 @@ constexpr double kLeanNoise = 2.0;
 // tolerance lies beyond the end: the parameters are stretched to take it in.
 constexpr double kEndOvershoot = 0.25;
 // ... by more than kEndNoise σ̂ too, and at least kEndRun of them (one noisy point is no run); at most
-// kMaxStretches times per degree.
+// kMaxStretches times per resolution (the knots of one refinement round).
 constexpr double kEndNoise = 3.0;
 constexpr std::size_t kEndRun = 2;
 constexpr int kMaxStretches = 8;
@@ -831,6 +831,9 @@ std::optional<DegreeResult> fit_degree(Problem& pb, int p, std::span<const doubl
     }
     if (next.size() == s.interior.size()) break;  // spans too short to split further
     interior = std::move(next);
+    // The stretches count per resolution: those spent while the curve was too coarse to bend into an
+    // end say nothing of the refined curve, whose end may then be stretched to a point beyond it.
+    stretches = 0;
   }
   if (!result) return std::nullopt;
 
