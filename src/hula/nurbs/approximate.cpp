@@ -35,9 +35,9 @@ namespace {
 // sampling of its shape, not only on as many samples as unknowns.
 constexpr std::size_t kRebuildMinSamples = 201;
 
-}  // namespace
-
-void ApproximationOptions::validate() const {
+// The options approximate and rebuild share: a degree in [1, kMaxDegree] and at least degree + 1
+// control points.
+void check_degree_and_control_points(int degree, std::size_t control_points) {
   if (degree < 1 || degree > kMaxDegree)
     throw Error(Errc::InvalidOption,
                 "degree = " + std::to_string(degree) + " must be in [1, " + std::to_string(kMaxDegree) + "]",
@@ -47,6 +47,12 @@ void ApproximationOptions::validate() const {
                 "control_points = " + std::to_string(control_points) +
                     " must be at least degree + 1 = " + std::to_string(degree + 1),
                 {.field = "control_points"});
+}
+
+}  // namespace
+
+void ApproximationOptions::validate() const {
+  check_degree_and_control_points(degree, control_points);
   detail::check_dimension_option(dimension);
   detail::check_parameterisation_option(parameterisation);
 }
@@ -185,15 +191,7 @@ ApproximationResult approximate(std::span<const Vec3> points, const Approximatio
 }
 
 void RebuildOptions::validate() const {
-  if (degree < 1 || degree > kMaxDegree)
-    throw Error(Errc::InvalidOption,
-                "degree = " + std::to_string(degree) + " must be in [1, " + std::to_string(kMaxDegree) + "]",
-                {.field = "degree"});
-  if (control_points < static_cast<std::size_t>(degree) + 1)
-    throw Error(Errc::InvalidOption,
-                "control_points = " + std::to_string(control_points) +
-                    " must be at least degree + 1 = " + std::to_string(degree + 1),
-                {.field = "control_points"});
+  check_degree_and_control_points(degree, control_points);
   if (samples != 0 && samples < control_points)
     throw Error(Errc::InvalidOption,
                 "samples = " + std::to_string(samples) +

@@ -58,6 +58,19 @@ constexpr double kDragWeight = 0.5;
 // An end curvature this small relative to the curve's largest counts as zero (a natural end): the fit keeps it
 // zero so no inflection appears at the end.
 constexpr double kZeroEndCurvature = 1e-9;
+
+// Sign changes along count samples of a profile, values within kZeroEndCurvature × scale of zero counting as zero.
+template <class KappaOf>
+int sign_changes(std::size_t count, double scale, const KappaOf& kappa_of) {
+  int changes = 0, previous = 0;
+  for (std::size_t j = 0; j < count; ++j) {
+    const double k = kappa_of(j);
+    const int sign = k > kZeroEndCurvature * scale ? 1 : (k < -kZeroEndCurvature * scale ? -1 : 0);
+    if (sign != 0 && previous != 0 && sign != previous) ++changes;
+    if (sign != 0) previous = sign;
+  }
+  return changes;
+}
 // A target sample this large relative to max |κ*| bends: the fit may not make the curve straight there.
 constexpr double kStraightTarget = 1e-3;
 // Null space of the end rows: singular values below this fraction of the largest count as zero.
@@ -503,16 +516,7 @@ nurbs::NurbsCurve profile_fit(const FitBasis& fb, const nurbs::NurbsCurve& start
   // Sign changes of a planar profile, values within kZeroEndCurvature of the largest |κ*| counting as zero.
   double kappa_scale = 0.0;
   for (const double k : targets.kappa) kappa_scale = std::max(kappa_scale, std::abs(k));
-  const auto sign_changes = [&](const auto& kappa_of) {
-    int changes = 0, previous = 0;
-    for (std::size_t j = 0; j < count; ++j) {
-      const double k = kappa_of(j);
-      const int sign = k > kZeroEndCurvature * kappa_scale ? 1 : (k < -kZeroEndCurvature * kappa_scale ? -1 : 0);
-      if (sign != 0 && previous != 0 && sign != previous) ++changes;
-      if (sign != 0) previous = sign;
-    }
-    return changes;
-  };
+  const auto sign_changes_of = [&](const auto& kappa_of) { return sign_changes(count, kappa_scale, kappa_of); };
   int candidate_changes = 0;
   // Samples where the candidate is straight (|κ| within kZeroEndCurvature of the scale) but the target clearly bends
   // (|κ*| above kStraightTarget of the scale): a fit that flattens a stretch to rounding leaves sign noise there.
@@ -521,7 +525,7 @@ nurbs::NurbsCurve profile_fit(const FitBasis& fb, const nurbs::NurbsCurve& start
     static_cast<void>(own.parameters(c, targets.u, t));
     diffgeom::frenet(c, t, frames, fo);
     if (planar) {
-      candidate_changes = sign_changes([&](std::size_t j) { return frames[j].signed_curvature; });
+      candidate_changes = sign_changes_of([&](std::size_t j) { return frames[j].signed_curvature; });
       candidate_flat = 0;
       for (std::size_t j = 0; j < count; ++j)
         if (std::abs(frames[j].signed_curvature) <= kZeroEndCurvature * kappa_scale &&
@@ -546,7 +550,7 @@ nurbs::NurbsCurve profile_fit(const FitBasis& fb, const nurbs::NurbsCurve& start
   Vector r0 = residual(current);
   // A planar fit keeps to the inflections the target (or the start) has: a step that adds one is refused.
   const int allowed_changes =
-      std::max(candidate_changes, sign_changes([&](std::size_t j) { return targets.kappa[j]; }));
+      std::max(candidate_changes, sign_changes_of([&](std::size_t j) { return targets.kappa[j]; }));
   const std::size_t allowed_flat = candidate_flat;
   for (int iteration = 0; iteration < kPolishIterations; ++iteration) {
     Matrix jac(m, z.cols());
@@ -840,18 +844,8 @@ CurvatureEditResult edit_curvature(const curve::Curve& original, const Curvature
     const std::vector<intrinsic::FramePoint> fp = rec.curve.evaluate(s_rec);
     // A correction that holds the ends only by reversing the bend somewhere (1 + Σ c_k B_k < 0) is no target for a
     // drag, which never adds an inflection: the drag is then fitted as asked.
-    const auto sign_changes = [&](const auto& kappa_of) {
-      int changes = 0, previous = 0;
-      for (std::size_t j = 0; j < count; ++j) {
-        const double k = kappa_of(j);
-        const int sign = k > kZeroEndCurvature * target_max ? 1 : (k < -kZeroEndCurvature * target_max ? -1 : 0);
-        if (sign != 0 && previous != 0 && sign != previous) ++changes;
-        if (sign != 0) previous = sign;
-      }
-      return changes;
-    };
-    if (sign_changes([&](std::size_t j) { return fp[j].curvature; }) <=
-        sign_changes([&](std::size_t j) { return target[j]; })) {
+    if (sign_changes(count, target_max, [&](std::size_t j) { return fp[j].curvature; }) <=
+        sign_changes(count, target_max, [&](std::size_t j) { return target[j]; })) {
       for (std::size_t j = 0; j < count; ++j) targets.kappa[j] = fp[j].curvature;
     } else {
       iterations = 0;
