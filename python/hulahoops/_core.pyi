@@ -279,8 +279,8 @@ def approximate(points: Any, *, tolerance: Optional[float] = ..., control_points
 
 def biarc(p0: Any, theta0: float, p1: Any, theta1: float) -> object:
     """The equal-chord biarc from p0 with tangent angle theta0 to p1 with theta1 (radians): two circular arcs
-    joined with G1 continuity, as `hula clothoid --biarc` gives it: {"segments": [2 segment dicts as
-    clothoid_g1's, dkappa 0], "length"}.
+    joined with G1 continuity, as `hula clothoid --biarc` gives it (io::clothoid_answer): {"kind": "biarc",
+    "segments": [2 segment dicts as clothoid_g1's, dkappa 0], "length", "iterations"}.
     """
 
 def builtin_problem(name: str, dimension: int = ..., objectives: int = ...) -> dict:

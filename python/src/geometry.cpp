@@ -10,7 +10,6 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -682,14 +681,18 @@ void register_geometry(py::module_& m) {
   m.def(
       "biarc",
       [](py::handle p0, double theta0, py::handle p1, double theta1) {
-        const std::array<intrinsic::ClothoidSegment, 2> b =
-            intrinsic::fit_biarc(as_point(p0, "p0"), theta0, as_point(p1, "p1"), theta1);
-        return to_python(io::clothoid_spline_to_json(b));
+        io::ClothoidRequest q;
+        q.biarc = true;
+        q.start_point = as_point(p0, "p0");
+        q.start_angle = theta0;
+        q.end_point = as_point(p1, "p1");
+        q.end_angle = theta1;
+        return to_python(io::clothoid_answer(q).json);
       },
       py::arg("p0"), py::arg("theta0"), py::arg("p1"), py::arg("theta1"),
       "The equal-chord biarc from p0 with tangent angle theta0 to p1 with theta1 (radians): two circular arcs\n"
-      "joined with G1 continuity, as `hula clothoid --biarc` gives it: {\"segments\": [2 segment dicts as\n"
-      "clothoid_g1's, dkappa 0], \"length\"}.");
+      "joined with G1 continuity, as `hula clothoid --biarc` gives it (io::clothoid_answer): {\"kind\": \"biarc\",\n"
+      "\"segments\": [2 segment dicts as clothoid_g1's, dkappa 0], \"length\", \"iterations\"}.");
 
   m.def("analyse", &analyse, py::arg("curve"), py::arg("samples") = 100, py::kw_only(), py::arg("at") = py::none(),
         py::arg("by") = "parameter", py::arg("arc_lengths") = false, py::arg("bishop") = false,
