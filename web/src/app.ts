@@ -131,6 +131,11 @@ export class App {
     return this.drags.latencies;
   }
 
+  /** The pointer-to-frame latencies split into the wait for the frame and its work (ms). */
+  get frameSplit(): DragController['frameSplit'] {
+    return this.drags.frameSplit;
+  }
+
   /** Pointer-to-reply latencies of the current drag's moves (ms). */
   get serverLatencies(): readonly number[] {
     return this.drags.serverLatencies;

@@ -222,13 +222,14 @@ describe('the drag controller', () => {
   it('evaluates a move when its event comes, and draws the latest one when more came before the frame', async () => {
     const { ctl } = setup();
     ctl.start('1', 3, handles(cubic));
-    // Evaluated at the event (a raw pointer update); the frame draws what was evaluated.
+    // Evaluated and handed to curve and graphs at the event (a raw pointer update); the frame
+    // draws what was prepared without evaluating again.
     ctl.moveTo([50, 10, 0], 1, true);
-    expect(ctl.analysisOf('1')).toBeUndefined();
-    ctl.frame();
-    ctl.frameDrawn(5);
     const early = ctl.analysisOf('1')!;
     expect(early.points[early.points.length - 1]).toEqual([50, 10, 0]);
+    ctl.frame();
+    ctl.frameDrawn(5);
+    expect(ctl.analysisOf('1')).toBe(early);
     // Two moves before the next frame: the first is evaluated early, the frame draws the second.
     ctl.moveTo([60, 12, 0], 6, true);
     ctl.moveTo([70, 14, 0], 7, true);

@@ -103,7 +103,15 @@ export class DragController {
   readonly latencies: number[] = [];
   /** … and from a pointer event to the server's reply to the move it sent. */
   readonly serverLatencies: number[] = [];
+  /**
+   * The latencies split at the start of the frame's work (ms): the wait from
+   * the pointer event to the frame that draws it, and the frame's own work
+   * (what prepare() left to it, and the views' render); and the work done
+   * on the pointer events before their frame (prepare()).
+   */
+  readonly frameSplit = { waits: [] as number[], works: [] as number[], early: [] as number[] };
   private pointerStamp = 0;
+  private frameStart = 0;
   /**
    * The honest drag counters (read by e2e/bench.spec.ts), reset when a drag
    * starts: pointer moves that changed the dragged point, and frames that drew
@@ -114,11 +122,11 @@ export class DragController {
   /** The current frame draws a new drag position (set by frame(), counted after it). */
   private drewDrag = false;
   /**
-   * The page's analysis of a drag position computed when its pointer event
+   * A drag position put into curve, fins and graphs when its pointer event
    * came (prepare()), before the frame that draws it: the dragged point it is
-   * of (that Vec3 object; a later move replaces it) and the analysis.
+   * of (that Vec3 object; a later move replaces it).
    */
-  private prepared: { point: Vec3; analysis: Analysis } | null = null;
+  private prepared: { point: Vec3 } | null = null;
 
   constructor(private readonly host: DragHost) {}
 
@@ -150,6 +158,9 @@ export class DragController {
     this.prepared = null;
     this.latencies.length = 0;
     this.serverLatencies.length = 0;
+    this.frameSplit.waits.length = 0;
+    this.frameSplit.works.length = 0;
+    this.frameSplit.early.length = 0;
     Object.assign(this.dragStats, { moves: 0, redraws: 0, firstMove: 0, lastMove: 0 });
     this.host.setGhost(label);
     return this.drag;
@@ -184,16 +195,33 @@ export class DragController {
   }
 
   /**
-   * Evaluate the dragged curve at its new position now, between frames (the
-   * pointer's raw event: `pointerrawupdate`), so the frame that shows it only
-   * draws. Once per frame: when more moves come before the frame, the frame
-   * evaluates the last one itself.
+   * Put the dragged curve's new position into the curve, its fins and the
+   * graphs now, between frames (the pointer's raw event: `pointerrawupdate`),
+   * so the frame that shows it only renders. Once per frame: when more moves
+   * come before the frame, the frame takes the last one itself.
    */
   prepare(): void {
     const d = this.drag;
-    if (!d?.dirty || this.prepared) return;
+    if (!d?.dirty || !d.local || this.prepared) return;
+    const t0 = performance.now();
+    if (this.show(d)) this.prepared = { point: d.handles[d.index]! };
+    this.frameSplit.early.push(performance.now() - t0);
+  }
+
+  /**
+   * Evaluate the dragged curve with its handles as they are and hand curve,
+   * fins and (for the selected curve) graphs the result, for the next frame to
+   * draw; false when the page does not evaluate this curve (its server
+   * analysis follows).
+   */
+  private show(d: Drag): boolean {
     const analysis = this.evaluate(d);
-    if (analysis) this.prepared = { point: d.handles[d.index]!, analysis };
+    if (analysis) {
+      this.preview = { label: d.label, analysis, handles: d.handles, until: Infinity };
+      if (d.label === this.ed.selected) this.host.updateGraphs();
+    }
+    this.host.redrawCurve(d.label, d.handles);
+    return analysis !== null;
   }
 
   /** The page's analysis of the dragged curve with its handles as they are (null: not a local drag). */
@@ -227,17 +255,12 @@ export class DragController {
     const d = this.drag;
     if (!d?.dirty) return;
     d.dirty = false;
-    // The position evaluated when its event came, unless the pointer has moved on since.
-    const ready = this.prepared?.point === d.handles[d.index] ? this.prepared!.analysis : null;
+    this.frameStart = performance.now();
+    // The position prepared when its event came, unless the pointer has moved on since.
+    const ready = this.prepared?.point === d.handles[d.index];
     this.prepared = null;
-    const analysis = ready ?? this.evaluate(d);
-    if (analysis) {
-      this.preview = { label: d.label, analysis, handles: d.handles, until: Infinity };
-      if (d.label === this.ed.selected) this.host.updateGraphs();
-    }
-    this.host.redrawCurve(d.label, d.handles);
     // Curve, fins and graphs now hold the new position: the frame about to be drawn shows it.
-    if (analysis) this.drewDrag = true;
+    if (ready || this.show(d)) this.drewDrag = true;
   }
 
   /** After a frame (at `now`): count a redraw of a new position and the pointer-to-frame latency. */
@@ -248,6 +271,11 @@ export class DragController {
     }
     if (this.pointerStamp) {
       this.latencies.push(now - this.pointerStamp);
+      if (this.frameStart) {
+        this.frameSplit.waits.push(this.frameStart - this.pointerStamp);
+        this.frameSplit.works.push(now - this.frameStart);
+        this.frameStart = 0;
+      }
       this.pointerStamp = 0;
     }
   }
