@@ -4,7 +4,7 @@
 # (scripts/setup-debian.sh --test), build the `ci` configuration
 # (RelWithDebInfo at -O2 -g1, -Werror, _GLIBCXX_ASSERTIONS, Open CASCADE required) and
 # check that the tracked C++ sources are clang-format clean, fuzz the law
-# parser and every reader for 20 s each (about two minutes) when clang-14 is
+# parser and every reader for 20 s each, two at a time (about one minute) when clang-14 is
 # installed, and run every test label (unit, property, oracle, golden), then
 # the web workbench's checks, unit tests, build and end-to-end tests
 # (scripts/web.sh --e2e), and last ctest, so ctest's summary closes the output.
