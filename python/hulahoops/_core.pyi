@@ -324,7 +324,7 @@ def exchange_helper() -> Optional[str]:
 def fair_knots(setup: Any, progress: object = ...) -> dict:
     ...
 
-def fit(setup: Any, base: str) -> dict:
+def fit(setup: Any, base: str, progress: object = ...) -> dict:
     """The result of `hula fit` for a "fit" study dict (docs/formats.md): scanned points to a class-A curve
     (thesis ch. 3), with the faired NurbsCurve under "curve".
     """

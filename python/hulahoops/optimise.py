@@ -213,7 +213,8 @@ def optimise(problem: Any, algorithm: str = "ga-real", *, dimension: int = 0, ob
             ``cmaes``, ``de``, ``sade``, ``pso``, ``sga``, ``moead`` or
             ``nsga2`` (options ``population``, ``generations``, ``seed`` only,
             read as ``hula optimise --algorithm pagmo-<name>`` reads them;
-            pagmo runs its own loop, which Ctrl-C interrupts only at its end).
+            pagmo runs its own loop, which Ctrl-C and the callback's True
+            interrupt only at its end).
             All run through the same C++ entry as ``hula optimise``
             (``optim::solve``).
         dimension, objectives: for built-in problems (0 = the problem's default).
@@ -241,9 +242,12 @@ def optimise(problem: Any, algorithm: str = "ga-real", *, dimension: int = 0, ob
         callback: ``callback(generation, best, evaluations)`` after every generation (0 = the initial
             population): ``best`` is the smallest feasible objective (a float, NaN if none) or, for several
             objectives, an array of each objective's smallest feasible value; ``evaluations`` counts so
-            far. Returning True stops the run with its best so far (termination ``"Cancelled"``, no
-            exception); an exception it raises ends the run and propagates. Not with islands,
-            ``"nelder-mead"`` or pagmo's algorithms (InvalidOptionError).
+            far. ``"nelder-mead"``: a generation per simplex iteration (its vertices), then the final
+            simplex; pagmo's: a generation per ``population`` evaluations (the initial population, then
+            each generation's offspring), then the final population. Returning True stops the run with
+            its best so far (termination ``"Cancelled"``, no exception; pagmo's run to their end); an
+            exception it raises ends the run and propagates. Not with islands (InvalidOptionError). The
+            result is the same with or without it; ``best_per_generation`` holds the same generations.
         verbose: print one progress line per generation to ``sys.stderr``
             (``optimise: generation 12, evaluations 1300, best 0.0123``).
 

@@ -107,7 +107,8 @@ def fair_knots(setup: Any, *, callback: Callable[[int, float, int], Any] | None 
     return raise_if_interrupted(interrupt, StudyResult(raw))
 
 
-def fit(setup: Any, *, base: str | None = None) -> StudyResult:
+def fit(setup: Any, *, base: str | None = None, callback: Callable[[int, float, int], Any] | None = None,
+        verbose: bool = False) -> StudyResult:
     """Scanned points to a class-A curve (thesis ch. 3; ``hula fit``): a "fit" study dict or file, e.g.
     ``{"format": "hula-study", "version": 1, "study": "fit", "points": [[x, y], ...], "class": "A"}``.
 
@@ -115,9 +116,15 @@ def fit(setup: Any, *, base: str | None = None) -> StudyResult:
     deviations, control points, inflections, curvature extrema and energies ...) and ``curve``, the
     faired :class:`~hulahoops.NurbsCurve` (the curve ``hula fit -o`` writes). ``base``: where a points file
     named in the setup is read from (default: the study file's directory, or the working directory).
+
+    ``callback(generation, best, evaluations)`` and ``verbose`` follow the search: one generation per
+    candidate curve fitted (``best`` its largest deviation of a kept point, ``evaluations`` the
+    least-squares solves so far), then one last with the result (``after``'s ``max_deviation`` and
+    ``fits``). The fit has no best so far to stop with: the callback's return value is not read; an
+    exception it raises ends the fit and propagates.
     """
     data, where = _load(setup)
-    return StudyResult(_core.fit(data, base or where))
+    return StudyResult(_core.fit(data, base or where, progress_function(callback, verbose, "fit")))
 
 
 def match_curvature(setup: Any, *, method: str | None = None, base: str | None = None,

@@ -203,46 +203,44 @@ py::dict run(const optim::Problem& problem, const std::string& algorithm, const 
   std::uint64_t seed = 0;
   std::size_t threads = 1;
   std::vector<double> best_per_generation, mean_per_generation;
+  // The convergence graph of a single population, and the progress callback (every algorithm reports its
+  // generations: Nelder–Mead its simplex iterations, pagmo's per population of evaluations); islands
+  // report per-island statistics instead.
+  const optim::GenerationCallback on_generation = [&](const optim::GenerationLog& g) {
+    const optim::GenerationStatistics s = optim::statistics(g);
+    best_per_generation.push_back(s.best);
+    mean_per_generation.push_back(s.mean);
+    if (progress.is_none()) return;
+    const py::gil_scoped_acquire gil;
+    if (py::bool_(progress(g.generation, generation_best(g), g.evaluations))) job.stop();
+  };
   if (algorithm.starts_with("pagmo-")) {
     // pagmo's algorithms through the reader `hula optimise --algorithm pagmo-<name>` uses: population,
-    // generations and seed; pagmo runs its own loop, which no callback or cancellation reaches.
+    // generations and seed; pagmo runs its own loop, which no cancellation reaches.
     io::SolverRequest q;
     q.algorithm = algorithm;
     q.population = o.get<std::size_t>("population");
     q.generations = o.get<std::size_t>("generations");
     q.seed = o.get<std::uint64_t>("seed");
+    q.on_generation = on_generation;
     seed = q.seed.value_or(0);
     solve.algorithm = io::solver_options(q);
-    if (!progress.is_none())
-      throw Error(Errc::InvalidOption, "callback and verbose are not supported by pagmo's algorithms",
-                  {.field = "callback"});
   } else if (algorithm == "nelder-mead") {
     optim::NelderMeadOptions nm = nelder_mead_options(o);
     nm.cancel = job.token();
+    nm.on_generation = on_generation;
     solve.algorithm = nm;
     if (const auto start = o.get<std::vector<double>>("start")) solve.start = *start;
-    if (!progress.is_none())
-      throw Error(Errc::InvalidOption, "callback and verbose are not supported by algorithm \"nelder-mead\"",
-                  {.field = "callback"});
   } else {
     optim::RunSettings settings = run_settings(o);
     settings.stop.cancel = job.token();
     seed = settings.seed;
     threads = settings.threads;
     solve.islands = island_options(o);
-    // The convergence graph of a single population; islands report per-island statistics instead.
-    if (!solve.islands) {
-      settings.on_generation = [&](const optim::GenerationLog& g) {
-        const optim::GenerationStatistics s = optim::statistics(g);
-        best_per_generation.push_back(s.best);
-        mean_per_generation.push_back(s.mean);
-        if (progress.is_none()) return;
-        const py::gil_scoped_acquire gil;
-        if (py::bool_(progress(g.generation, generation_best(g), g.evaluations))) job.stop();
-      };
-    } else if (!progress.is_none()) {
+    if (!solve.islands)
+      settings.on_generation = on_generation;
+    else if (!progress.is_none())
       throw Error(Errc::InvalidOption, "callback and verbose are not supported with islands", {.field = "callback"});
-    }
     solve.algorithm = solver_options(algorithm, o, settings);
   }
   o.check_all_used(algorithm);

@@ -115,9 +115,16 @@ py::dict match_curvature(const py::handle& setup, const std::string& base, std::
 
 // The result `hula fit` prints for a "fit" study (studies::fit_scan, io::fit_result_to_json), with the faired
 // curve as a NurbsCurve under "curve". Points files named in the setup resolve against `base`.
-py::dict fit(const py::handle& setup, const std::string& base) {
-  const io::FitStudy study =
-      io::fit_study_from_json(io::study_from_json(setup_value(setup), "fit"), io::relative_to(base));
+// `progress(generation, deviation, solves)` is called after each candidate curve of the search and once
+// with the result (ScanFitOptions::on_generation); its return value is not read (a fit has no best so far
+// to stop with), an exception it raises ends the fit and propagates.
+py::dict fit(const py::handle& setup, const std::string& base, const py::object& progress) {
+  io::FitStudy study = io::fit_study_from_json(io::study_from_json(setup_value(setup), "fit"), io::relative_to(base));
+  if (!progress.is_none())
+    study.options.on_generation = [&progress](const optim::GenerationLog& g) {
+      const py::gil_scoped_acquire gil;
+      (void)progress(g.generation, optim::statistics(g).best, g.evaluations);
+    };
   const studies::ScanFitResult r = [&] {
     const py::gil_scoped_release release;
     return studies::fit_scan(study.points, study.options);
@@ -131,7 +138,7 @@ py::dict fit(const py::handle& setup, const std::string& base) {
 
 void register_studies(py::module_& m) {
   m.def("fair_knots", &fair_knots, py::arg("setup"), py::arg("progress") = py::none());
-  m.def("fit", &fit, py::arg("setup"), py::arg("base"),
+  m.def("fit", &fit, py::arg("setup"), py::arg("base"), py::arg("progress") = py::none(),
         "The result of `hula fit` for a \"fit\" study dict (docs/formats.md): scanned points to a class-A curve\n"
         "(thesis ch. 3), with the faired NurbsCurve under \"curve\".");
   m.def("match_curvature", &match_curvature, py::arg("setup"), py::arg("base"), py::arg("method") = py::none(),

@@ -74,13 +74,66 @@ def test_callback_exception_propagates():
         hh.optimise("sphere", dimension=2, population=10, generations=50, callback=callback)
 
 
-def test_callback_refused_where_there_are_no_generations():
-    # checks Nelder-Mead and island runs refuse callback (InvalidOption naming it) rather than ignore it
+def test_callback_refused_with_islands():
+    # checks island runs refuse callback and verbose (InvalidOptionError naming callback) rather than ignore them
     with pytest.raises(hh.InvalidOptionError) as e:
-        hh.optimise("sphere", "nelder-mead", dimension=2, callback=lambda *a: None)
+        hh.optimise("sphere", dimension=2, islands=2, generations=3, callback=lambda *a: None)
     assert e.value.where["field"] == "callback"
     with pytest.raises(hh.InvalidOptionError):
         hh.optimise("sphere", dimension=2, islands=2, generations=3, verbose=True)
+
+
+def test_nelder_mead_callback_sees_every_simplex_and_stops():
+    # checks Nelder-Mead calls back once per simplex iteration and once with the final simplex (generations
+    # 0..G, G the report's), best the simplex's lowest value (the result's f at the end), evaluations growing;
+    # the result is the same without the callback; True at generation 5 ends the run after that iteration
+    # (Cancelled, 6 iterations), its final simplex reported as generation 6
+    calls = []
+    r = hh.optimise("rosenbrock", "nelder-mead", dimension=3, max_evaluations=3000,
+                    callback=lambda g, best, ev: calls.append((g, best, ev)))
+    plain = hh.optimise("rosenbrock", "nelder-mead", dimension=3, max_evaluations=3000)
+    assert np.array_equal(r.x, plain.x) and np.array_equal(r.f, plain.f)
+    assert r.report["evaluations"] == plain.report["evaluations"]
+    assert [c[0] for c in calls] == list(range(r.report["generations"] + 1))
+    assert np.array_equal([c[1] for c in calls], r.best_per_generation)
+    assert [c[2] for c in calls] == sorted(c[2] for c in calls) and calls[-1][2] == r.report["evaluations"]
+    assert calls[-1][1] == r.f[0]
+    stopped = hh.optimise("rosenbrock", "nelder-mead", dimension=3, max_evaluations=3000,
+                          callback=lambda g, b, e: g == 5)
+    assert stopped.report["termination"] == "Cancelled" and stopped.report["generations"] == 6
+    assert np.array_equal(stopped.best_per_generation[:6], r.best_per_generation[:6])
+    assert stopped.f[0] == stopped.best_per_generation[6] <= calls[5][1]
+
+
+def test_pagmo_callback_counts_generations_by_evaluations():
+    # checks pagmo's DE calls back for generations 0..G with one population of evaluations each, the last
+    # being the final population (its best the result's f), and gives the same result without the callback
+    calls = []
+    r = hh.optimise("sphere", "pagmo-de", dimension=4, population=20, generations=12, seed=2,
+                    callback=lambda g, best, ev: calls.append((g, best, ev)))
+    plain = hh.optimise("sphere", "pagmo-de", dimension=4, population=20, generations=12, seed=2)
+    assert np.array_equal(r.x, plain.x) and np.array_equal(r.f, plain.f)
+    assert [c[0] for c in calls] == list(range(13))
+    assert [c[2] for c in calls] == [20 * (g + 1) for g in range(13)] and calls[-1][2] == r.report["evaluations"]
+    assert calls[-1][1] == r.f[0]
+
+
+def test_fit_callback_follows_the_search():
+    # checks fit calls back once per candidate curve (generations 0, 1, ... in order, solves growing) and
+    # last with the result's largest deviation and solves, and fits the same curve without the callback
+    rng = np.random.default_rng(5)
+    x = np.linspace(0, 100, 80)
+    pts = np.column_stack([x, 10 * np.sin(x / 15) + rng.normal(0, 0.05, x.size)])
+    setup = {"format": "hula-study", "version": 1, "study": "fit", "points": pts.tolist(), "class": "A"}
+    calls = []
+    r = hh.fit(setup, callback=lambda g, best, ev: calls.append((g, best, ev)))
+    plain = hh.fit(setup)
+    assert np.array_equal(r.curve.control_points, plain.curve.control_points)
+    assert np.array_equal(r.curve.knots, plain.curve.knots)
+    assert len(calls) > 2 and [c[0] for c in calls] == list(range(len(calls)))
+    assert [c[2] for c in calls] == sorted(c[2] for c in calls)
+    assert calls[-1][1] == r.after.max_deviation and calls[-1][2] == r.fits
+    assert all(c[1] > 0 for c in calls)
 
 
 def test_verbose_prints_one_line_per_generation(capsys):

@@ -341,3 +341,97 @@ def test_progress_json_lines_carry_every_objective():
     single = run("optimise", "--problem", "sphere", "--algorithm", "ga-real", "--generations", "2", "--progress")
     first = json.loads(single.stderr.splitlines()[0])
     assert set(first) == {"generation", "evaluations", "best", "objectives"} and first["objectives"] == [first["best"]]
+
+
+def without_seconds(text):
+    """A run's output with its wall time zeroed (the only member that differs between two runs)."""
+    return re.sub(r'"seconds": [0-9.e+-]+', '"seconds": 0', text)
+
+
+def progress_lines(stderr):
+    lines = [json.loads(line) for line in stderr.splitlines()]
+    generations = [line["generation"] for line in lines]
+    evaluations = [line["evaluations"] for line in lines]
+    assert generations == list(range(len(lines))), generations
+    assert evaluations == sorted(evaluations) and evaluations[-1] > evaluations[0], evaluations
+    return lines
+
+
+def test_progress_of_nelder_mead_and_pagmo():
+    # checks --progress on nelder-mead (a generation per simplex iteration, then the final simplex) and on
+    # pagmo's algorithms (a generation per population of evaluations, then the final population): counts
+    # increase, the last line carries the result, and the result is the same with and without the lines
+    cases = [
+        (["--problem", "rosenbrock", "--dimension", "3", "--algorithm", "nelder-mead", "--evaluations", "1500"], None),
+        (["--problem", "sphere", "--dimension", "4", "--algorithm", "pagmo-de", "--population", "20",
+          "--generations", "15", "--seed", "3"], 20),
+        (["--problem", "zdt1", "--algorithm", "pagmo-nsga2", "--population", "24", "--generations", "10"], 24),
+    ]
+    for args, population in cases:
+        quiet = run("optimise", *args)
+        assert quiet.stderr == ""
+        loud = run("optimise", *args, "--progress")
+        assert without_seconds(loud.stdout) == without_seconds(quiet.stdout), args
+        doc = json.loads(loud.stdout)
+        lines = progress_lines(loud.stderr)
+        last = lines[-1]
+        assert last["generation"] == doc["report"]["generations"]
+        assert last["evaluations"] == doc["report"]["evaluations"]
+        if population:
+            assert [line["evaluations"] for line in lines] == [population * (g + 1) for g in range(len(lines))]
+        if "front" in doc:
+            assert last["front_size"] == len(doc["front"])
+            assert last["hypervolume"] == pytest.approx(doc["hypervolume"], rel=1e-12)
+        else:
+            assert last["best"] == doc["best"]["objectives"][0]
+
+
+def last_drawn(seen):
+    """The progress line left on the terminal (the last redraw)."""
+    return seen.replace("\x1b[K", "").replace("\r\n", "\n").split("\r")[-1].strip()
+
+
+def drawn_lines(seen):
+    return [part.strip() for part in seen.replace("\x1b[K", "").replace("\r\n", "\r").split("\r") if part.strip()]
+
+
+def test_progress_line_of_nelder_mead_fit_and_batch_on_a_terminal(tmp_path):
+    # checks the terminal's progress line of `optimise --algorithm nelder-mead`, `fit` (a generation per
+    # candidate curve, then the result's largest deviation and least-squares solves) and `batch` (items
+    # finished, ok, failed, running), ending with the run's figures; the output is the same as on a pipe,
+    # where nothing is drawn
+    args = ["optimise", "--problem", "rosenbrock", "--dimension", "3", "--algorithm", "nelder-mead"]
+    out, seen, code = on_pty(args)
+    assert code == 0
+    doc = json.loads(out)
+    m = re.fullmatch(r"generation (\d+)  evaluations (\d+)  best (\S+)", last_drawn(seen))
+    assert m, seen[-300:]
+    assert int(m.group(1)) == doc["report"]["generations"] and int(m.group(2)) == doc["report"]["evaluations"]
+    assert float(m.group(3)) == pytest.approx(doc["best"]["objectives"][0], rel=1e-12, abs=1e-300)
+
+    fit = ["fit", "--points", str(SOURCE / "examples" / "cli" / "scan.csv"), "-o", str(tmp_path / "fit.json")]
+    out, seen, code = on_pty(fit)
+    assert code == 0
+    piped = run(*fit)
+    assert piped.stderr == "" and out == piped.stdout
+    doc = json.loads(out)
+    drawn = [re.fullmatch(r"generation (\d+)  evaluations (\d+)  best (\S+)", line) for line in drawn_lines(seen)]
+    assert drawn and all(drawn), seen[-300:]
+    generations = [int(d.group(1)) for d in drawn]
+    assert generations == sorted(generations) and len(set(generations)) == len(generations) and generations[-1] > 0
+    assert int(drawn[-1].group(2)) == doc["fits"]
+    assert float(drawn[-1].group(3)) == pytest.approx(doc["after"]["max_deviation"], rel=1e-12)
+
+    shutil.copy(SOURCE / "examples" / "studies" / "fair-knots-7.4-example1.json", tmp_path / "study.json")
+    (tmp_path / "c.json").write_text(json.dumps(
+        {"format": "hula-campaign", "version": 1,
+         "sweep": {"study": "study.json", "seeds": [1, 2],
+                   "settings": [{"method": "ga", "ga": {"population": 20, "generations": 5}}]}}))
+    out, seen, code = on_pty(["batch", str(tmp_path / "c.json")])
+    assert code == 0 and json.loads(out)["ok"] == 2
+    assert seen.count('"finished"') == 2  # the JSON lines, as on a pipe, above the progress line
+    assert re.fullmatch(r"finished 2 of 2  ok 2  failed 0  running 0  seconds [0-9.]+", last_drawn(seen)), seen[-300:]
+    (tmp_path / "c.results.json").unlink()
+    piped = subprocess.run([HULA, "batch", str(tmp_path / "c.json")], capture_output=True, text=True, timeout=300)
+    assert piped.returncode == 0 and "finished 2 of 2" not in piped.stderr
+    assert [json.loads(line)["finished"] for line in piped.stderr.splitlines()] == [1, 2]

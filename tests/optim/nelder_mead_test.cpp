@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <string>
 #include <thread>
 #include <vector>
@@ -102,6 +103,42 @@ TEST(OptimNelderMead, WallTimeEndsTheRun) {
   const NelderMeadResult r = nelder_mead(slow, start, o);
   EXPECT_EQ(r.report.termination, Termination::WallTime) << r.report.message;
   EXPECT_EQ(r.report.generations, 0u);
+}
+
+// checks: the progress callback sees generations 0..report.generations in order with increasing evaluation
+// counts; each generation's best is the history's value of that iteration (the simplex's lowest vertex,
+// recomputed from the reported vertices), the last generation holds the result (x, value) after every
+// evaluation; and the run with the callback is bit for bit the run without it
+TEST(OptimNelderMead, ProgressCallbackReportsEverySimplexAndChangesNothing) {
+  const std::vector<double> start{-1.2, 1.0};
+  std::vector<GenerationLog> seen;
+  NelderMeadOptions o;
+  o.on_generation = [&seen](const GenerationLog& g) { seen.push_back(g); };
+  const NelderMeadResult with = nelder_mead(rosenbrock, start, o);
+  const NelderMeadResult without = nelder_mead(rosenbrock, start);
+  EXPECT_EQ(with.x, without.x);
+  EXPECT_EQ(with.value, without.value);
+  EXPECT_EQ(with.history, without.history);
+  EXPECT_EQ(with.report.evaluations, without.report.evaluations);
+  ASSERT_EQ(seen.size(), with.report.generations + 1);
+  for (std::size_t i = 0; i < seen.size(); ++i) {
+    const GenerationLog& g = seen[i];
+    ASSERT_EQ(g.generation, i);
+    ASSERT_EQ(g.size(), 3u);
+    ASSERT_EQ(g.dimension, 2u);
+    if (i > 0) {
+      EXPECT_GE(g.evaluations, seen[i - 1].evaluations) << i;
+    }
+    // every reported value is f at its reported vertex
+    for (std::size_t k = 0; k < 3; ++k)
+      EXPECT_EQ(g.objective_values[k], rosenbrock(std::span<const double>(g.variables.data() + 2 * k, 2))) << i;
+    if (i < with.history.size()) {
+      EXPECT_EQ(statistics(g).best, with.history[i]) << i;
+    }
+  }
+  EXPECT_GT(seen.back().evaluations, seen.front().evaluations);
+  EXPECT_EQ(seen.back().evaluations, with.report.evaluations);
+  EXPECT_EQ(statistics(seen.back()).best, with.value);
 }
 
 // checks: the documented errors name the input at fault

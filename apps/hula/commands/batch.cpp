@@ -15,11 +15,11 @@
 // results file atomically after every finished item, so an interrupted
 // campaign resumes where it stopped: items already in the results file are
 // skipped; an item's "finished" line is printed once its record is in the
-// file. A failed item is recorded with its exit code and error and the rest
-// go on; the exit code is 0 only when every item succeeded. The children die
-// with the campaign (PR_SET_PDEATHSIG), and what a killed campaign left (its
-// study copies, its scratch folder) is removed by the next one. The campaign
-// and results files are io/campaign_file.hpp's; this file runs the items.
+// file. On a terminal a progress line below those lines counts the items
+// finished, ok, failed and running (study_common.hpp TerminalProgress). A failed item is recorded with its exit code
+// and error and the rest go on; the exit code is 0 only when every item succeeded. The children die with the campaign
+// (PR_SET_PDEATHSIG), and what a killed campaign left (its study copies, its scratch folder) is removed by the next
+// one. The campaign and results files are io/campaign_file.hpp's; this file runs the items.
 #include <fcntl.h>
 #include <sys/prctl.h>
 #include <sys/wait.h>
@@ -41,6 +41,7 @@
 #include <vector>
 
 #include "commands/common.hpp"
+#include "commands/study_common.hpp"
 #include "hula/core/error.hpp"
 #include "hula/io/atomic_file.hpp"
 #include "hula/io/campaign_file.hpp"
@@ -132,8 +133,8 @@ Json finish_item(const std::vector<io::CampaignItem>& items, const Running& r, i
 // The campaign's bookkeeping on the process that writes the results.
 class Results {
  public:
-  Results(fs::path path, const std::vector<io::CampaignItem>& items, std::string campaign)
-      : path_(std::move(path)), items_(items), campaign_(std::move(campaign)) {
+  Results(fs::path path, const std::vector<io::CampaignItem>& items, std::string campaign, TerminalProgress& terminal)
+      : path_(std::move(path)), items_(items), campaign_(std::move(campaign)), terminal_(&terminal) {
     done_ = io::read_campaign_results(path_);
   }
   [[nodiscard]] bool done(const std::string& id) const { return done_.contains(id); }
@@ -144,13 +145,13 @@ class Results {
     if (j["status"] != "ok") ++failed_;
     ++finished_;
     write();  // before the line: a kill right after "finished" must not lose the item's record
-    std::cerr << Json{{"finished", finished_},
-                      {"id", j["id"]},
-                      {"status", j["status"]},
-                      {"rank", j["rank"]},
-                      {"seconds", j["seconds"]}}
-                     .dump()
-              << '\n';
+    terminal_->print(Json{
+        {"finished", finished_},
+        {"id", j["id"]},
+        {"status", j["status"]},
+        {"rank", j["rank"]},
+        {"seconds",
+         j["seconds"]}}.dump());
   }
   void write() const { io::write_file_atomically(path_, io::campaign_results_text(campaign_, items_, done_)); }
   [[nodiscard]] Json summary(double seconds, int ranks) const {
@@ -166,6 +167,7 @@ class Results {
                 {"results", path_.string()}};
   }
   [[nodiscard]] std::size_t failed() const { return failed_; }
+  [[nodiscard]] std::size_t finished() const { return finished_; }
 
  private:
   fs::path path_;
@@ -173,7 +175,20 @@ class Results {
   std::string campaign_;
   std::map<std::string, Json> done_;
   std::size_t finished_ = 0, failed_ = 0, skipped_ = 0;
+  TerminalProgress* terminal_;
 };
+
+// The terminal's progress line of a campaign: "finished 3 of 8  ok 2  failed 1  running 2  seconds 12.4"
+// (of the items this run makes; skipped ones are not counted).
+std::string campaign_line(const Results& results, std::size_t to_run, std::size_t running,
+                          std::chrono::steady_clock::time_point start) {
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  char elapsed[32];
+  std::snprintf(elapsed, sizeof elapsed, "%.1f", seconds);
+  return "finished " + std::to_string(results.finished()) + " of " + std::to_string(to_run) + "  ok " +
+         std::to_string(results.finished() - results.failed()) + "  failed " + std::to_string(results.failed()) +
+         "  running " + std::to_string(running) + "  seconds " + elapsed;
+}
 
 // Waits a little for any of `running` to end; returns its index in `running` and status, if one did.
 std::optional<std::pair<std::size_t, int>> reap(const std::vector<Running>& running) {
@@ -224,7 +239,8 @@ int run_batch(const BatchArgs& a) {
     fs::remove_all(scratch, ec);
     return kExitOk;
   }
-  Results results(results_path, items, campaign.string());
+  TerminalProgress terminal;
+  Results results(results_path, items, campaign.string(), terminal);
   std::vector<std::size_t> todo;
   for (std::size_t i = 0; i < items.size(); ++i) {
     if (results.done(items[i].id))
@@ -235,7 +251,8 @@ int run_batch(const BatchArgs& a) {
   std::size_t next = 0;
   std::vector<Running> running;
   const std::size_t local_slots = a.jobs;
-  int remote_active = ranks - 1;  // workers still to be told to stop
+  int remote_active = ranks - 1;   // workers still to be told to stop
+  std::size_t remote_running = 0;  // items handed to workers whose record has not come back
   while (next < todo.size() || !running.empty() || remote_active > 0) {
     bool busy = false;
     while (running.size() < local_slots && next < todo.size()) {
@@ -254,18 +271,26 @@ int run_batch(const BatchArgs& a) {
     }
     if (remote_active > 0) {
       if (const std::optional<oli::CampaignRanks::Request> request = job->poll()) {
-        if (!request->record.empty()) results.record(Json::parse(request->record));
+        if (!request->record.empty()) {
+          results.record(Json::parse(request->record));
+          --remote_running;
+        }
         std::optional<std::size_t> index;
-        if (next < todo.size())
+        if (next < todo.size()) {
           index = todo[next++];
-        else
+          ++remote_running;
+        } else {
           --remote_active;
+        }
         job->reply(request->worker, index);
         busy = true;
       }
     }
+    if (terminal.active()) terminal.show(campaign_line(results, todo.size(), running.size() + remote_running, start));
     if (!busy) std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
+  if (terminal.active()) terminal.show(campaign_line(results, todo.size(), 0, start));
+  terminal.finish();
   results.write();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   job.reset();  // leaves the MPI job

@@ -3,7 +3,8 @@
 // chapter 3). Takes a "fit" study file, or the points and settings as options;
 // writes the faired curve, prints the figures before and after fairing with the
 // strays by index, and with --svg draws the cloud with the curve and the
-// curvature plot before and after fairing.
+// curvature plot before and after fairing. On a terminal a progress line
+// follows the search (study_common.hpp TerminalProgress).
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -65,7 +66,13 @@ int run_fit(const FitArgs& a) {
   if (a.min_degree) study.options.min_degree = *a.min_degree;
   if (a.ordered) study.options.ordered = true;
   if (a.no_fair) study.options.fair = false;
-  const studies::ScanFitResult r = studies::fit_scan(study.points, study.options);
+  // On a terminal, the search's progress line: one generation per candidate curve, its best the
+  // candidate's largest deviation, its evaluations the least-squares solves (then the result's).
+  TerminalProgress progress;
+  studies::ScanFitOptions options = study.options;
+  if (progress.active()) options.on_generation = [&progress](const optim::GenerationLog& g) { progress.show(g); };
+  const studies::ScanFitResult r = studies::fit_scan(study.points, options);
+  progress.finish();
   io::write_curve_file(a.output, r.faired);
   if (a.save_study) io::write_file_atomically(*a.save_study, fit_study_to_json(study).dump(2) + "\n");
   if (a.svg) {

@@ -128,7 +128,6 @@ io::SolverRequest solver_request(const OptimiseArgs& a, std::optional<io::RunLog
   q.time = a.time;
   q.islands = a.islands.islands > 0;
   q.log = a.log.has_value();
-  q.progress = a.progress;
   q.cancel = &interrupt_token();
   if (a.log || a.progress || terminal.active())
     q.on_generation = [&a, &log, &terminal, &reference](const optim::GenerationLog& g) {

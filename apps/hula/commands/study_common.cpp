@@ -97,26 +97,57 @@ TerminalProgress::~TerminalProgress() {
 
 void TerminalProgress::finish() {
   if (!active_) return;
-  if (pending_) draw(*pending_);
+  if (pending_)
+    draw(io::generation_progress_line(*pending_, reference_));
+  else if (pending_line_)
+    draw(*pending_line_);
   if (drawn_) std::cerr << '\n' << std::flush;
   active_ = false;
 }
 
-void TerminalProgress::show(const optim::GenerationLog& g) {
-  if (!active_) return;
+bool TerminalProgress::too_soon() const {
   constexpr auto kRedraw = std::chrono::milliseconds(100);
-  if (drawn_ && std::chrono::steady_clock::now() - last_ < kRedraw) {
-    pending_ = g;
-    return;
-  }
-  draw(g);
+  return drawn_ && std::chrono::steady_clock::now() - last_ < kRedraw;
 }
 
-void TerminalProgress::draw(const optim::GenerationLog& g) {
+void TerminalProgress::show(const optim::GenerationLog& g) {
+  if (!active_) return;
+  if (too_soon()) {
+    pending_ = g;
+    pending_line_.reset();
+    return;
+  }
+  draw(io::generation_progress_line(g, reference_));
+}
+
+void TerminalProgress::show(std::string line) {
+  if (!active_) return;
+  if (too_soon()) {
+    pending_line_ = std::move(line);
+    pending_.reset();
+    return;
+  }
+  draw(line);
+}
+
+void TerminalProgress::print(const std::string& text) {
+  if (!active_) {
+    std::cerr << text << '\n' << std::flush;
+    return;
+  }
+  // Erase the progress line, write the text on it, and draw the progress line again below.
+  std::cerr << "\r\x1b[K" << text << '\n';
+  if (drawn_) std::cerr << line_ << "\x1b[K";
+  std::cerr << std::flush;
+}
+
+void TerminalProgress::draw(const std::string& line) {
   // Carriage return, the line, erase to the end of the line: the line is redrawn in place.
-  std::cerr << '\r' << io::generation_progress_line(g, reference_) << "\x1b[K" << std::flush;
+  std::cerr << '\r' << line << "\x1b[K" << std::flush;
+  line_ = line;
   drawn_ = true;
   pending_.reset();
+  pending_line_.reset();
   last_ = std::chrono::steady_clock::now();
 }
 

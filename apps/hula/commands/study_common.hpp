@@ -65,9 +65,9 @@ class InterruptGuard {
 
 /// The progress line of a long run on a terminal: when standard error is a terminal, each generation's
 /// io::generation_progress_line (generation, evaluations, best; with several objectives the front size
-/// and hypervolume) redraws one line of stderr, at most every 0.1 s, and the last generation's line stays,
-/// ended by a newline, when the run ends. When stderr is not a terminal (a pipe, a file, a CI log)
-/// nothing is written.
+/// and hypervolume), or a line of the caller's (`hula batch`'s item counts), redraws one line of stderr,
+/// at most every 0.1 s, and the last line stays, ended by a newline, when the run ends. When stderr is
+/// not a terminal (a pipe, a file, a CI log) nothing is drawn.
 class TerminalProgress {
  public:
   /// `reference`: the hypervolume reference (empty: none); `enabled` false: never active.
@@ -79,16 +79,25 @@ class TerminalProgress {
   [[nodiscard]] bool active() const noexcept { return active_; }
   /// Shows `g` (or keeps it for the final line when the last redraw is too recent).
   void show(const optim::GenerationLog& g);
-  /// Draws the last generation kept and ends the line (before the result is printed); idempotent.
+  /// Shows `line` (or keeps it for the final line when the last redraw is too recent).
+  void show(std::string line);
+  /// Writes `text` and a newline on stderr, terminal or not; on a terminal above the progress line, which
+  /// is drawn again below it.
+  void print(const std::string& text);
+  /// Draws the last line kept and ends the line (before the result is printed); idempotent.
   void finish();
 
  private:
-  void draw(const optim::GenerationLog& g);
+  [[nodiscard]] bool too_soon() const;
+  void draw(const std::string& line);
   bool active_ = false;
   std::vector<double> reference_;
   std::chrono::steady_clock::time_point last_{};
   bool drawn_ = false;
+  std::string line_;  // the line on screen
+  // What came too soon after the last redraw: a generation (formatted only if drawn) or a line.
   std::optional<optim::GenerationLog> pending_;
+  std::optional<std::string> pending_line_;
 };
 
 /// Adds STUDY (positional, required), --seed, --threads, --time, --log and --svg to `sub`.

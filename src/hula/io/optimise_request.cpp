@@ -69,18 +69,17 @@ optim::SolverOptions solver_options(const SolverRequest& q) {
     refuse(q.mutation.has_value(), "mutation", q.algorithm);
     refuse(q.threads.value_or(1) != 1, "threads", q.algorithm);
     refuse(q.log, "log", q.algorithm);
-    refuse(q.progress, "progress", q.algorithm);
     refuse(q.islands, "islands", q.algorithm);
     if (q.evaluations) m->max_evaluations = *q.evaluations;
     if (q.time) m->wall_time_seconds = *q.time;
     m->cancel = q.cancel;
+    m->on_generation = q.on_generation;  // progress: one generation per simplex iteration
   } else {
-    // pagmo runs its own loop: no per-generation callback, stop criteria,
-    // cancellation or evaluation threads reach it through the adapter.
+    // pagmo runs its own loop: no stop criteria, cancellation or evaluation threads reach it through the
+    // adapter; its progress is counted from its evaluations (PagmoOptions::on_generation).
     refuse(q.evaluations.has_value(), "evaluations", q.algorithm);
     refuse(q.time.has_value(), "time", q.algorithm);
     refuse(q.log, "log", q.algorithm);
-    refuse(q.progress, "progress", q.algorithm);
     refuse(q.crossover.has_value(), "crossover", q.algorithm);
     refuse(q.mutation.has_value(), "mutation", q.algorithm);
     refuse(q.threads.value_or(1) != 1, "threads", q.algorithm);
@@ -89,6 +88,7 @@ optim::SolverOptions solver_options(const SolverRequest& q) {
     if (q.population) p.population = *q.population;
     if (q.generations) p.generations = *q.generations;
     p.seed = q.seed.value_or(0);
+    p.on_generation = q.on_generation;
   }
   return named;
 }

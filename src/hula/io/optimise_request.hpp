@@ -34,7 +34,6 @@ struct SolverRequest {
   std::optional<double> time{};                      ///< wall-time limit, seconds
   bool islands = false;                              ///< an island run is asked for
   bool log = false;                                  ///< a per-generation log is asked for
-  bool progress = false;                             ///< per-generation progress is asked for
   const optim::CancellationToken* cancel = nullptr;
   optim::GenerationCallback on_generation{};
 };
@@ -42,8 +41,10 @@ struct SolverRequest {
 /// The algorithm's options: its defaults (optim::solver_from_name) with the request's settings. A budget of
 /// evaluations also bounds the generations (evaluations / population), so the binary GA's boosting schedule
 /// spans what the budget allows. Settings the algorithm does not take are refused, never ignored:
-/// Nelder–Mead takes no population, generations, seed, operators, threads, log, progress or islands; pagmo's
-/// take no evaluations, time, log, progress, operators, threads or islands; only ga-binary takes boost.
+/// Nelder–Mead takes no population, generations, seed, operators, threads, log or islands; pagmo's take no
+/// evaluations, time, log, operators, threads or islands; only ga-binary takes boost. Every algorithm takes
+/// progress and on_generation (Nelder–Mead: a generation per simplex iteration; pagmo's: per `population`
+/// evaluations, optim::PagmoOptions::on_generation).
 /// @throws hula::Error(Errc::InvalidOption) naming the refused setting ("--population is not supported by
 ///   algorithm nelder-mead"); as optim::solver_from_name
 [[nodiscard]] optim::SolverOptions solver_options(const SolverRequest& request);

@@ -58,6 +58,23 @@ NelderMeadResult nelder_mead(const ObjectiveFn& f, std::span<const double> start
   std::vector<double> centroid(n), trial(n), trial2(n);
   auto vertex = [&](std::size_t k) { return std::span<double>(simplex.data() + k * n, n); };
   RunReport& report = result.report;
+  // The simplex as one generation of the progress callback (generation_log.generation set by the caller).
+  GenerationLog generation_log;
+  const auto report_simplex = [&](std::size_t generation) {
+    if (!options.on_generation) return;
+    GenerationLog& g = generation_log;
+    g.generation = generation;
+    g.evaluations = report.evaluations;
+    g.dimension = n;
+    g.objectives = 1;
+    g.variables = simplex;
+    g.objective_values = values;
+    g.violation.assign(n + 1, 0.0);
+    g.fitness = values;
+    g.failed.resize(n + 1);
+    for (std::size_t k = 0; k <= n; ++k) g.failed[k] = std::isfinite(values[k]) ? 0 : 1;
+    options.on_generation(g);
+  };
   auto eval = [&](std::span<const double> x) {
     ++report.evaluations;
     const double v = f(x);
@@ -104,6 +121,7 @@ NelderMeadResult nelder_mead(const ObjectiveFn& f, std::span<const double> start
       const std::size_t hi = order[n];
       const std::size_t second = order[n - 1];
       result.history.push_back(values[lo]);
+      report_simplex(result.history.size() - 1);
       // Convergence test.
       double x_spread = 0.0;
       for (std::size_t k = 0; k <= n; ++k) {
@@ -167,6 +185,9 @@ NelderMeadResult nelder_mead(const ObjectiveFn& f, std::span<const double> start
     // A restart that found nothing better ends the run.
     if (round > 0 && !(best_value < round_start - options.f_tolerance)) break;
   }
+  // The last generation: the final simplex (it holds the best point: a round starts from it and never
+  // loses its lowest vertex).
+  report_simplex(result.history.size());
   result.x = std::move(best);
   result.value = best_value;
   report.generations = result.history.size();

@@ -13,6 +13,7 @@
 #include <span>
 #include <vector>
 
+#include "hula/optim/run_log.hpp"
 #include "hula/optim/run_report.hpp"
 
 namespace hula::optim {
@@ -46,6 +47,13 @@ struct NelderMeadOptions {
   /// A deadline shared with the other runs of a command (its `--time`); the run ends with the best
   /// point so far and Termination::WallTime once it passes. Default none.
   Deadline deadline{};
+  /// Called on the caller's thread with the simplex after each iteration (its n + 1 vertices as the
+  /// population, one objective; a vertex whose value is NaN or +inf is flagged failed): generation i is
+  /// the simplex iteration i starts from (0 = the first simplex), then one last generation,
+  /// NelderMeadResult::report.generations, holds the final simplex (it contains the best point).
+  /// `evaluations` counts f's calls so far. It only reads: the run is the same with or without it. Default
+  /// none.
+  GenerationCallback on_generation{};
   /// @throws hula::Error(Errc::InvalidOption) naming the field and its value.
   void validate() const;
 };

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "hula/optim/problem.hpp"
+#include "hula/optim/run_log.hpp"
 #include "hula/optim/solution.hpp"
 
 namespace hula::optim {
@@ -42,6 +43,15 @@ struct PagmoOptions {
   std::size_t generations = 100;
   /// Seed of pagmo's population and algorithm. Default 0.
   std::uint64_t seed = 0;
+  /// Called on the caller's thread once per generation. pagmo runs its own loop, so a generation is
+  /// counted by its evaluations (each of these algorithms evaluates `population` points per generation):
+  /// generation 0 is the initial population, generation g ≥ 1 the `population` points evaluated g-th
+  /// (the offspring, trial vectors or samples of pagmo's generation g), and the last generation is the
+  /// final population pagmo returns (for several objectives, the front the result is drawn from; for one
+  /// objective pagmo's champion, the result, is its best member except with CMA-ES, whose population holds
+  /// the last samples). Failed evaluations are flagged failed; violation 0; fitness NaN (pagmo's own
+  /// ranking is not exposed). It only reads: the run is the same with or without it. Default none.
+  GenerationCallback on_generation{};
 
   /// @throws hula::Error(Errc::InvalidOption) naming the field and value if
   ///   population or generations is 0.

@@ -26,9 +26,45 @@
 namespace hula::optim {
 namespace {
 
+// One generation of the progress callback, gathered evaluation by evaluation (PagmoOptions::on_generation):
+// the points evaluated since the last full generation, handed over when the next evaluation starts (so the
+// last one, which the final population replaces, is never sent).
+struct Window {
+  const GenerationCallback* callback = nullptr;
+  std::size_t population = 0;
+  std::size_t evaluations = 0;
+  GenerationLog log{};
+
+  void add(const pagmo::vector_double& x, const pagmo::vector_double& values, std::size_t objectives, bool ok) {
+    ++evaluations;
+    if (callback == nullptr || !*callback) return;
+    if (log.size() == population) {
+      (*callback)(log);
+      ++log.generation;
+      clear();
+    }
+    log.evaluations = evaluations;
+    log.variables.insert(log.variables.end(), x.begin(), x.end());
+    log.objective_values.insert(log.objective_values.end(), values.begin(),
+                                values.begin() + static_cast<std::ptrdiff_t>(objectives));
+    log.violation.push_back(0.0);
+    log.fitness.push_back(std::numeric_limits<double>::quiet_NaN());
+    log.failed.push_back(ok ? 0 : 1);
+  }
+  void clear() {
+    log.variables.clear();
+    log.objective_values.clear();
+    log.violation.clear();
+    log.fitness.clear();
+    log.failed.clear();
+  }
+};
+
 struct Counters {
   std::atomic<std::size_t> failed{0};
   std::atomic<std::size_t> succeeded{0};
+  // pagmo's algorithms here call the problem's fitness serially, on the thread that called evolve.
+  Window window{};
 };
 
 // pagmo user-defined problem wrapping a Flexo Problem. pagmo orders the
@@ -57,6 +93,7 @@ struct Udp {
     } else {
       ++counters->succeeded;
     }
+    counters->window.add(x, values, p.objectives, ok);
     pagmo::vector_double out(values.size());
     const std::size_t m = p.objectives;
     const std::size_t ni = p.inequality_constraints;
@@ -124,11 +161,32 @@ HULA_PLUGIN_EXPORT void hula_pagmo_run(const hula::optim::Problem& problem, cons
                                        hula::optim::detail::PagmoRun& run) {
   using namespace hula::optim;
   auto counters = std::make_shared<Counters>();
+  counters->window.callback = &options.on_generation;
+  counters->window.population = options.population;
+  counters->window.log.dimension = problem.dimension();
+  counters->window.log.objectives = problem.objectives;
   pagmo::problem prob(Udp{&problem, counters});
   pagmo::population pop(prob, options.population, options.seed);
   pagmo::algorithm algo = make_algorithm(options);
   pop = algo.evolve(pop);
   run.result.report.evaluations = static_cast<std::size_t>(pop.get_problem().get_fevals());
+  if (options.on_generation) {
+    // The last generation: the final population (no constraints here: pagmo's fitness is the objectives).
+    GenerationLog& last = counters->window.log;
+    counters->window.clear();
+    last.evaluations = run.result.report.evaluations;
+    for (std::size_t i = 0; i < pop.size(); ++i) {
+      const pagmo::vector_double& f = pop.get_f()[i];
+      const pagmo::vector_double& x = pop.get_x()[i];
+      last.variables.insert(last.variables.end(), x.begin(), x.end());
+      last.objective_values.insert(last.objective_values.end(), f.begin(),
+                                   f.begin() + static_cast<std::ptrdiff_t>(problem.objectives));
+      last.violation.push_back(0.0);
+      last.fitness.push_back(std::numeric_limits<double>::quiet_NaN());
+      last.failed.push_back(f[0] == std::numeric_limits<double>::max() ? 1 : 0);
+    }
+    options.on_generation(last);
+  }
   run.succeeded = counters->succeeded;
   run.failed = counters->failed;
   if (run.succeeded == 0) return;

@@ -93,6 +93,12 @@ ScanFitResult fit_scan(std::span<const Vec3> points, const ScanFitOptions& optio
   o.fair = options.fair;
   o.bias_limit = std::max(kBiasNoise * order.noise, kBiasFloor * options.tolerance);
   o.fairing_shift = std::min(options.tolerance, std::max(kShiftNoise * order.noise, kShiftFloor * options.tolerance));
+  std::size_t generations = 0;  // the candidates reported, so that the result comes after them
+  if (options.on_generation)
+    o.on_generation = [&](const optim::GenerationLog& g) {
+      generations = g.generation + 1;
+      options.on_generation(g);
+    };
   ToleranceFit fit = fit_within_tolerance(points, order.parameters, left_out, o);
 
   nurbs::NurbsCurve faired = fit.faired;
@@ -140,6 +146,7 @@ ScanFitResult fit_scan(std::span<const Vec3> points, const ScanFitOptions& optio
                        .fits = fit.fits,
                        .before = before,
                        .after = after};
+  if (options.on_generation) options.on_generation(fit_progress(generations, result.fits, after.max_deviation));
   return result;
 }
 

@@ -32,6 +32,7 @@
 
 #include "hula/core/vec.hpp"
 #include "hula/nurbs/nurbs_curve.hpp"
+#include "hula/optim/run_log.hpp"
 #include "hula/studies/point_order.hpp"
 
 namespace hula::studies {
@@ -60,6 +61,11 @@ struct ScanFitOptions {
   std::size_t max_control_points = 200;
   /// Run stage 4 (fairing). Default true.
   bool fair = true;
+  /// Progress of stage 3 (ToleranceFitOptions::on_generation: one generation per candidate curve, its
+  /// best the candidate's largest deviation, its evaluations the least-squares solves so far), then one
+  /// last generation with the result: after.max_deviation and `fits`. It only reads: the result is the
+  /// same with or without it. Default none.
+  optim::GenerationCallback on_generation{};
   /// @throws hula::Error(Errc::InvalidOption) naming the field
   void validate() const;
 };

@@ -478,6 +478,14 @@ struct Problem {
   bool interpolated_ends = false;
   std::size_t first_point = 0, last_point = 0;  // the points of parameter 0 and 1 (interpolated ends)
   std::size_t fits = 0;
+  const optim::GenerationCallback* on_generation = nullptr;
+  std::size_t candidates = 0;  // candidates fitted (the progress callback's generations)
+
+  // Hands a fitted candidate's largest kept deviation to the progress callback.
+  void report(double deviation) {
+    if (on_generation != nullptr && *on_generation) (*on_generation)(fit_progress(candidates, fits, deviation));
+    ++candidates;
+  }
 };
 
 std::vector<Pin> pins_of(const Problem& pb, const Space& s) {
@@ -531,6 +539,7 @@ Candidate fit_space(Problem& pb, const Space& s, std::span<const double> t0, std
     if (rms > (1.0 - (polish ? kPolishStall : kStallFraction)) * previous) break;
     previous = rms;
   }
+  pb.report(best.worst);
   return best;
 }
 
@@ -915,6 +924,18 @@ std::pair<double, double> kept_range(std::span<const double> feet, std::span<con
 
 }  // namespace
 
+optim::GenerationLog fit_progress(std::size_t generation, std::size_t solves, double deviation) {
+  optim::GenerationLog g;
+  g.generation = generation;
+  g.evaluations = solves;
+  g.objectives = 1;
+  g.objective_values = {deviation};
+  g.violation = {0.0};
+  g.fitness = {deviation};
+  g.failed = {0};
+  return g;
+}
+
 ToleranceFit fit_within_tolerance(std::span<const Vec3> points, std::span<const double> parameters,
                                   std::span<const std::uint8_t> left_out, const ToleranceFitOptions& options) {
   options.validate();
@@ -949,6 +970,7 @@ ToleranceFit fit_within_tolerance(std::span<const Vec3> points, std::span<const 
                 ErrorWhere{.field = "points"});
 
   Problem pb{.pts = points, .dim = planar ? 2 : 3, .tol = options.tolerance, .closed = options.closed};
+  pb.on_generation = &options.on_generation;
   pb.interpolated_ends = !options.closed && options.ends == FitEnds::Interpolated;
   if (pb.interpolated_ends) {
     pb.first_point =

@@ -47,6 +47,7 @@
 
 #include "hula/core/vec.hpp"
 #include "hula/nurbs/nurbs_curve.hpp"
+#include "hula/optim/run_log.hpp"
 
 namespace hula::studies {
 
@@ -83,9 +84,19 @@ struct ToleranceFitOptions {
   /// Largest move of the curve by the fairing, at the feet of the kept points, model units; < 0 means
   /// the tolerance. Default −1.
   double fairing_shift = -1.0;
+  /// Progress: called on the caller's thread after each candidate curve is fitted (a refinement round,
+  /// a knot-removal trial, the polish of the chosen fit), as fit_progress(g, solves, deviation) with g
+  /// counting the candidates from 0, `solves` the least-squares solves so far and `deviation` the
+  /// candidate's largest deviation of a kept point. It only reads: the fit is the same with or without
+  /// it. Default none.
+  optim::GenerationCallback on_generation{};
   /// @throws hula::Error(Errc::InvalidOption) naming the field and its value
   void validate() const;
 };
+
+/// One step of a fit as a generation of the progress callback (the type the optimisers report with): one
+/// member, no variables, its one objective `deviation` (model units), feasible; `solves` as evaluations.
+[[nodiscard]] optim::GenerationLog fit_progress(std::size_t generation, std::size_t solves, double deviation);
 
 /// Result of fit_within_tolerance.
 struct ToleranceFit {
