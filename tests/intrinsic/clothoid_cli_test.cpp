@@ -251,8 +251,18 @@ TEST(ClothoidCli, OpenSplineEndAnglesCircleAndErrors) {
   const json ej = json::parse(e.out);
   EXPECT_NEAR(ej["segments"][0]["theta0"].get<double>(), 0.1, 1e-15);
   EXPECT_NEAR(std::remainder(ej["segments"][3]["theta1"].get<double>() - 3.0, 2 * std::numbers::pi), 0.0, 1e-12);
-  for (const auto& args : {std::vector<std::string>{"clothoid", "--points", file, "--start-angle", "1"},
-                           std::vector<std::string>{"clothoid", "--points", file, "--g1", "--g2"},
+  // One end's angle, the other end's curvature: the circle's own values give the circle back.
+  const ProcessResult k = hula({"clothoid", "--points", file, "--end-angle", "4.3707963267948966",  // 2.8 + π/2
+                                "--start-curvature", "0.5"});
+  ASSERT_EQ(k.exit_code, 0) << k.err;
+  for (const json& seg : json::parse(k.out)["segments"]) {
+    EXPECT_NEAR(seg["kappa0"].get<double>(), 0.5, 1e-10);
+    EXPECT_NEAR(seg["dkappa"].get<double>(), 0.0, 1e-10);
+  }
+  const ProcessResult kg1 = hula({"clothoid", "--points", file, "--g1", "--end-curvature", "0.5"});
+  EXPECT_EQ(kg1.exit_code, 3) << kg1.err;
+  EXPECT_EQ(testing::stderr_error(kg1)["where"]["field"], "end_curvature") << kg1.err;
+  for (const auto& args : {std::vector<std::string>{"clothoid", "--points", file, "--g1", "--g2"},
                            std::vector<std::string>{"clothoid", "--points", file, "--end-point", "1,1"},
                            std::vector<std::string>{"clothoid", "--start-point", "0,0", "--start-angle", "0",
                                                     "--end-point", "1,0", "--end-angle", "0", "--closed"}}) {
