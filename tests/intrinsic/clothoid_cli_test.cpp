@@ -127,8 +127,8 @@ TEST(ClothoidCli, G2JoinsAndEnd) {
   EXPECT_NEAR(s[2]["kappa1"].get<double>(), 0.5, 1e-10);
 }
 
-// checks: bad input exits 3 naming the field (coincident points, a 3-number point, --at past the end); one
-// curvature without the other and a missing angle are usage errors (exit 2).
+// checks: bad input exits 3 naming the field (coincident points, a 3-number point, --at past the end, one
+// curvature without the other between two points); a missing angle is a usage error (exit 2).
 TEST(ClothoidCli, ErrorsNameTheInput) {
   struct Case {
     std::vector<std::string> args;
@@ -150,12 +150,14 @@ TEST(ClothoidCli, ErrorsNameTheInput) {
   }
   const ProcessResult at = hula(with({"--end-point", "1,0", "--at", "0,99"}));
   EXPECT_EQ(testing::stderr_error(at)["where"]["index"], 1) << at.err;
-  for (const auto& args : {with({"--end-point", "1,0", "--start-curvature", "1"}),
-                           std::vector<std::string>{"clothoid", "--start-point", "0,0", "--end-point", "1,0"}}) {
-    const ProcessResult r = hula(args);
-    EXPECT_EQ(r.exit_code, 2) << r.err;
-    EXPECT_EQ(testing::stderr_error(r)["code"], "UsageError");
-  }
+  // Between two points one curvature alone names the missing one.
+  const ProcessResult one = hula(with({"--end-point", "1,0", "--start-curvature", "1"}));
+  EXPECT_EQ(one.exit_code, 3) << one.err;
+  EXPECT_EQ(testing::stderr_error(one)["code"], "InvalidArgument") << one.err;
+  EXPECT_EQ(testing::stderr_error(one)["where"]["field"], "end_curvature") << one.err;
+  const ProcessResult r = hula({"clothoid", "--start-point", "0,0", "--end-point", "1,0"});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(testing::stderr_error(r)["code"], "UsageError");
 }
 
 // Writes points "x y" lines to `path`.
