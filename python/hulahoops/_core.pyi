@@ -286,24 +286,24 @@ def biarc(p0: Any, theta0: float, p1: Any, theta1: float) -> object:
 def builtin_problem(name: str, dimension: int = ..., objectives: int = ...) -> dict:
     ...
 
-def clothoid_g1(p0: Any, theta0: float, p1: Any, theta1: float) -> dict:
+def clothoid_g1(p0: Any, theta0: float, p1: Any, theta1: float) -> object:
     """The clothoid from p0 with tangent angle theta0 to p1 with theta1 (radians from +x, counter-clockwise),
-    turning by less than 2 pi (Bertolazzi-Frego G1 Hermite), as `hula clothoid` gives it: a dict with the
-    segment's start, theta0, kappa0, dkappa (dkappa/ds), length and end values (docs/formats.md "Clothoid
-    result"), and the iterations used. Points (x, y) or (x, y, z), z ignored.
+    turning by less than 2 pi (Bertolazzi-Frego G1 Hermite), as `hula clothoid` gives it (io::clothoid_answer):
+    {"kind": "g1", "segments": [one dict with start, theta0, kappa0, dkappa (dkappa/ds), length and end
+    values (docs/formats.md "Clothoid result")], "length", "iterations"}. Points (x, y) or (x, y, z), z ignored.
     """
 
-def clothoid_g2(p0: Any, theta0: float, kappa0: float, p1: Any, theta1: float, kappa1: float) -> dict:
+def clothoid_g2(p0: Any, theta0: float, kappa0: float, p1: Any, theta1: float, kappa1: float) -> object:
     """Three clothoid arcs joined with G2 continuity from (p0, theta0, kappa0) to (p1, theta1, kappa1)
-    (Bertolazzi-Frego 2018), as `hula clothoid` gives them: {"segments": [3 segment dicts as clothoid_g1's],
-    "length", "iterations"}. Curvatures in 1/model units (> 0 turns left).
+    (Bertolazzi-Frego 2018), as `hula clothoid` gives them (io::clothoid_answer): {"kind": "g2", "segments":
+    [3 segment dicts as clothoid_g1's], "length", "iterations"}. Curvatures in 1/model units (> 0 turns left).
     """
 
-def clothoid_spline(points: Any, *, closed: bool = ..., continuity: int = ..., start_angle: Optional[float] = ..., end_angle: Optional[float] = ..., biarc: bool = ...) -> object:
+def clothoid_spline(points: Any, *, closed: bool = ..., continuity: int = ..., start_angle: Optional[float] = ..., end_angle: Optional[float] = ..., biarc: bool = ..., start_curvature: Optional[float] = ..., end_curvature: Optional[float] = ...) -> object:
     """A clothoid spline through (n, 2) points, as `hula clothoid --points` makes it: G2 (curvature continuous,
     continuity=2) or G1 (continuity=1), open or closed; with biarc=True a G1 spline of biarcs (two arcs per
-    interval). Open splines take optional end tangent angles (both or neither; free ends are circular end
-    segments for G2). Returns {"kind", "segments", "length", "iterations", "through", "closed",
+    interval). Open splines take at each end an optional tangent angle or (G2) curvature, 1/model units; an end
+    with neither is a circular end segment for G2. Returns {"kind", "segments", "length", "iterations", "through", "closed",
     "curve"}: "curve" is the curve file (a natural curve held by its curvature law, docs/formats.md).
     """
 

@@ -24,7 +24,6 @@
 #include "hula/diffgeom/analysis.hpp"
 #include "hula/intrinsic/clothoid.hpp"
 #include "hula/intrinsic/natural_equations.hpp"
-#include "hula/io/clothoid_json.hpp"
 #include "hula/io/curve_analysis_json.hpp"
 #include "hula/io/curve_edits.hpp"
 #include "hula/io/exact_curves.hpp"
@@ -625,58 +624,64 @@ void register_geometry(py::module_& m) {
   m.def(
       "clothoid_g1",
       [](py::handle p0, double theta0, py::handle p1, double theta1) {
-        const Vec3 a = as_point(p0, "p0");
-        const Vec3 b = as_point(p1, "p1");
-        const intrinsic::ClothoidG1Result r = intrinsic::fit_clothoid_g1(a, theta0, b, theta1);
-        py::dict d = to_python(io::clothoid_segment_to_json(r.segment));
-        d["iterations"] = r.iterations;
-        return d;
+        io::ClothoidRequest q;
+        q.start_point = as_point(p0, "p0");
+        q.start_angle = theta0;
+        q.end_point = as_point(p1, "p1");
+        q.end_angle = theta1;
+        return to_python(io::clothoid_answer(q).json);
       },
       py::arg("p0"), py::arg("theta0"), py::arg("p1"), py::arg("theta1"),
       "The clothoid from p0 with tangent angle theta0 to p1 with theta1 (radians from +x, counter-clockwise),\n"
-      "turning by less than 2 pi (Bertolazzi-Frego G1 Hermite), as `hula clothoid` gives it: a dict with the\n"
-      "segment's start, theta0, kappa0, dkappa (dkappa/ds), length and end values (docs/formats.md \"Clothoid\n"
-      "result\"), and the iterations used. Points (x, y) or (x, y, z), z ignored.");
+      "turning by less than 2 pi (Bertolazzi-Frego G1 Hermite), as `hula clothoid` gives it (io::clothoid_answer):\n"
+      "{\"kind\": \"g1\", \"segments\": [one dict with start, theta0, kappa0, dkappa (dkappa/ds), length and end\n"
+      "values (docs/formats.md \"Clothoid result\")], \"length\", \"iterations\"}. Points (x, y) or (x, y, z), z "
+      "ignored.");
   m.def(
       "clothoid_g2",
       [](py::handle p0, double theta0, double kappa0, py::handle p1, double theta1, double kappa1) {
-        const Vec3 a = as_point(p0, "p0");
-        const Vec3 b = as_point(p1, "p1");
-        const intrinsic::ClothoidG2Result r = intrinsic::fit_clothoid_g2(a, theta0, kappa0, b, theta1, kappa1);
-        py::dict d = to_python(io::clothoid_spline_to_json(r.segments));
-        d["iterations"] = r.iterations;
-        return d;
+        io::ClothoidRequest q;
+        q.start_point = as_point(p0, "p0");
+        q.start_angle = theta0;
+        q.start_curvature = kappa0;
+        q.end_point = as_point(p1, "p1");
+        q.end_angle = theta1;
+        q.end_curvature = kappa1;
+        return to_python(io::clothoid_answer(q).json);
       },
       py::arg("p0"), py::arg("theta0"), py::arg("kappa0"), py::arg("p1"), py::arg("theta1"), py::arg("kappa1"),
       "Three clothoid arcs joined with G2 continuity from (p0, theta0, kappa0) to (p1, theta1, kappa1)\n"
-      "(Bertolazzi-Frego 2018), as `hula clothoid` gives them: {\"segments\": [3 segment dicts as clothoid_g1's],\n"
-      "\"length\", \"iterations\"}. Curvatures in 1/model units (> 0 turns left).");
+      "(Bertolazzi-Frego 2018), as `hula clothoid` gives them (io::clothoid_answer): {\"kind\": \"g2\", \"segments\":\n"
+      "[3 segment dicts as clothoid_g1's], \"length\", \"iterations\"}. Curvatures in 1/model units (> 0 turns left).");
 
   m.def(
       "clothoid_spline",
       [](py::handle points, bool closed, int continuity, std::optional<double> start_angle,
-         std::optional<double> end_angle, bool biarc) {
+         std::optional<double> end_angle, bool biarc, std::optional<double> start_curvature,
+         std::optional<double> end_curvature) {
         io::ClothoidRequest q;
         q.points = as_points(points, "points", 2).points;
         q.closed = closed;
         q.biarc = biarc;
         if (!biarc) q.continuity = continuity;
-        if (start_angle.has_value() != end_angle.has_value())
-          throw Error(Errc::InvalidArgument, "start_angle and end_angle go together",
-                      ErrorWhere{.field = start_angle ? "end_angle" : "start_angle"});
-        q.end_angles = start_angle.has_value();
+        q.spline_start_angle = start_angle.has_value();
+        q.spline_end_angle = end_angle.has_value();
         q.start_angle = start_angle.value_or(0.0);
         q.end_angle = end_angle.value_or(0.0);
+        q.start_curvature = start_curvature;
+        q.end_curvature = end_curvature;
         io::ClothoidAnswer a = io::clothoid_answer(q);
         a.json["curve"] = io::curve_to_json(io::clothoid_curve(a.segments, curve::kNaturalTolerance));
         return to_python(a.json);
       },
       py::arg("points"), py::kw_only(), py::arg("closed") = false, py::arg("continuity") = 2,
       py::arg("start_angle") = py::none(), py::arg("end_angle") = py::none(), py::arg("biarc") = false,
+      py::arg("start_curvature") = py::none(), py::arg("end_curvature") = py::none(),
       "A clothoid spline through (n, 2) points, as `hula clothoid --points` makes it: G2 (curvature continuous,\n"
       "continuity=2) or G1 (continuity=1), open or closed; with biarc=True a G1 spline of biarcs (two arcs per\n"
-      "interval). Open splines take optional end tangent angles (both or neither; free ends are circular end\n"
-      "segments for G2). Returns {\"kind\", \"segments\", \"length\", \"iterations\", \"through\", \"closed\",\n"
+      "interval). Open splines take at each end an optional tangent angle or (G2) curvature, 1/model units; an end\n"
+      "with neither is a circular end segment for G2. Returns {\"kind\", \"segments\", \"length\", \"iterations\", "
+      "\"through\", \"closed\",\n"
       "\"curve\"}: \"curve\" is the curve file (a natural curve held by its curvature law, docs/formats.md).");
   m.def(
       "biarc",

@@ -107,10 +107,10 @@ def test_approximate_collinear_points_is_the_line():
 def test_clothoid_g1_closed_forms():
     # checks G1 Hermite data of a quarter of the unit circle gives that arc (kappa 1, dkappa 0, length pi/2)
     # and collinear data the segment (kappa 0, length 2)
-    arc = hh.clothoid_g1([0, 0], 0.0, [1, 1], np.pi / 2)
+    arc = hh.clothoid_g1([0, 0], 0.0, [1, 1], np.pi / 2)["segments"][0]
     assert arc["kappa0"] == pytest.approx(1, abs=1e-12) and arc["dkappa"] == pytest.approx(0, abs=1e-12)
     assert arc["length"] == pytest.approx(np.pi / 2, rel=1e-13)
-    line = hh.clothoid_g1([0, 0], 0.0, [2, 0], 0.0)
+    line = hh.clothoid_g1([0, 0], 0.0, [2, 0], 0.0)["segments"][0]
     assert line["kappa0"] == 0 and line["dkappa"] == 0 and line["length"] == pytest.approx(2, rel=1e-15)
 
 
@@ -165,8 +165,24 @@ def test_clothoid_spline_closed_g2_and_biarcs(tmp_path):
     one = hh.biarc([0, 0], 0.4, [2, 0], -0.4)
     assert [s["kappa0"] for s in one["segments"]] == pytest.approx([-np.sin(0.4)] * 2, abs=1e-15)
     with pytest.raises(hh.InvalidArgumentError) as e:
-        hh.clothoid_spline(pts, start_angle=0.3)
-    assert e.value.where["field"] == "end_angle"
+        hh.clothoid_spline(pts, closed=True, start_curvature=0.3)
+    assert e.value.where["field"] == "start_curvature"
+
+
+def test_clothoid_spline_end_curvatures_reproduce_a_circle():
+    # checks points on a circle of radius 2 with the curvature 0.5 given at one or both ends (an angle at the
+    # other) give that circle: kappa 0.5 and dkappa 0 on every segment, the length 2 times the angle swept
+    t = [0.1, 0.8, 1.5, 2.6, 3.0]
+    pts = [[2 * np.cos(a), 2 * np.sin(a)] for a in t]
+    for ends in ({"start_curvature": 0.5, "end_curvature": 0.5}, {"end_curvature": 0.5},
+                 {"start_angle": 0.1 + np.pi / 2, "end_curvature": 0.5}):
+        r = hh.clothoid_spline(pts, **ends)
+        for s in r["segments"]:
+            assert s["kappa0"] == pytest.approx(0.5, abs=1e-11) and s["dkappa"] == pytest.approx(0, abs=1e-11)
+        assert r["length"] == pytest.approx(2 * (3.0 - 0.1), rel=1e-11)
+    with pytest.raises(hh.InvalidArgumentError) as e:
+        hh.clothoid_spline(pts, start_angle=0.3, start_curvature=0.5)
+    assert e.value.where["field"] == "start_curvature"
 
 
 def test_fit_is_the_cli_fit(tmp_path):

@@ -265,24 +265,59 @@ WALK = [[0, 0], [1.2, 0.4], [2.0, 1.5], [3.1, 1.7], [3.9, 0.8], [5.2, 0.6]]
 def clothoids(hula, server, failures, folder):
     out = str(pathlib.Path(folder) / "clothoid.json")
     loop = seeded_points(26, 7, 2)
-    cases = [("walk", WALK, False, "g2"), ("walk", WALK, False, "g1"), ("loop", loop, True, "g2"),
-             ("loop", loop, True, "biarc")]
-    for name, points, closed, fit in cases:
+    # The ends of an open spline: (start angle, end angle, start curvature, end curvature), None = free.
+    free = (None, None, None, None)
+    cases = [("walk", WALK, False, "g2", free), ("walk", WALK, False, "g1", free), ("loop", loop, True, "g2", free),
+             ("loop", loop, True, "biarc", free), ("walk", WALK, False, "g2", (None, None, 0.0, -0.4)),
+             ("walk", WALK, False, "g2", (0.3, None, None, 0.5))]
+    for name, points, closed, fit, (a0, a1, k0, k1) in cases:
         source = pathlib.Path(folder) / f"{name}.clothoid-points.json"
         source.write_text(json.dumps(points))
-        cli = run(hula, "clothoid", "--points", str(source), f"--{fit}", *(["--closed"] if closed else []), "-o", out)
+        ends = {"start_angle": a0, "end_angle": a1, "start_curvature": k0, "end_curvature": k1}
+        ends = {key: value for key, value in ends.items() if value is not None}
+        flags = [f"--{key.replace('_', '-')}={value!r}" for key, value in ends.items()]
+        cli = run(hula, "clothoid", "--points", str(source), f"--{fit}", *(["--closed"] if closed else []), *flags,
+                  "-o", out)
         del cli["output"]
         cli["curve"] = json.loads(pathlib.Path(out).read_text())
-        http = post(server, "/api/clothoid", {"points": points, "closed": closed, "fit": fit})
+        http = post(server, "/api/clothoid", {"points": points, "closed": closed, "fit": fit, **ends})
         py = plain(hh.clothoid_spline(points, closed=closed, biarc=fit == "biarc",
-                                      continuity=1 if fit == "g1" else 2))
+                                      continuity=1 if fit == "g1" else 2, **ends))
         compare(failures, f"clothoid {name} {fit}", [("CLI", cli), ("HTTP", http), ("Python", py)])
         # Independent fact: every segment ends on its data point.
         per = 2 if fit == "biarc" else 1
         for i, seg in enumerate(http["segments"][per - 1::per]):
             if math.dist(seg["end"], points[(i + 1) % len(points)]) > 1e-9:
                 failures.append(f"clothoid {name} {fit}: segment {i} ends at {seg['end']}, not on its point")
-    return len(cases)
+        # Independent fact: the given end curvatures are the spline's (the segments' own end values).
+        if k0 is not None and abs(http["segments"][0]["kappa0"] - k0) > 1e-9:
+            failures.append(f"clothoid {name}: start curvature {http['segments'][0]['kappa0']}, not {k0}")
+        if k1 is not None and abs(http["segments"][-1]["kappa1"] - k1) > 1e-9:
+            failures.append(f"clothoid {name}: end curvature {http['segments'][-1]['kappa1']}, not {k1}")
+    # The Hermite problems: hulahoops.clothoid_g1 / clothoid_g2 / biarc answer as `hula clothoid` prints and
+    # POST /api/clothoid answers (the route adds the curve file, "curve").
+    hermite = [("g1", [0.0, 0.0], 0.3, None, [3.0, 1.0], -0.5, None),
+               ("biarc", [0.0, 0.0], 0.3, None, [3.0, 1.0], -0.5, None),
+               ("g2", [-2.0, 3.0], math.pi / 3, -0.2, [3.0, 2.0], -math.pi / 4, 0.5)]
+    for kind, p0, a0, k0, p1, a1, k1 in hermite:
+        body = {"start_point": p0, "start_angle": a0, "end_point": p1, "end_angle": a1}
+        if k0 is not None:
+            body.update(start_curvature=k0, end_curvature=k1)
+        flags = [f"--{key.replace('_', '-')}={','.join(map(repr, v)) if isinstance(v, list) else repr(v)}"
+                 for key, v in body.items()]
+        cli = run(hula, "clothoid", *flags, *(["--biarc"] if kind == "biarc" else []))
+        http = post(server, "/api/clothoid", {**body, **({"fit": "biarc"} if kind == "biarc" else {})})
+        del http["curve"]
+        if kind == "g1":
+            py = plain(hh.clothoid_g1(p0, a0, p1, a1))
+        elif kind == "biarc":
+            py = plain(hh.biarc(p0, a0, p1, a1))
+        else:
+            py = plain(hh.clothoid_g2(p0, a0, k0, p1, a1, k1))
+        compare(failures, f"clothoid hermite {kind}", [("CLI", cli), ("HTTP", http), ("Python", py)])
+        if cli.get("kind") != kind:
+            failures.append(f"clothoid hermite {kind}: kind {cli.get('kind')}")
+    return len(cases) + len(hermite)
 
 
 def job(server, body):

@@ -127,8 +127,8 @@ TEST(ClothoidCli, G2JoinsAndEnd) {
   EXPECT_NEAR(s[2]["kappa1"].get<double>(), 0.5, 1e-10);
 }
 
-// checks: bad input exits 3 naming the field (coincident points, a 3-number point, --at past the end); one
-// curvature without the other and a missing angle are usage errors (exit 2).
+// checks: bad input exits 3 naming the field (coincident points, a 3-number point, --at past the end, one
+// curvature without the other between two points); a missing angle is a usage error (exit 2).
 TEST(ClothoidCli, ErrorsNameTheInput) {
   struct Case {
     std::vector<std::string> args;
@@ -150,12 +150,14 @@ TEST(ClothoidCli, ErrorsNameTheInput) {
   }
   const ProcessResult at = hula(with({"--end-point", "1,0", "--at", "0,99"}));
   EXPECT_EQ(testing::stderr_error(at)["where"]["index"], 1) << at.err;
-  for (const auto& args : {with({"--end-point", "1,0", "--start-curvature", "1"}),
-                           std::vector<std::string>{"clothoid", "--start-point", "0,0", "--end-point", "1,0"}}) {
-    const ProcessResult r = hula(args);
-    EXPECT_EQ(r.exit_code, 2) << r.err;
-    EXPECT_EQ(testing::stderr_error(r)["code"], "UsageError");
-  }
+  // Between two points one curvature alone names the missing one.
+  const ProcessResult one = hula(with({"--end-point", "1,0", "--start-curvature", "1"}));
+  EXPECT_EQ(one.exit_code, 3) << one.err;
+  EXPECT_EQ(testing::stderr_error(one)["code"], "InvalidArgument") << one.err;
+  EXPECT_EQ(testing::stderr_error(one)["where"]["field"], "end_curvature") << one.err;
+  const ProcessResult r = hula({"clothoid", "--start-point", "0,0", "--end-point", "1,0"});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(testing::stderr_error(r)["code"], "UsageError");
 }
 
 // Writes points "x y" lines to `path`.
@@ -251,8 +253,18 @@ TEST(ClothoidCli, OpenSplineEndAnglesCircleAndErrors) {
   const json ej = json::parse(e.out);
   EXPECT_NEAR(ej["segments"][0]["theta0"].get<double>(), 0.1, 1e-15);
   EXPECT_NEAR(std::remainder(ej["segments"][3]["theta1"].get<double>() - 3.0, 2 * std::numbers::pi), 0.0, 1e-12);
-  for (const auto& args : {std::vector<std::string>{"clothoid", "--points", file, "--start-angle", "1"},
-                           std::vector<std::string>{"clothoid", "--points", file, "--g1", "--g2"},
+  // One end's angle, the other end's curvature: the circle's own values give the circle back.
+  const ProcessResult k = hula({"clothoid", "--points", file, "--end-angle", "4.3707963267948966",  // 2.8 + π/2
+                                "--start-curvature", "0.5"});
+  ASSERT_EQ(k.exit_code, 0) << k.err;
+  for (const json& seg : json::parse(k.out)["segments"]) {
+    EXPECT_NEAR(seg["kappa0"].get<double>(), 0.5, 1e-10);
+    EXPECT_NEAR(seg["dkappa"].get<double>(), 0.0, 1e-10);
+  }
+  const ProcessResult kg1 = hula({"clothoid", "--points", file, "--g1", "--end-curvature", "0.5"});
+  EXPECT_EQ(kg1.exit_code, 3) << kg1.err;
+  EXPECT_EQ(testing::stderr_error(kg1)["where"]["field"], "end_curvature") << kg1.err;
+  for (const auto& args : {std::vector<std::string>{"clothoid", "--points", file, "--g1", "--g2"},
                            std::vector<std::string>{"clothoid", "--points", file, "--end-point", "1,1"},
                            std::vector<std::string>{"clothoid", "--start-point", "0,0", "--start-angle", "0",
                                                     "--end-point", "1,0", "--end-angle", "0", "--closed"}}) {

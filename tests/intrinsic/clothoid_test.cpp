@@ -380,6 +380,150 @@ TEST(ClothoidSpline, GivenEndAnglesAndAClosedListRepeatingItsStart) {
   EXPECT_NEAR(a.length(), b.length(), 1e-14);
 }
 
+// checks: given end curvatures, each end on its own or with an angle at the other end. Points on a circle of radius
+// R with κ = 1/R given give that circle (κ ≡ 1/R, κ′ = 0 on every segment); points on one clothoid (κ = κ0 + κ′ s)
+// with its end curvatures give that clothoid: every segment's κ0 and κ′ equal the closed form at its arc length.
+TEST(ClothoidSpline, GivenEndCurvaturesReproduceCirclesAndClothoids) {
+  const double radius = 1.7;
+  std::vector<Vec3> arc;
+  for (const double t : {0.2, 0.9, 1.3, 2.2, 2.8, 3.9})
+    arc.push_back({radius * std::cos(t), radius * std::sin(t), 0.0});
+  const double tangent_end = 3.9 + kPi / 2;
+  for (int variant = 0; variant < 4; ++variant) {
+    ClothoidSplineOptions o;
+    if (variant != 1) o.start_curvature = 1.0 / radius;  // 0: both ends, 1: end only, 2: start only
+    if (variant != 2) o.end_curvature = 1.0 / radius;
+    if (variant == 3) {  // 3: start curvature, end angle
+      o.end_curvature.reset();
+      o.end_angle = tangent_end;
+    }
+    const ClothoidSplineResult r = fit_clothoid_spline(arc, o);
+    for (const ClothoidSegment& s : r.segments) {
+      EXPECT_NEAR(s.kappa0, 1.0 / radius, 1e-11) << variant;
+      EXPECT_NEAR(s.dkappa, 0.0, 1e-11) << variant;
+    }
+    EXPECT_NEAR(r.length(), radius * (3.9 - 0.2), 1e-10) << variant;
+  }
+  // Off the circle's curvature the ends take the given values and the joints stay G2.
+  ClothoidSplineOptions o;
+  o.start_curvature = 0.0;
+  o.end_curvature = -0.3;
+  const ClothoidSplineResult r = fit_clothoid_spline(arc, o);
+  EXPECT_NEAR(r.segments.front().kappa0, 0.0, 1e-12);
+  EXPECT_NEAR(r.segments.back().curvature(r.segments.back().length), -0.3, 1e-12);
+  const JointGaps g = joint_gaps(r, arc, false, 1);
+  EXPECT_LT(std::max({g.position, g.angle, g.curvature, g.interpolation}), 1e-9);
+
+  // One clothoid, sampled at uneven arc lengths, its end curvatures given.
+  const ClothoidSegment one{.start = {0.5, -1.0, 0.0}, .theta0 = 0.4, .kappa0 = -0.6, .dkappa = 0.35, .length = 6.0};
+  const std::vector<double> at{0.0, 0.8, 1.9, 2.5, 3.6, 4.4, 5.1, 6.0};
+  std::vector<Vec3> pts;
+  for (const double s : at) {
+    ClothoidSegment part = one;
+    part.length = s;
+    pts.push_back(s == 0.0 ? one.start : testing::closed_form_end(part));
+  }
+  o = {};
+  o.start_curvature = one.curvature(0.0);
+  o.end_curvature = one.curvature(one.length);
+  const ClothoidSplineResult c = fit_clothoid_spline(pts, o);
+  ASSERT_EQ(c.segments.size(), at.size() - 1);
+  for (std::size_t i = 0; i < c.segments.size(); ++i) {
+    EXPECT_NEAR(c.segments[i].kappa0, one.curvature(at[i]), 1e-10) << i;
+    EXPECT_NEAR(c.segments[i].dkappa, one.dkappa, 1e-10) << i;
+    EXPECT_NEAR(c.segments[i].length, at[i + 1] - at[i], 1e-10) << i;
+    EXPECT_NEAR(c.segments[i].theta0, one.angle(at[i]), 1e-10) << i;
+  }
+  // Two points with both angles and both curvatures: the G2 Hermite problem, fit_clothoid_g2's three arcs.
+  const std::vector<Vec3> two{{-2, 3, 0}, {3, 2, 0}};
+  o = {};
+  o.start_angle = kPi / 3;
+  o.start_curvature = -0.2;
+  o.end_angle = -kPi / 4;
+  o.end_curvature = 0.5;
+  const ClothoidSplineResult h = fit_clothoid_spline(two, o);
+  const ClothoidG2Result direct = fit_clothoid_g2(two[0], kPi / 3, -0.2, two[1], -kPi / 4, 0.5);
+  ASSERT_EQ(h.segments.size(), 3U);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(h.segments[i].kappa0, direct.segments[i].kappa0);
+    EXPECT_EQ(h.segments[i].length, direct.segments[i].length);
+  }
+}
+
+// Points that turn back and forth: (i, (-1)^i) for i = 0..10 and seeded zigzags (jittered spacing, amplitude from
+// 0.05 to 20 times the spacing). Curvature continuity is measured on the result by the closed-form clothoid ends:
+// κ equal at every joint to 1e-9 relative (of max(1, |κ|)).
+double relative_curvature_gap(const ClothoidSplineResult& r) {
+  double gap = 0.0;
+  for (std::size_t i = 0; i + 1 < r.segments.size(); ++i) {
+    const ClothoidSegment& a = r.segments[i];
+    const double k = a.curvature(a.length);
+    gap = std::max(gap, std::abs(k - r.segments[i + 1].kappa0) / std::max(1.0, std::abs(k)));
+  }
+  return gap;
+}
+
+std::vector<Vec3> zigzag_points(std::mt19937& rng, int n, double amplitude) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<Vec3> p;
+  for (int i = 0; i < n; ++i)
+    p.push_back({i + 0.4 * u(rng), (i % 2 == 0 ? 1.0 : -1.0) * amplitude * (1.0 + 0.5 * u(rng)), 0.0});
+  return p;
+}
+
+// checks: the zigzag (i, (-1)^i) gives a G2 spline with free ends and with horizontal end angles (then the symmetric
+// solution: every segment an S of κ0 = ∓κ1, no iteration needed); seeded zigzags with given end angles always
+// converge G2 (≤ 10 iterations); with free ends or end curvatures each either converges G2 or is refused with a
+// NumericalFailure naming the points (never anything else), and steep ones are refused.
+TEST(ClothoidSpline, ZigzagsConvergeOrAreRefusedNamingThePoints) {
+  std::vector<Vec3> zig;
+  for (int i = 0; i <= 10; ++i) zig.push_back({static_cast<double>(i), i % 2 == 0 ? 1.0 : -1.0, 0.0});
+  for (const bool given : {false, true}) {
+    ClothoidSplineOptions o;
+    if (given) o.start_angle = o.end_angle = 0.0;
+    const ClothoidSplineResult r = fit_clothoid_spline(zig, o);
+    const JointGaps g = joint_gaps(r, zig, false, 1);
+    EXPECT_LT(std::max({g.position, g.angle, g.interpolation}), 1e-9) << given;
+    EXPECT_LT(relative_curvature_gap(r), 1e-9) << given;
+    if (given)
+      for (const ClothoidSegment& s : r.segments) {
+        EXPECT_NEAR(s.kappa0, -s.curvature(s.length), 1e-9);
+        EXPECT_NEAR(std::remainder(s.theta0, 2 * kPi), 0.0, 1e-9);
+      }
+  }
+  std::mt19937 rng(2626);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int refused = 0, converged = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    const int n = 3 + trial % 20;
+    const double amplitude = 0.05 * std::pow(400.0, 0.5 * (u(rng) + 1.0));
+    const std::vector<Vec3> pts = zigzag_points(rng, n, amplitude);
+    for (int mode = 0; mode < 3; ++mode) {
+      ClothoidSplineOptions o;
+      if (mode == 0) o.start_angle = o.end_angle = 0.1 * u(rng);
+      if (mode == 2) o.start_curvature = o.end_curvature = 0.0;
+      try {
+        const ClothoidSplineResult r = fit_clothoid_spline(pts, o);
+        const JointGaps g = joint_gaps(r, pts, false, 1);
+        EXPECT_LT(std::max({g.position, g.angle, g.interpolation}), 1e-9) << trial << " " << mode;
+        EXPECT_LT(relative_curvature_gap(r), 1e-9) << trial << " " << mode;
+        if (mode == 0) {
+          EXPECT_LE(r.iterations, 10) << trial;
+        }
+        ++converged;
+      } catch (const Error& e) {
+        EXPECT_NE(mode, 0) << trial << ": " << e.what();
+        EXPECT_EQ(e.code(), Errc::NumericalFailure) << e.what();
+        EXPECT_EQ(e.where().field, "points") << e.what();
+        EXPECT_NE(std::string(e.what()).find("give both end angles"), std::string::npos) << e.what();
+        ++refused;
+      }
+    }
+  }
+  EXPECT_GT(converged, 100);  // every given-angle case and the gentle free ones
+  EXPECT_GT(refused, 0);      // steep zigzags with free ends exist that have no such spline nearby
+}
+
 TEST(ClothoidSpline, RefusesBadInputNamingIt) {
   const std::vector<Vec3> one{{0, 0, 0}};
   HULA_EXPECT_ERROR((void)fit_clothoid_spline(one), Errc::TooFewPoints, "points");
@@ -394,7 +538,24 @@ TEST(ClothoidSpline, RefusesBadInputNamingIt) {
   const std::vector<Vec3> three{{0, 0, 0}, {1, 0, 0}, {2, 1, 0}};
   o = {};
   o.start_angle = 1.0;
-  HULA_EXPECT_ERROR((void)fit_clothoid_spline(three, o), Errc::InvalidArgument, "start_angle");
+  o.start_curvature = 0.5;
+  HULA_EXPECT_ERROR((void)fit_clothoid_spline(three, o), Errc::InvalidArgument,
+                    "start_curvature is given with the angle");
+  o = {};
+  o.end_curvature = 0.5;
+  o.continuity = 1;
+  HULA_EXPECT_ERROR((void)fit_clothoid_spline(three, o), Errc::InvalidArgument, "end_curvature is given for a G1");
+  HULA_EXPECT_ERROR((void)fit_biarc_spline(three, o), Errc::InvalidArgument, "end_curvature is given for a biarc");
+  o.continuity = 2;
+  o.end_curvature = std::numeric_limits<double>::infinity();
+  HULA_EXPECT_ERROR((void)fit_clothoid_spline(three, o), Errc::NonFiniteInput, "end_curvature");
+  o = {};
+  o.start_curvature = 0.5;
+  o.closed = true;
+  HULA_EXPECT_ERROR((void)fit_clothoid_spline(three, o), Errc::InvalidArgument,
+                    "start_curvature is given for a closed");
+  o = {};
+  o.start_angle = 1.0;
   o.end_angle = 1.0;
   o.closed = true;
   HULA_EXPECT_ERROR((void)fit_biarc_spline(three, o), Errc::InvalidArgument, "closed spline");

@@ -333,7 +333,8 @@ class ApiTest(unittest.TestCase):
     # checks POST /api/clothoid: a closed G2 spline through points on a circle of radius 2 is that circle (kappa 0.5 and
     # dkappa 0 on every segment, length 4 pi, every joint G2 in the printed values) with its natural curve file; a G2
     # spline through a seeded walk joins with G2 to 1e-9; the biarc of a symmetric Hermite problem is one circle
-    # (kappa = -2 sin(phi0) / d); bad requests are 400 naming the member, coincident points 422 naming "points"
+    # (kappa = -2 sin(phi0) / d); bad requests are 400 naming the member, coincident points 422 naming "points"; the
+    # circle's arc with its curvature given at the ends is that arc
     def test_clothoid_splines(self):
         import random
         pts = [[2 * math.cos(t), 2 * math.sin(t)] for t in (0.0, 1.1, 2.0, 3.3, 4.1, 5.5)]
@@ -375,6 +376,18 @@ class ApiTest(unittest.TestCase):
         e = self.call("POST", "/api/clothoid", {"points": pts, "splines": 2}, expect=400)
         e = self.call("POST", "/api/clothoid", {"points": [[0, 0], [1, 0], [1, 0]]}, expect=422)
         self.assertEqual((e["error"]["code"], e["error"]["where"]["field"]), ("CoincidentPoints", "points"))
+        # An open arc of the circle with its curvature 0.5 given at both ends is that arc; an angle and a curvature
+        # at one end, or a curvature for a closed spline, are 400 naming the curvature.
+        body = self.call("POST", "/api/clothoid", {"points": pts[:5], "start_curvature": 0.5, "end_curvature": 0.5})
+        self.assertAlmostEqual(body["length"], 2 * 4.1, places=10)
+        for seg in body["segments"]:
+            self.assertAlmostEqual(seg["kappa0"], 0.5, places=10)
+            self.assertAlmostEqual(seg["dkappa"], 0.0, places=10)
+        e = self.call("POST", "/api/clothoid", {"points": pts, "start_angle": 1.0, "start_curvature": 0.5},
+                      expect=400)
+        self.assertEqual(e["error"]["where"]["field"], "start_curvature")
+        e = self.call("POST", "/api/clothoid", {"points": pts, "closed": True, "end_curvature": 0.5}, expect=400)
+        self.assertEqual(e["error"]["where"]["field"], "end_curvature")
     # checks the curve-edit routes against closed forms, from the curve files they answer (evaluated here by de Boor's
     # algorithm): a line rebuilt as a cubic has its control points at the Greville abscissae; an elevated quadratic
     # and an elevated rational quarter circle reduce back to their control points and weights; the closed square

@@ -2,7 +2,8 @@
 // `hula clothoid`: interpolation by clothoids (intrinsic/clothoid.hpp). With end points and
 // tangent angles only, the G1 clothoid (Bertolazzi–Frego 2015, one segment); with the end curvatures
 // as well, the G2 spline of three clothoids (Bertolazzi–Frego 2018); with --points FILE a G1 or G2
-// clothoid spline through the points, open or --closed; --biarc gives biarcs instead. JSON out:
+// clothoid spline through the points, open or --closed (an open one takes an angle or a curvature at
+// each end); --biarc gives biarcs instead. JSON out:
 // {"kind": "g1" | "g2" | "biarc", "segments": [...], "length", "iterations"} (io::clothoid_spline_to_json),
 // and with --at the points, angles and curvatures at given arc lengths along the whole result.
 // -o writes the result as a curve file by its curvature law (a natural curve, evaluated exactly:
@@ -44,13 +45,11 @@ Vec3 parse_xy(const std::string& text, const char* field) {
 int run_clothoid(const ClothoidArgs& a) {
   io::ClothoidRequest q;
   if (!a.points.empty()) {
-    // A spline through points: the end angles are optional (both or neither, open splines only).
-    if (a.start_angle.has_value() != a.end_angle.has_value())
-      throw CLI::ValidationError(a.start_angle ? "--end-angle" : "--start-angle",
-                                 "with --points, --start-angle and --end-angle go together");
+    // A spline through points: the end angles and curvatures are optional (open splines only).
     q.points = io::read_points_file(a.points).points;
     q.closed = a.closed;
-    q.end_angles = a.start_angle.has_value();
+    q.spline_start_angle = a.start_angle.has_value();
+    q.spline_end_angle = a.end_angle.has_value();
   } else {
     for (const auto& [given, name] :
          {std::pair{!a.start_point.empty(), "--start-point"}, std::pair{a.start_angle.has_value(), "--start-angle"},
@@ -103,14 +102,13 @@ Command add_clothoid(CLI::App& app) {
   biarc->excludes(g1);
   biarc->excludes(g2);
   CLI::Option* k0 = add_real_option(sub, "--start-curvature", a->start_curvature, -kMax, kMax, false,
-                                    "Start curvature (> 0 turns left): asks for the G2 spline");
+                                    "Start curvature (> 0 turns left): with the end one, the G2 Hermite spline; "
+                                    "with --points, the G2 spline's curvature at its first point");
   CLI::Option* k1 = add_real_option(sub, "--end-curvature", a->end_curvature, -kMax, kMax, false,
-                                    "End curvature: asks for the G2 spline");
-  k0->needs(k1);
-  k1->needs(k0);
-  k0->excludes(pts);
+                                    "End curvature: with the start one, the G2 Hermite spline; with --points, the G2 "
+                                    "spline's curvature at its last point");
   k0->excludes(biarc);
-  k1->excludes(pts);
+  k1->excludes(biarc);
   sub->add_option("--at", a->at, "Arc lengths s0,s1,... along the result at which to print point, angle, curvature");
   add_exact_output_options(sub, a->output, a->to_nurbs, a->tolerance);
   return {sub, [a] {

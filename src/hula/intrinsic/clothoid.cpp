@@ -9,6 +9,8 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "hula/core/banded.hpp"
@@ -494,18 +496,31 @@ std::vector<Vec3> spline_points(std::span<const Vec3> points, const ClothoidSpli
                       "]: consecutive points must differ",
                   ErrorWhere{.field = "points", .index = i});
   }
-  if (options.start_angle.has_value() != options.end_angle.has_value() ||
-      (options.closed && options.start_angle.has_value())) {
-    const char* field = options.start_angle ? "start_angle" : "end_angle";
-    throw Error(Errc::InvalidArgument,
-                std::string(field) + (options.closed ? " is given for a closed spline (it has no ends)"
-                                                     : " is given alone: give both end angles or neither"),
-                ErrorWhere{.field = field});
+  const std::pair<const std::optional<double>*, const char*> ends[] = {{&options.start_angle, "start_angle"},
+                                                                       {&options.end_angle, "end_angle"},
+                                                                       {&options.start_curvature, "start_curvature"},
+                                                                       {&options.end_curvature, "end_curvature"}};
+  for (const auto& [value, field] : ends) {
+    if (!value->has_value()) continue;
+    if (options.closed)
+      throw Error(Errc::InvalidArgument, std::string(field) + " is given for a closed spline (it has no ends)",
+                  ErrorWhere{.field = field});
+    check_finite(**value, field);
   }
-  if (options.start_angle) {
-    check_finite(*options.start_angle, "start_angle");
-    check_finite(*options.end_angle, "end_angle");
-  }
+  // One clothoid per interval leaves one condition per open end: an angle or a curvature, not both (two points
+  // with both at both ends are the G2 Hermite problem, fit_clothoid_spline hands them to fit_clothoid_g2).
+  const bool hermite =
+      p.size() == 2 && options.start_angle && options.end_angle && options.start_curvature && options.end_curvature;
+  if (!hermite)
+    for (const auto& [angle, curvature, field] :
+         {std::tuple{&options.start_angle, &options.start_curvature, "start_curvature"},
+          std::tuple{&options.end_angle, &options.end_curvature, "end_curvature"}})
+      if (angle->has_value() && curvature->has_value())
+        throw Error(Errc::InvalidArgument,
+                    std::string(field) + " is given with the angle at that end: a spline of one clothoid per " +
+                        "interval meets one condition per end (an angle or a curvature); both at both ends " +
+                        "of two points is the G2 Hermite problem",
+                    ErrorWhere{.field = field});
   for (Vec3& q : p) q.z = points.front().z;
   return p;
 }
@@ -538,9 +553,15 @@ std::vector<double> guess_angles(const std::vector<Vec3>& p, const ClothoidSplin
       th[n - 1] = 2.0 * chord_angle(p[n - 2], p[n - 1]) - th[n - 2];
     }
   }
-  if (options.start_angle) {
-    th[0] = *options.start_angle;
-    th[n - 1] = *options.end_angle;
+  if (options.start_angle) th[0] = *options.start_angle;
+  if (options.end_angle) th[n - 1] = *options.end_angle;
+  // Two points with one angle given: the circular arc (the other angle mirrored about the chord).
+  if (!options.closed && n == 2 && options.start_angle.has_value() != options.end_angle.has_value()) {
+    const double chord = chord_angle(p[0], p[1]);
+    if (options.start_angle)
+      th[1] = 2.0 * chord - th[0];
+    else
+      th[0] = 2.0 * chord - th[1];
   }
   return th;
 }
@@ -599,7 +620,8 @@ std::vector<ClothoidSegment> g1_segments(const std::vector<Vec3>& p, const std::
 // (lower, diagonal, upper; cyclic when closed).
 struct G2System {
   std::vector<double> f, lower, diag, upper;
-  double norm = 0.0;  ///< max |f_i| · mean chord
+  double norm = 0.0;   ///< max |f_i| · mean chord
+  double merit = 0.0;  ///< Σ (f_i · mean chord)², the line search's merit
 };
 
 G2System g2_system(const std::vector<Vec3>& p, const std::vector<ClothoidSegment>& segs,
@@ -614,9 +636,17 @@ G2System g2_system(const std::vector<Vec3>& p, const std::vector<ClothoidSegment
   s.upper.assign(n, 0.0);
   for (std::size_t i = 0; i < n; ++i) {
     const bool first = !options.closed && i == 0, last = !options.closed && i + 1 == n;
-    if ((first || last) && options.start_angle) {
-      s.diag[i] = 1.0 / mean_chord;  // the given angle is held: a zero residual, a zero step
-    } else if (first) {              // κ′ = 0 on the first segment: κ1 − κ0 of segment 0
+    if ((first && options.start_angle) || (last && options.end_angle)) {
+      s.diag[i] = 1.0 / mean_chord;                 // the given angle is held: a zero residual, a zero step
+    } else if (first && options.start_curvature) {  // κ at the start of segment 0 as given
+      s.f[i] = ends[0].k0 - *options.start_curvature;
+      s.diag[i] = ends[0].dk0[0];
+      s.upper[i] = ends[0].dk0[1];
+    } else if (last && options.end_curvature) {  // κ at the end of the last segment as given
+      s.f[i] = ends[m - 1].k1 - *options.end_curvature;
+      s.lower[i] = ends[m - 1].dk1[0];
+      s.diag[i] = ends[m - 1].dk1[1];
+    } else if (first) {  // κ′ = 0 on the first segment: κ1 − κ0 of segment 0
       s.f[i] = ends[0].k1 - ends[0].k0;
       s.diag[i] = ends[0].dk1[0] - ends[0].dk0[0];
       s.upper[i] = ends[0].dk1[1] - ends[0].dk0[1];
@@ -633,6 +663,7 @@ G2System g2_system(const std::vector<Vec3>& p, const std::vector<ClothoidSegment
       s.upper[i] = out.dk0[1];
     }
     s.norm = std::max(s.norm, std::abs(s.f[i]) * mean_chord);
+    s.merit += (s.f[i] * mean_chord) * (s.f[i] * mean_chord);
   }
   return s;
 }
@@ -692,10 +723,24 @@ ClothoidSplineResult fit_clothoid_spline(std::span<const Vec3> points, const Clo
   options.validate();
   const std::vector<Vec3> p = spline_points(points, options);
   const std::size_t n = p.size();
-  std::vector<double> th = guess_angles(p, options);
+  const bool curvatures = options.start_curvature || options.end_curvature;
+  if (curvatures && options.continuity == 1)
+    throw Error(Errc::InvalidArgument,
+                std::string(options.start_curvature ? "start_curvature" : "end_curvature") +
+                    " is given for a G1 spline, whose curvature is not solved for: ask for G2",
+                ErrorWhere{.field = options.start_curvature ? "start_curvature" : "end_curvature"});
   ClothoidSplineResult out;
+  if (!options.closed && n == 2 && options.start_angle && options.end_angle && curvatures) {
+    const ClothoidG2Result r = fit_clothoid_g2(p[0], *options.start_angle, *options.start_curvature, p[1],
+                                               *options.end_angle, *options.end_curvature);
+    out.segments.assign(r.segments.begin(), r.segments.end());
+    out.iterations = r.iterations;
+    unwrap_angles(out.segments);
+    return out;
+  }
+  std::vector<double> th = guess_angles(p, options);
   out.segments = g1_segments(p, th, options.closed);
-  if (options.continuity == 1 || (!options.closed && n == 2)) {
+  if (options.continuity == 1 || (!options.closed && n == 2 && !curvatures)) {
     unwrap_angles(out.segments);
     return out;
   }
@@ -705,10 +750,10 @@ ClothoidSplineResult fit_clothoid_spline(std::span<const Vec3> points, const Clo
   mean_chord /= static_cast<double>(options.closed ? n : n - 1);
   // Halvings of the Newton step before giving up (2^-30 of a step is below any useful move).
   constexpr int kMaxHalvings = 30;
-  G2System sys = g2_system(p, out.segments, options, mean_chord);
   std::vector<double> step;
-  while (sys.norm > options.tolerance) {
-    if (out.iterations >= options.max_iterations || !solve_g2_step(sys, options.closed, step)) break;
+  G2System sys = g2_system(p, out.segments, options, mean_chord);
+  for (int used = 0; sys.norm > options.tolerance && used < options.max_iterations; ++used) {
+    if (!solve_g2_step(sys, options.closed, step)) break;
     ++out.iterations;
     bool accepted = false;
     double lambda = 1.0;
@@ -722,7 +767,7 @@ ClothoidSplineResult fit_clothoid_spline(std::span<const Vec3> points, const Clo
         continue;  // a trial step whose G1 fit fails is too long
       }
       G2System next = g2_system(p, segs, options, mean_chord);
-      if (next.norm < (1.0 - 1e-4 * lambda) * sys.norm) {
+      if (next.merit < (1.0 - 2e-4 * lambda) * sys.merit) {
         th = std::move(trial);
         out.segments = std::move(segs);
         sys = std::move(next);
@@ -731,13 +776,22 @@ ClothoidSplineResult fit_clothoid_spline(std::span<const Vec3> points, const Clo
     }
     if (!accepted) break;
   }
-  if (sys.norm > options.tolerance)
+  if (sys.norm > options.tolerance) {
+    const std::size_t worst = static_cast<std::size_t>(
+        std::max_element(sys.f.begin(), sys.f.end(), [](double a, double b) { return std::abs(a) < std::abs(b); }) -
+        sys.f.begin());
     throw Error(Errc::NumericalFailure,
                 "G2 clothoid spline: Newton stopped after " + std::to_string(out.iterations) +
                     " iterations with a curvature jump of " + format_number(sys.norm / mean_chord) +
                     " (times the mean chord " + format_number(sys.norm) + ", tolerance " +
-                    format_number(options.tolerance) + ")",
-                ErrorWhere{.field = "points"});
+                    format_number(options.tolerance) + "), the largest residual at points[" + std::to_string(worst) +
+                    "]" +
+                    (options.closed || (options.start_angle && options.end_angle)
+                         ? std::string()
+                         : std::string("; points that turn back and forth at the scale of their spacing may have no "
+                                       "such spline with a free end or a given end curvature: give both end angles")),
+                ErrorWhere{.field = "points", .index = worst});
+  }
   unwrap_angles(out.segments);
   return out;
 }
@@ -768,6 +822,12 @@ std::array<ClothoidSegment, 2> fit_biarc(const Vec3& p0, double theta0, const Ve
 }
 
 ClothoidSplineResult fit_biarc_spline(std::span<const Vec3> points, const ClothoidSplineOptions& options) {
+  if (options.start_curvature || options.end_curvature) {
+    const char* field = options.start_curvature ? "start_curvature" : "end_curvature";
+    throw Error(Errc::InvalidArgument,
+                std::string(field) + " is given for a biarc spline: its arcs' curvatures follow from the angles",
+                ErrorWhere{.field = field});
+  }
   const std::vector<Vec3> p = spline_points(points, options);
   const std::vector<double> th = guess_angles(p, options);
   const std::size_t n = p.size(), m = options.closed ? n : n - 1;

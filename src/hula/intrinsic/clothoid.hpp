@@ -206,10 +206,15 @@ struct ClothoidSplineOptions {
   /// A closed spline: one more segment from the last point back to the first, with the same continuity
   /// there. A last point equal to the first is dropped (the list may be given closed).
   bool closed = false;
-  /// Tangent angles at the first and last point (radians from +x), open splines only, both or neither.
-  /// Without them the end angles are free: G1 takes them from the circle through the three end points,
-  /// G2 asks for circular end segments (κ′ = 0 on the first and last segment).
+  /// Tangent angles at the first and last point (radians from +x), open splines only, each optional.
+  /// A free end angle: G1 takes it from the circle through the three end points (two points: the circular
+  /// arc through them with the other angle), G2 solves for it with the end's curvature condition below.
   std::optional<double> start_angle{}, end_angle{};
+  /// Curvatures at the first and last point (1 / model units, > 0 turns left), open G2 splines only, each
+  /// optional, at an end without a given angle: the condition there is κ = this value. An end with neither an
+  /// angle nor a curvature has a circular end segment (κ′ = 0 on it). Two points with both angles and both
+  /// curvatures are the G2 Hermite problem: fit_clothoid_g2()'s three arcs.
+  std::optional<double> start_curvature{}, end_curvature{};
   /// G2 Newton stops when every joint's curvature jump times the mean chord, and every end condition
   /// (angle in radians, or end-segment curvature change times the mean chord), is at most this.
   /// Default 1e-12; valid [1e-15, 1e-6].
@@ -238,16 +243,18 @@ struct ClothoidSplineResult {
 /// Method. The start angles are the tangents of the circles through each point and its two neighbours
 /// (at an open end, the circle through the three end points; two points give the chord). G1 stops there.
 /// G2 solves for the angles θ_i the equations "curvature at the end of segment i−1 = curvature at the start
-/// of segment i" at every interior point (at every point when closed), plus at an open end either the given
-/// angle or κ′ = 0 on the end segment, by Newton with a backtracking line search on the largest scaled
-/// residual. The Jacobian is tridiagonal (cyclic when closed: two corner entries, by the Woodbury formula
-/// on the banded solve); its entries are the exact derivatives of a G1 clothoid's end curvatures with
-/// respect to its end angles (implicit function theorem on the G1 equation, moments ∫ τᵏ (cos φ, sin φ)).
-/// Points on one circle give that circle (every segment κ′ = 0, κ = 1/R) when the ends are free.
+/// of segment i" at every interior point (at every point when closed), plus at an open end the given angle, the
+/// given curvature, or κ′ = 0 on the end segment, by Newton with a backtracking line search on the sum of the
+/// squared scaled residuals. The Jacobian is tridiagonal (cyclic when closed: two corner entries, by the Woodbury
+/// formula on the banded solve); its entries are the exact derivatives of a G1 clothoid's end curvatures with respect
+/// to its end angles (implicit function theorem on the G1 equation, moments ∫ τᵏ (cos φ, sin φ)). Points on one circle
+/// give that circle (every segment κ′ = 0, κ = 1/R) when the ends are free.
 /// @param points ≥ 2 points (≥ 3 distinct when closed), z ignored (copied from the first point)
 /// @param options continuity, closure, end angles, Newton tolerance and budget
 /// @throws hula::Error(Errc::TooFewPoints) naming "points" for too few; hula::Error(Errc::InvalidArgument)
-///   naming "start_angle" / "end_angle" given alone or with a closed spline; hula::Error(Errc::NonFiniteInput) naming
+///   naming "start_angle", "end_angle", "start_curvature" or "end_curvature" given with a closed spline, a
+///   curvature given with a G1 spline or with the angle at the same end (but for the two-point Hermite case);
+///   hula::Error(Errc::NonFiniteInput) naming
 ///   "points" (with the index) or the angle; hula::Error(Errc::CoincidentPoints) naming "points" and the index of a
 ///   point equal to the one before; hula::Error(Errc::InvalidOption) from options.validate();
 ///   hula::Error(Errc::NumericalFailure) naming "points" when the G2 Newton fails (the residual left): none on

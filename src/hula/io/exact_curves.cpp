@@ -71,10 +71,10 @@ ClothoidAnswer clothoid_answer(const ClothoidRequest& q) {
     intrinsic::ClothoidSplineOptions o;
     o.closed = q.closed;
     o.continuity = q.continuity.value_or(2);
-    if (q.end_angles) {
-      o.start_angle = q.start_angle;
-      o.end_angle = q.end_angle;
-    }
+    if (q.spline_start_angle) o.start_angle = q.start_angle;
+    if (q.spline_end_angle) o.end_angle = q.end_angle;
+    o.start_curvature = q.start_curvature;
+    o.end_curvature = q.end_curvature;
     const intrinsic::ClothoidSplineResult r =
         q.biarc ? intrinsic::fit_biarc_spline(q.points, o) : intrinsic::fit_clothoid_spline(q.points, o);
     out.segments = r.segments;
@@ -87,6 +87,14 @@ ClothoidAnswer clothoid_answer(const ClothoidRequest& q) {
     if (q.closed)
       throw Error(Errc::InvalidArgument, "closed needs points: a Hermite problem between two points is open",
                   ErrorWhere{.field = "closed"});
+    if (q.start_curvature.has_value() != q.end_curvature.has_value()) {
+      const char* missing = q.start_curvature ? "end_curvature" : "start_curvature";
+      throw Error(Errc::InvalidArgument,
+                  std::string(missing) +
+                      " is missing: the G2 Hermite problem between two points takes both end "
+                      "curvatures (one alone is for a spline through points)",
+                  ErrorWhere{.field = missing});
+    }
     if (q.continuity && *q.continuity != (curvatures ? 2 : 1))
       throw Error(Errc::InvalidArgument,
                   curvatures ? std::string("both end curvatures ask for the G2 spline: continuity 1 is not possible")
@@ -158,25 +166,20 @@ ClothoidRequest clothoid_request_from_json(const Json& body) {
   const std::optional<double> a0 = number("start_angle"), a1 = number("end_angle");
   if (const Json* pts = json::optional_member(body, "points")) {
     q.points = json::get_points(*pts, json::root_path("points")).points;
-    for (const char* field : {"start_point", "end_point", "start_curvature", "end_curvature"})
+    for (const char* field : {"start_point", "end_point"})
       if (json::optional_member(body, field) != nullptr)
         throw Error(Errc::ParseError, std::string(field) + " is for the Hermite problem: not with points",
                     ErrorWhere{.field = field});
-    if (a0.has_value() != a1.has_value())
-      throw Error(Errc::ParseError, "start_angle and end_angle go together",
-                  ErrorWhere{.field = a0 ? "end_angle" : "start_angle"});
-    q.end_angles = a0.has_value();
+    q.spline_start_angle = a0.has_value();
+    q.spline_end_angle = a1.has_value();
   } else {
     q.start_point = point("start_point");
     q.end_point = point("end_point");
     if (!a0) (void)json::require_member(body, root, "start_angle");
     if (!a1) (void)json::require_member(body, root, "end_angle");
-    q.start_curvature = number("start_curvature");
-    q.end_curvature = number("end_curvature");
-    if (q.start_curvature.has_value() != q.end_curvature.has_value())
-      throw Error(Errc::ParseError, "start_curvature and end_curvature go together",
-                  ErrorWhere{.field = q.start_curvature ? "end_curvature" : "start_curvature"});
   }
+  q.start_curvature = number("start_curvature");
+  q.end_curvature = number("end_curvature");
   q.start_angle = a0.value_or(0.0);
   q.end_angle = a1.value_or(0.0);
   if (const Json* at = json::optional_member(body, "at")) q.at = json::get_number_array(*at, json::root_path("at"));

@@ -38,15 +38,18 @@ struct ClothoidRequest {
   double start_angle = 0.0;
   Vec3 end_point{};
   double end_angle = 0.0;
-  std::optional<double> start_curvature{};  ///< with end_curvature: the G2 spline
+  /// Hermite problem: with end_curvature the G2 spline of three clothoids; spline: the curvature at the first /
+  /// last point (open G2 splines, each optional, at an end without its angle).
+  std::optional<double> start_curvature{};
   std::optional<double> end_curvature{};
   std::vector<double> at{};  ///< arc lengths along the whole result to sample (none: no "points")
   /// ≥ 2 points: a spline through them (intrinsic::fit_clothoid_spline or fit_biarc_spline) instead of the
-  /// Hermite problem; start_point, end_point and the curvatures are then unused, and start_angle / end_angle
-  /// are the end angles of an open spline only with `end_angles`.
+  /// Hermite problem; start_point and end_point are then unused, and start_angle / end_angle are the end
+  /// angles of an open spline only with `spline_start_angle` / `spline_end_angle`.
   std::vector<Vec3> points{};
   bool closed = false;              ///< spline: closed (G1 or G2 at the first point too)
-  bool end_angles = false;          ///< spline: start_angle and end_angle are given
+  bool spline_start_angle = false;  ///< spline: start_angle is given
+  bool spline_end_angle = false;    ///< spline: end_angle is given
   bool biarc = false;               ///< biarcs (two arcs per interval, G1) instead of clothoids
   std::optional<int> continuity{};  ///< spline: 1 or 2 (default 2); Hermite: 2 needs both curvatures
 };
@@ -63,12 +66,13 @@ struct ClothoidAnswer {
 /// request, sampled at its arc lengths.
 /// @throws as the fits; hula::Error(Errc::OutOfDomain) naming at[i] outside [0, length];
 ///   hula::Error(Errc::InvalidArgument) naming "continuity" for a biarc with a continuity, or 2 for a Hermite
-///   problem without curvatures (1 with them), and naming "closed" for a closed Hermite problem
+///   problem without curvatures (1 with them), naming "closed" for a closed Hermite problem, and naming the
+///   missing one of a Hermite problem's curvatures given alone
 [[nodiscard]] ClothoidAnswer clothoid_answer(const ClothoidRequest& request);
 
 /// The request of POST /api/clothoid: {"points"?: [[x, y], ...], "closed"?, "fit"?: "g1" | "g2" | "biarc",
 /// "start_point"?, "start_angle"?, "end_point"?, "end_angle"?, "start_curvature"?, "end_curvature"?,
-/// "at"?: [s, ...]} — with "points" a spline (the end angles optional, both or neither), else the Hermite
+/// "at"?: [s, ...]} — with "points" a spline (the end angles and curvatures optional), else the Hermite
 /// problem (start and end point and angle required). Unknown members are refused by name.
 /// @throws hula::Error(Errc::ParseError) naming the member at fault
 [[nodiscard]] ClothoidRequest clothoid_request_from_json(const Json& body);
