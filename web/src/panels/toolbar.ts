@@ -76,6 +76,9 @@ export class Toolbar {
       case 'offset':
         this.app.panels.offsetDialog();
         break;
+      case 'clothoid':
+        this.app.panels.clothoidDialog();
+        break;
       case 'fit':
         this.app.fitAll();
         break;
