@@ -276,6 +276,37 @@ test('clothoid and biarc splines through the selected curve’s points', async (
     await expect(status(page)).toContainText(/through the 5 points of path/);
     expect(await applied(doc)).toBe(steps + n - 1);
   }
+  // With nothing selected, Shift+C is a tool: four clicks in the top view and Enter give the G2
+  // clothoid spline through the clicked points (to the size of a pixel, the clicks being pixels).
+  await page.keyboard.press('Escape');
+  await idle(page);
+  await page.keyboard.press('Shift+C');
+  await expect(status(page)).toContainText('Clothoid (G2 clothoids): left-click points');
+  const clicks: Vec[] = [
+    [10, 0, 0],
+    [30, 15, 0],
+    [55, 5, 0],
+    [80, 20, 0],
+  ];
+  const o = await pixelOf(page, 'top', [0, 0, 0]);
+  const u = await pixelOf(page, 'top', [1, 0, 0]);
+  const pixel = 1 / Math.abs(u.x - o.x);
+  for (const c of clicks) {
+    const px = await pixelOf(page, 'top', c);
+    await page.mouse.click(px.x, px.y);
+  }
+  await page.keyboard.press('Enter');
+  await expect.poll(async () => (await curves(doc)).length).toBe(4);
+  const clicked = (await curves(doc)).at(-1)!;
+  expect(clicked.name).toBe('clothoid-g2');
+  expect(clicked.curve?.kind).toBe('natural');
+  await expect(status(page)).toContainText(/through 4 points: 3 segments/);
+  const along = await analysis(doc, String(clicked.label), { samples: 2001 });
+  for (const c of clicks)
+    expect(Math.min(...along.points.map((q) => dist(q, c)))).toBeLessThan(pixel + 0.05);
+  expect(await applied(doc)).toBe(steps + 3);
+  await page.keyboard.press('v');
+
   // The top view alone at 1280×720: the source spline, the G2 clothoid spline and the biarcs.
   await page.setViewportSize({ width: 1280, height: 720 });
   await page.keyboard.press('1');

@@ -22,7 +22,8 @@ import { blendCurves } from './commands/blend';
 import { rebuildCurve, type RebuildChoice } from './commands/rebuild';
 import { closeCurve } from './commands/close';
 import { offsetCurve } from './commands/offset';
-import { clothoidThrough, type ClothoidChoice } from './commands/clothoid';
+import { clothoidThrough, clothoidThroughPoints, type ClothoidChoice } from './commands/clothoid';
+import { ClothoidTool } from './tools/clothoid';
 import { IntersectTool } from './tools/intersect';
 import { KnotTool } from './tools/knots';
 import { intersectHost, knotHost } from './controller/tool-hosts';
@@ -672,7 +673,24 @@ export class App {
                 ? new IntersectTool(intersectHost(this))
                 : name === 'knots'
                   ? new KnotTool(knotHost(this))
-                  : null;
+                  : name === 'clothoid'
+                    ? new ClothoidTool({
+                        pointAt: (view, ev) => this.pointAt(view, ev),
+                        preview: (pts) => {
+                          this.viewports.setPreview(pts);
+                        },
+                        status: (t, error) => {
+                          this.setStatus(t, error);
+                        },
+                        make: async (points, choice) => {
+                          await clothoidThroughPoints(
+                            this.editor,
+                            points.map((p) => [...p]),
+                            choice,
+                          );
+                        },
+                      })
+                    : null;
     const continuity = document.getElementById('join-continuity') as HTMLSelectElement | null;
     if (continuity) {
       continuity.hidden = name !== 'match' && name !== 'blend';

@@ -1,10 +1,11 @@
 // Clothoid: the G1 or G2 clothoid spline, or the biarc spline, through the
 // selected curve's through-points or control points, open or closed (POST
 // /api/clothoid, the server's `hula clothoid`), added as a new selected curve
-// named after the fit: one "create" undo step. The curve is a natural one,
+// named after the fit: one "create" undo step; or through clicked points (the
+// Clothoid tool, tools/clothoid.ts). The curve is a natural one,
 // held by its curvature law (exact, not a NURBS stand-in).
 
-import type { ClothoidAnswer, ClothoidRequest } from '../api/types';
+import type { ClothoidAnswer, ClothoidRequest, Point } from '../api/types';
 import type { Editor } from '../editor/editor';
 import { closingPoints } from './close';
 import { createCurve } from './create-curve';
@@ -21,7 +22,7 @@ export function clothoidName(fit: ClothoidFit): string {
   return fit === 'biarc' ? 'biarc' : `clothoid-${fit}`;
 }
 
-/** The curve made and its label, or undefined (the status says why). */
+/** The spline through the selected curve's points, added as a new curve; undefined when not (the status says why). */
 export async function clothoidThrough(
   ed: Editor,
   label: string,
@@ -40,18 +41,32 @@ export async function clothoidThrough(
     );
     return undefined;
   }
+  return clothoidThroughPoints(
+    ed,
+    points,
+    choice,
+    `the ${points.length} points of ${ed.nameOf(label)}`,
+  );
+}
+
+/** The spline through `points` (described as `through` in the status), added as a new selected curve. */
+export async function clothoidThroughPoints(
+  ed: Editor,
+  points: Point[],
+  choice: ClothoidChoice,
+  through = `${points.length} points`,
+): Promise<{ label: string; answer: ClothoidAnswer } | undefined> {
   const answer = await ed.run(
     () => ed.client.clothoid({ points, fit: choice.fit, closed: choice.closed }),
     'Clothoid',
   );
   if (!answer) return undefined;
-  const source = ed.nameOf(label);
   const made = await createCurve(ed, clothoidName(choice.fit), answer.curve);
   if (!made) return undefined;
   const what =
     choice.fit === 'biarc' ? 'biarc spline' : `${choice.fit.toUpperCase()} clothoid spline`;
   ed.setStatus(
-    `Added the ${what} ${ed.nameOf(made)} through the ${points.length} points of ${source}` +
+    `Added the ${what} ${ed.nameOf(made)} through ${through}` +
       `${choice.closed ? ' (closed)' : ''}: ${answer.segments.length} segments, length ` +
       `${Number(answer.length.toPrecision(6))}`,
   );

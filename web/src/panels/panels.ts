@@ -47,7 +47,7 @@ export const SHORTCUTS: [string, string][] = [
   ['Shift+O', 'offset the selected planar curve by a distance: a new curve (one undo step)'],
   [
     'Shift+C',
-    'clothoid: the G2 / G1 clothoid or biarc spline through the selected curve’s points, open or closed: a new curve (one undo step)',
+    'clothoid: the G2 / G1 clothoid or biarc spline through the selected curve’s points, open or closed (with nothing selected: through clicked points; keys 1 2 3 and C choose); a new curve (one undo step)',
   ],
   [
     'Shift+I',

@@ -77,7 +77,9 @@ export class Toolbar {
         this.app.panels.offsetDialog();
         break;
       case 'clothoid':
-        this.app.panels.clothoidDialog();
+        // Through the selected curve's points (a dialog), else through clicked points (a tool).
+        if (this.app.selected) this.app.panels.clothoidDialog();
+        else this.app.setTool('clothoid');
         break;
       case 'fit':
         this.app.fitAll();
