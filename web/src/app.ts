@@ -22,11 +22,11 @@ import { blendCurves } from './commands/blend';
 import { rebuildCurve, type RebuildChoice } from './commands/rebuild';
 import { closeCurve } from './commands/close';
 import { offsetCurve } from './commands/offset';
-import { clothoidThrough, clothoidThroughPoints, type ClothoidChoice } from './commands/clothoid';
+import { clothoidThrough, type ClothoidChoice } from './commands/clothoid';
 import { ClothoidTool } from './tools/clothoid';
 import { IntersectTool } from './tools/intersect';
 import { KnotTool } from './tools/knots';
-import { intersectHost, knotHost } from './controller/tool-hosts';
+import { clothoidHost, intersectHost, knotHost } from './controller/tool-hosts';
 import { JoinTool, type JoinHost } from './tools/join';
 import { finLines } from './api/adapt';
 import type {
@@ -674,22 +674,7 @@ export class App {
                 : name === 'knots'
                   ? new KnotTool(knotHost(this))
                   : name === 'clothoid'
-                    ? new ClothoidTool({
-                        pointAt: (view, ev) => this.pointAt(view, ev),
-                        preview: (pts) => {
-                          this.viewports.setPreview(pts);
-                        },
-                        status: (t, error) => {
-                          this.setStatus(t, error);
-                        },
-                        make: async (points, choice) => {
-                          await clothoidThroughPoints(
-                            this.editor,
-                            points.map((p) => [...p]),
-                            choice,
-                          );
-                        },
-                      })
+                    ? new ClothoidTool(clothoidHost(this))
                     : null;
     const continuity = document.getElementById('join-continuity') as HTMLSelectElement | null;
     if (continuity) {

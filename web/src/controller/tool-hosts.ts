@@ -1,11 +1,13 @@
-// What the Intersect and Knots tools ask of the page (their hosts): picking in
+// What the Intersect, Knots and Clothoid tools ask of the page (their hosts): picking in
 // the views, the markers and preview drawn, the server's answers, the page's
 // drag evaluator for the knot preview. The tools themselves hold no page state.
 
 import type { App } from '../app';
+import { clothoidThroughPoints } from '../commands/clothoid';
 import { intersectCurves } from '../commands/intersect';
 import { moveKnotValue } from '../commands/move-knot';
 import { NurbsEvaluator } from '../geometry/nurbs';
+import type { ClothoidHost } from '../tools/clothoid';
 import type { IntersectHost } from '../tools/intersect';
 import { parameterOnScreen, type KnotHost, type NurbsFile } from '../tools/knots';
 import { pickNearest, projectToScreen, type Vec3, type ViewName } from '../viewport/math';
@@ -99,6 +101,25 @@ export function knotHost(app: App): KnotHost {
     commit: (label, knots, from, to) => moveKnotValue(app.editor, label, knots, from, to),
     status: (t, error) => {
       app.setStatus(t, error);
+    },
+  };
+}
+
+export function clothoidHost(app: App): ClothoidHost {
+  return {
+    pointAt: (view, ev) => app.pointAt(view, ev),
+    preview: (pts) => {
+      app.viewports.setPreview(pts);
+    },
+    status: (t, error) => {
+      app.setStatus(t, error);
+    },
+    make: async (points, choice) => {
+      await clothoidThroughPoints(
+        app.editor,
+        points.map((p) => [...p]),
+        choice,
+      );
     },
   };
 }
