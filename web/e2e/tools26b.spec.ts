@@ -282,17 +282,23 @@ test('clothoid and biarc splines through the selected curve’s points', async (
   await idle(page);
   await page.keyboard.press('Shift+C');
   await expect(status(page)).toContainText('Clothoid (G2 clothoids): left-click points');
+  // In the region the view was fitted to (the source spline's), so every click lands in the top view.
   const clicks: Vec[] = [
-    [10, 0, 0],
-    [30, 15, 0],
-    [55, 5, 0],
-    [80, 20, 0],
+    [5, 50, 0],
+    [30, 70, 0],
+    [55, 58, 0],
+    [85, 72, 0],
   ];
+  const topBox = (await page.locator('.view[data-view="top"]').boundingBox())!;
   const o = await pixelOf(page, 'top', [0, 0, 0]);
   const u = await pixelOf(page, 'top', [1, 0, 0]);
   const pixel = 1 / Math.abs(u.x - o.x);
   for (const c of clicks) {
     const px = await pixelOf(page, 'top', c);
+    expect(px.x).toBeGreaterThan(topBox.x);
+    expect(px.x).toBeLessThan(topBox.x + topBox.width);
+    expect(px.y).toBeGreaterThan(topBox.y);
+    expect(px.y).toBeLessThan(topBox.y + topBox.height);
     await page.mouse.click(px.x, px.y);
   }
   await page.keyboard.press('Enter');
