@@ -22,6 +22,11 @@ import { blendCurves } from './commands/blend';
 import { rebuildCurve, type RebuildChoice } from './commands/rebuild';
 import { closeCurve } from './commands/close';
 import { offsetCurve } from './commands/offset';
+import { clothoidThrough, type ClothoidChoice } from './commands/clothoid';
+import { ClothoidTool } from './tools/clothoid';
+import { IntersectTool } from './tools/intersect';
+import { KnotTool } from './tools/knots';
+import { clothoidHost, intersectHost, knotHost } from './controller/tool-hosts';
 import { JoinTool, type JoinHost } from './tools/join';
 import { finLines } from './api/adapt';
 import type {
@@ -241,6 +246,7 @@ export class App {
             this.refreshHistory();
           }
           this.fairing.edited(e.label);
+          if (this.tool instanceof KnotTool && e.label === this.selected) this.tool.refresh(true);
           break;
         case 'removed':
           this.viewports.removeCurve(e.label);
@@ -502,6 +508,10 @@ export class App {
     await offsetCurve(this.editor, label, distance);
   }
 
+  async clothoidThrough(label: string, choice: ClothoidChoice): Promise<void> {
+    await clothoidThrough(this.editor, label, choice);
+  }
+
   deleteSelected(): Promise<void> {
     return deleteSelected(this.editor);
   }
@@ -596,6 +606,7 @@ export class App {
     if (previous !== label) this.fairing.edited(label);
     if (previous) this.redrawCurve(previous);
     if (label) this.redrawCurve(label);
+    if (this.tool instanceof KnotTool && previous !== label) this.tool.refresh();
     this.updateGraphs();
     this.viewStateChanged();
   }
@@ -663,7 +674,13 @@ export class App {
             ? new HermiteTool(host)
             : name === 'match' || name === 'blend'
               ? new JoinTool(name, this.joinHost(), this.joinContinuity)
-              : null;
+              : name === 'intersect'
+                ? new IntersectTool(intersectHost(this))
+                : name === 'knots'
+                  ? new KnotTool(knotHost(this))
+                  : name === 'clothoid'
+                    ? new ClothoidTool(clothoidHost(this))
+                    : null;
     const continuity = document.getElementById('join-continuity') as HTMLSelectElement | null;
     if (continuity) {
       continuity.hidden = name !== 'match' && name !== 'blend';

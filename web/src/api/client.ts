@@ -32,6 +32,10 @@ import type {
   ClosedInterpolationRequest,
   OffsetRequest,
   OffsetResult,
+  IntersectRequest,
+  IntersectionResult,
+  ClothoidRequest,
+  ClothoidAnswer,
   RebuildRequest,
   RebuildResult,
   BlendResult,
@@ -354,6 +358,14 @@ export class Client {
   /** A planar curve's offset by a distance, loops trimmed (`hula offset`); nothing is stored. */
   offset(req: OffsetRequest): Promise<OffsetResult> {
     return this.request('POST', '/api/offset', req);
+  }
+  /** Where two curves meet, or without b where one meets itself (`hula intersect`); nothing is stored. */
+  intersect(req: IntersectRequest): Promise<IntersectionResult> {
+    return this.request('POST', '/api/intersect', req);
+  }
+  /** G1/G2 clothoids or biarcs through points (`hula clothoid`): the curve a natural one; nothing is stored. */
+  clothoid(req: ClothoidRequest): Promise<ClothoidAnswer> {
+    return this.request('POST', '/api/clothoid', req);
   }
 
   startJob(body: Record<string, unknown>): Promise<Job> {

@@ -138,6 +138,8 @@ export interface AnalysisRequest {
   fins?: FinKind[];
   scale?: number;
   features?: boolean;
+  /** The parameters (or arc lengths, by arc length) to sample instead of `samples` equally spaced. */
+  at?: number[];
 }
 
 export interface Frame {
@@ -217,6 +219,15 @@ export type OffsetResult = Omit<Api.OffsetResult, 'raw' | 'trimmed'> & {
   raw: CurveFile;
   trimmed: (Omit<Api.OffsetResult['trimmed'][number], 'curve'> & { curve: CurveFile })[];
 };
+
+/** POST /api/intersect and /api/clothoid (docs/server.md): nothing is stored. */
+export type IntersectRequest = Omit<Api.IntersectRequest, 'a' | 'b'> & {
+  a: CurveFile;
+  b?: CurveFile;
+};
+export type IntersectionResult = Api.IntersectionResult;
+export type ClothoidRequest = Api.ClothoidRequest;
+export type ClothoidAnswer = Omit<Api.ClothoidAnswer, 'curve'> & { curve: CurveFile };
 
 export interface LawRequest {
   expression: string;
@@ -394,7 +405,11 @@ export const CONTRACT: [
   Within<ClosedInterpolation, Api.ClosedInterpolation>,
   Within<OffsetRequest, Api.OffsetRequest>,
   Within<OffsetResult, Api.OffsetResult>,
+  Within<IntersectRequest, Api.IntersectRequest>,
+  Within<ClothoidAnswer, Api.ClothoidAnswer>,
 ] = [
+  true,
+  true,
   true,
   true,
   true,

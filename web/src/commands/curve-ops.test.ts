@@ -12,9 +12,12 @@ import {
 } from '../testing/documents';
 import { closeCurve, closingPoints } from './close';
 import { offsetCurve } from './offset';
+import { clothoidThrough } from './clothoid';
+import { intersectCurves, meetingText } from './intersect';
+import { moveKnotValue } from './move-knot';
 import { rebuildCurve, rebuildDefaults } from './rebuild';
 
-// Rebuild, Close and Offset against the page's real Client, store and editor (only fetch is
+// Rebuild, Close, Offset, Intersect, Clothoid and the knot move against the page's real Client, store and editor (only fetch is
 // replaced: testing/fetch-double.ts), with the server's answers typed by its OpenAPI document.
 
 const http = useFetchDouble();
@@ -271,5 +274,188 @@ describe('Offset', () => {
     expect(await offsetCurve(ed, '1', 0)).toBeUndefined();
     expect(http.calls).toHaveLength(0);
     expect(lastStatus(events)?.error).toBe(true);
+  });
+});
+
+describe('Intersect', () => {
+  const answer: Api.IntersectionResult = {
+    tolerance: 1e-6,
+    points: [
+      {
+        s: 0.875857,
+        t: 0.808196,
+        point: [86.98364, 9.519761, 0],
+        distance: 0,
+        angle: 0.7,
+        kind: 'crossing',
+      },
+      {
+        s: 0.0456669,
+        t: 0.138969,
+        point: [6.676251, 10.08546, 0],
+        distance: 0,
+        angle: 0.9,
+        kind: 'tangent',
+      },
+    ],
+    overlaps: [],
+  };
+
+  it('asks where the two curves meet, nothing stored, and reads the points out in the order of t1', async () => {
+    const { ed, events } = editorWith(2, [
+      serverEntity(1, cubic, attributes('arch')),
+      serverEntity(2, rebuilt, attributes('bow')),
+    ]);
+    http.auto = (c) => {
+      c.respond(200, answer);
+    };
+    const m = await intersectCurves(ed, '1', '2');
+    expect(http.calls.map((c) => `${c.method} ${c.path}`)).toEqual(['POST /api/intersect']);
+    expect(http.calls[0]!.body).toEqual({ a: cubic, b: rebuilt });
+    expect(m?.map((x) => x.t1)).toEqual([0.0456669, 0.875857]);
+    expect(m?.[0]).toEqual({
+      t1: 0.0456669,
+      t2: 0.138969,
+      point: [6.676251, 10.08546, 0],
+      kind: 'tangent',
+    });
+    expect(ed.store.revision).toBe(2);
+    expect(lastStatus(events)).toEqual({
+      text:
+        'Intersect arch (1) × bow (2): 2 point(s): (t1 0.0456669, t2 0.138969) at (6.67625, 10.0855, 0); ' +
+        '(t1 0.875857, t2 0.808196) at (86.9836, 9.51976, 0)',
+      error: false,
+    });
+  });
+
+  it('asks a curve alone for where it meets itself, and says when nothing meets', async () => {
+    const { ed, events } = editorWith(2, [serverEntity(1, cubic, attributes('arch'))]);
+    http.auto = (c) => {
+      c.respond(200, { tolerance: 1e-6, points: [], overlaps: [] });
+    };
+    expect(await intersectCurves(ed, '1', null)).toEqual([]);
+    expect(http.calls[0]!.body).toEqual({ a: cubic });
+    expect(lastStatus(events)?.text).toBe('Intersect arch (1) with itself: no point');
+  });
+
+  it('lists the first three points and counts the rest and the overlaps', () => {
+    const p = {
+      t1: 0.5,
+      t2: 0.25,
+      point: [1, 2, 3] as [number, number, number],
+      kind: 'crossing' as const,
+    };
+    expect(meetingText('a', 'b', [p, p, p, p, p], 1)).toBe(
+      'Intersect a × b: 5 point(s), 1 overlap(s): ' +
+        '(t1 0.5, t2 0.25) at (1, 2, 3); (t1 0.5, t2 0.25) at (1, 2, 3); (t1 0.5, t2 0.25) at (1, 2, 3); … 2 more',
+    );
+  });
+});
+
+describe('Clothoid', () => {
+  const natural: CurveFile = { kind: 'natural', curvature: '0.1', length: 10 };
+
+  it('asks the spline through the curve its points and adds it as a new selected curve named after the fit', async () => {
+    const { ed, events } = editorWith(5, [serverEntity(2, through, attributes('path'))]);
+    http.auto = (c) => {
+      if (c.path === '/api/clothoid')
+        c.respond(200, {
+          kind: 'biarc',
+          segments: [],
+          length: 57.123456,
+          iterations: 0,
+          through: 4,
+          closed: true,
+          curve: natural,
+        });
+      else
+        c.respond(201, {
+          label: 9,
+          ...change(6, {
+            name: 'create',
+            added: [9],
+            entities: [serverEntity(9, natural, attributes('biarc'))],
+          }),
+        });
+    };
+    const made = await clothoidThrough(ed, '2', { fit: 'biarc', closed: true });
+    expect(http.calls.map((c) => `${c.method} ${c.path}`)).toEqual([
+      'POST /api/clothoid',
+      'POST /api/documents/a.hula/entities',
+    ]);
+    expect(http.calls[0]!.body).toEqual({
+      points: (through as { points: number[][] }).points,
+      fit: 'biarc',
+      closed: true,
+    });
+    expect((http.calls[1]!.body as { name: string }).name).toBe('biarc');
+    expect(made?.label).toBe('9');
+    expect(ed.selected).toBe('9');
+    expect(lastStatus(events)).toEqual({
+      text: 'Added the biarc spline biarc (9) through the 4 points of path (2) (closed): 0 segments, length 57.1235',
+      error: false,
+    });
+  });
+
+  it('sends nothing for a law curve', async () => {
+    const { ed, events } = editorWith(1, [
+      serverEntity(1, { kind: 'law', expression: 'vec(t, t)', domain: [0, 1] }),
+    ]);
+    expect(await clothoidThrough(ed, '1', { fit: 'g2', closed: false })).toBeUndefined();
+    expect(http.calls).toHaveLength(0);
+    expect(lastStatus(events)?.text).toContain('law curve, which has no points');
+  });
+});
+
+describe('Move knot', () => {
+  const arch: CurveFile = {
+    kind: 'nurbs',
+    degree: 3,
+    knots: [0, 0, 0, 0, 0.3, 0.6, 1, 1, 1, 1],
+    control_points: [
+      [0, 0, 0],
+      [15, 25, 0],
+      [40, 35, 0],
+      [65, 30, 0],
+      [85, 10, 0],
+      [100, 0, 0],
+    ],
+  };
+  const moved: CurveFile = { ...arch, knots: [0, 0, 0, 0, 0.45, 0.6, 1, 1, 1, 1] };
+
+  it('stores the curve with the new knot vector and its points as they were, in one PUT', async () => {
+    const { ed, events } = editorWith(3, [serverEntity(1, arch, attributes('arch'))]);
+    http.auto = (c) => {
+      c.respond(
+        200,
+        change(4, {
+          name: 'replace',
+          changed: [1],
+          entities: [serverEntity(1, moved, attributes('arch'))],
+        }),
+      );
+    };
+    expect(await moveKnotValue(ed, '1', [0, 0, 0, 0, 0.45, 0.6, 1, 1, 1, 1], 0.3, 0.45)).toBe(true);
+    expect(http.calls.map((c) => `${c.method} ${c.path}`)).toEqual([
+      'PUT /api/documents/a.hula/entities/1',
+    ]);
+    expect(http.calls[0]!.body).toEqual({ curve: moved });
+    expect(ed.store.entities.get('1')?.curve).toEqual(moved);
+    expect(lastStatus(events)?.text).toBe('Moved a knot of arch (1) from 0.3 to 0.45');
+  });
+
+  it('sends nothing for a locked curve or one that is not NURBS', async () => {
+    const { ed, events } = editorWith(3, [
+      serverEntity(1, arch, attributes('arch', { locked: true })),
+      serverEntity(2, cubic),
+    ]);
+    expect(await moveKnotValue(ed, '1', [0, 0, 0, 0, 0.45, 0.6, 1, 1, 1, 1], 0.3, 0.45)).toBe(
+      false,
+    );
+    expect(lastStatus(events)?.text).toBe(
+      'Knots: arch (1) is locked: unlock it in the object list',
+    );
+    expect(await moveKnotValue(ed, '2', [0, 1], 0, 1)).toBe(false);
+    expect(http.calls).toHaveLength(0);
   });
 });

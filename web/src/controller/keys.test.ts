@@ -47,6 +47,14 @@ describe('the keyboard map', () => {
       kind: 'action',
       action: 'offset',
     });
+    expect(keyCommand(press('C', { shiftKey: true }))).toEqual({
+      kind: 'action',
+      action: 'clothoid',
+    });
+    expect(keyCommand(press('I', { shiftKey: true }))).toEqual({ kind: 'tool', tool: 'intersect' });
+    expect(keyCommand(press('K', { shiftKey: true }))).toEqual({ kind: 'tool', tool: 'knots' });
+    expect(keyCommand(press('i'))).toEqual({ kind: 'action', action: 'import' });
+    expect(keyCommand(press('k'))).toEqual({ kind: 'action', action: 'natural' });
     expect(keyCommand(press('o'))).toEqual({ kind: 'action', action: 'open' });
     expect(keyCommand(press('t'))).toBeNull();
     expect(keyCommand(press('F5'))).toBeNull();

@@ -66,6 +66,9 @@ export function keyCommand(ev: KeyPress): KeyCommand | null {
   if (ctrl || ev.altKey) return null;
   if (ev.shiftKey && k === 'r') return { kind: 'action', action: 'rebuild' };
   if (ev.shiftKey && k === 'o') return { kind: 'action', action: 'offset' };
+  if (ev.shiftKey && k === 'c') return { kind: 'action', action: 'clothoid' };
+  if (ev.shiftKey && k === 'i') return { kind: 'tool', tool: 'intersect' };
+  if (ev.shiftKey && k === 'k') return { kind: 'tool', tool: 'knots' };
   const tool = TOOLS[k];
   if (tool) return { kind: 'tool', tool };
   const action = ACTIONS[k];

@@ -46,6 +46,18 @@ export const SHORTCUTS: [string, string][] = [
   ],
   ['Shift+O', 'offset the selected planar curve by a distance: a new curve (one undo step)'],
   [
+    'Shift+C',
+    'clothoid: the G2 / G1 clothoid or biarc spline through the selected curve’s points, open or closed (with nothing selected: through clicked points; keys 1 2 3 and C choose); a new curve (one undo step)',
+  ],
+  [
+    'Shift+I',
+    'intersect: click two curves (the selected one first), or one twice for where it meets itself; the points are marked and read out',
+  ],
+  [
+    'Shift+K',
+    'knots: the selected NURBS curve’s interior knots as markers; drag one along the curve to move that knot value (one undo step)',
+  ],
+  [
     'M',
     "match: click curve A near the end to move, then B near an end or on it (A's end made Gk to it; one undo step)",
   ],
@@ -605,6 +617,35 @@ export class Panels {
       (f) => {
         const v = (f.elements.namedItem('distance') as HTMLInputElement).value;
         void this.app.offsetCurve(label, Number(v));
+      },
+    );
+  }
+
+  clothoidDialog(): void {
+    const label = this.app.editor.needSelection('Clothoid');
+    if (!label) return;
+    this.dialog(
+      `Clothoid spline through the points of ${this.app.editor.nameOf(label)}`,
+      (f) => {
+        const l = el('label', {}, 'Fit');
+        const s = el('select', { name: 'fit', 'aria-label': 'Fit' });
+        for (const [v, text] of [
+          ['g2', 'G2 clothoids'],
+          ['g1', 'G1 clothoids'],
+          ['biarc', 'biarcs'],
+        ] as const)
+          s.appendChild(el('option', { value: v }, text));
+        l.appendChild(s);
+        f.appendChild(l);
+        const c = el('label', {}, 'Closed');
+        c.appendChild(el('input', { name: 'closed', type: 'checkbox', 'aria-label': 'Closed' }));
+        f.appendChild(c);
+      },
+      (f) => {
+        const fit = (f.elements.namedItem('fit') as HTMLSelectElement).value as
+          'g1' | 'g2' | 'biarc';
+        const closed = (f.elements.namedItem('closed') as HTMLInputElement).checked;
+        void this.app.clothoidThrough(label, { fit, closed });
       },
     );
   }

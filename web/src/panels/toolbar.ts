@@ -76,6 +76,11 @@ export class Toolbar {
       case 'offset':
         this.app.panels.offsetDialog();
         break;
+      case 'clothoid':
+        // Through the selected curve's points (a dialog), else through clicked points (a tool).
+        if (this.app.selected) this.app.panels.clothoidDialog();
+        else this.app.setTool('clothoid');
+        break;
       case 'fit':
         this.app.fitAll();
         break;

@@ -9,6 +9,8 @@ import {
   midSpan,
   type ToolHost,
 } from './tools';
+import { ClothoidTool, type ClothoidHost } from './clothoid';
+import type { ClothoidChoice } from '../commands/clothoid';
 
 /** A host that places each click at the next scripted point and records what the tool creates. */
 function scriptedHost(points: Vec3[]): { host: ToolHost; created: CurveFile[] } {
@@ -99,3 +101,67 @@ describe('creation tools', () => {
 class KeyboardEventLike {
   constructor(readonly key: string) {}
 }
+
+describe('the Clothoid tool', () => {
+  function clothoidHost(points: Vec3[]) {
+    let next = 0;
+    const made: { points: Vec3[]; choice: ClothoidChoice }[] = [];
+    const status: string[] = [];
+    const host: ClothoidHost = {
+      pointAt: () => points[next++] ?? null,
+      preview: () => undefined,
+      status: (t) => status.push(t),
+      make: (p, choice) => {
+        made.push({ points: p, choice });
+        return Promise.resolve();
+      },
+    };
+    return { host, made, status };
+  }
+  const key = (k: string, shiftKey = false) => ({ key: k, shiftKey }) as KeyboardEvent;
+
+  it('asks the spline through the clicked points, G2 and open by default, on right click', async () => {
+    const pts: Vec3[] = [
+      [0, 0, 0],
+      [10, 5, 0],
+      [20, 0, 0],
+    ];
+    const h = clothoidHost(pts);
+    const tool = new ClothoidTool(h.host);
+    tool.click(top, ev);
+    tool.rightClick();
+    expect(h.made).toHaveLength(0);
+    expect(h.status.at(-1)).toBe('Clothoid: at least 2 points are needed');
+    tool.click(top, ev);
+    tool.click(top, ev);
+    tool.rightClick();
+    await Promise.resolve();
+    expect(h.made).toEqual([{ points: pts, choice: { fit: 'g2', closed: false } }]);
+  });
+
+  it('takes 1, 2, 3 for G1, G2, biarcs and C for closed (three points at least), Enter to finish', async () => {
+    const h = clothoidHost([
+      [0, 0, 0],
+      [10, 5, 0],
+      [20, 0, 0],
+    ]);
+    const tool = new ClothoidTool(h.host);
+    expect(tool.key(key('3'))).toBe(true);
+    expect(tool.key(key('c'))).toBe(true);
+    expect(tool.choice).toEqual({ fit: 'biarc', closed: true });
+    expect(h.status.at(-1)).toContain('Clothoid (biarcs, closed)');
+    // Shift+C is the command's, not the tool's toggle.
+    expect(tool.key(key('C', true))).toBe(false);
+    tool.click(top, ev);
+    tool.click(top, ev);
+    expect(tool.key(key('Enter'))).toBe(true);
+    expect(h.status.at(-1)).toBe('Clothoid: at least 3 points are needed');
+    tool.click(top, ev);
+    tool.key(key('Enter'));
+    await Promise.resolve();
+    expect(h.made[0]!.choice).toEqual({ fit: 'biarc', closed: true });
+    expect(h.made[0]!.points).toHaveLength(3);
+    expect(tool.key(key('1'))).toBe(true);
+    expect(tool.choice.fit).toBe('g1');
+  });
+});

@@ -5,7 +5,17 @@
 import type { CurveFile, EndCondition } from '../api/types';
 import { norm, sub, type Vec3, type ViewName } from '../viewport/math';
 
-export type ToolName = 'select' | 'spline' | 'bezier' | 'nurbs' | 'hermite' | 'match' | 'blend';
+export type ToolName =
+  | 'select'
+  | 'spline'
+  | 'bezier'
+  | 'nurbs'
+  | 'hermite'
+  | 'match'
+  | 'blend'
+  | 'intersect'
+  | 'knots'
+  | 'clothoid';
 
 export interface ToolHost {
   /** The clicked point on the view's working plane (snapped), or null. */
