@@ -3,7 +3,12 @@
 // on a 100-point curve as an in-memory transaction (target ≤ 20 µs) and
 // committed to disk (WAL, synchronous=NORMAL; ≤ 2 ms), undo and redo on disk
 // (≤ 1 ms each), and opening a document of 10,000 curves of 50 control points
-// (≤ 0.5 s, file ≤ 1.5× the raw doubles). Results: docs/benchmarks.md.
+// (≤ 0.5 s, file ≤ 1.5× the raw doubles). A study run's cost against the cost
+// of storing it with its run log (every individual of every generation): a
+// match-curvature GA of 200 generations × 100 individuals computed, then
+// committed to a document on disk, shown as JSON (`hula doc show`'s
+// answer) and the document reopened (target: storing ≤ 0.2× the run).
+// Results: docs/benchmarks.md.
 #include <benchmark/benchmark.h>
 #include <unistd.h>
 
@@ -13,6 +18,7 @@
 #include "hula/curve/curve.hpp"
 #include "hula/nurbs/knot_vector.hpp"
 #include "hula/oli/document.hpp"
+#include "hula/oli/study_run.hpp"
 
 namespace {
 
@@ -112,5 +118,79 @@ void BM_oli_open(benchmark::State& state) {
   std::filesystem::remove_all(path.parent_path());
 }
 BENCHMARK(BM_oli_open)->Arg(10000)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+// The study of the run-log benchmarks: thesis example 1 (match-curvature-example1.json) with a GA of
+// range(0) generations × range(1) individuals on one thread.
+oli::Json study_setup(const benchmark::State& state) {
+  oli::Json setup = oli::Json::parse(R"({
+    "format": "hula-study", "version": 1, "study": "match-curvature", "seed": 1, "threads": 1,
+    "points": [[0, 0], [5, 20], [40, 0]], "lower": [[0, 0], [30, 30], [0, 0]], "upper": [[0, 0], [35, 30], [0, 0]],
+    "target": {"of_points": [[0, 0], [5, 20], [40, 0]], "mirror": true}, "samples": 200, "method": "ga",
+    "ga": {"algorithm": "binary", "boost_start": 3, "boost_end": 5, "crossover_probability": 1.0,
+           "mutation_probability": 0.01, "precision": 0.001}})");
+  setup["ga"]["generations"] = state.range(0);
+  setup["ga"]["population"] = state.range(1);
+  return setup;
+}
+
+oli::ComputedStudy compute(const benchmark::State& state, const oli::Document& doc) {
+  return oli::compute_study(oli::prepare_study(doc, study_setup(state)), {});
+}
+
+// Running the study without storing it (what storing it is compared with).
+void BM_oli_study_run(benchmark::State& state) {
+  const oli::Document doc;
+  for (auto _ : state) {
+    oli::ComputedStudy computed = compute(state, doc);
+    benchmark::DoNotOptimize(computed.run.seed);
+  }
+}
+
+// Storing one computed run (study entity, run with its log, result curve) in a new document on disk.
+void BM_oli_study_store(benchmark::State& state) {
+  const auto path = scratch("study.hula");
+  const oli::ComputedStudy computed = compute(state, oli::Document());
+  for (auto _ : state) {
+    state.PauseTiming();
+    std::filesystem::remove(path);
+    oli::Document doc = oli::Document::create(path, {}, true);
+    oli::ComputedStudy copy = computed;
+    state.ResumeTiming();
+    doc.transact("run study", [&](oli::Edit& e) { (void)oli::commit_study(e, std::move(copy)); }).throw_if_failed();
+  }
+  state.counters["file_MB"] = static_cast<double>(std::filesystem::file_size(path)) / 1e6;
+  std::filesystem::remove_all(path.parent_path());
+}
+
+// The study entity as JSON with its log (`hula doc show`, GET .../entities/{label}, Python Document.show).
+void BM_oli_study_show(benchmark::State& state) {
+  oli::Document doc;
+  oli::Label study;
+  doc.transact("run study", [&](oli::Edit& e) { study = oli::commit_study(e, compute(state, doc)).study; })
+      .throw_if_failed();
+  for (auto _ : state) {
+    const oli::Json shown = oli::entity_to_json(doc.get(study));
+    benchmark::DoNotOptimize(shown.size());
+  }
+}
+
+// Opening a document holding one such run (decoding its log).
+void BM_oli_study_open(benchmark::State& state) {
+  const auto path = scratch("study-open.hula");
+  {
+    oli::Document doc = oli::Document::create(path, {}, true);
+    doc.transact("run study", [&](oli::Edit& e) { (void)oli::commit_study(e, compute(state, doc)); }).throw_if_failed();
+  }
+  for (auto _ : state) {
+    oli::Document doc = oli::Document::open(path, oli::OpenMode::ReadOnly);
+    benchmark::DoNotOptimize(doc.size());
+  }
+  std::filesystem::remove_all(path.parent_path());
+}
+
+BENCHMARK(BM_oli_study_run)->Args({200, 100})->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK(BM_oli_study_store)->Args({200, 100})->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK(BM_oli_study_show)->Args({200, 100})->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK(BM_oli_study_open)->Args({200, 100})->Unit(benchmark::kMillisecond)->Iterations(3);
 
 }  // namespace

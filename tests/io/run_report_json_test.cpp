@@ -6,6 +6,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <string>
+
 #include "hula/core/error.hpp"
 
 namespace hula::io {
@@ -78,6 +83,71 @@ TEST(RunReportJson, BadReportNamesTheMember) {
     EXPECT_EQ(e.code(), Errc::ParseError);
     EXPECT_NE(e.message().find("evaluations"), std::string::npos);
   }
+}
+
+// A two-generation log with a NaN objective (a failed individual), an infinite violation and two variables.
+optim::RunLog sample_log() {
+  optim::RunLog log;
+  for (std::size_t k = 0; k < 2; ++k) {
+    optim::GenerationLog g;
+    g.generation = k;
+    g.evaluations = 3 * (k + 1);
+    g.dimension = 2;
+    g.objectives = 1;
+    g.variables = {0.1 * static_cast<double>(k), 1.0 / 3.0, -2.5, 7.0, 1e-17, -0.0};
+    g.objective_values = {0.5, std::numeric_limits<double>::quiet_NaN(), 2.0 + static_cast<double>(k)};
+    g.violation = {0.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()};
+    g.fitness = {0.75, 0.0, 0.125};
+    g.failed = {0, 1, 0};
+    log.append(g);
+  }
+  return log;
+}
+
+// Checks run_log_to_json writes what optim::RunLog::write_json writes (the `--log` file, its own writer),
+// and run_log_from_json reads it back to the same log (NaN for null, so the infinite violation comes back
+// NaN) and the same JSON.
+TEST(RunReportJson, RunLogReadAfterWrite) {
+  const optim::RunLog log = sample_log();
+  std::ostringstream file;
+  log.write_json(file);
+  const Json written = run_log_to_json(log);
+  EXPECT_EQ(written, Json::parse(file.str()));
+  const optim::RunLog back = run_log_from_json(Json::parse(written.dump()));
+  EXPECT_EQ(run_log_to_json(back), written);
+  optim::RunLog expected = sample_log();
+  ASSERT_EQ(back.generations().size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k) {
+    optim::GenerationLog g = expected.generations()[k];
+    g.violation[2] = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_EQ(back.generations()[k], g) << "generation " << k;
+  }
+}
+
+// Checks bad logs are ParseErrors naming the member: a variables count that differs from individual 0's,
+// a failed flag that is not a boolean, an unknown member, a log that is not an object.
+TEST(RunReportJson, BadRunLogNamesTheMember) {
+  const auto refusal = [](const Json& log) {
+    try {
+      (void)run_log_from_json(log);
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), Errc::ParseError);
+      return e.message();
+    }
+    return std::string("accepted");
+  };
+  Json j = run_log_to_json(sample_log());
+  j["generations"][1]["individuals"][2]["variables"].push_back(1.0);
+  EXPECT_NE(refusal(j).find("log.generations[1].individuals[2].variables has 3 values where individual 0 has 2"),
+            std::string::npos)
+      << refusal(j);
+  j = run_log_to_json(sample_log());
+  j["generations"][0]["individuals"][1]["failed"] = 1;
+  EXPECT_NE(refusal(j).find("log.generations[0].individuals[1].failed"), std::string::npos) << refusal(j);
+  j = run_log_to_json(sample_log());
+  j["generations"][0]["best"] = 1;
+  EXPECT_NE(refusal(j).find("best"), std::string::npos) << refusal(j);
+  EXPECT_NE(refusal(Json::array({1})).find("log"), std::string::npos);
 }
 
 }  // namespace

@@ -9,10 +9,18 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
 #include <limits>
+#include <memory>
 #include <stdexcept>
+#include <string>
 
+#include "hula/io/atomic_file.hpp"
 #include "hula/io/json_curve.hpp"
+#include "hula/io/run_report_json.hpp"
+#include "hula/oli/detail/entity_codec.hpp"
 #include "hula/testing/temp_dir.hpp"
 #include "oli_fixtures.hpp"
 
@@ -369,6 +377,142 @@ TEST(Document, PointSetsAndStudiesAreEntities) {
   EXPECT_EQ(doc.get(s).provenance()->inputs, std::vector<Label>{p});
   EXPECT_EQ(doc.get(s).provenance()->seed, 7u);
   EXPECT_THROW((void)doc.get(p).curve(), Error);
+}
+
+// A run log with what a real one may hold besides finite numbers: NaN and infinite values, a failed
+// individual, two objectives, and an empty generation.
+std::shared_ptr<const optim::RunLog> awkward_log() {
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  optim::RunLog log;
+  optim::GenerationLog g;
+  g.generation = 0;
+  g.evaluations = 3;
+  g.dimension = 2;
+  g.objectives = 2;
+  g.variables = {0.1, -0.0, 1e-300, 3.5, -inf, 2.0};
+  g.objective_values = {1.0, 2.0, nan, nan, 0.5, inf};
+  g.violation = {0.0, nan, 0.25};
+  g.fitness = {0.5, 0.0, 1.0 / 3.0};
+  g.failed = {0, 1, 0};
+  log.append(g);
+  optim::GenerationLog empty;
+  empty.generation = 1;
+  empty.evaluations = 3;
+  empty.dimension = 2;
+  empty.objectives = 2;
+  log.append(empty);
+  return std::make_shared<const optim::RunLog>(std::move(log));
+}
+
+// Checks a study's run logs survive the store bit for bit (NaN, -0, ±inf, failed flags, an empty
+// generation, a study without generations), in the entity and in the undo log, and are shown as before:
+// as run_log_to_json writes them, `[]` for none.
+TEST(Document, StudyRunLogsRoundTripBitExactly) {
+  hula::testing::TempDir dir;
+  const auto path = dir / "s.hula";
+  Study study{Json::object({{"format", "hula-study"}}), {}};
+  study.runs.push_back(StudyRun{3, Json::object({{"best", 1.5}}), awkward_log(), {}});
+  study.runs.push_back(StudyRun{4, Json::object(), nullptr, {}});
+  Label s;
+  {
+    Document doc = Document::create(path);
+    doc.transact("add", [&](Edit& e) { s = e.add_study(study); }).throw_if_failed();
+    doc.transact("rename", [&](Edit& e) { e.set_attributes(s, {.name = "renamed"}); }).throw_if_failed();
+  }
+  Document doc = Document::open(path);
+  const Study& read = doc.get(s).study();
+  EXPECT_EQ(read, study);
+  ASSERT_NE(read.runs[0].log, nullptr);
+  EXPECT_TRUE(std::isinf(read.runs[0].log->generations()[0].variables[4]));
+  EXPECT_TRUE(std::signbit(read.runs[0].log->generations()[0].variables[1]));
+  EXPECT_EQ(read.runs[1].log, nullptr);
+  const Json shown = entity_to_json(doc.get(s));
+  EXPECT_EQ(shown["runs"][0]["log"], io::run_log_to_json(*study.runs[0].log));
+  EXPECT_EQ(shown["runs"][0]["log"]["generations"][0]["individuals"][1]["failed"], true);
+  EXPECT_TRUE(shown["runs"][0]["log"]["generations"][0]["individuals"][2]["objectives"][1].is_null());
+  EXPECT_EQ(shown["runs"][1]["log"], Json::array());
+  ASSERT_TRUE(doc.undo());  // the state before the rename comes from the undo log
+  EXPECT_EQ(doc.get(s).study(), study);
+  EXPECT_EQ(doc.get(s).attributes().name, "");
+}
+
+// Checks a document written before run logs were stored as columns (tests/data/oli/study-runs-v1.hula,
+// written by the `hula` of main at 479c32d; README there) loads, and every entity — two GA studies with
+// their logs, their result curves, and an undone edit-projection study read back by redo — is shown
+// exactly as that `hula doc show` showed it; entities rewritten in the current encoding still are.
+TEST(Document, DocumentsOfCodecVersion1LoadWithTheSameAnswers) {
+  const std::filesystem::path data = std::filesystem::path(std::getenv("HULA_TEST_DATA")) / "oli";
+  hula::testing::TempDir dir;
+  const auto path = dir / "old.hula";
+  std::filesystem::copy_file(data / "study-runs-v1.hula", path);
+  const Json shown = Json::parse(io::read_text_file(data / "study-runs-v1-shown.json"));
+  {
+    Document doc = Document::open(path);
+    ASSERT_EQ(doc.size(), 4u);
+    for (const std::uint64_t l : {1, 2, 3, 4})
+      EXPECT_EQ(entity_to_json(doc.get(Label{l})), shown[std::to_string(l)]) << "entity " << l;
+    ASSERT_EQ(doc.get(Label{1}).study().runs[0].log->generations().size(), 4u);
+    ASSERT_TRUE(doc.redo());
+    EXPECT_EQ(entity_to_json(doc.get(Label{5})), shown["5"]);
+    EXPECT_EQ(doc.get(Label{5}).study().runs[0].log, nullptr);
+    // Rewrites both GA studies in the current encoding (a rename; undone below, so no attribute changes).
+    doc.transact("rename",
+                 [&](Edit& e) {
+                   e.set_attributes(Label{1}, {.name = "one"});
+                   e.set_attributes(Label{3}, {.name = "three"});
+                 })
+        .throw_if_failed();
+  }
+  Document doc = Document::open(path);
+  for (const std::uint64_t l : {1, 3}) {
+    Json now = entity_to_json(doc.get(Label{l}));
+    Json was = shown[std::to_string(l)];
+    now.erase("attributes");
+    was.erase("attributes");
+    EXPECT_EQ(now, was) << "entity " << l;
+  }
+  ASSERT_TRUE(doc.undo());
+  EXPECT_EQ(entity_to_json(doc.get(Label{3})), shown["3"]);
+}
+
+// Checks a stored run-log column block whose counts exceed its numbers, or whose failed flag is not 0/1,
+// is refused as a corrupt entity state naming the run log (never read past its end).
+TEST(Document, CorruptRunLogColumnsAreRefused) {
+  const auto blob = [](const std::vector<double>& columns) {
+    const std::string text =
+        R"({"kind":"study","attributes":{},"provenance":null,"constraints":[],)"
+        R"("data":{"kind":"study","setup":{},"runs":[{"seed":1,"result":{},"log":{"$log":0},"result_curves":[]}]}})";
+    std::string out = "HLE2";
+    const auto u32 = [&](std::uint32_t v) { out.append(reinterpret_cast<const char*>(&v), 4); };
+    u32(static_cast<std::uint32_t>(text.size()));
+    out += text;
+    u32(1);
+    const std::uint64_t n = columns.size();
+    out.append(reinterpret_cast<const char*>(&n), 8);
+    out.append(reinterpret_cast<const char*>(columns.data()), columns.size() * sizeof(double));
+    return out;
+  };
+  const auto refusal = [&](const std::vector<double>& columns) {
+    try {
+      (void)detail::decode_state(blob(columns));
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), Errc::ParseError);
+      return e.message();
+    }
+    return std::string("accepted");
+  };
+  // generation 0, 2 evaluations, 1 variable, 1 objective, 2 individuals: a header of 5 and 10 numbers.
+  const std::vector<double> good{0, 2, 1, 1, 2, 0.5, 0.25, 1.0, 2.0, 0, 0, 0.1, 0.2, 0, 1};
+  const detail::StatePtr state = detail::decode_state(blob(good));
+  ASSERT_NE(state->study->runs[0].log, nullptr);
+  EXPECT_EQ(state->study->runs[0].log->generations()[0].failed, (std::vector<std::uint8_t>{0, 1}));
+  EXPECT_NE(refusal({0, 2, 1, 1, 1e15, 0.5}).find("run log generation 0: 1000000000000000 individuals exceed"),
+            std::string::npos);
+  EXPECT_NE(refusal({0, 2, 1, 1, 2.5}).find("run log count 2.5"), std::string::npos);
+  std::vector<double> bad_flag = good;
+  bad_flag.back() = 2;
+  EXPECT_NE(refusal(bad_flag).find("run log failed flag 2"), std::string::npos);
+  EXPECT_NE(refusal({0, 2, 1}).find("run log truncated"), std::string::npos);
 }
 
 }  // namespace

@@ -67,7 +67,8 @@ TEST(StudyRun, RunIsStoredWithProvenanceAndRepeatsBitExactly) {
     const Entity study = doc.get(first.study);
     ASSERT_EQ(study.study().runs.size(), 1u);
     EXPECT_EQ(study.study().runs[0].seed, 5u);
-    EXPECT_FALSE(study.study().runs[0].log.empty());
+    ASSERT_NE(study.study().runs[0].log, nullptr);
+    EXPECT_FALSE(study.study().runs[0].log->generations().empty());
     EXPECT_EQ(study.study().setup["points"]["entity"], p.value);
     const Entity curve = doc.get(first.curves[0]);
     ASSERT_TRUE(curve.provenance().has_value());
@@ -116,7 +117,8 @@ TEST(StudyRun, ProgressCallbackSeesEveryGeneration) {
   StudyRunResult r;
   doc.transact("run", [&](Edit& e) { r = run_study(e, study_on(p), ".", options); }).throw_if_failed();
   EXPECT_EQ(seen, (std::vector<std::size_t>{0, 1, 2, 3, 4, 5, 6}));
-  EXPECT_EQ(doc.get(r.study).study().runs[0].log["generations"].size(), seen.size());
+  ASSERT_NE(doc.get(r.study).study().runs[0].log, nullptr);
+  EXPECT_EQ(doc.get(r.study).study().runs[0].log->generations().size(), seen.size());
   EXPECT_FALSE(r.cancelled);
   EXPECT_EQ(r.kind, "match-curvature");
 }
@@ -137,7 +139,8 @@ TEST(StudyRun, CancelStoresBestSoFar) {
   EXPECT_TRUE(r.cancelled);
   const Study& stored = doc.get(r.study).study();
   ASSERT_EQ(stored.runs.size(), 1u);
-  EXPECT_EQ(stored.runs[0].log["generations"].size(), 3u);
+  ASSERT_NE(stored.runs[0].log, nullptr);
+  EXPECT_EQ(stored.runs[0].log->generations().size(), 3u);
   EXPECT_EQ(stored.runs[0].result["ga"]["termination"], "Cancelled");
   ASSERT_EQ(r.curves.size(), 1u);
   EXPECT_EQ(doc.get(r.curves[0]).provenance()->details["cancelled"], true);

@@ -54,4 +54,11 @@ struct RunIdentity {
 /// "failed"}]}]}, NaN as null: the log a document stores with a study run.
 [[nodiscard]] Json run_log_to_json(const optim::RunLog& log);
 
+/// Reads run_log_to_json's form back (null as NaN): a study run's log in a document JSON file or in a
+/// document stored before logs were stored as columns. Every individual of a generation has the same
+/// numbers of variables and objectives.
+/// @throws hula::Error(Errc::ParseError) naming the member ("log.generations[2].individuals[5].fitness")
+///   that is missing, mistyped or unknown, or whose count differs from the generation's first individual
+[[nodiscard]] optim::RunLog run_log_from_json(const Json& json);
+
 }  // namespace hula::io

@@ -52,6 +52,7 @@
 #include "hula/io/json_curve.hpp"
 #include "hula/io/points_file.hpp"
 #include "hula/oli/constraints.hpp"
+#include "hula/optim/run_log.hpp"
 
 namespace hula::curve {
 class Curve;  // the one curve value type (hula/curve/curve.hpp)
@@ -131,12 +132,17 @@ struct StudyRun {
   std::uint64_t seed = 1;
   /// The study's result document as `hula <study>` prints it (champion, fitness, termination ...).
   Json result = Json::object();
-  /// The run log (one record per generation), as written by `--log`.
-  Json log = Json::array();
+  /// The run log: every individual of every generation of the study's optimisers (shared, never copied;
+  /// shown as `--log` writes it). None for the studies without generations (shown as []).
+  std::shared_ptr<const optim::RunLog> log{};
   /// The result curves, added as entities with provenance naming the study.
   std::vector<Label> result_curves{};
 
-  friend bool operator==(const StudyRun&, const StudyRun&) = default;
+  /// Equal seeds, results, result curves and logs (the same log, or logs equal bit for bit).
+  friend bool operator==(const StudyRun& a, const StudyRun& b) {
+    return a.seed == b.seed && a.result == b.result && a.result_curves == b.result_curves &&
+           (a.log == b.log || (a.log && b.log && *a.log == *b.log));
+  }
 };
 
 /// A study entity's data: the study file's setup (curves it names resolved to

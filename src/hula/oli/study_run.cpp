@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <iterator>
+#include <memory>
 #include <optional>
 #include <set>
 #include <variant>
@@ -12,7 +13,6 @@
 #include "hula/curve/curve.hpp"
 #include "hula/io/json_curve.hpp"
 #include "hula/io/path_resolver.hpp"
-#include "hula/io/run_report_json.hpp"
 #include "hula/io/study_file.hpp"
 #include "hula/oli/detail/entity_codec.hpp"
 
@@ -146,7 +146,7 @@ ComputedStudy compute_study(PreparedStudy prepared, const std::filesystem::path&
   // The editing studies have no generations: their stored log stays the empty array.
   if (std::holds_alternative<MatchValues>(ran.values) || std::holds_alternative<TorsionMatchValues>(ran.values) ||
       std::holds_alternative<FairKnotsValues>(ran.values))
-    out.run.log = io::run_log_to_json(ran.log);
+    out.run.log = std::make_shared<const optim::RunLog>(std::move(ran.log));
   out.curves = std::move(ran.curves);
   out.report = ran.report;
   return out;

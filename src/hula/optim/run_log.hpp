@@ -11,6 +11,7 @@
 #include <functional>
 #include <iosfwd>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace hula::optim {
@@ -97,6 +98,8 @@ class RunLog {
   /// Appends a copy of one generation.
   /// @param generation the generation to copy.
   void append(const GenerationLog& generation) { generations_.push_back(generation); }
+  /// Appends one generation, moved in.
+  void append(GenerationLog&& generation) { generations_.push_back(std::move(generation)); }
   /// A callback that appends to this log; the log must outlive the run.
   [[nodiscard]] GenerationCallback collector() {
     return [this](const GenerationLog& g) { append(g); };

@@ -5,18 +5,23 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
+#include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "hula/core/error.hpp"
 #include "hula/io/json_curve.hpp"
 #include "hula/io/json_read.hpp"
+#include "hula/io/run_report_json.hpp"
 
 namespace hula::oli::detail {
 namespace {
 
 static_assert(std::endian::native == std::endian::little,
               "the entity codec writes the host's doubles as little-endian");
-constexpr char kMagic[4] = {'H', 'L', 'E', '1'};
+constexpr char kMagic[4] = {'H', 'L', 'E', '2'};
+constexpr char kMagicVersion1[4] = {'H', 'L', 'E', '1'};
 
 [[noreturn]] void corrupt(const std::string& what) {
   throw Error(Errc::ParseError, "entity state: " + what, {.field = "state"});
@@ -32,13 +37,94 @@ Json points_to_json(const std::vector<Vec3>& points, int dimension) {
   return out;
 }
 
-Json study_to_json(const Study& study) {
+using Arrays = std::vector<std::vector<double>>;
+
+// The numbers of one run log column block (entity_codec.hpp): per generation its generation, evaluations,
+// dimension, objectives and individual count, then its variables, objectives, violations, fitnesses and
+// failed flags (0 or 1).
+std::vector<double> run_log_columns(const optim::RunLog& log) {
+  std::size_t total = 0;
+  for (const optim::GenerationLog& g : log.generations()) {
+    const std::size_t n = g.size();
+    if (g.variables.size() != n * g.dimension || g.objective_values.size() != n * g.objectives ||
+        g.violation.size() != n || g.fitness.size() != n)
+      throw Error(Errc::InvalidArgument,
+                  "run log generation " + std::to_string(g.generation) + ": its columns disagree on its " +
+                      std::to_string(n) + " individuals",
+                  {.field = "log"});
+    total += 5 + g.variables.size() + g.objective_values.size() + 3 * n;
+  }
+  std::vector<double> out;
+  out.reserve(total);
+  for (const optim::GenerationLog& g : log.generations()) {
+    for (const std::size_t v : {g.generation, g.evaluations, g.dimension, g.objectives, g.size()})
+      out.push_back(static_cast<double>(v));
+    out.insert(out.end(), g.variables.begin(), g.variables.end());
+    out.insert(out.end(), g.objective_values.begin(), g.objective_values.end());
+    out.insert(out.end(), g.violation.begin(), g.violation.end());
+    out.insert(out.end(), g.fitness.begin(), g.fitness.end());
+    for (const std::uint8_t f : g.failed) out.push_back(f != 0 ? 1.0 : 0.0);
+  }
+  return out;
+}
+
+// run_log_columns read back; every count is checked against the numbers that remain.
+optim::RunLog run_log_from_columns(const std::vector<double>& a) {
+  optim::RunLog log;
+  std::size_t at = 0;
+  const auto count = [&]() -> std::size_t {
+    if (at == a.size()) corrupt("run log truncated in a generation's header");
+    const double v = a[at++];
+    if (!(v >= 0.0 && v <= 9007199254740992.0 && v == std::floor(v)))
+      corrupt("run log count " + format_number(v) + " is not a count");
+    return static_cast<std::size_t>(v);
+  };
+  const auto column = [&](std::size_t n) {
+    const auto first = a.begin() + static_cast<std::ptrdiff_t>(at);
+    at += n;
+    return std::vector<double>(first, first + static_cast<std::ptrdiff_t>(n));
+  };
+  while (at < a.size()) {
+    optim::GenerationLog g;
+    g.generation = count();
+    g.evaluations = count();
+    g.dimension = count();
+    g.objectives = count();
+    const std::size_t n = count();
+    if (n != 0 && g.dimension + g.objectives + 3 > (a.size() - at) / n)
+      corrupt("run log generation " + std::to_string(g.generation) + ": " + std::to_string(n) +
+              " individuals exceed the numbers that remain");
+    g.variables = column(n * g.dimension);
+    g.objective_values = column(n * g.objectives);
+    g.violation = column(n);
+    g.fitness = column(n);
+    g.failed.reserve(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double f = a[at++];
+      if (f != 0.0 && f != 1.0) corrupt("run log failed flag " + format_number(f) + " is neither 0 nor 1");
+      g.failed.push_back(f != 0.0 ? 1 : 0);
+    }
+    log.append(std::move(g));
+  }
+  return log;
+}
+
+// A study as JSON. With `arrays`, each run log goes there as one column block, referenced as
+// {"$log": i} (the store's form); without, as run_log_to_json writes it.
+Json study_to_json(const Study& study, Arrays* arrays) {
   Json runs = Json::array();
   for (const StudyRun& run : study.runs) {
     Json r = Json::object();
     r["seed"] = run.seed;
     r["result"] = run.result;
-    r["log"] = run.log;
+    if (!run.log) {
+      r["log"] = Json::array();
+    } else if (arrays != nullptr) {
+      r["log"] = Json::object({{"$log", arrays->size()}});
+      arrays->push_back(run_log_columns(*run.log));
+    } else {
+      r["log"] = io::run_log_to_json(*run.log);
+    }
     Json curves = Json::array();
     for (Label l : run.result_curves) curves.push_back(l.value);
     r["result_curves"] = std::move(curves);
@@ -51,7 +137,19 @@ Json study_to_json(const Study& study) {
   return out;
 }
 
-Study study_from_json(const Json& json) {
+// A stored run log: [] (a study without generations), run_log_to_json's form, or, with `arrays` (the
+// store), a reference {"$log": i} to its column block.
+std::shared_ptr<const optim::RunLog> run_log_from(const Json& log, const Arrays* arrays) {
+  if (log.is_array() && log.empty()) return nullptr;
+  if (arrays != nullptr && log.is_object() && log.size() == 1 && log.contains("$log")) {
+    const Json& i = log["$log"];
+    if (!i.is_number_unsigned() || i.get<std::size_t>() >= arrays->size()) corrupt("run log reference out of range");
+    return std::make_shared<const optim::RunLog>(run_log_from_columns((*arrays)[i.get<std::size_t>()]));
+  }
+  return std::make_shared<const optim::RunLog>(io::run_log_from_json(log));
+}
+
+Study study_from_json(const Json& json, const Arrays* arrays) {
   namespace j = io::json;
   const j::JsonPath root = j::root_path("");
   Study study;
@@ -64,7 +162,7 @@ Study study_from_json(const Json& json) {
     run.seed = static_cast<std::uint64_t>(
         j::get_integer(j::require_member(runs[i], at, "seed"), at.member("seed"), 0, INT64_MAX));
     run.result = j::require_member(runs[i], at, "result");
-    run.log = j::require_member(runs[i], at, "log");
+    run.log = run_log_from(j::require_member(runs[i], at, "log"), arrays);
     const Json& curves = j::get_array(j::require_member(runs[i], at, "result_curves"), at.member("result_curves"));
     for (std::size_t k = 0; k < curves.size(); ++k)
       run.result_curves.push_back(Label{
@@ -206,7 +304,10 @@ void validate_point_set(const PointSet& set) {
   }
 }
 
-Json entity_data_to_json(const EntityState& state) {
+namespace {
+
+// The forms below with `arrays`: the store's skeleton, run logs as column blocks (study_to_json).
+Json data_to_json(const EntityState& state, Arrays* arrays) {
   switch (state.kind) {
     case EntityKind::Curve:
       return io::curve_to_json(*state.curve);
@@ -218,12 +319,12 @@ Json entity_data_to_json(const EntityState& state) {
       return out;
     }
     case EntityKind::Study:
-      return study_to_json(*state.study);
+      return study_to_json(*state.study, arrays);
   }
   return Json::object();
 }
 
-void entity_data_from_json(EntityKind kind, const Json& data, EntityState& state) {
+void data_from_json(EntityKind kind, const Json& data, EntityState& state, const Arrays* arrays) {
   namespace j = io::json;
   state.kind = kind;
   switch (kind) {
@@ -241,22 +342,22 @@ void entity_data_from_json(EntityKind kind, const Json& data, EntityState& state
       return;
     }
     case EntityKind::Study:
-      state.study = std::make_shared<const Study>(study_from_json(data));
+      state.study = std::make_shared<const Study>(study_from_json(data, arrays));
       return;
   }
 }
 
-Json entity_state_to_json(const EntityState& state) {
+Json state_to_json(const EntityState& state, Arrays* arrays) {
   Json out = Json::object();
   out["kind"] = entity_kind_name(state.kind);
   out["attributes"] = attributes_to_json(state.attributes);
   out["provenance"] = state.provenance ? provenance_to_json(*state.provenance) : Json(nullptr);
   out["constraints"] = constraints_to_json(state.constraints);
-  out["data"] = entity_data_to_json(state);
+  out["data"] = data_to_json(state, arrays);
   return out;
 }
 
-StatePtr entity_state_from_json(const Json& json) {
+StatePtr state_from_json(const Json& json, const Arrays* arrays) {
   namespace j = io::json;
   const j::JsonPath root = j::root_path("");
   auto state = std::make_shared<EntityState>();
@@ -273,13 +374,25 @@ StatePtr entity_state_from_json(const Json& json) {
   state->attributes = attributes_from_json(j::require_member(json, root, "attributes"));
   if (const Json* p = j::optional_member(json, "provenance")) state->provenance = provenance_from_json(*p);
   if (const Json* c = j::optional_member(json, "constraints")) state->constraints = constraints_from_json(*c);
-  entity_data_from_json(k, j::require_member(json, root, "data"), *state);
+  data_from_json(k, j::require_member(json, root, "data"), *state, arrays);
   return state;
 }
 
+}  // namespace
+
+Json entity_data_to_json(const EntityState& state) { return data_to_json(state, nullptr); }
+
+void entity_data_from_json(EntityKind kind, const Json& data, EntityState& state) {
+  data_from_json(kind, data, state, nullptr);
+}
+
+Json entity_state_to_json(const EntityState& state) { return state_to_json(state, nullptr); }
+
+StatePtr entity_state_from_json(const Json& json) { return state_from_json(json, nullptr); }
+
 std::string encode_state(const EntityState& state) {
-  Json skeleton = entity_state_to_json(state);
-  std::vector<std::vector<double>> arrays;
+  Arrays arrays;
+  Json skeleton = state_to_json(state, &arrays);
   pack(skeleton["data"], arrays);
   const std::string text = skeleton.dump();
   std::string out;
@@ -300,7 +413,10 @@ std::string encode_state(const EntityState& state) {
 StatePtr decode_state(std::string_view bytes) {
   Reader r{bytes};
   r.need(4);
-  if (std::memcmp(bytes.data(), kMagic, 4) != 0) corrupt("unknown encoding (expected \"HLE1\")");
+  // Version 1 (before run logs were column blocks) still loads: its logs are JSON in the skeleton.
+  const bool version1 = std::memcmp(bytes.data(), kMagicVersion1, 4) == 0;
+  if (!version1 && std::memcmp(bytes.data(), kMagic, 4) != 0)
+    corrupt("unknown encoding (expected \"HLE2\" or \"HLE1\")");
   r.at = 4;
   const std::uint32_t text_size = r.u32();
   r.need(text_size);
@@ -324,7 +440,7 @@ StatePtr decode_state(std::string_view bytes) {
   Json skeleton = io::json::parse_json_text(text, "entity state");
   if (!skeleton.is_object() || !skeleton.contains("data")) corrupt("no data");
   unpack(skeleton["data"], arrays);
-  return entity_state_from_json(skeleton);
+  return state_from_json(skeleton, version1 ? nullptr : &arrays);
 }
 
 }  // namespace hula::oli::detail

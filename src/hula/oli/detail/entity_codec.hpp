@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Encoding of entity states for the store (docs/formats.md "Entity state"):
 //
-//   bytes 0-3  "HLE1"  magic and codec version 1
+//   bytes 0-3  "HLE2"  magic and codec version 2 ("HLE1", version 1, is still read)
 //   u32 LE     n: length of the skeleton
 //   n bytes    the skeleton: the entity as JSON (entity_state_to_json) in which
 //              every array of floating-point numbers, and every array of
@@ -10,9 +10,16 @@
 //   u32 LE     m: the number of packed arrays
 //   m times    u64 LE count, then count little-endian IEEE-754 doubles
 //
+//              and every study run's log by {"$log": i}: packed array i holds
+//              the log as columns (per generation a header of five counts,
+//              then variables, objectives, violations, fitnesses, failed flags)
+//
 // Large numeric arrays (control points, knots, run logs) are thus stored
 // compactly and bit-exactly instead of as decimal text; the skeleton keeps the
-// document's own JSON formats for everything else.
+// document's own JSON formats for everything else. A run log is written from
+// the shared optim::RunLog straight into its one array (no JSON tree per
+// individual, which cost about as much as the run). Version 1 differs only in
+// writing run logs as their JSON (io::run_log_to_json) inside the skeleton.
 #pragma once
 
 #include <string>
