@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "hula/core/error.hpp"
+#include "hula/core/huge_pages.hpp"
 #include "hula/io/owned_files.hpp"
 
 namespace hula::io {
@@ -186,7 +187,10 @@ std::string read_text_file(const std::filesystem::path& path, std::size_t max_by
     if (S_ISREG(st.st_mode)) expected = static_cast<std::size_t>(st.st_size);
   }
   const std::filesystem::path shown = is_stdin ? std::filesystem::path("-") : path;
-  std::string contents(expected, '\0');
+  std::string contents;
+  contents.reserve(expected);
+  advise_huge_pages(contents.data(), expected);
+  contents.resize(expected);
   std::size_t got = 0;
   while (got < expected) {
     const ssize_t n = ::read(fd, contents.data() + got, expected - got);

@@ -15,59 +15,68 @@ namespace {
 
 using json::Json;
 
-// The exponent of a number in scientific notation as nlohmann writes it: a sign and at least two
-// digits ("e+07", "e-123").
-void put_exponent(std::string& out, int e) {
-  out += e < 0 ? '-' : '+';
-  e = std::abs(e);
-  if (e >= 100) out += static_cast<char>('0' + e / 100);
-  out += static_cast<char>('0' + e / 10 % 10);
-  out += static_cast<char>('0' + e % 10);
-}
-
 // A finite non-zero double: the shortest digits that read back as the same double (std::to_chars,
 // no locale, no allocation), laid out as nlohmann::json's dump() lays out its own digits, so files
 // keep their look: fixed notation with at least one decimal ("12.0", "0.0001") for decimal
-// exponents in (-4, 15], scientific otherwise ("1e+16", "1.5e-05").
+// exponents in (-4, 15], scientific otherwise ("1e+16", "1.5e-05", the exponent with a sign and at
+// least two digits). The text is laid out in a local buffer and appended once.
 void put_double(std::string& out, double v) {
+  std::array<char, 48> text{};  // at most: sign, "0.0000", 17 digits; or 17 digits, '.', "e-324"
+  char* o = text.data();
   if (std::signbit(v)) {
-    out += '-';
+    *o++ = '-';
     v = -v;
   }
   std::array<char, 32> sci{};  // d.ddddde±XXX: at most 17 digits, point, exponent
   const auto [end, ec] = std::to_chars(sci.data(), sci.data() + sci.size(), v, std::chars_format::scientific);
   (void)ec;  // cannot fail: 32 characters hold every double
-  const char* e_at = static_cast<const char*>(std::memchr(sci.data(), 'e', static_cast<std::size_t>(end - sci.data())));
-  int exp10 = 0;
-  std::from_chars(e_at + (e_at[1] == '+' ? 2 : 1), end, exp10);
+  // The digits without the point, then the exponent after 'e' (always signed by to_chars).
   std::array<char, 17> digits{};
   int k = 0;
-  for (const char* c = sci.data(); c != e_at; ++c)
+  const char* c = sci.data();
+  for (; *c != 'e'; ++c)
     if (*c != '.') digits[static_cast<std::size_t>(k++)] = *c;
+  const bool negative_exp = c[1] == '-';
+  int exp10 = 0;
+  for (const char* e = c + 2; e != end; ++e) exp10 = 10 * exp10 + (*e - '0');
+  if (negative_exp) exp10 = -exp10;
   const int n = exp10 + 1;  // v = 0.d1d2…dk × 10^n
-  const std::string_view d(digits.data(), static_cast<std::size_t>(k));
+  const auto put = [&o](const char* from, int count) {
+    std::memcpy(o, from, static_cast<std::size_t>(count));
+    o += count;
+  };
+  const auto zeros = [&o](int count) {
+    std::memset(o, '0', static_cast<std::size_t>(count));
+    o += count;
+  };
   constexpr int kMinExp = -4, kMaxExp = 15;  // nlohmann's bounds for fixed notation
   if (k <= n && n <= kMaxExp) {              // digits[000].0
-    out += d;
-    out.append(static_cast<std::size_t>(n - k), '0');
-    out += ".0";
+    put(digits.data(), k);
+    zeros(n - k);
+    put(".0", 2);
   } else if (0 < n && n <= kMaxExp) {  // dig.its
-    out += d.substr(0, static_cast<std::size_t>(n));
-    out += '.';
-    out += d.substr(static_cast<std::size_t>(n));
+    put(digits.data(), n);
+    *o++ = '.';
+    put(digits.data() + n, k - n);
   } else if (kMinExp < n && n <= 0) {  // 0.[000]digits
-    out += "0.";
-    out.append(static_cast<std::size_t>(-n), '0');
-    out += d;
+    put("0.", 2);
+    zeros(-n);
+    put(digits.data(), k);
   } else {  // d[.igits]e±XX
-    out += d[0];
+    *o++ = digits[0];
     if (k > 1) {
-      out += '.';
-      out += d.substr(1);
+      *o++ = '.';
+      put(digits.data() + 1, k - 1);
     }
-    out += 'e';
-    put_exponent(out, n - 1);
+    *o++ = 'e';
+    int e = n - 1;
+    *o++ = e < 0 ? '-' : '+';
+    e = std::abs(e);
+    if (e >= 100) *o++ = static_cast<char>('0' + e / 100);
+    *o++ = static_cast<char>('0' + e / 10 % 10);
+    *o++ = static_cast<char>('0' + e % 10);
   }
+  out.append(text.data(), o);
 }
 
 template <class Int>

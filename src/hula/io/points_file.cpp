@@ -9,6 +9,7 @@
 #include <string>
 
 #include "hula/core/error.hpp"
+#include "hula/core/huge_pages.hpp"
 #include "hula/io/atomic_file.hpp"
 #include "hula/io/json_read.hpp"
 
@@ -153,6 +154,7 @@ bool scan_row(std::string_view line, Separator sep, std::size_t width, Vec3& p) 
 PointSet parse_csv(std::string_view text, bool fast) {
   Rows rows;
   rows.points.reserve(static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1);
+  advise_huge_pages(rows.points.data(), rows.points.capacity() * sizeof(Vec3));
   std::optional<Separator> sep;
   std::size_t separator_line = 0;  // the line that set the separator
   std::size_t header_lines = 0;

@@ -39,6 +39,7 @@
 
 #include "hula/core/banded.hpp"
 #include "hula/core/error.hpp"
+#include "hula/core/huge_pages.hpp"
 #include "hula/nurbs/basis.hpp"
 #include "hula/nurbs/detail/curve_access.hpp"
 #include "hula/nurbs/detail/option_checks.hpp"
@@ -288,15 +289,11 @@ struct CubicSystem {
   // `zero`: clear the rows (assembly by add()); else the caller writes every entry.
   CubicSystem(std::size_t size, double* rhs_storage, Scratch& w, bool zero = true)
       : n(size), a(w.a), b(w.b), c(w.c), rhs(rhs_storage) {
-    if (!zero) {
-      a.resize(size);
-      b.resize(size);
-      c.resize(size);
-      return;
+    for (std::vector<double>* v : {&a, &b, &c}) {
+      if (zero) v->clear();
+      resize_advised(*v, size);
     }
-    a.assign(size, 0.0);
-    b.assign(size, 0.0);
-    c.assign(size, 0.0);
+    if (!zero) return;
     std::fill(rhs, rhs + 3 * size, 0.0);
   }
   void add(std::size_t i, std::size_t j, double v) {
@@ -528,7 +525,8 @@ NurbsCurve interpolate_cubic(std::span<const Vec3> points, const InterpolationOp
   Scratch& work = scratch();
   // U = {0,0,0,0, t_1 … t_{N-2}, 1,1,1,1}: U[i + 3] = t_i, the data parameters written in place. Strictly
   // increasing parameters make it a valid knot vector by construction (no second validation pass).
-  std::vector<double> U(N + 6);
+  std::vector<double> U;
+  resize_advised(U, N + 6);
   U[0] = U[1] = U[2] = 0.0;
   data_parameters(points, options.parameters, options.parameterisation, options.tolerance, box, U.data() + 3);
   U[N + 3] = U[N + 4] = U[N + 5] = 1.0;
@@ -610,7 +608,8 @@ NurbsCurve interpolate_cubic(std::span<const Vec3> points, const InterpolationOp
   };
   // The unknowns P_1 … P_N are solved in place inside the control point array.
   static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 must be three packed doubles");
-  std::vector<Vec3> P(N + 2);
+  std::vector<Vec3> P;
+  resize_advised(P, N + 2);
   double* unknowns = &P[1].x;
   bool solved = false;
   if (N >= 4 && start.kind != EndRow::Kind::ThirdDerivativeJump && end.kind != EndRow::Kind::ThirdDerivativeJump) {

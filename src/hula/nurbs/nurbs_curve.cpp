@@ -18,6 +18,7 @@
 #include <utility>
 
 #include "hula/core/error.hpp"
+#include "hula/core/huge_pages.hpp"
 #include "hula/nurbs/basis.hpp"
 #include "hula/nurbs/detail/curve_access.hpp"
 #include "hula/nurbs/detail/span_simd.hpp"
@@ -34,9 +35,9 @@ namespace {
 // and the Taylor coefficients of the homogeneous curve at the midpoint (power j, lane x, y, z, w at
 // coef[(s * (p + 1) + j) * 4 + lane]); per breakpoint an exact-point record (flag, x, y, z).
 struct SpanCache {
-  std::size_t spans = 0;  // S
-  std::size_t block = 0;  // (p + 1) * 4 coefficients per span; 0 above kCachedDegreeLimit (direct evaluation)
-  std::vector<double> store;
+  std::size_t spans = 0;            // S
+  std::size_t block = 0;            // (p + 1) * 4 coefficients per span; 0 above kCachedDegreeLimit (direct evaluation)
+  std::unique_ptr<double[]> store;  // not zero-filled: build_cache writes every element
   const double* breaks = nullptr;
   const double* mid = nullptr;
   const double* inv_half = nullptr;
@@ -248,7 +249,8 @@ void build_buckets(SpanCache& c) {
   c.bucket_origin = c.breaks[0];
   c.bucket_scale = static_cast<double>(B) / (c.breaks[S] - c.breaks[0]);
   c.last_bucket = static_cast<double>(B - 1);
-  c.bucket.assign(2 * B, 0);
+  c.bucket.clear();
+  resize_advised(c.bucket, 2 * B);
   std::size_t below = 0, upto = 0;  // spans s < S with J(b[s]) < j, <= j
   std::size_t widest = 1;
   for (std::size_t j = 0; j < B; ++j) {
@@ -426,8 +428,11 @@ void NurbsCurve::Data::build_cache(SpanCache& out) const {
   const std::size_t block = p > kCachedDegreeLimit ? 0 : (P + 1) * 4;
   out.spans = S;
   out.block = block;
-  out.store.assign((S + 1) + 2 * S + S * block + 4 * (S + 1), 0.0);
-  double* breaks = out.store.data();
+  // Default-initialised (no zero fill of a million-span cache); every element is written below.
+  const std::size_t doubles = (S + 1) + 2 * S + S * block + 4 * (S + 1);
+  out.store.reset(new double[doubles]);
+  advise_huge_pages(out.store.get(), doubles * sizeof(double));
+  double* breaks = out.store.get();
   double* mid = breaks + S + 1;
   double* inv_half = mid + S;
   double* coef = inv_half + S;
@@ -452,6 +457,8 @@ void NurbsCurve::Data::build_cache(SpanCache& out) const {
         exact[4 * bi + 1] = q.x;
         exact[4 * bi + 2] = q.y;
         exact[4 * bi + 3] = q.z;
+      } else {
+        std::fill_n(exact + 4 * bi, 4, 0.0);
       }
       ++bi;
     }
@@ -459,7 +466,10 @@ void NurbsCurve::Data::build_cache(SpanCache& out) const {
   }
   HULA_ASSERT(bi == S + 1, "breakpoint count mismatch");
   build_buckets(out);
-  if (p > kCachedDegreeLimit) return;  // direct evaluation only
+  if (p > kCachedDegreeLimit) {  // direct evaluation only
+    std::fill(mid, coef, 0.0);   // midpoints and scales unused
+    return;
+  }
   BasisWorkspace& work = thread_workspace();
   std::size_t s = 0;
   for (std::size_t i = P; i <= n; ++i) {
