@@ -19,6 +19,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <span>
 #include <string>
 #include <tuple>
@@ -852,17 +853,26 @@ CurvatureEditResult edit_curvature(const curve::Curve& original, const Curvature
     problem.curvature_envelope = fitted_profile(knots, o.u, envelope, ctx);
     DirectReconstructionOptions ro = options.reconstruction;
     ro.fit = false;
-    const DirectReconstructionResult rec = reconstruct_direct(problem, ro);
-    iterations = rec.iterations;
-    mean_target_deviation = rec.mean_curvature_deviation;
-    max_target_deviation = rec.max_curvature_deviation;
-    std::vector<double> s_rec(count);
-    for (std::size_t j = 0; j < count; ++j) s_rec[j] = o.u[j] * rec.length;
-    const std::vector<intrinsic::FramePoint> fp = rec.curve.evaluate(s_rec);
+    // A space drag whose held end frame the solver cannot meet is fitted as asked (as before this target existed).
+    std::optional<DirectReconstructionResult> rec;
+    try {
+      rec = reconstruct_direct(problem, ro);
+    } catch (const Error& e) {
+      if (planar || e.code() != Errc::NumericalFailure) throw;
+    }
+    std::vector<intrinsic::FramePoint> fp;
+    if (rec) {
+      std::vector<double> s_rec(count);
+      for (std::size_t j = 0; j < count; ++j) s_rec[j] = o.u[j] * rec->length;
+      fp = rec->curve.evaluate(s_rec);
+    }
     // A correction that holds the ends only by reversing the bend somewhere (1 + Σ c_k B_k < 0) is no target for a
     // drag, which never adds an inflection: the drag is then fitted as asked.
-    if (sign_changes(count, target_max, [&](std::size_t j) { return fp[j].curvature; }) <=
-        sign_changes(count, target_max, [&](std::size_t j) { return scaled[j]; })) {
+    if (rec && sign_changes(count, target_max, [&](std::size_t j) { return fp[j].curvature; }) <=
+                   sign_changes(count, target_max, [&](std::size_t j) { return scaled[j]; })) {
+      iterations = rec->iterations;
+      mean_target_deviation = rec->mean_curvature_deviation;
+      max_target_deviation = rec->max_curvature_deviation;
       for (std::size_t j = 0; j < count; ++j) {
         targets.kappa[j] = fp[j].curvature;
         if (!planar) targets.tau[j] = fp[j].torsion;
