@@ -19,8 +19,10 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <span>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -55,6 +57,12 @@ constexpr double kEditResolution = 0.2;
 // on S-splines and a quarter circle: 0.5 moves the dragged spot 0.57–1.04 of the drag (0.41–0.73 unweighted) and
 // lowers the worst miss; 1.5 and more let the fit trade a spike elsewhere (misses of 7–80 drags on the S).
 constexpr double kDragWeight = 0.5;
+// A space drag's height is corrected until the fit moves the dragged spot by the drag within this fraction of it,
+// in at most this many more fits, the height kept within this range of the drag's (a secant step on a fit that
+// barely responds could ask for a wild one).
+constexpr double kReachTolerance = 0.01;
+constexpr int kReachIterations = 4;
+constexpr std::pair<double, double> kReachScale{0.25, 4.0};
 // An end curvature this small relative to the curve's largest counts as zero (a natural end): the fit keeps it
 // zero so no inflection appears at the end.
 constexpr double kZeroEndCurvature = 1e-9;
@@ -812,46 +820,71 @@ CurvatureEditResult edit_curvature(const curve::Curve& original, const Curvature
   nurbs::NurbsCurve current = base;
   int iterations = 0;
   double mean_target_deviation = 0.0, max_target_deviation = 0.0;
-  if (edit.target == CurvatureTarget::Change && planar && edit_max > 0.0 && options.hold != EndHold::Free) {
+  const bool consistent_drag =
+      edit.target == CurvatureTarget::Change && edit_max > 0.0 && options.hold != EndHold::Free;
+  // The drag's target with its change scaled by α (1: as asked), made consistent with the held ends (below).
+  const auto drag_target = [&](double alpha) {
     // A drag asks for κ* = κ + δ, which the held ends generally cannot have (the bump adds turning the end
     // tangent takes back): fitted as it is, the miss spreads over the profile, the dragged spot included. The
     // consistent target is the boundary-value reconstruction of κ* with the held ends whose correction is
     // relative and fades out under the drag, e(u) = κ*(u) (1 − |δ(u)| / max |δ|): the dragged peak keeps the
-    // asked value, the rest of the curve takes back the turning, and zeros of κ* stay zeros (no inflection).
+    // asked value, the rest of the curve takes back the turning, and zeros of κ* stay zeros (no inflection). A
+    // space curve keeps its torsion profile but for the minimum-norm correction the held end frame needs.
+    std::vector<double> scaled(count), envelope(count);
+    for (std::size_t i = 0; i < count; ++i) {
+      scaled[i] = alpha == 1.0 ? target[i]
+                               : std::max(o.kappa[i] + alpha * (target[i] - o.kappa[i]),
+                                          kMinMagnitude * o.kappa[i]);  // (α ≠ 1: space, κ ≥ 0)
+      envelope[i] = scaled[i] * (1.0 - std::abs(target[i] - o.kappa[i]) / edit_max);
+    }
     const law::Context ctx;
     const std::vector<double> knots = profile_knots(base, length);
-    std::vector<double> envelope(count);
-    for (std::size_t i = 0; i < count; ++i)
-      envelope[i] = target[i] * (1.0 - std::abs(target[i] - o.kappa[i]) / edit_max);
-    DirectReconstructionProblem problem{.curvature = fitted_profile(knots, o.u, target, ctx)};
+    DirectReconstructionProblem problem{.curvature = fitted_profile(knots, o.u, scaled, ctx)};
     problem.length = length;
+    if (!planar) problem.torsion = fitted_profile(knots, o.u, tau_target, ctx);
     problem.start = {.point = start.point, .tangent = start.tangent, .normal = start.normal};
     problem.end_point = end.point;
     problem.end_tangent = end.tangent;
     if (options.hold == EndHold::Curvature) {
       problem.start_curvature = start.curvature;
       problem.end_curvature = end.curvature;
+      if (!planar) problem.end_normal = end.normal;
     }
     problem.curvature_envelope = fitted_profile(knots, o.u, envelope, ctx);
     DirectReconstructionOptions ro = options.reconstruction;
     ro.fit = false;
-    const DirectReconstructionResult rec = reconstruct_direct(problem, ro);
-    iterations = rec.iterations;
-    mean_target_deviation = rec.mean_curvature_deviation;
-    max_target_deviation = rec.max_curvature_deviation;
-    std::vector<double> s_rec(count);
-    for (std::size_t j = 0; j < count; ++j) s_rec[j] = o.u[j] * rec.length;
-    const std::vector<intrinsic::FramePoint> fp = rec.curve.evaluate(s_rec);
+    // A space drag whose held end frame the solver cannot meet is fitted as asked (as before this target existed).
+    std::optional<DirectReconstructionResult> rec;
+    try {
+      rec = reconstruct_direct(problem, ro);
+    } catch (const Error& e) {
+      if (planar || e.code() != Errc::NumericalFailure) throw;
+    }
+    std::vector<intrinsic::FramePoint> fp;
+    if (rec) {
+      std::vector<double> s_rec(count);
+      for (std::size_t j = 0; j < count; ++j) s_rec[j] = o.u[j] * rec->length;
+      fp = rec->curve.evaluate(s_rec);
+    }
     // A correction that holds the ends only by reversing the bend somewhere (1 + Σ c_k B_k < 0) is no target for a
     // drag, which never adds an inflection: the drag is then fitted as asked.
-    if (sign_changes(count, target_max, [&](std::size_t j) { return fp[j].curvature; }) <=
-        sign_changes(count, target_max, [&](std::size_t j) { return target[j]; })) {
-      for (std::size_t j = 0; j < count; ++j) targets.kappa[j] = fp[j].curvature;
+    if (rec && sign_changes(count, target_max, [&](std::size_t j) { return fp[j].curvature; }) <=
+                   sign_changes(count, target_max, [&](std::size_t j) { return scaled[j]; })) {
+      iterations = rec->iterations;
+      mean_target_deviation = rec->mean_curvature_deviation;
+      max_target_deviation = rec->max_curvature_deviation;
+      for (std::size_t j = 0; j < count; ++j) {
+        targets.kappa[j] = fp[j].curvature;
+        if (!planar) targets.tau[j] = fp[j].torsion;
+      }
     } else {
+      targets.kappa = scaled;
+      targets.tau = tau_target;
       iterations = 0;
       mean_target_deviation = max_target_deviation = 0.0;
     }
-  }
+  };
+  if (consistent_drag) drag_target(1.0);
   if (edit.target == CurvatureTarget::Curvature) {
     const law::Context ctx = edit.curvature.context();
     const law::Law s_of_u = length * ctx.parameter("u");
@@ -914,6 +947,7 @@ CurvatureEditResult edit_curvature(const curve::Curve& original, const Curvature
   struct Fitted {
     nurbs::NurbsCurve curve;
     double worst = 0.0, mean = 0.0, at_drag = 0.0;  // |κ − κ*|: max, mean, at the drag's peak sample
+    double reached = 0.0;                           // κ at the drag's peak sample
   };
   std::size_t peak = 0;
   for (std::size_t j = 0; j < count; ++j)
@@ -933,7 +967,10 @@ CurvatureEditResult edit_curvature(const curve::Curve& original, const Curvature
       for (std::size_t j = 0; j < count; ++j) {
         const double miss = std::abs(curvature_at(ff[j], planar) - pt.kappa[j]);
         f.mean += miss;
-        if (j == peak) f.at_drag = miss;
+        if (j == peak) {
+          f.at_drag = miss;
+          f.reached = curvature_at(ff[j], planar);
+        }
         if (miss > f.worst) {
           f.worst = miss;
           at = j;
@@ -955,6 +992,30 @@ CurvatureEditResult edit_curvature(const curve::Curve& original, const Curvature
     plain.weight.clear();
     Fitted other = fit_profile(current, plain);
     if (other.at_drag < best.at_drag) best = std::move(other);
+  }
+  if (consistent_drag && !planar) {
+    // Few handles cannot follow the consistent target everywhere, and a space fit trades κ for the torsion and
+    // the held end frame: it moved the dragged spot 0.76–1.07 of the drag (helices and random Béziers). The
+    // drag's height α is corrected by the secant method on the κ the fit reaches there (moved(0) = 0: the
+    // original fits itself) until it moves by the drag within kReachTolerance; the nearest fit is kept.
+    const double asked = target[peak] - o.kappa[peak];
+    double alpha_prev = 0.0, moved_prev = 0.0, alpha = 1.0, moved = best.reached - o.kappa[peak];
+    std::tuple<int, double, double> stats{iterations, mean_target_deviation, max_target_deviation};
+    for (int k = 0; k < kReachIterations && std::abs(moved - asked) > kReachTolerance * std::abs(asked); ++k) {
+      if (!(std::abs(moved - moved_prev) > 0.0)) break;
+      const double next = std::clamp(alpha + (asked - moved) * (alpha - alpha_prev) / (moved - moved_prev),
+                                     kReachScale.first, kReachScale.second);
+      alpha_prev = std::exchange(alpha, next);
+      moved_prev = moved;
+      drag_target(alpha);
+      Fitted trial = fit_profile(current, targets);
+      moved = trial.reached - o.kappa[peak];
+      if (std::abs(moved - asked) < std::abs(best.reached - o.kappa[peak] - asked)) {
+        best = std::move(trial);
+        stats = {iterations, mean_target_deviation, max_target_deviation};
+      }
+    }
+    std::tie(iterations, mean_target_deviation, max_target_deviation) = stats;
   }
   current = std::move(best.curve);
   const double worst = best.worst, mean = best.mean;
