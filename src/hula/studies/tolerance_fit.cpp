@@ -768,13 +768,9 @@ std::optional<DegreeResult> fit_degree(Problem& pb, int p, std::span<const doubl
         ++span_count[static_cast<std::size_t>(std::upper_bound(s.interior.begin(), s.interior.end(), params[i]) -
                                               s.interior.begin())];
     // Points beyond the tolerance: a spike is set aside, any other one (kept, or left out but leant
-    // toward) marks its span for splitting; left-out points within the tolerance come back. A spike
-    // inside the domain leaves the fit at once, before the spans are split: kept while they are, it
-    // pulls the curve and its neighbours off their points, their spans are split in turn, and the
-    // refinement chases it until the curve reaches it (a stray at a dense scan's end, in a bend). It
-    // comes back the round a curve passes it within the tolerance or its neighbours lean toward it.
-    // A lone point beyond an open end (its foot clamped there) leaves only once no span needs
-    // splitting: on a coarse curve an end of sparse design points lies beyond the end too.
+    // toward) marks its span for splitting; left-out points within the tolerance come back. Spikes
+    // leave the fit only once no span needs splitting, so that they are judged on a curve that is
+    // short of nothing else.
     bool changed = false;
     std::vector<char> split(s.interior.size() + 1, 0);
     bool any_split = false;
@@ -802,12 +798,12 @@ std::optional<DegreeResult> fit_degree(Problem& pb, int p, std::span<const doubl
       split[static_cast<std::size_t>(at - s.interior.begin())] = 1;
       any_split = true;
     }
-    for (const std::size_t i : spikes)
-      if (weights[i] > 0.0 && (!any_split || pb.closed || (params[i] > 0.0 && params[i] < 1.0))) {
-        weights[i] = 0.0;
-        changed = true;
-      }
     if (!any_split) {
+      for (const std::size_t i : spikes)
+        if (weights[i] > 0.0) {
+          weights[i] = 0.0;
+          changed = true;
+        }
       if (changed) continue;
       // Within the tolerance: dense spans whose points the curve passes systematically on one side
       // (by more than bias_limit) are split too, so that a scan's curve follows its points to the
