@@ -280,7 +280,7 @@ INSTANTIATE_TEST_SUITE_P(Clouds, ScanFitForeignClouds, ::testing::ValuesIn(all_c
 // 1) moved 4 or 10 tolerances off the curve along its normal, away from the centre of curvature, is
 // the one stray, at sizes 1 and 1,000 units, in curve order and shuffled; every other point is within
 // the tolerance of the faired curve (nurbs::closest_point), and the faired curve within 3 σ of the
-// known curve. A stray at an end used to be chased by the knot refinement when the end bends.
+// known curve.
 TEST(ScanFitForeignClouds, AStrayAtEitherEndIsFound) {
   for (const double size : {1.0, 1000.0})
     for (const Order order : {Order::InOrder, Order::Shuffled})
