@@ -275,6 +275,65 @@ TEST_P(ScanFitForeignClouds, StraysFoundCurveWithinThreeSigmaInflectionsKept) { 
 
 INSTANTIATE_TEST_SUITE_P(Clouds, ScanFitForeignClouds, ::testing::ValuesIn(all_clouds()));
 
+// Checks a stray at an end of the cloud, on the wave generator (planar sine, sorted uniform random
+// parameters, Laplace noise σ = 0.03 tolerance, no other stray): the first or the last point (t = 0 or
+// 1) moved 4 or 10 tolerances off the curve along its normal, away from the centre of curvature, is
+// the one stray, at sizes 1 and 1,000 units, in curve order and shuffled; every other point is within
+// the tolerance of the faired curve (nurbs::closest_point), and the faired curve within 3 σ of the
+// known curve.
+TEST(ScanFitForeignClouds, AStrayAtEitherEndIsFound) {
+  for (const double size : {1.0, 1000.0})
+    for (const Order order : {Order::InOrder, Order::Shuffled})
+      for (const bool last : {false, true})
+        for (const double off : {4.0, 10.0}) {
+          const Case c{Generator::WaveLaplace, true, false, order, size, 600, 0.03};
+          SCOPED_TRACE(describe(c) + ", " + std::to_string(off) + " tolerances off the " + (last ? "last" : "first"));
+          const double tolerance = 0.003 * size;
+          std::mt19937_64 rng(77 + static_cast<std::uint64_t>(size) + (last ? 1 : 0));
+          const KnownCurve curve = wave_curve(size, true, rng);
+          std::uniform_real_distribution<double> u(0.0, 1.0);
+          std::vector<double> ts(c.points);
+          for (double& t : ts) t = u(rng);
+          std::sort(ts.begin(), ts.end());
+          ts.front() = 0.0, ts.back() = 1.0;
+          std::vector<Vec3> pts;
+          for (const double t : ts)
+            pts.push_back(curve.at(t) + noise(c.generator, true, c.sigma_over_tolerance * tolerance, rng));
+          const double te = last ? 1.0 : 0.0;
+          const Vec3 d1 = curve.d1(te), d2 = curve.d2(te);
+          Vec3 normal = Vec3{-d1.y, d1.x, 0.0} * (1.0 / norm(d1));
+          if (dot(normal, d2) > 0.0) normal = normal * -1.0;
+          std::size_t stray = last ? pts.size() - 1 : 0;
+          pts[stray] = curve.at(te) + normal * (off * tolerance);
+          if (order == Order::Shuffled) {
+            std::vector<std::size_t> perm(pts.size());
+            std::iota(perm.begin(), perm.end(), std::size_t{0});
+            std::shuffle(perm.begin(), perm.end(), rng);
+            std::vector<Vec3> mixed(pts.size());
+            std::size_t at = 0;
+            for (std::size_t k = 0; k < perm.size(); ++k) {
+              mixed[k] = pts[perm[k]];
+              if (perm[k] == stray) at = k;
+            }
+            pts = std::move(mixed);
+            stray = at;
+          }
+          const ScanFitResult r = fit_scan(pts, ScanFitOptions{.tolerance = tolerance});
+          EXPECT_EQ(r.strays, std::vector<std::size_t>{stray});
+          double worst = 0.0;
+          for (std::size_t i = 0; i < pts.size(); ++i)
+            if (i != stray) worst = std::max(worst, nurbs::closest_point(r.faired, pts[i]).distance);
+          EXPECT_LE(worst, tolerance * (1.0 + 1e-9));
+          const auto dom = r.faired.domain();
+          double far = 0.0;
+          for (int k = 0; k <= 200; ++k) {
+            const Foot f = foot(curve, r.faired.evaluate(dom.start + (dom.end - dom.start) * k / 200.0));
+            if (f.t > 1e-9 && f.t < 1.0 - 1e-9) far = std::max(far, f.distance);
+          }
+          EXPECT_LE(far, 3.0 * c.sigma_over_tolerance * tolerance);
+        }
+}
+
 // Checks the generators themselves: the Bézier S has one inflection and the C none, the planar wave
 // as many as the zeros of its sine inside the domain, each stray is 1.2–30 tolerances from its curve
 // and no other point farther than 8 σ (Gaussian) or 12 σ (Laplace).

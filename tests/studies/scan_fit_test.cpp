@@ -8,9 +8,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
+#include <string>
+#include <vector>
 
 #include "hula/core/error.hpp"
 #include "hula/core/rng.hpp"
+#include "hula/nurbs/closest_point.hpp"
 #include "hula/testing/expect_error.hpp"
 #include "hula/testing/point_clouds.hpp"
 
@@ -161,25 +165,63 @@ TEST(ScanFit, ExactPointsEndingInATightBendAreAllKept) {
   for (std::size_t i = 0; i < pts.size(); ++i) EXPECT_LE(r.deviations[i], tol) << "point " << i;
 }
 
-// Checks that on a dense scan of the same shape (spacing 0.01, Gaussian noise σ = 0.05 tolerance
-// per coordinate, seeded) whose last point is moved 4 tolerances off the bend (along its outward
-// normal), that point is found as the one stray and every other point is kept within the
-// tolerance. (Moved 10 tolerances, the fit still bends its end to it and keeps it: issue 21.)
-TEST(ScanFit, APointMovedOffTheEndOfADenseScanIsTheOneStray) {
+// The dense scan of line_then_bend (spacing 0.01, Gaussian noise σ = 0.05 tolerance per coordinate,
+// seeded) with its first or last point moved `off` tolerances off the curve (the first along the line's
+// normal +y, the last along the bend's outward normal +x), in curve order or shuffled: that point must
+// be the one stray and every other point within the tolerance of the returned curve (measured by
+// nurbs::closest_point, not by the fit's own figures).
+void expect_end_stray_found(double off, bool last, bool shuffle) {
+  SCOPED_TRACE(std::to_string(off) + " tolerances off the " + (last ? "last" : "first") + " point" +
+               (shuffle ? ", shuffled" : ", in order"));
   const double tol = 1e-4 * std::hypot(27.0, 1.0);
-  {
-    const double off = 4.0;
-    std::vector<Vec3> pts = line_then_bend(0.01, 300);
-    Rng rng(21);
-    for (Vec3& q : pts) {
-      q.x += 0.05 * tol * rng.normal();
-      q.y += 0.05 * tol * rng.normal();
-    }
-    pts.back().x += off * tol;
-    const ScanFitResult r = fit_scan(pts, ScanFitOptions{.tolerance = tol, .ordered = true});
-    EXPECT_EQ(r.strays, std::vector<std::size_t>{pts.size() - 1});
-    for (std::size_t i = 0; i + 1 < pts.size(); ++i) EXPECT_LE(r.deviations[i], tol) << "point " << i;
+  std::vector<Vec3> pts = line_then_bend(0.01, 300);
+  Rng rng(21);
+  for (Vec3& q : pts) {
+    q.x += 0.05 * tol * rng.normal();
+    q.y += 0.05 * tol * rng.normal();
   }
+  if (last) {
+    pts.back().x += off * tol;
+  } else {
+    pts.front().y += off * tol;
+  }
+  std::size_t stray = last ? pts.size() - 1 : 0;
+  if (shuffle) {
+    std::vector<std::size_t> perm(pts.size());
+    std::iota(perm.begin(), perm.end(), std::size_t{0});
+    for (std::size_t k = perm.size() - 1; k > 0; --k) std::swap(perm[k], perm[rng.below(k + 1)]);
+    std::vector<Vec3> mixed(pts.size());
+    const std::size_t moved = stray;
+    for (std::size_t k = 0; k < perm.size(); ++k) {
+      mixed[k] = pts[perm[k]];
+      if (perm[k] == moved) stray = k;
+    }
+    pts = std::move(mixed);
+  }
+  const ScanFitResult r = fit_scan(pts, ScanFitOptions{.tolerance = tol, .ordered = !shuffle});
+  EXPECT_EQ(r.strays, std::vector<std::size_t>{stray});
+  EXPECT_GT(nurbs::closest_point(r.faired, pts[stray]).distance, tol);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < pts.size(); i += 3)
+    if (i != stray) worst = std::max(worst, nurbs::closest_point(r.faired, pts[i]).distance);
+  EXPECT_LE(worst, tol * (1.0 + 1e-9));
+}
+
+// Checks the dense scan with a stray at either end: 4 tolerances off the first or the last point, and
+// 10 off the first (on the line), in order and shuffled.
+TEST(ScanFit, APointMovedOffEitherEndOfADenseScanIsTheOneStray) {
+  for (const bool shuffle : {false, true}) {
+    expect_end_stray_found(4.0, false, shuffle);
+    expect_end_stray_found(4.0, true, shuffle);
+    expect_end_stray_found(10.0, false, shuffle);
+  }
+}
+
+// The known defect of issue 21 (open): moved 10 tolerances off the bend, the last point is kept, the
+// knot refinement splitting the end spans until the curve bends out to it (spikes leave the fit only
+// once no span needs splitting). Enable when the engine finds it.
+TEST(ScanFit, DISABLED_APointMovedFarOffTheBendAtTheEndIsTheOneStray) {
+  for (const bool shuffle : {false, true}) expect_end_stray_found(10.0, true, shuffle);
 }
 
 // Checks the documented errors: too few points, a non-finite point (named by index), bad options.
