@@ -217,11 +217,11 @@ TEST(ScanFit, APointMovedOffEitherEndOfADenseScanIsTheOneStray) {
   }
 }
 
-// The known defect of issue 21 (open): moved 10 tolerances off the bend, the last point is kept, the
-// knot refinement splitting the end spans until the curve bends out to it (spikes leave the fit only
-// once no span needs splitting). Enable when the engine finds it.
-TEST(ScanFit, DISABLED_APointMovedFarOffTheBendAtTheEndIsTheOneStray) {
-  for (const bool shuffle : {false, true}) expect_end_stray_found(10.0, true, shuffle);
+// Checks the last point moved 8, 10 and 30 tolerances off the bend (outward): the refinement must not
+// bend the end spans out to it, it is the one stray, in order and shuffled.
+TEST(ScanFit, APointMovedFarOffTheBendAtTheEndIsTheOneStray) {
+  for (const bool shuffle : {false, true})
+    for (const double off : {8.0, 10.0, 30.0}) expect_end_stray_found(off, true, shuffle);
 }
 
 // Checks the documented errors: too few points, a non-finite point (named by index), bad options.

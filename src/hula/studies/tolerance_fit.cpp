@@ -93,6 +93,13 @@ constexpr double kEndOvershoot = 0.25;
 constexpr double kEndNoise = 3.0;
 constexpr std::size_t kEndRun = 2;
 constexpr int kMaxStretches = 8;
+// End strays: the outermost kEndJudged points at each open end are each judged against a
+// least-squares quadratic through the next kEndWindow points inward, continued out to them.
+constexpr std::size_t kEndJudged = 3;
+constexpr std::size_t kEndWindow = 6;
+// ... where the same continuation, one point further in, reaches its (kept) neighbour within this
+// share of the tolerance or the noise's prediction error.
+constexpr double kEndCheck = 0.25;
 // Systematic deviation: windows of kBiasWindow consecutive kept points, in spans of at least
 // kBiasSpan × (p + 1) kept points (sparse design points are never judged by it).
 constexpr std::size_t kBiasWindow = 15;
@@ -609,6 +616,97 @@ bool stretch_ends(const Problem& pb, const Space& s, const Candidate& c, std::ve
   return true;
 }
 
+// The least-squares quadratic (in chord length) through the points `window` (in order away from q),
+// continued beyond its first point: the distance of q from its nearest point, the leverage of the
+// fit's value there (its prediction variance over the noise's), and the fit's own residual scale.
+struct Continuation {
+  double distance = std::numeric_limits<double>::infinity(), leverage = 0.0, residual = 0.0;
+};
+
+Continuation continuation(const Problem& pb, std::span<const std::size_t> window, const Vec3& q) {
+  Continuation out;
+  std::vector<double> s(window.size(), 0.0);
+  for (std::size_t w = 1; w < window.size(); ++w) s[w] = s[w - 1] + norm(pb.pts[window[w]] - pb.pts[window[w - 1]]);
+  const double length = s.back();
+  if (!(length > 0.0)) {
+    out.residual = std::numeric_limits<double>::infinity();
+    return out;
+  }
+  const auto rows = static_cast<Eigen::Index>(window.size());
+  Eigen::MatrixXd x(rows, 3), y(rows, 3);
+  for (Eigen::Index r = 0; r < rows; ++r) {
+    const auto w = static_cast<std::size_t>(r);
+    const double u = s[w] / length;
+    x(r, 0) = 1.0;
+    x(r, 1) = u;
+    x(r, 2) = u * u;
+    const Vec3& p = pb.pts[window[w]];
+    y(r, 0) = p.x;
+    y(r, 1) = p.y;
+    y(r, 2) = p.z;
+  }
+  const Eigen::Matrix3d inverse = (x.transpose() * x).inverse();
+  const Eigen::MatrixXd coef = inverse * (x.transpose() * y);
+  out.residual = std::sqrt((x * coef - y).squaredNorm() / static_cast<double>(window.size() - 3));
+  // The nearest point of the continuation, over u from beyond the reach of q down into the window.
+  const double reach = 2.0 * norm(q - pb.pts[window.front()]) / length + 0.5;
+  constexpr int kSamples = 256;
+  for (int j = 0; j <= kSamples; ++j) {
+    const double u = -reach + (reach + 0.5) * j / kSamples;
+    const Eigen::RowVector3d basis(1.0, u, u * u);
+    const Eigen::RowVector3d v = basis * coef;
+    const double d = std::hypot(v(0) - q.x, v(1) - q.y, v(2) - q.z);
+    if (d < out.distance) {
+      out.distance = d;
+      out.leverage = basis * inverse * basis.transpose();
+    }
+  }
+  return out;
+}
+
+// Strays at the open ends, judged before any refinement so that the knot refinement never bends
+// the curve out to one: in parameter order, each of the kEndJudged outermost points at an open end
+// is measured against the least-squares quadratic (in chord length) through the next kEndWindow
+// points inward not already judged strays (innermost judged first), continued beyond them. Where
+// that quadratic follows its own points to kQuietShare × tol and, shifted one point inward, continues
+// to the nearest point within kEndCheck × tol or its noise (the samples resolve the shape), a
+// point farther from its continuation than both the tolerance and kEndNoise prediction errors
+// (σ̂ √(1 + leverage) of the extrapolated value) is a stray. The fit takes such a point back only
+// once its curve passes within the tolerance of it. Sparse design points whose window the quadratic
+// does not follow are never judged.
+std::vector<char> end_strays(const Problem& pb, std::span<const double> params, std::span<const double> weights,
+                             double noise) {
+  const std::size_t m = pb.pts.size();
+  std::vector<char> out(m, 0);
+  if (pb.closed || pb.interpolated_ends || m < 4 * (kEndWindow + kEndJudged)) return out;
+  std::vector<std::size_t> order(m);
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return params[a] < params[b]; });
+  for (const bool back : {false, true}) {
+    auto at = [&](std::size_t pos) { return order[back ? m - 1 - pos : pos]; };
+    for (std::size_t k = kEndJudged; k-- > 0;) {
+      const std::size_t i = at(k);
+      if (weights[i] <= 0.0) continue;
+      // The next kEndWindow + 1 points inward not already judged strays.
+      std::vector<std::size_t> inward;
+      for (std::size_t pos = k + 1; inward.size() < kEndWindow + 1 && pos < m; ++pos)
+        if (!out[at(pos)] && weights[at(pos)] > 0.0) inward.push_back(at(pos));
+      if (inward.size() < kEndWindow + 1) continue;
+      // The shape is resolved when the quadratic through the points beyond the nearest one continues
+      // to that (kept) point within kEndCheck × tol or the noise's prediction error.
+      const std::span<const std::size_t> all(inward);
+      const Continuation check = continuation(pb, all.subspan(1), pb.pts[inward.front()]);
+      if (!(check.residual <= kQuietShare * pb.tol) ||
+          check.distance > std::max(kEndCheck * pb.tol, kEndNoise * noise * std::sqrt(1.0 + check.leverage)))
+        continue;
+      const Continuation c = continuation(pb, all.first(kEndWindow), pb.pts[i]);
+      if (!(c.residual <= kQuietShare * pb.tol)) continue;
+      if (c.distance > std::max(pb.tol, kEndNoise * noise * std::sqrt(1.0 + c.leverage))) out[i] = 1;
+    }
+  }
+  return out;
+}
+
 double median_of(std::vector<double> v) {
   const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
   std::nth_element(v.begin(), mid, v.end());
@@ -754,6 +852,11 @@ std::optional<DegreeResult> fit_degree(Problem& pb, int p, std::span<const doubl
     for (int k = 1; k <= p; ++k) interior.push_back(static_cast<double>(k) / (p + 1));
   std::optional<DegreeResult> result;
   int stretches = 0;
+  // End strays are left out from the start and stay out while the curve misses them.
+  std::vector<char> end_stray(m, 0);
+  if (o.reject_outliers) end_stray = end_strays(pb, params, weights, o.noise);
+  for (std::size_t i = 0; i < m; ++i)
+    if (end_stray[i]) weights[i] = 0.0;
   for (int round = 0; round < kMaxRounds; ++round) {
     Space s = make_space(p, pb.closed, interior);
     // The refinement may overshoot what the knot removal brings back down: it stops at twice the cap.
@@ -795,7 +898,8 @@ std::optional<DegreeResult> fit_degree(Problem& pb, int p, std::span<const doubl
       // Beyond an open end (its foot clamped there) a point is no feature a knot can reach: a run of
       // them stretches the parameters (stretch_ends); a lone one is a spike.
       const bool beyond_end = !pb.closed && (params[i] <= 0.0 || params[i] >= 1.0);
-      if (o.reject_outliers && (beyond_end || is_spike(pb, s, i, c, weights, order, rank, span_count, o.noise))) {
+      if (o.reject_outliers &&
+          (end_stray[i] || beyond_end || is_spike(pb, s, i, c, weights, order, rank, span_count, o.noise))) {
         spikes.push_back(i);
         continue;
       }
