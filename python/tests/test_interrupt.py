@@ -16,7 +16,7 @@ import pytest
 from conftest import SOURCE, hula
 
 CHILD = r"""
-import json, sys, time
+import json, math, sys, time
 import numpy as np
 import hulahoops as hh
 
@@ -34,6 +34,13 @@ try:
         setup = json.loads(open(sys.argv[2]).read())
         setup["ga"]["generations"] = 10**6
         hh.match_curvature(setup)
+    elif kind == "fairknots":
+        # Nelder-Mead on the parameters of 60 points, with no tolerance and no budget to end it
+        points = [[100 * math.cos(t / 5), 60 * math.sin(t / 3) + t % 3] for t in range(60)]
+        hh.fair_knots({"format": "hula-study", "version": 1, "study": "fair-knots", "points": points,
+                       "energy": "bending", "method": "deterministic",
+                       "deterministic": {"max_evaluations": 10**8, "x_tolerance": 0, "f_tolerance": 0,
+                                         "restarts": 1000}})
     elif kind == "docrun":
         setup = json.loads(open(sys.argv[2]).read())
         setup["ga"]["generations"] = 10**6
@@ -57,6 +64,10 @@ except KeyboardInterrupt as e:
                    cancelled=r["cancelled"], labels=r["result_labels"], revision=r["revision"],
                    best_points=r["best_points"], history=doc.history()[-1]["name"])
         doc.close()
+    elif kind == "fairknots":
+        out.update(termination=r.deterministic.termination, energy=r.deterministic.energy,
+                   chord=r.chord_length.energy, iterations=len(r.deterministic.convergence),
+                   convergence_min=min(r.deterministic.convergence))
     else:
         out.update(best_points=np.asarray(r.best_points).tolist(), termination=r.ga.termination,
                    after=r.after.mean, before=r.before.mean)
@@ -123,6 +134,17 @@ def test_sigint_stops_a_study_with_its_best_points():
     assert p[0].tolist() == [0, 0] and p[2].tolist() == [40, 0]
     assert -25 - 1e-3 <= p[1][0] <= 40 + 1e-3 and -10 - 1e-3 <= p[1][1] <= 50 + 1e-3
     assert r["termination"] == "Cancelled" and r["after"] < r["before"]
+
+
+def test_sigint_stops_a_deterministic_fair_knots_study():
+    # checks SIGINT ends a fair-knots Nelder-Mead run that no tolerance or budget would end in < 0.5 s with
+    # the best parameters so far: termination Cancelled, several iterations made, the energy at or below its
+    # convergence graph's (the best at the start of each iteration) and below the chord-length start's
+    latency, r = interrupt("fairknots")
+    assert 0 <= latency < 0.5, latency
+    assert r["type"] == "StudyResult"
+    assert r["termination"] == "Cancelled" and r["iterations"] > 2
+    assert r["energy"] <= r["convergence_min"] * (1 + 1e-12) and r["energy"] < r["chord"]
 
 
 def test_sigint_stops_a_document_run_and_stores_the_best_so_far(tmp_path):

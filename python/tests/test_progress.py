@@ -171,3 +171,26 @@ def test_fair_knots_verbose(capsys):
     hh.fair_knots(setup, verbose=True)
     lines = capsys.readouterr().err.strip().splitlines()
     assert lines and all(line.startswith("fair-knots: generation ") for line in lines)
+
+
+def test_fair_knots_deterministic_callback_and_stop():
+    # checks a deterministic fair-knots study (thesis 7.3 example 2, Nelder-Mead only) calls back with its
+    # simplex iterations as generations 0, 1, 2, ... in energy units: the last best is the result's energy,
+    # the evaluations are the result's less the start's energy, the result is the one of an unwatched run;
+    # a True return at generation 5 stops it there (termination Cancelled) no worse than chord length
+    setup = json.loads((STUDIES / "fair-knots-7.3-example2.json").read_text())
+    setup["method"] = "deterministic"
+    setup.pop("map", None)
+    calls = []
+    r = hh.fair_knots(setup, callback=lambda g, b, e: calls.append((g, b, e)))
+    assert len(calls) > 10 and [c[0] for c in calls] == list(range(len(calls)))
+    assert all(a[1] >= b[1] and a[2] <= b[2] for a, b in zip(calls, calls[1:]))
+    assert calls[-1][1] == pytest.approx(r.deterministic.energy, rel=1e-14)
+    assert calls[-1][2] + 1 == r.deterministic.evaluations
+    plain = hh.fair_knots(setup)
+    assert plain.deterministic.energy == r.deterministic.energy
+    assert np.array_equal(plain.deterministic.parameters, r.deterministic.parameters)
+    stopped = hh.fair_knots(setup, callback=lambda g, b, e: g == 5)
+    assert stopped.deterministic.termination == "Cancelled"
+    assert len(stopped.deterministic.convergence) == 6
+    assert r.deterministic.energy < stopped.deterministic.energy <= stopped.chord_length.energy

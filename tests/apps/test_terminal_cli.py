@@ -397,7 +397,8 @@ def drawn_lines(seen):
 
 def test_progress_line_of_nelder_mead_fit_and_batch_on_a_terminal(tmp_path):
     # checks the terminal's progress line of `optimise --algorithm nelder-mead`, `fit` (a generation per
-    # candidate curve, then the result's largest deviation and least-squares solves) and `batch` (items
+    # candidate curve, then the result's largest deviation and least-squares solves), a deterministic
+    # `fair-knots` study (its simplex iterations, best in energy units) and `batch` (items
     # finished, ok, failed, running), ending with the run's figures; the output is the same as on a pipe,
     # where nothing is drawn
     args = ["optimise", "--problem", "rosenbrock", "--dimension", "3", "--algorithm", "nelder-mead"]
@@ -421,6 +422,22 @@ def test_progress_line_of_nelder_mead_fit_and_batch_on_a_terminal(tmp_path):
     assert generations == sorted(generations) and len(set(generations)) == len(generations) and generations[-1] > 0
     assert int(drawn[-1].group(2)) == doc["fits"]
     assert float(drawn[-1].group(3)) == pytest.approx(doc["after"]["max_deviation"], rel=1e-12)
+
+    # a deterministic fair-knots study: its Nelder-Mead iterations, in energy units, end at the result's energy
+    study = json.loads((SOURCE / "examples" / "studies" / "fair-knots-7.3-example2.json").read_text())
+    study["method"] = "deterministic"
+    study.pop("map", None)
+    (tmp_path / "nm.json").write_text(json.dumps(study))
+    out, seen, code = on_pty(["fair-knots", str(tmp_path / "nm.json")])
+    assert code == 0
+    doc = json.loads(out)
+    drawn = [re.fullmatch(r"generation (\d+)  evaluations (\d+)  best (\S+)", line) for line in drawn_lines(seen)]
+    assert drawn and all(drawn), seen[-300:]
+    generations = [int(d.group(1)) for d in drawn]
+    assert generations == sorted(generations) and len(set(generations)) == len(generations) and generations[-1] > 10
+    assert int(drawn[-1].group(2)) + 1 == doc["deterministic"]["evaluations"]  # and the start's energy
+    assert float(drawn[-1].group(3)) == pytest.approx(doc["deterministic"]["energy"], rel=1e-12)
+    assert "generation" not in run("fair-knots", str(tmp_path / "nm.json")).stderr
 
     shutil.copy(SOURCE / "examples" / "studies" / "fair-knots-7.4-example1.json", tmp_path / "study.json")
     (tmp_path / "c.json").write_text(json.dumps(

@@ -239,6 +239,53 @@ TEST(StudyRun, FairKnotsStoresBothOptima) {
   EXPECT_EQ(doc.get(r.curves[1]).provenance()->operation, "study:fair-knots");
 }
 
+// Checks a deterministic fair-knots study (thesis 7.3 Example 2, Nelder-Mead only) reports its simplex
+// iterations as generations 0, 1, 2, ... in energy units (the last one's best is the result's energy), counted
+// into the report (its evaluations are the result's less the start's energy), with the same result as a
+// run that nobody watches; a progress callback that cancels the token stops it with the best so far.
+TEST(StudyRun, FairKnotsDeterministicReportsGenerations) {
+  const Json study = Json::parse(R"({"format": "hula-study", "version": 1, "study": "fair-knots", "seed": 1,
+    "points": [[0, 0], [40, 25], [80, -40], [120, 0]], "energy": "bending", "method": "deterministic"})");
+  const auto run_once = [&](const StudyRunOptions& options) {
+    Document doc;
+    StudyRunResult r;
+    doc.transact("run", [&](Edit& e) { r = run_study(e, study, ".", options); }).throw_if_failed();
+    r.result["deterministic"].erase("seconds");
+    return r;
+  };
+  const StudyRunResult plain = run_once({});
+  std::vector<std::size_t> generations;
+  double last_best = 0.0;
+  StudyRunOptions options;
+  options.on_generation = [&](const optim::GenerationLog& g) {
+    generations.push_back(g.generation);
+    last_best = optim::statistics(g).best;
+  };
+  const StudyRunResult watched = run_once(options);
+  EXPECT_EQ(watched.result, plain.result);
+  ASSERT_GT(generations.size(), 10u);
+  for (std::size_t i = 0; i < generations.size(); ++i) ASSERT_EQ(generations[i], i);
+  const Json& d = plain.result["deterministic"];
+  EXPECT_DOUBLE_EQ(last_best, d["energy"].get<double>());
+  EXPECT_EQ(watched.report.generations, generations.size());
+  EXPECT_EQ(plain.report.generations, generations.size());
+  EXPECT_EQ(watched.report.evaluations + 1, d["evaluations"].get<std::size_t>());
+  EXPECT_FALSE(watched.cancelled);
+
+  optim::CancellationToken cancel;
+  StudyRunOptions stopping;
+  stopping.cancel = &cancel;
+  stopping.on_progress = [&](const optim::GenerationLog& g, const studies::StudyReport&) {
+    if (g.generation == 3) cancel.cancel();
+  };
+  const StudyRunResult stopped = run_once(stopping);
+  EXPECT_TRUE(stopped.cancelled);
+  EXPECT_EQ(stopped.report.generations, 5u);  // generations 0..3, then the final simplex
+  EXPECT_EQ(stopped.result["deterministic"]["termination"], "Cancelled");
+  EXPECT_LE(stopped.result["deterministic"]["energy"].get<double>(),
+            plain.result["chord_length"]["energy"].get<double>());
+}
+
 // Checks a match-curvature-torsion study (a small NSGA-II on examples/studies/match-curvature-torsion-helix)
 // stores its best compromise as a curve equal to the result's, with NSGA-II fronts in the progress.
 TEST(StudyRun, CurvatureTorsionStoresCompromise) {

@@ -597,7 +597,8 @@ class ApiTest(unittest.TestCase):
 
     # checks a fair-knots study job (thesis 7.3 Example 2's points; the GA re-centres once, two rounds of 11
     # generations each): generation numbers keep counting across rounds and evaluations only grow; the GA's optimum
-    # is the job's result curve
+    # is the job's result curve. The same study with the deterministic method sends its Nelder-Mead iterations as
+    # generation events whose last best is the optimum's energy
     def test_fair_knots_study_job(self):
         self.call("POST", "/api/documents", {"name": "fair.hula"}, expect=201)
         study = {"format": "hula-study", "version": 1, "study": "fair-knots", "seed": 1,
@@ -613,6 +614,17 @@ class ApiTest(unittest.TestCase):
         # the fairing's count also holds the chord-length start's evaluation
         self.assertEqual(events[-1][1]["result"]["result"]["ga"]["evaluations"], evaluations[-1] + 1)
         self.assertEqual(len(events[-1][1]["result"]["curves"]), 1)
+        # the deterministic optimiser's simplex iterations are generations too, their best in energy units
+        study["method"] = "deterministic"
+        job, events = self.run_job({"document": "fair.hula", "study": study})
+        generations = [d for e, d in events if e == "generation"]
+        self.assertEqual(events[-1][0], "done")
+        self.assertGreater(len(generations), 10)
+        self.assertEqual([g["generation"] for g in generations], list(range(len(generations))))
+        deterministic = events[-1][1]["result"]["result"]["deterministic"]
+        self.assertEqual(deterministic["evaluations"], generations[-1]["evaluations"] + 1)
+        self.assertAlmostEqual(generations[-1]["best"][0] / deterministic["energy"], 1.0, places=13)
+        self.assertEqual(events[-1][1]["report"]["generations"], len(generations))
 
     # checks a study with no optimiser (edit-projection, examples/studies/edit-projection.json) sends no
     # generation event, only done, and stores its rebuilt curve: the ZX projection's end point (8, 0, 3)

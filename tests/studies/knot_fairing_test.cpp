@@ -8,12 +8,16 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <vector>
 
 #include "hula/core/rng.hpp"
+#include "hula/optim/run_log.hpp"
+#include "hula/optim/run_report.hpp"
 #include "hula/testing/expect_error.hpp"
 
 namespace hula::studies {
@@ -195,6 +199,69 @@ TEST(StudiesKnotFairing, CornerExample1OptimumIsChordLength) {
   EXPECT_NEAR(d.best.parameters[1], 0.5, 1e-6);
   const std::vector<double> other{0.0, 0.4, 1.0};
   EXPECT_GT(evaluate_parameters(s, other).energy, d.best.energy);
+}
+
+// checks: the deterministic optimiser's progress (7.4.2 Example 3, bending) is in the study's terms and only
+// reads: the result is bit-identical with and without a callback; generations count 0, 1, 2, ... with
+// evaluations growing and a best that never rises; every reported vertex is a parameter vector whose energy,
+// evaluated anew, is the reported value; the last generation's best is the result's energy at the result's
+// parameters. A callback that cancels the token at generation 5 ends the run there with the best so far.
+TEST(StudiesKnotFairing, DeterministicProgressIsInTheStudysTerms) {
+  const KnotFairingSetup s = planar(kExample74_3);
+  const std::vector<double> chord = chord_length_parameters(s);
+  const FairingResult plain = fair_knots_deterministic(s, chord);
+  std::vector<optim::GenerationLog> seen;
+  optim::NelderMeadOptions o;
+  o.on_generation = [&](const optim::GenerationLog& g) { seen.push_back(g); };
+  const FairingResult watched = fair_knots_deterministic(s, chord, o);
+  EXPECT_EQ(watched.best.parameters, plain.best.parameters);
+  EXPECT_EQ(watched.best.energy, plain.best.energy);
+  EXPECT_EQ(watched.convergence, plain.convergence);
+  EXPECT_EQ(watched.evaluations, plain.evaluations);
+  EXPECT_EQ(watched.termination, plain.termination);
+  EXPECT_EQ(watched.message, plain.message);
+  ASSERT_EQ(seen.size(), plain.convergence.size() + 1);
+  for (std::size_t i = 0; i < seen.size(); ++i) {
+    const optim::GenerationLog& g = seen[i];
+    ASSERT_EQ(g.generation, i);
+    ASSERT_EQ(g.dimension, chord.size() - 2);
+    ASSERT_EQ(g.size(), g.dimension + 1);
+    if (i > 0) {
+      EXPECT_GE(g.evaluations, seen[i - 1].evaluations);
+      EXPECT_LE(optim::statistics(g).best, optim::statistics(seen[i - 1]).best);
+    }
+  }
+  for (const std::size_t i : {std::size_t{0}, seen.size() / 2, seen.size() - 1}) {
+    const optim::GenerationLog& g = seen[i];
+    for (std::size_t k = 0; k < g.size(); ++k) {
+      std::vector<double> p{0.0};
+      p.insert(p.end(), g.variables.begin() + static_cast<std::ptrdiff_t>(k * g.dimension),
+               g.variables.begin() + static_cast<std::ptrdiff_t>((k + 1) * g.dimension));
+      p.push_back(1.0);
+      EXPECT_NEAR(g.objective_values[k], evaluate_parameters(s, p).energy, 1e-12 * plain.best.energy);
+    }
+  }
+  const optim::GenerationLog& last = seen.back();
+  EXPECT_EQ(last.evaluations + 1, plain.evaluations);  // the start's energy, E_start, is the one more
+  EXPECT_DOUBLE_EQ(optim::statistics(last).best, plain.best.energy);
+  const std::size_t lo = static_cast<std::size_t>(
+      std::min_element(last.objective_values.begin(), last.objective_values.end()) - last.objective_values.begin());
+  for (std::size_t i = 0; i < last.dimension; ++i)
+    EXPECT_EQ(last.variables[lo * last.dimension + i], plain.best.parameters[i + 1]);
+
+  optim::CancellationToken token;
+  std::size_t calls = 0;
+  o.cancel = &token;
+  o.on_generation = [&](const optim::GenerationLog& g) {
+    ++calls;
+    if (g.generation == 5) token.cancel();
+  };
+  const FairingResult stopped = fair_knots_deterministic(s, chord, o);
+  EXPECT_EQ(stopped.termination, optim::Termination::Cancelled);
+  EXPECT_EQ(calls, 7u);  // generations 0..5, then the final simplex
+  EXPECT_EQ(stopped.convergence.size(), 6u);
+  EXPECT_LE(stopped.best.energy, evaluate_parameters(s, chord).energy);
+  EXPECT_GT(stopped.best.energy, plain.best.energy);
 }
 
 struct Case {

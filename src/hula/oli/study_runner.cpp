@@ -95,6 +95,7 @@ void run_fair_knots(const io::StudyDocument& doc, Progress& progress, StudyOutco
   }
   study.deterministic.deadline = progress.deadline;
   study.deterministic.cancel = progress.options.cancel;
+  study.deterministic.on_generation = progress.callback();
   studies::FairKnotsOutcome outcome =
       studies::run_fair_knots_study(study, progress.options.keep_log ? &out.log : nullptr);
   out.result = io::fair_knots_result_to_json(study, outcome);
@@ -102,6 +103,7 @@ void run_fair_knots(const io::StudyDocument& doc, Progress& progress, StudyOutco
   if (outcome.deterministic)
     out.curves.push_back({outcome.deterministic->best.curve, "fair-knots deterministic optimum"});
   for (optim::RunSettings* run : {&study.ga.binary.run, &study.ga.real.run}) run->on_generation = nullptr;
+  study.deterministic.on_generation = nullptr;
   out.values = FairKnotsValues{std::move(study), std::move(outcome)};
 }
 

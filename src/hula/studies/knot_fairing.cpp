@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <string>
 
 #include "hula/core/error.hpp"
@@ -447,7 +448,24 @@ FairingResult fair_knots_deterministic(const KnotFairingSetup& setup, std::span<
       return std::numeric_limits<double>::quiet_NaN();
     }
   };
-  const optim::NelderMeadResult r = optim::nelder_mead(f, y0, options);
+  // The caller's callback sees the study's own terms: the simplex vertices as internal parameters
+  // p_1..p_{N-2} (the GA's variables) and their energies E, not log-ratios and E / E_start.
+  optim::NelderMeadOptions nm = options;
+  optim::GenerationLog study_log;
+  if (options.on_generation) {
+    nm.on_generation = [&](const optim::GenerationLog& g) {
+      study_log = g;
+      const std::size_t d = g.dimension;
+      for (std::size_t k = 0; k < g.size(); ++k) {
+        const std::vector<double> q = log_ratios_to_parameters(std::span(g.variables).subspan(k * d, d));
+        std::copy(q.begin() + 1, q.end() - 1, study_log.variables.begin() + static_cast<std::ptrdiff_t>(k * d));
+      }
+      for (double& v : study_log.objective_values) v *= scale;
+      for (double& v : study_log.fitness) v *= scale;
+      options.on_generation(study_log);
+    };
+  }
+  const optim::NelderMeadResult r = optim::nelder_mead(f, y0, nm);
   FairingResult result;
   result.evaluations = r.report.evaluations + 1;
   result.rounds = 1;

@@ -271,6 +271,9 @@ struct FairingResult {
 [[nodiscard]] std::vector<double> log_ratios_to_parameters(std::span<const double> y);
 
 /// Deterministic fairing: Nelder–Mead on the log-ratio coordinates, from `start`.
+/// `options.on_generation`, when set, receives each simplex in the study's terms: its vertices as the
+/// internal parameters p_1..p_{N-2} and their energies E (not E / E_start); the run is the same with or
+/// without it.
 /// @throws as check_parameters and optim::nelder_mead
 [[nodiscard]] FairingResult fair_knots_deterministic(const KnotFairingSetup& setup, std::span<const double> start,
                                                      const optim::NelderMeadOptions& options = {});
