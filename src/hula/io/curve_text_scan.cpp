@@ -176,8 +176,18 @@ bool read_member(Scanner& s, std::string_view key, PlainCurve& c) {
     return true;
   }
   if (key == "knots") return first(c.knots) && s.numbers(c.knot_values);
-  if (key == "control_points") return first(c.control_points) && s.points(c.poles, c.dimension);
-  if (key == "weights") return first(c.weights) && (s.next_is('n') ? s.null() : s.numbers(c.weight_values));
+  if (key == "control_points") {
+    // hula writes the knots first: n + 1 = knots − degree − 1 poles are then expected (a hint only), so a
+    // million poles are not grown by doubling (copies and page faults).
+    if (c.knots && c.degree && c.degree_value >= 0 &&
+        c.knot_values.size() > static_cast<std::size_t>(c.degree_value) + 1)
+      c.poles.reserve(c.knot_values.size() - static_cast<std::size_t>(c.degree_value) - 1);
+    return first(c.control_points) && s.points(c.poles, c.dimension);
+  }
+  if (key == "weights") {
+    if (!c.poles.empty()) c.weight_values.reserve(c.poles.size());
+    return first(c.weights) && (s.next_is('n') ? s.null() : s.numbers(c.weight_values));
+  }
   return false;
 }
 

@@ -30,6 +30,7 @@
 #include <vector>
 
 #include "hula/core/error.hpp"
+#include "hula/core/huge_pages.hpp"
 
 namespace hula::nurbs {
 
@@ -117,18 +118,32 @@ class SpeedIntegrator {
   double integrate(double a, double b) {
     if (!(a < b)) return 0.0;
     // First pass: one GK15 per span piece gives L0 for the error budget.
+    // The estimates are kept (16 bytes a span, allocated once at their final size: a million-span curve
+    // grew them by doubling, and the copies and page faults were a tenth of `hula info`); each piece's
+    // ends are computed again, the same way, in the second pass.
+    const std::size_t spans = breaks_.size() - 1;
+    if (estimates_.capacity() < spans) {
+      std::vector<GkResult> fresh;
+      fresh.reserve(spans);
+      advise_huge_pages(fresh.data(), spans * sizeof(GkResult));
+      estimates_.swap(fresh);
+    }
+    estimates_.clear();
     double l0 = 0.0;
-    pieces_.clear();
-    for (std::size_t s = 0; s + 1 < breaks_.size(); ++s) {
-      const double x0 = std::max(a, breaks_[s]);
-      const double x1 = std::min(b, breaks_[s + 1]);
+    for (std::size_t s = 0; s < spans; ++s) {
+      const auto [x0, x1] = piece(a, b, s);
       if (!(x0 < x1)) continue;
-      pieces_.push_back({x0, x1, gk15(x0, x1)});
-      l0 += pieces_.back().est.kronrod;
+      estimates_.push_back(gk15(x0, x1));
+      l0 += estimates_.back().kronrod;
     }
     const double density = tolerance_ * l0 / (b - a);
     double total = 0.0;
-    for (const Piece& piece : pieces_) total += adapt(piece.x0, piece.x1, piece.est, density, 0);
+    std::size_t e = 0;
+    for (std::size_t s = 0; s < spans; ++s) {
+      const auto [x0, x1] = piece(a, b, s);
+      if (!(x0 < x1)) continue;
+      total += adapt(x0, x1, estimates_[e++], density, 0);
+    }
     return total;
   }
 
@@ -141,16 +156,17 @@ class SpeedIntegrator {
                 {.field = "tolerance"});
   }
 
-  struct Piece {
-    double x0, x1;
-    GkResult est;
-  };
+  // Span s of the curve cut to [a, b] (empty when x0 >= x1).
+  [[nodiscard]] std::pair<double, double> piece(double a, double b, std::size_t s) const {
+    return {std::max(a, breaks_[s]), std::min(b, breaks_[s + 1])};
+  }
+
   const NurbsCurve& curve_;
   double tolerance_;
   long evaluations_ = 0;
   std::vector<double> breaks_;
   long budget_;
-  std::vector<Piece> pieces_;
+  std::vector<GkResult> estimates_;
 };
 
 void check_parameter(const char* name, double t, const Interval& d) {
