@@ -34,11 +34,12 @@ endforeach()
 string(STRIP "${HULA_PC_LIBS}" HULA_PC_LIBS)
 # What the modules need of other packages (the libraries are static, so a private dependency is the
 # consumer's too): those with a pkg-config file in Requires, the others in Libs after ours.
-#   TBB (core), nlohmann_json (io), Eigen (studies), SQLite (oli_store), glog (Ceres's headers, in studies);
-#   Ceres (studies), pagmo2 with Boost.Serialization (optim_pagmo), threads (server, core);
+#   TBB (core), nlohmann_json (io), Eigen (studies), SQLite (oli_store);
+#   pagmo2 with Boost.Serialization (optim_pagmo), threads (server, core); Ceres is linked by the plugin
+#   libhula_ceres.so only (src/hula/studies/CMakeLists.txt), not by the modules;
 #   with Open CASCADE: its headers (occt_convert.hpp), HULA_WITH_OCCT and the toolkits of HulaHoops::occt.
-set(HULA_PC_REQUIRES "tbb nlohmann_json eigen3 sqlite3 libglog")
-set(HULA_PC_DEP_LIBS "-lceres -lpagmo -lboost_serialization -ldxflib -pthread")
+set(HULA_PC_REQUIRES "tbb nlohmann_json eigen3 sqlite3")
+set(HULA_PC_DEP_LIBS "-lpagmo -lboost_serialization -ldxflib -pthread")
 set(HULA_PC_CFLAGS "-std=c++20")
 if(HULA_WITH_OCCT)
   string(PREPEND HULA_PC_CFLAGS "-I${OpenCASCADE_INCLUDE_DIR} -DHULA_WITH_OCCT ")

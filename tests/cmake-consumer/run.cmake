@@ -3,7 +3,7 @@
 # runs tests/cmake-consumer against it with find_package(HulaHoops) — one program per exported target,
 # and every target the installed HulaHoopsTargets.cmake declares must have one — then compiles and runs
 # the same programs with the flags of hulahoops.pc (pkg-config) instead.
-#   cmake -DBUILD_DIR=... -DSOURCE_DIR=... -DWORK_DIR=... -DCXX=... [-DWITH_OCCT=ON] -P run.cmake
+#   cmake -DBUILD_DIR=... -DSOURCE_DIR=... -DWORK_DIR=... -DCXX=... [-DWITH_OCCT=ON] [-DWITH_MPI=ON] -P run.cmake
 cmake_minimum_required(VERSION 3.25)  # policies of script mode (IN_LIST)
 foreach(var BUILD_DIR SOURCE_DIR WORK_DIR CXX)
   if(NOT DEFINED ${var})
@@ -33,9 +33,12 @@ endforeach()
 
 # The plugins (hula/core/plugin.hpp) are installed beside the libraries, and the installed `hula` loads
 # them from there (bin/../lib/hulahoops), not from the build tree.
-set(plugins pagmo)
+set(plugins pagmo ceres)
 if(WITH_OCCT)
   list(APPEND plugins occt)
+endif()
+if(WITH_MPI)
+  list(APPEND plugins mpi)
 endif()
 foreach(p IN LISTS plugins)
   if(NOT EXISTS ${prefix}/lib/hulahoops/libhula_${p}.so)
@@ -69,8 +72,12 @@ endforeach()
 if(exported_count LESS 15)
   message(FATAL_ERROR "only ${exported_count} exported targets found: ${exported}")
 endif()
+# A program of the consumer's own is not in the install tree: it is told where the installed plugins are
+# (HULA_PLUGIN_DIR, hula/core/plugin.hpp), so that studies (Ceres) and optim_pagmo run with those, not
+# with the build tree's.
 foreach(t IN LISTS programs)
-  run(${WORK_DIR}/build/consumer_${t} ${prefix} ${scratch})
+  run(${CMAKE_COMMAND} -E env HULA_PLUGIN_DIR=${prefix}/lib/hulahoops ${WORK_DIR}/build/consumer_${t} ${prefix}
+      ${scratch})
 endforeach()
 message(STATUS "find_package(HulaHoops): ${exported_count} exported targets, each linked alone and run")
 
@@ -87,5 +94,5 @@ message(STATUS "pkg-config --cflags --libs hulahoops: ${flags}")
 separate_arguments(flags UNIX_COMMAND "${flags}")
 foreach(t IN LISTS programs)
   run(${CXX} ${SOURCE_DIR}/tests/cmake-consumer/${t}.cpp -o ${WORK_DIR}/pc-${t} ${flags})
-  run(${WORK_DIR}/pc-${t} ${prefix} ${scratch})
+  run(${CMAKE_COMMAND} -E env HULA_PLUGIN_DIR=${prefix}/lib/hulahoops ${WORK_DIR}/pc-${t} ${prefix} ${scratch})
 endforeach()

@@ -94,10 +94,11 @@ run(v1 / "bin" / "pip", "wheel", "--no-index", "--no-build-isolation", "--no-dep
 wheels = sorted((work / "dist").glob("hulahoops-*.whl"))
 assert len(wheels) == 1, wheels
 assert re.match(rf"hulahoops-{re.escape(version)}-cp3\d+-cp3\d+-linux_\w+\.whl$", wheels[0].name), wheels[0].name
-# The plugins (pagmo; Open CASCADE) and the STEP/IGES helper travel in the wheel, beside the module.
+# The plugins (pagmo, Ceres; Open CASCADE) and the STEP/IGES helper travel in the wheel, beside the module.
 shipped = set(zipfile.ZipFile(wheels[0]).namelist())
-expected = {"hulahoops/libhula_pagmo.so"} | ({"hulahoops/libhula_occt.so", "hulahoops/hula-exchange"}
-                                            if (build / "apps" / "hula" / "hula-exchange").exists() else set())
+expected = {"hulahoops/libhula_pagmo.so", "hulahoops/libhula_ceres.so"}
+if (build / "apps" / "hula" / "hula-exchange").exists():
+    expected |= {"hulahoops/libhula_occt.so", "hulahoops/hula-exchange"}
 assert expected <= shipped, expected - shipped
 v2 = venv("v2")
 run(v2 / "bin" / "pip", "install", "--no-index", wheels[0])

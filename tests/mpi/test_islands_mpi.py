@@ -67,6 +67,21 @@ def test_wrong_island_count_is_refused():
     assert r.returncode != 0 and "islands = 3" in r.stderr
 
 
+def test_mpi_is_loaded_by_the_ranks_only():
+    # checks Open MPI comes with the plugin libhula_mpi.so, loaded by the ranks of an islands run, and that the
+    # same hula run without a launcher loads neither (issue 27: no MPI in the start-up of every command)
+    ranked = subprocess.run(MPIRUN + ["env", "LD_DEBUG=files", HULA] + RUN, capture_output=True, text=True,
+                            timeout=300)
+    assert ranked.returncode == 0, ranked.stderr[-4000:]
+    assert json.loads(ranked.stdout)["islands"]["transport"] == "mpi"
+    assert "/libhula_mpi.so" in ranked.stderr and "file=libmpi.so" in ranked.stderr
+    alone = subprocess.run([HULA] + RUN, capture_output=True, text=True, timeout=300,
+                           env=dict(os.environ, LD_DEBUG="files"))
+    assert alone.returncode == 0, alone.stderr[-4000:]
+    assert "libhula_mpi.so" not in alone.stderr and "libmpi.so" not in alone.stderr
+    assert "file=libtbb" in alone.stderr  # the loader did report the files it opened
+
+
 def test_killed_rank_fails_the_run():
     # checks a rank killed mid-run makes mpirun end every rank and exit non-zero naming the signal
     long_run = ["optimise", "--problem", "rastrigin", "--dimension", "30", "--algorithm", "ga-real", "--population",

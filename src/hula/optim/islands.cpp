@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <chrono>
 #include <condition_variable>
+#include <cstdlib>
 #include <exception>
 #include <map>
 #include <mutex>
@@ -22,6 +23,7 @@
 
 #include "hula/core/error.hpp"
 #include "hula/core/rng.hpp"
+#include "hula/optim/islands_mpi.hpp"
 #include "hula/optim/pareto.hpp"
 
 namespace hula::optim {
@@ -282,6 +284,14 @@ std::vector<std::size_t> in_neighbours(const IslandOptions& options, std::size_t
     if (std::binary_search(to.begin(), to.end(), island)) from.push_back(j);
   }
   return from;
+}
+
+// Declared in islands_mpi.hpp; here because it needs no MPI (see there).
+bool launched_by_mpi() noexcept {
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE"}) {
+    if (const char* v = std::getenv(name); v != nullptr && std::atoi(v) > 1) return true;  // NOLINT(cert-err34-c)
+  }
+  return false;
 }
 
 std::uint64_t island_seed(std::uint64_t seed, std::size_t island) noexcept {

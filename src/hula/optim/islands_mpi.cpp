@@ -15,7 +15,6 @@
 #include <mpi.h>
 
 #include <chrono>
-#include <cstdlib>
 #include <cstring>
 #include <list>
 #include <string>
@@ -325,13 +324,6 @@ class MpiExchange final : public Exchange {
 };
 
 }  // namespace
-
-bool launched_by_mpi() noexcept {
-  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE"}) {
-    if (const char* v = std::getenv(name); v != nullptr && std::atoi(v) > 1) return true;  // NOLINT(cert-err34-c)
-  }
-  return false;
-}
 
 std::optional<IslandsResult> solve_islands_mpi(const Problem& problem, const IslandAlgorithm& algorithm,
                                                IslandOptions options) {

@@ -7,7 +7,8 @@
 // merges them (champion, or the non-dominated set of the merged populations).
 //
 // Built only with HULA_MPI=ON (Open MPI from Debian's libopenmpi-dev), as the
-// separate target hula::optim_mpi so only the CLI links MPI.
+// separate target hula::optim_mpi, linked by the MPI plugin of the CLI (libhula_mpi.so,
+// oli/detail/mpi_plugin.hpp) so that no program loads Open MPI at start-up.
 //
 // Failure: if a rank dies (killed, crashed), Open MPI's mpirun ends every
 // rank of the job and exits non-zero naming the rank and the signal; no
@@ -23,10 +24,6 @@
 
 namespace hula::optim {
 
-/// True when this process runs under mpirun / mpiexec with more than one rank
-/// (Open MPI's OMPI_COMM_WORLD_SIZE, or PMI_SIZE of other launchers).
-[[nodiscard]] bool launched_by_mpi() noexcept;
-
 /// The bytes of an island's report as its rank sends them to rank 0 at the end of a run.
 [[nodiscard]] std::vector<char> write_island_report(const IslandReport& report);
 
@@ -35,6 +32,12 @@ namespace hula::optim {
 /// @throws hula::Error(Errc::IoError) with field "mpi", "truncated island report: …" naming the count and the
 ///   byte where the message ends or is too short
 [[nodiscard]] IslandReport read_island_report(const std::vector<char>& bytes);
+
+/// True when this process runs under mpirun / mpiexec with more than one rank
+/// (Open MPI's OMPI_COMM_WORLD_SIZE, or PMI_SIZE / PMIX_SIZE of other launchers). It reads the
+/// environment only, so it is defined in hula::optim (islands.cpp), not with the MPI calls: the
+/// CLI asks it before it loads the MPI plugin.
+[[nodiscard]] bool launched_by_mpi() noexcept;
 
 /// Runs this rank's island of an archipelago of one island per rank.
 /// Initialises and finalises MPI itself (once per process).

@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "hula/studies/hybrid_refine.hpp"
 
-#include <ceres/ceres.h>
-
 #include <Eigen/Dense>
 #include <algorithm>
 #include <chrono>
@@ -11,6 +9,9 @@
 #include <memory>
 
 #include "hula/core/error.hpp"
+#include "hula/core/plugin.hpp"
+#include "hula/studies/detail/ceres_plugin.hpp"
+#include "hula/studies/detail/difference_column.hpp"
 
 namespace hula::studies {
 
@@ -25,119 +26,6 @@ void check_range(bool ok, const char* field, double value, const char* range) {
     throw Error(Errc::InvalidOption, std::string("lm.") + field + " = " + format_number(value) + " must be " + range,
                 {.field = std::string("lm.") + field});
 }
-
-// Jacobian column j at x by central differences (one-sided where a bound is within the step), or, given the
-// residuals r_at of x (LmOptions::forward_differences), by a one-sided difference to the side that is inside
-// the bounds; false if the residuals are undefined there.
-template <class Eval>
-bool difference_column(const std::vector<optim::Variable>& vars, std::span<const double> x, std::size_t j, double step,
-                       std::vector<double>& x_fd, Eigen::VectorXd& r_plus, Eigen::VectorXd& r_minus, Eval&& eval,
-                       Eigen::Ref<Eigen::VectorXd> column, const Eigen::VectorXd* r_at = nullptr) {
-  const double h = step * std::max(1.0, std::fabs(x[j]));
-  const double hi = std::min(x[j] + h, vars[j].upper);
-  const double lo = std::max(x[j] - h, vars[j].lower);
-  x_fd.assign(x.begin(), x.end());
-  if (r_at != nullptr) {
-    const double to = hi > x[j] ? hi : lo;
-    x_fd[j] = to;
-    if (!(to != x[j]) || !eval(x_fd, r_plus)) {
-      column.setZero();
-      return false;
-    }
-    column = (r_plus - *r_at) / (to - x[j]);
-    return true;
-  }
-  x_fd[j] = hi;
-  const bool ok_hi = eval(x_fd, r_plus);
-  x_fd[j] = lo;
-  const bool ok_lo = eval(x_fd, r_minus);
-  if (!ok_hi || !ok_lo || !(hi > lo)) {
-    column.setZero();
-    return false;
-  }
-  column = (r_plus - r_minus) / (hi - lo);
-  return true;
-}
-
-// The least-squares problem as one Ceres cost function over one parameter block, with the Jacobian of
-// difference_column (Ceres's own numeric differentiation would step outside the bounds).
-class CeresResiduals final : public ceres::CostFunction {
- public:
-  CeresResiduals(const LeastSquaresProblem& problem, double step, bool forward, std::size_t& evaluations)
-      : problem_(problem), step_(step), forward_(forward), evaluations_(evaluations) {
-    set_num_residuals(static_cast<int>(problem.residual_count));
-    mutable_parameter_block_sizes()->push_back(static_cast<std::int32_t>(problem.variables.size()));
-  }
-
-  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
-    const std::size_t n = problem_.variables.size(), m = problem_.residual_count;
-    const std::span<const double> x(parameters[0], n);
-    auto eval = [&](std::span<const double> at, Eigen::VectorXd& out) {
-      ++evaluations_;
-      return problem_.residuals(at, std::span<double>(out.data(), m));
-    };
-    Eigen::VectorXd r(static_cast<Eigen::Index>(m));
-    if (jacobians != nullptr && jacobians[0] != nullptr && problem_.jacobian) {
-      ++evaluations_;
-      if (!problem_.jacobian(x, std::span<double>(r.data(), m), std::span<double>(jacobians[0], m * n))) return false;
-      std::copy(r.data(), r.data() + m, residuals);
-      return true;
-    }
-    if (!eval(x, r)) return false;
-    std::copy(r.data(), r.data() + m, residuals);
-    if (jacobians == nullptr || jacobians[0] == nullptr) return true;
-    // Ceres wants the Jacobian row-major, m x n.
-    Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> J(
-        jacobians[0], static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(n));
-    Eigen::VectorXd r_plus(r.size()), r_minus(r.size()), column(r.size());
-    std::vector<double> x_fd;
-    for (std::size_t j = 0; j < n; ++j) {
-      (void)difference_column(problem_.variables, x, j, step_, x_fd, r_plus, r_minus, eval, column,
-                              forward_ ? &r : nullptr);
-      J.col(static_cast<Eigen::Index>(j)) = column;
-    }
-    return true;
-  }
-
- private:
-  const LeastSquaresProblem& problem_;
-  double step_;
-  bool forward_;
-  std::size_t& evaluations_;
-};
-
-// Stops Ceres once the mean |r| reaches the target (Ceres's own tolerances are relative), or once the time
-// budget (0 = none) has run out after an accepted step.
-class TargetCallback final : public ceres::IterationCallback {
- public:
-  TargetCallback(double cost_target, double budget_seconds, std::size_t max_accepted,
-                 std::chrono::steady_clock::time_point start)
-      : cost_target_(cost_target), budget_seconds_(budget_seconds), max_accepted_(max_accepted), start_(start) {}
-  ceres::CallbackReturnType operator()(const ceres::IterationSummary& summary) override {
-    if (summary.cost <= cost_target_) return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
-    if (summary.iteration > 0 && summary.step_is_successful) ++accepted_;
-    if (accepted_ > 0 && budget_seconds_ > 0.0 && elapsed_seconds(start_) >= budget_seconds_) {
-      out_of_time_ = true;
-      return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
-    }
-    if (max_accepted_ > 0 && accepted_ >= max_accepted_) {
-      out_of_steps_ = true;
-      return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
-    }
-    return ceres::SOLVER_CONTINUE;
-  }
-  [[nodiscard]] bool out_of_time() const noexcept { return out_of_time_; }
-  [[nodiscard]] bool out_of_steps() const noexcept { return out_of_steps_; }
-
- private:
-  double cost_target_;
-  double budget_seconds_;
-  std::size_t max_accepted_;
-  std::chrono::steady_clock::time_point start_;
-  std::size_t accepted_ = 0;
-  bool out_of_time_ = false;
-  bool out_of_steps_ = false;
-};
 
 }  // namespace
 
@@ -230,8 +118,9 @@ LmResult refine_levenberg_marquardt(const LeastSquaresProblem& problem, std::spa
               jacobian_rows.data(), M, Nv);
         } else {
           for (std::size_t j = 0; j < n; ++j)
-            (void)difference_column(vars, x, j, options.difference_step, x_fd, r_plus, r_minus, eval,
-                                    J.col(static_cast<Eigen::Index>(j)), options.forward_differences ? &r : nullptr);
+            (void)detail::difference_column(vars, x, j, options.difference_step, x_fd, r_plus, r_minus, eval,
+                                            J.col(static_cast<Eigen::Index>(j)),
+                                            options.forward_differences ? &r : nullptr);
         }
         need_jacobian = false;
       }
@@ -276,63 +165,30 @@ LmResult refine_levenberg_marquardt(const LeastSquaresProblem& problem, std::spa
   if (options.solver == LsqSolver::ClampedLm) {
     solve(options.target_mean, options.max_iterations);
   } else {
-    // Ceres: bounded trust-region LM on the same residuals and Jacobian.
-    ceres::Problem::Options problem_options;
-    problem_options.cost_function_ownership = ceres::TAKE_OWNERSHIP;
-    ceres::Problem cp(problem_options);
-    cp.AddResidualBlock(
-        new CeresResiduals(problem, options.difference_step, options.forward_differences, result.evaluations), nullptr,
-        x.data());
+    // Ceres: bounded trust-region LM on the same residuals and Jacobian, in the Ceres plugin
+    // (detail/ceres_plugin.hpp), loaded on the first Ceres solve only; a failed load is retried next time.
     std::vector<int> fixed;
-    for (std::size_t j = 0; j < n; ++j) {
-      // Ceres wants lower < upper; a zero-width box is a fixed coordinate.
-      if (!(vars[j].upper > vars[j].lower)) {
-        fixed.push_back(static_cast<int>(j));
-        continue;
-      }
-      cp.SetParameterLowerBound(x.data(), static_cast<int>(j), vars[j].lower);
-      cp.SetParameterUpperBound(x.data(), static_cast<int>(j), vars[j].upper);
-    }
+    for (std::size_t j = 0; j < n; ++j)
+      if (!(vars[j].upper > vars[j].lower)) fixed.push_back(static_cast<int>(j));  // Ceres wants lower < upper
     if (fixed.size() == n) {
       end_with(Termination::Converged, "every variable is fixed");
     } else {
-      if (!fixed.empty()) cp.SetManifold(x.data(), new ceres::SubsetManifold(static_cast<int>(n), fixed));
-      ceres::Solver::Options so;
-      so.minimizer_type = ceres::TRUST_REGION;
-      so.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
-      so.linear_solver_type = ceres::DENSE_QR;
-      so.use_nonmonotonic_steps = true;
-      so.max_num_iterations = static_cast<int>(options.max_iterations);
-      so.initial_trust_region_radius = 1.0 / options.initial_lambda;
-      so.function_tolerance = options.relative_tolerance;
-      so.parameter_tolerance = 1e-14;
-      so.gradient_tolerance = 0.0;
-      so.logging_type = ceres::SILENT;
-      so.minimizer_progress_to_stdout = false;
-      so.num_threads = 1;
-      // mean |r| <= rms |r| = √(‖r‖² / m): a cost ½‖r‖² <= ½ m t² guarantees the target; the true mean is reported.
-      const double t = options.target_mean;
-      TargetCallback stop(0.5 * static_cast<double>(m) * t * t, options.time_budget_seconds, options.max_accepted_steps,
-                          clock_start);
-      so.callbacks.push_back(&stop);
-      ceres::Solver::Summary summary;
-      ceres::Solve(so, &cp, &summary);
-      result.iterations = summary.iterations.empty() ? 0 : summary.iterations.size() - 1;
+      static const auto ceres_solve =
+          reinterpret_cast<detail::CeresSolveFunction>(plugin_symbol("ceres", detail::kCeresSolveSymbol));
+      detail::CeresRun run;
+      ceres_solve(problem, options, fixed, clock_start, x, result.evaluations, run);
+      result.iterations = run.iterations;
       if (!eval(x, r))
         throw Error(Errc::NumericalFailure, "the residuals are undefined at the solver's result", {.field = "start"});
-      if (mean_abs(r) <= t)
+      if (mean_abs(r) <= options.target_mean)
         end_with(Termination::TargetReached, "target_mean reached");
-      else if (stop.out_of_time())
+      else if (run.out_of_time)
         end_with(Termination::WallTime, "time_budget_seconds ran out");
-      else if (stop.out_of_steps())
+      else if (run.out_of_steps)
         end_with(Termination::MaxGenerations,
                  "max_accepted_steps = " + std::to_string(options.max_accepted_steps) + " steps accepted");
-      else if (summary.termination_type == ceres::CONVERGENCE)
-        end_with(Termination::Converged, summary.message);
-      else if (summary.termination_type == ceres::NO_CONVERGENCE)
-        end_with(Termination::MaxGenerations, summary.message);
       else
-        end_with(Termination::Stagnation, "Ceres failed: " + summary.message);
+        end_with(run.termination, std::move(run.message));
     }
   }
   result.mean_after = mean_abs(r);
