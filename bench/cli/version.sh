@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # `hula --version` against the floor of this machine (docs/benchmarks.md, "Command-line start-up"): the
-# median wall time of 20 runs (hyperfine -N --warmup 5 --runs 20) of a C hello world, a C++ hello world
+# median wall time (and mean CPU time) of 20 runs (hyperfine -N --warmup 5 --runs 20) of a C hello world, a C++ hello world
 # that writes with std::cout, and `hula --version` of each binary given, then, for each binary, the shared
 # objects the loader initialises and its relocation statistics (LD_DEBUG=statistics). Give the binaries of
 # two commits to compare them in one session:
@@ -22,8 +22,8 @@ python3 - "$work/times.json" <<'PY'
 import json, sys
 for r in json.load(open(sys.argv[1]))["results"]:
     name = r["command"].split("/")[-1] if "hello" in r["command"] else r["command"]
-    print(f"  {name:60s} median {r['median'] * 1e3:6.2f} ms  (mean {r['mean'] * 1e3:.2f} ± {r['stddev'] * 1e3:.2f}, "
-          f"min {r['min'] * 1e3:.2f})")
+    print(f"  {name:40s} median {r['median'] * 1e3:6.2f} ms  (mean {r['mean'] * 1e3:.2f} ± {r['stddev'] * 1e3:.2f}, "
+          f"min {r['min'] * 1e3:.2f}; CPU user + sys, mean {(r['user'] + r['system']) * 1e3:.2f} ms)")
 PY
 echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)"
 for hula in "$@"; do
