@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstring>
+#include <string>
 #include <vector>
 
 #include "hula/core/error.hpp"
@@ -147,6 +148,40 @@ TEST(PieceEvaluator, ArcLengthUnchangedByThePieces) {
   for (std::size_t i = 0; i < n; ++i) L[i] = Vec3{1.0, 2.0, 2.0} * static_cast<double>(i);
   const NurbsCurve line(3, U, L);
   EXPECT_NEAR(arc_length(line), 3.0 * static_cast<double>(n - 1), 1e-12 * 3.0 * static_cast<double>(n));
+}
+
+// checks: a derivative that overflows double precision on a 5,000-span curve is the curve's own
+// NumericalFailure naming t, through the pieces as through the cache (spans of 1e-9 under 1e299 poles).
+TEST(PieceEvaluator, OverflowIsTheCurvesError) {
+  const std::size_t n = 5000;
+  std::vector<double> U(n + 4);
+  for (std::size_t i = 0; i < U.size(); ++i)
+    U[i] = 1e-9 * (static_cast<double>(std::min(std::max<std::size_t>(i, 3), n)) - 3.0);
+  std::vector<Vec3> P(n);
+  for (std::size_t i = 0; i < n; ++i) P[i] = {i % 2 == 0 ? 0.0 : 1e299, 0.0, 0.0};
+  const NurbsCurve fresh(3, U, P), cached(3, U, P);
+  PieceEvaluator pieces(fresh);
+  const double t = 1e-9 * 2500.5;
+  std::array<Vec3, 4> out;
+  std::string from_pieces, from_cache;
+  try {
+    pieces.derivatives(std::span<const double>(&t, 1), 3, out);
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), Errc::NumericalFailure);
+    from_pieces = e.what();
+  }
+  try {
+    cached.derivatives(std::span<const double>(&t, 1), 3, out);
+  } catch (const Error& e) {
+    from_cache = e.what();
+  }
+  EXPECT_NE(from_pieces.find("overflows"), std::string::npos) << from_pieces;
+  EXPECT_EQ(from_pieces, from_cache);
+  // Positions do not overflow: the same doubles.
+  Vec3 a, b;
+  pieces.derivatives(std::span<const double>(&t, 1), 0, std::span<Vec3>(&a, 1));
+  cached.derivatives(std::span<const double>(&t, 1), 0, std::span<Vec3>(&b, 1));
+  EXPECT_TRUE(same_bits(a, b));
 }
 
 }  // namespace

@@ -799,7 +799,11 @@ void PieceEvaluator::derivatives(std::span<const double> ts, int order, std::spa
     return;
   }
   const std::span<const double> U = d.knots.values();
-  const std::size_t i = d.knots.find_span(ts[0], Side::Right);
+  // The previous piece's span or the next one first (one pass along the curve asks about each span in turn).
+  const std::size_t next = st.span + 1;
+  const std::size_t i = st.span != 0 && next + 1 < d.points.size() + 1 && U[next] <= ts[0] && ts[0] < U[next + 1]
+                            ? next
+                            : d.knots.find_span(ts[0], st.span, Side::Right);
   if (i != st.span) {
     // The breakpoints U[i] < U[i + 1] and their exact points (build_cache: a run of m ≥ p equal knots
     // starting at index r passes through point r − 1, or point 0 at r = 0).
@@ -830,8 +834,10 @@ void PieceEvaluator::derivatives(std::span<const double> ts, int order, std::spa
     double* inv_half = breaks + 3;
     double* coef = breaks + 4;
     d.piece(i, *mid, *inv_half, coef);
-    c.unchecked_order =
-        !d.piece_bounded(i, *inv_half, coef) ? 0 : (d.rational() ? d.degree() : std::numeric_limits<int>::max());
+    // Every derivative is probed for overflow (a cheap sum) instead of bounding the piece first (positions
+    // never overflow inside the domain): where the cache's bound rules an overflow out the probe finds
+    // none, so the values and errors are the same.
+    c.unchecked_order = 0;
     build_buckets(c);
     st.span = i;
   }
