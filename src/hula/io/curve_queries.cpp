@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cmath>
+#include <span>
 #include <string>
 #include <string_view>
 #include <tuple>
@@ -18,6 +19,7 @@
 #include "hula/nurbs/arc_length.hpp"
 #include "hula/nurbs/closest_point.hpp"
 #include "hula/nurbs/interpolate.hpp"
+#include "hula/nurbs/piece_evaluator.hpp"
 
 namespace hula::io {
 
@@ -29,8 +31,13 @@ Description describe(const nurbs::NurbsCurve& curve) {
   const nurbs::Interval dom = curve.domain();
   Description d;
   d.length = nurbs::arc_length(curve);
-  d.start_derivative = curve.derivatives(dom.start, 1)[1];
-  d.end_derivative = curve.derivatives(dom.end, 1)[1];
+  // The end derivatives from the end spans alone (a million-span curve's cache is not built for two points).
+  nurbs::PieceEvaluator ends(curve);
+  std::array<Vec3, 2> at;
+  ends.derivatives(std::span<const double>(&dom.start, 1), 1, at);
+  d.start_derivative = at[1];
+  ends.derivatives(std::span<const double>(&dom.end, 1), 1, at);
+  d.end_derivative = at[1];
   // Unit tangents where |C'| is above rounding noise relative to the derivative's scale; null otherwise.
   const double scale = curve.model_size() / dom.length();
   d.start_unit = norm(d.start_derivative) > 1e-12 * scale;

@@ -31,6 +31,7 @@
 
 #include "hula/core/error.hpp"
 #include "hula/core/huge_pages.hpp"
+#include "hula/nurbs/piece_evaluator.hpp"
 
 namespace hula::nurbs {
 
@@ -58,7 +59,7 @@ struct GkResult {
 class SpeedIntegrator {
  public:
   SpeedIntegrator(const NurbsCurve& curve, double tolerance)
-      : curve_(curve),
+      : pieces_(curve),
         tolerance_(tolerance),
         breaks_(curve.knots().breakpoints()),
         budget_(kMaxEvaluations + kEvaluationsPerSpan * static_cast<long>(breaks_.size())) {}
@@ -66,12 +67,13 @@ class SpeedIntegrator {
   double speed(double t) {
     ++evaluations_;
     std::array<Vec3, 2> d;
-    curve_.derivatives(t, 1, d);
+    pieces_.derivatives(std::span<const double>(&t, 1), 1, d);
     return norm(d[1]);
   }
 
   // The 15 nodes of a rule at once, in increasing order (one span located once, its points evaluated
-  // together by the batch kernels: the same values as one call per node).
+  // together by the batch kernels: the same values as one call per node). A long curve is evaluated one
+  // span's piece at a time (PieceEvaluator: the same values without building the curve's cache).
   GkResult gk15(double x0, double x1) {
     const auto& x = Kronrod15::abscissa();
     const auto& wk = Kronrod15::weights();
@@ -88,7 +90,7 @@ class SpeedIntegrator {
       ts[m + j] = c + dx;
     }
     std::array<Vec3, 2 * (2 * m + 1)> d;
-    curve_.derivatives(ts, 1, d);
+    pieces_.derivatives(ts, 1, d);
     evaluations_ += static_cast<long>(ts.size());
     const auto speed = [&](std::size_t i) { return norm(d[2 * i + 1]); };
     const double fc = speed(m);
@@ -161,7 +163,7 @@ class SpeedIntegrator {
     return {std::max(a, breaks_[s]), std::min(b, breaks_[s + 1])};
   }
 
-  const NurbsCurve& curve_;
+  PieceEvaluator pieces_;
   double tolerance_;
   long evaluations_ = 0;
   std::vector<double> breaks_;

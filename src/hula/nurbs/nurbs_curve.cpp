@@ -20,8 +20,10 @@
 #include "hula/core/error.hpp"
 #include "hula/core/huge_pages.hpp"
 #include "hula/nurbs/basis.hpp"
+#include "hula/nurbs/detail/basis_fixed.hpp"
 #include "hula/nurbs/detail/curve_access.hpp"
 #include "hula/nurbs/detail/span_simd.hpp"
+#include "hula/nurbs/piece_evaluator.hpp"
 
 #define HULA_SPAN_ISA scalar
 #include "hula/nurbs/detail/span_eval.hpp"
@@ -106,6 +108,10 @@ struct NurbsCurve::Data {
   }
   const SpanCache& publish_cache() const;
   void build_cache(SpanCache& out) const;
+  // Span i's (U[i] < U[i + 1], degree ≤ kCachedDegreeLimit) midpoint, 1 / half-length and Taylor coefficients.
+  void piece(std::size_t i, double& mid, double& inv_half, double* coef) const;
+  // No derivative up to the cache's unchecked order can overflow on span i (bounds below).
+  bool piece_bounded(std::size_t i, double inv_half, const double* coef) const;
   void eval_direct(double t, int order, Side side, Vec3* out, BasisWorkspace& work) const;
   // snap_exact for the direct path (binary search over the breakpoints).
   void snap_direct(const SpanCache& c, double u, Vec3& position) const {
@@ -414,6 +420,91 @@ const SpanCache& NurbsCurve::Data::publish_cache() const {
   return *expected;  // another thread published first
 }
 
+namespace {
+// The Taylor coefficients of the homogeneous piece on span i (U[i] < U[i + 1]) at its midpoint, for a
+// compile-time degree P: coef[j * 4 + lane], lanes x, y, z, w.
+template <int P>
+void taylor_piece(std::span<const double> U, std::span<const Vec3> points, std::span<const double> weights,
+                  std::size_t i, double& mid, double& inv_half, double* coef) {
+  const double half = 0.5 * (U[i + 1] - U[i]);
+  const double m = U[i] + half;
+  mid = m;
+  inv_half = 1.0 / half;
+  double ders[P + 1][P + 1];
+  detail::basis_derivatives_fixed<P>(U.data(), i, m, ders);
+  const bool rational = !weights.empty();
+  double f = 1.0;  // half^k / k!
+  for (std::size_t k = 0; k <= static_cast<std::size_t>(P); ++k) {
+    if (k > 0) f *= half / static_cast<double>(k);
+    double acc[4] = {0, 0, 0, 0};
+    for (std::size_t j = 0; j <= static_cast<std::size_t>(P); ++j) {
+      // Scale N^(k) ~ half^-k back to O(1) before touching the points, so
+      // tiny spans with huge coordinates cannot overflow in between.
+      const double N = ders[k][j] * f;
+      const std::size_t idx = i - static_cast<std::size_t>(P) + j;
+      const double w = rational ? weights[idx] : 1.0;
+      acc[0] += N * w * points[idx].x;
+      acc[1] += N * w * points[idx].y;
+      acc[2] += N * w * points[idx].z;
+      acc[3] += N * w;
+    }
+    for (std::size_t c = 0; c < 4; ++c) coef[k * 4 + c] = acc[c];
+  }
+}
+
+using TaylorPiece = void (*)(std::span<const double>, std::span<const Vec3>, std::span<const double>, std::size_t,
+                             double&, double&, double*);
+template <int... Ps>
+constexpr std::array<TaylorPiece, sizeof...(Ps)> make_pieces(std::integer_sequence<int, Ps...>) {
+  return {&taylor_piece<Ps + 1>...};
+}
+constexpr auto kTaylorPieces = make_pieces(std::make_integer_sequence<int, kCachedDegreeLimit>{});
+}  // namespace
+
+void NurbsCurve::Data::piece(std::size_t i, double& mid, double& inv_half, double* coef) const {
+  kTaylorPieces[static_cast<std::size_t>(degree() - 1)](knots.values(), points, weights, i, mid, inv_half, coef);
+}
+
+// Bounds for |x| ≤ 1: |A^(k)| ≤ k! scale^k Σ_{j≥k} binom(j, k) |c_j| (lanes x, y, z) and likewise |w^(k)|
+// (lane w). Non-rational: no derivative of any order can overflow when every bound < 1e300 (orders above
+// p are zero). Rational: w ≥ w_min > 0 on the span (a convex combination of its p + 1 weights), and the
+// quotient rule gives |C^(k)| ≤ B_k = (|A^(k)| + Σ_{i=1..k} binom(k, i) |w^(i)| B_{k−i}) / w_min for
+// k ≤ p; every partial sum of the evaluator is bounded by B_k, so B_k < 1e300 (far below the overflow
+// threshold 1.8e308, which rounding cannot bridge) rules out an overflow up to order p.
+bool NurbsCurve::Data::piece_bounded(std::size_t i, double inv_half, const double* coef) const {
+  const auto P = static_cast<std::size_t>(degree());
+  std::array<double, kCachedDegreeLimit + 1> abound{}, wbound{}, B{};
+  double scale_k = 1.0;
+  for (std::size_t k = 0; k <= P; ++k) {
+    if (k > 0) scale_k *= static_cast<double>(k) * inv_half;
+    double bound = 0.0, wb = 0.0;
+    double binom = 1.0;  // binom(j, k) for j = k, k+1, ...
+    for (std::size_t j = k; j <= P; ++j) {
+      if (j > k) binom = binom * static_cast<double>(j) / static_cast<double>(j - k);
+      const double* cj = &coef[j * 4];
+      bound += binom * std::fmax(std::fabs(cj[0]), std::fmax(std::fabs(cj[1]), std::fabs(cj[2])));
+      wb += binom * std::fabs(cj[3]);
+    }
+    abound[k] = bound * scale_k;
+    wbound[k] = wb * scale_k;
+    if (!(abound[k] < 1e300)) return false;
+  }
+  if (!rational()) return true;
+  double w_min = HUGE_VAL;
+  for (std::size_t j = 0; j <= P; ++j) w_min = std::fmin(w_min, weights[i - P + j]);
+  for (std::size_t k = 0; k <= P; ++k) {
+    double sum = abound[k];
+    double binom = 1.0;
+    for (std::size_t r = 1; r <= k; ++r) {
+      binom = binom * static_cast<double>(k - r + 1) / static_cast<double>(r);
+      sum += binom * wbound[r] * B[k - r];
+    }
+    B[k] = sum / w_min;
+    if (!(B[k] < 1e300)) return false;
+  }
+  return true;
+}
+
 void NurbsCurve::Data::build_cache(SpanCache& out) const {
   const int p = degree();
   const auto P = static_cast<std::size_t>(p);
@@ -470,74 +561,18 @@ void NurbsCurve::Data::build_cache(SpanCache& out) const {
     std::fill(mid, coef, 0.0);   // midpoints and scales unused
     return;
   }
-  BasisWorkspace& work = thread_workspace();
   std::size_t s = 0;
   for (std::size_t i = P; i <= n; ++i) {
     if (!(U[i] < U[i + 1])) continue;
-    const double half = 0.5 * (U[i + 1] - U[i]);
-    const double m = U[i] + half;
-    mid[s] = m;
-    inv_half[s] = 1.0 / half;
-    const std::span<const double> ders = basis_derivatives(knots, i, m, p, work);
-    double f = 1.0;  // half^k / k!
-    for (std::size_t k = 0; k <= P; ++k) {
-      if (k > 0) f *= half / static_cast<double>(k);
-      double acc[4] = {0, 0, 0, 0};
-      for (std::size_t j = 0; j <= P; ++j) {
-        // Scale N^(k) ~ half^-k back to O(1) before touching the points, so
-        // tiny spans with huge coordinates cannot overflow in between.
-        const double N = ders[k * (P + 1) + j] * f;
-        const std::size_t idx = i - P + j;
-        const double w = rational() ? weights[idx] : 1.0;
-        acc[0] += N * w * points[idx].x;
-        acc[1] += N * w * points[idx].y;
-        acc[2] += N * w * points[idx].z;
-        acc[3] += N * w;
-      }
-      for (std::size_t c = 0; c < 4; ++c) coef[(s * (P + 1) + k) * 4 + c] = acc[c];
-    }
+    piece(i, mid[s], inv_half[s], coef + s * block);
     ++s;
   }
   HULA_ASSERT(s == S, "span count mismatch between knots and breakpoints");
-  // Bounds for |x| ≤ 1: |A^(k)| ≤ k! scale^k Σ_{j≥k} binom(j, k) |c_j| (lanes x, y, z) and likewise |w^(k)|
-  // (lane w). Non-rational: no derivative of any order can overflow when every bound < 1e300 (orders above
-  // p are zero). Rational: w ≥ w_min > 0 on the span (a convex combination of its p + 1 weights), and the
-  // quotient rule gives |C^(k)| ≤ B_k = (|A^(k)| + Σ_{i=1..k} binom(k, i) |w^(i)| B_{k−i}) / w_min for
-  // k ≤ p; every partial sum of the evaluator is bounded by B_k, so B_k < 1e300 (far below the overflow
-  // threshold 1.8e308, which rounding cannot bridge) rules out an overflow up to order p.
   bool bounded = true;
   for (std::size_t sp = 0; sp < S && bounded; ++sp) {
-    std::array<double, kCachedDegreeLimit + 1> abound{}, wbound{}, B{};
-    double scale_k = 1.0;
-    for (std::size_t k = 0; k <= P; ++k) {
-      if (k > 0) scale_k *= static_cast<double>(k) * inv_half[sp];
-      double bound = 0.0, wb = 0.0;
-      double binom = 1.0;  // binom(j, k) for j = k, k+1, ...
-      for (std::size_t j = k; j <= P; ++j) {
-        if (j > k) binom = binom * static_cast<double>(j) / static_cast<double>(j - k);
-        const double* cj = &coef[(sp * (P + 1) + j) * 4];
-        bound += binom * std::fmax(std::fabs(cj[0]), std::fmax(std::fabs(cj[1]), std::fabs(cj[2])));
-        wb += binom * std::fabs(cj[3]);
-      }
-      abound[k] = bound * scale_k;
-      wbound[k] = wb * scale_k;
-      if (!(abound[k] < 1e300)) bounded = false;
-    }
-    if (!rational() || !bounded) continue;
     // The span's first control point index: the span starting at breakpoint sp ends at knot index i + 1.
     const std::size_t i = static_cast<std::size_t>(std::upper_bound(U.begin(), U.end(), breaks[sp]) - U.begin()) - 1;
-    double w_min = HUGE_VAL;
-    for (std::size_t j = 0; j <= P; ++j) w_min = std::fmin(w_min, weights[i - P + j]);
-    for (std::size_t k = 0; k <= P && bounded; ++k) {
-      double sum = abound[k];
-      double binom = 1.0;
-      for (std::size_t r = 1; r <= k; ++r) {
-        binom = binom * static_cast<double>(k - r + 1) / static_cast<double>(r);
-        sum += binom * wbound[r] * B[k - r];
-      }
-      B[k] = sum / w_min;
-      if (!(B[k] < 1e300)) bounded = false;
-    }
+    bounded = piece_bounded(i, inv_half[sp], coef + sp * block);
   }
   out.unchecked_order = !bounded ? 0 : (rational() ? p : std::numeric_limits<int>::max());
 }
@@ -720,6 +755,104 @@ bool operator==(const NurbsCurve& a, const NurbsCurve& b) {
   if (a.data_ == b.data_) return true;
   return a.data_->knots == b.data_->knots && a.data_->points == b.data_->points &&
          a.data_->weights == b.data_->weights && a.data_->dimension == b.data_->dimension;
+}
+
+// One span's cache (S = 1): the same breakpoints, exact points, midpoint, scale and coefficients as the
+// curve's cache holds for that span, so the kernels give the same doubles from it.
+struct PieceEvaluator::State {
+  SpanCache cache;
+  std::size_t span = 0;  // knot index i of the piece in `cache`; 0 (never a span: i ≥ p ≥ 1) before the first
+  bool pieces = false;   // large enough, and of a cached degree
+};
+
+PieceEvaluator::PieceEvaluator(const NurbsCurve& curve) : curve_(curve), state_(std::make_unique<State>()) {
+  const NurbsCurve::Data& d = *curve.data_;
+  const std::size_t p = static_cast<std::size_t>(d.degree());
+  state_->pieces = d.degree() <= kCachedDegreeLimit && d.points.size() - p >= kMinSpans;
+  if (state_->pieces) {
+    SpanCache& c = state_->cache;
+    c.spans = 1;
+    c.block = (p + 1) * 4;
+    const std::size_t doubles = 2 + 2 + c.block + 8;
+    c.store.reset(new double[doubles]);
+    double* breaks = c.store.get();
+    c.breaks = breaks;
+    c.mid = breaks + 2;
+    c.inv_half = breaks + 3;
+    c.coef = breaks + 4;
+    c.exact = breaks + 4 + c.block;
+  }
+}
+
+PieceEvaluator::~PieceEvaluator() = default;
+
+void PieceEvaluator::derivatives(std::span<const double> ts, int order, std::span<Vec3> out) {
+  const NurbsCurve::Data& d = *curve_.data_;
+  State& st = *state_;
+  const Interval dom = curve_.domain();
+  // Through the curve: small curves, a cache already built, anything the curve reports as an error.
+  const bool direct = !st.pieces || d.cache.load(std::memory_order_acquire) != nullptr || ts.empty() || order < 0 ||
+                      out.size() < ts.size() * (static_cast<std::size_t>(order) + 1) ||
+                      !(ts[0] >= dom.start && ts[0] <= dom.end);
+  if (direct) {
+    curve_.derivatives(ts, order, out);
+    return;
+  }
+  const std::span<const double> U = d.knots.values();
+  // The previous piece's span or the next one first (one pass along the curve asks about each span in turn).
+  const std::size_t next = st.span + 1;
+  const std::size_t i = st.span != 0 && next + 1 < d.points.size() + 1 && U[next] <= ts[0] && ts[0] < U[next + 1]
+                            ? next
+                            : d.knots.find_span(ts[0], st.span, Side::Right);
+  if (i != st.span) {
+    // The breakpoints U[i] < U[i + 1] and their exact points (build_cache: a run of m ≥ p equal knots
+    // starting at index r passes through point r − 1, or point 0 at r = 0).
+    SpanCache& c = st.cache;
+    const auto P = static_cast<std::size_t>(d.degree());
+    double* breaks = c.store.get();
+    double* exact = breaks + 4 + c.block;
+    breaks[0] = U[i];
+    breaks[1] = U[i + 1];
+    std::size_t r0 = i;
+    while (r0 > 0 && U[r0 - 1] == U[i]) --r0;
+    std::size_t e1 = i + 1;
+    while (e1 + 1 < U.size() && U[e1 + 1] == U[i + 1]) ++e1;
+    const std::array<std::pair<std::size_t, std::size_t>, 2> runs{{{r0, i - r0 + 1}, {i + 1, e1 - i}}};
+    for (std::size_t b = 0; b < 2; ++b) {
+      const auto [start, m] = runs[b];
+      if (m >= P) {
+        const Vec3& q = d.points[start == 0 ? 0 : start - 1];
+        exact[4 * b] = 1.0;
+        exact[4 * b + 1] = q.x;
+        exact[4 * b + 2] = q.y;
+        exact[4 * b + 3] = q.z;
+      } else {
+        std::fill_n(exact + 4 * b, 4, 0.0);
+      }
+    }
+    double* mid = breaks + 2;
+    double* inv_half = breaks + 3;
+    double* coef = breaks + 4;
+    d.piece(i, *mid, *inv_half, coef);
+    // Every derivative is probed for overflow (a cheap sum) instead of bounding the piece first (positions
+    // never overflow inside the domain): where the cache's bound rules an overflow out the probe finds
+    // none, so the values and errors are the same.
+    c.unchecked_order = 0;
+    build_buckets(c);
+    st.span = i;
+  }
+  // Every parameter where the curve's cache would look it up: in [U[i], U[i + 1]), or at the end of the
+  // last span.
+  const double b0 = U[i], b1 = U[i + 1];
+  const bool last = b1 == dom.end;
+  for (const double t : ts)
+    if (!(b0 <= t && (t < b1 || (last && t == b1)))) {
+      curve_.derivatives(ts, order, out);
+      return;
+    }
+  const int p = d.degree();
+  kernel_for(p, d.rational(), order)(st.cache, ts, order, out.data(), dom, EvalOptions{}, true,
+                                     detail::run_kernel(p, d.rational(), order));
 }
 
 }  // namespace hula::nurbs

@@ -49,6 +49,7 @@ inline constexpr int kCachedDegreeLimit = 9;
 namespace detail {
 struct CurveAccess;  // detail/curve_access.hpp: construction from data valid by construction
 }  // namespace detail
+class PieceEvaluator;  // piece_evaluator.hpp: evaluation without the per-span cache
 
 /// A NURBS curve C(t) = Σ N_{i,p}(t) w_i P_i / Σ N_{i,p}(t) w_i, t ∈ [U[p], U[n+1]].
 ///
@@ -110,6 +111,7 @@ class NurbsCurve {
 
  private:
   friend struct detail::CurveAccess;
+  friend class PieceEvaluator;
   struct Data;
   explicit NurbsCurve(std::shared_ptr<const Data> data) noexcept : data_(std::move(data)) {}
   std::shared_ptr<const Data> data_;
