@@ -69,26 +69,5 @@ TEST(AtomicFile, ReadErrorsNamePath) {
   HULA_EXPECT_ERROR(read_text_file(dir.path()), Errc::IoError, "directory");
 }
 
-// checks: read_input_text maps a regular file of kMapBytes or more and gives its bytes exactly (NUL
-// bytes, no final newline, a length that is not a multiple of the page size), reads a smaller one, a
-// moved-from value is empty, and its errors are read_text_file's (missing file, directory, size limit).
-TEST(AtomicFile, InputTextIsTheFilesBytes) {
-  TempDir dir;
-  std::string big;
-  for (std::size_t i = 0; big.size() < InputText::kMapBytes + 4097; ++i) big += std::to_string(i * 7919 % 1009) + ",";
-  big[12345] = '\0';
-  write_file_atomically(dir.path() / "big.csv", big);
-  InputText mapped = read_input_text(dir.path() / "big.csv", kMaxGeometryInputBytes);
-  EXPECT_EQ(mapped.text(), big);
-  const InputText moved = std::move(mapped);
-  EXPECT_EQ(moved.text(), big);
-  EXPECT_TRUE(mapped.text().empty());  // NOLINT(bugprone-use-after-move): the moved-from state is specified
-  write_file_atomically(dir.path() / "small.csv", "1,2,3\n");
-  EXPECT_EQ(read_input_text(dir.path() / "small.csv").text(), "1,2,3\n");
-  HULA_EXPECT_ERROR(read_input_text(dir.path() / "missing.json"), Errc::IoError, "missing.json");
-  HULA_EXPECT_ERROR(read_input_text(dir.path()), Errc::IoError, "directory");
-  HULA_EXPECT_ERROR(read_input_text(dir.path() / "big.csv", InputText::kMapBytes), Errc::IoError, "limit");
-}
-
 }  // namespace
 }  // namespace hula::io

@@ -7,7 +7,6 @@
 #include "hula/io/atomic_file.hpp"
 
 #include <fcntl.h>
-#include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -158,52 +157,6 @@ std::filesystem::path directory_of(const std::filesystem::path& path) {
 bool is_std_stream(const std::filesystem::path& path) { return path.native() == kStdStreamName; }
 
 void set_pipe_inputs(bool on) noexcept { g_pipe_inputs.store(on, std::memory_order_relaxed); }
-
-InputText::InputText(InputText&& other) noexcept
-    : owned_(std::move(other.owned_)), map_(std::exchange(other.map_, nullptr)), size_(std::exchange(other.size_, 0)) {}
-
-InputText& InputText::operator=(InputText&& other) noexcept {
-  if (this != &other) {
-    if (map_ != nullptr) ::munmap(map_, size_);
-    owned_ = std::move(other.owned_);
-    map_ = std::exchange(other.map_, nullptr);
-    size_ = std::exchange(other.size_, 0);
-  }
-  return *this;
-}
-
-InputText::~InputText() {
-  if (map_ != nullptr) ::munmap(map_, size_);
-}
-
-InputText read_input_text(const std::filesystem::path& path, std::size_t max_bytes) {
-  // Only the plain case is mapped here; everything else, and every error, is read_text_file's.
-  // A path that is not a regular file is never opened here: opening a FIFO would release its writer.
-  struct stat named {};
-  if (!is_std_stream(path) && ::stat(path.c_str(), &named) == 0 && S_ISREG(named.st_mode) &&
-      static_cast<unsigned long long>(named.st_size) >= InputText::kMapBytes) {
-    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NOCTTY | O_NONBLOCK);
-    if (fd >= 0) {
-      const FdGuard guard(fd);
-      struct stat st {};
-      if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size >= 0) {
-        const auto size = static_cast<std::size_t>(st.st_size);
-        if (size >= InputText::kMapBytes && size <= max_bytes) {
-          // Populated up front: the pages are the page cache's, mapped in one system call.
-          void* map = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
-          if (map != MAP_FAILED) {
-            (void)::madvise(map, size, MADV_SEQUENTIAL);
-            InputText in;
-            in.map_ = map;
-            in.size_ = size;
-            return in;
-          }
-        }
-      }
-    }
-  }
-  return InputText(read_text_file(path, max_bytes));
-}
 
 std::string read_text_file(const std::filesystem::path& path, std::size_t max_bytes) {
   const bool is_stdin = is_std_stream(path);

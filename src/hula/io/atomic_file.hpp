@@ -24,7 +24,6 @@
 #include <ostream>
 #include <string>
 #include <string_view>
-#include <utility>
 
 namespace hula::io {
 
@@ -52,39 +51,6 @@ void set_pipe_inputs(bool on) noexcept;
 ///   permission denied, not a regular file (directory, device, FIFO unless set_pipe_inputs, socket),
 ///   longer than `max_bytes` (the cap is named), a read error; ErrorWhere.field is "path"
 [[nodiscard]] std::string read_text_file(const std::filesystem::path& path, std::size_t max_bytes = kMaxInputBytes);
-
-/// The bytes of an input: a regular file of at least kMapBytes mapped read-only (the page cache's own
-/// pages: no copy, and no fresh memory to fault in and zero, which was a third of reading a 10⁶-point
-/// file), anything else read by read_text_file. Movable (a moved-from value is empty), not copyable.
-class InputText {
- public:
-  /// Regular files at least this long are mapped.
-  static constexpr std::size_t kMapBytes = std::size_t{1} << 20;
-
-  InputText() = default;
-  explicit InputText(std::string text) : owned_(std::move(text)) {}
-  InputText(InputText&& other) noexcept;
-  InputText& operator=(InputText&& other) noexcept;
-  InputText(const InputText&) = delete;
-  InputText& operator=(const InputText&) = delete;
-  ~InputText();
-
-  [[nodiscard]] std::string_view text() const noexcept {
-    return map_ != nullptr ? std::string_view(static_cast<const char*>(map_), size_) : std::string_view(owned_);
-  }
-
- private:
-  friend InputText read_input_text(const std::filesystem::path& path, std::size_t max_bytes);
-  std::string owned_;
-  void* map_ = nullptr;
-  std::size_t size_ = 0;
-};
-
-/// The input at `path` as read_text_file reads it (same limits, same errors), a large regular file
-/// mapped instead of copied. A file truncated by another process while it is mapped ends the process
-/// with SIGBUS (what any reader of a mapped file risks); files hula writes are replaced by a rename,
-/// which leaves the mapped file whole.
-[[nodiscard]] InputText read_input_text(const std::filesystem::path& path, std::size_t max_bytes = kMaxInputBytes);
 
 /// Largest curve or point file read (1 GiB): what `hula` writes, `hula` reads. An
 /// interpolated curve of 1,000,000 points is a ~70 MB file, a NURBS of as many

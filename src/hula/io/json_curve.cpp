@@ -305,7 +305,7 @@ curve::Curve parse_curve_json(std::string_view text) {
 }
 
 curve::Curve read_curve_file(const std::filesystem::path& path) {
-  return parse_curve_json(read_input_text(path, kMaxGeometryInputBytes).text());
+  return parse_curve_json(read_text_file(path, kMaxGeometryInputBytes));
 }
 
 namespace {

@@ -277,9 +277,9 @@ PointSet parse_points(std::string_view text) {
 }
 
 PointSet read_points_file(const std::filesystem::path& path) {
-  const InputText text = read_input_text(path, kMaxGeometryInputBytes);
+  const std::string text = read_text_file(path, kMaxGeometryInputBytes);
   try {
-    return parse_points(text.text());
+    return parse_points(text);
   } catch (const Error& e) {
     throw Error(e.code(), path.string() + ": " + e.message(), e.where());
   }
