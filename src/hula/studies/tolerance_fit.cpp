@@ -103,8 +103,8 @@ constexpr int kMaxStretches = 8;
 // against a least-squares quadratic through the next EndStrayCheck::window points (default 6) inward,
 // continued out to them. Those defaults are not tuned to one generator: the seeded sweep of
 // tests/studies/scan_fit_end_sweep.cpp (windows 4–12 × judged 2–5, four independent generators,
-// ordered/shuffled/reversed, σ 0.01–0.1 of the tolerance, 1 % strays plus end strays) passes the judged
-// criteria in every cell alike (docs/studies.md, "End strays").
+// ordered/shuffled/reversed, σ 0.01–0.1 of the tolerance, 1 % strays plus end strays) passes the same clouds
+// in every cell to one cloud in 240, four more than with the check off (docs/studies.md, "End strays").
 // ... where the same continuation, one point further in, reaches its (kept) neighbour within this
 // share of the tolerance or the noise's prediction error.
 constexpr double kEndCheck = 0.25;

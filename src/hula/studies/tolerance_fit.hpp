@@ -61,8 +61,9 @@ enum class FitEnds {
 /// open end are each measured against the least-squares quadratic (in chord length) through the next `window`
 /// points inward, continued out to them; one farther from that continuation than the tolerance and 3 σ̂
 /// prediction errors leaves the fit. The defaults sit inside a plateau: every (window, judged) cell of
-/// window 4–12 × judged 2–5 passes the same seeded sweep of four generators' clouds (docs/studies.md,
-/// "End strays"; tests/studies/scan_fit_end_sweep.cpp), so they are not tuned to one generator.
+/// window 4–12 × judged 2–5 passes the same clouds of a seeded sweep over five generators to one cloud in
+/// 240, four more than with the check off (docs/studies.md, "End strays"; tests/studies/scan_fit_end_sweep.cpp),
+/// so they are not tuned to one generator.
 struct EndStrayCheck {
   /// Points inward the quadratic is fitted to, [4, 50]. Default 6.
   std::size_t window = 6;
