@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// studies::fit_scan on clouds made by two generators written here, independent of hula::testing
+// studies::fit_scan on clouds made by two generators of scan_test_clouds.hpp, independent of hula::testing
 // (neither its known curves, nor its noise, nor its distances are used):
 //
 //  - Bézier clouds: a random cubic Bézier (a C or an S in the plane, or lifted into space), points at
@@ -9,8 +9,8 @@
 //
 // Both are fitted in order, shuffled and reversed, at σ = 0.01, 0.03 and 0.1 of the tolerance, the
 // tolerance 0.003 × size (A-class 0.3 at 100 units), sizes 1 to 1,000 units, 300 to 3,000 points,
-// 1 % strays 1.2 to 30 tolerances from the curve. Distances to the known curve are measured by this
-// file's own closest-point search on the analytic curve (sampling, then golden-section refinement);
+// 1 % strays 1.2 to 30 tolerances from the curve. Distances to the known curve are measured by the
+// header's own closest-point search on the analytic curve (sampling, then golden-section refinement);
 // inflections of the known curve by the sign changes of x'y'' − y'x'' from its analytic derivatives.
 #include <gtest/gtest.h>
 
@@ -26,180 +26,22 @@
 #include "hula/diffgeom/features.hpp"
 #include "hula/nurbs/closest_point.hpp"
 #include "hula/studies/scan_fit.hpp"
+#include "scan_test_clouds.hpp"
 
 namespace hula::studies {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
-// A known curve on t ∈ [0, 1] with its first and second derivatives.
-struct KnownCurve {
-  std::function<Vec3(double)> at, d1, d2;
-  bool planar = true;
-};
-
-// Foot of q on the known curve: the best of 2,001 samples, then golden section on the bracket.
-struct Foot {
-  double t = 0.0;
-  double distance = 0.0;
-};
-
-Foot foot(const KnownCurve& c, const Vec3& q) {
-  constexpr int kSamples = 2000;
-  int best = 0;
-  double best_d = norm(c.at(0.0) - q);
-  for (int i = 1; i <= kSamples; ++i) {
-    const double d = norm(c.at(static_cast<double>(i) / kSamples) - q);
-    if (d < best_d) best_d = d, best = i;
-  }
-  double a = std::max(0.0, (best - 1.0) / kSamples), b = std::min(1.0, (best + 1.0) / kSamples);
-  const double g = (std::sqrt(5.0) - 1.0) / 2.0;
-  double x1 = b - g * (b - a), x2 = a + g * (b - a);
-  double f1 = norm(c.at(x1) - q), f2 = norm(c.at(x2) - q);
-  for (int k = 0; k < 80 && b - a > 1e-15; ++k) {
-    if (f1 < f2) {
-      b = x2, x2 = x1, f2 = f1, x1 = b - g * (b - a), f1 = norm(c.at(x1) - q);
-    } else {
-      a = x1, x1 = x2, f1 = f2, x2 = a + g * (b - a), f2 = norm(c.at(x2) - q);
-    }
-  }
-  const double t = (a + b) / 2.0;
-  return {t, std::min(best_d, norm(c.at(t) - q))};
-}
-
-// Sign changes of the planar curvature's numerator along the known curve.
-std::size_t known_inflections(const KnownCurve& c) {
-  std::size_t n = 0;
-  int last = 0;
-  for (int i = 0; i <= 100000; ++i) {
-    const double t = i / 100000.0;
-    const Vec3 a = c.d1(t), b = c.d2(t);
-    const double z = a.x * b.y - a.y * b.x;
-    const int s = z > 0 ? 1 : (z < 0 ? -1 : 0);
-    if (s != 0 && last != 0 && s != last) ++n;
-    if (s != 0) last = s;
-  }
-  return n;
-}
-
-// A cubic Bézier over the chord [0, size] along x: a C (both inner points on one side) or an S.
-KnownCurve bezier_curve(double size, bool s_shape, bool planar, std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  const double h1 = 0.2 + 0.2 * u(rng), h2 = (s_shape ? -1.0 : 1.0) * (0.2 + 0.2 * u(rng));
-  std::array<Vec3, 4> p{Vec3{0.0, 0.0, 0.0}, Vec3{0.2 + 0.2 * u(rng), h1, 0.0}, Vec3{0.6 + 0.2 * u(rng), h2, 0.0},
-                        Vec3{1.0, 0.0, 0.0}};
-  if (!planar) p[1].z = 0.3, p[2].z = -0.15, p[3].z = 0.25;
-  for (Vec3& q : p) q = q * size;
-  KnownCurve c;
-  c.planar = planar;
-  c.at = [p](double t) {
-    const double s = 1.0 - t;
-    return p[0] * (s * s * s) + p[1] * (3.0 * s * s * t) + p[2] * (3.0 * s * t * t) + p[3] * (t * t * t);
-  };
-  c.d1 = [p](double t) {
-    const double s = 1.0 - t;
-    return (p[1] - p[0]) * (3.0 * s * s) + (p[2] - p[1]) * (6.0 * s * t) + (p[3] - p[2]) * (3.0 * t * t);
-  };
-  c.d2 = [p](double t) {
-    return (p[2] - p[1] * 2.0 + p[0]) * (6.0 * (1.0 - t)) + (p[3] - p[2] * 2.0 + p[1]) * (6.0 * t);
-  };
-  return c;
-}
-
-// A sine wave over [0, size] (planar) or a wavy helix around the x axis (space), 0.6 to 1.4 periods.
-KnownCurve wave_curve(double size, bool planar, std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  const double w = 2.0 * kPi * (0.6 + 0.8 * u(rng)), phase = 2.0 * kPi * u(rng), a = 0.12 * size;
-  KnownCurve c;
-  c.planar = planar;
-  const double zc = planar ? 0.0 : 1.0;
-  c.at = [=](double t) { return Vec3{size * t, a * std::sin(w * t + phase), zc * a * std::cos(w * t + phase)}; };
-  c.d1 = [=](double t) { return Vec3{size, a * w * std::cos(w * t + phase), -zc * a * w * std::sin(w * t + phase)}; };
-  c.d2 = [=](double t) {
-    return Vec3{0.0, -a * w * w * std::sin(w * t + phase), -zc * a * w * w * std::cos(w * t + phase)};
-  };
-  return c;
-}
-
-enum class Generator { BezierGaussian, WaveLaplace };
-enum class Order { InOrder, Shuffled, Reversed };
-
-struct Case {
-  Generator generator;
-  bool planar;
-  bool s_shape;  // Bézier only
-  Order order;
-  double size;
-  std::size_t points;
-  double sigma_over_tolerance;
-};
-
-struct Cloud {
-  KnownCurve curve;
-  std::vector<Vec3> points;
-  std::vector<std::size_t> strays;  // indices, increasing
-  double sigma = 0.0;
-};
-
-// One noise draw of standard deviation sigma per coordinate (planar clouds: z stays 0).
-Vec3 noise(Generator g, bool planar, double sigma, std::mt19937_64& rng) {
-  std::normal_distribution<double> gauss(0.0, sigma);
-  std::exponential_distribution<double> expo(std::sqrt(2.0) / sigma);  // Laplace b = σ/√2 as a difference
-  const auto draw = [&] { return g == Generator::BezierGaussian ? gauss(rng) : expo(rng) - expo(rng); };
-  Vec3 e{draw(), draw(), 0.0};
-  if (!planar) e.z = draw();
-  return e;
-}
-
-Cloud make_cloud(const Case& c, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  Cloud out;
-  out.curve = c.generator == Generator::BezierGaussian ? bezier_curve(c.size, c.s_shape, c.planar, rng)
-                                                       : wave_curve(c.size, c.planar, rng);
-  const double tolerance = 0.003 * c.size;
-  out.sigma = c.sigma_over_tolerance * tolerance;
-  std::vector<double> ts(c.points);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  for (std::size_t i = 0; i < c.points; ++i)
-    ts[i] = c.generator == Generator::BezierGaussian ? static_cast<double>(i) / (c.points - 1) : u(rng);
-  if (c.generator == Generator::WaveLaplace) {
-    std::sort(ts.begin(), ts.end());
-    ts.front() = 0.0, ts.back() = 1.0;
-  }
-  for (const double t : ts) out.points.push_back(out.curve.at(t) + noise(c.generator, c.planar, out.sigma, rng));
-
-  // 1 % strays, inner points moved off the curve until their own distance is 1.2–30 tolerances.
-  std::vector<std::size_t> stray_at;
-  const std::size_t count = std::max<std::size_t>(2, c.points / 100);
-  for (std::size_t k = 0; k < count; ++k) stray_at.push_back(5 + (k * 7919 + seed) % (c.points - 10));
-  std::sort(stray_at.begin(), stray_at.end());
-  stray_at.erase(std::unique(stray_at.begin(), stray_at.end()), stray_at.end());
-  for (const std::size_t i : stray_at) {
-    for (;;) {
-      Vec3 dir{u(rng) - 0.5, u(rng) - 0.5, c.planar ? 0.0 : u(rng) - 0.5};
-      if (norm(dir) < 1e-3) continue;
-      const Vec3 q = out.curve.at(ts[i]) + dir * ((1.2 + 28.8 * u(rng)) * tolerance / norm(dir));
-      // A point beyond an end of the curve would extend it, not stray from it: the foot stays inside.
-      const Foot f = foot(out.curve, q);
-      if (f.distance < 1.2 * tolerance || f.t < 0.01 || f.t > 0.99) continue;
-      out.points[i] = q;
-      break;
-    }
-  }
-  // The order: a permutation of the indices; strays are tracked through it.
-  std::vector<std::size_t> perm(c.points);
-  std::iota(perm.begin(), perm.end(), 0);
-  if (c.order == Order::Shuffled) std::shuffle(perm.begin(), perm.end(), rng);
-  if (c.order == Order::Reversed) std::reverse(perm.begin(), perm.end());
-  std::vector<Vec3> ordered(c.points);
-  for (std::size_t j = 0; j < c.points; ++j) {
-    ordered[j] = out.points[perm[j]];
-    if (std::binary_search(stray_at.begin(), stray_at.end(), perm[j])) out.strays.push_back(j);
-  }
-  std::sort(out.strays.begin(), out.strays.end());
-  out.points = std::move(ordered);
-  return out;
-}
+using test_clouds::Case;
+using test_clouds::Cloud;
+using test_clouds::foot;
+using test_clouds::Foot;
+using test_clouds::Generator;
+using test_clouds::known_inflections;
+using test_clouds::KnownCurve;
+using test_clouds::make_cloud;
+using test_clouds::noise;
+using test_clouds::Order;
+using test_clouds::wave_curve;
 
 // 24 clouds: each generator, planar and space, in each order, σ, sizes and densities cycled through.
 std::vector<Case> cases() {

@@ -65,6 +65,10 @@ void ReconstructionOptions::validate() const {
   if (max_steps < 1 || max_steps > 100'000'000)
     throw Error(Errc::InvalidOption, "max_steps = " + std::to_string(max_steps) + " is outside [1, 100000000]",
                 ErrorWhere{.field = "max_steps"});
+  if (breaks)
+    for (const double b : *breaks)
+      if (!std::isfinite(b))
+        throw Error(Errc::InvalidOption, "breaks holds a non-finite value", ErrorWhere{.field = "breaks"});
 }
 
 void NurbsFitOptions::validate() const {
@@ -461,6 +465,18 @@ law::Tape compile(std::span<const law::Law> laws, std::string_view parameter, co
 
 }  // namespace
 
+std::vector<double> reconstruction_breaks(const law::Law& kappa, const law::Law& tau, std::string_view parameter,
+                                          double length) {
+  check_law(kappa, "kappa");
+  check_law(tau, "tau");
+  require(std::isfinite(length) && length > 0.0, Errc::InvalidArgument,
+          "length = " + format_number(length) + " must be > 0 and finite", "length");
+  std::vector<double> breaks;
+  analyse_singularities(kappa, parameter, length, "kappa", breaks);
+  analyse_singularities(tau, parameter, length, "tau", breaks);
+  return breaks;
+}
+
 IntrinsicCurve reconstruct_planar(const law::Law& kappa, std::string_view parameter, double length,
                                   const StartFrame& start, const ReconstructionOptions& options) {
   auto impl = prepare(kappa, parameter, length, start, options);
@@ -469,7 +485,10 @@ IntrinsicCurve reconstruct_planar(const law::Law& kappa, std::string_view parame
     (void)compile(one, parameter, "kappa");  // names "kappa" for a foreign parameter
   }
   std::vector<double> breaks;
-  analyse_singularities(kappa, parameter, length, "kappa", breaks);
+  if (options.breaks)
+    breaks = *options.breaks;
+  else
+    analyse_singularities(kappa, parameter, length, "kappa", breaks);
   set_breaks(*impl, std::move(breaks));
   // θ(s) = F(s) − F(0) when the antiderivative exists and κ has no pole or undefined region on
   // [0, L]. Only the closed form decides: no quadrature here (adaptive quadrature of a kinked κ,
@@ -521,8 +540,12 @@ IntrinsicCurve reconstruct(const law::Law& kappa, const law::Law& tau, std::stri
     (void)compile(other, parameter, "tau");
   }
   std::vector<double> breaks;
-  analyse_singularities(kappa, parameter, length, "kappa", breaks);
-  analyse_singularities(tau, parameter, length, "tau", breaks);
+  if (options.breaks) {
+    breaks = *options.breaks;
+  } else {
+    analyse_singularities(kappa, parameter, length, "kappa", breaks);
+    analyse_singularities(tau, parameter, length, "tau", breaks);
+  }
   set_breaks(*impl, std::move(breaks));
   impl->laws_name = "kappa and tau";
   const law::Law outs[2] = {kappa, tau};

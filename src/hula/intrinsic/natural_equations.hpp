@@ -81,9 +81,22 @@ struct ReconstructionOptions {
   /// Largest number of step attempts (accepted + rejected) before NumericalFailure. Default
   /// 1 000 000; valid 1 … 100 000 000.
   std::size_t max_steps = 1'000'000;
+  /// The kinks and jumps of κ and τ inside (0, L) as reconstruction_breaks() returns them for these laws and this
+  /// length: given, reconstruct() skips its singularity analysis of the laws (a root search per kink candidate,
+  /// the dearest part of a reconstruction of a B-spline profile). For a caller that reconstructs laws of the same
+  /// kinks many times, e.g. one profile plus a changing polynomial correction (studies::reconstruct_direct).
+  /// Absent (default): analysed on every call.
+  std::optional<std::vector<double>> breaks{};
   /// @throws hula::Error(Errc::InvalidOption) naming the field, its value and the valid range
   void validate() const;
 };
+
+/// What reconstruct(kappa, tau, parameter, length) finds in its singularity analysis: the kinks and jumps of κ and
+/// τ inside (0, L) where they are finite (unsorted), for ReconstructionOptions::breaks. Pass tau = the constant 0
+/// for reconstruct_planar.
+/// @throws hula::Error(Errc::NumericalFailure) naming "kappa" or "tau" where a law has a pole on [0, L]
+[[nodiscard]] std::vector<double> reconstruction_breaks(const law::Law& kappa, const law::Law& tau,
+                                                        std::string_view parameter, double length);
 
 /// Position and frame at one arc length.
 struct FramePoint {

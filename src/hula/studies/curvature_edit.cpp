@@ -1008,7 +1008,9 @@ CurvatureEditResult edit_curvature(const curve::Curve& original, const Curvature
       alpha_prev = std::exchange(alpha, next);
       moved_prev = moved;
       drag_target(alpha);
-      Fitted trial = fit_profile(current, targets);
+      // Warm start: the nearest fit so far already has the refined knots and is near the new target (α moves by a
+      // few per cent), so the fit needs no knot refinement from the original's knots and few steps.
+      Fitted trial = fit_profile(best.curve, targets);
       moved = trial.reached - o.kappa[peak];
       if (std::abs(moved - asked) < std::abs(best.reached - o.kappa[peak] - asked)) {
         best = std::move(trial);

@@ -12,8 +12,11 @@
 #include <boost/math/quadrature/gauss.hpp>
 #include <chrono>
 #include <cmath>
+#include <iterator>
 #include <string>
+#include <tuple>
 #include <utility>
+#include <vector>
 
 #include "hula/core/error.hpp"
 #include "hula/law/antiderivative.hpp"
@@ -190,7 +193,9 @@ class Solver {
     };
     e.kappa = law::substitute(p_.curvature.law(), p_.curvature.variable(), u);
     const std::vector<double> ck = coefficients(0);
-    if (!all_zero(ck)) {
+    const bool kappa_corrected = !all_zero(ck);
+    bool tau_corrected = false;
+    if (kappa_corrected) {
       law::Law correction = correction_law(ck, u);
       if (p_.curvature_envelope)
         correction = law::substitute(p_.curvature_envelope->law(), p_.curvature_envelope->variable(), u) * correction;
@@ -203,11 +208,14 @@ class Solver {
       e.tau = law::substitute(p_.torsion->law(), p_.torsion->variable(), u);
       if (unknowns_.torsion) {
         const std::vector<double> ct = coefficients(unknowns_.torsion_offset());
-        if (!all_zero(ct)) e.tau = e.tau + correction_law(ct, u);
+        tau_corrected = !all_zero(ct);
+        if (tau_corrected) e.tau = e.tau + correction_law(ct, u);
       }
+      ro.breaks = breaks(e.kappa, e.tau, length, kappa_corrected, tau_corrected);
       e.curve = intrinsic::reconstruct(e.kappa, e.tau, "s", length, p_.start, ro);
     } else {
       e.tau = s_.context().constant(0.0);
+      ro.breaks = breaks(e.kappa, e.tau, length, kappa_corrected, false);
       if (law::antiderivative(e.kappa, "s")) {
         e.curve = intrinsic::reconstruct_planar(e.kappa, "s", length, p_.start, ro);
       } else {
@@ -221,6 +229,22 @@ class Solver {
     ++reconstructions_;
     measure(e);
     return e;
+  }
+
+  // The kinks of κ and τ for the reconstruction at this length (intrinsic::reconstruction_breaks). A correction is
+  // a polynomial in u (times the envelope profile for κ), whose coefficients add no kink and no pole: evaluations
+  // at one length with the same corrections present have the same kinks, so the singularity analysis (a root
+  // search per knot of a B-spline profile) runs once per such case, not once per Gauss–Newton step. (The solver
+  // runs on one thread.)
+  [[nodiscard]] std::vector<double> breaks(const law::Law& kappa, const law::Law& tau, double length,
+                                           bool kappa_corrected, bool tau_corrected) const {
+    const BreaksKey key{length, kappa_corrected, tau_corrected};
+    auto it = std::find_if(breaks_.begin(), breaks_.end(), [&](const auto& b) { return b.first == key; });
+    if (it == breaks_.end()) {
+      breaks_.emplace_back(key, intrinsic::reconstruction_breaks(kappa, tau, "s", length));
+      it = std::prev(breaks_.end());
+    }
+    return it->second;
   }
 
   // The end residuals of a reconstruction in the frame fixed by set_frame().
@@ -443,6 +467,8 @@ class Solver {
   std::vector<std::optional<double>> fixed_;
   Vec3 e_x_{}, e_y_{}, b_{}, t_end_{}, t_e1_{}, t_e2_{}, n_end_{};
   mutable int reconstructions_ = 0;
+  using BreaksKey = std::tuple<double, bool, bool>;  // length, κ corrected, τ corrected
+  mutable std::vector<std::pair<BreaksKey, std::vector<double>>> breaks_;
 };
 
 void check_problem(const DirectReconstructionProblem& p, const DirectReconstructionOptions& o) {

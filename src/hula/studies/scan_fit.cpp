@@ -29,6 +29,7 @@ void ScanFitOptions::validate() const {
     throw Error(Errc::InvalidOption,
                 "max_control_points must be at least degree + 1, got " + std::to_string(max_control_points),
                 ErrorWhere{.field = "max_control_points"});
+  ToleranceFitOptions{.tolerance = tolerance, .end_check = end_check}.validate();
   order.validate();
 }
 
@@ -90,6 +91,7 @@ ScanFitResult fit_scan(std::span<const Vec3> points, const ScanFitOptions& optio
   o.max_control_points = options.max_control_points;
   o.reject_outliers = true;
   o.noise = order.noise;
+  o.end_check = options.end_check;
   o.fair = options.fair;
   o.bias_limit = std::max(kBiasNoise * order.noise, kBiasFloor * options.tolerance);
   o.fairing_shift = std::min(options.tolerance, std::max(kShiftNoise * order.noise, kShiftFloor * options.tolerance));

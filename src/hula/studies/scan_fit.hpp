@@ -34,6 +34,7 @@
 #include "hula/nurbs/nurbs_curve.hpp"
 #include "hula/optim/run_log.hpp"
 #include "hula/studies/point_order.hpp"
+#include "hula/studies/tolerance_fit.hpp"
 
 namespace hula::studies {
 
@@ -61,6 +62,8 @@ struct ScanFitOptions {
   std::size_t max_control_points = 200;
   /// Run stage 4 (fairing). Default true.
   bool fair = true;
+  /// The end-stray check of stage 3 (ToleranceFitOptions::end_check). Default {}.
+  EndStrayCheck end_check{};
   /// Progress of stage 3 (ToleranceFitOptions::on_generation: one generation per candidate curve, its
   /// best the candidate's largest deviation, its evaluations the least-squares solves so far), then one
   /// last generation with the result: after.max_deviation and `fits`. It only reads: the result is the

@@ -57,6 +57,20 @@ enum class FitEnds {
   Interpolated,  ///< the curve starts at the point of parameter 0 and ends at the point of parameter 1
 };
 
+/// The end-stray check of reject_outliers, before any knot refinement: the `judged` outermost points at each
+/// open end are each measured against the least-squares quadratic (in chord length) through the next `window`
+/// points inward, continued out to them; one farther from that continuation than the tolerance and 3 σ̂
+/// prediction errors leaves the fit. The defaults sit inside a plateau: every (window, judged) cell of
+/// window 4–12 × judged 2–5 passes the same clouds of a seeded sweep over five generators to one cloud in
+/// 240, four more than with the check off (docs/studies.md, "End strays"; tests/studies/scan_fit_end_sweep.cpp),
+/// so they are not tuned to one generator.
+struct EndStrayCheck {
+  /// Points inward the quadratic is fitted to, [4, 50]. Default 6.
+  std::size_t window = 6;
+  /// Outermost points judged at each end, [0, 10] (0 turns the check off). Default 3.
+  std::size_t judged = 3;
+};
+
 /// Options of fit_within_tolerance.
 struct ToleranceFitOptions {
   /// Largest distance of a kept point from the curve, model units; > 0 and finite. Required.
@@ -75,6 +89,8 @@ struct ToleranceFitOptions {
   bool reject_outliers = false;
   /// Noise scale σ̂ of the points, model units, ≥ 0 (0: exact data). Default 0.
   double noise = 0.0;
+  /// The end-stray check of reject_outliers (see EndStrayCheck). Default {}.
+  EndStrayCheck end_check{};
   /// Largest systematic deviation allowed where the points are dense (at least 10 (p + 1) kept points
   /// in a knot span): the norm of the mean residual of any 15 consecutive kept points; a span where it
   /// is exceeded is split even when every point is within the tolerance. 0 (default) turns it off.
