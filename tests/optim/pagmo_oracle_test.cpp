@@ -224,7 +224,9 @@ TEST(OptimPagmoOracle, AdapterRunsArePagmosBitForBitWhetherStoppableOrNot) {
     std::sort(front.begin(), front.end());
     EXPECT_EQ(front, ns_front) << stoppable;
     EXPECT_EQ(ns.report.evaluations, ns_pop.get_problem().get_fevals()) << stoppable;
-    if (stoppable) EXPECT_GT(calls, 60U + 40U);
+    if (stoppable) {
+      EXPECT_GT(calls, 60U + 40U);
+    }
   }
 }
 
