@@ -211,10 +211,11 @@ def optimise(problem: Any, algorithm: str = "ga-real", *, dimension: int = 0, ob
             constraints; points outside the bounds rank worst) or one of
             pagmo2's through the adapter, ``"pagmo-<name>"`` with name
             ``cmaes``, ``de``, ``sade``, ``pso``, ``sga``, ``moead`` or
-            ``nsga2`` (options ``population``, ``generations``, ``seed`` only,
-            read as ``hula optimise --algorithm pagmo-<name>`` reads them;
-            pagmo runs its own loop, which Ctrl-C and the callback's True
-            interrupt only at its end).
+            ``nsga2`` (options ``population``, ``generations``, ``seed`` and
+            ``wall_time`` only, read as ``hula optimise --algorithm
+            pagmo-<name>`` reads them; pagmo runs its own loop, which Ctrl-C,
+            ``wall_time`` and the callback's True stop before its next
+            evaluation, with the best evaluation so far).
             All run through the same C++ entry as ``hula optimise``
             (``optim::solve``).
         dimension, objectives: for built-in problems (0 = the problem's default).
@@ -245,7 +246,7 @@ def optimise(problem: Any, algorithm: str = "ga-real", *, dimension: int = 0, ob
             far. ``"nelder-mead"``: a generation per simplex iteration (its vertices), then the final
             simplex; pagmo's: a generation per ``population`` evaluations (the initial population, then
             each generation's offspring), then the final population. Returning True stops the run with
-            its best so far (termination ``"Cancelled"``, no exception; pagmo's run to their end); an
+            its best so far (termination ``"Cancelled"``, no exception; pagmo's: the best evaluation so far); an
             exception it raises ends the run and propagates. Not with islands (InvalidOptionError). The
             result is the same with or without it; ``best_per_generation`` holds the same generations.
         verbose: print one progress line per generation to ``sys.stderr``

@@ -216,12 +216,14 @@ py::dict run(const optim::Problem& problem, const std::string& algorithm, const 
   };
   if (algorithm.starts_with("pagmo-")) {
     // pagmo's algorithms through the reader `hula optimise --algorithm pagmo-<name>` uses: population,
-    // generations and seed; pagmo runs its own loop, which no cancellation reaches.
+    // generations, seed and wall_time; Ctrl-C and a True return stop them before their next evaluation.
     io::SolverRequest q;
     q.algorithm = algorithm;
     q.population = o.get<std::size_t>("population");
     q.generations = o.get<std::size_t>("generations");
     q.seed = o.get<std::uint64_t>("seed");
+    q.time = o.get<double>("wall_time");
+    q.cancel = job.token();
     q.on_generation = on_generation;
     seed = q.seed.value_or(0);
     solve.algorithm = io::solver_options(q);

@@ -4,6 +4,7 @@
 # stops the run with its best so far, verbose prints one line per generation.
 import json
 import re
+import time
 
 import numpy as np
 import pytest
@@ -118,6 +119,39 @@ def test_pagmo_callback_counts_generations_by_evaluations():
     assert calls[-1][1] == r.f[0]
 
 
+def test_pagmo_callback_true_stops_the_run_with_the_best_so_far():
+    # checks a True return at generation 5 stops a pagmo DE run of a billion generations on a Python objective
+    # (Cancelled, 5 generations, 121 evaluations: the one that handed generation 5 over is the last made)
+    # within 0.5 s of the return, with a best whose value is the objective at its x and no worse than any
+    # generation's; and that a callback that never stops, with a wall time never reached, gives the plain
+    # run's result bit for bit
+    def objective(X):
+        return np.sum((X - 0.25) ** 2, axis=1)
+
+    problem = hh.Problem(objective, -np.ones(4), np.ones(4))
+    returned = []
+
+    def stop_at_five(g, best, ev):
+        if g == 5:
+            returned.append(time.monotonic())
+            return True
+        return False
+
+    r = hh.optimise(problem, "pagmo-de", population=20, generations=10**9, seed=3, callback=stop_at_five)
+    ended = time.monotonic()
+    assert ended - returned[0] < 0.5, ended - returned[0]
+    assert r.report["termination"] == "Cancelled" and r.report["generations"] == 5
+    assert r.report["evaluations"] == 121
+    assert r.f[0] == objective(r.x.reshape(1, -1))[0]
+    assert len(r.best_per_generation) == 6 and r.f[0] <= np.min(r.best_per_generation)
+    plain = hh.optimise(problem, "pagmo-de", population=20, generations=30, seed=3)
+    watched = hh.optimise(problem, "pagmo-de", population=20, generations=30, seed=3, wall_time=1e6,
+                          callback=lambda g, best, ev: False)
+    assert np.array_equal(plain.x, watched.x) and np.array_equal(plain.f, watched.f)
+    assert plain.report["evaluations"] == watched.report["evaluations"] == 20 * 31
+    assert watched.report["termination"] == plain.report["termination"] == "MaxGenerations"
+
+
 def test_fit_callback_follows_the_search():
     # checks fit calls back once per candidate curve (generations 0, 1, ... in order, solves growing) and
     # last with the result's largest deviation and solves, and fits the same curve without the callback
@@ -171,6 +205,28 @@ def test_fair_knots_verbose(capsys):
     hh.fair_knots(setup, verbose=True)
     lines = capsys.readouterr().err.strip().splitlines()
     assert lines and all(line.startswith("fair-knots: generation ") for line in lines)
+
+
+def test_fair_knots_ga_and_deterministic_report_the_same_quantity():
+    # checks the fair-knots GA calls back with its generations' best energies E, as the deterministic
+    # optimiser does (not the GA's own E / E_start): on thesis 7.3 example 2, the running minimum of the GA's
+    # bests (and the start's energy) is its convergence graph, their overall minimum the GA's energy, and
+    # both optimisers' last bests agree with their energies to 1e-12 relative
+    setup = json.loads((STUDIES / "fair-knots-7.3-example2.json").read_text())
+    setup.pop("map", None)
+    setup["method"] = "ga"
+    setup["ga"] = {"algorithm": "real", "population": 20, "generations": 10}
+    ga_calls = []
+    ga = hh.fair_knots(setup, callback=lambda g, b, e: ga_calls.append(b))
+    running = np.minimum.accumulate(np.minimum(ga.chord_length.energy, ga_calls))
+    assert np.array_equal(running, ga.ga.convergence)
+    assert ga.ga.energy < ga.chord_length.energy
+    assert min(ga_calls) == pytest.approx(ga.ga.energy, rel=1e-12)
+    setup["method"] = "deterministic"
+    nm_calls = []
+    nm = hh.fair_knots(setup, callback=lambda g, b, e: nm_calls.append(b))
+    assert nm_calls[-1] == pytest.approx(nm.deterministic.energy, rel=1e-12)
+    assert nm_calls[-1] == pytest.approx(min(ga_calls), rel=0.05)  # one optimum, two ways: one unit
 
 
 def test_fair_knots_deterministic_callback_and_stop():

@@ -38,8 +38,8 @@ def test_pagmo_algorithm_is_the_cli_run(algorithm):
 def test_pagmo_refuses_what_it_does_not_take():
     # checks options pagmo's loop does not read are refused by name, not ignored
     with pytest.raises(hh.InvalidOptionError) as e:
-        hh.optimise("sphere", "pagmo-de", dimension=2, wall_time=1.0)
-    assert e.value.where["field"] == "wall_time"
+        hh.optimise("sphere", "pagmo-de", dimension=2, max_evaluations=100)
+    assert e.value.where["field"] == "max_evaluations"
     with pytest.raises(hh.InvalidArgumentError):
         hh.optimise("sphere", "pagmo-nonesuch", dimension=2)
 

@@ -209,6 +209,43 @@ TEST(CliOptimise, SigintCancelsWithTheBestSoFar) {
   EXPECT_GE(j["hypervolume"].get<double>(), 0.0);
 }
 
+// checks: pagmo's algorithms stop early too (the adapter looks at the token and the clock before each
+// evaluation): --time 0.2 on a hundred million generations of pagmo-pso (no tolerance of its own ends it)
+// ends WallTime with a best whose
+// objective is the sphere's value at its variables; SIGINT once a progress line is out ends a pagmo-nsga2
+// run on ZDT1 Cancelled with exit 0 and a mutually non-dominated front.
+TEST(CliOptimise, PagmoRunsStopOnTimeAndSigint) {
+  const json j =
+      hula::testing::stdout_json(hula({"--problem", "sphere", "--dimension", "3", "--algorithm", "pagmo-pso",
+                                       "--population", "10", "--generations", "100000000", "--time", "0.2"}));
+  EXPECT_EQ(j["report"]["termination"], "WallTime") << j["report"];
+  EXPECT_GE(j["report"]["seconds"].get<double>(), 0.2);
+  EXPECT_NE(j["report"]["message"].get<std::string>().find("generations of pagmo pso"), std::string::npos);
+  double sum = 0.0;
+  for (const double x : j["best"]["variables"]) sum += x * x;
+  EXPECT_EQ(j["best"]["objectives"][0].get<double>(), sum);
+
+  hula::testing::RunningProcess p =
+      hula::testing::start_process(HULA_CLI_PATH, {"optimise", "--problem", "zdt1", "--algorithm", "pagmo-nsga2",
+                                                   "--population", "20", "--generations", "100000000", "--progress"});
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+  while (p.err_so_far().find("\"generation\"") == std::string::npos) {
+    ASSERT_LT(std::chrono::steady_clock::now(), deadline) << "no progress line on stderr";
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  ASSERT_TRUE(p.send(SIGINT));
+  const ProcessResult r = p.wait();
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json c = json::parse(r.out);
+  EXPECT_EQ(c["report"]["termination"], "Cancelled");
+  ASSERT_FALSE(c["front"].empty());
+  for (const json& a : c["front"])
+    for (const json& b : c["front"]) {
+      const double a0 = a["objectives"][0], a1 = a["objectives"][1], b0 = b["objectives"][0], b1 = b["objectives"][1];
+      EXPECT_FALSE(b0 <= a0 && b1 <= a1 && (b0 < a0 || b1 < a1)) << a << " is dominated by " << b;
+    }
+}
+
 // checks: --log writes the run log as CSV (header, one row per individual and generation) or
 // JSON (one entry per generation), atomically.
 TEST(CliOptimise, LogFilesParse) {

@@ -142,7 +142,8 @@ TEST(ExactCurves, ClothoidCurvatureIsLinearInArcLength) {
 }
 
 // The budget of evaluations bounds the generations (evaluations / population); Nelder–Mead refuses a
-// population and pagmo a time limit, naming the setting; only ga-binary takes a boost.
+// population and pagmo a budget of evaluations, naming the setting; only ga-binary takes a boost; pagmo
+// takes the time limit and the cancellation token.
 TEST(SolverOptions, KeepsTheBudgetAndRefusesWhatAnAlgorithmDoesNotTake) {
   const optim::SolverOptions o =
       solver_options({.algorithm = "ga-real", .population = 20, .evaluations = 500, .seed = 4});
@@ -162,10 +163,14 @@ TEST(SolverOptions, KeepsTheBudgetAndRefusesWhatAnAlgorithmDoesNotTake) {
     }
   };
   refused({.algorithm = "nelder-mead", .population = 10}, "population");
-  refused({.algorithm = "pagmo-de", .time = 1.0}, "time");
+  refused({.algorithm = "pagmo-de", .evaluations = 100}, "evaluations");
   refused({.algorithm = "nsga2", .boost = std::pair{1.0, 4.0}}, "boost");
   const optim::SolverOptions b = solver_options({.algorithm = "ga-binary", .boost = std::pair{1.0, 4.0}});
   EXPECT_EQ(std::get<optim::BinaryGaOptions>(b).boost_end, 4.0);
+  const optim::CancellationToken token;
+  const optim::SolverOptions p = solver_options({.algorithm = "pagmo-de", .time = 1.5, .cancel = &token});
+  EXPECT_EQ(std::get<optim::PagmoOptions>(p).wall_time_seconds, 1.5);
+  EXPECT_EQ(std::get<optim::PagmoOptions>(p).cancel, &token);
 }
 
 // The sphere's front: one objective gives {"best"} with the smallest objective; the built-in problems'

@@ -7,11 +7,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <pagmo/algorithms/de.hpp>
 #include <pagmo/algorithms/nsga2.hpp>
 #include <pagmo/population.hpp>
 #include <pagmo/problems/zdt.hpp>
 #include <pagmo/utils/hypervolume.hpp>
 #include <pagmo/utils/multi_objective.hpp>
+#include <utility>
+#include <vector>
 
 #include "hula/core/rng.hpp"
 #include "hula/optim/nsga2.hpp"
@@ -159,6 +162,72 @@ TEST(OptimPagmoOracle, AdapterSolvesFlexoProblems) {
   o = {};
   o.algorithm = PagmoAlgorithm::Cmaes;
   HULA_EXPECT_ERROR(solve_with_pagmo(c, o), Errc::InvalidOption, "does not handle constraints");
+}
+
+// A pagmo problem evaluating a Flexo problem directly (no constraints), for runs of pagmo itself.
+struct FlexoUdp {
+  const Problem* problem = nullptr;
+  [[nodiscard]] pagmo::vector_double fitness(const pagmo::vector_double& x) const {
+    pagmo::vector_double f(problem->objectives);
+    problem->evaluate(x, f);
+    return f;
+  }
+  [[nodiscard]] std::pair<pagmo::vector_double, pagmo::vector_double> get_bounds() const {
+    pagmo::vector_double lo, hi;
+    for (const Variable& v : problem->variables) {
+      lo.push_back(v.lower);
+      hi.push_back(v.upper);
+    }
+    return {lo, hi};
+  }
+  [[nodiscard]] pagmo::vector_double::size_type get_nobj() const { return problem->objectives; }
+};
+
+// checks: the adapter's DE and NSGA-II runs are pagmo's own runs of pagmo::de(60, 0.8, 0.9, 2, 1e-6, 1e-6, seed)
+// on sphere-5 and pagmo::nsga2(40, 0.95, 10, 0.01, 50, seed) on ZDT1-8 (same seed, population 20) to the last
+// bit — champion, first front and evaluations — with nothing that can stop them, and with a token that is never
+// set, a wall-time limit never reached and a progress callback (which must not change the run)
+TEST(OptimPagmoOracle, AdapterRunsArePagmosBitForBitWhetherStoppableOrNot) {
+  const CancellationToken never;
+  const Problem sph = sphere(5);
+  const Problem z = zdt(1, 8);
+  pagmo::population de_pop(pagmo::problem(FlexoUdp{&sph}), 20, 11);
+  de_pop = pagmo::algorithm(pagmo::de(60, 0.8, 0.9, 2u, 1e-6, 1e-6, 11)).evolve(de_pop);
+  pagmo::population ns_pop(pagmo::problem(FlexoUdp{&z}), 20, 11);
+  ns_pop = pagmo::algorithm(pagmo::nsga2(40, 0.95, 10., 0.01, 50., 11)).evolve(ns_pop);
+  std::vector<std::vector<double>> ns_front;
+  for (const auto i : std::get<0>(pagmo::fast_non_dominated_sorting(ns_pop.get_f())).front())
+    ns_front.push_back(ns_pop.get_x()[i]);
+  std::sort(ns_front.begin(), ns_front.end());
+  for (const bool stoppable : {false, true}) {
+    std::size_t calls = 0;
+    PagmoOptions o;
+    o.population = 20;
+    o.seed = 11;
+    if (stoppable) {
+      o.cancel = &never;
+      o.wall_time_seconds = 1e6;
+      o.on_generation = [&calls](const GenerationLog&) { ++calls; };
+    }
+    o.algorithm = PagmoAlgorithm::De;
+    o.generations = 60;
+    const PagmoResult de = solve_with_pagmo(sph, o);
+    EXPECT_EQ(de.best.variables, de_pop.champion_x()) << stoppable;
+    EXPECT_EQ(de.best.objectives, de_pop.champion_f()) << stoppable;
+    EXPECT_EQ(de.report.evaluations, de_pop.get_problem().get_fevals()) << stoppable;
+    EXPECT_EQ(de.report.termination, Termination::MaxGenerations);
+    o.algorithm = PagmoAlgorithm::Nsga2;
+    o.generations = 40;
+    const PagmoResult ns = solve_with_pagmo(z, o);
+    std::vector<std::vector<double>> front;
+    for (const Solution& m : ns.front) front.push_back(m.variables);
+    std::sort(front.begin(), front.end());
+    EXPECT_EQ(front, ns_front) << stoppable;
+    EXPECT_EQ(ns.report.evaluations, ns_pop.get_problem().get_fevals()) << stoppable;
+    if (stoppable) {
+      EXPECT_GT(calls, 60U + 40U);
+    }
+  }
 }
 
 }  // namespace

@@ -7,10 +7,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
+#include <span>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "hula/optim/test_problems.hpp"
@@ -190,6 +194,143 @@ TEST(OptimSolve, PagmoThroughSolve) {
   const SolveResult r = solve(sphere(3), {.algorithm = o});
   EXPECT_EQ(r.report.termination, Termination::MaxGenerations);
   ASSERT_EQ(r.solutions.size(), 1U);
+}
+
+// A problem that records every point it evaluates, in order, with its values (pagmo evaluates one at a time).
+struct Recorded {
+  std::shared_ptr<std::vector<std::pair<std::vector<double>, std::vector<double>>>> points =
+      std::make_shared<std::vector<std::pair<std::vector<double>, std::vector<double>>>>();
+  Problem problem;
+  explicit Recorded(Problem p) : problem(std::move(p)) {
+    EvaluateFn inner = problem.evaluate;
+    problem.evaluate = [inner, points = points](std::span<const double> x, std::span<double> f) {
+      inner(x, f);
+      points->emplace_back(std::vector<double>(x.begin(), x.end()), std::vector<double>(f.begin(), f.end()));
+    };
+  }
+};
+
+PagmoOptions pagmo_options(PagmoAlgorithm algorithm, std::size_t population, std::size_t generations) {
+  PagmoOptions o;
+  o.algorithm = algorithm;
+  o.population = population;
+  o.generations = generations;
+  o.seed = 4;
+  return o;
+}
+
+// checks: a pagmo run stopped by its token from the progress callback at generation 5 (DE, 20 points a
+// generation) ends Cancelled after generation 5's callback (evaluation 121: the first of generation 6, which
+// hands generation 5 over; the next one is not made), reports 5 generations and 121 evaluations, and returns
+// the best of exactly those 121 evaluations — the first 121 of the same seed's full run, recorded by the
+// problem (the first of equal values) — whose objective is the sphere's value at its variables
+TEST(OptimSolve, PagmoStopsOnItsTokenWithTheBestSoFar) {
+  const Recorded full(sphere(4));
+  const PagmoResult whole = solve_with_pagmo(full.problem, pagmo_options(PagmoAlgorithm::De, 20, 40));
+  ASSERT_EQ(full.points->size(), 20U * 41U);
+  ASSERT_EQ(whole.report.termination, Termination::MaxGenerations);
+
+  const Recorded cut(sphere(4));
+  CancellationToken token;
+  PagmoOptions o = pagmo_options(PagmoAlgorithm::De, 20, 40);
+  o.cancel = &token;
+  std::vector<std::size_t> generations;
+  o.on_generation = [&](const GenerationLog& g) {
+    generations.push_back(g.generation);
+    if (g.generation == 5) token.cancel();
+  };
+  const PagmoResult r = solve_with_pagmo(cut.problem, o);
+  EXPECT_EQ(r.report.termination, Termination::Cancelled);
+  EXPECT_EQ(r.report.generations, 5U);
+  EXPECT_EQ(r.report.evaluations, 121U);
+  EXPECT_EQ(r.report.message, "cancelled after 5 generations of pagmo de");
+  EXPECT_EQ(generations, (std::vector<std::size_t>{0, 1, 2, 3, 4, 5}));
+  ASSERT_EQ(cut.points->size(), 121U);
+  std::size_t best = 0;
+  for (std::size_t i = 0; i < 121; ++i) {
+    EXPECT_EQ((*cut.points)[i], (*full.points)[i]) << "evaluation " << i;
+    if ((*full.points)[i].second[0] < (*full.points)[best].second[0]) best = i;
+  }
+  EXPECT_EQ(r.best.variables, (*full.points)[best].first);
+  ASSERT_EQ(r.best.objectives.size(), 1U);
+  double sum = 0.0;
+  for (const double x : r.best.variables) sum += x * x;
+  EXPECT_EQ(r.best.objectives[0], sum);
+}
+
+// checks: a pagmo NSGA-II run on ZDT1 cancelled from its callback at generation 3 returns the non-dominated
+// set of its evaluations so far (every one of them recorded by the problem, the set computed here by
+// pairwise comparison), each member's objectives being ZDT1's at its variables
+TEST(OptimSolve, PagmoMultiObjectiveStopReturnsTheFrontOfItsEvaluations) {
+  const Recorded rec(zdt(1, 6));
+  CancellationToken token;
+  PagmoOptions o = pagmo_options(PagmoAlgorithm::Nsga2, 12, 1000);
+  o.cancel = &token;
+  o.on_generation = [&](const GenerationLog& g) {
+    if (g.generation == 3) token.cancel();
+  };
+  const PagmoResult r = solve_with_pagmo(rec.problem, o);
+  EXPECT_EQ(r.report.termination, Termination::Cancelled);
+  EXPECT_EQ(r.report.evaluations, rec.points->size());
+  EXPECT_EQ(r.report.evaluations, 12U * 4U + 1U);
+  const auto& pts = *rec.points;
+  std::vector<std::vector<double>> expected;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    bool kept = true;
+    for (std::size_t j = 0; j < pts.size() && kept; ++j) {
+      const auto& a = pts[j].second;
+      const auto& b = pts[i].second;
+      const bool dominates = a[0] <= b[0] && a[1] <= b[1] && (a[0] < b[0] || a[1] < b[1]);
+      const bool earlier_equal = j < i && a == b;
+      kept = !dominates && !earlier_equal;
+    }
+    if (kept) expected.push_back(pts[i].first);
+  }
+  std::vector<std::vector<double>> got;
+  const Problem z = zdt(1, 6);
+  for (const Solution& m : r.front) {
+    got.push_back(m.variables);
+    std::vector<double> f(2);
+    z.evaluate(m.variables, f);
+    EXPECT_EQ(m.objectives, f);
+  }
+  std::sort(expected.begin(), expected.end());
+  std::sort(got.begin(), got.end());
+  EXPECT_EQ(got, expected);
+  EXPECT_GE(got.size(), 2U);
+}
+
+// checks: a token set before the run stops it after its first successful evaluation (one evaluation,
+// generation 0, that point as the best); a wall-time limit of 0.1 s ends a run of a million generations
+// WallTime with a best evaluated point; a negative wall time is refused naming the field
+TEST(OptimSolve, PagmoStopsBeforeItStartsAndOnItsWallTime) {
+  CancellationToken token;
+  token.cancel();
+  const Recorded rec(sphere(3));
+  PagmoOptions o = pagmo_options(PagmoAlgorithm::Pso, 10, 100);
+  o.cancel = &token;
+  const PagmoResult r = solve_with_pagmo(rec.problem, o);
+  EXPECT_EQ(r.report.termination, Termination::Cancelled);
+  EXPECT_EQ(r.report.evaluations, 1U);
+  EXPECT_EQ(r.report.generations, 0U);
+  ASSERT_EQ(rec.points->size(), 1U);
+  EXPECT_EQ(r.best.variables, rec.points->front().first);
+  EXPECT_EQ(r.best.objectives, rec.points->front().second);
+
+  PagmoOptions timed = pagmo_options(PagmoAlgorithm::Sga, 10, 1000000);  // no tolerance ends it
+  timed.wall_time_seconds = 0.1;
+  const SolveResult t = solve(sphere(3), {.algorithm = timed});
+  EXPECT_EQ(t.report.termination, Termination::WallTime);
+  EXPECT_GE(t.report.seconds, 0.1);
+  EXPECT_LT(t.report.evaluations, 10U * 1000001U);
+  EXPECT_EQ(t.report.message.rfind("wall time 0.10000000000000001 s elapsed after ", 0), 0U) << t.report.message;
+  ASSERT_EQ(t.solutions.size(), 1U);
+  double sum = 0.0;
+  for (const double x : t.solutions[0].variables) sum += x * x;
+  EXPECT_EQ(t.solutions[0].objectives[0], sum);
+
+  timed.wall_time_seconds = -1.0;
+  HULA_EXPECT_ERROR(timed.validate(), Errc::InvalidOption, "wall_time_seconds = -1 must be >= 0");
 }
 
 // checks: what an algorithm does not take is refused by name before any evaluation

@@ -264,6 +264,47 @@ TEST(StudiesKnotFairing, DeterministicProgressIsInTheStudysTerms) {
   EXPECT_GT(stopped.best.energy, plain.best.energy);
 }
 
+// checks: the GA reports its generations in the study's terms as the deterministic optimiser does (not its
+// own objective E / E_start): every round's generations reach the callback and the log alike (the same logs),
+// each reported objective value being the energy, evaluated anew, at the reported parameters; the convergence
+// graph is the running minimum of the start's energy and the generations' bests; the result is bit-identical
+// with and without the callback and log
+TEST(StudiesKnotFairing, GaProgressIsInTheStudysTerms) {
+  const KnotFairingSetup s = planar(kExample73_2);
+  const std::vector<double> chord = chord_length_parameters(s);
+  const double e0 = evaluate_parameters(s, chord).energy;
+  GaFairingOptions o;
+  o.real.population = 12;
+  o.real.run.stop.generations = 6;
+  o.real.run.seed = 2;
+  const FairingResult plain = fair_knots_ga(s, chord, o);
+  std::vector<optim::GenerationLog> seen;
+  o.real.run.on_generation = [&](const optim::GenerationLog& g) { seen.push_back(g); };
+  optim::RunLog log;
+  const FairingResult watched = fair_knots_ga(s, chord, o, &log);
+  EXPECT_EQ(watched.best.parameters, plain.best.parameters);
+  EXPECT_EQ(watched.best.energy, plain.best.energy);
+  EXPECT_EQ(watched.convergence, plain.convergence);
+  ASSERT_EQ(seen.size(), plain.rounds * 7u);
+  ASSERT_EQ(log.generations().size(), seen.size());
+  double running = e0;
+  for (std::size_t i = 0; i < seen.size(); ++i) {
+    const optim::GenerationLog& g = seen[i];
+    EXPECT_TRUE(g == log.generations()[i]) << "generation " << i;
+    for (std::size_t k = 0; k < g.size(); ++k) {
+      std::vector<double> p{0.0};
+      p.insert(p.end(), g.variables.begin() + static_cast<std::ptrdiff_t>(k * g.dimension),
+               g.variables.begin() + static_cast<std::ptrdiff_t>((k + 1) * g.dimension));
+      p.push_back(1.0);
+      EXPECT_NEAR(g.objective_values[k], evaluate_parameters(s, p).energy, 1e-12 * e0) << i << ", " << k;
+    }
+    running = std::min(running, optim::statistics(g).best);
+    EXPECT_EQ(plain.convergence[i], running) << "generation " << i;
+  }
+  EXPECT_LT(plain.best.energy, e0);
+  EXPECT_NEAR(running, plain.best.energy, 1e-12 * e0);
+}
+
 struct Case {
   const char* name;
   const std::vector<Vec3>* points;

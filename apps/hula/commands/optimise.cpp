@@ -211,9 +211,7 @@ int run_optimise(const OptimiseArgs& a) {
   optim::SolveOptions options;
   options.algorithm = io::solver_options(solver_request(a, log, terminal, progress_reference));
   if (islands) options.islands = island_options(a.islands);
-  // pagmo never looks at the token: Ctrl-C ends it at once, as the shell would.
-  std::optional<InterruptGuard> guard;
-  if (!std::holds_alternative<optim::PagmoOptions>(named)) guard.emplace();
+  const InterruptGuard guard;  // pagmo's algorithms too: the adapter looks at the token before each evaluation
   std::optional<oli::RankedSolve> run = oli::solve_on_ranks(problem, options);
   terminal.finish();
   if (log) log->commit();

@@ -75,10 +75,10 @@ optim::SolverOptions solver_options(const SolverRequest& q) {
     m->cancel = q.cancel;
     m->on_generation = q.on_generation;  // progress: one generation per simplex iteration
   } else {
-    // pagmo runs its own loop: no stop criteria, cancellation or evaluation threads reach it through the
-    // adapter; its progress is counted from its evaluations (PagmoOptions::on_generation).
+    // pagmo runs its own loop: of the stop criteria only the wall time and cancellation reach it (the
+    // adapter looks at them before each evaluation), and no evaluation threads; its progress is counted from
+    // its evaluations (PagmoOptions::on_generation).
     refuse(q.evaluations.has_value(), "evaluations", q.algorithm);
-    refuse(q.time.has_value(), "time", q.algorithm);
     refuse(q.log, "log", q.algorithm);
     refuse(q.crossover.has_value(), "crossover", q.algorithm);
     refuse(q.mutation.has_value(), "mutation", q.algorithm);
@@ -88,6 +88,8 @@ optim::SolverOptions solver_options(const SolverRequest& q) {
     if (q.population) p.population = *q.population;
     if (q.generations) p.generations = *q.generations;
     p.seed = q.seed.value_or(0);
+    if (q.time) p.wall_time_seconds = *q.time;
+    p.cancel = q.cancel;
     p.on_generation = q.on_generation;
   }
   return named;

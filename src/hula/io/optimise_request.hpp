@@ -42,7 +42,8 @@ struct SolverRequest {
 /// evaluations also bounds the generations (evaluations / population), so the binary GA's boosting schedule
 /// spans what the budget allows. Settings the algorithm does not take are refused, never ignored:
 /// Nelder–Mead takes no population, generations, seed, operators, threads, log or islands; pagmo's take no
-/// evaluations, time, log, operators, threads or islands; only ga-binary takes boost. Every algorithm takes
+/// evaluations, log, operators, threads or islands (their time and cancel stop them between evaluations,
+/// optim::PagmoOptions::cancel); only ga-binary takes boost. Every algorithm takes
 /// progress and on_generation (Nelder–Mead: a generation per simplex iteration; pagmo's: per `population`
 /// evaluations, optim::PagmoOptions::on_generation).
 /// @throws hula::Error(Errc::InvalidOption) naming the refused setting ("--population is not supported by

@@ -2,6 +2,7 @@
 #include "hula/optim/pagmo_adapter.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -49,6 +50,9 @@ PagmoAlgorithm pagmo_algorithm(std::string_view name) {
 void PagmoOptions::validate() const {
   if (population == 0) throw Error(Errc::InvalidOption, "population = 0 must be >= 1", {.field = "population"});
   if (generations == 0) throw Error(Errc::InvalidOption, "generations = 0 must be >= 1", {.field = "generations"});
+  if (!std::isfinite(wall_time_seconds) || wall_time_seconds < 0.0)
+    throw Error(Errc::InvalidOption, "wall_time_seconds = " + format_number(wall_time_seconds) + " must be >= 0",
+                {.field = "wall_time_seconds"});
 }
 
 PagmoResult solve_with_pagmo(const Problem& problem, const PagmoOptions& options) {
@@ -86,9 +90,19 @@ PagmoResult solve_with_pagmo(const Problem& problem, const PagmoOptions& options
   }
   PagmoResult result = std::move(run.result);
   result.report.failed_evaluations = run.failed;
-  result.report.termination = Termination::MaxGenerations;
-  result.report.generations = options.generations;
-  result.report.message = std::to_string(options.generations) + " generations of pagmo " + name_of(options.algorithm);
+  const std::string of_pagmo = " generations of pagmo " + std::string(name_of(options.algorithm));
+  if (run.stopped) {
+    result.report.termination = *run.stopped;
+    result.report.generations = run.generations;
+    result.report.message = (*run.stopped == Termination::Cancelled
+                                 ? std::string("cancelled")
+                                 : "wall time " + format_number(options.wall_time_seconds) + " s elapsed") +
+                            " after " + std::to_string(run.generations) + of_pagmo;
+  } else {
+    result.report.termination = Termination::MaxGenerations;
+    result.report.generations = options.generations;
+    result.report.message = std::to_string(options.generations) + of_pagmo;
+  }
   result.report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

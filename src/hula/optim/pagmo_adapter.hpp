@@ -13,6 +13,7 @@
 
 #include "hula/optim/problem.hpp"
 #include "hula/optim/run_log.hpp"
+#include "hula/optim/run_report.hpp"
 #include "hula/optim/solution.hpp"
 
 namespace hula::optim {
@@ -52,9 +53,19 @@ struct PagmoOptions {
   /// the last samples). Failed evaluations are flagged failed; violation 0; fitness NaN (pagmo's own
   /// ranking is not exposed). It only reads: the run is the same with or without it. Default none.
   GenerationCallback on_generation{};
+  /// Ends the run early once set (Termination::Cancelled), from any thread. pagmo runs its own loop, so the
+  /// adapter looks at it before every evaluation pagmo asks for (once one evaluation has succeeded) and
+  /// unwinds pagmo's loop from there: the result is the best evaluation so far (one objective; the first of
+  /// equal values) or the non-dominated set of every successful evaluation so far (several objectives),
+  /// not pagmo's population, which stays inside pagmo. While it is not set the run is the same as without
+  /// it, to the last bit. Not owned; must outlive the run. Default none.
+  const CancellationToken* cancel = nullptr;
+  /// Wall-clock limit in seconds, checked as `cancel` is (Termination::WallTime); 0 = unlimited. Makes a
+  /// run depend on the machine. Default 0.
+  double wall_time_seconds = 0.0;
 
   /// @throws hula::Error(Errc::InvalidOption) naming the field and value if
-  ///   population or generations is 0.
+  ///   population or generations is 0, or wall_time_seconds is negative or not finite.
   void validate() const;
 };
 
@@ -64,7 +75,10 @@ struct PagmoResult {
   Solution best{};
   /// Several objectives: the final population's first non-dominated front. Single objective: empty.
   std::vector<Solution> front{};
-  /// Evaluations (pagmo's fevals), failed evaluations, time; termination is MaxGenerations.
+  /// Evaluations (pagmo's fevals; a stopped run: the evaluations made), failed evaluations, time;
+  /// termination MaxGenerations, or Cancelled / WallTime for a run ended early (PagmoOptions::cancel,
+  /// wall_time_seconds) with `generations` the complete generations of `population` evaluations made
+  /// after the initial population.
   RunReport report{};
 };
 

@@ -4,10 +4,13 @@
 // hula/core/plugin.hpp (detail/pagmo_plugin.hpp holds the entry point's type).
 #include "hula/optim/detail/pagmo_plugin.hpp"
 
+#include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <pagmo/algorithm.hpp>
 #include <pagmo/algorithms/cmaes.hpp>
 #include <pagmo/algorithms/de.hpp>
@@ -20,6 +23,8 @@
 #include <pagmo/problem.hpp>
 #include <pagmo/utils/multi_objective.hpp>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "hula/core/error.hpp"
 
@@ -60,11 +65,63 @@ struct Window {
   }
 };
 
+// Thrown from the problem's fitness to unwind pagmo's loop when the run is asked to stop; never leaves the
+// plugin (hula_pagmo_run catches it).
+struct StopRequested {};
+
+// What a stopped run returns, gathered as the run goes (only when the run can be stopped): the best
+// evaluation (one objective) or the non-dominated set of the successful evaluations (several).
+struct BestSoFar {
+  std::size_t objectives = 1;
+  bool found = false;
+  std::vector<double> x{}, f{};  // one objective: the best point and its values (Flexo's layout)
+  std::vector<std::pair<std::vector<double>, std::vector<double>>> front{};  // several: (x, objectives)
+
+  void offer(const pagmo::vector_double& x_in, const std::vector<double>& values) {
+    if (objectives == 1) {
+      if (found && !(values[0] < f[0])) return;  // the first of equal values stays
+      found = true;
+      x = x_in;
+      f = values;
+      return;
+    }
+    const auto covers = [this](const std::vector<double>& a, const std::vector<double>& b) {  // a <= b everywhere
+      for (std::size_t j = 0; j < objectives; ++j)
+        if (!(a[j] <= b[j])) return false;
+      return true;
+    };
+    const std::vector<double> mine(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(objectives));
+    for (const auto& member : front)
+      if (covers(member.second, mine)) return;  // dominated by, or equal to, a member
+    std::erase_if(front, [&](const auto& member) { return covers(mine, member.second); });
+    front.emplace_back(x_in, mine);
+  }
+};
+
 struct Counters {
   std::atomic<std::size_t> failed{0};
   std::atomic<std::size_t> succeeded{0};
   // pagmo's algorithms here call the problem's fitness serially, on the thread that called evolve.
   Window window{};
+  // Stopping early: the token and the wall-clock limit (PagmoOptions::cancel, wall_time_seconds), looked at
+  // before each evaluation once one has succeeded; the reason once met; the best so far, kept only when a
+  // stop is possible.
+  const CancellationToken* cancel = nullptr;
+  double wall_time_seconds = 0.0;  // 0 = none
+  std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+  std::optional<Termination> stopped{};
+  bool stoppable = false;
+  BestSoFar best{};
+
+  [[nodiscard]] bool stop_requested() {
+    if (succeeded == 0) return false;
+    if (wall_time_seconds > 0.0 &&
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >= wall_time_seconds)
+      stopped = Termination::WallTime;
+    else if (cancel != nullptr && cancel->is_cancelled())
+      stopped = Termination::Cancelled;
+    return stopped.has_value();
+  }
 };
 
 // pagmo user-defined problem wrapping a Flexo Problem. pagmo orders the
@@ -76,6 +133,7 @@ struct Udp {
 
   [[nodiscard]] pagmo::vector_double fitness(const pagmo::vector_double& x) const {
     const Problem& p = *problem;
+    if (counters->stoppable && counters->stop_requested()) throw StopRequested{};
     pagmo::vector_double values(p.values_per_point());
     bool ok = true;
     try {
@@ -92,6 +150,7 @@ struct Udp {
       for (double& v : values) v = std::numeric_limits<double>::max();
     } else {
       ++counters->succeeded;
+      if (counters->stoppable) counters->best.offer(x, values);
     }
     counters->window.add(x, values, p.objectives, ok);
     pagmo::vector_double out(values.size());
@@ -154,6 +213,33 @@ Solution solution_of(const Problem& p, const pagmo::vector_double& x, const pagm
   s.violation = p.violation(values);
   return s;
 }
+// The result of a run stopped before evaluation `counters.window.evaluations + 1`: the best so far, the
+// last complete generation handed to the callback (a partial one is dropped), the counts.
+void stopped_result(const Problem& problem, const PagmoOptions& options, Counters& counters, detail::PagmoRun& run) {
+  Window& window = counters.window;
+  if (window.callback != nullptr && *window.callback && window.log.size() == window.population)
+    (*window.callback)(window.log);
+  const std::size_t evaluations = window.evaluations;
+  run.result.report.evaluations = evaluations;
+  run.succeeded = counters.succeeded;
+  run.failed = counters.failed;
+  run.stopped = counters.stopped;
+  run.generations = evaluations >= 2 * options.population ? evaluations / options.population - 1 : 0;
+  const BestSoFar& best = counters.best;
+  const auto solution = [&problem](const std::vector<double>& x, const std::vector<double>& values) {
+    Solution s;
+    s.variables = x;
+    s.objectives.assign(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(problem.objectives));
+    s.violation = problem.violation(values);
+    return s;
+  };
+  if (problem.objectives == 1) {
+    if (best.found) run.result.best = solution(best.x, best.f);
+  } else {
+    for (const auto& [x, f] : best.front) run.result.front.push_back(solution(x, f));
+  }
+}
+
 }  // namespace
 }  // namespace hula::optim
 
@@ -165,10 +251,20 @@ HULA_PLUGIN_EXPORT void hula_pagmo_run(const hula::optim::Problem& problem, cons
   counters->window.population = options.population;
   counters->window.log.dimension = problem.dimension();
   counters->window.log.objectives = problem.objectives;
+  counters->cancel = options.cancel;
+  counters->wall_time_seconds = options.wall_time_seconds;
+  counters->stoppable = counters->cancel != nullptr || counters->wall_time_seconds > 0.0;
+  counters->best.objectives = problem.objectives;
   pagmo::problem prob(Udp{&problem, counters});
-  pagmo::population pop(prob, options.population, options.seed);
   pagmo::algorithm algo = make_algorithm(options);
-  pop = algo.evolve(pop);
+  pagmo::population pop;
+  try {
+    pagmo::population initial(prob, options.population, options.seed);
+    pop = algo.evolve(initial);
+  } catch (const StopRequested&) {
+    stopped_result(problem, options, *counters, run);
+    return;
+  }
   run.result.report.evaluations = static_cast<std::size_t>(pop.get_problem().get_fevals());
   if (options.on_generation) {
     // The last generation: the final population (no constraints here: pagmo's fitness is the objectives).

@@ -319,6 +319,7 @@ FairingResult fair_knots_ga(const KnotFairingSetup& setup, std::span<const doubl
   std::vector<double> best(start.begin(), start.end());
   std::vector<double> centre = best;
   double running_best = best_energy;
+  optim::GenerationLog study_log;  // a generation in energy units, reused
 
   for (std::size_t round = 0; round <= options.max_recentres; ++round) {
     result.bounds = knot_bounds(centre, options.resolution);
@@ -339,15 +340,21 @@ FairingResult fair_knots_ga(const KnotFairingSetup& setup, std::span<const doubl
       std::copy(x.begin(), x.end(), p.begin() + 1);
       f[0] = fairing_energy(setup, p) / scale;
     };
+    // The log and the caller's own callback (the progress line, a server job's events, Python's callback)
+    // see every round's generations in the study's terms, as the deterministic optimiser reports them and
+    // as `convergence` holds them: energies E, not the GA's objective E / E_start (the fitness column stays
+    // the GA's selection fitness).
     optim::GenerationCallback on_generation = [&](const optim::GenerationLog& g) {
       const optim::GenerationStatistics s = optim::statistics(g);
       if (std::isfinite(s.best)) running_best = std::min(running_best, s.best * scale);
       result.convergence.push_back(running_best);
-      if (log != nullptr) log->append(g);
-      // The caller's own callback (progress of a server job) sees every round's generations.
       const optim::GenerationCallback& caller =
           options.algorithm == FairingGa::Binary ? options.binary.run.on_generation : options.real.run.on_generation;
-      if (caller) caller(g);
+      if (log == nullptr && !caller) return;
+      study_log = g;
+      for (double& v : study_log.objective_values) v *= scale;
+      if (log != nullptr) log->append(study_log);
+      if (caller) caller(study_log);
     };
     optim::GaResult r;
     if (options.algorithm == FairingGa::Binary) {

@@ -259,6 +259,10 @@ struct FairingResult {
 /// @param setup a valid setup
 /// @param start the start parameters (chord length in the thesis)
 /// @param options GA, bounds and re-centring settings
+/// The GA minimises E / E_start; the log and the options' run.on_generation receive every generation of
+/// every round in the study's terms, as fair_knots_deterministic's callback does: the variables are the
+/// internal parameters and the objective values the energies E (E / E_start × E_start); the fitness column
+/// is the GA's own selection fitness. The run is the same with or without them.
 /// @param log when not null, receives every generation of every run
 /// @throws as check_parameters, knot_bounds, options.validate and the GA
 [[nodiscard]] FairingResult fair_knots_ga(const KnotFairingSetup& setup, std::span<const double> start,

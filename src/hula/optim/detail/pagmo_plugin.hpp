@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 
 #include "hula/optim/pagmo_adapter.hpp"
 #include "hula/optim/problem.hpp"
@@ -18,6 +19,10 @@ struct PagmoRun {
   PagmoResult result{};
   std::size_t succeeded = 0;
   std::size_t failed = 0;
+  /// Set when the run ended early (PagmoOptions::cancel, wall_time_seconds): why, and the complete
+  /// generations made after the initial population.
+  std::optional<Termination> stopped{};
+  std::size_t generations = 0;
 };
 
 /// The entry point's name in the plugin and its type. pagmo's std::invalid_argument (an algorithm
