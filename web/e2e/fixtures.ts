@@ -217,7 +217,6 @@ export const fairingExamples: { name: string; curve: CurveFile; point: number }[
   },
 ];
 
-
 /**
  * Marks a test that needs the document routes. global-setup.ts has already refused a server whose
  * /api/documents does not answer 200, so this fails (never skips) if that check was bypassed: a
