@@ -4,8 +4,9 @@
 // and the κ graph, snap off, counted by the page's own counters (frames that
 // redrew curve, fins and graph at a new position, per second of drag and per
 // pointer move that changed the point; pointer-to-redraw p95), asserted against
-// issue 23's targets; the old rAF probe's figure beside them; first load; the
-// gzipped bundle size.
+// issue 23's targets; the old rAF probe's figure beside them; the fairing
+// assistant's ghost after the pointer stops (24 drags, asserted at load ≤ 4);
+// first load; the gzipped bundle size.
 import { test } from '@playwright/test';
 import { readdirSync, readFileSync, writeFileSync, mkdirSync } from 'node:fs';
 import { loadavg } from 'node:os';
@@ -15,7 +16,9 @@ import {
   addCurve,
   analysis,
   base,
+  entity,
   expect,
+  fairingExamples,
   idle,
   needsDocuments,
   newDoc,
@@ -231,4 +234,89 @@ test('drag a point of a 100-control-point curve with fins and the κ graph', asy
   preview.points.forEach((p, i) => {
     for (let k = 0; k < 3; k++) expect(Math.abs(p[k]! - server.points[i]![k]!)).toBeLessThan(1e-8);
   });
+});
+
+// The fairing assistant's ghost (issue 13 item 6, issue 23): from the last pointer move of a drag to the
+// frame that draws the ghost of that final position, over 24 drags (8 of each of the thesis's 7.4.2
+// Examples 1–3, minimal curvature variation, tolerance 1, released at once after 4 moves), so that the
+// p95 is not the largest sample. Issue 23's target, p95 ≤ 150 ms, is asserted when the load at the
+// first drag is ≤ 4 (two cores); the figures and the load are reported either way.
+test('fairing ghost after the pointer stops, 24 drags', async ({ page }) => {
+  needsDocuments();
+  test.setTimeout(300_000);
+  const latencies: number[] = [];
+  const roundTrips: number[] = [];
+  const serverMs: number[] = [];
+  const perExample = 8;
+  for (const example of fairingExamples) {
+    const doc = await newDoc(`ghost-${example.name}`);
+    const label = await addCurve(doc, example.name, example.curve);
+    await openApp(page, doc);
+    await page.evaluate((l) => {
+      window.__hula.app.select(l);
+    }, label);
+    await idle(page);
+    await page.locator('#fair-tolerance').fill('1');
+    await page.locator('#fair-tolerance').dispatchEvent('change');
+    await page.locator('#fair-on').check();
+    await idle(page);
+    if (!('ghost_load_average' in results)) results['ghost_load_average'] = loadavg()[0]!;
+    const pointOf = async (): Promise<[number, number, number]> => {
+      const c = (await entity(doc, label)).curve as { points: number[][] };
+      const p = c.points[example.point]!;
+      return [p[0] ?? 0, p[1] ?? 0, p[2] ?? 0];
+    };
+    for (let drag = 0; drag < perExample; drag++) {
+      const point = await pointOf();
+      const from = await pixelOf(page, 'top', point);
+      await page.mouse.move(from.x, from.y);
+      await page.mouse.down();
+      // Out and back on alternate drags: the point stays near where it started.
+      const sign = drag % 2 === 0 ? 1 : -1;
+      for (let i = 1; i <= 4; i++)
+        await page.mouse.move(from.x + sign * 2 * i, from.y - sign * 3 * i);
+      const before = await page.evaluate(() => window.__hula.app.fairing.latencies.length);
+      await page.mouse.up();
+      await idle(page);
+      const state = await page.evaluate(() => {
+        const f = window.__hula.app.fairing;
+        return {
+          count: f.latencies.length,
+          dataPoints: f.preview?.result.data_points,
+          latency: f.latencies[f.latencies.length - 1],
+          timing: f.timings[f.timings.length - 1],
+        };
+      });
+      // The latest ghost is of the curve the server holds after the drag (its data points), and its
+      // latency was recorded after the release or while the pointer rested before it.
+      const stored = ((await entity(doc, label)).curve as { points: number[][] }).points;
+      expect(stored[example.point]).not.toEqual(point);
+      expect(state.count).toBeGreaterThanOrEqual(before);
+      expect(state.count).toBeGreaterThan(0);
+      state.dataPoints!.forEach((p, k) => {
+        const q = stored[k]!;
+        expect(Math.hypot(p[0]! - (q[0] ?? 0), p[1]! - (q[1] ?? 0))).toBeLessThan(1e-9);
+      });
+      latencies.push(state.latency!);
+      roundTrips.push(state.timing!.roundTripMs);
+      serverMs.push(state.timing!.serverMs);
+    }
+  }
+  results['ghost_load_average_end'] = loadavg()[0]!;
+  const sorted = [...latencies].sort((a, b) => a - b);
+  const rt = [...roundTrips].sort((a, b) => a - b);
+  const n = sorted.length;
+  results['ghost_drags'] = n;
+  results['ghost_latency_ms_p50'] = sorted[Math.floor(n * 0.5)]!;
+  results['ghost_latency_ms_p95'] = sorted[Math.floor(n * 0.95)]!;
+  results['ghost_latency_ms_max'] = sorted[n - 1]!;
+  results['ghost_round_trip_ms_p50'] = rt[Math.floor(n * 0.5)]!;
+  results['ghost_round_trip_ms_p95'] = rt[Math.floor(n * 0.95)]!;
+  results['ghost_server_ms_max'] = Math.max(...serverMs);
+  console.log('ghost latencies', JSON.stringify(latencies.map((x) => Math.round(x))));
+  expect(n).toBe(3 * perExample);
+  // Above load 4 a regression bound only (at load 16–28 the ghost took 290–520 ms, docs/benchmarks.md).
+  const load = results['ghost_load_average']!;
+  results['ghost_target_asserted'] = load <= 4 ? 1 : 0;
+  expect(sorted[Math.floor(n * 0.95)]!).toBeLessThanOrEqual(load <= 4 ? 150 : 1000);
 });

@@ -19,6 +19,7 @@ import {
   api,
   entity,
   expect,
+  fairingExamples as examples,
   history,
   idle,
   needsDocuments,
@@ -27,55 +28,6 @@ import {
   pixelOf,
   shot,
 } from './fixtures';
-
-// examples/workspace/example{1,2,3}-corner.json (thesis 7.4.2 Examples 1–3, the thesis's knots) and
-// the data point each drag moves: the corner.
-const examples: { name: string; curve: CurveFile; point: number }[] = [
-  {
-    name: 'example1',
-    curve: {
-      kind: 'interpolated',
-      points: [
-        [0, 0],
-        [100, 0],
-        [100, 100],
-      ],
-      parameters: [0, 0.5, 1],
-    },
-    point: 1,
-  },
-  {
-    name: 'example2',
-    curve: {
-      kind: 'interpolated',
-      points: [
-        [0, 0],
-        [50, 0],
-        [100, 0],
-        [100, 50],
-        [100, 100],
-      ],
-      parameters: [0, 0.286111, 0.50371, 0.713889, 1],
-    },
-    point: 2,
-  },
-  {
-    name: 'example3',
-    curve: {
-      kind: 'interpolated',
-      points: [
-        [0, 0],
-        [10, 0],
-        [29, 0],
-        [31, 2],
-        [31, 31],
-        [31, 41],
-      ],
-      parameters: [0, 0.125303, 0.419407, 0.492229, 0.777902, 1],
-    },
-    point: 3,
-  },
-];
 
 interface Preview {
   revision: number;

@@ -16,23 +16,9 @@ import {
   newDoc,
   openApp,
 } from './fixtures';
+import { arch } from '../src/testing/curves';
 
 type Nurbs = Extract<CurveFile, { kind: 'nurbs' }>;
-
-// A planar cubic arch in the X-Y plane.
-const arch: Nurbs = {
-  kind: 'nurbs',
-  degree: 3,
-  knots: [0, 0, 0, 0, 0.3, 0.6, 1, 1, 1, 1],
-  control_points: [
-    [0, 0, 0],
-    [15, 25, 0],
-    [40, 35, 0],
-    [65, 30, 0],
-    [85, 10, 0],
-    [100, 0, 0],
-  ],
-};
 
 // An open spline through five points, to be closed.
 const through: CurveFile = {

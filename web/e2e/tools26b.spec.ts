@@ -17,24 +17,10 @@ import {
   pixelOf,
   shot,
 } from './fixtures';
+import { arch } from '../src/testing/curves';
 
 type Nurbs = Extract<CurveFile, { kind: 'nurbs' }>;
 type Vec = [number, number, number];
-
-// A planar cubic arch in the X-Y plane, two interior knots.
-const arch: Nurbs = {
-  kind: 'nurbs',
-  degree: 3,
-  knots: [0, 0, 0, 0, 0.3, 0.6, 1, 1, 1, 1],
-  control_points: [
-    [0, 0, 0],
-    [15, 25, 0],
-    [40, 35, 0],
-    [65, 30, 0],
-    [85, 10, 0],
-    [100, 0, 0],
-  ],
-};
 
 // A quadratic that crosses the arch twice (the arch is below y = 12 only near its ends).
 const bow: Nurbs = {

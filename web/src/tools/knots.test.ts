@@ -12,20 +12,7 @@ import {
   type KnotHost,
   type NurbsFile,
 } from './knots';
-
-const arch: NurbsFile = {
-  kind: 'nurbs',
-  degree: 3,
-  knots: [0, 0, 0, 0, 0.3, 0.6, 1, 1, 1, 1],
-  control_points: [
-    [0, 0, 0],
-    [15, 25, 0],
-    [40, 35, 0],
-    [65, 30, 0],
-    [85, 10, 0],
-    [100, 0, 0],
-  ],
-};
+import { arch } from '../testing/curves';
 
 describe('knot values', () => {
   it('lists the distinct interior knots with their multiplicity, not the end knots', () => {
