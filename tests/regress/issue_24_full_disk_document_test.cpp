@@ -5,6 +5,8 @@
 // file: ENOSPC reported as SQLITE_IOERR), so the server answered both 500
 // where docs/errors.md promises StorageFull, 507. The probe reran this on a
 // small tmpfs.
+#include <utility>
+
 #include "cli.hpp"
 
 namespace hula::regress {
@@ -14,7 +16,8 @@ namespace {
 // binary as $0 (exit 97 when the namespace or the mount is not allowed). `script` runs in `dir`.
 ProcessResult on_small_tmpfs(const fs::path& dir, const std::string& script, const std::vector<std::string>& args) {
   std::vector<std::string> argv = {
-      "-m", "/bin/sh", "-c", "mount -t tmpfs -o size=900k tmpfs \"$1\" || exit 97; cd \"$1\" || exit 97; " + script,
+      "-m",          "/bin/sh",
+      "-c",          "mount -t tmpfs -o size=900k tmpfs \"$1\" || exit 97; cd \"$1\" || exit 97; " + script,
       HULA_CLI_PATH, dir.string()};
   argv.insert(argv.end(), args.begin(), args.end());
   return testing::run_process("/usr/bin/unshare", argv);
@@ -35,9 +38,11 @@ TEST(Issue24FullDiskDocument, FullDiskIsStorageFull) {
   if (probe.exit_code == 97 || probe.exit_code == 127 || probe.exit_code == 1)
     GTEST_SKIP() << "no private tmpfs mount here (unshare -m needs CAP_SYS_ADMIN): " << probe.err;
   ASSERT_EQ(probe.exit_code, 0) << probe.err;
-  const std::string made = "\"$0\" doc new d.hula > /dev/null && \"$0\" doc add d.hula --points \"$2\" > /dev/null || exit 98; ";
+  const std::string made =
+      "\"$0\" doc new d.hula > /dev/null && \"$0\" doc add d.hula --points \"$2\" > /dev/null || exit 98; ";
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {"doc new", std::string(kFill) + "\"$0\" doc new n.hula; rc=$?; ls -A | grep -q 'hula.new-' && exit 99; exit $rc"},
+      {"doc new",
+       std::string(kFill) + "\"$0\" doc new n.hula; rc=$?; ls -A | grep -q 'hula.new-' && exit 99; exit $rc"},
       {"doc list", made + kFill + "exec \"$0\" doc list d.hula"},
       {"doc set", made + kFill + "exec \"$0\" doc set d.hula 1 --attribute 'name=\"x\"'"},
   };
