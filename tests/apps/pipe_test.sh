@@ -7,6 +7,13 @@
 # 2. Every command that takes `-o -` writes on stdout the very bytes it writes to
 #    a file (the curve alone, no JSON summary after it), and a reader of `-`
 #    (`hula info -`) prints for the piped curve what it prints for the file.
+#    The writers (`hula --help`, `hula edit --help`): interpolate, law
+#    --to-nurbs, reconstruct, fin-compound, edit-projection, hermite,
+#    hermite-frenet, convert, doc export, every edit subcommand, approximate,
+#    fit (and --save-study), offset, helical-offset, orthotomic, polar,
+#    clothoid, log-aesthetic, match, blend. (`completion bash -o -` writes a
+#    shell script, not a curve; `doc export --format step|iges -o -` writes a
+#    file no reader takes on stdin: convert reads STEP/IGES by extension only.)
 #   pipe_test.sh HULA_BINARY
 set -euo pipefail
 hula="$1"
@@ -87,6 +94,14 @@ check_writer hermite hermite "$examples/studies/hermite-direction.json" -o OUT
 check_writer fin-compound fin-compound "$examples/studies/fin-compound-edit.json" -o OUT
 check_writer edit-projection edit-projection "$examples/studies/edit-projection.json" -o OUT
 check_writer reduce-degree edit reduce-degree "$work/elevate.json" --tolerance 1e-9 -o OUT
+check_writer rebuild edit rebuild "$c1" --control-points 6 -o OUT
+check_writer to-law edit to-law "$c1" -o OUT
+check_writer clothoid-spline clothoid --points "$work/points.csv" -o OUT
+# match and blend join the first curve's end to a second curve beyond it.
+printf '8,0,2\n9,1,3\n11,0,2\n12,2,1\n' > "$work/next.csv"
+"$hula" interpolate --points "$work/next.csv" -o "$work/next.json" > /dev/null
+check_writer match match "$c1" "$work/next.json" --continuity G2 -o OUT
+check_writer blend blend "$c1" "$work/next.json" --continuity G2 -o OUT
 # The plane-curve writers: offsets and the mappings of thesis 6.3.2.
 printf '0,0\n1,2\n3,3\n4,1\n6,0\n' > "$work/plane.csv"
 "$hula" interpolate --points "$work/plane.csv" -o "$work/plane.json" > /dev/null

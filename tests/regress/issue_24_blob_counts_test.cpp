@@ -47,7 +47,7 @@ void plant(const fs::path& doc, const std::string& blob) {
 
 // checks: under a 1 GB address-space limit, `doc check` of a document whose entity blob claims 150,000,000
 // and 0xFFFFFFFF arrays reports the file broken (exit 3, "ok": false) with a problem naming the array
-// count, and `doc list` refuses it as corrupt (exit 3) — neither runs out of memory (exit 6).
+// count, and `doc list` refuses it as corrupt (exit 3, DocumentCorrupt) — neither runs out of memory (exit 6).
 TEST(Issue24BlobCounts, HostileArrayCountIsRefusedBeforeAllocating) {
   TempDir dir;
   write(dir / "points.csv", kPointsCsv);
@@ -71,6 +71,9 @@ TEST(Issue24BlobCounts, HostileArrayCountIsRefusedBeforeAllocating) {
     const ProcessResult list = limited("list");
     EXPECT_EQ(list.exit_code, 3) << count << ": " << list.err.substr(0, 300);
     EXPECT_NE(message_of(list).find("array count"), std::string::npos) << list.err.substr(0, 300);
+    // A document whose entity does not load is corrupt, not an I/O failure: the server answers it 422, not 500
+    // (item 13; docs/errors.md).
+    EXPECT_EQ(error_of(list)["error"]["code"], "DocumentCorrupt") << list.err.substr(0, 300);
   }
 }
 

@@ -109,6 +109,29 @@ TEST(Issue24KillLeftovers, KilledDocNewDatabaseIsRemovedByTheNextRun) {
   EXPECT_EQ(names_in(dir.path()), (std::vector<std::string>{"d.hula", "points.csv"}));
 }
 
+// checks: what a campaign killed while writing a study copy leaves beside the study — the copy's atomic-write
+// temporary `..hula-batch-<dead pid>-0.json.tmp-<dead pid>-XXXXXX` (found by the probe after a kill; no run
+// removed it) — and a copy itself are removed by the next `hula batch` of a campaign using that folder; a
+// name of another form is left.
+TEST(Issue24KillLeftovers, KilledCampaignsStudyCopyTemporaryIsRemovedByTheNextRun) {
+  TempDir dir;
+  fs::create_directory(dir / "studies");
+  write(dir / "studies" / "s.json",
+        R"({"format": "hula-study", "version": 1, "study": "fair-knots", "method": "none", "energy": "bending",)"
+        R"( "points": [[0, 0], [1, 1], [2, 0], [3, 1]]})");
+  write(dir / "c.json",
+        R"({"format": "hula-campaign", "version": 1, "items": [{"id": "a", "study": "studies/s.json"}]})");
+  const std::string dead = std::to_string(dead_pid());
+  const std::string temporary = "..hula-batch-" + dead + "-0.json.tmp-" + dead + "-Ab12Cd";
+  const std::string copy = ".hula-batch-" + dead + "-1.json";
+  write(dir / "studies" / temporary, "{");
+  write(dir / "studies" / copy, "{}");
+  write(dir / "studies" / "..hula-batch-x", "not a pid");
+  const ProcessResult r = hula({"batch", (dir / "c.json").string(), "--results", (dir / "r.json").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(names_in(dir / "studies"), (std::vector<std::string>{"..hula-batch-x", "s.json"}));
+}
+
 #ifdef HULA_WITH_OCCT
 // checks: the scratch folder of a killed exchange (`hula-exchange-<dead pid>-XXXXXX` with the request holding the
 // curve data) is removed by the next export; another user's name pattern (`hula-exchange-x`) is left.

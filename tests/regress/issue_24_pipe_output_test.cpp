@@ -2,8 +2,8 @@
 // Issue 24, item 2: `-o -` printed the curve and then the JSON summary on stdout
 // for every `edit` subcommand, `approximate`, `fit` and `law --to-nurbs` (they
 // called print_json where print_result is meant), so the next command of a pipe
-// failed with "unexpected '{'". The shell chain of every writer is
-// tests/apps/pipe_test.sh.
+// failed with "unexpected '{'"; `match` and `blend`, added later, did the same.
+// The shell chain of every writer is tests/apps/pipe_test.sh.
 #include "cli.hpp"
 
 namespace hula::regress {
@@ -19,6 +19,10 @@ TEST(Issue24PipeOutput, EveryWriterPrintsOnlyTheCurveOnStdout) {
   write(dir / "scan.csv", scan);
   const std::string curve = (dir / "c.json").string();
   ASSERT_EQ(hula({"interpolate", "--points", (dir / "points.csv").string(), "-o", curve}).exit_code, 0);
+  // A second curve for match and blend, beyond the first one's end (6, 0, 2).
+  write(dir / "next.csv", "8,0,2\n9,1,3\n11,0,2\n12,2,1\n");
+  const std::string next = (dir / "next.json").string();
+  ASSERT_EQ(hula({"interpolate", "--points", (dir / "next.csv").string(), "-o", next}).exit_code, 0);
   const std::vector<std::vector<std::string>> writers = {
       {"edit", "insert-knot", curve, "--at", "0.5", "-o"},
       {"edit", "refine", curve, "--knots", "0.25,0.75", "-o"},
@@ -26,10 +30,14 @@ TEST(Issue24PipeOutput, EveryWriterPrintsOnlyTheCurveOnStdout) {
       {"edit", "elevate", curve, "-o"},
       {"edit", "reverse", curve, "-o"},
       {"edit", "reparam", curve, "--domain", "0,10", "-o"},
+      {"edit", "rebuild", curve, "--control-points", "6", "-o"},
+      {"edit", "to-law", curve, "-o"},
       {"approximate", "--points", (dir / "points.csv").string(), "--control-points", "4", "-o"},
       {"approximate", "--points", (dir / "points.csv").string(), "--tolerance", "0.5", "-o"},
       {"fit", "--points", (dir / "scan.csv").string(), "--ordered", "-o"},
       {"law", "vec(cos(t), sin(t), 0)", "--to-nurbs", "0,1", "-o"},
+      {"match", curve, next, "--continuity", "G2", "-o"},
+      {"blend", curve, next, "--continuity", "G2", "-o"},
   };
   for (std::vector<std::string> args : writers) {
     const std::string name = args[0] + (args[0] == "edit" ? " " + args[1] : std::string());

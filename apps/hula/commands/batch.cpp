@@ -213,7 +213,12 @@ int run_batch(const BatchArgs& a) {
   io::remove_orphaned(temp, kScratchPrefix);
   std::set<fs::path> study_dirs;
   for (const io::CampaignItem& item : items) study_dirs.insert(item.study.parent_path());
-  for (const fs::path& dir : study_dirs) io::remove_orphaned(dir.empty() ? fs::path(".") : dir, kStudyCopyPrefix);
+  // A copy is written atomically: a kill during that write leaves its temporary, `.` + the copy's name +
+  // `.tmp-<pid>-XXXXXX`, which carries the same owner's pid.
+  for (const fs::path& dir : study_dirs) {
+    io::remove_orphaned(dir.empty() ? fs::path(".") : dir, kStudyCopyPrefix);
+    io::remove_orphaned(dir.empty() ? fs::path(".") : dir, "." + std::string(kStudyCopyPrefix));
+  }
   const fs::path scratch = temp / io::owned_name(kScratchPrefix);
   fs::create_directories(scratch);
   const auto start = std::chrono::steady_clock::now();

@@ -3,7 +3,7 @@
 // to B's end or to B at a parameter, moving A's last k + 1 poles (io::match_answer); `hula blend A B
 // --continuity G3 [--end start|end] [--to-end start|end] -o OUT`: the fair Hermite blend from A's end to B's
 // start, or from and to the ends named (io::blend_answer). Both write the
-// new curve and print the report with the continuity reached.
+// new curve and print the report with the continuity reached (no report with -o -: stdout is the curve).
 #include <memory>
 #include <optional>
 
@@ -34,7 +34,7 @@ int finish(const JoinArgs& args, io::CurveJoinAnswer answer) {
   doc["b"] = args.b;
   doc["output"] = args.output;
   doc.update(answer.report);
-  print_json(doc);
+  print_result(doc, args.output);  // with -o -, stdout is the curve alone (issue 24 item 2)
   return kExitOk;
 }
 

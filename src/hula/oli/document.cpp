@@ -179,7 +179,9 @@ Document Document::create(const std::filesystem::path& path, DocumentOptions opt
 
 namespace {
 
-// Rebuilds the in-memory state of a snapshot; throws naming the label or step that does not load.
+// Rebuilds the in-memory state of a snapshot; throws naming the label or step that does not load. A stored
+// state that does not decode, or a history that does not fit together, is a corrupt document
+// (DocumentCorrupt: 422 from the server, like a damaged file; was IoError, 500).
 std::unique_ptr<Document::Impl> load_snapshot(const store::Snapshot& snap, const std::filesystem::path& path) {
   auto impl = std::make_unique<Document::Impl>();
   impl->path = path;
@@ -191,14 +193,14 @@ std::unique_ptr<Document::Impl> load_snapshot(const store::Snapshot& snap, const
     try {
       return detail::decode_state(blob);
     } catch (const Error& e) {
-      throw Error(Errc::IoError,
+      throw Error(Errc::DocumentCorrupt,
                   path.string() + ": " + where + " entity " + std::to_string(label) + " does not load: " + e.what(),
                   {.field = "path"});
     }
   };
   for (const auto& [label, blob] : snap.entities) {
     if (label >= impl->next_label)
-      throw Error(Errc::IoError,
+      throw Error(Errc::DocumentCorrupt,
                   path.string() + ": entity " + std::to_string(label) + " is not below the next label " +
                       std::to_string(impl->next_label),
                   {.field = "path"});
@@ -207,7 +209,8 @@ std::unique_ptr<Document::Impl> load_snapshot(const store::Snapshot& snap, const
   std::vector<const store::StepRow*> applied, undone;
   for (const store::StepRow& s : snap.steps) (s.applied ? applied : undone).push_back(&s);
   auto corrupt = [&](const std::string& what) {
-    throw Error(Errc::IoError, path.string() + ": the undo history is inconsistent (" + what + ")", {.field = "path"});
+    throw Error(Errc::DocumentCorrupt, path.string() + ": the undo history is inconsistent (" + what + ")",
+                {.field = "path"});
   };
   for (std::size_t i = 0; i < applied.size(); ++i)
     if (applied[i]->revision != impl->revision - (applied.size() - 1 - i))

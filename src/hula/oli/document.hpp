@@ -321,9 +321,12 @@ class Document {
                                        bool overwrite = false);
   /// Opens a document file: loads every entity and the undo history.
   /// @throws hula::Error(Errc::IoError) naming the path when it is missing, not a HulaHoops
-  ///   document, corrupt or truncated (the file is never written then), written by a newer
-  ///   schema (the message names both versions), or — for ReadWrite — already open for
-  ///   writing by another process or another Document
+  ///   document or written by a newer schema (the message names both versions)
+  /// @throws hula::Error(Errc::DocumentCorrupt) naming the path when it is truncated, its pages are
+  ///   corrupt, a stored entity does not decode or its history does not fit together (the file is
+  ///   never written then)
+  /// @throws hula::Error(Errc::DocumentLocked) for ReadWrite when it is already open for writing by
+  ///   another process or another Document
   [[nodiscard]] static Document open(const std::filesystem::path& path, OpenMode mode = OpenMode::ReadWrite,
                                      std::optional<std::size_t> undo_limit = std::nullopt);
   /// Checks a document file without changing it: schema, every entity decodes,

@@ -40,8 +40,19 @@ constexpr int kBusyTimeoutMs = 2000;
   throw Error(code, path.string() + ": " + what, {.field = "path"});
 }
 
+// True when an SQLite I/O failure is the disk running out of space (or quota, or the file-size limit):
+// SQLite reports ENOSPC while growing the -shm file (SQLITE_IOERR_SHMSIZE) or the WAL as a plain I/O
+// error, not SQLITE_FULL; the OS error it saw tells them apart.
+bool out_of_space(sqlite3* db, int rc) {
+  if ((rc & 0xff) == SQLITE_FULL) return true;
+  if ((rc & 0xff) != SQLITE_IOERR || db == nullptr) return false;
+  const int e = sqlite3_system_errno(db);
+  return e == ENOSPC || e == EDQUOT || e == EFBIG;
+}
+
 // The code of an SQLite failure: locked or busy, corrupt, full, or another I/O error.
-Errc sqlite_errc(int rc) {
+Errc sqlite_errc(sqlite3* db, int rc) {
+  if (out_of_space(db, rc)) return Errc::StorageFull;
   switch (rc & 0xff) {
     case SQLITE_BUSY:
     case SQLITE_LOCKED:
@@ -49,8 +60,6 @@ Errc sqlite_errc(int rc) {
     case SQLITE_CORRUPT:
     case SQLITE_NOTADB:
       return Errc::DocumentCorrupt;
-    case SQLITE_FULL:
-      return Errc::StorageFull;
     default:
       return Errc::IoError;
   }
@@ -60,7 +69,7 @@ std::string sqlite_reason(sqlite3* db, int rc) {
   std::string reason = db != nullptr ? sqlite3_errmsg(db) : sqlite3_errstr(rc);
   const int primary = rc & 0xff;
   if (primary == SQLITE_CORRUPT || primary == SQLITE_NOTADB) return "the file is corrupt or truncated (" + reason + ")";
-  if (primary == SQLITE_FULL) return "the disk is full or the file size limit was reached (" + reason + ")";
+  if (out_of_space(db, rc)) return "the disk is full or the file size limit was reached (" + reason + ")";
   if (primary == SQLITE_CANTOPEN)
     return reason + " (a writer creates the -wal and -shm files beside the document: is its directory writable?)";
   if (primary == SQLITE_READONLY) return reason + " (is the file or its directory write-protected?)";
@@ -236,7 +245,7 @@ struct Store::Impl {
 
   void check(int rc, std::string_view what) const {
     if (rc != SQLITE_OK && rc != SQLITE_DONE && rc != SQLITE_ROW)
-      fail(path, std::string(what) + ": " + sqlite_reason(db, rc), sqlite_errc(rc));
+      fail(path, std::string(what) + ": " + sqlite_reason(db, rc), sqlite_errc(db, rc));
   }
 
   sqlite3_stmt* prepare(std::string_view sql) const {
@@ -259,9 +268,9 @@ struct Store::Impl {
     if (rc != SQLITE_OK) {
       std::string reason = message != nullptr ? message : sqlite_reason(db, rc);
       sqlite3_free(message);
-      if ((rc & 0xff) == SQLITE_CORRUPT || (rc & 0xff) == SQLITE_NOTADB || (rc & 0xff) == SQLITE_FULL)
+      if ((rc & 0xff) == SQLITE_CORRUPT || (rc & 0xff) == SQLITE_NOTADB || out_of_space(db, rc))
         reason = sqlite_reason(db, rc);
-      fail(path, std::string(what) + ": " + reason, sqlite_errc(rc));
+      fail(path, std::string(what) + ": " + reason, sqlite_errc(db, rc));
     }
   }
 
@@ -302,7 +311,7 @@ struct Store::Impl {
 
   void connect(int flags, const char* name = nullptr) {
     const int rc = sqlite3_open_v2(name != nullptr ? name : path.c_str(), &db, flags | SQLITE_OPEN_NOMUTEX, nullptr);
-    if (rc != SQLITE_OK) fail(path, "cannot open: " + sqlite_reason(db, rc), sqlite_errc(rc));
+    if (rc != SQLITE_OK) fail(path, "cannot open: " + sqlite_reason(db, rc), sqlite_errc(db, rc));
     sqlite3_extended_result_codes(db, 1);
     sqlite3_busy_timeout(db, kBusyTimeoutMs);
   }
@@ -392,7 +401,9 @@ Store Store::create(const std::filesystem::path& path, const DocumentRow& row, b
   io::remove_orphaned(dir, temp_prefix);
   std::string pattern = (dir / (io::owned_name(temp_prefix) + "-XXXXXX")).string();
   const int fd = ::mkstemp(pattern.data());
-  if (fd < 0) fail(path, std::string("cannot create the file: ") + std::strerror(errno));
+  if (fd < 0)
+    fail(path, std::string("cannot create the file: ") + std::strerror(errno),
+         errno == ENOSPC || errno == EDQUOT ? Errc::StorageFull : Errc::IoError);
   ::close(fd);
   const std::filesystem::path temp(pattern);
   auto remove_temp = [&] {
@@ -435,7 +446,7 @@ Store Store::create(const std::filesystem::path& path, const DocumentRow& row, b
     // Report the target's name, not the temporary one.
     std::string message = e.message();
     if (message.rfind(temp.string(), 0) == 0) message = path.string() + message.substr(temp.string().size());
-    throw Error(Errc::IoError, message, {.field = "path"});
+    throw Error(e.code(), message, {.field = "path"});  // a full disk stays StorageFull (507), not IoError
   }
   remove_temp();
   old_lock.reset();
