@@ -3,6 +3,7 @@
 #
 #   hula_add_module(nurbs SOURCES a.cpp b.cpp DEPS hula::core)
 #   hula_add_test(nurbs_knot_vector SOURCES knot_vector_test.cpp DEPS hula::nurbs LABELS unit)
+#   hula_test_groups(nurbs)   # at the top of a tests/ directory: one program per label (below)
 #   hula_add_bench(nurbs_eval SOURCES evaluate_bench.cpp DEPS hula::nurbs)
 #
 # Modules other than `testing` are installed and exported as HulaHoops::<name>.
@@ -11,6 +12,23 @@
 # depend on modules below it, and hula_add_module refuses an upward edge.
 
 set(HULA_MODULE_ORDER core nurbs law curve diffgeom intrinsic optim studies io io_studies oli_store oli_kernel oli_exchange oli server testing)
+
+# Unity batches for `target` when HULA_UNITY_BUILD is on (CMakeLists.txt): HULA_UNITY_BATCH_SIZE files per
+# translation unit, in their SOURCES order. CMake keeps a source with its own COMPILE_OPTIONS or
+# COMPILE_DEFINITIONS (the SIMD variants of hula_simd_sources) out of the batches by itself; a file
+# that must stay out for another reason gets SKIP_UNITY_BUILD_INCLUDE with a comment saying why.
+function(hula_unity_build target)
+  if(HULA_UNITY_BUILD)
+    set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${HULA_UNITY_BATCH_SIZE})
+    # GCC warns when a class of an included file has a member of an anonymous-namespace type (an ODR
+    # hazard in a header); in a unity batch every source is an included file, so the pimpl structs
+    # holding their file's private types would be reported. The sources are still compiled alone in
+    # the `dev` preset, where the warning keeps its meaning.
+    if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
+      target_compile_options(${target} PRIVATE -Wno-subobject-linkage)
+    endif()
+  endif()
+endfunction()
 
 function(hula_add_module name)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPS;PUBLIC_LIBS;PRIVATE_LIBS" ${ARGN})
@@ -35,6 +53,7 @@ function(hula_add_module name)
     PUBLIC ${ARG_DEPS} ${ARG_PUBLIC_LIBS}
     PRIVATE $<BUILD_INTERFACE:hula::warnings> $<BUILD_INTERFACE:hula::sanitize> ${ARG_PRIVATE_LIBS})
   set_target_properties(hula_${name} PROPERTIES POSITION_INDEPENDENT_CODE ON EXPORT_NAME ${name})
+  hula_unity_build(hula_${name})
   # Every library module is installed and exported as HulaHoops::<name> (cmake/HulaInstall.cmake);
   # the test-support library is not part of the package.
   if(NOT name STREQUAL "testing")
@@ -46,11 +65,16 @@ function(hula_add_module name)
   endif()
 endfunction()
 
+# Test binaries. Each hula_add_test is one gtest program test_<name>, unless its directory called
+# hula_test_groups(<group>) first: then the tests of that directory are compiled into one program per
+# label, test_<group>_<label>, from all their sources (unity batches with HULA_UNITY_BUILD, so gtest,
+# RapidCheck and the hula headers are parsed once per batch, not once per test file). ctest runs every
+# gtest test in a process of its own either way (gtest_discover_tests), so the test names, labels,
+# environment and working directory are those of separate programs. A test whose program is named
+# elsewhere (compile definitions, add_dependencies, include directories) or that changes its process
+# (a replaced global operator new, signal handlers) passes OWN_BINARY and keeps test_<name>.
 function(hula_add_test name)
-  cmake_parse_arguments(ARG "" "" "SOURCES;DEPS;LABELS" ${ARGN})
-  add_executable(test_${name} ${ARG_SOURCES})
-  target_link_libraries(test_${name} PRIVATE ${ARG_DEPS} hula_test_main GTest::gtest GTest::gmock
-    rapidcheck rapidcheck_gtest hula::warnings hula::sanitize)
+  cmake_parse_arguments(ARG "OWN_BINARY" "" "SOURCES;DEPS;LABELS" ${ARGN})
   if(NOT ARG_LABELS)
     set(ARG_LABELS unit)
   endif()
@@ -59,11 +83,47 @@ function(hula_add_test name)
     # gtest_discover_tests flattens lists: one label per test binary.
     message(FATAL_ERROR "hula_add_test(${name}): give one label per test binary, got '${ARG_LABELS}'")
   endif()
-  gtest_discover_tests(test_${name}
+  if(HULA_TEST_GROUP AND NOT ARG_OWN_BINARY)
+    set(group ${HULA_TEST_GROUP}_${ARG_LABELS})
+    list(TRANSFORM ARG_SOURCES PREPEND ${CMAKE_CURRENT_SOURCE_DIR}/ REGEX "^[^/]")
+    set_property(DIRECTORY APPEND PROPERTY HULA_TEST_GROUPS ${group})
+    set_property(DIRECTORY APPEND PROPERTY HULA_TEST_GROUP_${group}_SOURCES ${ARG_SOURCES})
+    set_property(DIRECTORY APPEND PROPERTY HULA_TEST_GROUP_${group}_DEPS ${ARG_DEPS})
+    set_property(DIRECTORY PROPERTY HULA_TEST_GROUP_${group}_LABEL ${ARG_LABELS})
+    return()
+  endif()
+  hula_test_program(test_${name} "${ARG_SOURCES}" "${ARG_DEPS}" ${ARG_LABELS})
+endfunction()
+
+function(hula_test_program target sources deps label)
+  add_executable(${target} ${sources})
+  target_link_libraries(${target} PRIVATE ${deps} hula_test_main GTest::gtest GTest::gmock
+    rapidcheck rapidcheck_gtest hula::warnings hula::sanitize)
+  gtest_discover_tests(${target}
     DISCOVERY_MODE PRE_TEST
     WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
-    PROPERTIES LABELS "${ARG_LABELS}"
+    PROPERTIES LABELS "${label}"
     ENVIRONMENT "HULA_TEST_DATA=${PROJECT_SOURCE_DIR}/tests/data")
+endfunction()
+
+# Called at the top of a tests/ directory: its hula_add_test calls are grouped into test_<group>_<label>
+# programs, made when the directory's CMakeLists.txt has been read.
+function(hula_test_groups group)
+  set(HULA_TEST_GROUP ${group} PARENT_SCOPE)
+  cmake_language(DEFER CALL hula_make_test_groups)
+endfunction()
+
+function(hula_make_test_groups)
+  get_property(groups DIRECTORY PROPERTY HULA_TEST_GROUPS)
+  list(REMOVE_DUPLICATES groups)
+  foreach(group IN LISTS groups)
+    get_property(sources DIRECTORY PROPERTY HULA_TEST_GROUP_${group}_SOURCES)
+    get_property(deps DIRECTORY PROPERTY HULA_TEST_GROUP_${group}_DEPS)
+    get_property(label DIRECTORY PROPERTY HULA_TEST_GROUP_${group}_LABEL)
+    list(REMOVE_DUPLICATES deps)
+    hula_test_program(test_${group} "${sources}" "${deps}" ${label})
+    hula_unity_build(test_${group})
+  endforeach()
 endfunction()
 
 # Vectorised kernels (hula/core/simd.hpp): `base` is compiled for the portable baseline, and on x86-64

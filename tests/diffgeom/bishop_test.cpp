@@ -18,7 +18,7 @@
 namespace hula::diffgeom {
 namespace {
 
-std::vector<double> linspace(double a, double b, int n) {
+std::vector<double> bishop_parameters(double a, double b, int n) {
   std::vector<double> ts(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i) ts[static_cast<std::size_t>(i)] = a + (b - a) * i / (n - 1);
   return ts;
@@ -33,7 +33,7 @@ double angle_from_normal(const FrenetPoint& p, const BishopFrame& f) {
 double helix_error(int n) {
   law::Context ctx;
   const LawFrenet helix(law::parse("vec(2*cos(t), 2*sin(t), 0.5*t)", ctx), "t", {0.0, 4 * std::numbers::pi});
-  const std::vector<double> ts = linspace(0.0, 4 * std::numbers::pi, n);
+  const std::vector<double> ts = bishop_parameters(0.0, 4 * std::numbers::pi, n);
   const BishopResult r = bishop_frame(helix, ts);
   const double c = std::sqrt(4.25), tau = 0.5 / 4.25;
   double worst = 0.0;
@@ -62,7 +62,7 @@ TEST(Bishop, FourthOrderConvergence) {
 TEST(Bishop, ThroughInflection) {
   const nurbs::NurbsCurve c(3, {0, 0, 0, 0, 1, 1, 1, 1},
                             {{-1, 0, 0}, {-1.0 / 3, 4.0 / 3, 0}, {1.0 / 3, -4.0 / 3, 0}, {1, 0, 0}}, {}, 2);
-  const std::vector<double> ts = linspace(0.0, 1.0, 201);
+  const std::vector<double> ts = bishop_parameters(0.0, 1.0, 201);
   const BishopResult r = bishop_frame(c, ts);
   std::vector<FrenetPoint> f(ts.size());
   frenet(c, ts, f);
@@ -79,7 +79,7 @@ TEST(Bishop, ClosingCorrection) {
   law::Context ctx;
   const LawFrenet k(law::parse("vec(sin(t) + 2*sin(2*t), cos(t) - 2*cos(2*t), -sin(3*t))", ctx), "t",
                     {0.0, 2 * std::numbers::pi});
-  const std::vector<double> ts = linspace(0.0, 2 * std::numbers::pi, 2001);
+  const std::vector<double> ts = bishop_parameters(0.0, 2 * std::numbers::pi, 2001);
   const BishopResult open = bishop_frame(k, ts);
   EXPECT_GT(norm(open.frames.back().u - open.frames.front().u), 1e-3);  // the trefoil's RMF does not close
   BishopOptions o;
@@ -92,7 +92,7 @@ TEST(Bishop, ClosingCorrection) {
     EXPECT_NEAR(dot(f.u, f.tangent), 0.0, 1e-12);
     EXPECT_LT(norm(cross(f.tangent, f.u) - f.v), 1e-12);
   }
-  const std::vector<double> half = linspace(0.0, 3.0, 50);
+  const std::vector<double> half = bishop_parameters(0.0, 3.0, 50);
   EXPECT_THROW((void)bishop_frame(k, half, o), Error);
 }
 
@@ -102,7 +102,7 @@ TEST(Bishop, RandomCurvesOrthonormal) {
   for (int k = 0; k < 20; ++k) {
     const nurbs::NurbsCurve c =
         testing::random_curve(rng, {.degree = 1 + k % 5, .rational = k % 2 == 0, .clamped = k % 3 != 0});
-    const std::vector<double> ts = linspace(c.domain().start, c.domain().end, 300);
+    const std::vector<double> ts = bishop_parameters(c.domain().start, c.domain().end, 300);
     const BishopResult r = bishop_frame(c, ts);
     for (const BishopFrame& f : r.frames) {
       if (!f.defined) continue;

@@ -20,8 +20,6 @@
 namespace hula::diffgeom {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 // Checks the parabola's orthotomic about its focus is its directrix and its pedal the vertex tangent, exactly for
 // the law curve and within the tolerance for the same parabola as a Bézier curve.
 TEST(Orthotomic, ParabolaAboutItsFocusIsTheDirectrix) {
@@ -53,11 +51,11 @@ TEST(Orthotomic, ParabolaAboutItsFocusIsTheDirectrix) {
 // (K = 1) the cardioid r = R (1 + cos φ) about that point (a point at angle t maps to angle t/2 ... checked by its
 // polar equation).
 TEST(Orthotomic, CircleClosedForms) {
-  const curve::Curve c = curve::Curve::from_law("vec(2*cos(t), 2*sin(t), 1)", "t", {0.0, 2.0 * kPi});
+  const curve::Curve c = curve::Curve::from_law("vec(2*cos(t), 2*sin(t), 1)", "t", {0.0, 2.0 * std::numbers::pi});
   const MappedCurve o = orthotomic(c, {0.0, 0.0, 1.0}, 3.0);
   for (int i = 0; i <= 100; ++i) EXPECT_NEAR(norm(o.curve.point(0.06 * i) - Vec3{0, 0, 1}), 6.0, 1e-14);
   // Pedal of the circle about its point (−2, 0): the cardioid r = 2 (1 + cos φ), φ the angle about the pole.
-  const curve::Curve plane = curve::Curve::from_law("vec(2*cos(t), 2*sin(t))", "t", {0.0, 2.0 * kPi});
+  const curve::Curve plane = curve::Curve::from_law("vec(2*cos(t), 2*sin(t))", "t", {0.0, 2.0 * std::numbers::pi});
   const MappedCurve cardioid = orthotomic(plane, {-2.0, 0.0, 0.0}, 1.0);
   for (int i = 1; i < 100; ++i) {
     const Vec3 q = cardioid.curve.point(0.0628 * i) - Vec3{-2, 0, 0};
@@ -80,7 +78,8 @@ TEST(PolarMap, ClosedForms) {
     EXPECT_NEAR(p.y, -1.0 / (a * a), 1e-14);
     EXPECT_NEAR(p.y, -p.x * p.x / 4.0, 1e-13);
   }
-  const curve::Curve circle = curve::Curve::from_law("vec(1 + 2*cos(t), -1 + 2*sin(t))", "t", {0.0, 2.0 * kPi});
+  const curve::Curve circle =
+      curve::Curve::from_law("vec(1 + 2*cos(t), -1 + 2*sin(t))", "t", {0.0, 2.0 * std::numbers::pi});
   const MappedCurve c = polar_map(circle, {1, -1, 0}, 3.0);
   for (int i = 0; i <= 100; ++i) EXPECT_NEAR(norm(c.curve.point(0.06 * i) - Vec3{1, -1, 0}), 4.5, 1e-14);
 }

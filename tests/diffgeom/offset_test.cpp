@@ -23,8 +23,6 @@
 namespace hula::diffgeom {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 double signed_curvature(const std::vector<Vec3>& d) {
   return (d[1].x * d[2].y - d[1].y * d[2].x) / std::pow(d[1].x * d[1].x + d[1].y * d[1].y, 1.5);
 }
@@ -43,13 +41,13 @@ void expect_trimmed_at_distance(const PlanarOffset& o, const curve::Curve& c, do
 
 // Checks a circle law's offset is the concentric circle, exactly a law, closed, without cusps or loops.
 TEST(PlanarOffset, CircleIsConcentricCircleAsExactLaw) {
-  const curve::Curve c = curve::Curve::from_law("vec(2*cos(t), 2*sin(t))", "t", {0.0, 2.0 * kPi});
+  const curve::Curve c = curve::Curve::from_law("vec(2*cos(t), 2*sin(t))", "t", {0.0, 2.0 * std::numbers::pi});
   const PlanarOffset o = planar_offset(c, 0.5);
   ASSERT_TRUE(o.exact);
   EXPECT_EQ(o.raw.kind(), curve::Kind::Law);
   EXPECT_LE(o.deviation, 1e-6);
   for (int i = 0; i <= 100; ++i) {
-    const double t = 2.0 * kPi * i / 100.0;
+    const double t = 2.0 * std::numbers::pi * i / 100.0;
     const std::vector<Vec3> d = o.raw.derivatives(t, 2);
     EXPECT_NEAR(norm(d[0]), 1.5, 1e-14);
     EXPECT_NEAR(signed_curvature(d), 1.0 / 1.5, 1e-14);
@@ -60,12 +58,12 @@ TEST(PlanarOffset, CircleIsConcentricCircleAsExactLaw) {
   EXPECT_TRUE(o.trimmed[0].closed);
   ASSERT_EQ(o.trimmed[0].spans.size(), 1U);
   EXPECT_EQ(o.trimmed[0].spans[0].start, 0.0);
-  EXPECT_EQ(o.trimmed[0].spans[0].end, 2.0 * kPi);
+  EXPECT_EQ(o.trimmed[0].spans[0].end, 2.0 * std::numbers::pi);
 }
 
 // Checks the outward offset (d < 0) of a circle and that an inward offset beyond the radius trims to nothing.
 TEST(PlanarOffset, CircleOutwardAndBeyondTheRadius) {
-  const curve::Curve c = curve::Curve::from_law("vec(2*cos(t), 2*sin(t))", "t", {0.0, 2.0 * kPi});
+  const curve::Curve c = curve::Curve::from_law("vec(2*cos(t), 2*sin(t))", "t", {0.0, 2.0 * std::numbers::pi});
   const PlanarOffset out = planar_offset(c, -1.0);
   EXPECT_NEAR(norm(out.raw.point(0.3)), 3.0, 1e-14);
   ASSERT_EQ(out.trimmed.size(), 1U);
@@ -77,12 +75,12 @@ TEST(PlanarOffset, CircleOutwardAndBeyondTheRadius) {
 
 // Checks the offset law's curvature is κ / (1 − dκ) of the ellipse (3 cos t, sin t) to rounding.
 TEST(PlanarOffset, LawOffsetCurvatureIsExact) {
-  const curve::Curve c = curve::Curve::from_law("vec(3*cos(t), sin(t))", "t", {0.0, 2.0 * kPi});
+  const curve::Curve c = curve::Curve::from_law("vec(3*cos(t), sin(t))", "t", {0.0, 2.0 * std::numbers::pi});
   for (double d : {-0.5, 0.2}) {
     const PlanarOffset o = planar_offset(c, d);
     ASSERT_TRUE(o.exact);
     for (int i = 0; i <= 200; ++i) {
-      const double t = 2.0 * kPi * i / 200.0;
+      const double t = 2.0 * std::numbers::pi * i / 200.0;
       const double s = std::sin(t);
       const double k = 3.0 / std::pow(9.0 * s * s + std::cos(t) * std::cos(t), 1.5);
       EXPECT_NEAR(signed_curvature(o.raw.derivatives(t, 2)), k / (1.0 - d * k), 1e-12) << "d=" << d << " t=" << t;
@@ -94,10 +92,11 @@ TEST(PlanarOffset, LawOffsetCurvatureIsExact) {
 // four cusps where κ = 2, two swallowtail crossings on the x axis at x = ±(8/3) cos t*, 1 + 8 sin² t* = 9/4,
 // and one closed trimmed piece with two corners, every point 0.5 from the ellipse.
 TEST(PlanarOffset, EllipseSwallowtailsAreTrimmed) {
-  const curve::Curve c = curve::Curve::from_law("vec(3*cos(t), sin(t))", "t", {0.0, 2.0 * kPi});
+  const curve::Curve c = curve::Curve::from_law("vec(3*cos(t), sin(t))", "t", {0.0, 2.0 * std::numbers::pi});
   const PlanarOffset o = planar_offset(c, 0.5);
   const double sc = std::sqrt((std::pow(1.5, 2.0 / 3.0) - 1.0) / 8.0);
-  const std::vector<double> cusps{std::asin(sc), kPi - std::asin(sc), kPi + std::asin(sc), 2 * kPi - std::asin(sc)};
+  const std::vector<double> cusps{std::asin(sc), std::numbers::pi - std::asin(sc), std::numbers::pi + std::asin(sc),
+                                  2 * std::numbers::pi - std::asin(sc)};
   ASSERT_EQ(o.cusps.size(), 4U);
   for (std::size_t i = 0; i < 4; ++i) EXPECT_NEAR(o.cusps[i], cusps[i], 1e-12);
   const double xc = (8.0 / 3.0) * std::sqrt(1.0 - 1.25 / 8.0);
@@ -155,7 +154,8 @@ TEST(PlanarOffset, ParabolaAgainstClosedForm) {
 // Checks a peanut (two lobes joined by a waist 0.5 wide) offset inwards by 0.35 > 0.25 falls into two closed
 // pieces, one per lobe (the right one runs on through the closure at t = 0), every point 0.35 from the curve.
 TEST(PlanarOffset, PeanutSplitsIntoTwoClosedPieces) {
-  const curve::Curve c = curve::Curve::from_law("vec(2*cos(t), sin(t)*(0.25 + cos(t)^2))", "t", {0.0, 2.0 * kPi});
+  const curve::Curve c =
+      curve::Curve::from_law("vec(2*cos(t), sin(t)*(0.25 + cos(t)^2))", "t", {0.0, 2.0 * std::numbers::pi});
   const PlanarOffset o = planar_offset(c, 0.35);
   ASSERT_EQ(o.trimmed.size(), 2U);
   for (const OffsetPiece& p : o.trimmed) EXPECT_TRUE(p.closed);
@@ -167,7 +167,7 @@ TEST(PlanarOffset, PeanutSplitsIntoTwoClosedPieces) {
 
 // Checks that trimming off returns the raw offset alone, and that bad input is refused naming the input.
 TEST(PlanarOffset, NoTrimAndBadInput) {
-  const curve::Curve c = curve::Curve::from_law("vec(3*cos(t), sin(t))", "t", {0.0, 2.0 * kPi});
+  const curve::Curve c = curve::Curve::from_law("vec(3*cos(t), sin(t))", "t", {0.0, 2.0 * std::numbers::pi});
   OffsetOptions opt;
   opt.trim = false;
   const PlanarOffset o = planar_offset(c, 0.5, opt);
@@ -207,13 +207,13 @@ std::pair<double, double> curvature_torsion(const Vec3& d1, const Vec3& d2, cons
 // in its Frenet frame is ((2 − 0.5 cos 8t) cos t, (2 − 0.5 cos 8t) sin t, 0.5 sin 8t), an exact law curve whose
 // κ and τ equal those of the closed form's derivatives (written out by hand here) to 1e-12.
 TEST(HelicalOffset, CircleGivesTheToroidalHelix) {
-  const curve::Curve c = curve::Curve::from_law("vec(2*cos(t), 2*sin(t))", "t", {0.0, 2.0 * kPi});
+  const curve::Curve c = curve::Curve::from_law("vec(2*cos(t), 2*sin(t))", "t", {0.0, 2.0 * std::numbers::pi});
   const HelicalOffset h = helical_offset(c, "0.5", "8*t");
   ASSERT_TRUE(h.exact);
   EXPECT_EQ(h.curve.kind(), curve::Kind::Law);
   EXPECT_LE(h.deviation, 1e-6);
   for (int i = 0; i <= 200; ++i) {
-    const double t = 2.0 * kPi * i / 200.0;
+    const double t = 2.0 * std::numbers::pi * i / 200.0;
     // ρ = 2 − 0.5 cos 8t and its derivatives; P = (ρ cos t, ρ sin t, 0.5 sin 8t).
     const double r0 = 2 - 0.5 * std::cos(8 * t), r1 = 4 * std::sin(8 * t), r2 = 32 * std::cos(8 * t),
                  r3 = -256 * std::sin(8 * t);

@@ -22,8 +22,6 @@
 namespace hula::intrinsic {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 // Reference values: python3 -c "import mpmath as mp; mp.mp.dps = 40; print(mp.fresnelc(mp.mpf(x)), mp.fresnels(...))"
 // at the double x (mpmath's C, S use the π t²/2 normalisation of A&S 7.3.1–2; C(1) also in A&S Table 7.7).
 constexpr std::array<std::array<double, 3>, 17> kFresnel{{
@@ -65,7 +63,7 @@ TEST(Fresnel, MatchesMpmathTo1e14) {
 
 // checks: the Euler spiral θ = π s²/2 from the origin is (C(s), S(s)) (its definition), to 1e-14.
 TEST(ClothoidSegment, EulerSpiralIsFresnel) {
-  const ClothoidSegment e{.dkappa = kPi, .length = 3.0};
+  const ClothoidSegment e{.dkappa = std::numbers::pi, .length = 3.0};
   for (double s = 0.0; s <= 3.0; s += 0.125) {
     const FresnelValues v = fresnel(s);
     const Vec3 p = e.point(s);
@@ -79,11 +77,11 @@ TEST(ClothoidSegment, EulerSpiralIsFresnel) {
 // κ0/κ′), to 1e-12; and the curvature and angle laws.
 TEST(ClothoidSegment, PointMatchesFresnelClosedForm) {
   const ClothoidSegment c{.start = {1.0, -2.0, 0.0}, .theta0 = 0.7, .kappa0 = -0.4, .dkappa = 0.9, .length = 6.0};
-  const double w = c.theta0 - c.kappa0 * c.kappa0 / (2 * c.dkappa), k = std::sqrt(c.dkappa / kPi);
+  const double w = c.theta0 - c.kappa0 * c.kappa0 / (2 * c.dkappa), k = std::sqrt(c.dkappa / std::numbers::pi);
   const FresnelValues f0 = fresnel(k * c.kappa0 / c.dkappa);
   for (double s = 0.0; s <= c.length; s += 0.25) {
     const FresnelValues f1 = fresnel(k * (s + c.kappa0 / c.dkappa));
-    const double dc = f1.c - f0.c, ds = f1.s - f0.s, scale = std::sqrt(kPi / c.dkappa);
+    const double dc = f1.c - f0.c, ds = f1.s - f0.s, scale = std::sqrt(std::numbers::pi / c.dkappa);
     const Vec3 p = c.point(s);
     EXPECT_NEAR(p.x, 1.0 + scale * (std::cos(w) * dc - std::sin(w) * ds), 1e-12) << s;
     EXPECT_NEAR(p.y, -2.0 + scale * (std::sin(w) * dc + std::cos(w) * ds), 1e-12) << s;
@@ -107,10 +105,10 @@ TEST(ClothoidG1, LineAndCircleClosedForms) {
   EXPECT_NEAR(line.segment.kappa0, 0.0, 1e-12);
   EXPECT_NEAR(line.segment.dkappa, 0.0, 1e-12);
   EXPECT_NEAR(line.segment.length, 5.0, 1e-12);
-  const ClothoidG1Result arc = fit_clothoid_g1({0, 0, 0}, 0.0, {1, 1, 0}, kPi / 2);
+  const ClothoidG1Result arc = fit_clothoid_g1({0, 0, 0}, 0.0, {1, 1, 0}, std::numbers::pi / 2);
   EXPECT_NEAR(arc.segment.kappa0, 1.0, 1e-12);
   EXPECT_NEAR(arc.segment.dkappa, 0.0, 1e-12);
-  EXPECT_NEAR(arc.segment.length, kPi / 2, 1e-12);
+  EXPECT_NEAR(arc.segment.length, std::numbers::pi / 2, 1e-12);
 }
 
 // checks: Bertolazzi–Frego's test configurations (their Clothoids toolbox scripts test_1.m / test_1b.m /
@@ -125,14 +123,14 @@ TEST(ClothoidG1, PublishedConfigurationsAreInterpolated) {
     double t1;
   };
   for (const Case& c : {Case{{0.5, 0, 0}, 1.0, {0.5, 0.5, 0}, 1.0}, Case{{0, 0.1, 0}, 1.571, {0.085, 0.035, 0}, 2.356},
-                        Case{{-2, 3, 0}, kPi / 3, {3, 2, 0}, -kPi / 4}}) {
+                        Case{{-2, 3, 0}, std::numbers::pi / 3, {3, 2, 0}, -std::numbers::pi / 4}}) {
     const ClothoidG1Result r = fit_clothoid_g1(c.p0, c.t0, c.p1, c.t1);
     const ClothoidSegment& s = r.segment;
     ASSERT_GT(s.length, 0.0);
     const IntrinsicCurve ic = s.to_intrinsic();
     EXPECT_LT(distance(ic.evaluate(s.length).position, c.p1), 1e-12 * std::max(1.0, s.length));
-    EXPECT_NEAR(std::remainder(s.angle(s.length) - c.t1, 2 * kPi), 0.0, 1e-12);
-    EXPECT_LT(std::abs(s.angle(s.length) - s.theta0), 2 * kPi);
+    EXPECT_NEAR(std::remainder(s.angle(s.length) - c.t1, 2 * std::numbers::pi), 0.0, 1e-12);
+    EXPECT_LT(std::abs(s.angle(s.length) - s.theta0), 2 * std::numbers::pi);
     EXPECT_LE(r.iterations, 6);
   }
 }
@@ -145,18 +143,18 @@ TEST(ClothoidG1, RecoversKnownClothoids) {
   int checked = 0;
   for (int i = 0; i < 2000; ++i) {
     ClothoidSegment c{.start = {u(rng), u(rng), 0.0},
-                      .theta0 = kPi * u(rng),
+                      .theta0 = std::numbers::pi * u(rng),
                       .kappa0 = 1.5 * u(rng),
                       .dkappa = 2.0 * u(rng),
                       .length = 0.2 + std::abs(u(rng))};
     // Stay where the G1 solution is the one with the smaller turning: the angle varies by less than π/2
     // from the chord's direction at both ends.
     const double turn = c.angle(c.length) - c.theta0;
-    if (std::abs(turn) > kPi / 2) continue;
+    if (std::abs(turn) > std::numbers::pi / 2) continue;
     const Vec3 end = c.point(c.length);
     const double chord = std::atan2(end.y - c.start.y, end.x - c.start.x);
-    if (std::abs(std::remainder(c.theta0 - chord, 2 * kPi)) > kPi / 2 ||
-        std::abs(std::remainder(c.angle(c.length) - chord, 2 * kPi)) > kPi / 2)
+    if (std::abs(std::remainder(c.theta0 - chord, 2 * std::numbers::pi)) > std::numbers::pi / 2 ||
+        std::abs(std::remainder(c.angle(c.length) - chord, 2 * std::numbers::pi)) > std::numbers::pi / 2)
       continue;
     ++checked;
     const ClothoidG1Result r = fit_clothoid_g1(c.start, c.theta0, end, c.angle(c.length));
@@ -186,8 +184,8 @@ TEST(ClothoidG2, PublishedDataJoinG2AndMeetTheEnd) {
     Vec3 p1;
     double t1, k1;
   };
-  for (const Case& c : {Case{{-2, 3, 0}, kPi / 3, -0.2, {3, 2, 0}, -kPi / 4, 0.5},
-                        Case{{-1, 0, 0}, 0.9 * kPi, 0.2, {1, 0, 0}, -1.001 * kPi, 0.2},
+  for (const Case& c : {Case{{-2, 3, 0}, std::numbers::pi / 3, -0.2, {3, 2, 0}, -std::numbers::pi / 4, 0.5},
+                        Case{{-1, 0, 0}, 0.9 * std::numbers::pi, 0.2, {1, 0, 0}, -1.001 * std::numbers::pi, 0.2},
                         Case{{0, 0, 0}, 0.0, 2.0, {4, 1, 0}, 0.0, -3.0}}) {
     const ClothoidG2Result r = fit_clothoid_g2(c.p0, c.t0, c.k0, c.p1, c.t1, c.k1);
     for (const ClothoidSegment& s : r.segments) EXPECT_GT(s.length, 0.0);
@@ -203,7 +201,8 @@ TEST(ClothoidG2, ReproducesASingleClothoid) {
   for (const ClothoidSegment& c :
        {ClothoidSegment{.start = {1, -2, 0}, .theta0 = 0.7, .kappa0 = -0.4, .dkappa = 0.9, .length = 3.0},
         ClothoidSegment{.start = {0, 0, 0}, .theta0 = 0.0, .kappa0 = 0.5, .dkappa = -0.3, .length = 2.5},
-        ClothoidSegment{.start = {5, 5, 0}, .theta0 = -2.0, .kappa0 = 0.0, .dkappa = kPi, .length = 1.0}}) {
+        ClothoidSegment{
+            .start = {5, 5, 0}, .theta0 = -2.0, .kappa0 = 0.0, .dkappa = std::numbers::pi, .length = 1.0}}) {
     const double a = 0.1 * c.length, b = 0.9 * c.length;
     const ClothoidG2Result r =
         fit_clothoid_g2(c.point(a), c.angle(a), c.curvature(a), c.point(b), c.angle(b), c.curvature(b));
@@ -224,13 +223,15 @@ TEST(ClothoidG2, CircularArcHasConstantCurvature) {
   const double radius = 2.0, a0 = -0.3, a1 = 2.2;
   const Vec3 centre{1, -1, 0};
   const auto on = [&](double a) { return centre + radius * Vec3{std::cos(a), std::sin(a), 0.0}; };
-  const ClothoidG2Result r = fit_clothoid_g2(on(a0), a0 + kPi / 2, 1.0 / radius, on(a1), a1 + kPi / 2, 1.0 / radius);
+  const ClothoidG2Result r =
+      fit_clothoid_g2(on(a0), a0 + std::numbers::pi / 2, 1.0 / radius, on(a1), a1 + std::numbers::pi / 2, 1.0 / radius);
   for (const ClothoidSegment& s : r.segments) {
     EXPECT_NEAR(s.kappa0, 0.5, 1e-12);
     EXPECT_NEAR(s.dkappa, 0.0, 1e-12);
   }
   EXPECT_NEAR(r.length(), radius * (a1 - a0), 1e-10);
-  EXPECT_LT(testing::g2_violation(r, on(a0), a0 + kPi / 2, 0.5, on(a1), a1 + kPi / 2, 0.5), 1e-10);
+  EXPECT_LT(testing::g2_violation(r, on(a0), a0 + std::numbers::pi / 2, 0.5, on(a1), a1 + std::numbers::pi / 2, 0.5),
+            1e-10);
 }
 
 // checks: bad input is refused, naming it: coincident points, NaN curvature and angle, options out of range,
@@ -272,7 +273,7 @@ JointGaps joint_gaps(const ClothoidSplineResult& r, const std::vector<Vec3>& poi
     if (i + 1 == m && !closed) break;
     const ClothoidSegment& b = r.segments[(i + 1) % m];
     g.position = std::max(g.position, distance(end, b.start));
-    g.angle = std::max(g.angle, std::abs(std::remainder(a.angle(a.length) - b.theta0, 2 * kPi)));
+    g.angle = std::max(g.angle, std::abs(std::remainder(a.angle(a.length) - b.theta0, 2 * std::numbers::pi)));
     g.curvature = std::max(g.curvature, std::abs(a.curvature(a.length) - b.kappa0));
   }
   return g;
@@ -284,7 +285,7 @@ std::vector<Vec3> loop_points(std::mt19937& rng, int n) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   std::vector<Vec3> p;
   for (int i = 0; i < n; ++i) {
-    const double t = 2 * kPi * (i + 0.3 * u(rng)) / n, rho = 1.0 + 0.3 * u(rng);
+    const double t = 2 * std::numbers::pi * (i + 0.3 * u(rng)) / n, rho = 1.0 + 0.3 * u(rng);
     p.push_back({rho * std::cos(t), rho * std::sin(t), 0.0});
   }
   return p;
@@ -293,7 +294,7 @@ std::vector<Vec3> loop_points(std::mt19937& rng, int n) {
 std::vector<Vec3> walk_points(std::mt19937& rng, int n) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   std::vector<Vec3> p{{0, 0, 0}};
-  double heading = kPi * u(rng);
+  double heading = std::numbers::pi * u(rng);
   for (int i = 1; i < n; ++i) {
     heading += u(rng);
     const double step = 1.0 + 0.5 * u(rng);
@@ -351,7 +352,7 @@ TEST(ClothoidSpline, PointsOnACircleGiveTheCircle) {
         EXPECT_NEAR(s.kappa0, 1.0 / radius, 1e-11) << closed << continuity;
         EXPECT_NEAR(s.dkappa, 0.0, 1e-11) << closed << continuity;
       }
-      EXPECT_NEAR(r.length(), radius * (closed ? 2 * kPi : at.back()), 1e-10) << closed << continuity;
+      EXPECT_NEAR(r.length(), radius * (closed ? 2 * std::numbers::pi : at.back()), 1e-10) << closed << continuity;
     }
 }
 
@@ -366,7 +367,7 @@ TEST(ClothoidSpline, GivenEndAnglesAndAClosedListRepeatingItsStart) {
   const ClothoidSplineResult r = fit_clothoid_spline(pts, o);
   EXPECT_DOUBLE_EQ(r.segments.front().theta0, 0.3);
   const ClothoidSegment& last = r.segments.back();
-  EXPECT_LT(std::abs(std::remainder(last.angle(last.length) + 2.0, 2 * kPi)), 1e-12);
+  EXPECT_LT(std::abs(std::remainder(last.angle(last.length) + 2.0, 2 * std::numbers::pi)), 1e-12);
   const JointGaps g = joint_gaps(r, pts, false, 1);
   EXPECT_LT(std::max({g.position, g.angle, g.curvature, g.interpolation}), 1e-9);
 
@@ -388,7 +389,7 @@ TEST(ClothoidSpline, GivenEndCurvaturesReproduceCirclesAndClothoids) {
   std::vector<Vec3> arc;
   for (const double t : {0.2, 0.9, 1.3, 2.2, 2.8, 3.9})
     arc.push_back({radius * std::cos(t), radius * std::sin(t), 0.0});
-  const double tangent_end = 3.9 + kPi / 2;
+  const double tangent_end = 3.9 + std::numbers::pi / 2;
   for (int variant = 0; variant < 4; ++variant) {
     ClothoidSplineOptions o;
     if (variant != 1) o.start_curvature = 1.0 / radius;  // 0: both ends, 1: end only, 2: start only
@@ -437,12 +438,13 @@ TEST(ClothoidSpline, GivenEndCurvaturesReproduceCirclesAndClothoids) {
   // Two points with both angles and both curvatures: the G2 Hermite problem, fit_clothoid_g2's three arcs.
   const std::vector<Vec3> two{{-2, 3, 0}, {3, 2, 0}};
   o = {};
-  o.start_angle = kPi / 3;
+  o.start_angle = std::numbers::pi / 3;
   o.start_curvature = -0.2;
-  o.end_angle = -kPi / 4;
+  o.end_angle = -std::numbers::pi / 4;
   o.end_curvature = 0.5;
   const ClothoidSplineResult h = fit_clothoid_spline(two, o);
-  const ClothoidG2Result direct = fit_clothoid_g2(two[0], kPi / 3, -0.2, two[1], -kPi / 4, 0.5);
+  const ClothoidG2Result direct =
+      fit_clothoid_g2(two[0], std::numbers::pi / 3, -0.2, two[1], -std::numbers::pi / 4, 0.5);
   ASSERT_EQ(h.segments.size(), 3U);
   for (std::size_t i = 0; i < 3; ++i) {
     EXPECT_EQ(h.segments[i].kappa0, direct.segments[i].kappa0);
@@ -488,7 +490,7 @@ TEST(ClothoidSpline, ZigzagsConvergeOrAreRefusedNamingThePoints) {
     if (given)
       for (const ClothoidSegment& s : r.segments) {
         EXPECT_NEAR(s.kappa0, -s.curvature(s.length), 1e-9);
-        EXPECT_NEAR(std::remainder(s.theta0, 2 * kPi), 0.0, 1e-9);
+        EXPECT_NEAR(std::remainder(s.theta0, 2 * std::numbers::pi), 0.0, 1e-9);
       }
   }
   std::mt19937 rng(2626);
@@ -576,18 +578,19 @@ TEST(ClothoidSpline, RefusesBadInputNamingIt) {
 // and at p1; the joint tangent is −(φ0 + φ1)/2 from the chord and perpendicular to both radii there.
 TEST(Biarc, ClosedFormsOfTheEqualChordBiarc) {
   std::mt19937 rng(404);
-  std::uniform_real_distribution<double> ang(-0.95 * kPi, 0.95 * kPi), pos(-3.0, 3.0);
+  std::uniform_real_distribution<double> ang(-0.95 * std::numbers::pi, 0.95 * std::numbers::pi), pos(-3.0, 3.0);
   for (int trial = 0; trial < 200; ++trial) {
     const Vec3 p0{pos(rng), pos(rng), 0.0}, p1{pos(rng), pos(rng), 0.0};
     const double t0 = ang(rng), t1 = ang(rng);
     const std::array<ClothoidSegment, 2> b = fit_biarc(p0, t0, p1, t1);
     const double d = distance(p0, p1), chord = std::atan2(p1.y - p0.y, p1.x - p0.x);
-    const double phi0 = std::remainder(t0 - chord, 2 * kPi), phi1 = std::remainder(t1 - chord, 2 * kPi);
+    const double phi0 = std::remainder(t0 - chord, 2 * std::numbers::pi),
+                 phi1 = std::remainder(t1 - chord, 2 * std::numbers::pi);
     const double a = d / (2 * std::cos((phi1 - phi0) / 4));
     const Vec3 joint = b[1].start;
     EXPECT_NEAR(distance(joint, p0), a, 1e-12 * (1 + a)) << trial;
     EXPECT_NEAR(distance(joint, p1), a, 1e-12 * (1 + a)) << trial;
-    EXPECT_NEAR(std::remainder(b[1].theta0 - chord + (phi0 + phi1) / 2, 2 * kPi), 0.0, 1e-12) << trial;
+    EXPECT_NEAR(std::remainder(b[1].theta0 - chord + (phi0 + phi1) / 2, 2 * std::numbers::pi), 0.0, 1e-12) << trial;
     for (int k = 0; k < 2; ++k) {
       const ClothoidSegment& s = b[k];
       EXPECT_EQ(s.dkappa, 0.0);
@@ -602,8 +605,8 @@ TEST(Biarc, ClosedFormsOfTheEqualChordBiarc) {
         EXPECT_NEAR((radial.x * std::cos(te) + radial.y * std::sin(te)) * std::abs(s.kappa0), 0.0, 1e-10) << trial;
       }
     }
-    EXPECT_NEAR(std::remainder(b[0].angle(b[0].length) - b[1].theta0, 2 * kPi), 0.0, 1e-14);
-    EXPECT_NEAR(std::remainder(b[1].angle(b[1].length) - t1, 2 * kPi), 0.0, 1e-12);
+    EXPECT_NEAR(std::remainder(b[0].angle(b[0].length) - b[1].theta0, 2 * std::numbers::pi), 0.0, 1e-14);
+    EXPECT_NEAR(std::remainder(b[1].angle(b[1].length) - t1, 2 * std::numbers::pi), 0.0, 1e-12);
   }
   // On one circle (φ1 = −φ0) both arcs have κ = −2 sin φ0 / d; φ0 = φ1 = 0 is the chord.
   const std::array<ClothoidSegment, 2> c = fit_biarc({0, 0, 0}, 0.4, {2, 0, 0}, -0.4);

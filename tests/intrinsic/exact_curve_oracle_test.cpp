@@ -29,8 +29,6 @@
 namespace hula::intrinsic {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 // Fresnel integrals C(x) + i S(x) by their Maclaurin series in long double (A&S 7.3.11, 7.3.13):
 // C = Σ (−1)^n (π/2)^(2n) x^(4n+1)/((2n)! (4n+1)), S = Σ (−1)^n (π/2)^(2n+1) x^(4n+3)/((2n+1)! (4n+3)).
 std::complex<long double> fresnel_series(long double x) {
@@ -233,7 +231,7 @@ TEST(ExactCurve, HelixFrameAndDerivatives) {
       const std::vector<Vec3> r = c.derivatives(ts[i], 6);
       for (int order = 1; order <= 6; ++order) {
         // d^k/ds^k of (a cos φ, a sin φ, bφ): a/k^k (cos(φ + kπ/2), sin(φ + kπ/2), 0), plus (0, 0, b/k) for k = 1.
-        const double g = a / std::pow(k, order), q = phi + order * kPi / 2;
+        const double g = a / std::pow(k, order), q = phi + order * std::numbers::pi / 2;
         const Vec3 want = local(Vec3{g * std::cos(q), g * std::sin(q), order == 1 ? b / k : 0.0});
         EXPECT_LT(distance(r[static_cast<std::size_t>(order)], want), 1e-9) << "order " << order;
       }
@@ -272,7 +270,7 @@ TEST(ExactCurve, FeaturesAtTheLawsRoots) {
   const std::vector<diffgeom::Feature> torsion = diffgeom::torsion_extrema(natural_curve(d, 1e-6));
   ASSERT_EQ(torsion.size(), 1U);
   EXPECT_EQ(torsion[0].kind, diffgeom::FeatureKind::TorsionMaximum);
-  EXPECT_NEAR(torsion[0].t, kPi / 2, 1e-8);
+  EXPECT_NEAR(torsion[0].t, std::numbers::pi / 2, 1e-8);
 }
 
 // checks: the curvature fins of a log-aesthetic curve stand κ·scale from the curve, κ the closed form (1e-12).

@@ -44,7 +44,7 @@ double frame_defect(const FramePoint& p) {
 }
 
 // Circular helix r(s) = (a cos(s/c), a sin(s/c), b s/c), c = sqrt(a² + b²).
-struct Helix {
+struct HelixOfNaturalEquations {
   double a, b;
   [[nodiscard]] double c() const { return std::sqrt(a * a + b * b); }
   [[nodiscard]] Vec3 position(double s) const { return {a * std::cos(s / c()), a * std::sin(s / c()), b * s / c()}; }
@@ -76,7 +76,7 @@ TEST(NaturalEquationsOracle, CircleBothMethods) {
 // checks: constant κ, τ from a = 2, b = 0.7 give the circular helix (position and frame) to 1e-9 over 3 turns.
 TEST(NaturalEquationsOracle, HelixMatchesClosedForm) {
   Laws l;
-  const Helix h{2.0, 0.7};
+  const HelixOfNaturalEquations h{2.0, 0.7};
   const double k = h.a / (h.c() * h.c()), t = h.b / (h.c() * h.c());
   const double L = 3.0 * 2.0 * std::numbers::pi * h.c();
   const StartFrame start{h.position(0), h.tangent(0), h.normal(0)};
@@ -95,7 +95,7 @@ TEST(NaturalEquationsOracle, HelixMatchesClosedForm) {
 
 // Fresnel integrals C(z) = ∫0^z cos(πt²/2) dt, S(z) = ∫0^z sin(πt²/2) dt by their power series
 // in long double (terms (π/2)^k z^(2k+1) / (k! (2k+1)) with alternating signs per parity).
-std::array<long double, 2> fresnel(long double z) {
+std::array<long double, 2> fresnel_cs(long double z) {
   const long double x = std::numbers::pi_v<long double> / 2.0L * z * z;
   long double c = 0.0L, s = 0.0L, term = z;  // term_k = x^k z / k!
   for (int k = 0; k < 200; ++k) {
@@ -129,7 +129,7 @@ TEST(NaturalEquationsOracle, EulerSpiralMatchesFresnel) {
   const long double scale = a * std::sqrt(std::numbers::pi_v<long double>);
   for (int i = 0; i <= 80; ++i) {
     const double s = L * i / 80.0;
-    const auto f = fresnel(s / scale);
+    const auto f = fresnel_cs(s / scale);
     const Vec3 exact{static_cast<double>(scale * f[0]), static_cast<double>(scale * f[1]), 0.0};
     EXPECT_LT(distance(c.evaluate(s).position, exact), 1e-9) << "s = " << s;
   }
@@ -249,7 +249,7 @@ TEST(NaturalEquationsOracle, ToleranceIsHonoured) {
 // curve, started from a rotated and translated frame, equals the rigidly moved helix to 1e-9.
 TEST(NaturalEquationsOracle, RoundTripHelixUpToRigidMotion) {
   Laws l;
-  const Helix h{1.5, 0.4};
+  const HelixOfNaturalEquations h{1.5, 0.4};
   // r(t) with t = s/c, and κ = |r'×r''|/|r'|³, τ = (r'×r'')·r'''/|r'×r''|² as laws of s.
   const Law s = l.ctx.parameter("s");
   const Law r = law::vec(1.5 * law::cos(s / h.c()), 1.5 * law::sin(s / h.c()), 0.4 * s / h.c());
@@ -302,7 +302,7 @@ TEST(NaturalEquationsOracle, FittedNurbsCarriesThePrescribedCurvatureAndTorsion)
 // checks: the fitted NURBS of a 2-turn helix stays within its tolerance when re-measured against the closed form.
 TEST(NaturalEquationsOracle, FittedNurbsWithinTolerance) {
   Laws l;
-  const Helix h{1.0, 0.3};
+  const HelixOfNaturalEquations h{1.0, 0.3};
   const double L = 2.0 * 2.0 * std::numbers::pi * h.c();
   const StartFrame start{h.position(0), h.tangent(0), h.normal(0)};
   const IntrinsicCurve c =

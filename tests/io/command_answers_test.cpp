@@ -31,20 +31,18 @@
 namespace hula::io {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 // Closed forms of a circle of radius 3: length 6π, ∫κ² ds = 2π/3, ∫(dκ/ds)² ds = 0, planar, weights √½.
 TEST(CurveQueries, CircleHasItsClosedForms) {
   const nurbs::NurbsCurve c = testing::rational_circle(3.0);
   const Json d = curve_description_json(c);
-  EXPECT_NEAR(d["length"].get<double>(), 6 * kPi, 1e-9);
+  EXPECT_NEAR(d["length"].get<double>(), 6 * std::numbers::pi, 1e-9);
   EXPECT_TRUE(d["rational"].get<bool>());
   EXPECT_TRUE(d["planarity"]["planar"].get<bool>());
   EXPECT_NEAR(d["weights"][1].get<double>(), std::sqrt(0.5), 1e-15);
   const Json m = curve_description_with_maximum_curvature_json(c);
   EXPECT_NEAR(m["maximum_curvature"]["value"].get<double>(), 1.0 / 3.0, 1e-9);
   const Json e = energy_answer(curve::Curve(c));
-  EXPECT_NEAR(e["bending"]["value"].get<double>(), 2 * kPi / 3.0, 1e-8);
+  EXPECT_NEAR(e["bending"]["value"].get<double>(), 2 * std::numbers::pi / 3.0, 1e-8);
   EXPECT_NEAR(e["curvature_variation"]["value"].get<double>(), 0.0, 1e-12);
 }
 

@@ -22,8 +22,6 @@
 namespace hula::law {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 double dense_deviation(const nurbs::NurbsCurve& c, const std::function<Vec3(double)>& exact, double a, double b) {
   double m = 0;
   for (int i = 0; i <= 20000; ++i) {
@@ -36,20 +34,20 @@ double dense_deviation(const nurbs::NurbsCurve& c, const std::function<Vec3(doub
 // checks: helix vec(2cos t, 2sin t, 0.5t) on [0, 4π] within 1e-6 against the closed form by dense sampling.
 TEST(LawConvert, HelixWithinTolerance) {
   Context ctx;
-  const ToNurbsResult r = to_nurbs(parse("vec(2*cos(t), 2*sin(t), 0.5*t)", ctx), "t", 0, 4 * kPi);
+  const ToNurbsResult r = to_nurbs(parse("vec(2*cos(t), 2*sin(t), 0.5*t)", ctx), "t", 0, 4 * std::numbers::pi);
   EXPECT_LE(r.max_deviation, 1e-6);
   const double dev = dense_deviation(
       r.curve,
       [](double t) {
         return Vec3{2 * std::cos(t), 2 * std::sin(t), 0.5 * t};
       },
-      0, 4 * kPi);
+      0, 4 * std::numbers::pi);
   EXPECT_LE(dev, 1e-6);
   EXPECT_EQ(r.curve.degree(), 5);
   EXPECT_EQ(r.control_points, r.curve.control_points().size());
   EXPECT_EQ(r.control_points, 3 * (r.segments + 1));
   EXPECT_DOUBLE_EQ(r.curve.domain().start, 0.0);
-  EXPECT_DOUBLE_EQ(r.curve.domain().end, 4 * kPi);
+  EXPECT_DOUBLE_EQ(r.curve.domain().end, 4 * std::numbers::pi);
   RecordProperty("helix_control_points", static_cast<int>(r.control_points));
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.3g", dev);
@@ -60,14 +58,14 @@ TEST(LawConvert, HelixWithinTolerance) {
 TEST(LawConvert, TrefoilWithinTolerance) {
   Context ctx;
   const ToNurbsResult r =
-      to_nurbs(parse("vec(sin(t) + 2*sin(2*t), cos(t) - 2*cos(2*t), -sin(3*t))", ctx), "t", 0, 2 * kPi);
+      to_nurbs(parse("vec(sin(t) + 2*sin(2*t), cos(t) - 2*cos(2*t), -sin(3*t))", ctx), "t", 0, 2 * std::numbers::pi);
   EXPECT_LE(r.max_deviation, 1e-6);
   const double dev = dense_deviation(
       r.curve,
       [](double t) {
         return Vec3{std::sin(t) + 2 * std::sin(2 * t), std::cos(t) - 2 * std::cos(2 * t), -std::sin(3 * t)};
       },
-      0, 2 * kPi);
+      0, 2 * std::numbers::pi);
   EXPECT_LE(dev, 1e-6);
   RecordProperty("trefoil_control_points", static_cast<int>(r.control_points));
   char buf[32];
@@ -202,8 +200,8 @@ TEST(LawConvert, Errors) {
 // checked against the closed form |t − 1| at dense samples.
 TEST(LawConvert, JumpsAreRefusedKinksAreFollowed) {
   Context ctx;
-  HULA_EXPECT_ERROR(to_nurbs(parse("vec(2 - cos(t) < 2*sin(t), 0.5*t)", ctx), "t", 0, 4 * kPi), Errc::NumericalFailure,
-                    "not continuous near t = ");
+  HULA_EXPECT_ERROR(to_nurbs(parse("vec(2 - cos(t) < 2*sin(t), 0.5*t)", ctx), "t", 0, 4 * std::numbers::pi),
+                    Errc::NumericalFailure, "not continuous near t = ");
   const ToNurbsResult kink = to_nurbs(parse("vec(t, abs(t - 1))", ctx), "t", 0, 2);
   EXPECT_LE(kink.max_deviation, 1e-6);
   EXPECT_LE(dense_deviation(

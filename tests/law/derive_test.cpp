@@ -23,7 +23,7 @@ namespace {
 using test::eval;
 using test::eval1;
 
-struct Case {
+struct DeriveCase {
   const char* name;
   std::function<Law(const Law&)> build;
   std::function<double(double)> derivative;  // closed form d/dt
@@ -32,7 +32,7 @@ struct Case {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
-std::vector<Case> cases() {
+std::vector<DeriveCase> cases() {
   // u(t) = 0.3 + 0.5 t inside each function exercises the chain rule too.
   auto u = [](double t) { return 0.3 + 0.5 * t; };
   return {
@@ -106,7 +106,7 @@ std::vector<Case> cases() {
 
 // checks: d/dt of every supported function and operator against its closed form (1e-13 relative).
 TEST(LawDerive, MatchesClosedForms) {
-  for (const Case& c : cases()) {
+  for (const DeriveCase& c : cases()) {
     Context ctx;
     const Law t = ctx.parameter("t");
     const Law f = c.build(t);
@@ -139,7 +139,7 @@ Fd central(const Law& g, double x, double h) {
 // checks: first and second derivatives against central finite differences within their error bound.
 TEST(LawDerive, MatchesFiniteDifferencesWithinBound) {
   const double h = 1e-4;
-  for (const Case& c : cases()) {
+  for (const DeriveCase& c : cases()) {
     Context ctx;
     const Law t = ctx.parameter("t");
     const Law f = c.build(t);

@@ -18,8 +18,6 @@
 namespace hula::law {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 void expect_integral(const char* text, double a, double b, double want) {
   SCOPED_TRACE(text);
   Context ctx;
@@ -31,7 +29,7 @@ void expect_integral(const char* text, double a, double b, double want) {
 
 // checks: helix arc length ∫|r'| = sqrt(4 + 0.25)·L against the closed form.
 TEST(LawIntegrate, HelixArcLength) {
-  const double L = 4 * kPi;
+  const double L = 4 * std::numbers::pi;
   expect_integral("norm(vec(-2*sin(t), 2*cos(t), 0.5))", 0, L, std::sqrt(4.25) * L);
   Context ctx;
   const Law r = parse("vec(2*cos(t), 2*sin(t), 0.5*t)", ctx);
@@ -47,8 +45,8 @@ TEST(LawIntegrate, ClosedForms) {
   expect_integral("t^5 - 2*t", -1, 2, (64.0 - 1) / 6 - (4.0 - 1));
   expect_integral("sin(pi*t^2/2)", 0, 1, 0.43825914739035476607);  // Fresnel S(1)
   expect_integral("cos(pi*t^2/2)", 0, 1, 0.77989340037682282947);  // Fresnel C(1)
-  expect_integral("exp(-t^2)", 0, 2, std::sqrt(kPi) / 2 * std::erf(2.0));
-  expect_integral("1/(1+t^2)", 0, 1, kPi / 4);
+  expect_integral("exp(-t^2)", 0, 2, std::sqrt(std::numbers::pi) / 2 * std::erf(2.0));
+  expect_integral("1/(1+t^2)", 0, 1, std::numbers::pi / 4);
 }
 
 // checks: kinks and switches are split so ∫|t − 0.3| and a piecewise law reach 1e-12; a > b negates.

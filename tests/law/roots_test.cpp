@@ -16,8 +16,6 @@
 namespace hula::law {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 void expect_roots(const char* text, double a, double b, std::vector<double> want, double tol = 1e-12) {
   SCOPED_TRACE(text);
   testing::FpeGuard guard;
@@ -41,13 +39,18 @@ TEST(LawRoots, Polynomials) {
 
 // checks: trigonometric roots against kπ/ω, arcsin values, and double roots of cos².
 TEST(LawRoots, Trigonometric) {
-  expect_roots("sin(t)", 0.5, 20, {kPi, 2 * kPi, 3 * kPi, 4 * kPi, 5 * kPi, 6 * kPi});
+  expect_roots("sin(t)", 0.5, 20,
+               {std::numbers::pi, 2 * std::numbers::pi, 3 * std::numbers::pi, 4 * std::numbers::pi,
+                5 * std::numbers::pi, 6 * std::numbers::pi});
   std::vector<double> w;
-  for (int k = 0; k <= 9; ++k) w.push_back(k * kPi / 10);
+  for (int k = 0; k <= 9; ++k) w.push_back(k * std::numbers::pi / 10);
   expect_roots("sin(10*t)", 0, 3, w, 1e-12);
-  expect_roots("sin(t) - 0.5", 0, 10, {kPi / 6, 5 * kPi / 6, 2 * kPi + kPi / 6, 2 * kPi + 5 * kPi / 6});
-  expect_roots("cos(t)^2", 0, 7, {kPi / 2, 3 * kPi / 2}, 1e-7);
-  expect_roots("sin(t)*cos(3*t)", 0.1, 3.2, {kPi / 6, kPi / 2, 5 * kPi / 6, kPi});
+  expect_roots("sin(t) - 0.5", 0, 10,
+               {std::numbers::pi / 6, 5 * std::numbers::pi / 6, 2 * std::numbers::pi + std::numbers::pi / 6,
+                2 * std::numbers::pi + 5 * std::numbers::pi / 6});
+  expect_roots("cos(t)^2", 0, 7, {std::numbers::pi / 2, 3 * std::numbers::pi / 2}, 1e-7);
+  expect_roots("sin(t)*cos(3*t)", 0.1, 3.2,
+               {std::numbers::pi / 6, std::numbers::pi / 2, 5 * std::numbers::pi / 6, std::numbers::pi});
 }
 
 // checks: undefined regions are skipped; the defined root is still found.
@@ -59,11 +62,11 @@ TEST(LawRoots, SkipsUndefinedRegions) {
 // checks: extrema of sin on [0, 2π] and of t³ − 3t against the closed forms, with kinds and globals.
 TEST(LawRoots, Extrema) {
   Context ctx;
-  const ExtremaResult s = extrema(parse("sin(t)", ctx), "t", 0, 2 * kPi);
+  const ExtremaResult s = extrema(parse("sin(t)", ctx), "t", 0, 2 * std::numbers::pi);
   ASSERT_EQ(s.points.size(), 4U);
-  EXPECT_NEAR(s.points[1].t, kPi / 2, 1e-12);
+  EXPECT_NEAR(s.points[1].t, std::numbers::pi / 2, 1e-12);
   EXPECT_EQ(s.points[1].kind, ExtremumKind::Maximum);
-  EXPECT_NEAR(s.points[2].t, 3 * kPi / 2, 1e-12);
+  EXPECT_NEAR(s.points[2].t, 3 * std::numbers::pi / 2, 1e-12);
   EXPECT_EQ(s.points[2].kind, ExtremumKind::Minimum);
   EXPECT_NEAR(s.maximum.value, 1.0, 1e-15);
   EXPECT_NEAR(s.minimum.value, -1.0, 1e-15);

@@ -17,7 +17,7 @@
 namespace hula::nurbs {
 namespace {
 
-NurbsCurve translated(const NurbsCurve& c, const Vec3& d) {
+NurbsCurve shifted_by(const NurbsCurve& c, const Vec3& d) {
   std::vector<Vec3> P(c.control_points().begin(), c.control_points().end());
   for (Vec3& p : P) p += d;
   const auto U = c.knots().values();
@@ -45,7 +45,7 @@ TEST(Deviation, TranslationIsMeasuredExactlyPerAxis) {
   Rng rng(9);
   const NurbsCurve c = testing::random_curve(rng, {});
   const Vec3 d{3, -4, 12};
-  const DeviationResult r = deviation(c, translated(c, d), {.samples = 257});
+  const DeviationResult r = deviation(c, shifted_by(c, d), {.samples = 257});
   EXPECT_NEAR(r.max, 13.0, 1e-12);
   EXPECT_NEAR(r.mean, 13.0, 1e-12);
   EXPECT_NEAR(r.rms, 13.0, 1e-12);

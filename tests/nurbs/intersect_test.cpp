@@ -20,8 +20,6 @@
 namespace hula::nurbs {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 NurbsCurve translated(const NurbsCurve& c, const Vec3& v) {
   std::vector<Vec3> P(c.control_points().begin(), c.control_points().end());
   for (Vec3& p : P) p += v;
@@ -49,7 +47,7 @@ TEST(Intersect, CircleAndSecantCrossTwice) {
   for (const CurveIntersection& p : r.points) {
     EXPECT_NEAR(p.point.y, 0.5, 1e-14);
     EXPECT_EQ(p.kind, IntersectionKind::Crossing);
-    EXPECT_NEAR(p.angle, kPi / 3, 1e-12);
+    EXPECT_NEAR(p.angle, std::numbers::pi / 3, 1e-12);
     EXPECT_LE(p.distance, 1e-14);
   }
 }
@@ -153,7 +151,7 @@ TEST(Intersect, EndOnCurve) {
   EXPECT_EQ(r.points[0].s, 1.0);
   EXPECT_LT(distance(r.points[0].point, {1, 0, 0}), 1e-14);
   EXPECT_EQ(r.points[0].kind, IntersectionKind::Crossing);
-  EXPECT_NEAR(r.points[0].angle, kPi / 2, 1e-12);
+  EXPECT_NEAR(r.points[0].angle, std::numbers::pi / 2, 1e-12);
 }
 
 // checks: y = x³ (a cubic Bézier) crosses its inflection tangent y = 0 once at the origin, tangentially,
@@ -231,7 +229,7 @@ TEST(SelfIntersect, ClosedCurvesAndFigureEight) {
   // A lemniscate-like closed curve through the origin twice, interpolated (periodic by repeating the start).
   std::vector<Vec3> P;
   for (int k = 0; k <= 16; ++k) {
-    const double th = 2 * kPi * k / 16.0;
+    const double th = 2 * std::numbers::pi * k / 16.0;
     P.push_back({std::sin(th), std::sin(th) * std::cos(th), 0});
   }
   // Symmetric under (x, y) → (−x, −y) and (x, −y) → mirror: the self-crossing is at the origin.

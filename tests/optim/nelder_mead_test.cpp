@@ -19,14 +19,14 @@
 namespace hula::optim {
 namespace {
 
-double rosenbrock(std::span<const double> x) {
+double rosenbrock_value(std::span<const double> x) {
   return 100.0 * (x[1] - x[0] * x[0]) * (x[1] - x[0] * x[0]) + (1.0 - x[0]) * (1.0 - x[0]);
 }
 
 // checks: Rosenbrock from the classic start (-1.2, 1) reaches its minimum (1, 1), f = 0
 TEST(OptimNelderMead, RosenbrockReachesKnownMinimum) {
   const std::vector<double> start{-1.2, 1.0};
-  const NelderMeadResult r = nelder_mead(rosenbrock, start);
+  const NelderMeadResult r = nelder_mead(rosenbrock_value, start);
   EXPECT_EQ(r.report.termination, Termination::Converged) << r.report.message;
   EXPECT_NEAR(r.x[0], 1.0, 1e-7);
   EXPECT_NEAR(r.x[1], 1.0, 1e-7);
@@ -69,7 +69,7 @@ TEST(OptimNelderMead, BudgetStops) {
   NelderMeadOptions o;
   o.max_evaluations = 20;
   const std::vector<double> start{-1.2, 1.0};
-  const NelderMeadResult r = nelder_mead(rosenbrock, start, o);
+  const NelderMeadResult r = nelder_mead(rosenbrock_value, start, o);
   EXPECT_EQ(r.report.termination, Termination::MaxEvaluations) << r.report.message;
   EXPECT_LE(r.report.evaluations, 22u);  // the last iteration may add its reflection and expansion
   EXPECT_NE(r.report.message.find("max_evaluations = 20"), std::string::npos) << r.report.message;
@@ -83,11 +83,11 @@ TEST(OptimNelderMead, CancelledBeforeTheFirstIteration) {
   NelderMeadOptions o;
   o.cancel = &token;
   const std::vector<double> start{-1.2, 1.0};
-  const NelderMeadResult r = nelder_mead(rosenbrock, start, o);
+  const NelderMeadResult r = nelder_mead(rosenbrock_value, start, o);
   EXPECT_EQ(r.report.termination, Termination::Cancelled) << r.report.message;
   EXPECT_EQ(r.report.generations, 0u);
   EXPECT_EQ(r.report.evaluations, 3u);  // the start and the two other simplex vertices
-  EXPECT_LE(r.value, rosenbrock(start));
+  EXPECT_LE(r.value, rosenbrock_value(start));
 }
 
 // checks: an objective that sleeps 1 ms per call against a 1 µs wall-time limit: the limit has passed
@@ -97,7 +97,7 @@ TEST(OptimNelderMead, WallTimeEndsTheRun) {
   o.wall_time_seconds = 1e-6;
   const auto slow = [](std::span<const double> x) {
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
-    return rosenbrock(x);
+    return rosenbrock_value(x);
   };
   const std::vector<double> start{-1.2, 1.0};
   const NelderMeadResult r = nelder_mead(slow, start, o);
@@ -114,8 +114,8 @@ TEST(OptimNelderMead, ProgressCallbackReportsEverySimplexAndChangesNothing) {
   std::vector<GenerationLog> seen;
   NelderMeadOptions o;
   o.on_generation = [&seen](const GenerationLog& g) { seen.push_back(g); };
-  const NelderMeadResult with = nelder_mead(rosenbrock, start, o);
-  const NelderMeadResult without = nelder_mead(rosenbrock, start);
+  const NelderMeadResult with = nelder_mead(rosenbrock_value, start, o);
+  const NelderMeadResult without = nelder_mead(rosenbrock_value, start);
   EXPECT_EQ(with.x, without.x);
   EXPECT_EQ(with.value, without.value);
   EXPECT_EQ(with.history, without.history);
@@ -131,7 +131,7 @@ TEST(OptimNelderMead, ProgressCallbackReportsEverySimplexAndChangesNothing) {
     }
     // every reported value is f at its reported vertex
     for (std::size_t k = 0; k < 3; ++k)
-      EXPECT_EQ(g.objective_values[k], rosenbrock(std::span<const double>(g.variables.data() + 2 * k, 2))) << i;
+      EXPECT_EQ(g.objective_values[k], rosenbrock_value(std::span<const double>(g.variables.data() + 2 * k, 2))) << i;
     if (i < with.history.size()) {
       EXPECT_EQ(statistics(g).best, with.history[i]) << i;
     }
@@ -146,10 +146,10 @@ TEST(OptimNelderMead, Errors) {
   NelderMeadOptions o;
   o.initial_step = 0.0;
   const std::vector<double> start{1.0, 2.0};
-  HULA_EXPECT_ERROR((void)nelder_mead(rosenbrock, start, o), Errc::InvalidOption, "initial_step = 0");
+  HULA_EXPECT_ERROR((void)nelder_mead(rosenbrock_value, start, o), Errc::InvalidOption, "initial_step = 0");
   const std::vector<double> bad{1.0, std::numeric_limits<double>::quiet_NaN()};
-  HULA_EXPECT_ERROR((void)nelder_mead(rosenbrock, bad), Errc::NonFiniteInput, "start[1]");
-  HULA_EXPECT_ERROR((void)nelder_mead(rosenbrock, std::vector<double>{}), Errc::InvalidArgument, "empty");
+  HULA_EXPECT_ERROR((void)nelder_mead(rosenbrock_value, bad), Errc::NonFiniteInput, "start[1]");
+  HULA_EXPECT_ERROR((void)nelder_mead(rosenbrock_value, std::vector<double>{}), Errc::InvalidArgument, "empty");
   auto inf = [](std::span<const double>) { return std::numeric_limits<double>::infinity(); };
   HULA_EXPECT_ERROR((void)nelder_mead(inf, start), Errc::NumericalFailure, "not finite at the start");
 }

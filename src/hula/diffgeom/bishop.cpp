@@ -7,11 +7,11 @@
 #include <limits>
 
 #include "hula/core/error.hpp"
+#include "hula/core/nan.hpp"
 
 namespace hula::diffgeom {
 
 namespace {
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // u rotated about the unit axis a by angle θ (u ⟂ a): u cos θ + (a × u) sin θ.
 Vec3 rotate_about(const Vec3& u, const Vec3& a, double theta) {

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "hula/core/error.hpp"
+#include "hula/core/nan.hpp"
 #include "hula/diffgeom/bishop.hpp"
 #include "hula/diffgeom/combescure.hpp"
 #include "hula/diffgeom/frenet_law.hpp"
@@ -15,7 +16,6 @@
 namespace hula::diffgeom {
 
 namespace {
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 Fins build(std::span<const FrenetPoint> pts, const FinOptions& o) {
   Fins f;

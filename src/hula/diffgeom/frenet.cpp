@@ -13,11 +13,11 @@
 #include <vector>
 
 #include "hula/core/error.hpp"
+#include "hula/core/nan.hpp"
 
 namespace hula::diffgeom {
 
 namespace {
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr Vec3 kNaNVec{kNaN, kNaN, kNaN};
 // Points per block in the batch forms: 4 derivatives × 64 points = 6 KiB of stack.
 constexpr std::size_t kBlock = 64;

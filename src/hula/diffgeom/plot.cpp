@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "hula/core/error.hpp"
+#include "hula/core/nan.hpp"
 #include "hula/nurbs/arc_length.hpp"
 
 namespace hula::diffgeom {
@@ -27,8 +28,6 @@ double torsion_derivative(const FrenetPoint& p, std::span<const Vec3, 5> d) {
   if (!(std::fabs(num) > noise)) return 0.0;
   return num / (a2 * a2) / p.speed;
 }
-
-const double kNaN = std::nan("");
 
 // Fills x and y from the Frenet points, the arc lengths s and (LogTorsionGraph only) the derivatives
 // r … r'''' of each sample (5 per point).

@@ -135,7 +135,10 @@ void write_spline(DL_Dxf& dxf, MemoryWriter& w, const DxfCurve& c) {
       curve.dimension() == 2 || std::all_of(points.begin(), points.end(), [](const Vec3& p) { return p[2] == 0.0; });
   const std::optional<int> rgb = c.colour.empty() ? std::nullopt : parse_colour(c.colour);
   // Colour 256 = BYLAYER; with a true colour (420), the nearest basic colour for older readers.
-  const DL_Attributes attributes(c.layer, rgb ? nearest_basic_colour(*rgb) : 256, rgb ? *rgb : -1, -1, "BYLAYER");
+  // value_or, not *rgb: GCC 12 at -O2 takes the optional's value for "maybe uninitialized" once this file
+  // shares a unity batch (HULA_UNITY_BUILD).
+  const int true_colour = rgb.value_or(-1);
+  const DL_Attributes attributes(c.layer, rgb ? nearest_basic_colour(true_colour) : 256, true_colour, -1, "BYLAYER");
   const int flags = (planar ? 8 : 0) | (curve.is_rational() ? 4 : 0);
   DL_SplineData data(curve.degree(), static_cast<int>(knots.size()), static_cast<int>(points.size()), 0, flags);
   dxf.writeSpline(w, data, attributes);

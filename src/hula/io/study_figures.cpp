@@ -10,6 +10,7 @@
 #include <optional>
 #include <utility>
 
+#include "hula/core/nan.hpp"
 #include "hula/diffgeom/analysis.hpp"
 #include "hula/diffgeom/frenet.hpp"
 #include "hula/diffgeom/plot.hpp"
@@ -19,8 +20,6 @@
 namespace hula::io {
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // The curvature comb of `curve` as every door draws it (diffgeom::analyse_curve, 150 fins): at `scale`, or at
 // the automatic scale (diffgeom::auto_fin_scale) when absent.

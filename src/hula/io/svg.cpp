@@ -8,11 +8,10 @@
 #include <utility>
 
 #include "hula/core/error.hpp"
+#include "hula/core/nan.hpp"
 
 namespace hula::io {
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 void check_sizes(std::size_t a, std::size_t b, const char* what) {
   if (a != b)

@@ -40,6 +40,7 @@
 #include "hula/core/error.hpp"
 #include "hula/law/derive.hpp"
 #include "hula/law/detail/improper.hpp"
+#include "hula/law/detail/short_print.hpp"
 #include "hula/law/parser.hpp"
 #include "hula/law/simplify.hpp"
 #include "hula/law/singularities.hpp"
@@ -830,11 +831,7 @@ std::optional<Law> antiderivative(const Law& f, std::string_view parameter) {
 
 namespace {
 
-std::string short_print(const Law& l) {
-  std::string s = print(l);
-  if (s.size() > 120) s = s.substr(0, 117) + "...";
-  return s;
-}
+using detail::short_print;
 
 // A compiled scalar law; NaN where undefined.
 class Scalar {

@@ -17,13 +17,17 @@
 #include <vector>
 
 #include "hula/core/error.hpp"
+#include "hula/core/nan.hpp"
 #include "hula/law/detail/improper.hpp"
+#include "hula/law/detail/short_print.hpp"
 #include "hula/law/parser.hpp"
 #include "hula/law/simplify.hpp"
 #include "hula/law/singularities.hpp"
 #include "hula/law/tape.hpp"
 
 namespace hula::law {
+
+using detail::short_print;
 
 bool detail::is_improper_kind(SingularityKind k) noexcept {
   switch (k) {
@@ -50,7 +54,6 @@ Law detail::shifted_law(const Law& f, std::string_view parameter, double t0, dou
 }
 
 double detail::growth_exponent(const Law& g, std::string_view parameter, double w) {
-  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
   constexpr double kInf = std::numeric_limits<double>::infinity();
   const std::string in[1] = {std::string(parameter)};
   const Law outs[1] = {g};
@@ -82,18 +85,11 @@ void IntegrationOptions::validate() const {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 using detail::kGrowthSlack;
 // Refinement levels of the double-exponential rules (each doubles the nodes; Boost's default is 15
 // for tanh-sinh): options.max_depth, capped here.
 constexpr int kMaxDoubleExponentialLevels = 15;
-
-std::string short_print(const Law& l) {
-  std::string s = print(l);
-  if (s.size() > 120) s = s.substr(0, 117) + "...";
-  return s;
-}
 
 // A compiled scalar law of the parameter; NaN where undefined.
 class Scalar {

@@ -32,9 +32,9 @@ void SimplifyOptions::validate() const {
 
 namespace {
 
-using Factor = std::pair<NodeId, double>;  // (atom, non-zero exponent)
-using Monomial = std::vector<Factor>;      // sorted by atom
-using Sum = std::map<Monomial, double>;    // monomial → non-zero coefficient
+using AtomPower = std::pair<NodeId, double>;  // (atom, non-zero exponent)
+using Monomial = std::vector<AtomPower>;      // sorted by atom
+using Sum = std::map<Monomial, double>;       // monomial → non-zero coefficient
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 

@@ -11,10 +11,13 @@
 
 #include "hula/core/error.hpp"
 #include "hula/law/derive.hpp"
+#include "hula/law/detail/short_print.hpp"
 #include "hula/law/parser.hpp"
 #include "hula/law/tape.hpp"
 
 namespace hula::law {
+
+using detail::short_print;
 
 const char* singularity_kind_name(SingularityKind kind) {
   switch (kind) {
@@ -142,12 +145,6 @@ void conditions(const Law& e, std::vector<Condition>& out) {
     default:
       break;
   }
-}
-
-std::string short_print(const Law& l) {
-  std::string s = print(l);
-  if (s.size() > 120) s = s.substr(0, 117) + "...";
-  return s;
 }
 
 }  // namespace

@@ -29,7 +29,7 @@ namespace {
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 // Halvings of one Bézier piece before it is a leaf: 2^-60 of a span is below
 // the resolution of its parameter.
-constexpr int kMaxDepth = 60;
+constexpr int kMaxSubdivisionDepth = 60;
 // Work limits. Curves that run within a few tolerances of each other (not
 // within one) over a stretch of length ℓ need about ℓ / (8 tol / κ)^½ pieces
 // before the hull bounds separate them: harmless at the default 1e-6, but
@@ -128,7 +128,7 @@ std::vector<Piece> pieces_of(const NurbsCurve& c) {
 }
 
 bool splittable(const Piece& p, double tol) {
-  return p.size > tol && p.depth < kMaxDepth &&
+  return p.size > tol && p.depth < kMaxSubdivisionDepth &&
          p.t1 - p.t0 > 8.0 * kEps * std::fmax(1.0, std::fmax(std::fabs(p.t0), std::fabs(p.t1)));
 }
 

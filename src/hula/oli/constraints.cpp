@@ -14,6 +14,8 @@
 
 namespace hula::oli {
 
+using Json = io::json::Json;
+
 namespace {
 
 void check_finite(double v, const char* member) {
@@ -113,7 +115,6 @@ std::vector<ConstraintResidual> check_constraints(const curve::Curve& curve, std
 }
 
 io::json::Json constraints_to_json(std::span<const Constraint> constraints) {
-  using Json = io::json::Json;
   Json out = Json::array();
   for (const Constraint& c : constraints) {
     Json j = Json::object();

@@ -7,6 +7,7 @@
 #include <mutex>
 
 #include "hula/core/error.hpp"
+#include "hula/core/nan.hpp"
 #include "hula/core/parallel.hpp"
 
 namespace hula::optim {
@@ -120,7 +121,6 @@ BatchReport evaluate_batch(const Problem& problem, std::span<const double> point
                 "failed has " + std::to_string(failed.size()) + " flags, expected " + std::to_string(n),
                 {.field = "failed"});
   }
-  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
   BatchReport report;
   std::mutex mutex;
   auto mark_failed = [&](std::size_t i, const std::string& message) {

@@ -9,10 +9,10 @@
 #include <utility>
 
 #include "hula/core/error.hpp"
+#include "hula/core/nan.hpp"
 
 namespace hula::optim {
 namespace {
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 void check_axis(const Problem& p, const SweepAxis& a, const char* name) {
   const std::string field = name;

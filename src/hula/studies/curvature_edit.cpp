@@ -92,7 +92,7 @@ constexpr int kDampingTries = 8;
 constexpr int kCorrectionRounds = 3;
 constexpr int kNewtonSteps = 2;
 
-[[noreturn]] void invalid_option(const std::string& field, double value, const std::string& range) {
+[[noreturn]] void invalid_edit_option(const std::string& field, double value, const std::string& range) {
   throw Error(Errc::InvalidOption,
               "CurvatureEditOptions." + field + " = " + format_number(value) + " is outside " + range,
               ErrorWhere{.field = field});
@@ -667,10 +667,10 @@ CurvatureTarget curvature_target_from_name(std::string_view name, std::string_vi
 
 void CurvatureEditOptions::validate() const {
   if (!(max_handles_factor >= 1.0 && max_handles_factor <= 10.0))
-    invalid_option("max_handles_factor", max_handles_factor, "[1, 10]");
+    invalid_edit_option("max_handles_factor", max_handles_factor, "[1, 10]");
   if (!(curvature_tolerance >= 1e-6 && curvature_tolerance <= 1.0))
-    invalid_option("curvature_tolerance", curvature_tolerance, "[1e-6, 1]");
-  if (samples < 50 || samples > 100'000) invalid_option("samples", static_cast<double>(samples), "[50, 100000]");
+    invalid_edit_option("curvature_tolerance", curvature_tolerance, "[1e-6, 1]");
+  if (samples < 50 || samples > 100'000) invalid_edit_option("samples", static_cast<double>(samples), "[50, 100000]");
   reconstruction.validate();
 }
 

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "hula/core/error.hpp"
+#include "hula/core/nan.hpp"
 #include "hula/nurbs/interpolate.hpp"
 #include "hula/studies/detail/profile_kernel_select.hpp"
 
@@ -16,7 +17,6 @@ namespace hula::studies {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // τ is undefined where |C' × C''| <= kTorsionCutoff |C'|³, i.e. κ below 1e-12 per model unit: below it the
 // binormal is noise (DESIGN: undefined quantities are NaN, documented).
 constexpr double kTorsionCutoff = 1e-12;

@@ -8,12 +8,11 @@
 #include <utility>
 
 #include "hula/core/error.hpp"
+#include "hula/core/nan.hpp"
 #include "hula/optim/pareto.hpp"
 
 namespace hula::studies {
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 void require_torsion(const CurvatureMatch& match) {
   if (match.torsion_target_samples().empty())

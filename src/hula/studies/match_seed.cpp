@@ -17,7 +17,7 @@
 namespace hula::studies {
 namespace {
 
-[[noreturn]] void invalid_option(const std::string& field, double value, const std::string& range) {
+[[noreturn]] void invalid_seed_option(const std::string& field, double value, const std::string& range) {
   throw Error(Errc::InvalidOption, "MatchSeedOptions." + field + " = " + format_number(value) + " is outside " + range,
               ErrorWhere{.field = field});
 }
@@ -59,11 +59,11 @@ bool fill_undefined(std::vector<double>& v) {
 }  // namespace
 
 void MatchSeedOptions::validate() const {
-  if (points == 1 || points > 1000) invalid_option("points", static_cast<double>(points), "0 or [2, 1000]");
-  if (!(bound > 0.0 && bound <= 10.0)) invalid_option("bound", bound, "(0, 10]");
-  if (samples < 2 || samples > 100'000) invalid_option("samples", static_cast<double>(samples), "[2, 100000]");
+  if (points == 1 || points > 1000) invalid_seed_option("points", static_cast<double>(points), "0 or [2, 1000]");
+  if (!(bound > 0.0 && bound <= 10.0)) invalid_seed_option("bound", bound, "(0, 10]");
+  if (samples < 2 || samples > 100'000) invalid_seed_option("samples", static_cast<double>(samples), "[2, 100000]");
   if (profile_samples < 2 || profile_samples > 100'000)
-    invalid_option("profile_samples", static_cast<double>(profile_samples), "[2, 100000]");
+    invalid_seed_option("profile_samples", static_cast<double>(profile_samples), "[2, 100000]");
 }
 
 MatchSeed seed_match_setup(const curve::Curve& curve, const MatchSeedOptions& options) {

@@ -74,7 +74,7 @@ constexpr int kStepHalvings = 4;
 // Rounds of a candidate fit (one least-squares solve, then tangent-distance solves, each
 // followed by the foot correction); a round that lowers the root of the sum of squared
 // distances by less than kStallFraction ends a candidate that has not met the tolerance.
-constexpr int kCorrectionRounds = 10;
+constexpr int kFitRounds = 10;
 constexpr double kStallFraction = 0.01;
 // The polish of the chosen fit: more rounds, until the sum of squares falls by less than 0.1 %.
 constexpr int kPolishRounds = 40;
@@ -518,7 +518,7 @@ double worst_kept(std::span<const double> dist, std::span<const double> weights)
 // Fits the space at the starting feet: a least-squares solve, then tangent-distance solves, each
 // followed by the foot correction of every point; the round with the lowest worst kept deviation.
 Candidate fit_space(Problem& pb, const Space& s, std::span<const double> t0, std::span<const double> weights,
-                    int rounds = kCorrectionRounds, bool polish = false) {
+                    int rounds = kFitRounds, bool polish = false) {
   const Matrix no_fairing;
   const std::vector<Pin> pins = pins_of(pb, s);
   const std::size_t m = pb.pts.size();

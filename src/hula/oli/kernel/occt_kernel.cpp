@@ -16,14 +16,13 @@
 #include <limits>
 #include <string>
 
+#include "hula/core/nan.hpp"
 #include "hula/nurbs/knot_vector.hpp"
 #include "hula/oli/kernel/detail/checks.hpp"
 #include "hula/oli/kernel/occt_convert.hpp"
 
 namespace hula::oli {
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Every OCCT call goes through here so an OCCT exception becomes a hula::Error naming the operation.
 template <class F>
