@@ -11,9 +11,10 @@
 #    --to-nurbs, reconstruct, fin-compound, edit-projection, hermite,
 #    hermite-frenet, convert, doc export, every edit subcommand, approximate,
 #    fit (and --save-study), offset, helical-offset, orthotomic, polar,
-#    clothoid, log-aesthetic, match, blend. (`completion bash -o -` writes a
-#    shell script, not a curve; `doc export --format step|iges -o -` writes a
-#    file no reader takes on stdin: convert reads STEP/IGES by extension only.)
+#    clothoid, log-aesthetic, match, blend; `doc export --format step|iges -o -`
+#    into `convert - --from step|iges` (the curve read back is the one read
+#    from the written file). (`completion bash -o -` writes a shell script, not
+#    a curve.)
 #   pipe_test.sh HULA_BINARY
 set -euo pipefail
 hula="$1"
@@ -119,6 +120,19 @@ check_writer convert convert "$c1" --format json -o OUT
 "$hula" doc new "$work/d.hula" > /dev/null
 "$hula" doc add "$work/d.hula" --curve "$c1" --name spine > /dev/null
 check_writer doc-export doc export "$work/d.hula" 1 --format json -o OUT
+
+# STEP and IGES on stdout, read back from stdin by convert --from: the same curve as through the files
+# (the files themselves carry a time stamp, so the curves read back are compared).
+for fmt in step iges; do
+  ext=$fmt; [ "$fmt" = iges ] && ext=igs
+  "$hula" doc export "$work/d.hula" 1 --format "$fmt" -o "$work/d.$ext" > /dev/null
+  "$hula" convert "$work/d.$ext" --format json -o "$work/d-$fmt.json" > /dev/null
+  "$hula" doc export "$work/d.hula" 1 --format "$fmt" -o - \
+    | "$hula" convert - --from "$fmt" --format json -o - > "$work/d-$fmt.piped"
+  cmp -s "$work/d-$fmt.json" "$work/d-$fmt.piped" \
+    || { echo "pipe_test: doc export --format $fmt -o - | convert - --from $fmt differs from the files" >&2;
+      diff "$work/d-$fmt.json" "$work/d-$fmt.piped" | head -10 >&2; exit 1; }
+done
 
 # The probe's chain: interpolate | edit elevate | edit reverse | info, all through `-`.
 "$hula" interpolate --points - -o - < "$work/points.csv" \

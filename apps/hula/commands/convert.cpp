@@ -55,7 +55,7 @@ Command add_convert(CLI::App& app) {
                   "dxf | svg")
       ->check(CLI::IsMember({"json", "step", "step-ap214", "step-ap242", "iges", "dxf", "svg"}));
   sub->add_option("--from", a->from,
-                  "Input format when the extension does not tell: json | dxf (STEP/IGES by extension)")
+                  "Input format when the extension does not tell (`-`: standard input): json | dxf | step | iges")
       ->check(CLI::IsMember({"json", "step", "step-ap214", "step-ap242", "iges", "dxf"}));
   sub->add_option("--tolerance", a->tolerance,
                   "SVG: largest deviation of the cubic Bezier pieces of rational or degree > 3 curves, model units "

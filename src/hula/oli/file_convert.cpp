@@ -95,7 +95,14 @@ std::vector<Label> read_into(Document& document, const fs::path& input, FileForm
           {.field = "input"});
     default: {
 #ifdef HULA_WITH_OCCT
-      // STEP and IGES files are told apart by their extension (the helper reads them so).
+      // STEP and IGES files are told apart by their extension (the helper reads them so); standard input
+      // by --from.
+      if (io::is_std_stream(input)) {
+        const ImportReport imported = import_curves_from_stdin(exchange_format(format));
+        document.transact("import", [&](Edit& e) { labels = add_imported(e, imported, input); }).throw_if_failed();
+        report.warnings = imported.warnings;
+        break;
+      }
       if ((exchange_format_for_path(input) == ExchangeFormat::Iges) != (format == FileFormat::Iges))
         throw Error(Errc::InvalidArgument,
                     "cannot read '" + input.string() + "' as " + std::string(file_format_name(format)) +

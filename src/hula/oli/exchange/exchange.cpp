@@ -15,6 +15,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <limits>
+#include <sstream>
 #include <string>
 
 #include "hula/core/error.hpp"
@@ -221,6 +222,21 @@ ImportReport import_curves(const std::filesystem::path& path, const ExchangeOpti
   const detail::ImportRequest request{fs::absolute(path)};
   const ScratchDir scratch;
   return detail::import_answer_from_json(exchange(request, path, "importing", options, scratch));
+}
+
+ImportReport import_curves_from_stdin(ExchangeFormat format, const ExchangeOptions& options) {
+  const fs::path stdin_path("-");
+  const std::string bytes = io::read_text_file(stdin_path, io::kMaxGeometryInputBytes);
+  const ScratchDir scratch;
+  // The helper reads files by their extension: the copy is named for the format given.
+  const fs::path copy = scratch.path() / (format == ExchangeFormat::Iges ? "stdin.igs" : "stdin.step");
+  if (format == ExchangeFormat::Iges) {
+    std::istringstream in(bytes);
+    io::check_iges_counts(in, "-");
+  }
+  io::write_file_atomically(copy, bytes);
+  const detail::ImportRequest request{copy};
+  return detail::import_answer_from_json(exchange(request, stdin_path, "importing", options, scratch));
 }
 
 }  // namespace hula::oli

@@ -170,4 +170,10 @@ class ExchangeOutOfMemory : public std::bad_alloc {
 /// @throws ExchangeOutOfMemory naming the path if the reader ran out of memory
 [[nodiscard]] ImportReport import_curves(const std::filesystem::path& path, const ExchangeOptions& options = {});
 
+/// Reads the curves of a STEP or IGES file given on standard input (`hula convert - --from step`): the
+/// bytes (at most io::kMaxGeometryInputBytes) are copied into the exchange's private scratch folder, which
+/// the reader reads and which is removed after, whatever happens; messages name `-`.
+/// @throws as import_curves, naming `-`
+[[nodiscard]] ImportReport import_curves_from_stdin(ExchangeFormat format, const ExchangeOptions& options = {});
+
 }  // namespace hula::oli
