@@ -196,8 +196,9 @@ TEST(OptimPagmoOracle, AdapterRunsArePagmosBitForBitWhetherStoppableOrNot) {
   pagmo::population ns_pop(pagmo::problem(FlexoUdp{&z}), 20, 11);
   ns_pop = pagmo::algorithm(pagmo::nsga2(40, 0.95, 10., 0.01, 50., 11)).evolve(ns_pop);
   std::vector<std::vector<double>> ns_front;
-  for (const auto i : std::get<0>(pagmo::fast_non_dominated_sorting(ns_pop.get_f())).front())
-    ns_front.push_back(ns_pop.get_x()[i]);
+  // The sorting's result is kept: a range-for over a member of the temporary would read it after its end.
+  const auto sorting = pagmo::fast_non_dominated_sorting(ns_pop.get_f());
+  for (const auto i : std::get<0>(sorting).front()) ns_front.push_back(ns_pop.get_x()[i]);
   std::sort(ns_front.begin(), ns_front.end());
   for (const bool stoppable : {false, true}) {
     std::size_t calls = 0;
