@@ -91,10 +91,31 @@ struct BestSoFar {
       return true;
     };
     const std::vector<double> mine(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(objectives));
+    if (objectives == 2) {
+      offer_two(x_in, mine);
+      return;
+    }
     for (const auto& member : front)
       if (covers(member.second, mine)) return;  // dominated by, or equal to, a member
     std::erase_if(front, [&](const auto& member) { return covers(mine, member.second); });
     front.emplace_back(x_in, mine);
+  }
+
+  // Two objectives (the common case, offered at every evaluation of every run): the front kept sorted by
+  // the first objective, so the second falls along it, and a point is judged in O(log n) instead of
+  // against every member. The same set as the general loop: a point covered by (dominated by, or equal
+  // to) a member is dropped, and a new point removes the members it covers (a contiguous run).
+  void offer_two(const pagmo::vector_double& x_in, const std::vector<double>& mine) {
+    const auto first_after = std::upper_bound(front.begin(), front.end(), mine[0],
+                                              [](double a, const auto& member) { return a < member.second[0]; });
+    // The members with f0 ≤ mine's: the last of them has the smallest f1.
+    if (first_after != front.begin() && std::prev(first_after)->second[1] <= mine[1]) return;
+    const auto from = std::lower_bound(front.begin(), first_after, mine[0],
+                                       [](const auto& member, double a) { return member.second[0] < a; });
+    auto to = from;
+    while (to != front.end() && to->second[1] >= mine[1]) ++to;  // f0 ≥ mine's and f1 ≥ mine's: covered
+    const auto at = front.erase(from, to);
+    front.emplace(at, x_in, mine);
   }
 };
 
