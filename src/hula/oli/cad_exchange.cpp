@@ -35,8 +35,9 @@ ExportReport export_entities(const Document& document, std::span<const Label> la
   return export_curves(path, items, format, options);
 }
 
-std::vector<Label> add_imported(Edit& edit, const ImportReport& report, const std::filesystem::path& source) {
-  const bool iges = exchange_format_for_path(source) == ExchangeFormat::Iges;
+std::vector<Label> add_imported(Edit& edit, const ImportReport& report, const std::filesystem::path& source,
+                                std::optional<ExchangeFormat> format) {
+  const bool iges = (format ? *format : exchange_format_for_path(source)) == ExchangeFormat::Iges;
   std::vector<Label> out;
   for (const auto& c : report.curves) {
     Provenance p;

@@ -10,6 +10,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -37,7 +38,9 @@ namespace hula::oli {
 /// Adds imported curves as NURBS curve entities named as in the file, with provenance
 /// "import:step" or "import:iges" (details: file, source entity, file type). Call inside a
 /// transaction, after import_curves has read the file in its helper process.
+/// @param format the file's format; by default its extension's (standard input, `-`, has none)
 /// @returns the new labels in file order
-std::vector<Label> add_imported(Edit& edit, const ImportReport& report, const std::filesystem::path& source);
+std::vector<Label> add_imported(Edit& edit, const ImportReport& report, const std::filesystem::path& source,
+                                std::optional<ExchangeFormat> format = std::nullopt);
 
 }  // namespace hula::oli

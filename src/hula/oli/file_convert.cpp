@@ -99,7 +99,9 @@ std::vector<Label> read_into(Document& document, const fs::path& input, FileForm
       // by --from.
       if (io::is_std_stream(input)) {
         const ImportReport imported = import_curves_from_stdin(exchange_format(format));
-        document.transact("import", [&](Edit& e) { labels = add_imported(e, imported, input); }).throw_if_failed();
+        document
+            .transact("import", [&](Edit& e) { labels = add_imported(e, imported, input, exchange_format(format)); })
+            .throw_if_failed();
         report.warnings = imported.warnings;
         break;
       }
