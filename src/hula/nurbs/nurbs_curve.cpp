@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <span>
 #include <string>
 #include <utility>
 
@@ -409,6 +410,22 @@ inline BatchKernel kernel_for(int degree, bool rational, int order) {
   const auto i = static_cast<std::size_t>(degree - 1);
   return rational ? kRationalKernels[i] : kKernels[i];
 }
+
+// The exact-point record of a break whose knot run starts at index `start` with multiplicity `m`: with
+// m ≥ p the curve there is the pole before the run (P[0] for a clamped start), recorded as {1, x, y, z};
+// otherwise {0, 0, 0, 0}. Written by the span cache and by the one-span piece alike.
+void write_exact_record(double* out, std::size_t m, std::size_t p, std::span<const Vec3> points, std::size_t start) {
+  if (m >= p) {
+    const Vec3& q = points[start == 0 ? 0 : start - 1];
+    out[0] = 1.0;
+    out[1] = q.x;
+    out[2] = q.y;
+    out[3] = q.z;
+  } else {
+    std::fill_n(out, 4, 0.0);
+  }
+}
+
 }  // namespace
 
 const SpanCache& NurbsCurve::Data::publish_cache() const {
@@ -542,15 +559,7 @@ void NurbsCurve::Data::build_cache(SpanCache& out) const {
       breaks[bi] = u;
       // The run U[i] = … = U[j] = u has multiplicity m = j − i + 1; with m ≥ p the curve there is P[i − 1]
       // (P[0] for a clamped start, i = 0 with m = p + 1; P[n] for a clamped end, i = n + 1).
-      if (j - i + 1 >= P) {
-        const Vec3& q = points[i == 0 ? 0 : i - 1];
-        exact[4 * bi] = 1.0;
-        exact[4 * bi + 1] = q.x;
-        exact[4 * bi + 2] = q.y;
-        exact[4 * bi + 3] = q.z;
-      } else {
-        std::fill_n(exact + 4 * bi, 4, 0.0);
-      }
+      write_exact_record(exact + 4 * bi, j - i + 1, P, points, i);
       ++bi;
     }
     i = j + 1;
@@ -820,15 +829,7 @@ void PieceEvaluator::derivatives(std::span<const double> ts, int order, std::spa
     const std::array<std::pair<std::size_t, std::size_t>, 2> runs{{{r0, i - r0 + 1}, {i + 1, e1 - i}}};
     for (std::size_t b = 0; b < 2; ++b) {
       const auto [start, m] = runs[b];
-      if (m >= P) {
-        const Vec3& q = d.points[start == 0 ? 0 : start - 1];
-        exact[4 * b] = 1.0;
-        exact[4 * b + 1] = q.x;
-        exact[4 * b + 2] = q.y;
-        exact[4 * b + 3] = q.z;
-      } else {
-        std::fill_n(exact + 4 * b, 4, 0.0);
-      }
+      write_exact_record(exact + 4 * b, m, P, d.points, start);
     }
     double* mid = breaks + 2;
     double* inv_half = breaks + 3;
