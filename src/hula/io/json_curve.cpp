@@ -313,7 +313,8 @@ namespace {
 // (JsonText: write_curve_file, which writes a million-point curve without building a value).
 template <class W>
 void write_point(W& w, const Vec3& p, int dimension) {
-  w.scalars(dimension == 2 ? 2 : 3, [&](std::size_t i) { w.number(i == 0 ? p.x : i == 1 ? p.y : p.z); });
+  const std::array<double, 3> xyz{p.x, p.y, p.z};
+  w.numbers(std::span<const double>(xyz.data(), dimension == 2 ? 2 : 3));
 }
 
 template <class W>
@@ -323,7 +324,7 @@ void write_points(W& w, std::span<const Vec3> points, int dimension) {
 
 template <class W>
 void write_numbers(W& w, std::span<const double> values) {
-  w.scalars(values.size(), [&](std::size_t i) { w.number(values[i]); });
+  w.numbers(values);
 }
 
 template <class W>

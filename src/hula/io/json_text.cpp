@@ -4,13 +4,21 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstring>
 
 #include "hula/io/json_write.hpp"
+#include "hula/io/shortest_double.hpp"
 
 namespace hula::io {
 
-void JsonText::newline() {
-  out_ += '\n';
+void JsonText::new_line(bool comma) {
+  static constexpr std::string_view kBreak = ",\n                                                                ";
+  const std::size_t from = comma ? 0 : 1;
+  if (depth_ + 2 <= kBreak.size()) {
+    out_.append(kBreak.data() + from, depth_ + 2 - from);
+    return;
+  }
+  out_.append(kBreak.data() + from, 2 - from);
   out_.append(depth_, ' ');
 }
 
@@ -24,15 +32,17 @@ JsonText& JsonText::begin_object() {
 JsonText& JsonText::end_object() {
   depth_ -= 2;
   // An empty object closes on its line; a member was written otherwise.
-  if (pretty_ && !first_member_) newline();
+  if (pretty_ && !first_member_) new_line(false);
   first_member_ = false;
   return raw("}");
 }
 
 JsonText& JsonText::member(std::string_view name) {
-  if (!first_member_) raw(",");
+  if (pretty_)
+    new_line(!first_member_);
+  else if (!first_member_)
+    raw(",");
   first_member_ = true;
-  if (pretty_) newline();
   string(name);
   raw(pretty_ ? ": " : ":");
   // The member's value may open an object (which resets the flag); after it, the next member needs a comma.
@@ -41,7 +51,32 @@ JsonText& JsonText::member(std::string_view name) {
 }
 
 JsonText& JsonText::number(double v) {
-  append_json_number(out_, v);
+  char text[kJsonNumberRoom];
+  out_.append(text, write_json_number(text, v));
+  return *this;
+}
+
+JsonText& JsonText::numbers(std::span<const double> values) {
+  // Each number and its separator go into a local buffer, appended when it is nearly full; the
+  // drain sees the text between pieces, as it would have between elements.
+  char piece[4096];
+  char* o = piece;
+  *o++ = '[';
+  const std::size_t separator = pretty_ ? 2 : 1;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (i > 0) {
+      std::memcpy(o, ", ", 2);
+      o += separator;
+    }
+    o = write_json_number(o, values[i]);
+    if (o + 2 + kJsonNumberRoom > piece + sizeof piece) {
+      out_.append(piece, o);
+      o = piece;
+      if (drain_ && out_.size() >= kDrainBytes) drain_(out_);
+    }
+  }
+  *o++ = ']';
+  out_.append(piece, o);
   return *this;
 }
 
@@ -59,8 +94,8 @@ JsonText& JsonText::string(std::string_view text) {
 
 JsonText& JsonText::vec(const Vec3& v, bool defined) {
   if (!defined || !std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) return null();
-  raw("[").number(v.x).raw(pretty_ ? ", " : ",").number(v.y).raw(pretty_ ? ", " : ",").number(v.z);
-  return raw("]");
+  const double xyz[3] = {v.x, v.y, v.z};
+  return numbers(xyz);
 }
 
 JsonText& JsonText::value(const json::Json& v) {

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstddef>
 #include <functional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -54,6 +55,9 @@ class JsonText {
     return array(n, true, static_cast<F&&>(element));
   }
   JsonText& number(double v);
+  /// An array of numbers (one line): scalars(values.size(), number(values[i])) laid out in pieces of
+  /// a few kilobytes rather than one append per character group.
+  JsonText& numbers(std::span<const double> values);
   /// The number, or null when `defined` is false.
   JsonText& number_or_null(double v, bool defined) { return defined ? number(v) : null(); }
   JsonText& integer(long long v);
@@ -74,14 +78,16 @@ class JsonText {
     const bool lines = pretty_ && containers && n > 0;
     if (lines) depth_ += 2;
     for (std::size_t i = 0; i < n; ++i) {
-      if (i > 0) raw(pretty_ && !lines ? ", " : ",");
-      if (lines) newline();
+      if (lines)
+        new_line(i > 0);
+      else if (i > 0)
+        raw(pretty_ ? ", " : ",");
       element(i);
       if (drain_ && out_.size() >= kDrainBytes) drain_(out_);
     }
     if (lines) {
       depth_ -= 2;
-      newline();
+      new_line(false);
     }
     return raw("]");
   }
@@ -89,7 +95,8 @@ class JsonText {
     out_ += text;
     return *this;
   }
-  void newline();
+  /// A line break and the indentation of depth_, after a comma when `comma` (one append).
+  void new_line(bool comma);
 
   std::string& out_;
   bool pretty_;
@@ -124,6 +131,10 @@ class JsonTree {
   template <class F>
   JsonTree& containers(std::size_t n, F&& element) {
     return array(n, element);
+  }
+  JsonTree& numbers(std::span<const double> values) {
+    const auto element = [&](std::size_t i) { number(values[i]); };
+    return array(values.size(), element);
   }
   JsonTree& number(double v) {
     place(std::isfinite(v) ? json::Json(v) : json::Json(nullptr));

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -150,6 +152,72 @@ bool scan_row(std::string_view line, Separator sep, std::size_t width, Vec3& p) 
   return true;
 }
 
+// A number in from_chars' grammar that is plain: [-]digits[.digits] with at most 19 digits and 22
+// decimals, whose value m / 10^d (m < 2^53 and 10^d exact in a double) is one correctly rounded division,
+// so the same double from_chars gives (Clinger's fast path). Null for anything else, which from_chars
+// then reads (an exponent, inf or nan, more digits, ".5", "5.").
+const char* read_plain_number(const char* c, const char* end, double& v) {
+  static constexpr double kExact[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                                      1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+  const bool negative = c != end && *c == '-';
+  const char* p = c + (negative ? 1 : 0);
+  const auto is_digit = [](char d) { return static_cast<unsigned>(d - '0') < 10u; };
+  std::uint64_t m = 0;
+  const char* const first = p;
+  while (p != end && is_digit(*p)) m = 10 * m + static_cast<unsigned>(*p++ - '0');
+  if (p == first) return nullptr;
+  const auto whole = p - first;
+  std::ptrdiff_t decimals = 0;
+  if (p != end && *p == '.') {
+    const char* const point = ++p;
+    while (p != end && is_digit(*p)) m = 10 * m + static_cast<unsigned>(*p++ - '0');
+    decimals = p - point;
+    if (decimals == 0) return nullptr;
+  }
+  if (p != end && (*p == 'e' || *p == 'E')) return nullptr;
+  if (whole + decimals > 19 || decimals > 22 || m > (std::uint64_t{1} << 53)) return nullptr;
+  const double x = static_cast<double>(m) / kExact[decimals];
+  v = negative ? -x : x;
+  return p;
+}
+
+// scan_row over the text itself: the data line starting at `pos` (ending at '\n' or the end of the
+// text) read straight into `p`, without finding its end first. The position after the line, or npos
+// when scan_row would not take it (a comment, a blank line and everything else go through the caller's
+// general path, which finds the line's end and reads it again).
+std::size_t scan_line(std::string_view text, std::size_t pos, Separator sep, std::size_t width, Vec3& p) {
+  const char* c = text.data() + pos;
+  const char* const end = text.data() + text.size();
+  const auto at_eol = [&] { return c == end || *c == '\n'; };
+  const char delimiter = sep == Separator::Comma ? ',' : ';';
+  double v[3] = {0.0, 0.0, 0.0};
+  std::size_t n = 0;
+  for (;;) {
+    while (c != end && is_blank(*c)) ++c;
+    if (sep == Separator::Whitespace && at_eol()) break;
+    if (n == width) return std::string_view::npos;
+    if (const char* ptr = read_plain_number(c, end, v[n])) {
+      c = ptr;
+    } else {
+      const auto [ptr2, ec] = std::from_chars(c, end, v[n]);
+      if (ec != std::errc() || !std::isfinite(v[n])) return std::string_view::npos;
+      c = ptr2;
+    }
+    ++n;
+    if (sep == Separator::Whitespace) {
+      if (!at_eol() && !is_blank(*c)) return std::string_view::npos;
+      continue;
+    }
+    while (c != end && is_blank(*c)) ++c;
+    if (at_eol()) break;
+    if (*c != delimiter) return std::string_view::npos;
+    ++c;
+  }
+  if (n != width) return std::string_view::npos;
+  p = Vec3{v[0], v[1], v[2]};
+  return static_cast<std::size_t>(c - text.data()) + 1;
+}
+
 // The text form; `fast` lets scan_row read the plain data lines.
 PointSet parse_csv(std::string_view text, bool fast) {
   Rows rows;
@@ -161,6 +229,15 @@ PointSet parse_csv(std::string_view text, bool fast) {
   std::size_t line_no = 0;
   std::size_t pos = 0;
   while (pos <= text.size()) {
+    if (fast && sep) {
+      Vec3 p;
+      if (const std::size_t next = scan_line(text, pos, *sep, rows.width, p); next != std::string_view::npos) {
+        rows.points.push_back(p);
+        ++line_no;
+        pos = next;
+        continue;
+      }
+    }
     std::size_t eol = text.find('\n', pos);
     if (eol == std::string_view::npos) eol = text.size();
     std::string_view line = text.substr(pos, eol - pos);
