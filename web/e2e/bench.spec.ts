@@ -107,17 +107,7 @@ test('drag a point of a 100-control-point curve with fins and the κ graph', asy
     control_points: cps,
     weights: null,
   });
-  // HULA_BENCH_VIEW_RENDERER=webgl or 2d chooses the views' renderer (docs/benchmarks.md compares them).
-  const chosen = process.env['HULA_BENCH_VIEW_RENDERER'];
-  if (chosen)
-    await page.addInitScript((r) => {
-      window.localStorage.setItem('hula.viewRenderer', r);
-    }, chosen);
   await openApp(page, doc);
-  // 1: the views are drawn on the 2-D canvas (WebGL in software), 0: by WebGL.
-  results['drag_view_renderer_2d'] = await page.evaluate(() =>
-    window.__hula.app.viewports.backend === '2d' ? 1 : 0,
-  );
   await page.evaluate((l) => {
     const app = window.__hula.app;
     app.select(l);

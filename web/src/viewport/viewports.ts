@@ -5,7 +5,6 @@
 
 import * as THREE from 'three';
 import type { Analysis, FinKind, Point } from '../api/types';
-import { Canvas2DRenderer } from './canvas2d';
 import {
   bounds,
   fromPlane,
@@ -75,21 +74,8 @@ const VIEW_LABELS: Record<ViewName, string> = {
 
 export type Layout = 'quad' | 'single';
 
-/** What Viewports asks of its renderer: three.js's WebGLRenderer, or the 2-D canvas one. */
-export interface ViewRenderer {
-  readonly domElement: HTMLCanvasElement;
-  setPixelRatio(ratio: number): void;
-  setSize(w: number, h: number, updateStyle?: boolean): void;
-  setViewport(x: number, y: number, w: number, h: number): void;
-  setScissor(x: number, y: number, w: number, h: number): void;
-  setScissorTest(on: boolean): void;
-  render(scene: THREE.Scene, camera: THREE.Camera): void;
-}
-
 export class Viewports {
-  readonly renderer: ViewRenderer;
-  /** Which renderer draws the views: WebGL (a GPU) or the 2-D canvas (WebGL in software). */
-  readonly backend: 'webgl' | '2d';
+  readonly renderer: THREE.WebGLRenderer;
   readonly scene = new THREE.Scene();
   readonly views: View[];
   layout: Layout = 'quad';
@@ -112,7 +98,7 @@ export class Viewports {
   readonly beforeFrame = new Set<(time: number) => void>();
 
   constructor(readonly root: HTMLElement) {
-    ({ renderer: this.renderer, backend: this.backend } = makeRenderer());
+    this.renderer = makeRenderer();
     this.renderer.setPixelRatio(Math.min(2, window.devicePixelRatio));
     this.renderer.setScissorTest(true);
     this.renderer.domElement.className = 'viewport-canvas';
@@ -735,34 +721,13 @@ class Segments {
 }
 
 /**
- * The views' renderer: three.js's WebGLRenderer, antialiased, on a GPU; the
- * 2-D canvas (canvas2d.ts) when the browser renders WebGL in software
- * (SwiftShader, llvmpipe: the headless e2e runs), where a WebGL frame cost the
- * GPU process ≈ 11 ms and blocked the page while it was read back
- * (docs/benchmarks.md). A 1×1 probe context names the WebGL renderer;
- * `localStorage['hula.viewRenderer']` = 'webgl' or '2d' chooses either.
+ * The WebGL renderer: antialiased on a GPU; without multisampling when the
+ * browser renders WebGL in software (SwiftShader, llvmpipe: the headless e2e
+ * runs), where multisampling doubled the cost of every frame
+ * (docs/benchmarks.md). A 1×1 probe context names the renderer.
  */
-function makeRenderer(): { renderer: ViewRenderer; backend: 'webgl' | '2d' } {
-  const chosen = storedChoice();
-  const software = softwareWebGL();
-  if ((chosen ?? (software ? '2d' : 'webgl')) === '2d') {
-    const canvas = document.createElement('canvas');
-    if (canvas.getContext('2d')) return { renderer: new Canvas2DRenderer(canvas), backend: '2d' };
-  }
-  // Without multisampling in software, where it doubled the cost of every frame.
-  return {
-    renderer: new THREE.WebGLRenderer({ antialias: !software }),
-    backend: 'webgl',
-  };
-}
-
-function storedChoice(): 'webgl' | '2d' | null {
-  try {
-    const v = window.localStorage.getItem('hula.viewRenderer');
-    return v === 'webgl' || v === '2d' ? v : null;
-  } catch {
-    return null;
-  }
+function makeRenderer(): THREE.WebGLRenderer {
+  return new THREE.WebGLRenderer({ antialias: !softwareWebGL() });
 }
 
 function softwareWebGL(): boolean {
