@@ -217,11 +217,12 @@ test('drag a point of a 100-control-point curve with fins and the κ graph', asy
   // graphs, the curve's buffers): the views' render.
   expect(results['frame_work_ms_p95']).toBeLessThanOrEqual(8);
   // p95 pointer-to-redraw ≤ 25 ms. The wait for the frame is up to one display period (16.7 ms)
-  // plus however long the machine's other work holds the page back: at a load of 4.7 on two
-  // cores it had a p95 of 23.9 ms while the frame's own work had 2.5 ms (docs/benchmarks.md).
-  // So the target is asserted when the load leaves the page a core, and a regression bound of
-  // three display periods otherwise; the figures and the load are reported either way.
-  const quiet = results['drag_load_average'] <= 2;
+  // plus however long the machine's other work holds the page back. With two to four CPU or
+  // memory burners beside it (load 2.3–6.6) the p95 was 16.0–19.8 ms, at the 60 Hz floor; other
+  // sessions' builds beside it gave 26.1 ms at load 4.7 and 27–29 ms at 6–9 (docs/benchmarks.md).
+  // So the target is asserted up to a load of 4 on the two cores, and a regression bound of three
+  // display periods above that; the figures and the load are reported either way.
+  const quiet = results['drag_load_average'] <= 4;
   results['pointer_to_redraw_target_asserted'] = quiet ? 1 : 0;
   expect(results['pointer_to_redraw_ms_p95']).toBeLessThanOrEqual(quiet ? 25 : 50);
   // The curve drawn at the last move (the page's own evaluation) is the server's analysis of
