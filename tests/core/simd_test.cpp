@@ -2,13 +2,12 @@
 // The instruction-set detection (hula/core/simd.hpp) against the kernel's own view: Linux lists avx2 and
 // avx512f among a CPU's flags in /proc/cpuinfo only when the CPU has them and the OS saves their registers
 // (the kernel clears a feature whose register state XSAVE does not enable), the two conditions detect() checks.
+#include "hula/core/simd.hpp"
+
 #include <gtest/gtest.h>
 
 #include <fstream>
-#include <sstream>
 #include <string>
-
-#include "hula/core/simd.hpp"
 
 namespace {
 
@@ -30,7 +29,7 @@ TEST(Simd, SupportedLevelIsTheOneTheKernelReports) {
   if (flags.empty()) GTEST_SKIP() << "no /proc/cpuinfo";
   const hula::SimdLevel expected = flags.find(" avx512f ") != std::string::npos ? hula::SimdLevel::Avx512
                                    : flags.find(" avx2 ") != std::string::npos  ? hula::SimdLevel::Avx2
-                                                                                 : hula::SimdLevel::Baseline;
+                                                                                : hula::SimdLevel::Baseline;
   EXPECT_EQ(hula::simd_level_name(hula::supported_simd_level()), hula::simd_level_name(expected)) << flags;
 }
 
