@@ -1,8 +1,8 @@
 # SPDX-License-Identifier: MIT
 """The setuptools side of pyproject.toml: the version from CMakeLists.txt's project(VERSION), and a
 build_ext step that builds the compiled module hulahoops._core with the project's CMake build and
-copies it into the package, with the plugins (libhula_pagmo.so, libhula_ceres.so, libhula_occt.so) and, in
-builds with Open CASCADE, the STEP/IGES helper hula-exchange beside it.
+copies it into the package, with the plugins (libhula_pagmo.so, libhula_ceres.so, libhula_sqlite.so,
+libhula_occt.so) and, in builds with Open CASCADE, the STEP/IGES helper hula-exchange beside it.
 
 The CMake build directory is build/pip-cmake (configured Release with HULA_PYTHON=ON for the running
 interpreter, no tests, no MPI), kept between installs so a second install only rebuilds what changed.
@@ -66,7 +66,7 @@ class CMakeBuild(build_ext):
         target = pathlib.Path(self.get_ext_fullpath(ext.name))
         target.parent.mkdir(parents=True, exist_ok=True)
         shutil.copyfile(built[0], target)
-        # The plugins (pagmo, Ceres, Open CASCADE) beside the module too, where hula::plugin_symbol looks for them.
+        # The plugins (pagmo, Ceres, SQLite, Open CASCADE) beside the module too, where hula::plugin_symbol looks for them.
         for plugin in sorted((build_dir / "lib" / "hulahoops").glob("libhula_*.so")):
             shutil.copyfile(plugin, target.parent / plugin.name)
         if occt:

@@ -24,6 +24,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <array>
 #include <cctype>
 #include <csignal>
 #include <cstdlib>
@@ -127,6 +128,8 @@ std::string option_in(std::string_view message) {
   return std::string(message.substr(at + 2, end - at - 2));
 }
 
+constexpr const char* kVersion = "hula " HULA_VERSION;
+
 constexpr const char* kFooter =
     "Files: every input file may be - (standard input) and every -o/--output - (standard output).\n"
     "Output: JSON on stdout. Errors: one line on a terminal, else {\"error\": {\"code\", \"message\", \"where\"}}\n"
@@ -185,6 +188,81 @@ void refuse_copies_under_mpi_launcher(const CLI::App& command) {
                     hula::ErrorWhere{.field = "mpi"});
 }
 
+// The commands in the order `hula --help` lists them; `add` registers the one top-level command `name`.
+struct CommandEntry {
+  std::string_view name;
+  hula::cli::Command (*add)(CLI::App&);
+};
+constexpr std::array<CommandEntry, 37> kCommands{{
+    {"interpolate", hula::cli::add_interpolate},
+    {"eval", hula::cli::add_eval},
+    {"info", hula::cli::add_info},
+    {"demo", hula::cli::add_demo},
+    {"law", hula::cli::add_law},
+    {"analyse", hula::cli::add_analyse},
+    {"reconstruct", hula::cli::add_reconstruct},
+    {"optimise", hula::cli::add_optimise},
+    {"fair-knots", hula::cli::add_fair_knots},
+    {"fin-compound", hula::cli::add_fin_compound},
+    {"edit-projection", hula::cli::add_edit_projection},
+    {"hermite", hula::cli::add_hermite},
+    {"match-curvature", hula::cli::add_match_curvature},
+    {"match-curvature-torsion", hula::cli::add_match_curvature_torsion},
+    {"doc", hula::cli::add_doc},
+    {"convert", hula::cli::add_convert},
+    {"edit", hula::cli::add_edit},
+    {"approximate", hula::cli::add_approximate},
+    {"fit", hula::cli::add_fit},
+    {"closest", hula::cli::add_closest},
+    {"intersect", hula::cli::add_intersect},
+    {"distance", hula::cli::add_distance},
+    {"offset", hula::cli::add_offset},
+    {"helical-offset", hula::cli::add_helical_offset},
+    {"orthotomic", hula::cli::add_orthotomic},
+    {"polar", hula::cli::add_polar},
+    {"hermite-frenet", hula::cli::add_hermite_frenet},
+    {"clothoid", hula::cli::add_clothoid},
+    {"log-aesthetic", hula::cli::add_log_aesthetic},
+    {"deviation", hula::cli::add_deviation},
+    {"continuity", hula::cli::add_continuity},
+    {"energy", hula::cli::add_energy},
+    {"match", hula::cli::add_match},
+    {"blend", hula::cli::add_blend},
+    {"serve", hula::cli::add_serve},
+    {"batch", hula::cli::add_batch},
+    {"completion", hula::cli::add_completion},
+}};
+
+const CommandEntry* command_named(std::string_view word) {
+  for (const CommandEntry& command : kCommands)
+    if (command.name == word) return &command;
+  return nullptr;
+}
+
+// The command to build alone: the first word of the command line, after --error-format and its value only,
+// when it names a command other than `completion` (which prints the whole tree) and no other word is the name
+// of a command (a value that happens to be one, or a second command, is left to CLI11 with the whole tree).
+// nullptr when the whole tree is needed: no command (`hula`, `hula --help`, `hula --version` with other
+// words), an option before the command, or a misspelt command ("did you mean" compares it with every name).
+const CommandEntry* command_to_build_alone(int argc, char** argv) {
+  const CommandEntry* named = nullptr;
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view word = argv[i];
+    if (named != nullptr) {
+      if (command_named(word) != nullptr) return nullptr;
+      continue;
+    }
+    if (word == "--error-format") {
+      if (i + 1 < argc && command_named(argv[i + 1]) != nullptr) return nullptr;
+      ++i;
+      continue;
+    }
+    if (word.starts_with("--error-format=")) continue;
+    named = command_named(word);
+    if (named == nullptr) return nullptr;
+  }
+  return named != nullptr && named->name != "completion" ? named : nullptr;
+}
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -201,8 +279,20 @@ int main(int argc, char** argv) {
   std::signal(SIGXFSZ, SIG_IGN);
   g_error_format = error_format_from_argv(argc, argv);
 
+  // `hula --version` alone: the text CLI11's version flag prints, without building the command tree (every
+  // other spelling, `hula --error-format json --version` included, goes through CLI11 and prints the same).
+  if (argc == 2 && std::string_view(argv[1]) == "--version") {
+    try {
+      hula::cli::print_text(std::string(kVersion) + "\n");
+      return hula::cli::kExitOk;
+    } catch (const hula::Error& e) {
+      print_error(hula::io::error_to_json(e));
+      return hula::cli::kExitInvalidInput;
+    }
+  }
+
   CLI::App app{"hula: HulaHoops NURBS curve workbench", "hula"};
-  app.set_version_flag("--version", std::string("hula ") + HULA_VERSION);
+  app.set_version_flag("--version", kVersion);
   app.footer(kFooter);
   app.require_subcommand(0, 1);
   app.fallthrough();
@@ -211,45 +301,15 @@ int main(int argc, char** argv) {
                  "How errors are printed on stderr: text (one line) or json (default: text on a terminal, else json)")
       ->check(CLI::IsMember({"text", "json"}));
   try {
-    std::vector<hula::cli::Command> commands = {
-        hula::cli::add_interpolate(app),
-        hula::cli::add_eval(app),
-        hula::cli::add_info(app),
-        hula::cli::add_demo(app),
-        hula::cli::add_law(app),
-        hula::cli::add_analyse(app),
-        hula::cli::add_reconstruct(app),
-        hula::cli::add_optimise(app),
-        hula::cli::add_fair_knots(app),
-        hula::cli::add_fin_compound(app),
-        hula::cli::add_edit_projection(app),
-        hula::cli::add_hermite(app),
-        hula::cli::add_match_curvature(app),
-        hula::cli::add_match_curvature_torsion(app),
-        hula::cli::add_doc(app),
-        hula::cli::add_convert(app),
-        hula::cli::add_edit(app),
-        hula::cli::add_approximate(app),
-        hula::cli::add_fit(app),
-        hula::cli::add_closest(app),
-        hula::cli::add_intersect(app),
-        hula::cli::add_distance(app),
-        hula::cli::add_offset(app),
-        hula::cli::add_helical_offset(app),
-        hula::cli::add_orthotomic(app),
-        hula::cli::add_polar(app),
-        hula::cli::add_hermite_frenet(app),
-        hula::cli::add_clothoid(app),
-        hula::cli::add_log_aesthetic(app),
-        hula::cli::add_deviation(app),
-        hula::cli::add_continuity(app),
-        hula::cli::add_energy(app),
-        hula::cli::add_match(app),
-        hula::cli::add_blend(app),
-        hula::cli::add_serve(app),
-        hula::cli::add_batch(app),
-    };
-    commands.push_back(hula::cli::add_completion(app));
+    // Building CLI11's tree of every command and its options was most of the time `hula` spent in its own code
+    // before running a command (docs/benchmarks.md, "Command-line start-up"): only the command named is built
+    // when that parses the command line as the whole tree would.
+    std::vector<hula::cli::Command> commands;
+    if (const CommandEntry* alone = command_to_build_alone(argc, argv)) {
+      commands.push_back(alone->add(app));
+    } else {
+      for (const CommandEntry& command : kCommands) commands.push_back(command.add(app));
+    }
     try {
       app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -177,6 +177,13 @@ def test_did_you_mean(args, suggestion):
     assert suggestion in json.loads(r.stderr)["error"]["message"]
 
 
+def test_did_you_mean_after_the_error_format_option():
+    # checks a misspelt command after --error-format and its value still gets the nearest command
+    r = run("--error-format", "json", "anlyse", SPINE, check=False)
+    assert r.returncode == 2, r.stderr
+    assert "did you mean `hula analyse`?" in json.loads(r.stderr)["error"]["message"]
+
+
 def test_no_suggestion_for_a_far_word():
     # checks an unknown word far from every command gets no made-up suggestion
     r = run("zzzzzzzz", "--error-format", "json", check=False)
@@ -277,6 +284,48 @@ def test_help_matches_behaviour():
     top = run().stdout
     assert "default command" not in top
     assert top.startswith("hula: HulaHoops NURBS curve workbench")
+
+
+# each command built alone ---------------------------------------------------------------------------
+
+# The 37 commands of docs/cli.md, in the order `hula --help` lists them.
+COMMANDS = ["interpolate", "eval", "info", "demo", "law", "analyse", "reconstruct", "optimise", "fair-knots",
+            "fin-compound", "edit-projection", "hermite", "match-curvature", "match-curvature-torsion", "doc",
+            "convert", "edit", "approximate", "fit", "closest", "intersect", "distance", "offset", "helical-offset",
+            "orthotomic", "polar", "hermite-frenet", "clothoid", "log-aesthetic", "deviation", "continuity", "energy",
+            "match", "blend", "serve", "batch", "completion"]
+
+
+def man_options(page):
+    """The long options a man page of `hula completion man` lists (its .TP items), with their dashes."""
+    text = page.read_text().replace("\\-", "-")
+    return set(re.findall(r"^\\fB(?:-\w,)?(--[a-z-]+)", text, re.M))
+
+
+def test_each_command_alone_is_the_command_of_the_whole_tree(tmp_path):
+    # checks `hula --help` lists the 37 commands, and that each command's own --help (main.cpp builds only the
+    # command named) has the description `hula --help` gives it, and the options of its man page, which
+    # `hula completion man` writes from the whole tree; --error-format before the command changes nothing
+    top = run("--help").stdout
+    listed = re.findall(r"^  (\S+) +(.+)$", top.split("Subcommands:\n")[1].split("\n\n")[0], re.M)
+    assert [name for name, _ in listed] == COMMANDS
+    run("completion", "man", "--output-dir", str(tmp_path), "--examples", str(SOURCE / "docs" / "cli.md"),
+        "--examples", str(SOURCE / "docs" / "server.md"))
+    for name, description in listed:
+        own = run(name, "--help").stdout
+        assert own.splitlines()[0] == description, name
+        assert own.splitlines()[1].startswith(f"Usage: hula {name} "), name
+        options = set(re.findall(r"^\s+(?:-\w,)?(--[a-z-]+)", own, re.M))
+        assert options == man_options(tmp_path / f"hula-{name}.1") - {"--error-format"}, name
+        assert run("--error-format", "text", name, "--help").stdout == own, name
+
+
+def test_version_alone_is_what_the_version_flag_prints():
+    # checks `hula --version` (answered before any command is built) prints what CLI11's flag prints when other
+    # words come with it
+    alone = run("--version")
+    assert re.fullmatch(r"hula \d+\.\d+\.\d+\n", alone.stdout) and alone.stderr == ""
+    assert run("--error-format", "json", "--version").stdout == alone.stdout
 
 
 # progress -------------------------------------------------------------------------------------------

@@ -94,9 +94,9 @@ run(v1 / "bin" / "pip", "wheel", "--no-index", "--no-build-isolation", "--no-dep
 wheels = sorted((work / "dist").glob("hulahoops-*.whl"))
 assert len(wheels) == 1, wheels
 assert re.match(rf"hulahoops-{re.escape(version)}-cp3\d+-cp3\d+-linux_\w+\.whl$", wheels[0].name), wheels[0].name
-# The plugins (pagmo, Ceres; Open CASCADE) and the STEP/IGES helper travel in the wheel, beside the module.
+# The plugins (pagmo, Ceres, SQLite; Open CASCADE) and the STEP/IGES helper travel in the wheel, beside the module.
 shipped = set(zipfile.ZipFile(wheels[0]).namelist())
-expected = {"hulahoops/libhula_pagmo.so", "hulahoops/libhula_ceres.so"}
+expected = {"hulahoops/libhula_pagmo.so", "hulahoops/libhula_ceres.so", "hulahoops/libhula_sqlite.so"}
 if (build / "apps" / "hula" / "hula-exchange").exists():
     expected |= {"hulahoops/libhula_occt.so", "hulahoops/hula-exchange"}
 assert expected <= shipped, expected - shipped

@@ -62,6 +62,36 @@ TEST(Issue27Startup, VersionLoadsNeitherCeresNorMpi) {
     EXPECT_FALSE(opened(r, library)) << library << " loaded at start-up:\n" << r.err;
 }
 
+// checks: `hula --version` opens neither libsqlite3 (Debian links it -z now: ~1,600 symbols bound at start-up) nor
+// the plugin that holds it
+TEST(Issue27Startup, VersionLoadsNoSqlite) {
+  const ProcessResult r = hula_traced({"--version"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("file=libtbb"), std::string::npos) << "LD_DEBUG=files reported nothing:\n" << r.err;
+  EXPECT_FALSE(opened(r, "libsqlite3")) << r.err;
+  EXPECT_FALSE(opened(r, "libhula_sqlite")) << r.err;
+}
+
+// checks: a document is still an SQLite database (the file starts with SQLite's 16-byte header, "SQLite format 3"
+// and a NUL, sqlite.org/fileformat.html), written and read through the plugin, which brings libsqlite3
+TEST(Issue27Startup, DocumentLoadsTheSqlitePlugin) {
+  const hula::testing::TempDir dir;
+  const std::string curve = (dir.path() / "c.json").string(), doc = (dir.path() / "d.hula").string();
+  ASSERT_EQ(hula_traced({"interpolate", "--points", "examples/cli/pts.csv", "-o", curve}).exit_code, 0);
+  const ProcessResult made = hula_traced({"doc", "new", doc});
+  ASSERT_EQ(made.exit_code, 0) << made.err;
+  EXPECT_TRUE(opened(made, "/libhula_sqlite.so")) << made.err;
+  EXPECT_TRUE(opened(made, "libsqlite3")) << made.err;
+  ASSERT_EQ(hula_traced({"doc", "add", doc, "--curve", curve}).exit_code, 0);
+  const ProcessResult listed = hula_traced({"doc", "list", doc});
+  ASSERT_EQ(listed.exit_code, 0) << listed.err;
+  EXPECT_EQ(nlohmann::json::parse(listed.out).at("entities").size(), 1U) << listed.out;
+  std::ifstream file(doc, std::ios::binary);
+  std::string header(16, '\0');
+  file.read(header.data(), 16);
+  EXPECT_EQ(header, std::string("SQLite format 3\0", 16));
+}
+
 // checks: a hybrid curvature match (GA, then Ceres's bounded Levenberg–Marquardt) still runs, through the Ceres
 // plugin, and finds the known answer: the target is the curvature profile of the spline through (0,0), (35,20),
 // (40,0), and the free middle point starts at (32,23), so the match must move it back to (35,20).

@@ -2,6 +2,10 @@
 // Detection of the vector instruction sets (see simd.hpp).
 #include "hula/core/simd.hpp"
 
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#include <cpuid.h>
+#endif
+
 #include <atomic>
 #include <cstdlib>
 #include <string_view>
@@ -10,12 +14,21 @@ namespace hula {
 
 namespace {
 
+// The checks of GCC's __builtin_cpu_supports("avx512f") and ("avx2"): the CPU has the instructions (CPUID
+// leaf 7) and the OS saves their registers (OSXSAVE, then XCR0's SSE and AVX state, and for AVX-512 the
+// opmask and both ZMM states). Asked here, on first use, because __builtin_cpu_supports links libgcc's
+// __cpu_indicator_init, a static initialiser every run of every program holding this code would pay for
+// (CPUID traps in a VM: a few per cent of `hula --version`, docs/benchmarks.md).
 SimdLevel detect() noexcept {
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-  __builtin_cpu_init();
-  // __builtin_cpu_supports also requires the OS to save the wide registers (XGETBV).
-  if (__builtin_cpu_supports("avx512f")) return SimdLevel::Avx512;
-  if (__builtin_cpu_supports("avx2")) return SimdLevel::Avx2;
+  unsigned eax = 0, ebx = 0, ecx = 0, edx = 0;
+  if (__get_cpuid(1, &eax, &ebx, &ecx, &edx) == 0 || (ecx & bit_OSXSAVE) == 0) return SimdLevel::Baseline;
+  unsigned xcr0 = 0, xcr0_high = 0;
+  __asm__("xgetbv" : "=a"(xcr0), "=d"(xcr0_high) : "c"(0));
+  constexpr unsigned kSseAvx = 0x2 | 0x4, kAvx512 = 0x20 | 0x40 | 0x80;
+  if ((xcr0 & kSseAvx) != kSseAvx || __get_cpuid_count(7, 0, &eax, &ebx, &ecx, &edx) == 0) return SimdLevel::Baseline;
+  if ((xcr0 & kAvx512) == kAvx512 && (ebx & bit_AVX512F) != 0) return SimdLevel::Avx512;
+  if ((ebx & bit_AVX2) != 0) return SimdLevel::Avx2;
 #endif
   return SimdLevel::Baseline;
 }

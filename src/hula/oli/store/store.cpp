@@ -5,7 +5,6 @@
 #include "hula/oli/store/store.hpp"
 
 #include <fcntl.h>
-#include <sqlite3.h>
 #include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -21,10 +20,19 @@
 #include <utility>
 
 #include "hula/core/error.hpp"
+#include "hula/core/plugin.hpp"
 #include "hula/io/owned_files.hpp"
+#include "hula/oli/store/sqlite_api.hpp"
 
 namespace hula::oli::store {
 namespace {
+
+// libsqlite3's functions, from the SQLite plugin (sqlite_api.hpp), loaded by the first document opened.
+const detail::SqliteApi& sqlite() {
+  static const detail::SqliteApi* const api =
+      reinterpret_cast<detail::SqliteApiFunction>(plugin_symbol("sqlite", detail::kSqliteApiSymbol))();
+  return *api;
+}
 
 // The migrations, oldest first; migration i (0-based) brings the schema to version i + 1.
 constexpr std::array kMigrations = {
@@ -46,7 +54,7 @@ constexpr int kBusyTimeoutMs = 2000;
 bool out_of_space(sqlite3* db, int rc) {
   if ((rc & 0xff) == SQLITE_FULL) return true;
   if ((rc & 0xff) != SQLITE_IOERR || db == nullptr) return false;
-  const int e = sqlite3_system_errno(db);
+  const int e = sqlite().system_errno(db);
   return e == ENOSPC || e == EDQUOT || e == EFBIG;
 }
 
@@ -66,7 +74,7 @@ Errc sqlite_errc(sqlite3* db, int rc) {
 }
 
 std::string sqlite_reason(sqlite3* db, int rc) {
-  std::string reason = db != nullptr ? sqlite3_errmsg(db) : sqlite3_errstr(rc);
+  std::string reason = db != nullptr ? sqlite().errmsg(db) : sqlite().errstr(rc);
   const int primary = rc & 0xff;
   if (primary == SQLITE_CORRUPT || primary == SQLITE_NOTADB) return "the file is corrupt or truncated (" + reason + ")";
   if (out_of_space(db, rc)) return "the disk is full or the file size limit was reached (" + reason + ")";
@@ -188,19 +196,19 @@ class Checkpointer {
       due_ = false;
       lock.unlock();
       if (db == nullptr &&
-          sqlite3_open_v2(path_.c_str(), &db, SQLITE_OPEN_READWRITE | SQLITE_OPEN_NOMUTEX, nullptr) == SQLITE_OK) {
-        sqlite3_busy_timeout(db, kBusyTimeoutMs);
+          sqlite().open_v2(path_.c_str(), &db, SQLITE_OPEN_READWRITE | SQLITE_OPEN_NOMUTEX, nullptr) == SQLITE_OK) {
+        sqlite().busy_timeout(db, kBusyTimeoutMs);
         // A connection that has read nothing has not opened the WAL yet, and its checkpoint would
         // do nothing: read the schema once.
-        sqlite3_exec(db, "SELECT count(*) FROM sqlite_master", nullptr, nullptr, nullptr);
+        sqlite().exec(db, "SELECT count(*) FROM sqlite_master", nullptr, nullptr, nullptr);
       }
       // A failure (busy, I/O) leaves the pages in the WAL, where they are as durable as before; the
       // next commit past the threshold asks again.
-      if (db != nullptr) sqlite3_wal_checkpoint_v2(db, nullptr, SQLITE_CHECKPOINT_PASSIVE, nullptr, nullptr);
+      if (db != nullptr) sqlite().wal_checkpoint_v2(db, nullptr, SQLITE_CHECKPOINT_PASSIVE, nullptr, nullptr);
       lock.lock();
     }
     lock.unlock();
-    if (db != nullptr) sqlite3_close(db);
+    if (db != nullptr) sqlite().close(db);
   }
 
   std::filesystem::path path_;
@@ -238,8 +246,8 @@ struct Store::Impl {
     checkpointer.reset();
     for (Stmt* st : {&begin, &commit, &rollback, &put_entity, &delete_entity, &delete_steps_from, &delete_steps_through,
                      &put_step, &delete_step_entities, &put_step_entity, &set_applied, &put_document})
-      if (st->s != nullptr) sqlite3_finalize(st->s);
-    if (db != nullptr) sqlite3_close(db);
+      if (st->s != nullptr) sqlite().finalize(st->s);
+    if (db != nullptr) sqlite().close(db);
     // `lock` closes after the connection (member order).
   }
 
@@ -250,24 +258,24 @@ struct Store::Impl {
 
   sqlite3_stmt* prepare(std::string_view sql) const {
     sqlite3_stmt* s = nullptr;
-    check(sqlite3_prepare_v2(db, sql.data(), static_cast<int>(sql.size()), &s, nullptr), "prepare");
+    check(sqlite().prepare_v2(db, sql.data(), static_cast<int>(sql.size()), &s, nullptr), "prepare");
     return s;
   }
 
   // Runs a statement without results, then resets it.
   void run(Stmt& st, std::string_view what) const {
-    const int rc = sqlite3_step(st.s);
-    sqlite3_reset(st.s);
-    sqlite3_clear_bindings(st.s);
+    const int rc = sqlite().step(st.s);
+    sqlite().reset(st.s);
+    sqlite().clear_bindings(st.s);
     check(rc, what);
   }
 
   void exec(const char* sql, std::string_view what) const {
     char* message = nullptr;
-    const int rc = sqlite3_exec(db, sql, nullptr, nullptr, &message);
+    const int rc = sqlite().exec(db, sql, nullptr, nullptr, &message);
     if (rc != SQLITE_OK) {
       std::string reason = message != nullptr ? message : sqlite_reason(db, rc);
-      sqlite3_free(message);
+      sqlite().free(message);
       if ((rc & 0xff) == SQLITE_CORRUPT || (rc & 0xff) == SQLITE_NOTADB || out_of_space(db, rc))
         reason = sqlite_reason(db, rc);
       fail(path, std::string(what) + ": " + reason, sqlite_errc(db, rc));
@@ -276,9 +284,9 @@ struct Store::Impl {
 
   std::int64_t pragma_int(const char* sql) const {
     sqlite3_stmt* s = prepare(sql);
-    const int rc = sqlite3_step(s);
-    const std::int64_t value = rc == SQLITE_ROW ? sqlite3_column_int64(s, 0) : 0;
-    sqlite3_finalize(s);
+    const int rc = sqlite().step(s);
+    const std::int64_t value = rc == SQLITE_ROW ? sqlite().column_int64(s, 0) : 0;
+    sqlite().finalize(s);
     check(rc, sql);
     return value;
   }
@@ -310,10 +318,10 @@ struct Store::Impl {
   }
 
   void connect(int flags, const char* name = nullptr) {
-    const int rc = sqlite3_open_v2(name != nullptr ? name : path.c_str(), &db, flags | SQLITE_OPEN_NOMUTEX, nullptr);
+    const int rc = sqlite().open_v2(name != nullptr ? name : path.c_str(), &db, flags | SQLITE_OPEN_NOMUTEX, nullptr);
     if (rc != SQLITE_OK) fail(path, "cannot open: " + sqlite_reason(db, rc), sqlite_errc(db, rc));
-    sqlite3_extended_result_codes(db, 1);
-    sqlite3_busy_timeout(db, kBusyTimeoutMs);
+    sqlite().extended_result_codes(db, 1);
+    sqlite().busy_timeout(db, kBusyTimeoutMs);
   }
 
   void prepare_all() {
@@ -337,7 +345,7 @@ struct Store::Impl {
     exec("PRAGMA synchronous = NORMAL", "set synchronous");
     // Replaces SQLite's automatic checkpoint (also a WAL hook) by the checkpointer's thread.
     checkpointer = std::make_unique<Checkpointer>(path);
-    sqlite3_wal_hook(db, on_wal_commit, checkpointer.get());
+    sqlite().wal_hook(db, on_wal_commit, checkpointer.get());
   }
 
   // Brings the schema from `from` to kSchemaVersion, one transaction per migration.
@@ -348,7 +356,7 @@ struct Store::Impl {
         exec(kMigrations[v], "migrate to schema version " + std::to_string(v + 1));
         exec("COMMIT", "commit migration");
       } catch (...) {
-        sqlite3_exec(db, "ROLLBACK", nullptr, nullptr, nullptr);
+        sqlite().exec(db, "ROLLBACK", nullptr, nullptr, nullptr);
         throw;
       }
     }
@@ -356,14 +364,14 @@ struct Store::Impl {
 
   void bind_blob(sqlite3_stmt* s, int index, const std::optional<Blob>& blob) const {
     const int rc =
-        blob ? sqlite3_bind_blob64(s, index, blob->data(), blob->size(), SQLITE_STATIC) : sqlite3_bind_null(s, index);
+        blob ? sqlite().bind_blob64(s, index, blob->data(), blob->size(), SQLITE_STATIC) : sqlite().bind_null(s, index);
     check(rc, "bind");
   }
   void bind_u64(sqlite3_stmt* s, int index, std::uint64_t value) const {
-    check(sqlite3_bind_int64(s, index, static_cast<sqlite3_int64>(value)), "bind");
+    check(sqlite().bind_int64(s, index, static_cast<sqlite3_int64>(value)), "bind");
   }
   void bind_text(sqlite3_stmt* s, int index, const std::string& text) const {
-    check(sqlite3_bind_text64(s, index, text.data(), text.size(), SQLITE_STATIC, SQLITE_UTF8), "bind");
+    check(sqlite().bind_text64(s, index, text.data(), text.size(), SQLITE_STATIC, SQLITE_UTF8), "bind");
   }
 
   void write_step_entities(const StepRow& step) {
@@ -430,10 +438,10 @@ Store Store::create(const std::filesystem::path& path, const DocumentRow& row, b
       try {
         impl->run(st, "write the document row");
       } catch (...) {
-        sqlite3_finalize(s);
+        sqlite().finalize(s);
         throw;
       }
-      sqlite3_finalize(s);
+      sqlite().finalize(s);
     }
     if (exists) {
       // The old file's WAL and shared memory belong to it, not to the new file.
@@ -473,7 +481,7 @@ Store Store::open(const std::filesystem::path& path, Access access) {
   else
     impl->connect_read_only();
   // SQLite opens a write-protected file read-only without saying so: refuse it here instead.
-  if (access == Access::ReadWrite && sqlite3_db_readonly(impl->db, "main") == 1)
+  if (access == Access::ReadWrite && sqlite().db_readonly(impl->db, "main") == 1)
     fail(path, "cannot open for writing: the file is write-protected");
   const std::int64_t app = impl->pragma_int("PRAGMA application_id");
   if (app != kApplicationId) fail(path, "not a HulaHoops document (an SQLite database of another application)");
@@ -503,24 +511,24 @@ Snapshot Store::load() const {
     auto each = [&](const char* sql, auto&& row_fn) {
       sqlite3_stmt* s = m.prepare(sql);
       int rc = SQLITE_OK;
-      while ((rc = sqlite3_step(s)) == SQLITE_ROW) row_fn(s);
-      sqlite3_finalize(s);
+      while ((rc = sqlite().step(s)) == SQLITE_ROW) row_fn(s);
+      sqlite().finalize(s);
       m.check(rc, "read");
     };
     auto blob = [](sqlite3_stmt* s, int col) {
-      const void* data = sqlite3_column_blob(s, col);
-      const int size = sqlite3_column_bytes(s, col);
+      const void* data = sqlite().column_blob(s, col);
+      const int size = sqlite().column_bytes(s, col);
       return Blob(static_cast<const char*>(data), static_cast<std::size_t>(size));
     };
     auto text = [](sqlite3_stmt* s, int col) {
-      const unsigned char* data = sqlite3_column_text(s, col);
+      const unsigned char* data = sqlite().column_text(s, col);
       return data != nullptr ? std::string(reinterpret_cast<const char*>(data)) : std::string();
     };
     bool have_row = false;
     each("SELECT revision, next_label, backend, created, tool_version FROM document WHERE id = 1",
          [&](sqlite3_stmt* s) {
-           out.document.revision = static_cast<std::uint64_t>(sqlite3_column_int64(s, 0));
-           out.document.next_label = static_cast<std::uint64_t>(sqlite3_column_int64(s, 1));
+           out.document.revision = static_cast<std::uint64_t>(sqlite().column_int64(s, 0));
+           out.document.next_label = static_cast<std::uint64_t>(sqlite().column_int64(s, 1));
            out.document.backend = text(s, 2);
            out.document.created = text(s, 3);
            out.document.tool_version = text(s, 4);
@@ -528,29 +536,29 @@ Snapshot Store::load() const {
          });
     if (!have_row) fail(m.path, "the file is corrupt or truncated (no document row)");
     each("SELECT label, state FROM entities ORDER BY label", [&](sqlite3_stmt* s) {
-      out.entities.emplace_back(static_cast<std::uint64_t>(sqlite3_column_int64(s, 0)), blob(s, 1));
+      out.entities.emplace_back(static_cast<std::uint64_t>(sqlite().column_int64(s, 0)), blob(s, 1));
     });
     each("SELECT revision, name, time, applied FROM steps ORDER BY revision", [&](sqlite3_stmt* s) {
       StepRow step;
-      step.revision = static_cast<std::uint64_t>(sqlite3_column_int64(s, 0));
+      step.revision = static_cast<std::uint64_t>(sqlite().column_int64(s, 0));
       step.name = text(s, 1);
       step.time = text(s, 2);
-      step.applied = sqlite3_column_int(s, 3) != 0;
+      step.applied = sqlite().column_int(s, 3) != 0;
       out.steps.push_back(std::move(step));
     });
     std::size_t at = 0;
     each("SELECT revision, label, state FROM step_entities ORDER BY revision, label", [&](sqlite3_stmt* s) {
-      const auto revision = static_cast<std::uint64_t>(sqlite3_column_int64(s, 0));
+      const auto revision = static_cast<std::uint64_t>(sqlite().column_int64(s, 0));
       while (at < out.steps.size() && out.steps[at].revision < revision) ++at;
       if (at == out.steps.size() || out.steps[at].revision != revision)
         fail(m.path, "the file is corrupt (undo record of a missing step " + std::to_string(revision) + ")");
       std::optional<Blob> state;
-      if (sqlite3_column_type(s, 2) != SQLITE_NULL) state = blob(s, 2);
-      out.steps[at].entities.emplace_back(static_cast<std::uint64_t>(sqlite3_column_int64(s, 1)), std::move(state));
+      if (sqlite().column_type(s, 2) != SQLITE_NULL) state = blob(s, 2);
+      out.steps[at].entities.emplace_back(static_cast<std::uint64_t>(sqlite().column_int64(s, 1)), std::move(state));
     });
     m.exec("COMMIT", "end read");
   } catch (...) {
-    sqlite3_exec(m.db, "ROLLBACK", nullptr, nullptr, nullptr);
+    sqlite().exec(m.db, "ROLLBACK", nullptr, nullptr, nullptr);
     throw;
   }
   return out;
@@ -585,13 +593,13 @@ void Store::apply(const Batch& batch) {
       m.bind_u64(m.put_step.s, 1, step.revision);
       m.bind_text(m.put_step.s, 2, step.name);
       m.bind_text(m.put_step.s, 3, step.time);
-      m.check(sqlite3_bind_int(m.put_step.s, 4, step.applied ? 1 : 0), "bind");
+      m.check(sqlite().bind_int(m.put_step.s, 4, step.applied ? 1 : 0), "bind");
       m.run(m.put_step, "write an undo step");
       m.write_step_entities(step);
     }
     for (const StepRow& step : batch.step_updates) {
       m.bind_u64(m.set_applied.s, 1, step.revision);
-      m.check(sqlite3_bind_int(m.set_applied.s, 2, step.applied ? 1 : 0), "bind");
+      m.check(sqlite().bind_int(m.set_applied.s, 2, step.applied ? 1 : 0), "bind");
       m.run(m.set_applied, "mark an undo step");
       m.write_step_entities(step);
     }
@@ -601,8 +609,8 @@ void Store::apply(const Batch& batch) {
     m.run(m.commit, "commit");
   } catch (...) {
     // ROLLBACK can itself fail only when SQLite already rolled back (disk full, I/O error).
-    sqlite3_step(m.rollback.s);
-    sqlite3_reset(m.rollback.s);
+    sqlite().step(m.rollback.s);
+    sqlite().reset(m.rollback.s);
     throw;
   }
 }
@@ -611,12 +619,12 @@ std::vector<std::string> Store::integrity_check() const {
   std::vector<std::string> problems;
   sqlite3_stmt* s = impl_->prepare("PRAGMA integrity_check");
   int rc = SQLITE_OK;
-  while ((rc = sqlite3_step(s)) == SQLITE_ROW) {
-    const unsigned char* text = sqlite3_column_text(s, 0);
+  while ((rc = sqlite().step(s)) == SQLITE_ROW) {
+    const unsigned char* text = sqlite().column_text(s, 0);
     std::string line = text != nullptr ? reinterpret_cast<const char*>(text) : "";
     if (line != "ok") problems.push_back(std::move(line));
   }
-  sqlite3_finalize(s);
+  sqlite().finalize(s);
   if (rc != SQLITE_DONE) problems.push_back(sqlite_reason(impl_->db, rc));
   return problems;
 }
