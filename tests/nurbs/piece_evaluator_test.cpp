@@ -5,13 +5,16 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstring>
 #include <string>
 #include <vector>
 
 #include "hula/core/error.hpp"
 #include "hula/core/rng.hpp"
+#include "hula/core/simd.hpp"
 #include "hula/nurbs/arc_length.hpp"
 #include "hula/nurbs/basis.hpp"
 #include "hula/nurbs/detail/basis_fixed.hpp"
@@ -61,11 +64,12 @@ TEST(PieceEvaluator, FixedDegreeBasisIsTheGeneralOneBitForBit) {
   expect_fixed_basis_is_general<9>(rng);
 }
 
-// Two curves with the same data that share nothing (a copy would share the cache).
-std::array<NurbsCurve, 2> twins(Rng& rng, const testing::RandomCurveSpec& spec) {
+// Two curves with the same data that share nothing (a copy would share the cache), poles scaled by `scale`.
+std::array<NurbsCurve, 2> twins(Rng& rng, const testing::RandomCurveSpec& spec, double scale = 1.0) {
   const NurbsCurve c = testing::random_curve(rng, spec);
   const std::vector<double> U(c.knots().values().begin(), c.knots().values().end());
-  const std::vector<Vec3> P(c.control_points().begin(), c.control_points().end());
+  std::vector<Vec3> P(c.control_points().begin(), c.control_points().end());
+  for (Vec3& q : P) q *= scale;
   const std::vector<double> W(c.weights().begin(), c.weights().end());
   return {NurbsCurve(c.degree(), U, P, W), NurbsCurve(c.degree(), U, P, W)};
 }
@@ -182,6 +186,95 @@ TEST(PieceEvaluator, OverflowIsTheCurvesError) {
   pieces.derivatives(std::span<const double>(&t, 1), 0, std::span<Vec3>(&a, 1));
   cached.derivatives(std::span<const double>(&t, 1), 0, std::span<Vec3>(&b, 1));
   EXPECT_TRUE(same_bits(a, b));
+}
+
+// The speeds of `pieces` at ts against norm() of `cached`'s first derivatives, bit for bit.
+void expect_speeds_are_norms(PieceEvaluator& pieces, const NurbsCurve& cached, std::span<const double> ts,
+                             const std::string& what) {
+  std::vector<double> speed(ts.size());
+  pieces.speeds(ts, speed);
+  std::vector<Vec3> d(2 * ts.size());
+  cached.derivatives(ts, 1, d);
+  for (std::size_t i = 0; i < ts.size(); ++i)
+    ASSERT_TRUE(same_bits(speed[i], norm(d[2 * i + 1]))) << what << " t " << ts[i] << " i " << i;
+}
+
+// checks: speeds() gives norm(C') of the cached evaluator bit for bit at every SIMD level (scalar,
+// baseline, AVX2, AVX-512F where the CPU has them), degrees 1–9, rational or not, on curves of 5,000+
+// spans (pieces) and of 20 (through the curve's cache): the 15 nodes of a Gauss–Kronrod rule inside a
+// span, 1 to 64 random parameters of one span, the breakpoints, parameters of two spans; on a curve
+// scaled by 1e-160 (|C'|² below 1e-290, where norm() scales) and by 1e150 (above 1e290) as well.
+TEST(PieceEvaluator, SpeedsAreTheNormOfTheDerivativeBitForBit) {
+  Rng rng(2712);
+  const SimdLevel saved = simd_level();
+  for (const SimdLevel level : {SimdLevel::Scalar, SimdLevel::Baseline, SimdLevel::Avx2, SimdLevel::Avx512}) {
+    if (level > supported_simd_level()) continue;
+    set_simd_level(level);
+    for (int trial = 0; trial < 18; ++trial) {
+      const int degree = 1 + trial % 9;
+      const bool long_curve = trial % 2 == 0;
+      const double scale = trial % 6 == 1 ? 1e-160 : trial % 6 == 3 ? 1e150 : 1.0;
+      auto [fresh, cached] =
+          twins(rng,
+                {.degree = degree,
+                 .rational = trial % 4 >= 2,
+                 .clamped = trial % 3 != 2,
+                 .extra_points = long_curve ? static_cast<int>(PieceEvaluator::kMinSpans) + 900 : 20},
+                scale);
+      const std::string what = std::string(simd_level_name(level)) + " degree " + std::to_string(degree) + " scale " +
+                               std::to_string(scale) + (long_curve ? " pieces" : " cache");
+      PieceEvaluator pieces(fresh);
+      const std::vector<double> breaks = fresh.knots().breakpoints();
+      for (int k = 0; k < 300; ++k) {
+        const std::size_t s = rng.below(breaks.size() - 1);
+        const double b0 = breaks[s], b1 = breaks[s + 1];
+        std::array<double, 15> rule;
+        for (std::size_t j = 0; j < rule.size(); ++j)
+          rule[j] = b0 + (b1 - b0) * (0.5 + 0.49 * std::cos(3.14159 * static_cast<double>(j) / 14.0));
+        expect_speeds_are_norms(pieces, cached, rule, what + " rule");
+        std::vector<double> ts(1 + rng.below(64));
+        for (double& t : ts) t = rng.uniform(b0, b1);
+        expect_speeds_are_norms(pieces, cached, ts, what + " random");
+      }
+      expect_speeds_are_norms(pieces, cached,
+                              std::span<const double>(breaks).first(std::min<std::size_t>(64, breaks.size())),
+                              what + " breakpoints");
+      const std::size_t last = breaks.size() - 1;
+      const std::array<double, 2> across{0.5 * (breaks[0] + breaks[1]), 0.5 * (breaks[last - 1] + breaks[last])};
+      expect_speeds_are_norms(pieces, cached, across, what + " across");
+    }
+  }
+  set_simd_level(saved);
+}
+
+// checks: an overflowing first derivative (1e299 poles on spans of 1e-12) is the curve's NumericalFailure
+// through speeds() too.
+TEST(PieceEvaluator, SpeedsOverflowIsTheCurvesError) {
+  const std::size_t n = 5000;
+  std::vector<double> U(n + 4);
+  for (std::size_t i = 0; i < U.size(); ++i)
+    U[i] = 1e-12 * (static_cast<double>(std::min(std::max<std::size_t>(i, 3), n)) - 3.0);
+  std::vector<Vec3> P(n);
+  for (std::size_t i = 0; i < n; ++i) P[i] = {i % 2 == 0 ? 0.0 : 1e299, 0.0, 0.0};
+  const NurbsCurve fresh(3, U, P), cached(3, U, P);
+  PieceEvaluator pieces(fresh);
+  const std::array<double, 3> ts{1e-12 * 2500.25, 1e-12 * 2500.5, 1e-12 * 2500.75};
+  std::array<double, 3> speed;
+  std::array<Vec3, 6> d;
+  std::string from_speeds, from_cache;
+  try {
+    pieces.speeds(ts, speed);
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), Errc::NumericalFailure);
+    from_speeds = e.what();
+  }
+  try {
+    cached.derivatives(ts, 1, d);
+  } catch (const Error& e) {
+    from_cache = e.what();
+  }
+  EXPECT_NE(from_speeds.find("overflows"), std::string::npos) << from_speeds;
+  EXPECT_EQ(from_speeds, from_cache);
 }
 
 }  // namespace

@@ -23,6 +23,8 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
+#include <span>
 #include <string>
 #include <tuple>
 #include <type_traits>
@@ -31,6 +33,7 @@
 
 #include "hula/core/error.hpp"
 #include "hula/core/huge_pages.hpp"
+#include "hula/core/parallel.hpp"
 #include "hula/nurbs/piece_evaluator.hpp"
 
 namespace hula::nurbs {
@@ -49,37 +52,59 @@ constexpr std::uintmax_t kMaxNewtonIterations = 100;
 constexpr long kMaxEvaluations = 2'000'000;
 // 32 GK15 rules per span: a smooth span needs one to a few.
 constexpr long kEvaluationsPerSpan = 32 * 15;
+constexpr long kRuleEvaluations = 15;
+// Pieces from which a length is computed on several threads, and pieces per task.
+constexpr std::size_t kParallelPieces = 16384;
+constexpr std::size_t kPiecesPerTask = 4096;
 
 struct GkResult {
   double kronrod;
   double error;  // |K15 - G7|
 };
 
+// One thread's span pieces and its count of speed evaluations.
+struct Worker {
+  explicit Worker(const NurbsCurve& curve) : pieces(curve) {}
+  PieceEvaluator pieces;
+  long evaluations = 0;
+};
+
 // Integrates |C'| with adaptive bisection; allocation-free (recursion on the stack).
+//
+// On a curve of many spans both passes run on several threads, and the result is that of one thread
+// bit for bit: every piece's estimate and adaptive integral is computed by the same operations wherever
+// it runs, and the sums are taken in span order afterwards. The evaluation budget is global (the count
+// of every piece before it): a thread counts each piece's evaluations from zero and stops a piece only
+// where the run on one thread would certainly have stopped too; the sum in span order then adds the
+// counts, and from the first piece whose count could have crossed the budget (or that stopped) the rest
+// is integrated again on one thread, which gives the one-thread run's result or error exactly.
 class SpeedIntegrator {
  public:
-  SpeedIntegrator(const NurbsCurve& curve, double tolerance)
-      : pieces_(curve),
+  SpeedIntegrator(const NurbsCurve& curve, double tolerance, std::size_t threads)
+      : curve_(curve),
+        main_(curve),
         tolerance_(tolerance),
+        threads_(threads),
         breaks_(curve.knots().breakpoints()),
         budget_(kMaxEvaluations + kEvaluationsPerSpan * static_cast<long>(breaks_.size())) {}
 
   double speed(double t) {
-    ++evaluations_;
-    std::array<Vec3, 2> d;
-    pieces_.derivatives(std::span<const double>(&t, 1), 1, d);
-    return norm(d[1]);
+    ++main_.evaluations;
+    double v = 0.0;
+    main_.pieces.speeds(std::span<const double>(&t, 1), std::span<double>(&v, 1));
+    return v;
   }
 
-  // The 15 nodes of a rule at once, in increasing order (one span located once, its points evaluated
-  // together by the batch kernels: the same values as one call per node). A long curve is evaluated one
-  // span's piece at a time (PieceEvaluator: the same values without building the curve's cache).
-  GkResult gk15(double x0, double x1) {
+  // The 15 nodes of a rule at once, in increasing order (one span located once, their speeds computed
+  // together by the SIMD speed kernel: the same values as one call per node). A long curve is evaluated
+  // one span's piece at a time (PieceEvaluator: the same values without building the curve's cache).
+  static GkResult gk15(Worker& w, double x0, double x1) {
     const auto& x = Kronrod15::abscissa();
     const auto& wk = Kronrod15::weights();
     const auto& wg = Gauss7::weights();
     constexpr std::size_t m = 7;  // nodes on each side of the centre
     static_assert(std::tuple_size_v<std::remove_cvref_t<decltype(x)>> == m + 1);
+    static_assert(2 * m + 1 == kRuleEvaluations);
     const double c = 0.5 * (x0 + x1);
     const double h = 0.5 * (x1 - x0);
     std::array<double, 2 * m + 1> ts;
@@ -89,73 +114,128 @@ class SpeedIntegrator {
       ts[m - j] = c - dx;
       ts[m + j] = c + dx;
     }
-    std::array<Vec3, 2 * (2 * m + 1)> d;
-    pieces_.derivatives(ts, 1, d);
-    evaluations_ += static_cast<long>(ts.size());
-    const auto speed = [&](std::size_t i) { return norm(d[2 * i + 1]); };
-    const double fc = speed(m);
+    std::array<double, 2 * m + 1> speed;
+    w.pieces.speeds(ts, speed);
+    w.evaluations += kRuleEvaluations;
+    const double fc = speed[m];
     double k = fc * wk[0];
     double g = fc * wg[0];
     for (std::size_t j = 1; j <= m; ++j) {
-      const double f = speed(m - j) + speed(m + j);
+      const double f = speed[m - j] + speed[m + j];
       k += wk[j] * f;
       if (j % 2 == 0) g += wg[j / 2] * f;
     }
     return {k * h, std::fabs((k - g) * h)};
   }
 
-  // Adaptive integral over [x0, x1] with per-unit-width error budget `density`.
-  double adapt(double x0, double x1, const GkResult& est, double density, int depth) {
+  // Adaptive integral over [x0, x1] with per-unit-width error budget `density`; fails once w's count
+  // exceeds `cap`.
+  double adapt(Worker& w, double x0, double x1, const GkResult& est, double density, int depth, long cap) const {
     const double width = x1 - x0;
     const double noise = 50.0 * std::numeric_limits<double>::epsilon() * std::fabs(est.kronrod);
     if (est.error <= std::max(density * width, noise)) return est.kronrod;
     const double mid = 0.5 * (x0 + x1);
-    if (depth >= kMaxDepth || evaluations_ > budget_ || !(mid > x0 && mid < x1)) fail(x0, x1);
-    const GkResult left = gk15(x0, mid);
-    const GkResult right = gk15(mid, x1);
-    return adapt(x0, mid, left, density, depth + 1) + adapt(mid, x1, right, density, depth + 1);
+    if (depth >= kMaxDepth || w.evaluations > cap || !(mid > x0 && mid < x1)) fail(x0, x1, w.evaluations);
+    const GkResult left = gk15(w, x0, mid);
+    const GkResult right = gk15(w, mid, x1);
+    return adapt(w, x0, mid, left, density, depth + 1, cap) + adapt(w, mid, x1, right, density, depth + 1, cap);
   }
 
   // Length over [a, b] (inside the domain), integrating span by span.
   double integrate(double a, double b) {
     if (!(a < b)) return 0.0;
-    // First pass: one GK15 per span piece gives L0 for the error budget.
-    // The estimates are kept (16 bytes a span, allocated once at their final size: a million-span curve
-    // grew them by doubling, and the copies and page faults were a tenth of `hula info`); each piece's
-    // ends are computed again, the same way, in the second pass.
+    // The spans meeting (a, b), lo … hi − 1 (every piece cut to [a, b] is non-empty; the others are).
     const std::size_t spans = breaks_.size() - 1;
-    if (estimates_.capacity() < spans) {
-      std::vector<GkResult> fresh;
-      fresh.reserve(spans);
-      advise_huge_pages(fresh.data(), spans * sizeof(GkResult));
-      estimates_.swap(fresh);
+    const auto first = breaks_.begin();
+    const auto lo = static_cast<std::size_t>(std::upper_bound(first + 1, breaks_.end(), a) - (first + 1));
+    const auto hi =
+        static_cast<std::size_t>(std::lower_bound(first, first + static_cast<std::ptrdiff_t>(spans), b) - first);
+    const std::size_t count = hi - lo;
+    // First pass: one GK15 per span piece gives L0 for the error budget.
+    // The estimates are kept (16 bytes a span, allocated once at their final size, not zero-filled: a
+    // million-span curve grew them by doubling, and the copies and page faults were a tenth of
+    // `hula info`); each piece's ends are computed again, the same way, in the second pass.
+    if (capacity_ < count) {
+      estimates_.reset(new GkResult[count]);
+      advise_huge_pages(estimates_.get(), count * sizeof(GkResult));
+      capacity_ = count;
     }
-    estimates_.clear();
+    GkResult* const est = estimates_.get();
+    const bool parallel = count >= kParallelPieces && threads_ != 1;
+    if (parallel) {
+      for_tasks(lo, hi, [&](Worker& w, std::size_t s) {
+        const auto [x0, x1] = piece(a, b, s);
+        est[s - lo] = gk15(w, x0, x1);
+      });
+      main_.evaluations += kRuleEvaluations * static_cast<long>(count);
+    } else {
+      for (std::size_t s = lo; s < hi; ++s) {
+        const auto [x0, x1] = piece(a, b, s);
+        est[s - lo] = gk15(main_, x0, x1);
+      }
+    }
     double l0 = 0.0;
-    for (std::size_t s = 0; s < spans; ++s) {
-      const auto [x0, x1] = piece(a, b, s);
-      if (!(x0 < x1)) continue;
-      estimates_.push_back(gk15(x0, x1));
-      l0 += estimates_.back().kronrod;
-    }
+    for (std::size_t e = 0; e < count; ++e) l0 += est[e].kronrod;
     const double density = tolerance_ * l0 / (b - a);
     double total = 0.0;
-    std::size_t e = 0;
-    for (std::size_t s = 0; s < spans; ++s) {
+    std::size_t next = lo;  // the first piece not yet added
+    if (parallel) {
+      // Second pass on the threads: each piece's integral and its own evaluation count replace its estimate
+      // (NaN: stopped, for the budget as counted from the lowest possible start or for any other error).
+      const long start = main_.evaluations;
+      for_tasks(lo, hi, [&](Worker& w, std::size_t s) {
+        const auto [x0, x1] = piece(a, b, s);
+        w.evaluations = 0;
+        GkResult& r = est[s - lo];
+        try {
+          r = {adapt(w, x0, x1, r, density, 0, budget_ - start), static_cast<double>(w.evaluations)};
+        } catch (const Error&) {
+          r = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
+        }
+      });
+      for (; next < hi; ++next) {
+        const GkResult& r = est[next - lo];
+        if (std::isnan(r.error) || main_.evaluations + static_cast<long>(r.error) > budget_) break;
+        total += r.kronrod;
+        main_.evaluations += static_cast<long>(r.error);
+      }
+    }
+    // One thread: from the start, or where the threads' result could differ from its own (the estimate is
+    // computed again, uncounted: the first pass counted it).
+    for (std::size_t s = next; s < hi; ++s) {
       const auto [x0, x1] = piece(a, b, s);
-      if (!(x0 < x1)) continue;
-      total += adapt(x0, x1, estimates_[e++], density, 0);
+      GkResult e = est[s - lo];
+      if (parallel) {
+        e = gk15(main_, x0, x1);
+        main_.evaluations -= kRuleEvaluations;
+      }
+      total += adapt(main_, x0, x1, e, density, 0, budget_);
     }
     return total;
   }
 
  private:
-  [[noreturn]] void fail(double x0, double x1) const {
+  [[noreturn]] void fail(double x0, double x1, long evaluations) const {
     throw Error(Errc::NumericalFailure,
                 "arc length: tolerance = " + format_number(tolerance_) + " not met on [" + format_number(x0) + ", " +
-                    format_number(x1) + "] within the recursion budget (" + std::to_string(evaluations_) +
+                    format_number(x1) + "] within the recursion budget (" + std::to_string(evaluations) +
                     " evaluations)",
                 {.field = "tolerance"});
+  }
+
+  // body(worker, s) for every span s in [lo, hi), in tasks of kPiecesPerTask consecutive spans, each task
+  // with its own worker, on up to threads_ threads; an error is the lowest span's (hula::parallel_for).
+  template <class Body>
+  void for_tasks(std::size_t lo, std::size_t hi, const Body& body) const {
+    const std::size_t tasks = (hi - lo + kPiecesPerTask - 1) / kPiecesPerTask;
+    parallel_for(0, tasks,
+                 [&](std::size_t task) {
+                   Worker w(curve_);
+                   const std::size_t s0 = lo + task * kPiecesPerTask;
+                   const std::size_t s1 = std::min(hi, s0 + kPiecesPerTask);
+                   for (std::size_t s = s0; s < s1; ++s) body(w, s);
+                 },
+                 {.threads = threads_, .grain = 1});
   }
 
   // Span s of the curve cut to [a, b] (empty when x0 >= x1).
@@ -163,12 +243,14 @@ class SpeedIntegrator {
     return {std::max(a, breaks_[s]), std::min(b, breaks_[s + 1])};
   }
 
-  PieceEvaluator pieces_;
+  const NurbsCurve& curve_;
+  Worker main_;
   double tolerance_;
-  long evaluations_ = 0;
+  std::size_t threads_;
   std::vector<double> breaks_;
   long budget_;
-  std::vector<GkResult> estimates_;
+  std::unique_ptr<GkResult[]> estimates_;
+  std::size_t capacity_ = 0;
 };
 
 void check_parameter(const char* name, double t, const Interval& d) {
@@ -197,7 +279,7 @@ double arc_length(const NurbsCurve& curve, double a, double b, const ArcLengthOp
   if (a > b)
     throw Error(Errc::InvalidArgument, "a = " + format_number(a) + " is greater than b = " + format_number(b),
                 {.field = "a"});
-  SpeedIntegrator integrator(curve, options.tolerance);
+  SpeedIntegrator integrator(curve, options.tolerance, options.threads);
   return integrator.integrate(a, b);
 }
 
@@ -212,7 +294,7 @@ double parameter_at_length(const NurbsCurve& curve, double s, const ArcLengthOpt
     throw Error(Errc::NonFiniteInput, "s = " + format_number(s) + " is not finite", {.field = "s"});
   if (s < 0.0)
     throw Error(Errc::OutOfDomain, "s = " + format_number(s) + " is negative; arc length runs from 0", {.field = "s"});
-  SpeedIntegrator integrator(curve, options.tolerance);
+  SpeedIntegrator integrator(curve, options.tolerance, options.threads);
   const Interval d = curve.domain();
   const std::vector<double> breaks = curve.knots().breakpoints();
   // Cumulative length at each breakpoint brackets s in one span.

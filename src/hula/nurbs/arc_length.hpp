@@ -4,6 +4,8 @@
 // safeguarded Newton iteration.
 #pragma once
 
+#include <cstddef>
+
 #include "hula/nurbs/nurbs_curve.hpp"
 
 namespace hula::nurbs {
@@ -13,6 +15,9 @@ struct ArcLengthOptions {
   /// Relative tolerance on the length: |error| ≤ tolerance × length. Default 1e-12.
   /// Valid range [1e-15, 1e-2].
   double tolerance = 1e-12;
+  /// Worker threads for a curve of many spans (16,384 or more in the interval): 0 = all cores, 1 = this
+  /// thread only. The result, and any error, is the same on any number of threads. Default 0.
+  std::size_t threads = 0;
   /// @throws hula::Error(Errc::InvalidOption) naming the field
   void validate() const;
 };

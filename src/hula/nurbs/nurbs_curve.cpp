@@ -772,6 +772,7 @@ struct PieceEvaluator::State {
   SpanCache cache;
   std::size_t span = 0;  // knot index i of the piece in `cache`; 0 (never a span: i ≥ p ≥ 1) before the first
   bool pieces = false;   // large enough, and of a cached degree
+  bool whole = false;    // the piece's exact points and span search are written too (not only its coefficients)
 };
 
 PieceEvaluator::PieceEvaluator(const NurbsCurve& curve) : curve_(curve), state_(std::make_unique<State>()) {
@@ -795,6 +796,52 @@ PieceEvaluator::PieceEvaluator(const NurbsCurve& curve) : curve_(curve), state_(
 
 PieceEvaluator::~PieceEvaluator() = default;
 
+std::size_t PieceEvaluator::load_span(double t, bool whole) {
+  const NurbsCurve::Data& d = *curve_.data_;
+  State& st = *state_;
+  const std::span<const double> U = d.knots.values();
+  // The previous piece's span or the next one first (one pass along the curve asks about each span in turn).
+  const std::size_t next = st.span + 1;
+  const std::size_t i = st.span != 0 && next + 1 < d.points.size() + 1 && U[next] <= t && t < U[next + 1]
+                            ? next
+                            : d.knots.find_span(t, st.span, Side::Right);
+  SpanCache& c = st.cache;
+  double* breaks = c.store.get();
+  if (i != st.span) {
+    // The breakpoints U[i] < U[i + 1] and the piece.
+    breaks[0] = U[i];
+    breaks[1] = U[i + 1];
+    double* mid = breaks + 2;
+    double* inv_half = breaks + 3;
+    double* coef = breaks + 4;
+    d.piece(i, *mid, *inv_half, coef);
+    st.span = i;
+    st.whole = false;
+  }
+  if (whole && !st.whole) {
+    // The exact points of the breakpoints (build_cache: a run of m ≥ p equal knots starting at index r
+    // passes through point r − 1, or point 0 at r = 0) and the span search (speeds() needs neither).
+    const auto P = static_cast<std::size_t>(d.degree());
+    double* exact = breaks + 4 + c.block;
+    std::size_t r0 = i;
+    while (r0 > 0 && U[r0 - 1] == U[i]) --r0;
+    std::size_t e1 = i + 1;
+    while (e1 + 1 < U.size() && U[e1 + 1] == U[i + 1]) ++e1;
+    const std::array<std::pair<std::size_t, std::size_t>, 2> runs{{{r0, i - r0 + 1}, {i + 1, e1 - i}}};
+    for (std::size_t b = 0; b < 2; ++b) {
+      const auto [start, m] = runs[b];
+      write_exact_record(exact + 4 * b, m, P, d.points, start);
+    }
+    // Every derivative is probed for overflow (a cheap sum) instead of bounding the piece first (positions
+    // never overflow inside the domain): where the cache's bound rules an overflow out the probe finds
+    // none, so the values and errors are the same.
+    c.unchecked_order = 0;
+    build_buckets(c);
+    st.whole = true;
+  }
+  return i;
+}
+
 void PieceEvaluator::derivatives(std::span<const double> ts, int order, std::span<Vec3> out) {
   const NurbsCurve::Data& d = *curve_.data_;
   State& st = *state_;
@@ -808,40 +855,7 @@ void PieceEvaluator::derivatives(std::span<const double> ts, int order, std::spa
     return;
   }
   const std::span<const double> U = d.knots.values();
-  // The previous piece's span or the next one first (one pass along the curve asks about each span in turn).
-  const std::size_t next = st.span + 1;
-  const std::size_t i = st.span != 0 && next + 1 < d.points.size() + 1 && U[next] <= ts[0] && ts[0] < U[next + 1]
-                            ? next
-                            : d.knots.find_span(ts[0], st.span, Side::Right);
-  if (i != st.span) {
-    // The breakpoints U[i] < U[i + 1] and their exact points (build_cache: a run of m ≥ p equal knots
-    // starting at index r passes through point r − 1, or point 0 at r = 0).
-    SpanCache& c = st.cache;
-    const auto P = static_cast<std::size_t>(d.degree());
-    double* breaks = c.store.get();
-    double* exact = breaks + 4 + c.block;
-    breaks[0] = U[i];
-    breaks[1] = U[i + 1];
-    std::size_t r0 = i;
-    while (r0 > 0 && U[r0 - 1] == U[i]) --r0;
-    std::size_t e1 = i + 1;
-    while (e1 + 1 < U.size() && U[e1 + 1] == U[i + 1]) ++e1;
-    const std::array<std::pair<std::size_t, std::size_t>, 2> runs{{{r0, i - r0 + 1}, {i + 1, e1 - i}}};
-    for (std::size_t b = 0; b < 2; ++b) {
-      const auto [start, m] = runs[b];
-      write_exact_record(exact + 4 * b, m, P, d.points, start);
-    }
-    double* mid = breaks + 2;
-    double* inv_half = breaks + 3;
-    double* coef = breaks + 4;
-    d.piece(i, *mid, *inv_half, coef);
-    // Every derivative is probed for overflow (a cheap sum) instead of bounding the piece first (positions
-    // never overflow inside the domain): where the cache's bound rules an overflow out the probe finds
-    // none, so the values and errors are the same.
-    c.unchecked_order = 0;
-    build_buckets(c);
-    st.span = i;
-  }
+  const std::size_t i = load_span(ts[0], true);
   // Every parameter where the curve's cache would look it up: in [U[i], U[i + 1]), or at the end of the
   // last span.
   const double b0 = U[i], b1 = U[i + 1];
@@ -854,6 +868,49 @@ void PieceEvaluator::derivatives(std::span<const double> ts, int order, std::spa
   const int p = d.degree();
   kernel_for(p, d.rational(), order)(st.cache, ts, order, out.data(), dom, EvalOptions{}, true,
                                      detail::run_kernel(p, d.rational(), order));
+}
+
+void PieceEvaluator::speeds(std::span<const double> ts, std::span<double> out) {
+  constexpr std::size_t kBlock = 16;  // a multiple of every kernel's lane count
+  constexpr std::size_t kMaxPoints = 64;
+  HULA_ASSERT(ts.size() <= kMaxPoints && out.size() >= ts.size(), "speeds: at most 64 parameters, one output each");
+  const NurbsCurve::Data& d = *curve_.data_;
+  State& st = *state_;
+  const Interval dom = curve_.domain();
+  const std::size_t n = ts.size();
+  const detail::SpeedKernel kernel = n == 0 ? nullptr : detail::speed_kernel(d.degree(), d.rational());
+  if (kernel != nullptr && ts[0] >= dom.start && ts[0] <= dom.end) {
+    // The piece the values come from: the curve's cache (built already, or a curve of few spans, which
+    // derivatives() would build) or this evaluator's own piece of the span.
+    const SpanCache* c = nullptr;
+    std::size_t s = 0;
+    if (!st.pieces || d.cache.load(std::memory_order_acquire) != nullptr) {
+      c = &d.span_cache();
+      s = locate(*c, ts[0], Side::Right);
+    } else {
+      load_span(ts[0], false);
+      c = &st.cache;
+    }
+    const double b0 = c->breaks[s], b1 = c->breaks[s + 1];
+    bool inside = true;
+    for (const double t : ts) inside = inside && b0 < t && t < b1;
+    if (inside) {
+      // Padded to whole blocks with the last parameter (its speed is computed again and dropped).
+      std::array<double, kMaxPoints> padded, speed;
+      const std::size_t m = (n + kBlock - 1) / kBlock * kBlock;
+      std::copy(ts.begin(), ts.end(), padded.begin());
+      std::fill(padded.begin() + static_cast<std::ptrdiff_t>(n), padded.begin() + static_cast<std::ptrdiff_t>(m),
+                ts[n - 1]);
+      if (kernel(c->coef + s * c->block, c->mid[s], c->inv_half[s], padded.data(), m, speed.data())) {
+        std::copy_n(speed.begin(), n, out.begin());
+        return;
+      }
+    }
+  }
+  // The general way: derivatives() (its errors included) and norm() here, where no multiply-add is fused.
+  std::array<Vec3, 2 * kMaxPoints> der;
+  derivatives(ts, 1, std::span<Vec3>(der.data(), 2 * n));
+  for (std::size_t i = 0; i < n; ++i) out[i] = norm(der[2 * i + 1]);
 }
 
 }  // namespace hula::nurbs

@@ -33,8 +33,17 @@ class PieceEvaluator {
   /// evaluated from that span's piece; anything else goes to the curve (which builds its cache).
   void derivatives(std::span<const double> ts, int order, std::span<Vec3> out);
 
+  /// out[i] = |C'(ts[i])|: the doubles of norm(C'(ts[i])) with C' from derivatives(ts, 1, …), and its
+  /// errors. Parameters strictly inside one knot span are evaluated together by the SIMD speed kernel
+  /// (degrees 2…5: the same operations per lane); anything else goes through derivatives().
+  /// @param ts at most 64 parameters
+  void speeds(std::span<const double> ts, std::span<double> out);
+
  private:
   struct State;
+  // The piece of the knot span containing t (inside the domain) loaded into the state, with its exact points
+  // and span search when `whole`; returns its knot index.
+  std::size_t load_span(double t, bool whole);
   const NurbsCurve& curve_;
   std::unique_ptr<State> state_;
 };

@@ -217,6 +217,66 @@ std::size_t eval_run(const double* a, double mid, double scale, double lo, doubl
   return i;
 }
 
+// √s in every lane (correctly rounded, as std::sqrt).
+template <class V>
+inline V lane_sqrt(V s) {
+#if defined(__AVX512F__)
+  // Every lane computed (mask all ones); _mm512_sqrt_pd's undefined pass-through trips GCC 12's
+  // -Wmaybe-uninitialized.
+  if constexpr (sizeof(V) == 64) return V(_mm512_mask_sqrt_pd(__m512d(s), __mmask8(0xFF), __m512d(s)));
+#endif
+#if defined(__AVX__)
+  if constexpr (sizeof(V) == 32) return V(_mm256_sqrt_pd(__m256d(s)));
+#endif
+#if defined(__SSE2__)
+  if constexpr (sizeof(V) == 16) return V(_mm_sqrt_pd(__m128d(s)));
+#endif
+  V r = s;
+  for (std::size_t l = 0; l < sizeof(V) / sizeof(double); ++l) r[l] = __builtin_sqrt(s[l]);
+  return r;
+}
+
+/// The speed |C'(t)| at n parameters (n a multiple of W), every one strictly inside the span: the first
+/// derivative as eval_run gives it, and √(x² + y² + z²) as norm() computes it where |C'|² lies in
+/// (1e-290, 1e290). Returns false when some point's |C'|² does not (norm would scale it; NaN and ∞
+/// included): the caller then evaluates them the general way. out receives n doubles.
+template <int W, int P, bool R>
+bool speed_run(const double* a, double mid, double scale, const double* ts, std::size_t n, double* out) {
+  using V = simd_lanes_t<W>;
+  bool plain = true;
+  for (std::size_t i = 0; i + W <= n; i += W) {
+    V t;
+    __builtin_memcpy(&t, ts + i, sizeof t);
+    const V x = (t - mid) * scale;
+    V o[2][3];
+    eval_piece<P, R, 1>(a, x, scale, o);
+    const V s = o[1][0] * o[1][0] + o[1][1] * o[1][1] + o[1][2] * o[1][2];
+    plain = all_inside(s, 1e-290, 1e290) & plain;
+    store(out + i, lane_sqrt(s));
+  }
+  return plain;
+}
+
+/// The speed kernel of one instruction set (W ≥ 2): speed_run for (degree, rational), or nullptr outside
+/// degrees 2…5.
+using SpeedKernel = bool (*)(const double*, double, double, const double*, std::size_t, double*);
+
+template <int W>
+SpeedKernel speed_kernel(int degree, bool rational) {
+  switch (degree) {
+    case 2:
+      return rational ? &speed_run<W, 2, true> : &speed_run<W, 2, false>;
+    case 3:
+      return rational ? &speed_run<W, 3, true> : &speed_run<W, 3, false>;
+    case 4:
+      return rational ? &speed_run<W, 4, true> : &speed_run<W, 4, false>;
+    case 5:
+      return rational ? &speed_run<W, 5, true> : &speed_run<W, 5, false>;
+    default:
+      return nullptr;
+  }
+}
+
 /// The run kernel of one instruction set: eval_run for (degree, rational, order), or nullptr outside
 /// degrees 2…5 and orders 0…3 (W ≥ 2).
 using RunKernel = std::size_t (*)(const double*, double, double, double, double, const double*, std::size_t, double*);

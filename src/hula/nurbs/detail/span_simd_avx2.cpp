@@ -12,4 +12,8 @@ RunKernel run_kernel_avx2(int degree, bool rational, int order) noexcept {
   return avx2::run_kernel<4>(degree, rational, order);
 }
 
+using SpeedKernel = bool (*)(const double*, double, double, const double*, std::size_t, double*);
+
+SpeedKernel speed_kernel_avx2(int degree, bool rational) noexcept { return avx2::speed_kernel<4>(degree, rational); }
+
 }  // namespace hula::nurbs::detail

@@ -13,4 +13,10 @@ RunKernel run_kernel_avx512(int degree, bool rational, int order) noexcept {
   return avx512::run_kernel<8>(degree, rational, order);
 }
 
+using SpeedKernel = bool (*)(const double*, double, double, const double*, std::size_t, double*);
+
+SpeedKernel speed_kernel_avx512(int degree, bool rational) noexcept {
+  return avx512::speed_kernel<8>(degree, rational);
+}
+
 }  // namespace hula::nurbs::detail
