@@ -5,12 +5,17 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <numeric>
 #include <vector>
 
 #include "hula/core/rng.hpp"
 #include "hula/optim/crossover.hpp"
+#include "hula/optim/detail/fixed_power.hpp"
+#include "hula/optim/detail/power.hpp"
 #include "hula/optim/mutation.hpp"
 #include "hula/optim/selection.hpp"
 
@@ -93,6 +98,92 @@ TEST(OptimOperators, SbxSpreadFollowsDistributionIndex) {
           static_cast<double>(std::count_if(beta.begin(), beta.end(), [b](double v) { return v <= b; })) / n;
       EXPECT_NEAR(got, expected, 0.006) << "eta " << eta << " b " << b;
     }
+  }
+}
+
+// Distance in units in the last place between two finite doubles of the same sign.
+std::uint64_t ulp_distance(double a, double b) {
+  const auto ia = std::bit_cast<std::int64_t>(a);
+  const auto ib = std::bit_cast<std::int64_t>(b);
+  return ia > ib ? static_cast<std::uint64_t>(ia - ib) : static_cast<std::uint64_t>(ib - ia);
+}
+
+// checks: the tabled x^p of SBX and polynomial mutation against std::pow within 3 ulp, over 200,000
+// seeded arguments per exponent (uniform in [0, 1), log-uniform over 2^-140..2^140) and the edges
+TEST(OptimOperators, FixedPowerMatchesStdPow) {
+  for (const double p : {1.0 / 21.0, 1.0 / 16.0, 1.0 / 3.5, 0.7, 1.0, -1.0 / 21.0, -1.0 / 16.0, -0.3, -1.0}) {
+    const detail::FixedPower power(p);
+    Rng rng(31, static_cast<std::uint64_t>(std::fabs(p) * 1000.0) + (p < 0.0 ? 7 : 0));
+    std::uint64_t worst = 0;
+    double worst_x = 0.0;
+    for (int i = 0; i < 200000; ++i) {
+      const double x = i % 2 == 0 ? rng.uniform() : std::exp2(rng.uniform(-140.0, 140.0));
+      const double expected = std::pow(x, p);
+      const std::uint64_t e = ulp_distance(power(x), expected);
+      if (e > worst) {
+        worst = e;
+        worst_x = x;
+      }
+    }
+    EXPECT_LE(worst, 3U) << "p " << p << " x " << worst_x;
+    // Edges: outside the tables (0, subnormal, beyond 2^+-128, inf) the result is std::pow's.
+    for (const double x : {0.0, 5e-324, 0x1p-127, 0x1p-126, 0x1.fffffffffffffp+127, 0x1p128, 1.0, 0.5, 2.0,
+                           std::numeric_limits<double>::infinity()}) {
+      EXPECT_LE(ulp_distance(power(x), std::pow(x, p)), 3U) << "p " << p << " x " << x;
+    }
+  }
+  // p = 1: the tables and the series give x itself.
+  const detail::FixedPower identity(1.0);
+  Rng rng(32, 0);
+  for (int i = 0; i < 1000; ++i) {
+    const double x = rng.uniform(1e-30, 1e30);
+    EXPECT_EQ(identity(x), x);
+  }
+}
+
+// checks: the 32-bit decision thresholds against their exact values, and the SBX per-variable rate
+// (probability 0.3, 5 binomial sigma)
+TEST(OptimOperators, DecisionThresholdAndSbxVariableRate) {
+  EXPECT_EQ(detail::threshold32(0.0), 0U);
+  EXPECT_EQ(detail::threshold32(0.5), std::uint64_t{1} << 31);
+  EXPECT_EQ(detail::threshold32(1.0), std::uint64_t{1} << 32);
+  EXPECT_EQ(detail::threshold32(0.25), std::uint64_t{1} << 30);
+  Rng rng(17, 0);
+  const std::size_t d = 37;  // odd: the last variable of a draw's pair stands alone
+  std::vector<double> lo(d, 0.0), hi(d, 1.0), p1(d, 0.25), p2(d, 0.75), c1(d), c2(d);
+  std::size_t changed = 0;
+  const int rounds = 5000;
+  for (int r = 0; r < rounds; ++r) {
+    sbx_crossover(p1, p2, lo, hi, c1, c2, {.eta = 15.0, .variable_probability = 0.3}, rng);
+    for (std::size_t j = 0; j < d; ++j) changed += (c1[j] != p1[j] || c2[j] != p2[j]) ? 1 : 0;
+  }
+  const double n = static_cast<double>(d) * rounds;
+  // A recombined variable keeps both parents' values only when beta = 1 exactly and the children are not
+  // swapped: negligible.
+  EXPECT_NEAR(static_cast<double>(changed) / n, 0.3, 5 * std::sqrt(0.3 * 0.7 / n));
+}
+
+// checks: the lower child's spread factor near a bound against the truncated CDF
+// (2 - b^-(eta+1))... : b^(eta+1) / alpha for b <= 1, (2 - b^-(eta+1)) / alpha for 1 < b <= beta_bound,
+// alpha = 2 - beta_bound^-(eta+1); parents 0.1 and 0.3 over [0, 1e6]: beta_bound = 2, eta = 2 (alpha = 15/8)
+TEST(OptimOperators, SbxTruncatedSpreadNearBound) {
+  Rng rng(23, 0);
+  const std::vector<double> lo{0.0}, hi{1e6}, p1{0.1}, p2{0.3};
+  std::vector<double> c1(1), c2(1);
+  const int n = 100000;
+  std::vector<double> beta(n);
+  for (int i = 0; i < n; ++i) {
+    sbx_crossover(p1, p2, lo, hi, c1, c2, {.eta = 2.0, .variable_probability = 1.0}, rng);
+    const double lower_child = std::min(c1[0], c2[0]);
+    EXPECT_GE(lower_child, 0.0);
+    beta[static_cast<std::size_t>(i)] = (0.4 - 2.0 * lower_child) / 0.2;
+  }
+  const double alpha = 2.0 - 1.0 / 8.0;
+  for (const double b : {0.3, 0.7, 1.0, 1.2, 1.5, 1.9}) {
+    const double expected = b <= 1.0 ? b * b * b / alpha : (2.0 - 1.0 / (b * b * b)) / alpha;
+    const double got =
+        static_cast<double>(std::count_if(beta.begin(), beta.end(), [b](double v) { return v <= b; })) / n;
+    EXPECT_NEAR(got, expected, 0.006) << "b " << b;
   }
 }
 

@@ -104,11 +104,12 @@ double hv2(const std::vector<Solution>& front) {
   return hypervolume(pts, 2, std::vector<double>{1.1, 1.1});
 }
 
-// checks: Flexo NSGA-II median hypervolume on ZDT1 (3 fixed seeds, 100 x 250) against pagmo's NSGA-II with the same
-// seeds
+// checks: Flexo NSGA-II hypervolume on ZDT1 (seeds 0..9, 100 x 250) against pagmo's NSGA-II with the same seeds:
+// the median and the minimum over the ten seeds no lower than pagmo's (the criterion of issue 27; three seeds
+// were too few: one seed moves a median of three by more than the two algorithms' medians differ)
 TEST(OptimPagmoOracle, Nsga2NoWorseThanPagmoOnZdt1) {
   std::vector<double> ours, theirs;
-  for (const unsigned seed : {1U, 2U, 3U}) {
+  for (unsigned seed = 0; seed < 10; ++seed) {
     Nsga2Options o;
     o.population = 100;
     o.run.stop.generations = 250;
@@ -123,7 +124,8 @@ TEST(OptimPagmoOracle, Nsga2NoWorseThanPagmoOnZdt1) {
   }
   std::sort(ours.begin(), ours.end());
   std::sort(theirs.begin(), theirs.end());
-  EXPECT_GE(ours[1], theirs[1]);
+  EXPECT_GE(ours[4] + ours[5], theirs[4] + theirs[5]);  // medians of ten
+  EXPECT_GE(ours[0], theirs[0]);
   EXPECT_GT(ours[0], 0.865);
 }
 

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <span>
 #include <stdexcept>
 #include <vector>
@@ -131,8 +132,10 @@ TEST(OptimSweep, ConvergenceSummary) {
 }
 
 // checks: on a two-well function with minima at x = 2 (0) and x = -2 (0.01), niching by clearing over the run log
-// returns both wells, best first, against the known minima; the second-best individual overall (next to x = 2)
-// is not returned.
+// returns both wells, best first: the first within 1e-2 of x = 2, the second in the other well (x < -1) and equal to
+// the best logged individual farther than the radius (0.1 of the width 10) from the first, found by a plain scan of
+// the log; the second-best individual overall (next to x = 2) is not returned. (How close the GA's run gets to
+// x = -2 is the GA's luck with its seed, not the niching's business.)
 TEST(OptimSweep, DistinctBestReturnsBothWells) {
   Problem p;
   p.name = "two wells";
@@ -151,7 +154,14 @@ TEST(OptimSweep, DistinctBestReturnsBothWells) {
   const std::vector<Solution> d = distinct_best(log, p.variables, 2, 0.1);
   ASSERT_EQ(d.size(), 2U);
   EXPECT_NEAR(d[0].variables[0], 2.0, 1e-2);
-  EXPECT_NEAR(d[1].variables[0], -2.0, 1e-1);
+  EXPECT_LT(d[1].variables[0], -1.0);
+  double best_far = std::numeric_limits<double>::infinity();
+  for (const GenerationLog& g : log.generations()) {
+    for (std::size_t i = 0; i < g.objective_values.size(); ++i) {
+      if (std::fabs(g.variables[i] - d[0].variables[0]) > 1.0) best_far = std::min(best_far, g.objective_values[i]);
+    }
+  }
+  EXPECT_EQ(d[1].objectives[0], best_far);
   EXPECT_LE(d[0].objectives[0], d[1].objectives[0]);
   HULA_EXPECT_ERROR((void)distinct_best(log, p.variables, 0), Errc::InvalidOption, "count must be >= 1");
   HULA_EXPECT_ERROR((void)distinct_best(log, p.variables, 2, 0.0), Errc::InvalidOption, "radius = 0");

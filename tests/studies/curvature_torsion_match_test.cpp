@@ -3,7 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <vector>
 
@@ -176,8 +178,10 @@ TEST(CurvatureTorsionMatch, PlanarOrTorsionlessProblemsAreRefused) {
 }  // namespace
 
 namespace {
-// NSGA-II alone (no polish) moves the front towards the known curve: its best compromise is at least 5 times
-// closer than the start on both errors (1.8e-3 here; 100 x 300 reaches 1.4e-3: the polish does the rest).
+// NSGA-II alone (no polish) moves the front towards the known curve: over seeds 1-5, the median of its best
+// compromise's improvement on each error is at least 3 times (the polish does the rest). One seed is not a claim
+// about the algorithm: over seeds 1-80 the curvature improvement ranged 3.0-15x (2.5-26x after issue 27's
+// operators), below 5x for 25 (31) seeds, and the median of five consecutive seeds never fell below 4.0x (3.8x).
 TEST(CurvatureTorsionMatch, Nsga2AloneApproachesTheKnownCurve) {
   const auto truth = helix_points(5);
   const CurvatureMatch match = known_curve_problem(truth, 200);
@@ -185,13 +189,21 @@ TEST(CurvatureTorsionMatch, Nsga2AloneApproachesTheKnownCurve) {
   settings.population = 60;
   settings.generations = 120;
   settings.polish = false;
-  const auto result = hula::studies::run_curvature_torsion_match(match, settings, 7);
-  ASSERT_FALSE(result.front.empty());
-  EXPECT_FALSE(result.lm.has_value());
-  const auto& best = result.front[result.compromise];
-  std::printf("NSGA-II alone: start %.3g / %.3g, compromise %.3g / %.3g, front %zu\n", result.start_curvature,
-              result.start_torsion, best.curvature, best.torsion, result.front.size());
-  EXPECT_LT(best.curvature, result.start_curvature / 5);
-  EXPECT_LT(best.torsion, result.start_torsion / 5);
+  std::vector<double> curvature_gain, torsion_gain;
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    const auto result = hula::studies::run_curvature_torsion_match(match, settings, seed);
+    ASSERT_FALSE(result.front.empty());
+    EXPECT_FALSE(result.lm.has_value());
+    const auto& best = result.front[result.compromise];
+    std::printf("NSGA-II alone, seed %llu: start %.3g / %.3g, compromise %.3g / %.3g, front %zu\n",
+                static_cast<unsigned long long>(seed), result.start_curvature, result.start_torsion, best.curvature,
+                best.torsion, result.front.size());
+    curvature_gain.push_back(result.start_curvature / best.curvature);
+    torsion_gain.push_back(result.start_torsion / best.torsion);
+  }
+  std::sort(curvature_gain.begin(), curvature_gain.end());
+  std::sort(torsion_gain.begin(), torsion_gain.end());
+  EXPECT_GT(curvature_gain[2], 3.0);
+  EXPECT_GT(torsion_gain[2], 3.0);
 }
 }  // namespace

@@ -145,26 +145,28 @@ std::span<const std::size_t> NonDominatedSorter::sort(std::span<const double> ob
         }
         ++fronts;
       } else {
-        // last_[k] = member of front k with the smallest f1 so far; front k
-        // dominates p iff last_[k] does, and that holds for a prefix of k.
+        // last_[k] = member of front k with the smallest f1 so far (as a position in keys_, whose
+        // objectives sit beside it); front k dominates p iff last_[k] does, and that holds for a
+        // prefix of k. The domination test is pareto_dominates' on the keys' own copies, evaluated
+        // without branches (the search's direction is data).
         last_.clear();
-        for (const std::size_t p : order_) {
+        for (std::size_t k = 0; k < keys_.size(); ++k) {
+          const Key2& p = keys_[k];
           std::size_t lo = 0;
           std::size_t hi = last_.size();
           while (lo < hi) {
             const std::size_t mid = (lo + hi) / 2;
-            if (pareto_dominates(f + last_[mid] * 2, f + p * 2, 2)) {
-              lo = mid + 1;
-            } else {
-              hi = mid;
-            }
+            const Key2& t = keys_[last_[mid]];
+            const bool dominated = (t.f0 <= p.f0) & (t.f1 <= p.f1) & ((t.f0 < p.f0) | (t.f1 < p.f1));
+            lo = dominated ? mid + 1 : lo;
+            hi = dominated ? hi : mid;
           }
           if (lo == last_.size()) {
-            last_.push_back(p);
+            last_.push_back(k);
           } else {
-            last_[lo] = p;
+            last_[lo] = k;
           }
-          rank_[p] = lo;
+          rank_[p.index] = lo;
         }
         fronts = last_.size();
       }

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
 
 namespace hula::optim::detail {
 
@@ -23,6 +24,12 @@ namespace hula::optim::detail {
     return result;
   }
   return std::pow(x, e);
+}
+
+/// The threshold t for which a 32-bit random value v gives v < t with probability `probability`
+/// (resolved to 2^-32: ceil(probability 2^32) / 2^32), probability in [0, 1].
+[[nodiscard]] inline std::uint64_t threshold32(double probability) noexcept {
+  return static_cast<std::uint64_t>(std::ceil(probability * 0x1p32));
 }
 
 }  // namespace hula::optim::detail
