@@ -164,8 +164,8 @@ int main(int argc, char** argv) {
         threw += v.threw;
         char line[512];
         std::snprintf(line, sizeof line, "  %s: missed %zu, good rejected %zu, far %.3g σ, inflections %zu (%zu)%s%s",
-                      c.name.c_str(), v.strays_missed, v.good_rejected, v.far / c.sigma, v.inflections, c.inflections,
-                      v.threw ? ", threw: " : "", v.error.c_str());
+                      c.name.c_str(), v.strays_missed, v.good_rejected, v.far / c.sigma, v.inflections,
+                      v.known_inflections, v.threw ? ", threw: " : "", v.error.c_str());
         failures.emplace_back(line);
       }
       const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -114,6 +114,8 @@ constexpr std::size_t kBiasWindow = 15;
 constexpr std::size_t kBiasSpan = 10;
 // A window mean is systematic only beyond kBiasSignificance standard errors of its scatter.
 constexpr double kBiasSignificance = 5.0;
+// The smallest window anchored at an open end: four points, so that its scatter has three degrees of freedom.
+constexpr std::size_t kBiasEndMin = 4;
 // Degree choice: counts within this share above the fewest compete on curvature extrema.
 constexpr double kCountSlack = 0.15;
 // Rounds of a refit after a knot removal (warm-started feet).
@@ -826,6 +828,45 @@ std::vector<std::size_t> biased_spans(const Space& s, const Candidate& c, std::s
     if (norm(mean) <= std::max(limit, kBiasSignificance * scatter / std::sqrt(w))) continue;
     const std::size_t span = span_of(c.params[kept[k - kBiasWindow / 2]]);
     if (count[span] >= kBiasSpan * (static_cast<std::size_t>(s.p) + 1)) marked[span] = 1;
+  }
+  // The open ends: a sliding window dilutes a deviation confined to the last few points (the end of a
+  // free curve follows its outermost points least), so the kBiasEndMin … kBiasWindow outermost kept points
+  // at each end are judged too, as nested windows anchored there, by the same rule. A point whose foot sits
+  // at the end counts with its residual normal to the end tangent (its offset along the tangent says where
+  // the curve ends, not that it is off its points).
+  if (!s.closed) {
+    std::vector<std::size_t> all;
+    for (std::size_t i = 0; i < weights.size(); ++i)
+      if (weights[i] > 0.0) all.push_back(i);
+    std::sort(all.begin(), all.end(), [&](std::size_t a, std::size_t b) { return c.params[a] < c.params[b]; });
+    const SpanPolynomials curve(s.knots, expand(s, c.unknowns));
+    for (const bool back : {false, true}) {
+      if (all.size() < kBiasWindow) break;
+      const double end = back ? 1.0 : 0.0;
+      const std::size_t span = back ? count.size() - 1 : 0;
+      if (count[span] < kBiasSpan * (static_cast<std::size_t>(s.p) + 1)) continue;
+      Vec3 tangent = curve.evaluate(end, 1)[1];
+      const double speed = norm(tangent);
+      if (!(speed > 0.0)) continue;
+      tangent = (1.0 / speed) * tangent;
+      Vec3 end_sum{};
+      double end_squares = 0.0;
+      for (std::size_t k = 0; k < kBiasWindow; ++k) {
+        const std::size_t i = all[back ? all.size() - 1 - k : k];
+        Vec3 r = c.residual[i];
+        if (c.params[i] == end) r = r - dot(r, tangent) * tangent;
+        end_sum += r;
+        end_squares += norm_squared(r);
+        const auto n = static_cast<double>(k + 1);
+        if (k + 1 < kBiasEndMin) continue;
+        const Vec3 mean = (1.0 / n) * end_sum;
+        const double scatter = std::sqrt(std::max(0.0, end_squares / n - norm_squared(mean)));
+        if (norm(mean) > std::max(limit, kBiasSignificance * scatter / std::sqrt(n))) {
+          marked[span] = 1;
+          break;
+        }
+      }
+    }
   }
   for (std::size_t k = 0; k < marked.size(); ++k)
     if (marked[k]) out.push_back(k);

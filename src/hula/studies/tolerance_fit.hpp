@@ -15,7 +15,9 @@
 //     its projection, so a candidate passes only if the curve itself is within the
 //     tolerance (deviations are |C(tᵢ) − Qᵢ| at the corrected feet);
 //     Where points are dense (a scan), spans whose points lie systematically on
-//     one side of the curve by more than `bias_limit` are split as well;
+//     one side of the curve by more than `bias_limit` are split as well (sliding
+//     windows, and at an open end windows anchored there, so that a deviation over
+//     the last few points is not diluted);
 //  3. degree choice: degrees from `degree` down to `min_degree` are tried; among
 //     those within 15 % of the fewest control points, the curve with the fewest
 //     curvature extrema wins (then the fewer control points, then the higher degree);
@@ -92,7 +94,8 @@ struct ToleranceFitOptions {
   /// The end-stray check of reject_outliers (see EndStrayCheck). Default {}.
   EndStrayCheck end_check{};
   /// Largest systematic deviation allowed where the points are dense (at least 10 (p + 1) kept points
-  /// in a knot span): the norm of the mean residual of any 15 consecutive kept points; a span where it
+  /// in a knot span): the norm of the mean residual of any 15 consecutive kept points, and at an open end
+  /// of the 4 … 15 outermost kept points (their residuals normal to the end tangent); a span where it
   /// is exceeded is split even when every point is within the tolerance. 0 (default) turns it off.
   double bias_limit = 0.0;
   /// Run the fairing. Default true (degrees below 3 are never faired: their C‴ vanishes).
