@@ -141,14 +141,16 @@ TEST(ScanFitTailClouds, InflectionsRightWhereTheCurveIsNearlyStraight) {
 }
 
 // Checks the counting rule on curves whose lobes are known in closed form: y = A sin(πx) on [−0.01, 2] has
-// sign changes of its curvature at 0 and 1, the lobe before 0 about 4e-6 high (π³ x (1e-4 − x²) / 3 at its
-// largest, x = −0.01 / √3) and the two others A high; y = ε sin(6πx) on [0, 1] has five inflections between six lobes ε
-// high.
+// sign changes of its curvature at 0 and 1; the lobe before 0 departs from its chord by A π³ x (1e-4 − x²) / 6
+// vertically, at most 4.0e-6 (x = −0.01 / √3), which is 6.3e-7 normal to the chord (slope ≈ 2π), so it counts
+// at a height of 5e-7 and not at 8e-7; the two others are A high. y = ε sin(6πx) on [0, 1] has five inflections between
+// six lobes ε high.
 TEST(ScanTestClouds, SignificantInflectionsCountOnlyLobesAboveTheHeight) {
   const double a = 2.0, eps = 1e-3;
   const auto sine = [a](double x) { return Vec3{x, a * std::sin(test_clouds::kPi * x), 0.0}; };
   const auto ripple = [eps](double x) { return Vec3{x, eps * std::sin(6.0 * test_clouds::kPi * x), 0.0}; };
-  EXPECT_EQ(test_clouds::significant_inflections(sine, -0.01, 2.0, 1e-6), 2u);
+  EXPECT_EQ(test_clouds::significant_inflections(sine, -0.01, 2.0, 5e-7), 2u);
+  EXPECT_EQ(test_clouds::significant_inflections(sine, -0.01, 2.0, 8e-7), 1u);
   EXPECT_EQ(test_clouds::significant_inflections(sine, -0.01, 2.0, 0.1 * a), 1u);
   EXPECT_EQ(test_clouds::significant_inflections(sine, -0.01, 2.0, 1.1 * a), 0u);
   EXPECT_EQ(test_clouds::significant_inflections(ripple, 0.0, 1.0, 0.5 * eps), 5u);
