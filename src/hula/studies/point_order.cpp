@@ -45,7 +45,47 @@ class KdTree {
     std::sort_heap(heap.begin(), heap.end());
   }
 
+  // The nearest point to point q for which `accept` holds, if nearer than √best_d2: updates best_d2 and
+  // best and returns whether it found one. Nodes farther than the bound are pruned, so a good starting
+  // bound keeps the search local.
+  template <class Accept>
+  bool nearest_accepted(std::size_t q, const Accept& accept, double& best_d2, std::size_t& best) const {
+    bool found = false;
+    nearest_accepted(0, idx_.size(), q, accept, best_d2, best, found);
+    return found;
+  }
+
  private:
+  template <class Accept>
+  void nearest_accepted(std::size_t lo, std::size_t hi, std::size_t q, const Accept& accept, double& best_d2,
+                        std::size_t& best, bool& found) const {
+    if (lo >= hi) return;
+    const std::size_t mid = lo + (hi - lo) / 2;
+    const std::size_t i = idx_[mid];
+    if (i != q && accept(i)) {
+      const double d = norm_squared(pts_[i] - pts_[q]);
+      if (d < best_d2) {
+        best_d2 = d;
+        best = i;
+        found = true;
+      }
+    }
+    if (hi - lo == 1) return;
+    const int axis = axis_[mid];
+    const double delta = coord(pts_[q], axis) - coord(pts_[i], axis);
+    const bool left_first = delta < 0.0;
+    if (left_first)
+      nearest_accepted(lo, mid, q, accept, best_d2, best, found);
+    else
+      nearest_accepted(mid + 1, hi, q, accept, best_d2, best, found);
+    if (delta * delta < best_d2) {
+      if (left_first)
+        nearest_accepted(mid + 1, hi, q, accept, best_d2, best, found);
+      else
+        nearest_accepted(lo, mid, q, accept, best_d2, best, found);
+    }
+  }
+
   void build(std::size_t lo, std::size_t hi) {
     if (hi - lo <= 1) return;
     Vec3 mn = pts_[idx_[lo]], mx = mn;
@@ -158,6 +198,57 @@ void check_points(std::span<const Vec3> points) {
                   ErrorWhere{.field = "points", .index = i});
 }
 
+// Pieces of the forest smaller than this stay unjoined (at most a detour of three points, see order_points).
+constexpr std::size_t kMinPiece = 4;
+
+// Joins the forest's pieces of at least kMinPiece non-isolated points into one tree: in rounds, every piece
+// but the largest adds its shortest edge to a point outside it (a Borůvka step; each round at least halves
+// the pieces), until one remains.
+void connect_pieces(const KdTree& kd, std::span<const Vec3> points, const std::vector<char>& isolated,
+                    std::vector<std::size_t>& root, std::vector<std::vector<std::pair<std::size_t, double>>>& adj) {
+  const std::size_t n = points.size();
+  for (;;) {
+    std::vector<std::size_t> size(n, 0);
+    for (std::size_t i = 0; i < n; ++i)
+      if (!isolated[i]) ++size[find_root(root, i)];
+    std::size_t largest = n, pieces = 0;
+    for (std::size_t r = 0; r < n; ++r)
+      if (size[r] >= kMinPiece) {
+        ++pieces;
+        if (largest == n || size[r] > size[largest]) largest = r;
+      }
+    if (pieces < 2) return;
+    // Per piece (its root): the shortest edge out of it found so far.
+    std::vector<double> best_d2(n, std::numeric_limits<double>::infinity());
+    std::vector<std::pair<std::size_t, std::size_t>> best_edge(n, {n, n});
+    for (std::size_t i = 0; i < n; ++i) {
+      if (isolated[i]) continue;
+      const std::size_t r = find_root(root, i);
+      if (r == largest || size[r] < kMinPiece) continue;
+      std::size_t j = n;
+      if (kd.nearest_accepted(
+              i,
+              [&](std::size_t c) {
+                if (isolated[c]) return false;
+                const std::size_t rc = find_root(root, c);
+                return rc != r && size[rc] >= kMinPiece;
+              },
+              best_d2[r], j))
+        best_edge[r] = {i, j};
+    }
+    for (std::size_t r = 0; r < n; ++r) {
+      const auto [i, j] = best_edge[r];
+      if (i == n) continue;
+      const std::size_t ri = find_root(root, i), rj = find_root(root, j);
+      if (ri == rj) continue;
+      root[ri] = rj;
+      const double d = std::sqrt(best_d2[r]);
+      adj[i].emplace_back(j, d);
+      adj[j].emplace_back(i, d);
+    }
+  }
+}
+
 Tree build_tree(std::span<const Vec3> points, const PointOrderOptions& options) {
   const std::size_t n = points.size();
   const std::size_t k = std::min<std::size_t>(static_cast<std::size_t>(options.neighbours), n - 1);
@@ -210,7 +301,13 @@ Tree build_tree(std::span<const Vec3> points, const PointOrderOptions& options) 
     adj[e.b].emplace_back(e.a, e.length);
   }
 
-  // 3. The largest component's diameter: farthest node a from any node, then farthest b from a.
+  // 3. The k-NN graph falls apart where the sampling leaves a gap wider than k spacings: its pieces of at
+  // least kMinPiece points are joined, Borůvka-fashion, by their shortest edges to the rest (the
+  // Euclidean MST does the same), so the path runs across the gaps instead of ending at the first.
+  // Smaller pieces (a stray pair, a detour) stay out and hang from their nearest tree point.
+  connect_pieces(kd, points, isolated, root, adj);
+
+  // 4. The largest component's diameter: farthest node a from any node, then farthest b from a.
   std::vector<std::size_t> size(n, 0);
   std::size_t first = n;
   for (std::size_t i = 0; i < n; ++i)
@@ -230,7 +327,7 @@ Tree build_tree(std::span<const Vec3> points, const PointOrderOptions& options) 
   std::reverse(tree.path.begin(), tree.path.end());  // from a to b
   for (const std::size_t v : tree.path) tree.path_s.push_back(dist[v]);
 
-  // 4. Every other node of the component inherits the path node its branch hangs from.
+  // 5. Every other node of the component inherits the path node its branch hangs from.
   tree.attach.assign(n, kNone);
   std::vector<std::size_t> stack;
   for (std::size_t j = 0; j < tree.path.size(); ++j) {
