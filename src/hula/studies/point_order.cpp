@@ -369,6 +369,111 @@ double angle_cosine(const Vec3& a, const Vec3& b) {
 // Two directions differ by less than 60°.
 constexpr double kSmoothJoinCosine = 0.5;
 
+// Two directions differ by less than 45°: a gap in the sampling must continue the curve's direction on
+// both sides (the tangent turns by less than 90° across it).
+constexpr double kGapCosine = 0.7071067811865476;
+// Points on each side of a gap whose run gives the direction there (two halves' centroids).
+constexpr std::size_t kGapRun = 8;
+// Points skipped by a detour, at most.
+constexpr std::size_t kMaxDetour = 3;
+
+// The coordinate-wise median of the points `which` (the mean of the middle two for an even count).
+Vec3 median_point(std::span<const Vec3> points, std::span<const std::size_t> which) {
+  std::array<std::vector<double>, 3> c;
+  for (const std::size_t i : which) {
+    c[0].push_back(points[i].x);
+    c[1].push_back(points[i].y);
+    c[2].push_back(points[i].z);
+  }
+  std::array<double, 3> m{};
+  for (std::size_t a = 0; a < 3; ++a) {
+    std::sort(c[a].begin(), c[a].end());
+    const std::size_t h = c[a].size() / 2;
+    m[a] = c[a].size() % 2 == 1 ? c[a][h] : 0.5 * (c[a][h - 1] + c[a][h]);
+  }
+  return {m[0], m[1], m[2]};
+}
+
+// Whether the points `suspect` leaves out follow one another in the file (see order_points). A step is
+// local when it is no longer than twice the larger k-th neighbour distance of its two points (the
+// density's own scale: where the sampling is three times sparser, so are the radii). A step that is not
+// local is taken
+//  - as a detour when one to three points are skipped and the step after them is local (strays in the
+//    file, at either end too: an end's first or last one to three points);
+//  - as a gap in the sampling when the step continues the directions of the points before it and after it
+//    (each within 45°; up to eight points a side, directions from medians) and no more than three points of the cloud
+//    lie within the neighbour radius of the step's segment away from its ends (a gap is empty: a jump back over the
+//    curve, to a later stretch or across a loop, passes over points or turns);
+// anything else breaks the order. Detours may skip at most a tenth of the points and the gaps number at
+// most 1 + n / 100, so a shuffled file (almost no local step) or one with a stretch out of place (a
+// step that turns back) is refused. Marks the skipped points in `suspect`.
+bool file_order_is_consistent(std::span<const Vec3> points, const Tree& tree, std::vector<char>& suspect) {
+  const std::size_t n = points.size();
+  std::vector<std::size_t> seq;
+  for (std::size_t i = 0; i < n; ++i)
+    if (!suspect[i]) seq.push_back(i);
+  const std::size_t m = seq.size();
+  if (m < 3) return false;
+  const auto local = [&](std::size_t a, std::size_t b) {
+    return distance(points[a], points[b]) <= 2.0 * std::max(tree.radius[a], tree.radius[b]);
+  };
+  std::vector<std::size_t> kept;  // the points taken in order so far
+  std::size_t detours = 0, gaps = 0;
+  // A gap from kept.back() to seq[j]: the directions of the kept points before it and of the points from
+  // seq[j] on (each from the coordinate-wise medians of two halves of up to four points, so that one stray
+  // among them does not turn it), and the step between them.
+  const auto gap = [&](std::size_t j) {
+    const std::size_t before = std::min(kept.size(), kGapRun) / 2, after = std::min(m - j, kGapRun) / 2;
+    if (before < 2 || after < 2) return false;
+    const std::size_t* back = kept.data() + kept.size() - 2 * before;
+    const Vec3 b1 = median_point(points, {back, before}), b2 = median_point(points, {back + before, before});
+    const Vec3 a1 = median_point(points, {seq.data() + j, after});
+    const Vec3 a2 = median_point(points, {seq.data() + j + after, after});
+    const Vec3 step = a1 - b2;
+    if (angle_cosine(b2 - b1, step) < kGapCosine || angle_cosine(step, a2 - a1) < kGapCosine) return false;
+    const std::size_t a = kept.back(), b = seq[j];
+    const Vec3 seg = points[b] - points[a];
+    const double l2 = norm_squared(seg), r = std::max(tree.radius[a], tree.radius[b]);
+    std::size_t inside = 0;
+    for (const std::size_t c : seq) {
+      const Vec3 d = points[c] - points[a];
+      const double f = std::clamp(dot(d, seg) / l2, 0.0, 1.0);
+      if (norm(d - f * seg) < r && distance(points[c], points[a]) > 2.0 * r &&
+          distance(points[c], points[b]) > 2.0 * r && ++inside > kMaxDetour)
+        return false;
+    }
+    return true;
+  };
+  // The start: the first point from which two local steps follow; the ones before it are a detour.
+  std::size_t k = 0;
+  while (k <= kMaxDetour && !(k + 2 < m && local(seq[k], seq[k + 1]) && local(seq[k + 1], seq[k + 2]))) ++k;
+  if (k > kMaxDetour) return false;
+  for (std::size_t j = 0; j < k; ++j) suspect[seq[j]] = 1;
+  detours += k;
+  kept.push_back(seq[k]);
+  while (k + 1 < m) {
+    std::size_t next = m;  // where the order goes on
+    for (std::size_t skip = 0; skip <= kMaxDetour && k + 1 + skip < m && next == m; ++skip)
+      if (local(seq[k], seq[k + 1 + skip])) next = k + 1 + skip;
+    if (next == m)
+      for (std::size_t skip = 0; skip <= kMaxDetour && k + 1 + skip < m && next == m; ++skip)
+        if (gap(k + 1 + skip)) {
+          next = k + 1 + skip;
+          if (++gaps > 1 + n / 100) return false;
+        }
+    if (next == m) {
+      if (m - 1 - k > kMaxDetour) return false;
+      next = m;  // the last one to three points: a detour at the end
+    }
+    for (std::size_t j = k + 1; j < next; ++j) suspect[seq[j]] = 1;
+    detours += next - k - 1;
+    if (next == m) break;
+    k = next;
+    kept.push_back(seq[k]);
+  }
+  return detours * 10 <= n && gaps <= 1 + n / 100;
+}
+
 }  // namespace
 
 const char* order_source_name(OrderSource source) noexcept {
@@ -563,30 +668,11 @@ CurveOrder order_points(std::span<const Vec3> points, bool given, const PointOrd
   };
   CurveOrder out;
 
-  // The file order: consistent when the non-isolated points follow one another, short detours aside.
+  // The file order: consistent when the non-isolated points follow one another, detours and gaps aside.
   bool file_order = given;
   std::vector<std::size_t> seq;
   if (!given) {
-    for (std::size_t i = 0; i < n; ++i)
-      if (!suspect[i]) seq.push_back(i);
-    file_order = true;
-    std::size_t detours = 0;
-    for (std::size_t k = 0; k + 1 < seq.size() && file_order;) {
-      if (near(seq[k], seq[k + 1])) {
-        ++k;
-        continue;
-      }
-      file_order = false;
-      for (std::size_t skip = 1; skip <= 3 && k + 1 + skip < seq.size(); ++skip)
-        if (near(seq[k], seq[k + 1 + skip])) {
-          for (std::size_t j = 1; j <= skip; ++j) suspect[seq[k + j]] = 1;
-          detours += skip;
-          k += skip + 1;
-          file_order = true;
-          break;
-        }
-    }
-    if (detours * 10 > n) file_order = false;
+    file_order = file_order_is_consistent(points, tree, suspect);
     if (!file_order)
       for (std::size_t i = 0; i < n; ++i) suspect[i] = 0;
     for (const std::size_t i : tree.isolated) suspect[i] = 1;
