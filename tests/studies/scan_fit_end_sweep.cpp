@@ -7,13 +7,18 @@
 // curve 2–30 tolerances off, and judges each by the criteria of issue 21 (test_clouds::judge). It prints the
 // pass count per cell and, per cell, what failed. Not a test (minutes of CPU): docs/studies.md, "End strays".
 //
-//   scan_fit_end_sweep [--per N] [--windows 4,5,...] [--judged 2,3,...] [--list]
+//   scan_fit_end_sweep [--per N] [--windows 4,5,...] [--judged 2,3,...] [--list] [--known-order]
 //
-// --per: clouds per generator (default 12); --list: print every failing cloud of every cell.
+// --per: clouds per generator (default 12); --list: print every failing cloud of every cell; --known-order:
+// each cloud is first sorted by its points' feet on the known curve and fitted with ScanFitOptions::ordered,
+// so that a cloud failing without it and passing with it fails by its ordering, not by the fit.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <map>
+#include <numeric>
 #include <random>
 #include <sstream>
 #include <string>
@@ -57,6 +62,24 @@ EndStray end_stray(std::size_t k, std::uint64_t seed) {
     default:
       return {};
   }
+}
+
+// The cloud sorted by its points' feet on the known curve (strays tracked through the permutation).
+TestCloud in_known_order(const TestCloud& c) {
+  std::vector<double> t(c.points.size());
+  for (std::size_t i = 0; i < t.size(); ++i) t[i] = c.known_foot(c.points[i]).t;
+  std::vector<std::size_t> perm(t.size());
+  std::iota(perm.begin(), perm.end(), std::size_t{0});
+  std::stable_sort(perm.begin(), perm.end(), [&](std::size_t a, std::size_t b) { return t[a] < t[b]; });
+  TestCloud out = c;
+  out.strays.clear();
+  for (std::size_t j = 0; j < perm.size(); ++j) {
+    out.points[j] = c.points[perm[j]];
+    if (std::binary_search(c.strays.begin(), c.strays.end(), perm[j])) out.strays.push_back(j);
+  }
+  std::sort(out.strays.begin(), out.strays.end());
+  out.name += ", known order";
+  return out;
 }
 
 std::vector<TestCloud> make_clouds(std::size_t per) {
@@ -124,7 +147,7 @@ std::vector<TestCloud> make_clouds(std::size_t per) {
 int main(int argc, char** argv) {
   std::size_t per = 12;
   std::vector<std::size_t> windows{4, 5, 6, 7, 8, 9, 10, 11, 12}, judged{2, 3, 4, 5};
-  bool list = false;
+  bool list = false, known_order = false;
   for (int i = 1; i < argc; ++i) {
     const std::string_view a = argv[i];
     if (a == "--per" && i + 1 < argc)
@@ -135,24 +158,41 @@ int main(int argc, char** argv) {
       judged = parse_list(argv[++i]);
     else if (a == "--list")
       list = true;
+    else if (a == "--known-order")
+      known_order = true;
     else {
-      std::fprintf(stderr, "usage: %s [--per N] [--windows 4,5,...] [--judged 2,3,...] [--list]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--per N] [--windows 4,5,...] [--judged 2,3,...] [--list] [--known-order]\n",
+                   argv[0]);
       return 2;
     }
   }
-  const std::vector<TestCloud> clouds = make_clouds(per);
+  std::vector<TestCloud> clouds = make_clouds(per);
+  if (known_order)
+    for (TestCloud& c : clouds) c = in_known_order(c);
   std::printf("%zu clouds (%zu per generator), %zu cells\n", clouds.size(), per, windows.size() * judged.size());
   std::printf("window judged  pass/total  missed-stray good-rejected beyond-3σ inflections threw  seconds\n");
   for (const std::size_t w : windows)
     for (const std::size_t j : judged) {
       studies::ScanFitOptions o;
       o.end_check = {.window = w, .judged = j};
+      o.ordered = known_order;
       std::size_t pass = 0, missed = 0, rejected = 0, far = 0, infl = 0, threw = 0;
       std::vector<std::string> failures;
+      std::map<std::string, std::size_t> sources;  // how many clouds each ordering took
       const auto t0 = std::chrono::steady_clock::now();
       for (const TestCloud& c : clouds) {
         o.tolerance = c.tolerance;
-        const studies::test_clouds::Verdict v = studies::test_clouds::fit_and_judge(c, o);
+        studies::test_clouds::Verdict v;
+        const char* ordering = "";
+        try {
+          const studies::ScanFitResult r = studies::fit_scan(c.points, o);
+          v = studies::test_clouds::judge(c, r);
+          ordering = studies::order_source_name(r.ordering);
+          ++sources[ordering];
+        } catch (const std::exception& e) {
+          v.threw = true;
+          v.error = e.what();
+        }
         if (v.pass(c.sigma)) {
           ++pass;
           continue;
@@ -163,14 +203,18 @@ int main(int argc, char** argv) {
         infl += !v.inflections_right;
         threw += v.threw;
         char line[512];
-        std::snprintf(line, sizeof line, "  %s: missed %zu, good rejected %zu, far %.3g σ, inflections %zu (%zu)%s%s",
+        std::snprintf(line, sizeof line,
+                      "  %s: missed %zu, good rejected %zu, far %.3g σ, inflections %zu (%zu), order %s%s%s",
                       c.name.c_str(), v.strays_missed, v.good_rejected, v.far / c.sigma, v.inflections,
-                      v.known_inflections, v.threw ? ", threw: " : "", v.error.c_str());
+                      v.known_inflections, ordering, v.threw ? ", threw: " : "", v.error.c_str());
         failures.emplace_back(line);
       }
       const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       std::printf("%6zu %6zu  %4zu/%-4zu   %12zu %13zu %9zu %11zu %5zu  %7.1f\n", w, j, pass, clouds.size(), missed,
                   rejected, far, infl, threw, secs);
+      std::printf("       orders:");
+      for (const auto& [name, count] : sources) std::printf(" %s %zu", name.c_str(), count);
+      std::printf("\n");
       if (list)
         for (const std::string& f : failures) std::printf("%s\n", f.c_str());
       std::fflush(stdout);

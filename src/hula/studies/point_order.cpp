@@ -45,7 +45,47 @@ class KdTree {
     std::sort_heap(heap.begin(), heap.end());
   }
 
+  // The nearest point to point q for which `accept` holds, if nearer than √best_d2: updates best_d2 and
+  // best and returns whether it found one. Nodes farther than the bound are pruned, so a good starting
+  // bound keeps the search local.
+  template <class Accept>
+  bool nearest_accepted(std::size_t q, const Accept& accept, double& best_d2, std::size_t& best) const {
+    bool found = false;
+    nearest_accepted(0, idx_.size(), q, accept, best_d2, best, found);
+    return found;
+  }
+
  private:
+  template <class Accept>
+  void nearest_accepted(std::size_t lo, std::size_t hi, std::size_t q, const Accept& accept, double& best_d2,
+                        std::size_t& best, bool& found) const {
+    if (lo >= hi) return;
+    const std::size_t mid = lo + (hi - lo) / 2;
+    const std::size_t i = idx_[mid];
+    if (i != q && accept(i)) {
+      const double d = norm_squared(pts_[i] - pts_[q]);
+      if (d < best_d2) {
+        best_d2 = d;
+        best = i;
+        found = true;
+      }
+    }
+    if (hi - lo == 1) return;
+    const int axis = axis_[mid];
+    const double delta = coord(pts_[q], axis) - coord(pts_[i], axis);
+    const bool left_first = delta < 0.0;
+    if (left_first)
+      nearest_accepted(lo, mid, q, accept, best_d2, best, found);
+    else
+      nearest_accepted(mid + 1, hi, q, accept, best_d2, best, found);
+    if (delta * delta < best_d2) {
+      if (left_first)
+        nearest_accepted(mid + 1, hi, q, accept, best_d2, best, found);
+      else
+        nearest_accepted(lo, mid, q, accept, best_d2, best, found);
+    }
+  }
+
   void build(std::size_t lo, std::size_t hi) {
     if (hi - lo <= 1) return;
     Vec3 mn = pts_[idx_[lo]], mx = mn;
@@ -158,6 +198,57 @@ void check_points(std::span<const Vec3> points) {
                   ErrorWhere{.field = "points", .index = i});
 }
 
+// Pieces of the forest smaller than this stay unjoined (at most a detour of three points, see order_points).
+constexpr std::size_t kMinPiece = 4;
+
+// Joins the forest's pieces of at least kMinPiece non-isolated points into one tree: in rounds, every piece
+// but the largest adds its shortest edge to a point outside it (a Borůvka step; each round at least halves
+// the pieces), until one remains.
+void connect_pieces(const KdTree& kd, std::span<const Vec3> points, const std::vector<char>& isolated,
+                    std::vector<std::size_t>& root, std::vector<std::vector<std::pair<std::size_t, double>>>& adj) {
+  const std::size_t n = points.size();
+  for (;;) {
+    std::vector<std::size_t> size(n, 0);
+    for (std::size_t i = 0; i < n; ++i)
+      if (!isolated[i]) ++size[find_root(root, i)];
+    std::size_t largest = n, pieces = 0;
+    for (std::size_t r = 0; r < n; ++r)
+      if (size[r] >= kMinPiece) {
+        ++pieces;
+        if (largest == n || size[r] > size[largest]) largest = r;
+      }
+    if (pieces < 2) return;
+    // Per piece (its root): the shortest edge out of it found so far.
+    std::vector<double> best_d2(n, std::numeric_limits<double>::infinity());
+    std::vector<std::pair<std::size_t, std::size_t>> best_edge(n, {n, n});
+    for (std::size_t i = 0; i < n; ++i) {
+      if (isolated[i]) continue;
+      const std::size_t r = find_root(root, i);
+      if (r == largest || size[r] < kMinPiece) continue;
+      std::size_t j = n;
+      if (kd.nearest_accepted(
+              i,
+              [&](std::size_t c) {
+                if (isolated[c]) return false;
+                const std::size_t rc = find_root(root, c);
+                return rc != r && size[rc] >= kMinPiece;
+              },
+              best_d2[r], j))
+        best_edge[r] = {i, j};
+    }
+    for (std::size_t r = 0; r < n; ++r) {
+      const auto [i, j] = best_edge[r];
+      if (i == n) continue;
+      const std::size_t ri = find_root(root, i), rj = find_root(root, j);
+      if (ri == rj) continue;
+      root[ri] = rj;
+      const double d = std::sqrt(best_d2[r]);
+      adj[i].emplace_back(j, d);
+      adj[j].emplace_back(i, d);
+    }
+  }
+}
+
 Tree build_tree(std::span<const Vec3> points, const PointOrderOptions& options) {
   const std::size_t n = points.size();
   const std::size_t k = std::min<std::size_t>(static_cast<std::size_t>(options.neighbours), n - 1);
@@ -210,7 +301,13 @@ Tree build_tree(std::span<const Vec3> points, const PointOrderOptions& options) 
     adj[e.b].emplace_back(e.a, e.length);
   }
 
-  // 3. The largest component's diameter: farthest node a from any node, then farthest b from a.
+  // 3. The k-NN graph falls apart where the sampling leaves a gap wider than k spacings: its pieces of at
+  // least kMinPiece points are joined, Borůvka-fashion, by their shortest edges to the rest (the
+  // Euclidean MST does the same), so the path runs across the gaps instead of ending at the first.
+  // Smaller pieces (a stray pair, a detour) stay out and hang from their nearest tree point.
+  connect_pieces(kd, points, isolated, root, adj);
+
+  // 4. The largest component's diameter: farthest node a from any node, then farthest b from a.
   std::vector<std::size_t> size(n, 0);
   std::size_t first = n;
   for (std::size_t i = 0; i < n; ++i)
@@ -230,7 +327,7 @@ Tree build_tree(std::span<const Vec3> points, const PointOrderOptions& options) 
   std::reverse(tree.path.begin(), tree.path.end());  // from a to b
   for (const std::size_t v : tree.path) tree.path_s.push_back(dist[v]);
 
-  // 4. Every other node of the component inherits the path node its branch hangs from.
+  // 5. Every other node of the component inherits the path node its branch hangs from.
   tree.attach.assign(n, kNone);
   std::vector<std::size_t> stack;
   for (std::size_t j = 0; j < tree.path.size(); ++j) {
@@ -271,6 +368,111 @@ double angle_cosine(const Vec3& a, const Vec3& b) {
 
 // Two directions differ by less than 60°.
 constexpr double kSmoothJoinCosine = 0.5;
+
+// Two directions differ by less than 45°: a gap in the sampling must continue the curve's direction on
+// both sides (the tangent turns by less than 90° across it).
+constexpr double kGapCosine = 0.7071067811865476;
+// Points on each side of a gap whose run gives the direction there (two halves' centroids).
+constexpr std::size_t kGapRun = 8;
+// Points skipped by a detour, at most.
+constexpr std::size_t kMaxDetour = 3;
+
+// The coordinate-wise median of the points `which` (the mean of the middle two for an even count).
+Vec3 median_point(std::span<const Vec3> points, std::span<const std::size_t> which) {
+  std::array<std::vector<double>, 3> c;
+  for (const std::size_t i : which) {
+    c[0].push_back(points[i].x);
+    c[1].push_back(points[i].y);
+    c[2].push_back(points[i].z);
+  }
+  std::array<double, 3> m{};
+  for (std::size_t a = 0; a < 3; ++a) {
+    std::sort(c[a].begin(), c[a].end());
+    const std::size_t h = c[a].size() / 2;
+    m[a] = c[a].size() % 2 == 1 ? c[a][h] : 0.5 * (c[a][h - 1] + c[a][h]);
+  }
+  return {m[0], m[1], m[2]};
+}
+
+// Whether the points `suspect` leaves out follow one another in the file (see order_points). A step is
+// local when it is no longer than twice the larger k-th neighbour distance of its two points (the
+// density's own scale: where the sampling is three times sparser, so are the radii). A step that is not
+// local is taken
+//  - as a detour when one to three points are skipped and the step after them is local (strays in the
+//    file, at either end too: an end's first or last one to three points);
+//  - as a gap in the sampling when the step continues the directions of the points before it and after it
+//    (each within 45°; up to eight points a side, directions from medians) and no more than three points of the cloud
+//    lie within the neighbour radius of the step's segment away from its ends (a gap is empty: a jump back over the
+//    curve, to a later stretch or across a loop, passes over points or turns);
+// anything else breaks the order. Detours may skip at most a tenth of the points and the gaps number at
+// most 1 + n / 100, so a shuffled file (almost no local step) or one with a stretch out of place (a
+// step that turns back) is refused. Marks the skipped points in `suspect`.
+bool file_order_is_consistent(std::span<const Vec3> points, const Tree& tree, std::vector<char>& suspect) {
+  const std::size_t n = points.size();
+  std::vector<std::size_t> seq;
+  for (std::size_t i = 0; i < n; ++i)
+    if (!suspect[i]) seq.push_back(i);
+  const std::size_t m = seq.size();
+  if (m < 3) return false;
+  const auto local = [&](std::size_t a, std::size_t b) {
+    return distance(points[a], points[b]) <= 2.0 * std::max(tree.radius[a], tree.radius[b]);
+  };
+  std::vector<std::size_t> kept;  // the points taken in order so far
+  std::size_t detours = 0, gaps = 0;
+  // A gap from kept.back() to seq[j]: the directions of the kept points before it and of the points from
+  // seq[j] on (each from the coordinate-wise medians of two halves of up to four points, so that one stray
+  // among them does not turn it), and the step between them.
+  const auto gap = [&](std::size_t j) {
+    const std::size_t before = std::min(kept.size(), kGapRun) / 2, after = std::min(m - j, kGapRun) / 2;
+    if (before < 2 || after < 2) return false;
+    const std::size_t* back = kept.data() + kept.size() - 2 * before;
+    const Vec3 b1 = median_point(points, {back, before}), b2 = median_point(points, {back + before, before});
+    const Vec3 a1 = median_point(points, {seq.data() + j, after});
+    const Vec3 a2 = median_point(points, {seq.data() + j + after, after});
+    const Vec3 step = a1 - b2;
+    if (angle_cosine(b2 - b1, step) < kGapCosine || angle_cosine(step, a2 - a1) < kGapCosine) return false;
+    const std::size_t a = kept.back(), b = seq[j];
+    const Vec3 seg = points[b] - points[a];
+    const double l2 = norm_squared(seg), r = std::max(tree.radius[a], tree.radius[b]);
+    std::size_t inside = 0;
+    for (const std::size_t c : seq) {
+      const Vec3 d = points[c] - points[a];
+      const double f = std::clamp(dot(d, seg) / l2, 0.0, 1.0);
+      if (norm(d - f * seg) < r && distance(points[c], points[a]) > 2.0 * r &&
+          distance(points[c], points[b]) > 2.0 * r && ++inside > kMaxDetour)
+        return false;
+    }
+    return true;
+  };
+  // The start: the first point from which two local steps follow; the ones before it are a detour.
+  std::size_t k = 0;
+  while (k <= kMaxDetour && !(k + 2 < m && local(seq[k], seq[k + 1]) && local(seq[k + 1], seq[k + 2]))) ++k;
+  if (k > kMaxDetour) return false;
+  for (std::size_t j = 0; j < k; ++j) suspect[seq[j]] = 1;
+  detours += k;
+  kept.push_back(seq[k]);
+  while (k + 1 < m) {
+    std::size_t next = m;  // where the order goes on
+    for (std::size_t skip = 0; skip <= kMaxDetour && k + 1 + skip < m && next == m; ++skip)
+      if (local(seq[k], seq[k + 1 + skip])) next = k + 1 + skip;
+    if (next == m)
+      for (std::size_t skip = 0; skip <= kMaxDetour && k + 1 + skip < m && next == m; ++skip)
+        if (gap(k + 1 + skip)) {
+          next = k + 1 + skip;
+          if (++gaps > 1 + n / 100) return false;
+        }
+    if (next == m) {
+      if (m - 1 - k > kMaxDetour) return false;
+      next = m;  // the last one to three points: a detour at the end
+    }
+    for (std::size_t j = k + 1; j < next; ++j) suspect[seq[j]] = 1;
+    detours += next - k - 1;
+    if (next == m) break;
+    k = next;
+    kept.push_back(seq[k]);
+  }
+  return detours * 10 <= n && gaps <= 1 + n / 100;
+}
 
 }  // namespace
 
@@ -466,30 +668,11 @@ CurveOrder order_points(std::span<const Vec3> points, bool given, const PointOrd
   };
   CurveOrder out;
 
-  // The file order: consistent when the non-isolated points follow one another, short detours aside.
+  // The file order: consistent when the non-isolated points follow one another, detours and gaps aside.
   bool file_order = given;
   std::vector<std::size_t> seq;
   if (!given) {
-    for (std::size_t i = 0; i < n; ++i)
-      if (!suspect[i]) seq.push_back(i);
-    file_order = true;
-    std::size_t detours = 0;
-    for (std::size_t k = 0; k + 1 < seq.size() && file_order;) {
-      if (near(seq[k], seq[k + 1])) {
-        ++k;
-        continue;
-      }
-      file_order = false;
-      for (std::size_t skip = 1; skip <= 3 && k + 1 + skip < seq.size(); ++skip)
-        if (near(seq[k], seq[k + 1 + skip])) {
-          for (std::size_t j = 1; j <= skip; ++j) suspect[seq[k + j]] = 1;
-          detours += skip;
-          k += skip + 1;
-          file_order = true;
-          break;
-        }
-    }
-    if (detours * 10 > n) file_order = false;
+    file_order = file_order_is_consistent(points, tree, suspect);
     if (!file_order)
       for (std::size_t i = 0; i < n; ++i) suspect[i] = 0;
     for (const std::size_t i : tree.isolated) suspect[i] = 1;

@@ -7,7 +7,9 @@
 // end of the curve to the other; every point gets the arc length, along that
 // path, of the path node its tree branch hangs from. Isolated points (strays)
 // are left out of the tree so that they cannot lengthen the path, and take the
-// key of their nearest tree point.
+// key of their nearest tree point. Where a gap in the sampling is wider than the
+// k neighbours reach, the k-NN forest's pieces (of four points or more) are joined
+// by their shortest edges, as the Euclidean MST would join them.
 #pragma once
 
 #include <cstddef>
@@ -68,7 +70,11 @@ struct CurveOrder {
 
 /// Orders a cloud and gives it starting parameters. The file order is taken when `given` says so, or
 /// when it is consistent: every point (other than isolated ones) lies within twice its k-th
-/// neighbour distance of the next, except detours of at most three points that the sequence skips;
+/// neighbour distance of the next (a local step), except detours of at most three points that the
+/// sequence skips (at either end too), and gaps in the sampling: a longer step that continues the
+/// directions of the points before and after it (each within 45°) over an empty stretch (at most three
+/// points near it); detours skip at most a tenth of the points and gaps number at most 1 + n / 100, so
+/// shuffled files, swapped halves or a stretch out of place are refused;
 /// otherwise order_along_curve's tree orders the points and each takes the arc length of its
 /// projection on the tree's longest path (smoothed over five nodes, extended along its end
 /// segments). In file order the parameters are chord lengths (of a five-point running mean when the
