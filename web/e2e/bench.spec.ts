@@ -238,7 +238,8 @@ test('drag a point of a 100-control-point curve with fins and the κ graph', asy
 });
 
 // The fairing assistant's ghost (issue 13 item 6, issue 23): from the last pointer move of a drag to the
-// frame that draws the ghost of that final position, over 24 drags (8 of each of the thesis's 7.4.2
+// frame that draws the first ghost of that final position (FairingAssistant's short-budget answer,
+// within the tolerance; the full budget's replaces it afterwards), over 24 drags (8 of each of the thesis's 7.4.2
 // Examples 1–3, minimal curvature variation, tolerance 1, released at once after 4 moves), so that the
 // p95 is not the largest sample. Issue 23's target, p95 ≤ 150 ms, is asserted when the load at the
 // first drag is ≤ 4 (two cores); the figures and the load are reported either way.
@@ -248,6 +249,9 @@ test('fairing ghost after the pointer stops, 24 drags', async ({ page }) => {
   const latencies: number[] = [];
   const roundTrips: number[] = [];
   const serverMs: number[] = [];
+  const refineRoundTrips: number[] = [];
+  const refineServerMs: number[] = [];
+  let refines = 0;
   const perExample = 8;
   for (const example of fairingExamples) {
     const doc = await newDoc(`ghost-${example.name}`);
@@ -286,6 +290,9 @@ test('fairing ghost after the pointer stops, 24 drags', async ({ page }) => {
           dataPoints: f.preview?.result.data_points,
           latency: f.latencies[f.latencies.length - 1],
           timing: f.timings[f.timings.length - 1],
+          final: f.preview?.final,
+          refines: f.refineTimings.length,
+          refine: f.refineTimings[f.refineTimings.length - 1],
         };
       });
       // The latest ghost is of the curve the server holds after the drag (its data points), and its
@@ -298,9 +305,17 @@ test('fairing ghost after the pointer stops, 24 drags', async ({ page }) => {
         const q = stored[k]!;
         expect(Math.hypot(p[0]! - (q[0] ?? 0), p[1]! - (q[1] ?? 0))).toBeLessThan(1e-9);
       });
+      // Once quiet, the ghost on screen is the full budget's (the short budget's first ghost was
+      // replaced) or the first one when its optimisation converged within the short budget.
+      expect(state.final).toBe(true);
       latencies.push(state.latency!);
       roundTrips.push(state.timing!.roundTripMs);
       serverMs.push(state.timing!.serverMs);
+      if (state.refines > refines) {
+        refineRoundTrips.push(state.refine!.roundTripMs);
+        refineServerMs.push(state.refine!.serverMs);
+      }
+      refines = state.refines;
     }
   }
   results['ghost_load_average_end'] = loadavg()[0]!;
@@ -314,7 +329,15 @@ test('fairing ghost after the pointer stops, 24 drags', async ({ page }) => {
   results['ghost_round_trip_ms_p50'] = rt[Math.floor(n * 0.5)]!;
   results['ghost_round_trip_ms_p95'] = rt[Math.floor(n * 0.95)]!;
   results['ghost_server_ms_max'] = Math.max(...serverMs);
+  // The full-budget ghosts that replaced a first one (after the latency clock stopped).
+  const rr = [...refineRoundTrips].sort((a, b) => a - b);
+  results['ghost_refined'] = rr.length;
+  results['ghost_refine_round_trip_ms_p50'] = rr[Math.floor(rr.length * 0.5)] ?? NaN;
+  results['ghost_refine_round_trip_ms_p95'] = rr[Math.floor(rr.length * 0.95)] ?? NaN;
+  results['ghost_refine_server_ms_max'] = rr.length ? Math.max(...refineServerMs) : NaN;
   console.log('ghost latencies', JSON.stringify(latencies.map((x) => Math.round(x))));
+  console.log('ghost round trips', JSON.stringify(roundTrips.map((x) => Math.round(x))));
+  console.log('ghost server ms', JSON.stringify(serverMs.map((x) => Math.round(x))));
   expect(n).toBe(3 * perExample);
   // Above load 4 a regression bound only (at load 16–28 the ghost took 290–520 ms, docs/benchmarks.md).
   const load = results['ghost_load_average']!;
