@@ -98,10 +98,11 @@ test_clouds::TestCloud sparse_space_wave(std::uint64_t seed) {
 }
 
 // The clouds that fail the judged criteria, the same checks; not run by ctest (run with
-// --gtest_also_run_disabled_tests). Disabled until issue 21's judged criteria hold on them (issue 21 stays open):
+// --gtest_also_run_disabled_tests):
 //  - tail cloud 12 (above): 5.2 σ from the known curve, in every end-check cell of the sweep
 //    (scan_fit_end_sweep.cpp);
 //  - the sparse space wave of seed 6003: one stray kept, the curve 0.031 (1,000 σ) off the known one.
+// Disabled until issue 21's judged criteria hold on them (issue 21 stays open for them).
 TEST(ScanFitTailClouds, DISABLED_KnownFailures) {
   expect_judged(tail_cloud(12), ScanFitOptions{.tolerance = tail_cloud(12).tolerance});
   const TestCloud wave = sparse_space_wave(6003);
