@@ -343,16 +343,16 @@ test('pick a Pareto point', async ({ page }) => {
   const n = Number(await pareto.getAttribute('data-points'));
   expect(n).toBeGreaterThan(5);
   await pareto.scrollIntoViewIfNeeded();
-  // The explorer's cursor snaps to the nearest point along x (uPlot), so two members a pixel apart cannot be
-  // told apart by pointing: pick the member nearest the middle of the front that stands at least 3 px in x
-  // from every other one.
-  const xs = await page.evaluate(
-    (count) =>
-      Array.from({ length: count }, (_, i) => window.__hula.app.optimise.paretoPixel(i)!.x),
+  // The explorer's cursor picks the member nearest the pointer in the plane; two members less than 3 px
+  // apart cannot be told apart by pointing, so pick the member nearest the middle of the front that stands
+  // at least 3 px from every other one.
+  const px = await page.evaluate(
+    (count) => Array.from({ length: count }, (_, i) => window.__hula.app.optimise.paretoPixel(i)!),
     n,
   );
-  const apart = (i: number): boolean => xs.every((x, j) => j === i || Math.abs(x - xs[i]!) >= 3);
-  const order = xs.map((_, i) => i).sort((a, b) => Math.abs(a - n / 2) - Math.abs(b - n / 2));
+  const apart = (i: number): boolean =>
+    px.every((p, j) => j === i || Math.hypot(p.x - px[i]!.x, p.y - px[i]!.y) >= 3);
+  const order = px.map((_, i) => i).sort((a, b) => Math.abs(a - n / 2) - Math.abs(b - n / 2));
   const k = order.find(apart)!;
   expect(k).toBeDefined();
   const at = await page.evaluate((i) => window.__hula.app.optimise.paretoPixel(i), k);

@@ -394,7 +394,12 @@ export class OptimisePanel {
             points: { show: true, size: 7, fill: '#ffe14d' },
           },
         ],
-        cursor: { drag: { x: false, y: false } },
+        cursor: {
+          drag: { x: false, y: false },
+          // The member nearest the pointer in the plane: uPlot's own choice is the nearest along x,
+          // and two members of a front can stand a pixel apart in x and far apart in y.
+          dataIdx: (u, _series, closest) => this.nearestParetoPoint(u) ?? closest,
+        },
         hooks: {
           setCursor: [
             (u) => {
@@ -418,6 +423,23 @@ export class OptimisePanel {
     return this.kind.value === 'match-curvature-torsion'
       ? ['curvature error', 'torsion error']
       : ['objective 1', 'objective 2'];
+  }
+
+  /** Index of the front member nearest the cursor (plot pixels, both axes), or null off the plot. */
+  private nearestParetoPoint(u: uPlot): number | null {
+    const { left, top } = u.cursor;
+    if (left === undefined || top === undefined || left < 0 || top < 0) return null;
+    let best: number | null = null;
+    let bestD = Infinity;
+    for (let i = 0; i < this.front.length; i++) {
+      const o = this.front[i]!.objectives;
+      const d = Math.hypot(u.valToPos(o[0] ?? NaN, 'x') - left, u.valToPos(o[1] ?? NaN, 'y') - top);
+      if (d < bestD) {
+        bestD = d;
+        best = i;
+      }
+    }
+    return best;
   }
 
   /** Page coordinates of Pareto point i (tests, keyboard users' focus ring). */
