@@ -23,6 +23,7 @@ import {
   needsDocuments,
   newDoc,
   openApp,
+  openFairing,
   pixelOf,
   token,
 } from './fixtures';
@@ -254,16 +255,13 @@ test('fairing ghost after the pointer stops, 24 drags', async ({ page }) => {
   let refines = 0;
   const perExample = 8;
   for (const example of fairingExamples) {
-    const doc = await newDoc(`ghost-${example.name}`);
-    const label = await addCurve(doc, example.name, example.curve);
-    await openApp(page, doc);
-    await page.evaluate((l) => {
-      window.__hula.app.select(l);
-    }, label);
-    await idle(page);
-    await page.locator('#fair-tolerance').fill('1');
-    await page.locator('#fair-tolerance').dispatchEvent('change');
-    await page.locator('#fair-on').check();
+    const { doc, label } = await openFairing(
+      page,
+      `ghost-${example.name}`,
+      example.name,
+      example.curve,
+      1,
+    );
     await idle(page);
     if (!('ghost_load_average' in results)) results['ghost_load_average'] = loadavg()[0]!;
     const pointOf = async (): Promise<[number, number, number]> => {

@@ -13,6 +13,7 @@ import {
   api,
   entity,
   expect,
+  fairingExamples,
   history,
   idle,
   needsDocuments,
@@ -52,15 +53,7 @@ const spaceBezier: CurveFile = {
   weights: null,
 };
 // Thesis 7.4.2 Example 1 (examples/workspace/example1-corner.json): three points around a corner.
-const example1: CurveFile = {
-  kind: 'interpolated',
-  points: [
-    [0, 0],
-    [100, 0],
-    [100, 100],
-  ],
-  parameters: [0, 0.5, 1],
-};
+const example1 = fairingExamples.find((e) => e.name === 'example1')!.curve;
 
 /** The S-spline scaled by `k` (sizes 1 and 1,000 units: the drag is in pixels of the graph's own scale). */
 function scaled(c: CurveFile, k: number): CurveFile {

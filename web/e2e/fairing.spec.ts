@@ -25,6 +25,7 @@ import {
   needsDocuments,
   newDoc,
   openApp,
+  openFairing,
   pixelOf,
   shot,
 } from './fixtures';
@@ -54,16 +55,13 @@ test('fairing assistant: ghost after a drag, accepted with A (Examples 1–3)', 
   const server: number[] = [];
   const energies: { example: string; before: number; after: number }[] = [];
   for (const example of examples) {
-    const doc = await newDoc(`fair-${example.name}`);
-    const label = await addCurve(doc, example.name, example.curve);
-    await openApp(page, doc);
-    await page.evaluate((l) => {
-      window.__hula.app.select(l);
-    }, label);
-    await idle(page);
-    await page.locator('#fair-tolerance').fill(String(tolerance));
-    await page.locator('#fair-tolerance').dispatchEvent('change');
-    await page.locator('#fair-on').check();
+    const { doc, label } = await openFairing(
+      page,
+      `fair-${example.name}`,
+      example.name,
+      example.curve,
+      tolerance,
+    );
     // Small drags off the grid: with Snap on, a few pixels can land on the same grid point.
     await page.locator('#snap').uncheck();
     await idle(page);

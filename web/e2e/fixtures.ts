@@ -109,6 +109,30 @@ export async function idle(page: Page): Promise<void> {
   await page.evaluate(() => window.__hula.idle());
 }
 
+/**
+ * A new document (named from `prefix`) holding `curve`, opened in the workbench with that curve selected
+ * and the fairing assistant on at `tolerance`. @returns the document and the curve's label.
+ */
+export async function openFairing(
+  page: Page,
+  prefix: string,
+  name: string,
+  curve: CurveFile,
+  tolerance: number,
+): Promise<{ doc: string; label: string }> {
+  const doc = await newDoc(prefix);
+  const label = await addCurve(doc, name, curve);
+  await openApp(page, doc);
+  await page.evaluate((l) => {
+    window.__hula.app.select(l);
+  }, label);
+  await idle(page);
+  await page.locator('#fair-tolerance').fill(String(tolerance));
+  await page.locator('#fair-tolerance').dispatchEvent('change');
+  await page.locator('#fair-on').check();
+  return { doc, label };
+}
+
 /** Client (page) pixel of a world point in a view, through the page's camera. */
 export async function pixelOf(
   page: Page,

@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import type * as Api from '../api/openapi';
 import type { CurveFile } from '../api/types';
+import { arch } from '../testing/curves';
 import { useFetchDouble } from '../testing/fetch-double';
 import {
   attributes,
@@ -408,19 +409,6 @@ describe('Clothoid', () => {
 });
 
 describe('Move knot', () => {
-  const arch: CurveFile = {
-    kind: 'nurbs',
-    degree: 3,
-    knots: [0, 0, 0, 0, 0.3, 0.6, 1, 1, 1, 1],
-    control_points: [
-      [0, 0, 0],
-      [15, 25, 0],
-      [40, 35, 0],
-      [65, 30, 0],
-      [85, 10, 0],
-      [100, 0, 0],
-    ],
-  };
   const moved: CurveFile = { ...arch, knots: [0, 0, 0, 0, 0.45, 0.6, 1, 1, 1, 1] };
 
   it('stores the curve with the new knot vector and its points as they were, in one PUT', async () => {
